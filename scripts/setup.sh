@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Install every Debian package scaf needs to build, test, fuzz and benchmark.
+# Works as root on a fresh Debian 12; uses sudo otherwise.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+PACKAGES=(
+  build-essential cmake pkg-config clang
+  libsuitesparse-dev libopenblas-dev libmetis-dev   # CHOLMOD sparse Cholesky
+  zlib1g-dev                                        # .gz input
+  libpng-dev                                        # PNG pictures
+  libcmocka-dev                                     # tests
+  libgmp-dev                                        # tests: exact rational reference
+  valgrind                                          # bench: instruction counts
+)
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,17 @@
+/* tests/support: helpers shared by the test programs. */
+#ifndef SCAF_TESTS_SUPPORT_H
+#define SCAF_TESTS_SUPPORT_H
+
+#include <stddef.h>
+
+/* Absolute path of a file under the shared test-mesh folder
+ * (SCAF_DATA_DIR, overridable by the environment variable SCAF_DATA_DIR),
+ * written into buf. Returns buf, or NULL when the file does not exist:
+ * callers then skip() so the suite passes where ../shared/data is absent. */
+const char *test_data_path(const char *relative, char *buf, size_t size);
+
+/* A fresh path in the build's scratch folder for a test output file:
+ * "<tmpdir>/<name>" (the folder is created by the build). */
+const char *test_tmp_path(const char *name, char *buf, size_t size);
+
+#endif

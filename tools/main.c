@@ -1,0 +1,52 @@
+/* tools/main: the `scaf` program: dispatches to one subcommand. */
+#include <stdio.h>
+#include <string.h>
+
+#include "commands.h"
+#include "exit_codes.h"
+#include "scaf/scaf.h"
+
+/* Add a subcommand: write tools/cmd_NAME.c with `int cmd_NAME(int, char **)`,
+ * declare it here and list it in the table. */
+const command scaf_commands[] = {
+    {NULL, NULL, NULL}
+};
+
+static void print_help(FILE *out)
+{
+    fprintf(out,
+            "usage: scaf COMMAND [options] ...\n"
+            "\n"
+            "Bijective maps with the Simplicial Complex Augmentation Framework.\n"
+            "\n"
+            "commands:\n");
+    for (const command *c = scaf_commands; c->name; c++)
+        fprintf(out, "  %-8s %s\n", c->name, c->summary);
+    fprintf(out,
+            "\n"
+            "`scaf COMMAND --help` describes a command. `scaf --version` prints the version.\n"
+            "Exit status: 0 ok, 1 not bijective (check), 2 usage, 3 unreadable or malformed\n"
+            "input, 4 mesh invalid for the command, 5 output not written, 6 numerical\n"
+            "failure, 7 out of memory, 8 interrupted, 70 internal error.\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        print_help(stderr);
+        return EXIT_USAGE;
+    }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        print_help(stdout);
+        return EXIT_OK;
+    }
+    if (!strcmp(argv[1], "--version")) {
+        printf("scaf %s\n", scaf_version());
+        return EXIT_OK;
+    }
+    for (const command *c = scaf_commands; c->name; c++)
+        if (!strcmp(argv[1], c->name))
+            return c->run(argc - 1, argv + 1);
+    fprintf(stderr, "scaf: unknown command '%s' (see `scaf --help`)\n", argv[1]);
+    return EXIT_USAGE;
+}
