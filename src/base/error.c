@@ -33,7 +33,17 @@ void err_prefix(scaf_error *err, const char *fmt, ...)
     va_end(ap);
     char old[SCAF_ERROR_MESSAGE_MAX];
     memcpy(old, err->message, sizeof old);
-    snprintf(err->message, sizeof err->message, "%s: %s", head, old);
+    /* Truncation is intended: the message buffer has a fixed size. */
+    size_t n = strlen(head);
+    if (n > sizeof err->message - 3) n = sizeof err->message - 3;
+    memcpy(err->message, head, n);
+    err->message[n] = ':';
+    err->message[n + 1] = ' ';
+    size_t room = sizeof err->message - (n + 2) - 1;
+    size_t m = strlen(old);
+    if (m > room) m = room;
+    memcpy(err->message + n + 2, old, m);
+    err->message[n + 2 + m] = '\0';
 }
 
 scaf_status err_nomem(scaf_error *err, const char *what)
