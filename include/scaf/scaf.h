@@ -37,6 +37,165 @@ const char *scaf_status_name(scaf_status status);
 /* The version of the library, "MAJOR.MINOR.PATCH". */
 const char *scaf_version(void);
 
+/* ------------------------------------------------------------------------
+ * Bijective parametrization (SCAF).
+ *
+ * Typical use:
+ *
+ *     scaf_options_t opt = scaf_options_default();
+ *     scaf_param_t *p = scaf_param_new(&opt);
+ *     if (scaf_param_set_mesh(p, V, nv, F, nf, NULL, 0, NULL) != SCAF_OK)
+ *         fprintf(stderr, "%s\n", scaf_param_error(p));
+ *     scaf_param_run(p, 0, my_progress, my_data);   // 0: options' cap
+ *     int nuv = scaf_param_uv_count(p);
+ *     ... allocate UV (nuv by 2) and FT (nf by 3) ...
+ *     scaf_param_get_uv(p, UV, FT);
+ *     scaf_param_destroy(p);
+ *
+ * Charts: a mesh without UVs has one chart per connected component; a mesh
+ * with UVs (UV + FT) has one chart per piece of the mesh cut along its UV
+ * seams (edges whose two sides use different UV indices). Every chart must
+ * be a manifold, orientable disk, possibly with holes. Each chart starts
+ * as a Tutte (or harmonic) embedding on a circle of the chart's 3D area;
+ * several charts start on a grid of circles that do not touch. Then the
+ * SCAF iteration runs inside a scaffold: the UV map is bijective (no
+ * flipped triangle, no overlap) after every iteration.
+ * ---------------------------------------------------------------------- */
+
+/* Distortion energies. */
+typedef enum scaf_energy {
+    SCAF_ENERGY_SYMMETRIC_DIRICHLET = 0, /* ||J||^2 + ||J^-1||^2 */
+    SCAF_ENERGY_ARAP,                    /* ||J - R||^2 */
+    SCAF_ENERGY_CONFORMAL                /* MIPS: ||J||^2 / det J */
+} scaf_energy;
+
+/* Initial embedding of each chart. */
+typedef enum scaf_init {
+    SCAF_INIT_TUTTE = 0, /* uniform weights: always valid */
+    SCAF_INIT_HARMONIC   /* cotangent weights, falls back to Tutte if any
+                            triangle flips */
+} scaf_init;
+
+/* Options. Always start from scaf_options_default() so that fields added
+ * later get their defaults. */
+typedef struct scaf_options {
+    scaf_energy energy;      /* mesh distortion energy
+                                (SCAF_ENERGY_SYMMETRIC_DIRICHLET) */
+    scaf_init init;          /* initial embedding (SCAF_INIT_TUTTE) */
+    int max_iterations;      /* iteration cap of scaf_param_run (50) */
+    double tolerance;        /* stop when the relative decrease of the
+                                reported energy E over one iteration is
+                                below this; 0 disables (1e-6) */
+    double box_scale;        /* scaffold box = this times the current UV
+                                bounding box, same center; recomputed
+                                before each iteration and fixed during its
+                                solve (3) */
+    int box_square;          /* 1: the box is a square around the center
+                                (side = scale * longest bbox side);
+                                0: a rectangle (0) */
+    int box_points_per_side; /* points placed on each box side, corners
+                                included in the count (5) */
+    double lambda_ratio;     /* scaffold weight lambda = lambda_ratio *
+                                E_M / |S| (E_M: area-weighted mesh energy,
+                                |S|: scaffold triangle count), re-evaluated
+                                each iteration (0.01, the paper's 1/100) */
+    double min_angle_deg;    /* scaffold quality bound in degrees (20) */
+    double step_fraction;    /* line search starts at this fraction of the
+                                largest flip-free step (0.8) */
+} scaf_options_t;
+
+/* The documented defaults above. */
+scaf_options_t scaf_options_default(void);
+
+/* What one iteration did, passed to the progress callback. */
+typedef enum scaf_phase {
+    SCAF_PHASE_ASSEMBLY = 0,   /* Jacobians, weights, sparse system */
+    SCAF_PHASE_ANALYSIS,       /* fill-reducing ordering, symbolic analysis */
+    SCAF_PHASE_FACTORIZATION,  /* numerical Cholesky factorization */
+    SCAF_PHASE_SOLVE,          /* triangular solves */
+    SCAF_PHASE_LINE_SEARCH,    /* flip-free step, Armijo, exact checks */
+    SCAF_PHASE_SCAFFOLD,       /* rebuilding the scaffold (CDT) */
+    SCAF_PHASE_OTHER,          /* everything else */
+    SCAF_PHASE_COUNT
+} scaf_phase;
+
+/* A static English name of a phase ("assembly", ...). */
+const char *scaf_phase_name(scaf_phase phase);
+
+typedef struct scaf_iteration_info {
+    int iteration;            /* 1-based count of finished iterations */
+    double energy;            /* E after the step: sum_f A_f (||J_f||^2 +
+                                 ||J_f^-1||^2) / sum_f A_f over mesh
+                                 triangles (A_f 3D area); 4 at an isometry */
+    double energy_before;     /* E before this iteration */
+    double total_before;      /* E_M + lambda E_S before the step */
+    double total_after;       /* E_M + lambda E_S after the step (same
+                                 scaffold, same lambda) */
+    double lambda;            /* scaffold weight used */
+    double step;              /* accepted step length (1 = full proxy step) */
+    int scaffold_triangles;   /* |S| */
+    int scaffold_vertices;    /* scaffold-only vertices (box + Steiner) */
+    double seconds;           /* wall time of this iteration */
+    double phase_seconds[SCAF_PHASE_COUNT]; /* split of `seconds` */
+} scaf_iteration_info_t;
+
+/* Progress callback: called after every iteration. Return nonzero to stop
+ * the run (scaf_param_run then returns SCAF_ERR_CANCELLED; the UV map of
+ * the last finished iteration stays available and bijective). */
+typedef int (*scaf_param_progress_fn)(const scaf_iteration_info_t *info, void *user);
+
+/* Opaque parametrization context. Not thread-safe itself; two contexts
+ * may run in two threads. */
+typedef struct scaf_param scaf_param_t;
+
+/* A new context with a copy of the options (NULL: defaults). Returns NULL
+ * only when out of memory. */
+scaf_param_t *scaf_param_new(const scaf_options_t *options);
+
+/* Replace the options (validated: SCAF_ERR_USAGE on a bad value). Takes
+ * effect at the next scaf_param_run; `init` only at scaf_param_set_mesh. */
+scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *options);
+
+/* Set the mesh and compute the initial embedding.
+ *   V   #V by 3 vertex positions (nv rows)
+ *   F   #F by 3 vertex indices per triangle, counter-clockwise (nf rows)
+ *   UV  #UV by 2 texture coordinates, or NULL (nuv = 0): then each
+ *       connected component is one chart
+ *   FT  #F by 3 UV indices per corner (with UV), defining the charts by
+ *       their seams; only the connectivity is used, not the UV values
+ * Fails with SCAF_ERR_MESH naming the chart and the reason when a chart is
+ * closed, has genus, is non-manifold or non-orientable, or has a
+ * degenerate triangle; SCAF_ERR_USAGE on out-of-range indices. */
+scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F, int nf,
+                                const double *UV, int nuv, const int *FT);
+
+/* Run up to `iterations` SCAF iterations (<= 0: options.max_iterations),
+ * stopping early at the tolerance. progress may be NULL. */
+scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_fn progress,
+                           void *user);
+
+/* The current reported energy E (see scaf_iteration_info_t). */
+double scaf_param_energy(const scaf_param_t *p);
+
+/* Number of charts, of finished iterations. */
+int scaf_param_chart_count(const scaf_param_t *p);
+int scaf_param_iterations(const scaf_param_t *p);
+
+/* Number of output UV coordinates: one per (chart, vertex) pair. */
+int scaf_param_uv_count(const scaf_param_t *p);
+
+/* Copy the current map out:
+ *   UV  #UV by 2 (#UV = scaf_param_uv_count)
+ *   FT  #F by 3 UV index per corner of each input triangle (may be NULL) */
+scaf_status scaf_param_get_uv(const scaf_param_t *p, double *UV, int *FT);
+
+/* The message of the last failure ("" when none). Valid until the next
+ * call on p. */
+const char *scaf_param_error(const scaf_param_t *p);
+
+/* Free everything. NULL is allowed. */
+void scaf_param_destroy(scaf_param_t *p);
+
 #ifdef __cplusplus
 }
 #endif

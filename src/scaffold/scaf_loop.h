@@ -1,0 +1,66 @@
+/* scaffold/scaf_loop: the SCAF iteration on a set of UV charts.
+ *
+ * Works on a "working mesh": all charts side by side (vertices are chart
+ * vertices; a 3D vertex on a seam appears once per chart), 3D positions
+ * for the rest shapes and the current UV positions, which must form a
+ * bijective map (positively oriented triangles, no overlaps) on entry.
+ * One iteration (scaf_loop_step):
+ *   1. build the scaffold around the current chart boundaries inside a box
+ *      box_scale times the UV bounding box (fixed during this solve);
+ *   2. scaffold rest shapes = their current shapes (guard: rest area below
+ *      eps = l^2/4 -> equilateral of area eps), lambda = lambda_ratio *
+ *      E_M / |S|;
+ *   3. one SLIM proxy solve of E_M + lambda E_S with the box fixed
+ *      (CHOLMOD, supernodal);
+ *   4. line search: largest flip-free step over mesh and scaffold, a
+ *      fraction of it, Armijo backtracking on the total energy, and an
+ *      exact orient2d confirmation of every triangle before accepting.
+ * Each accepted step lowers the total energy; every triangle stays
+ * positively oriented, so the map stays bijective.
+ * Fails with SCAF_ERR_NUMERIC (factorization), SCAF_ERR_NOMEM, or passes on
+ * the scaffold mesher's error; on failure the UV positions are unchanged.
+ */
+#ifndef SCAF_SCAFFOLD_SCAF_LOOP_H
+#define SCAF_SCAFFOLD_SCAF_LOOP_H
+
+#include "base/error.h"
+#include "scaffold/scaffold_build.h"
+
+typedef struct scaf_loop {
+    int nv, nf;
+    int *F;              /* nf by 3 working faces */
+    double *uv;          /* nv by 2 current UV positions (updated) */
+    double *Dminv;       /* nf by 4 rest frames */
+    double *area;        /* nf 3D areas */
+    double total_area;
+    int nbedges;
+    int *bedges;         /* nbedges by 2 chart boundary edges, chart on the left */
+    scaf_options_t opt;
+    scaffold sc;         /* the scaffold of the last iteration */
+    int iterations;
+    void *chol;          /* CHOLMOD common (opaque here) */
+} scaf_loop;
+
+/* Set up. V3 nv by 3 rest positions, F nf by 3 faces (counter-clockwise
+ * in UV), uv0 nv by 2 initial bijective UV map. Copies everything.
+ * Fails with SCAF_ERR_MESH on a triangle of zero 3D area or a triangle
+ * not positively oriented in uv0. */
+scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const int *F,
+                           const double *uv0, const scaf_options_t *opt, scaf_error *err);
+
+/* One iteration; fills info (may be NULL). */
+scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error *err);
+
+/* Reported energy E = sum A_f SD(J_f) / sum A_f of the current map. */
+double scaf_loop_energy(const scaf_loop *L);
+
+/* Per-triangle symmetric Dirichlet energy of the current map (nf values). */
+void scaf_loop_face_energy(const scaf_loop *L, double *E);
+
+/* Build a scaffold around the current map (for pictures); sc freed by the
+ * caller with scaffold_free. */
+scaf_status scaf_loop_scaffold(const scaf_loop *L, scaffold *sc, scaf_error *err);
+
+void scaf_loop_free(scaf_loop *L);
+
+#endif /* SCAF_SCAFFOLD_SCAF_LOOP_H */
