@@ -8,7 +8,10 @@
 
 /* Add a subcommand: write tools/cmd_NAME.c with `int cmd_NAME(int, char **)`,
  * declare it here and list it in the table. */
+int cmd_param(int argc, char **argv);
+
 const command scaf_commands[] = {
+    {"param", "bijective UV parametrization with SCAF (writes OBJ with vt)", cmd_param},
     {NULL, NULL, NULL}
 };
 

@@ -8,6 +8,8 @@
 #ifndef SCAF_APP_PARAM_H
 #define SCAF_APP_PARAM_H
 
+#include <stddef.h>
+
 #include "scaf/scaf.h"
 #include "scaffold/scaf_loop.h"
 

@@ -16,6 +16,8 @@
 #ifndef SCAF_SCAFFOLD_SCAFFOLD_BUILD_H
 #define SCAF_SCAFFOLD_SCAFFOLD_BUILD_H
 
+#include <stddef.h>
+
 #include "base/error.h"
 
 typedef struct scaffold_options {

@@ -1,0 +1,288 @@
+/* tools/cmd_param: `scaf param IN -o OUT.obj`: bijective UV parametrization.
+ *
+ * A thin layer over the scaf_param_* API: reads the mesh, runs SCAF with
+ * a live progress line on stderr (when it is a terminal), writes the OBJ
+ * (original `v` lines, new `vt` + `f v/vt`) atomically, and optionally an
+ * SVG picture and a JSON report. Bad input gives a message and the exit
+ * status of tools/exit_codes.h, and no output file.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "app/param.h"
+#include "app/param_report.h"
+#include "app/uv_svg.h"
+#include "exit_codes.h"
+#include "mesh/mesh_io.h"
+#include "scaf/scaf.h"
+#include "scaffold/scaf_loop.h"
+
+static void usage(FILE *o)
+{
+    fprintf(o,
+            "usage: scaf param IN -o OUT.obj [options]\n"
+            "\n"
+            "Computes a bijective, low-distortion UV map (no flipped triangle, no overlap)\n"
+            "with SCAF and writes the mesh as OBJ with `vt` and `f v/vt` (the `v` lines are\n"
+            "kept). Charts: the connected components of a mesh without UVs, or the pieces of\n"
+            "the mesh cut along its UV seams; each must be a disk, possibly with holes.\n"
+            "\n"
+            "options:\n"
+            "  -o, --output FILE      output OBJ (required)\n"
+            "  --iterations N         iteration cap (default 50)\n"
+            "  --tolerance T          stop when E decreases by less than T relatively in one\n"
+            "                         iteration (default 1e-6; 0 = run all iterations)\n"
+            "  --energy NAME          symmetric-dirichlet (default), arap, conformal\n"
+            "  --init NAME            tutte (default) or harmonic\n"
+            "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
+            "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01)\n"
+            "  --min-angle DEG        scaffold minimum angle (default 20)\n"
+            "  --quiet                no progress line\n"
+            "  --report FILE.json     options, per-iteration energy and time, phase split\n"
+            "  --svg FILE             picture of the UV layout shaded by distortion\n"
+            "  --svg-scaffold         also draw the scaffold in the picture\n"
+            "  -h, --help             this text\n"
+            "\n"
+            "The energy E reported is sum_f A_f (|J_f|^2 + |J_f^-1|^2) / sum_f A_f over the\n"
+            "mesh triangles (A_f: 3D area); 4 at an isometry.\n"
+            "Exit status: 0 ok, 2 usage, 3 unreadable input, 4 invalid mesh (closed,\n"
+            "genus, non-manifold chart...), 5 output not written, 6 numerical failure.\n");
+}
+
+typedef struct progress_state {
+    int live;
+    int cap;
+    scaf_iteration_info_t *it;
+    int n, size;
+    int oom;
+} progress_state;
+
+static int on_iteration(const scaf_iteration_info_t *info, void *user)
+{
+    progress_state *s = user;
+    if (s->n == s->size) {
+        int size = s->size ? 2 * s->size : 64;
+        scaf_iteration_info_t *p = realloc(s->it, sizeof *p * (size_t)size);
+        if (!p) {
+            s->oom = 1;
+            return 0;
+        }
+        s->it = p;
+        s->size = size;
+    }
+    s->it[s->n++] = *info;
+    if (s->live) {
+        fprintf(stderr, "\rscaf param: iteration %d/%d  E = %.6f  step %.3g  %.3f s/it   ", info->iteration, s->cap,
+                info->energy, info->step, info->seconds);
+        fflush(stderr);
+    }
+    return 0;
+}
+
+static int parse_int(const char *s, int *out)
+{
+    char *end;
+    long v = strtol(s, &end, 10);
+    if (!*s || *end || v < 0 || v > 100000000) return 0;
+    *out = (int)v;
+    return 1;
+}
+
+static int parse_double(const char *s, double *out)
+{
+    char *end;
+    double v = strtod(s, &end);
+    if (!*s || *end || !isfinite(v)) return 0;
+    *out = v;
+    return 1;
+}
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int cmd_param(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
+    int quiet = 0, svg_scaffold = 0;
+    scaf_options_t opt = scaf_options_default();
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+#define NEED_VALUE()                                                             \
+    do {                                                                         \
+        if (!v) {                                                                \
+            fprintf(stderr, "scaf param: %s needs a value (see --help)\n", a); \
+            return EXIT_USAGE;                                                   \
+        }                                                                        \
+        i++;                                                                     \
+    } while (0)
+#define BAD_VALUE()                                                                    \
+    do {                                                                               \
+        fprintf(stderr, "scaf param: invalid value '%s' for %s (see --help)\n", v, a); \
+        return EXIT_USAGE;                                                             \
+    } while (0)
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            usage(stdout);
+            return EXIT_OK;
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            NEED_VALUE();
+            out = v;
+        } else if (!strcmp(a, "--iterations")) {
+            NEED_VALUE();
+            if (!parse_int(v, &opt.max_iterations)) BAD_VALUE();
+        } else if (!strcmp(a, "--tolerance")) {
+            NEED_VALUE();
+            if (!parse_double(v, &opt.tolerance) || opt.tolerance < 0) BAD_VALUE();
+        } else if (!strcmp(a, "--energy")) {
+            NEED_VALUE();
+            if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd")) opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
+            else if (!strcmp(v, "arap")) opt.energy = SCAF_ENERGY_ARAP;
+            else if (!strcmp(v, "conformal") || !strcmp(v, "mips")) opt.energy = SCAF_ENERGY_CONFORMAL;
+            else BAD_VALUE();
+        } else if (!strcmp(a, "--init")) {
+            NEED_VALUE();
+            if (!strcmp(v, "tutte")) opt.init = SCAF_INIT_TUTTE;
+            else if (!strcmp(v, "harmonic")) opt.init = SCAF_INIT_HARMONIC;
+            else BAD_VALUE();
+        } else if (!strcmp(a, "--box-scale")) {
+            NEED_VALUE();
+            if (!parse_double(v, &opt.box_scale)) BAD_VALUE();
+        } else if (!strcmp(a, "--lambda-ratio")) {
+            NEED_VALUE();
+            if (!parse_double(v, &opt.lambda_ratio)) BAD_VALUE();
+        } else if (!strcmp(a, "--min-angle")) {
+            NEED_VALUE();
+            if (!parse_double(v, &opt.min_angle_deg)) BAD_VALUE();
+        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
+            quiet = 1;
+        } else if (!strcmp(a, "--report")) {
+            NEED_VALUE();
+            report = v;
+        } else if (!strcmp(a, "--svg")) {
+            NEED_VALUE();
+            svg = v;
+        } else if (!strcmp(a, "--svg-scaffold")) {
+            svg_scaffold = 1;
+        } else if (a[0] == '-' && a[1]) {
+            fprintf(stderr, "scaf param: unknown option '%s' (see --help)\n", a);
+            return EXIT_USAGE;
+        } else if (!in) {
+            in = a;
+        } else {
+            fprintf(stderr, "scaf param: more than one input ('%s', '%s')\n", in, a);
+            return EXIT_USAGE;
+        }
+#undef NEED_VALUE
+#undef BAD_VALUE
+    }
+    if (!in || !out) {
+        fprintf(stderr, "scaf param: %s (see --help)\n", !in ? "no input file" : "no output file: use -o OUT.obj");
+        return EXIT_USAGE;
+    }
+    char msg[256];
+    if (param_options_check(&opt, msg, sizeof msg) != SCAF_OK) {
+        fprintf(stderr, "scaf param: %s\n", msg);
+        return EXIT_USAGE;
+    }
+
+    double t_start = now();
+    mesh m;
+    scaf_error err;
+    err_clear(&err);
+    if (mesh_read(in, &m, NULL, &err) != SCAF_OK) {
+        fprintf(stderr, "scaf param: %s\n", err.message);
+        return err.code == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_INPUT;
+    }
+    int rc = EXIT_OK;
+    scaf_param_t *p = scaf_param_new(&opt);
+    progress_state ps = {0};
+    double *UV = NULL;
+    int *FT = NULL;
+    if (!p) {
+        fprintf(stderr, "scaf param: out of memory\n");
+        mesh_free(&m);
+        return EXIT_NOMEM;
+    }
+    scaf_status st = mesh_has_uv(&m) ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
+                                     : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf param: %s: %s\n", in, scaf_param_error(p));
+        rc = st == SCAF_ERR_USAGE ? EXIT_MESH : exit_code_for(st);
+        goto done;
+    }
+    double setup = now() - t_start;
+    double e0 = scaf_param_energy(p);
+    ps.live = !quiet && isatty(fileno(stderr));
+    ps.cap = opt.max_iterations;
+    if (!quiet && !ps.live)
+        fprintf(stderr, "scaf param: %s: %d faces, %d chart(s), initial E = %.6f\n", in, m.nf, scaf_param_chart_count(p), e0);
+    st = scaf_param_run(p, opt.max_iterations, on_iteration, &ps);
+    if (ps.live) fputc('\n', stderr);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf param: %s: %s\n", in, scaf_param_error(p));
+        rc = exit_code_for(st);
+        goto done;
+    }
+    double e1 = scaf_param_energy(p);
+    if (!quiet)
+        fprintf(stderr, "scaf param: %d iterations, E %.6f -> %.6f, %.3f s\n", scaf_param_iterations(p), e0, e1,
+                now() - t_start);
+
+    int nuv = scaf_param_uv_count(p);
+    UV = malloc(sizeof(double) * 2 * (size_t)nuv);
+    FT = malloc(sizeof(int) * 3 * (size_t)m.nf);
+    if (!UV || !FT) {
+        fprintf(stderr, "scaf param: out of memory\n");
+        rc = EXIT_NOMEM;
+        goto done;
+    }
+    scaf_param_get_uv(p, UV, FT);
+    mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
+    if (mesh_write_obj(out, &o, &err) != SCAF_OK) {
+        fprintf(stderr, "scaf param: %s\n", err.message);
+        rc = EXIT_OUTPUT;
+        goto done;
+    }
+    if (svg) {
+        const scaf_loop *L = param_loop(p);
+        double *E = malloc(sizeof(double) * (size_t)m.nf);
+        uv_svg_scaffold ss = {0};
+        if (E) scaf_loop_face_energy(L, E);
+        if (svg_scaffold && L->sc.ntri > 0) {
+            ss.ntri = L->sc.ntri;
+            ss.T = L->sc.T;
+            ss.extra = L->sc.extra_uv;
+        }
+        char title[256];
+        snprintf(title, sizeof title, "%s: E = %.5f after %d iterations (4 = isometry)", in, e1, scaf_param_iterations(p));
+        /* Working vertex ids are the UV ids: draw with the loop's faces. */
+        st = uv_svg_write(svg, L->nv, L->uv, L->nf, L->F, E, ss.ntri ? &ss : NULL, title, &err);
+        free(E);
+        if (st != SCAF_OK) {
+            fprintf(stderr, "scaf param: %s\n", err.message);
+            rc = EXIT_OUTPUT;
+        }
+    }
+    if (report) {
+        param_report r = {in, out, &opt, m.nv, m.nf, scaf_param_chart_count(p), setup, e0, e1, "ok", ps.n, ps.it};
+        if (param_report_write(report, &r, &err) != SCAF_OK) {
+            fprintf(stderr, "scaf param: %s\n", err.message);
+            rc = EXIT_OUTPUT;
+        }
+    }
+done:
+    free(UV);
+    free(FT);
+    free(ps.it);
+    scaf_param_destroy(p);
+    mesh_free(&m);
+    return rc;
+}
