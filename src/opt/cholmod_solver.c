@@ -1,0 +1,203 @@
+/* opt/cholmod_solver: sparse Cholesky (CHOLMOD, supernodal) with reuse.
+ *
+ * The analyzed pattern (colptr, rowidx) is copied so a later matrix can be
+ * compared exactly; comparing costs O(nnz) memory reads, negligible next to
+ * a factorization. CHOLMOD's own printing is switched off: failures come
+ * back as scaf_error messages.
+ */
+#include "opt/cholmod_solver.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include <cholmod.h>
+
+#include "base/timer.h"
+
+struct opt_chol {
+    cholmod_common cm;
+    cholmod_factor *L;
+    opt_ordering ordering;
+    int n, nnz;          /* analyzed pattern */
+    int *colptr, *rowidx;
+    int factored;        /* L holds a valid numerical factor */
+    opt_chol_stats st;
+};
+
+static void set_ordering(opt_chol *c, opt_ordering ord)
+{
+    cholmod_common *cm = &c->cm;
+    if (ord == OPT_ORDER_CHOLMOD_DEFAULT) {
+        cm->nmethods = 0;
+        return;
+    }
+    cm->nmethods = 1;
+    cm->method[0].ordering = ord == OPT_ORDER_METIS ? CHOLMOD_METIS : CHOLMOD_AMD;
+    cm->postorder = 1;
+}
+
+opt_chol *opt_chol_create(opt_ordering ordering, scaf_error *err)
+{
+    opt_chol *c = calloc(1, sizeof *c);
+    if (!c) {
+        err_nomem(err, "CHOLMOD solver");
+        return NULL;
+    }
+    if (!cholmod_start(&c->cm)) {
+        free(c);
+        err_set(err, SCAF_ERR_NUMERIC, "CHOLMOD could not start");
+        return NULL;
+    }
+    c->cm.print = 0;
+    c->cm.error_handler = NULL;
+    c->cm.supernodal = CHOLMOD_SUPERNODAL;
+    c->cm.final_ll = 1; /* keep L L^T (not LDL^T) after a supernodal factorization */
+    c->ordering = ordering;
+    set_ordering(c, ordering);
+    return c;
+}
+
+void opt_chol_destroy(opt_chol *c)
+{
+    if (!c) return;
+    if (c->L) cholmod_free_factor(&c->L, &c->cm);
+    cholmod_finish(&c->cm);
+    free(c->colptr);
+    free(c->rowidx);
+    free(c);
+}
+
+/* A header over the caller's arrays (never freed by CHOLMOD). */
+static cholmod_sparse wrap(const opt_csc *A)
+{
+    cholmod_sparse S;
+    memset(&S, 0, sizeof S);
+    S.nrow = S.ncol = (size_t)A->n;
+    S.nzmax = (size_t)A->nnz;
+    S.p = A->colptr;
+    S.i = A->rowidx;
+    S.x = A->val;
+    S.stype = 1;
+    S.itype = CHOLMOD_INT;
+    S.xtype = CHOLMOD_REAL;
+    S.dtype = CHOLMOD_DOUBLE;
+    S.sorted = 1;
+    S.packed = 1;
+    return S;
+}
+
+static const char *status_text(int status)
+{
+    switch (status) {
+    case CHOLMOD_OK: return "ok";
+    case CHOLMOD_NOT_INSTALLED: return "method not installed";
+    case CHOLMOD_OUT_OF_MEMORY: return "out of memory";
+    case CHOLMOD_TOO_LARGE: return "problem too large";
+    case CHOLMOD_INVALID: return "invalid input";
+    case CHOLMOD_GPU_PROBLEM: return "GPU problem";
+    case CHOLMOD_NOT_POSDEF: return "matrix not positive definite";
+    case CHOLMOD_DSMALL: return "diagonal of the factor very small";
+    }
+    return "unknown CHOLMOD status";
+}
+
+static scaf_status fail(opt_chol *c, const char *what, scaf_error *err)
+{
+    int s = c->cm.status;
+    if (s == CHOLMOD_OUT_OF_MEMORY) return err_nomem(err, what);
+    return err_set(err, SCAF_ERR_NUMERIC, "CHOLMOD %s failed: %s (status %d)", what, status_text(s), s);
+}
+
+static int same_pattern(const opt_chol *c, const opt_csc *A)
+{
+    return c->L && c->n == A->n && c->nnz == A->nnz &&
+           memcmp(c->colptr, A->colptr, ((size_t)A->n + 1) * sizeof *A->colptr) == 0 &&
+           memcmp(c->rowidx, A->rowidx, (size_t)A->nnz * sizeof *A->rowidx) == 0;
+}
+
+scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm,
+                                   scaf_error *err)
+{
+    if (A->n < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD: empty system (no free unknowns)");
+    double t0 = timer_now();
+    if (c->L) cholmod_free_factor(&c->L, &c->cm);
+    c->factored = 0;
+    c->n = c->nnz = 0;
+    cholmod_sparse S = wrap(A);
+    if (perm) {
+        /* A given permutation: use it as the only method. */
+        int save_n = c->cm.nmethods, save_ord = c->cm.method[0].ordering;
+        c->cm.nmethods = 1;
+        c->cm.method[0].ordering = CHOLMOD_GIVEN;
+        c->L = cholmod_analyze_p(&S, (int *)perm, NULL, 0, &c->cm);
+        c->cm.nmethods = save_n;
+        c->cm.method[0].ordering = save_ord;
+    } else {
+        c->L = cholmod_analyze(&S, &c->cm);
+    }
+    if (!c->L) return fail(c, "analysis", err);
+    int *cp = realloc(c->colptr, ((size_t)A->n + 1) * sizeof *cp);
+    if (!cp) return err_nomem(err, "CHOLMOD pattern copy");
+    c->colptr = cp;
+    int *ri = realloc(c->rowidx, ((size_t)A->nnz + 1) * sizeof *ri);
+    if (!ri) return err_nomem(err, "CHOLMOD pattern copy");
+    c->rowidx = ri;
+    memcpy(c->colptr, A->colptr, ((size_t)A->n + 1) * sizeof *cp);
+    memcpy(c->rowidx, A->rowidx, (size_t)A->nnz * sizeof *ri);
+    c->n = A->n;
+    c->nnz = A->nnz;
+    c->st.analyses++;
+    c->st.t_analyze += timer_now() - t0;
+    return SCAF_OK;
+}
+
+scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
+{
+    if (!same_pattern(c, A)) {
+        scaf_status st = opt_chol_analyze_given(c, A, NULL, err);
+        if (st != SCAF_OK) return st;
+    }
+    double t0 = timer_now();
+    cholmod_sparse S = wrap(A);
+    c->factored = 0;
+    int ok = cholmod_factorize(&S, c->L, &c->cm);
+    c->st.t_factor += timer_now() - t0;
+    if (!ok) return fail(c, "factorization", err);
+    if (c->cm.status == CHOLMOD_NOT_POSDEF || c->L->minor < c->L->n)
+        return err_set(err, SCAF_ERR_NUMERIC,
+                       "CHOLMOD factorization: matrix not positive definite (fails at column %d of "
+                       "%d after reordering; a free vertex may be unconstrained or a weight "
+                       "negative)",
+                       (int)c->L->minor, (int)c->L->n);
+    c->factored = 1;
+    c->st.factorizations++;
+    c->st.nnz_L = c->cm.lnz;
+    c->st.flops = c->cm.fl;
+    return SCAF_OK;
+}
+
+scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, scaf_error *err)
+{
+    if (!c->factored) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD solve called before a successful factorization");
+    if (nrhs < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD solve: %d right-hand sides", nrhs);
+    double t0 = timer_now();
+    cholmod_dense Bd;
+    memset(&Bd, 0, sizeof Bd);
+    Bd.nrow = (size_t)c->n;
+    Bd.ncol = (size_t)nrhs;
+    Bd.nzmax = Bd.nrow * Bd.ncol;
+    Bd.d = Bd.nrow;
+    Bd.x = (void *)B;
+    Bd.xtype = CHOLMOD_REAL;
+    Bd.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense *Xd = cholmod_solve(CHOLMOD_A, c->L, &Bd, &c->cm);
+    if (!Xd) return fail(c, "solve", err);
+    memcpy(X, Xd->x, Bd.nzmax * sizeof *X);
+    cholmod_free_dense(&Xd, &c->cm);
+    c->st.t_solve += timer_now() - t0;
+    return SCAF_OK;
+}
+
+const int *opt_chol_permutation(const opt_chol *c) { return c->L ? (const int *)c->L->Perm : NULL; }
+
+opt_chol_stats opt_chol_get_stats(const opt_chol *c) { return c->st; }

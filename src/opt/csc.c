@@ -1,0 +1,93 @@
+/* opt/csc: symmetric sparse matrices in compressed-column form (upper part).
+ *
+ * Triplets are bucketed by column (counting sort), each column's rows
+ * sorted by insertion sort (columns are short in mesh matrices), and
+ * duplicates summed.
+ */
+#include "opt/csc.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void opt_csc_free(opt_csc *A)
+{
+    if (!A) return;
+    free(A->colptr);
+    free(A->rowidx);
+    free(A->val);
+    memset(A, 0, sizeof *A);
+}
+
+void opt_csc_symv(const opt_csc *A, const double *x, double *y)
+{
+    for (int i = 0; i < A->n; i++) y[i] = 0;
+    for (int c = 0; c < A->n; c++)
+        for (int k = A->colptr[c]; k < A->colptr[c + 1]; k++) {
+            int r = A->rowidx[k];
+            y[r] += A->val[k] * x[c];
+            if (r != c) y[c] += A->val[k] * x[r];
+        }
+}
+
+scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const int *Jc,
+                                  const double *Val, scaf_error *err)
+{
+    memset(A, 0, sizeof *A);
+    for (int k = 0; k < nt; k++)
+        if (I[k] < 0 || I[k] >= n || Jc[k] < 0 || Jc[k] >= n)
+            return err_set(err, SCAF_ERR_USAGE, "triplet %d: index (%d, %d) outside a %d by %d matrix",
+                           k, I[k], Jc[k], n, n);
+    int *cp = calloc((size_t)n + 1, sizeof *cp);
+    int *rows = malloc(((size_t)nt + 1) * sizeof *rows);
+    double *vals = malloc(((size_t)nt + 1) * sizeof *vals);
+    if (!cp || !rows || !vals) {
+        free(cp); free(rows); free(vals);
+        return err_nomem(err, "sparse matrix");
+    }
+    for (int k = 0; k < nt; k++) {
+        int c = I[k] > Jc[k] ? I[k] : Jc[k];
+        cp[c + 1]++;
+    }
+    for (int c = 0; c < n; c++) cp[c + 1] += cp[c];
+    int *next = malloc(((size_t)n + 1) * sizeof *next);
+    if (!next) {
+        free(cp); free(rows); free(vals);
+        return err_nomem(err, "sparse matrix");
+    }
+    memcpy(next, cp, ((size_t)n + 1) * sizeof *next);
+    for (int k = 0; k < nt; k++) {
+        int r = I[k] < Jc[k] ? I[k] : Jc[k], c = I[k] > Jc[k] ? I[k] : Jc[k];
+        rows[next[c]] = r;
+        vals[next[c]++] = Val[k];
+    }
+    /* Sort each column by row and sum duplicates, compacting in place. */
+    int out = 0;
+    for (int c = 0; c < n; c++) {
+        int b = cp[c], e = cp[c + 1];
+        for (int i = b + 1; i < e; i++) {
+            int r = rows[i];
+            double v = vals[i];
+            int j = i - 1;
+            while (j >= b && rows[j] > r) { rows[j + 1] = rows[j]; vals[j + 1] = vals[j]; j--; }
+            rows[j + 1] = r;
+            vals[j + 1] = v;
+        }
+        next[c] = out;
+        for (int i = b; i < e; i++) {
+            if (i > b && rows[i] == rows[i - 1]) {
+                vals[out - 1] += vals[i];
+            } else {
+                rows[out] = rows[i];
+                vals[out++] = vals[i];
+            }
+        }
+    }
+    next[n] = out;
+    free(cp);
+    A->n = n;
+    A->nnz = out;
+    A->colptr = next;
+    A->rowidx = rows;
+    A->val = vals;
+    return SCAF_OK;
+}

@@ -1,0 +1,36 @@
+/* opt/csc: symmetric sparse matrices in compressed-column form (upper part).
+ *
+ * The optimizer's systems are symmetric; only the upper triangle is stored
+ * (row <= col), rows ascending within each column, no duplicates. That is
+ * CHOLMOD's stype = 1 layout, so the solver wraps these arrays without a
+ * copy. opt_csc_from_triplets builds one from (row, col, value) triplets
+ * in either triangle, summing duplicates — used for one-off systems
+ * (Tutte / harmonic); the SLIM proxy uses the cached-pattern path in
+ * opt/proxy_block. Fails only with SCAF_ERR_NOMEM or SCAF_ERR_USAGE
+ * (index out of range).
+ */
+#ifndef SCAF_OPT_CSC_H
+#define SCAF_OPT_CSC_H
+
+#include "base/error.h"
+
+typedef struct opt_csc {
+    int n;       /* rows = columns */
+    int nnz;     /* stored entries */
+    int *colptr; /* n+1 column starts */
+    int *rowidx; /* nnz row indices, row <= col, ascending per column */
+    double *val; /* nnz values */
+} opt_csc;
+
+/* Free and reset to empty; safe on a zeroed struct. */
+void opt_csc_free(opt_csc *A);
+
+/* y = A x for the symmetric matrix whose upper part A stores. x, y: n. */
+void opt_csc_symv(const opt_csc *A, const double *x, double *y);
+
+/* Build the upper part from nt triplets (rows I, columns Jc, values Val),
+ * either triangle, duplicates summed. */
+scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const int *Jc,
+                                  const double *Val, scaf_error *err);
+
+#endif /* SCAF_OPT_CSC_H */

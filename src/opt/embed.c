@@ -1,0 +1,244 @@
+/* opt/embed: initial bijective map of one chart into the plane.
+ *
+ * Steps: validate, fill holes with fans, pin the outer loop to the circle,
+ * assemble the weighted Laplacian of the free vertices (boundary columns
+ * moved to the right side), solve for u and v together, drop the fill,
+ * check every original triangle exactly. Loop direction is read from the
+ * faces: the face that owns boundary edge a -> b says which way is
+ * counter-clockwise.
+ */
+#include "opt/embed.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom/predicates.h"
+#include "opt/cholmod_solver.h"
+#include "opt/csc.h"
+
+static const double SCAF_PI = 3.14159265358979323846;
+
+/* 1 if some face has the directed edge a -> b, 0 if one has b -> a, -1 if none. */
+static int edge_direction(int nf, const int *F, int a, int b)
+{
+    for (int f = 0; f < nf; f++)
+        for (int k = 0; k < 3; k++) {
+            int p = F[3 * f + k], q = F[3 * f + (k + 1) % 3];
+            if (p == a && q == b) return 1;
+            if (p == b && q == a) return 0;
+        }
+    return -1;
+}
+
+static double dist3(const double *a, const double *b)
+{
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+static double tri_area3(const double *a, const double *b, const double *c)
+{
+    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+    return 0.5 * sqrt(x * x + y * y + z * z);
+}
+
+/* cot of the angle at a in triangle a b c. */
+static double cot_at(const double *a, const double *b, const double *c)
+{
+    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+    double cr = sqrt(x * x + y * y + z * z);
+    return (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / cr;
+}
+
+/* Solve the Laplace system on the filled disk. UV2 holds boundary values
+ * on entry (fixed[v] != 0) and all values on success. */
+static scaf_status solve_laplace(int nv2, const double *V2, int nf2, const int *F2,
+                                 const unsigned char *fixed, int cotan, double *UV2,
+                                 scaf_error *err)
+{
+    int *dof = malloc((size_t)nv2 * sizeof *dof);
+    size_t cap = (size_t)nf2 * 12 + 1;
+    int *I = malloc(cap * sizeof *I), *Jc = malloc(cap * sizeof *Jc);
+    double *Val = malloc(cap * sizeof *Val);
+    double *b = NULL, *x = NULL;
+    opt_csc A = {0};
+    opt_chol *ch = NULL;
+    scaf_status st = SCAF_OK;
+    if (!dof || !I || !Jc || !Val) { st = err_nomem(err, "embedding system"); goto done; }
+    int n = 0;
+    for (int v = 0; v < nv2; v++) dof[v] = fixed[v] ? -1 : n++;
+    b = calloc(2 * (size_t)(n ? n : 1), sizeof *b);
+    x = malloc(2 * (size_t)(n ? n : 1) * sizeof *x);
+    if (!b || !x) { st = err_nomem(err, "embedding system"); goto done; }
+    int nt = 0;
+    for (int f = 0; f < nf2; f++) {
+        for (int k = 0; k < 3; k++) {
+            int o = F2[3 * f + k], i = F2[3 * f + (k + 1) % 3], j = F2[3 * f + (k + 2) % 3];
+            double w = cotan ? 0.5 * cot_at(V2 + 3 * (size_t)o, V2 + 3 * (size_t)i, V2 + 3 * (size_t)j) : 1.0;
+            if (!isfinite(w)) { st = err_set(err, SCAF_ERR_NUMERIC, "embedding: face %d has a non-finite cotangent weight", f); goto done; }
+            int di = dof[i], dj = dof[j];
+            if (di >= 0) { I[nt] = di; Jc[nt] = di; Val[nt++] = w; }
+            if (dj >= 0) { I[nt] = dj; Jc[nt] = dj; Val[nt++] = w; }
+            if (di >= 0 && dj >= 0) { I[nt] = di; Jc[nt] = dj; Val[nt++] = -w; }
+            else if (di >= 0) { b[di] += w * UV2[2 * (size_t)j]; b[n + di] += w * UV2[2 * (size_t)j + 1]; }
+            else if (dj >= 0) { b[dj] += w * UV2[2 * (size_t)i]; b[n + dj] += w * UV2[2 * (size_t)i + 1]; }
+        }
+    }
+    if (n > 0) {
+        st = opt_csc_from_triplets(&A, n, nt, I, Jc, Val, err);
+        if (st != SCAF_OK) goto done;
+        ch = opt_chol_create(OPT_ORDER_AMD, err);
+        if (!ch) { st = err->code; goto done; }
+        st = opt_chol_factor(ch, &A, err);
+        if (st != SCAF_OK) goto done;
+        st = opt_chol_solve(ch, 2, b, x, err);
+        if (st != SCAF_OK) goto done;
+        for (int v = 0; v < nv2; v++)
+            if (dof[v] >= 0) {
+                UV2[2 * (size_t)v] = x[dof[v]];
+                UV2[2 * (size_t)v + 1] = x[n + dof[v]];
+            }
+    }
+done:
+    opt_chol_destroy(ch);
+    opt_csc_free(&A);
+    free(dof); free(I); free(Jc); free(Val); free(b); free(x);
+    return st;
+}
+
+scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
+                            const opt_chart_loops *loops, opt_embed_method method, double *UV,
+                            int *used_fallback, scaf_error *err)
+{
+    scaf_error tmp;
+    if (!err) err = &tmp;
+    if (used_fallback) *used_fallback = 0;
+    /* ---- check inputs ---- */
+    if (nv < 3 || nf < 1) return err_set(err, SCAF_ERR_MESH, "chart has %d vertices and %d faces", nv, nf);
+    if (!loops || loops->nloops < 1) return err_set(err, SCAF_ERR_MESH, "chart has no boundary loop (closed surface?)");
+    for (int k = 0; k < 3 * nf; k++)
+        if (F[k] < 0 || F[k] >= nv)
+            return err_set(err, SCAF_ERR_USAGE, "face %d references vertex %d but the chart has %d", k / 3, F[k], nv);
+    int nl = loops->nloops;
+    for (int l = 0; l < nl; l++)
+        if (loops->start[l + 1] - loops->start[l] < 3)
+            return err_set(err, SCAF_ERR_MESH, "boundary loop %d has %d vertices (at least 3 needed)", l,
+                           loops->start[l + 1] - loops->start[l]);
+    unsigned char *onloop = calloc((size_t)nv, 1);
+    if (!onloop) return err_nomem(err, "embedding");
+    for (int l = 0; l < nl; l++)
+        for (int k = loops->start[l]; k < loops->start[l + 1]; k++) {
+            int v = loops->vertices[k];
+            if (v < 0 || v >= nv) { free(onloop); return err_set(err, SCAF_ERR_USAGE, "boundary loop %d references vertex %d but the chart has %d", l, v, nv); }
+            if (onloop[v]) { free(onloop); return err_set(err, SCAF_ERR_MESH, "vertex %d appears twice on the boundary loops (non-manifold boundary)", v); }
+            onloop[v] = 1;
+        }
+    free(onloop);
+    double area = 0;
+    for (int f = 0; f < nf; f++)
+        area += tri_area3(V + 3 * (size_t)F[3 * f], V + 3 * (size_t)F[3 * f + 1], V + 3 * (size_t)F[3 * f + 2]);
+    if (!(area > 0) || !isfinite(area)) return err_set(err, SCAF_ERR_MESH, "chart has 3D area %g", area);
+    /* Loop lengths, outer choice, directions. */
+    int outer = loops->outer;
+    double best = -1;
+    int *dir = malloc((size_t)nl * sizeof *dir);
+    if (!dir) return err_nomem(err, "embedding");
+    for (int l = 0; l < nl; l++) {
+        const int *lv = loops->vertices + loops->start[l];
+        int len = loops->start[l + 1] - loops->start[l];
+        double L = 0;
+        for (int k = 0; k < len; k++) L += dist3(V + 3 * (size_t)lv[k], V + 3 * (size_t)lv[(k + 1) % len]);
+        if (loops->outer < 0 && L > best) { best = L; outer = l; }
+        dir[l] = edge_direction(nf, F, lv[0], lv[1]);
+        if (dir[l] < 0) {
+            free(dir);
+            return err_set(err, SCAF_ERR_MESH, "boundary loop %d: no face has the edge %d-%d", l, lv[0], lv[1]);
+        }
+    }
+    if (outer < 0 || outer >= nl) { free(dir); return err_set(err, SCAF_ERR_USAGE, "outer loop %d of %d", outer, nl); }
+    /* ---- filled disk ---- */
+    int nholes = nl - 1, nfill = 0;
+    for (int l = 0; l < nl; l++)
+        if (l != outer) nfill += loops->start[l + 1] - loops->start[l];
+    int nv2 = nv + nholes, nf2 = nf + nfill;
+    double *V2 = malloc(3 * (size_t)nv2 * sizeof *V2);
+    int *F2 = malloc(3 * (size_t)nf2 * sizeof *F2);
+    double *UV2 = calloc(2 * (size_t)nv2, sizeof *UV2);
+    unsigned char *fixed = calloc((size_t)nv2, 1);
+    unsigned char *used = calloc((size_t)nv2, 1);
+    scaf_status st = SCAF_OK;
+    if (!V2 || !F2 || !UV2 || !fixed || !used) { st = err_nomem(err, "embedding"); goto done; }
+    memcpy(V2, V, 3 * (size_t)nv * sizeof *V2);
+    memcpy(F2, F, 3 * (size_t)nf * sizeof *F2);
+    int fv = nv, ff = nf;
+    for (int l = 0; l < nl; l++) {
+        if (l == outer) continue;
+        const int *lv = loops->vertices + loops->start[l];
+        int len = loops->start[l + 1] - loops->start[l];
+        double c[3] = {0, 0, 0};
+        for (int k = 0; k < len; k++)
+            for (int r = 0; r < 3; r++) c[r] += V[3 * (size_t)lv[k] + r] / len;
+        memcpy(V2 + 3 * (size_t)fv, c, sizeof c);
+        for (int k = 0; k < len; k++) {
+            int a = lv[k], b = lv[(k + 1) % len];
+            /* The chart's face has a -> b (dir 1) or b -> a: the fan takes the other side. */
+            F2[3 * ff] = dir[l] ? b : a;
+            F2[3 * ff + 1] = dir[l] ? a : b;
+            F2[3 * ff + 2] = fv;
+            ff++;
+        }
+        fv++;
+    }
+    for (int k = 0; k < 3 * nf2; k++) used[F2[k]] = 1;
+    /* ---- outer loop on the circle ---- */
+    {
+        const int *lv = loops->vertices + loops->start[outer];
+        int len = loops->start[outer + 1] - loops->start[outer];
+        double L = 0;
+        for (int k = 0; k < len; k++) L += dist3(V + 3 * (size_t)lv[k], V + 3 * (size_t)lv[(k + 1) % len]);
+        double r = sqrt(area / SCAF_PI), s = 0;
+        for (int k = 0; k < len; k++) {
+            /* Counter-clockwise along the faces' orientation. */
+            int v = dir[outer] ? lv[k] : lv[(len - k) % len];
+            int w = dir[outer] ? lv[(k + 1) % len] : lv[(2 * len - k - 1) % len];
+            double ang = 2.0 * SCAF_PI * s / L;
+            UV2[2 * (size_t)v] = r * cos(ang);
+            UV2[2 * (size_t)v + 1] = r * sin(ang);
+            fixed[v] = 1;
+            s += dist3(V + 3 * (size_t)v, V + 3 * (size_t)w);
+        }
+    }
+    for (int v = 0; v < nv2; v++)
+        if (!used[v]) fixed[v] = 1; /* unreferenced: stays at the center */
+    /* ---- solve, check, fall back ---- */
+    int cotan = method == OPT_EMBED_HARMONIC;
+    for (int attempt = 0; attempt < 2; attempt++) {
+        scaf_error e2;
+        err_clear(&e2);
+        st = solve_laplace(nv2, V2, nf2, F2, fixed, cotan, UV2, &e2);
+        int bad = -1;
+        if (st == SCAF_OK)
+            for (int f = 0; f < nf && bad < 0; f++)
+                if (!(orient2d(UV2 + 2 * (size_t)F[3 * f], UV2 + 2 * (size_t)F[3 * f + 1], UV2 + 2 * (size_t)F[3 * f + 2]) > 0))
+                    bad = f;
+        if (st == SCAF_OK && bad < 0) break;
+        if (cotan && st != SCAF_ERR_NOMEM) {
+            cotan = 0;
+            if (used_fallback) *used_fallback = 1;
+            st = SCAF_OK;
+            continue;
+        }
+        if (st == SCAF_OK)
+            st = err_set(err, SCAF_ERR_NUMERIC, "Tutte embedding: triangle %d is inverted or degenerate (is the chart a valid disk?)", bad);
+        else
+            *err = e2;
+        break;
+    }
+    if (st == SCAF_OK) memcpy(UV, UV2, 2 * (size_t)nv * sizeof *UV);
+done:
+    free(dir); free(V2); free(F2); free(UV2); free(fixed); free(used);
+    return st;
+}

@@ -1,0 +1,47 @@
+/* opt/embed: initial bijective map of one chart into the plane.
+ *
+ * Tutte embedding: the outer boundary loop is pinned to a circle whose
+ * area equals the chart's 3D surface area, its vertices spaced by 3D arc
+ * length, in counter-clockwise order relative to the faces' orientation;
+ * every other vertex is the uniform average of its neighbours (a sparse SPD
+ * solve with opt/cholmod_solver). Harmonic: the same with cotangent
+ * weights of the 3D triangles; when any triangle comes out inverted or
+ * degenerate (decided with exact orient2d), or the cotangent system is not
+ * positive definite, it falls back to Tutte. A chart with holes (more than
+ * one boundary loop): each hole is filled with a fan around a temporary
+ * vertex (at the hole's 3D centroid), the filled disk is embedded, and the
+ * fill is dropped — the map of the chart stays valid.
+ * Vertices not used by any face are placed at the circle's center.
+ * Errors: SCAF_ERR_USAGE (bad index, empty loop), SCAF_ERR_MESH (a boundary
+ * loop edge that no face has, a vertex on two loops, zero chart area),
+ * SCAF_ERR_NUMERIC (singular system: a component not connected to the
+ * outer boundary; or Tutte itself produced a non-positive triangle, which
+ * happens only for an invalid disk or extreme floating-point degeneracy),
+ * SCAF_ERR_NOMEM.
+ */
+#ifndef SCAF_OPT_EMBED_H
+#define SCAF_OPT_EMBED_H
+
+#include "base/error.h"
+
+typedef enum opt_embed_method {
+    OPT_EMBED_TUTTE = 0, /* uniform weights: always valid for a disk */
+    OPT_EMBED_HARMONIC   /* cotangent weights, Tutte fallback */
+} opt_embed_method;
+
+typedef struct opt_chart_loops {
+    int nloops;              /* number of boundary loops (>= 1) */
+    const int *start;        /* nloops+1 offsets into vertices */
+    const int *vertices;     /* loop k is vertices[start[k] .. start[k+1]) in cyclic order */
+    int outer;               /* index of the outer loop, or -1: the longest in 3D */
+} opt_chart_loops;
+
+/* nv vertices V (#V by 3), nf faces F (#F by 3, consistently oriented),
+ * loops: the chart's boundary loops (either direction). method: Tutte or
+ * harmonic. UV: #V by 2 out. used_fallback (may be NULL): set to 1 when
+ * harmonic fell back to Tutte, else 0. */
+scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
+                            const opt_chart_loops *loops, opt_embed_method method, double *UV,
+                            int *used_fallback, scaf_error *err);
+
+#endif /* SCAF_OPT_EMBED_H */

@@ -1,0 +1,234 @@
+/* opt/energy: distortion energies of one simplex's Jacobian and their sums.
+ *
+ * Values and derivatives use closed forms in J (determinant, adjugate),
+ * not the SVD, so they stay accurate for badly shaped simplices; only the
+ * SLIM proxy needs the signed SVD (opt/small_svd). For an energy
+ * f(s_1..s_d) of the signed singular values with derivative g_i and a
+ * target t_i, the SLIM weight is w_i = sqrt(g_i / (2 (s_i - t_i))), so that
+ * 2 W^T W (J - T) = U diag(g) V^T = dE/dJ.
+ */
+#include "opt/energy.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "opt/small_svd.h"
+
+const char *opt_energy_name(opt_energy e)
+{
+    switch (e) {
+    case OPT_ENERGY_SYMMETRIC_DIRICHLET: return "symmetric_dirichlet";
+    case OPT_ENERGY_ARAP: return "arap";
+    case OPT_ENERGY_CONFORMAL: return "conformal";
+    }
+    return "unknown";
+}
+
+int opt_energy_parse(const char *name, opt_energy *e)
+{
+    static const opt_energy all[] = {OPT_ENERGY_SYMMETRIC_DIRICHLET, OPT_ENERGY_ARAP,
+                                     OPT_ENERGY_CONFORMAL};
+    for (size_t k = 0; k < sizeof all / sizeof all[0]; k++)
+        if (strcmp(name, opt_energy_name(all[k])) == 0) { *e = all[k]; return 0; }
+    return -1;
+}
+
+double opt_det(int d, const double *J)
+{
+    if (d == 2) return J[0] * J[3] - J[1] * J[2];
+    return J[0] * (J[4] * J[8] - J[5] * J[7]) - J[1] * (J[3] * J[8] - J[5] * J[6]) +
+           J[2] * (J[3] * J[7] - J[4] * J[6]);
+}
+
+/* Inverse of J through the adjugate; returns det. */
+static double inverse(int d, const double *J, double *Ji)
+{
+    double det = opt_det(d, J);
+    if (d == 2) {
+        Ji[0] = J[3] / det; Ji[1] = -J[1] / det;
+        Ji[2] = -J[2] / det; Ji[3] = J[0] / det;
+        return det;
+    }
+    Ji[0] = (J[4] * J[8] - J[5] * J[7]) / det;
+    Ji[1] = (J[2] * J[7] - J[1] * J[8]) / det;
+    Ji[2] = (J[1] * J[5] - J[2] * J[4]) / det;
+    Ji[3] = (J[5] * J[6] - J[3] * J[8]) / det;
+    Ji[4] = (J[0] * J[8] - J[2] * J[6]) / det;
+    Ji[5] = (J[2] * J[3] - J[0] * J[5]) / det;
+    Ji[6] = (J[3] * J[7] - J[4] * J[6]) / det;
+    Ji[7] = (J[1] * J[6] - J[0] * J[7]) / det;
+    Ji[8] = (J[0] * J[4] - J[1] * J[3]) / det;
+    return det;
+}
+
+static double frob2(int d, const double *A)
+{
+    double s = 0;
+    for (int k = 0; k < d * d; k++) s += A[k] * A[k];
+    return s;
+}
+
+/* Closest rotation U V^T and the signed singular values. */
+static void closest_rotation(int d, const double *J, double *R, double *sv)
+{
+    double U[9], V[9];
+    svd_signed(d, J, U, sv, V);
+    for (int a = 0; a < d; a++)
+        for (int b = 0; b < d; b++) {
+            double acc = 0;
+            for (int k = 0; k < d; k++) acc += U[a * d + k] * V[b * d + k];
+            R[a * d + b] = acc;
+        }
+}
+
+double opt_density(opt_energy e, int d, const double *J)
+{
+    switch (e) {
+    case OPT_ENERGY_SYMMETRIC_DIRICHLET: {
+        double Ji[9];
+        double det = inverse(d, J, Ji);
+        if (!(det > 0)) return INFINITY;
+        return frob2(d, J) + frob2(d, Ji);
+    }
+    case OPT_ENERGY_ARAP: {
+        double R[9], sv[3], acc = 0;
+        closest_rotation(d, J, R, sv);
+        for (int k = 0; k < d; k++) acc += (sv[k] - 1) * (sv[k] - 1);
+        return acc;
+    }
+    case OPT_ENERGY_CONFORMAL: {
+        double det = opt_det(d, J);
+        if (!(det > 0)) return INFINITY;
+        return frob2(d, J) / (d * pow(det, 2.0 / d));
+    }
+    }
+    return NAN;
+}
+
+double opt_density_grad(opt_energy e, int d, const double *J, double *G)
+{
+    switch (e) {
+    case OPT_ENERGY_SYMMETRIC_DIRICHLET: {
+        double Ji[9];
+        double det = inverse(d, J, Ji);
+        if (!(det > 0)) {
+            for (int k = 0; k < d * d; k++) G[k] = NAN;
+            return INFINITY;
+        }
+        /* d/dJ ||J^-1||^2 = -2 J^-T J^-1 J^-T. */
+        double A[9];
+        for (int a = 0; a < d; a++)
+            for (int b = 0; b < d; b++) {
+                double acc = 0; /* (J^-T J^-1)[a][b] = sum_k Ji[k][a] Ji[k][b] */
+                for (int k = 0; k < d; k++) acc += Ji[k * d + a] * Ji[k * d + b];
+                A[a * d + b] = acc;
+            }
+        for (int a = 0; a < d; a++)
+            for (int b = 0; b < d; b++) {
+                double acc = 0; /* (A J^-T)[a][b] = sum_k A[a][k] Ji[b][k] */
+                for (int k = 0; k < d; k++) acc += A[a * d + k] * Ji[b * d + k];
+                G[a * d + b] = 2.0 * J[a * d + b] - 2.0 * acc;
+            }
+        return frob2(d, J) + frob2(d, Ji);
+    }
+    case OPT_ENERGY_ARAP: {
+        double R[9], sv[3], acc = 0;
+        closest_rotation(d, J, R, sv);
+        for (int k = 0; k < d; k++) acc += (sv[k] - 1) * (sv[k] - 1);
+        for (int k = 0; k < d * d; k++) G[k] = 2.0 * (J[k] - R[k]);
+        return acc;
+    }
+    case OPT_ENERGY_CONFORMAL: {
+        double Ji[9];
+        double det = inverse(d, J, Ji);
+        if (!(det > 0)) {
+            for (int k = 0; k < d * d; k++) G[k] = NAN;
+            return INFINITY;
+        }
+        double delta = pow(det, 2.0 / d), n2 = frob2(d, J);
+        double c = 2.0 / (d * delta);
+        for (int a = 0; a < d; a++)
+            for (int b = 0; b < d; b++)
+                G[a * d + b] = c * (J[a * d + b] - (n2 / d) * Ji[b * d + a]);
+        return n2 / (d * delta);
+    }
+    }
+    return NAN;
+}
+
+void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T)
+{
+    double U[9], V[9], s[3], w2[3], t[3];
+    svd_signed(d, J, U, s, V);
+    switch (e) {
+    case OPT_ENERGY_SYMMETRIC_DIRICHLET:
+        for (int i = 0; i < d; i++) {
+            t[i] = 1.0;
+            /* g/(2(s-1)) with g = 2s - 2/s^3, simplified: no 0/0 at s = 1. */
+            w2[i] = s[i] > 0 ? (s[i] + 1) * (s[i] * s[i] + 1) / (s[i] * s[i] * s[i]) : 1.0;
+        }
+        break;
+    case OPT_ENERGY_ARAP:
+        for (int i = 0; i < d; i++) { t[i] = 1.0; w2[i] = 1.0; }
+        break;
+    case OPT_ENERGY_CONFORMAL: {
+        double det = s[0] * s[1] * (d == 3 ? s[2] : 1.0);
+        double c = det > 0 ? pow(det, 1.0 / d) : 1.0;
+        double s2 = 0;
+        for (int i = 0; i < d; i++) s2 += s[i] * s[i];
+        for (int i = 0; i < d; i++) {
+            /* Target the closest similarity: scale c = det^(1/d). */
+            t[i] = c;
+            double g = 2.0 / (d * c * c) * (s[i] - s2 / (d * s[i]));
+            double r = g / (2.0 * (s[i] - c));
+            double fallback = 1.0 / (c * c);
+            w2[i] = (isfinite(r) && r > 1e-8 * fallback && fabs(s[i] - c) > 1e-12 * c) ? r
+                                                                                     : fallback;
+        }
+        break;
+    }
+    default:
+        for (int i = 0; i < d; i++) { t[i] = 1.0; w2[i] = 1.0; }
+    }
+    for (int a = 0; a < d; a++)
+        for (int b = 0; b < d; b++) {
+            double wa = 0, ta = 0;
+            for (int k = 0; k < d; k++) {
+                wa += U[a * d + k] * sqrt(w2[k]) * U[b * d + k];
+                ta += U[a * d + k] * t[k] * V[b * d + k];
+            }
+            W[a * d + b] = wa;
+            T[a * d + b] = ta;
+        }
+}
+
+double opt_term_energy(const opt_term *t, const double *X)
+{
+    const opt_simplices *S = t->s;
+    double acc = 0, J[9];
+    for (int s = 0; s < S->n; s++) {
+        opt_jacobian(S, s, X, J);
+        acc += S->weight[s] * opt_density(t->energy, S->d, J);
+    }
+    return acc;
+}
+
+void opt_term_gradient(const opt_term *t, const double *X, double *g)
+{
+    const opt_simplices *S = t->s;
+    int d = S->d;
+    double J[9], dJ[9];
+    for (int s = 0; s < S->n; s++) {
+        opt_jacobian(S, s, X, J);
+        opt_density_grad(t->energy, d, J, dJ);
+        const int *ix = S->idx + (size_t)s * (d + 1);
+        const double *G = S->grad + (size_t)s * (d + 1) * d;
+        double w = S->weight[s];
+        for (int i = 0; i <= d; i++)
+            for (int a = 0; a < d; a++) {
+                double acc = 0;
+                for (int b = 0; b < d; b++) acc += dJ[a * d + b] * G[i * d + b];
+                g[(size_t)ix[i] * d + a] += w * acc;
+            }
+    }
+}

@@ -1,0 +1,62 @@
+/* opt/energy: distortion energies of one simplex's Jacobian and their sums.
+ *
+ * Densities of the d by d Jacobian J (row-major), d = 2 or 3:
+ *   symmetric Dirichlet  ||J||_F^2 + ||J^-1||_F^2     (2d at a rotation)
+ *   ARAP                 ||J - R||_F^2, R closest rotation  (0 at a rotation)
+ *   conformal (AMIPS)    ||J||_F^2 / (d det(J)^(2/d))  (1 at a similarity)
+ * Symmetric Dirichlet and conformal are +INFINITY when det J <= 0 (they are
+ * barriers); ARAP is finite everywhere. Each has its derivative dE/dJ and
+ * its SLIM proxy (Rabinovich et al. 2017): a symmetric weight matrix W and
+ * target T with the property that the gradient of ||W (J - T)||^2 at the
+ * current J equals dE/dJ. An opt_term pairs a simplex set with an energy;
+ * sums are weight-weighted: E = sum_s weight_s * density(J_s).
+ * Nothing here fails; non-finite input gives non-finite output.
+ */
+#ifndef SCAF_OPT_ENERGY_H
+#define SCAF_OPT_ENERGY_H
+
+#include "opt/simplices.h"
+
+typedef enum opt_energy {
+    OPT_ENERGY_SYMMETRIC_DIRICHLET = 0, /* default */
+    OPT_ENERGY_ARAP,
+    OPT_ENERGY_CONFORMAL
+} opt_energy;
+
+/* One part of an objective: the simplices and the energy measured on them.
+ * The scaffold is a term with OPT_ENERGY_SYMMETRIC_DIRICHLET and weight
+ * lambda per simplex; the chart a term with the user's energy. */
+typedef struct opt_term {
+    const opt_simplices *s;
+    opt_energy energy;
+} opt_term;
+
+/* "symmetric_dirichlet", "arap", "conformal". */
+const char *opt_energy_name(opt_energy e);
+
+/* Parse a name as above; returns 0 and sets *e, or -1 if unknown. */
+int opt_energy_parse(const char *name, opt_energy *e);
+
+/* Density of J (d by d). */
+double opt_density(opt_energy e, int d, const double *J);
+
+/* Density of J; dEdJ (d by d) gets its derivative. */
+double opt_density_grad(opt_energy e, int d, const double *J, double *dEdJ);
+
+/* SLIM proxy of J: W (d by d, symmetric positive definite) and T (d by d)
+ * so that grad_J ||W (J - T)||_F^2 = dE/dJ where the energy is convex along
+ * singular values (always for symmetric Dirichlet and ARAP with det J > 0;
+ * for conformal the weights fall back to a positive value where the exact
+ * ones would be negative, and the property then holds only approximately). */
+void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T);
+
+/* sum_s weight_s * density(J_s) over a term at positions X (#X by d). */
+double opt_term_energy(const opt_term *t, const double *X);
+
+/* g (#X by d) += gradient of opt_term_energy w.r.t. X. */
+void opt_term_gradient(const opt_term *t, const double *X, double *g);
+
+/* Determinant of a d by d matrix. */
+double opt_det(int d, const double *J);
+
+#endif /* SCAF_OPT_ENERGY_H */

@@ -1,0 +1,252 @@
+/* opt/proxy_block: one term's share of the SLIM proxy system, cached pattern.
+ *
+ * Pattern: every local corner pair (i <= j) of every simplex whose corners
+ * are both free gives a vertex-level entry (min dof, max dof); entries are
+ * bucketed by column, sorted by row and deduplicated once, and the
+ * simplex -> entry map recorded. Because unknowns are interleaved, vertex
+ * entry (I, J) owns in scalar column J*d + a' the d consecutive rows
+ * I*d + 0..d-1 (only rows up to a' when I == J, which sorts last), so a
+ * scalar position is colptr[J*d + a'] + (entry - vcolptr[J]) * d + a:
+ * the fill needs no search.
+ */
+#include "opt/proxy_block.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void opt_proxy_block_free(opt_proxy_block *b)
+{
+    if (!b) return;
+    free(b->vcolptr);
+    free(b->vrowidx);
+    free(b->map);
+    opt_csc_free(&b->A);
+    unsigned v = b->version;
+    memset(b, 0, sizeof *b);
+    b->version = v;
+}
+
+typedef struct row_id { int row, id; } row_id;
+
+static int cmp_row_id(const void *pa, const void *pb)
+{
+    const row_id *a = pa, *b = pb;
+    return (a->row > b->row) - (a->row < b->row);
+}
+
+scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, const int *dof,
+                                    int nfree, scaf_error *err)
+{
+    opt_proxy_block_free(b);
+    int d = S->d, nc = d + 1, P = (d + 1) * (d + 2) / 2;
+    size_t ne = (size_t)S->n * P;
+    b->d = d;
+    b->ns = S->n;
+    b->nfree = nfree;
+    b->vcolptr = calloc((size_t)nfree + 1, sizeof *b->vcolptr);
+    b->map = malloc((ne ? ne : 1) * sizeof *b->map);
+    row_id *ent = malloc((ne ? ne : 1) * sizeof *ent);
+    int *fill = malloc(((size_t)nfree + 1) * sizeof *fill);
+    if (!b->vcolptr || !b->map || !ent || !fill) {
+        free(ent); free(fill);
+        opt_proxy_block_free(b);
+        return err_nomem(err, "proxy system pattern");
+    }
+    /* Count entries per vertex column. */
+    for (int s = 0; s < S->n; s++) {
+        const int *ix = S->idx + (size_t)s * nc;
+        for (int i = 0; i < nc; i++)
+            for (int j = i; j < nc; j++) {
+                int di = dof[ix[i]], dj = dof[ix[j]];
+                if (di >= nfree || dj >= nfree) {
+                    free(ent); free(fill);
+                    opt_proxy_block_free(b);
+                    return err_set(err, SCAF_ERR_INTERNAL, "simplex %d: dof %d outside [0, %d)", s,
+                                   di > dj ? di : dj, nfree);
+                }
+                if (di < 0 || dj < 0) continue;
+                b->vcolptr[(di > dj ? di : dj) + 1]++;
+            }
+    }
+    for (int c = 0; c < nfree; c++) b->vcolptr[c + 1] += b->vcolptr[c];
+    memcpy(fill, b->vcolptr, ((size_t)nfree + 1) * sizeof *fill);
+    for (int s = 0; s < S->n; s++) {
+        const int *ix = S->idx + (size_t)s * nc;
+        int p = 0;
+        for (int i = 0; i < nc; i++)
+            for (int j = i; j < nc; j++, p++) {
+                int di = dof[ix[i]], dj = dof[ix[j]];
+                size_t id = (size_t)s * P + p;
+                b->map[id] = -1;
+                if (di < 0 || dj < 0) continue;
+                int col = di > dj ? di : dj, row = di < dj ? di : dj;
+                ent[fill[col]].row = row;
+                ent[fill[col]++].id = (int)id;
+            }
+    }
+    /* Sort each column, deduplicate, record the map. */
+    int out = 0;
+    for (int c = 0; c < nfree; c++) {
+        int lo = b->vcolptr[c], hi = b->vcolptr[c + 1];
+        if (hi - lo > 24) {
+            qsort(ent + lo, (size_t)(hi - lo), sizeof *ent, cmp_row_id);
+        } else {
+            for (int i = lo + 1; i < hi; i++) {
+                row_id x = ent[i];
+                int j = i - 1;
+                while (j >= lo && ent[j].row > x.row) { ent[j + 1] = ent[j]; j--; }
+                ent[j + 1] = x;
+            }
+        }
+        fill[c] = out;
+        for (int i = lo; i < hi; i++) {
+            if (i == lo || ent[i].row != ent[i - 1].row) ent[out++].row = ent[i].row;
+            b->map[ent[i].id] = out - 1;
+        }
+    }
+    fill[nfree] = out;
+    memcpy(b->vcolptr, fill, ((size_t)nfree + 1) * sizeof *fill);
+    free(fill);
+    b->vrowidx = malloc(((size_t)out + 1) * sizeof *b->vrowidx);
+    if (!b->vrowidx) {
+        free(ent);
+        opt_proxy_block_free(b);
+        return err_nomem(err, "proxy system pattern");
+    }
+    for (int k = 0; k < out; k++) b->vrowidx[k] = ent[k].row;
+    free(ent);
+    /* Expand to the scalar upper CSC. */
+    int n = nfree * d;
+    opt_csc *A = &b->A;
+    A->n = n;
+    A->colptr = malloc(((size_t)n + 1) * sizeof *A->colptr);
+    if (!A->colptr) {
+        opt_proxy_block_free(b);
+        return err_nomem(err, "proxy system pattern");
+    }
+    A->colptr[0] = 0;
+    for (int c = 0; c < nfree; c++) {
+        int lo = b->vcolptr[c], hi = b->vcolptr[c + 1];
+        int diag = hi > lo && b->vrowidx[hi - 1] == c;
+        int off = hi - lo - diag;
+        for (int a = 0; a < d; a++)
+            A->colptr[c * d + a + 1] = A->colptr[c * d + a] + off * d + (diag ? a + 1 : 0);
+    }
+    A->nnz = A->colptr[n];
+    A->rowidx = malloc(((size_t)A->nnz + 1) * sizeof *A->rowidx);
+    A->val = calloc((size_t)A->nnz + 1, sizeof *A->val);
+    if (!A->rowidx || !A->val) {
+        opt_proxy_block_free(b);
+        return err_nomem(err, "proxy system matrix");
+    }
+    for (int c = 0; c < nfree; c++) {
+        int lo = b->vcolptr[c], hi = b->vcolptr[c + 1];
+        for (int a = 0; a < d; a++) {
+            int pos = A->colptr[c * d + a];
+            for (int k = lo; k < hi; k++) {
+                int r = b->vrowidx[k];
+                int top = r == c ? a : d - 1;
+                for (int q = 0; q <= top; q++) A->rowidx[pos++] = r * d + q;
+            }
+        }
+    }
+    b->version++;
+    return SCAF_OK;
+}
+
+/* Accumulate one simplex: coefficient matrix M (d by d, symmetric) and
+ * per-corner linear terms lin ((d+1) by d). */
+static void scatter(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
+                    const double *X, const double *M, const double *lin, double *rhs)
+{
+    int d = S->d, nc = d + 1, P = (d + 1) * (d + 2) / 2;
+    const int *ix = S->idx + (size_t)s * nc;
+    const double *G = S->grad + (size_t)s * nc * d;
+    const int *mp = b->map + (size_t)s * P;
+    double w = S->weight[s];
+    int *cp = b->A.colptr;
+    double *val = b->A.val;
+    for (int i = 0; i < nc; i++) {
+        int di = dof[ix[i]];
+        if (di >= 0)
+            for (int a = 0; a < d; a++) rhs[(size_t)di * d + a] += w * lin[i * d + a];
+    }
+    int p = 0;
+    for (int i = 0; i < nc; i++)
+        for (int j = i; j < nc; j++, p++) {
+            double gg = 0;
+            for (int q = 0; q < d; q++) gg += G[i * d + q] * G[j * d + q];
+            double c = w * gg;
+            int di = dof[ix[i]], dj = dof[ix[j]];
+            if (mp[p] < 0) {
+                /* One corner fixed: its coupling moves to the right side. */
+                if (i == j || (di < 0 && dj < 0)) continue;
+                int fr = di >= 0 ? di : dj;
+                const double *xf = X + (size_t)ix[di >= 0 ? j : i] * d;
+                for (int a = 0; a < d; a++) {
+                    double acc = 0;
+                    for (int q = 0; q < d; q++) acc += M[a * d + q] * xf[q];
+                    rhs[(size_t)fr * d + a] -= c * acc;
+                }
+                continue;
+            }
+            int col = di > dj ? di : dj, row = di < dj ? di : dj;
+            int k = mp[p] - b->vcolptr[col];
+            if (row != col) {
+                for (int a2 = 0; a2 < d; a2++) {
+                    double *v = val + cp[col * d + a2] + k * d;
+                    for (int a = 0; a < d; a++) v[a] += c * M[a * d + a2];
+                }
+            } else {
+                /* Diagonal block; a repeated vertex (i != j) counts twice. */
+                double cc = i == j ? c : 2.0 * c;
+                for (int a2 = 0; a2 < d; a2++) {
+                    double *v = val + cp[col * d + a2] + k * d;
+                    for (int a = 0; a <= a2; a++) v[a] += cc * M[a * d + a2];
+                }
+            }
+        }
+}
+
+void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
+                          double *rhs)
+{
+    const opt_simplices *S = t->s;
+    int d = S->d, nc = d + 1;
+    memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
+    double J[9], W[9], T[9], M[9], MT[9], lin[12];
+    for (int s = 0; s < S->n; s++) {
+        opt_jacobian(S, s, X, J);
+        opt_slim_proxy(t->energy, d, J, W, T);
+        for (int a = 0; a < d; a++)
+            for (int c = 0; c < d; c++) {
+                double acc = 0;
+                for (int q = 0; q < d; q++) acc += W[q * d + a] * W[q * d + c];
+                M[a * d + c] = acc;
+            }
+        for (int a = 0; a < d; a++)
+            for (int c = 0; c < d; c++) {
+                double acc = 0;
+                for (int q = 0; q < d; q++) acc += M[a * d + q] * T[q * d + c];
+                MT[a * d + c] = acc;
+            }
+        const double *G = S->grad + (size_t)s * nc * d;
+        for (int i = 0; i < nc; i++)
+            for (int a = 0; a < d; a++) {
+                double acc = 0;
+                for (int c = 0; c < d; c++) acc += MT[a * d + c] * G[i * d + c];
+                lin[i * d + a] = acc;
+            }
+        scatter(b, S, s, dof, X, M, lin, rhs);
+    }
+}
+
+void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, const int *dof,
+                                    const double *X, double *rhs)
+{
+    int d = S->d;
+    memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
+    double M[9] = {0}, lin[12] = {0};
+    for (int a = 0; a < d; a++) M[a * d + a] = 1.0;
+    for (int s = 0; s < S->n; s++) scatter(b, S, s, dof, X, M, lin, rhs);
+}

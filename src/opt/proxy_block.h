@@ -1,0 +1,59 @@
+/* opt/proxy_block: one term's share of the SLIM proxy system, cached pattern.
+ *
+ * The SLIM proxy of a term is sum_s weight_s ||W_s (J_s(x) - T_s)||_F^2.
+ * Unknowns are the coordinates of free vertices, interleaved: vertex v
+ * with dof[v] = k >= 0 owns unknowns k*d + 0..d-1; dof[v] = -1 marks a
+ * fixed vertex (its terms move to the right-hand side). The normal
+ * equations are A x = b with, per simplex, the (d+1)d square block
+ * weight * (G G^T) (x) (W^T W) (Kronecker product) and
+ * b_(i,a) = weight * (W^T W T G^T)[a][i] minus the fixed-corner couplings.
+ *
+ * A block owns: a vertex-level pattern (which free vertex pairs interact),
+ * the scalar upper CSC it expands to, and a map from each simplex's vertex
+ * pairs to vertex-level entries. opt_proxy_block_pattern does the sorting
+ * once; opt_proxy_block_fill is then a pure value fill (no search, no
+ * allocation) and may be repeated as long as the simplices' vertex indices
+ * and the dof numbering of their vertices do not change. Keep one block for
+ * the chart (its pattern survives every iteration) and one for the
+ * scaffold (rebuilt every iteration); opt/proxy_system sums them.
+ */
+#ifndef SCAF_OPT_PROXY_BLOCK_H
+#define SCAF_OPT_PROXY_BLOCK_H
+
+#include "opt/csc.h"
+#include "opt/energy.h"
+
+typedef struct opt_proxy_block {
+    int d;         /* dimension of the simplices */
+    int ns;        /* number of simplices the pattern was built for */
+    int nfree;     /* number of free vertices (the system has nfree*d unknowns) */
+    int *vcolptr;  /* nfree+1: vertex-level upper pattern, columns by dof */
+    int *vrowidx;  /* vertex-level rows (dofs), ascending, diagonal last */
+    int *map;      /* ns by (d+1)(d+2)/2: vertex-level entry of each local
+                      corner pair (i <= j), -1 when a corner is fixed */
+    opt_csc A;     /* scalar upper CSC, nfree*d square; values from fill */
+    unsigned version; /* incremented each time the pattern is rebuilt */
+} opt_proxy_block;
+
+/* Free everything; safe on a zeroed block. */
+void opt_proxy_block_free(opt_proxy_block *b);
+
+/* (Re)build the pattern for the simplices S under the numbering dof (one
+ * entry per vertex of X: a dof in [0, nfree) or -1). Values are zeroed. */
+scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, const int *dof,
+                                    int nfree, scaf_error *err);
+
+/* Fill values with the SLIM proxy of term t at positions X (#X by d):
+ * per simplex the signed SVD of J, weights W and targets T
+ * (opt_slim_proxy). rhs (nfree*d) is ACCUMULATED into (zero it first).
+ * t->s must be the simplex set the pattern was built for. */
+void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
+                          double *rhs);
+
+/* Fill with a fixed quadratic: the same with W = I and T = 0 for every
+ * simplex, i.e. the Dirichlet (cotangent Laplacian) system of the rest
+ * shapes — the harmonic map with the fixed vertices as boundary. */
+void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, const int *dof,
+                                    const double *X, double *rhs);
+
+#endif /* SCAF_OPT_PROXY_BLOCK_H */

@@ -1,0 +1,157 @@
+/* opt/proxy_system: the sum of several proxy blocks as one sparse system.
+ *
+ * Union pattern: per vertex column, a k-way merge of the blocks' sorted row
+ * lists, recording for every block entry its union position. Scalar layout
+ * follows the same interleaved rule as opt/proxy_block, so values are
+ * added column by column with offsets (entry - column start) * d.
+ */
+#include "opt/proxy_system.h"
+
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void release_union(opt_proxy_system *sys)
+{
+    free(sys->vcolptr);
+    free(sys->vrowidx);
+    sys->vcolptr = sys->vrowidx = NULL;
+    for (int k = 0; k < OPT_PROXY_MAX_BLOCKS; k++) {
+        free(sys->emap[k]);
+        sys->emap[k] = NULL;
+    }
+    if (sys->owns) opt_csc_free(&sys->A);
+    memset(&sys->A, 0, sizeof sys->A);
+    sys->owns = 0;
+}
+
+void opt_proxy_system_free(opt_proxy_system *sys)
+{
+    if (!sys) return;
+    release_union(sys);
+    memset(sys, 0, sizeof *sys);
+}
+
+static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *const *bl, int nb,
+                               scaf_error *err)
+{
+    int nfree = sys->nfree, d = sys->d;
+    release_union(sys);
+    size_t cap = 0;
+    for (int k = 0; k < nb; k++) cap += (size_t)bl[k]->vcolptr[nfree];
+    sys->vcolptr = malloc(((size_t)nfree + 1) * sizeof *sys->vcolptr);
+    sys->vrowidx = malloc((cap + 1) * sizeof *sys->vrowidx);
+    if (!sys->vcolptr || !sys->vrowidx) return err_nomem(err, "proxy system union pattern");
+    for (int k = 0; k < nb; k++) {
+        sys->emap[k] = malloc(((size_t)bl[k]->vcolptr[nfree] + 1) * sizeof *sys->emap[k]);
+        if (!sys->emap[k]) return err_nomem(err, "proxy system union map");
+    }
+    int out = 0, cur[OPT_PROXY_MAX_BLOCKS];
+    for (int c = 0; c < nfree; c++) {
+        sys->vcolptr[c] = out;
+        for (int k = 0; k < nb; k++) cur[k] = bl[k]->vcolptr[c];
+        for (;;) {
+            int r = INT_MAX;
+            for (int k = 0; k < nb; k++)
+                if (cur[k] < bl[k]->vcolptr[c + 1] && bl[k]->vrowidx[cur[k]] < r)
+                    r = bl[k]->vrowidx[cur[k]];
+            if (r == INT_MAX) break;
+            for (int k = 0; k < nb; k++)
+                if (cur[k] < bl[k]->vcolptr[c + 1] && bl[k]->vrowidx[cur[k]] == r)
+                    sys->emap[k][cur[k]++] = out;
+            sys->vrowidx[out++] = r;
+        }
+    }
+    sys->vcolptr[nfree] = out;
+    /* Scalar expansion, same rule as the blocks. */
+    opt_csc *A = &sys->A;
+    int n = nfree * d;
+    sys->owns = 1;
+    A->n = n;
+    A->colptr = malloc(((size_t)n + 1) * sizeof *A->colptr);
+    if (!A->colptr) return err_nomem(err, "proxy system matrix");
+    A->colptr[0] = 0;
+    for (int c = 0; c < nfree; c++) {
+        int lo = sys->vcolptr[c], hi = sys->vcolptr[c + 1];
+        int diag = hi > lo && sys->vrowidx[hi - 1] == c;
+        int off = hi - lo - diag;
+        for (int a = 0; a < d; a++)
+            A->colptr[c * d + a + 1] = A->colptr[c * d + a] + off * d + (diag ? a + 1 : 0);
+    }
+    A->nnz = A->colptr[n];
+    A->rowidx = malloc(((size_t)A->nnz + 1) * sizeof *A->rowidx);
+    A->val = malloc(((size_t)A->nnz + 1) * sizeof *A->val);
+    if (!A->rowidx || !A->val) return err_nomem(err, "proxy system matrix");
+    for (int c = 0; c < nfree; c++) {
+        int lo = sys->vcolptr[c], hi = sys->vcolptr[c + 1];
+        for (int a = 0; a < d; a++) {
+            int pos = A->colptr[c * d + a];
+            for (int k = lo; k < hi; k++) {
+                int r = sys->vrowidx[k];
+                int top = r == c ? a : d - 1;
+                for (int q = 0; q <= top; q++) A->rowidx[pos++] = r * d + q;
+            }
+        }
+    }
+    return SCAF_OK;
+}
+
+scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *const *bl,
+                                 int nb, scaf_error *err)
+{
+    if (nb < 1 || nb > OPT_PROXY_MAX_BLOCKS)
+        return err_set(err, SCAF_ERR_USAGE, "proxy system: %d blocks (1..%d allowed)", nb,
+                       OPT_PROXY_MAX_BLOCKS);
+    for (int k = 1; k < nb; k++)
+        if (bl[k]->d != bl[0]->d || bl[k]->nfree != bl[0]->nfree)
+            return err_set(err, SCAF_ERR_USAGE,
+                           "proxy system: block %d has d=%d nfree=%d, block 0 d=%d nfree=%d", k,
+                           bl[k]->d, bl[k]->nfree, bl[0]->d, bl[0]->nfree);
+    int changed = nb != sys->nblocks || bl[0]->d != sys->d || bl[0]->nfree != sys->nfree;
+    for (int k = 0; k < nb && !changed; k++)
+        changed = bl[k] != sys->blk[k] || bl[k]->version != sys->seen[k];
+    if (nb == 1) {
+        /* Alias the block's matrix; its pattern version is ours. */
+        if (changed) {
+            release_union(sys);
+            sys->version++;
+        }
+        sys->A = bl[0]->A;
+        sys->owns = 0;
+    } else if (changed) {
+        sys->d = bl[0]->d;
+        sys->nfree = bl[0]->nfree;
+        scaf_status st = build_union(sys, bl, nb, err);
+        if (st != SCAF_OK) {
+            release_union(sys);
+            sys->nblocks = 0;
+            return st;
+        }
+        sys->version++;
+    }
+    sys->d = bl[0]->d;
+    sys->nfree = bl[0]->nfree;
+    sys->nblocks = nb;
+    for (int k = 0; k < nb; k++) { sys->blk[k] = bl[k]; sys->seen[k] = bl[k]->version; }
+    if (nb == 1) return SCAF_OK;
+    /* Sum values. */
+    int d = sys->d, nfree = sys->nfree;
+    opt_csc *A = &sys->A;
+    memset(A->val, 0, (size_t)A->nnz * sizeof *A->val);
+    for (int k = 0; k < nb; k++) {
+        const opt_proxy_block *b = bl[k];
+        for (int c = 0; c < nfree; c++)
+            for (int e = b->vcolptr[c]; e < b->vcolptr[c + 1]; e++) {
+                int u = sys->emap[k][e];
+                int kb = e - b->vcolptr[c], ku = u - sys->vcolptr[c];
+                int top = b->vrowidx[e] == c;
+                for (int a2 = 0; a2 < d; a2++) {
+                    const double *src = b->A.val + b->A.colptr[c * d + a2] + kb * d;
+                    double *dst = A->val + A->colptr[c * d + a2] + ku * d;
+                    int m = top ? a2 + 1 : d;
+                    for (int a = 0; a < m; a++) dst[a] += src[a];
+                }
+            }
+    }
+    return SCAF_OK;
+}

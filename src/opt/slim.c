@@ -1,0 +1,157 @@
+/* opt/slim: one SLIM iteration (local proxy, global solve, safe step).
+ *
+ * Buffers (right-hand side, solution, direction) are kept between calls
+ * and grown on demand. Timings are taken with the monotonic clock.
+ */
+#include "opt/slim.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/timer.h"
+
+struct opt_slim {
+    opt_slim_options o;
+    opt_proxy_block blk[OPT_PROXY_MAX_BLOCKS];
+    const opt_simplices *blk_of[OPT_PROXY_MAX_BLOCKS];
+    opt_proxy_system sys;
+    opt_chol *chol;
+    double *rhs, *sol, *dir;
+    size_t cap_n, cap_x;
+};
+
+void opt_slim_options_default(opt_slim_options *o)
+{
+    o->ordering = OPT_ORDER_AMD;
+    opt_ls_options_default(&o->ls);
+    o->regularization = 0.0;
+}
+
+opt_slim *opt_slim_create(const opt_slim_options *o, scaf_error *err)
+{
+    opt_slim *sl = calloc(1, sizeof *sl);
+    if (!sl) {
+        err_nomem(err, "SLIM context");
+        return NULL;
+    }
+    if (o)
+        sl->o = *o;
+    else
+        opt_slim_options_default(&sl->o);
+    sl->chol = opt_chol_create(sl->o.ordering, err);
+    if (!sl->chol) {
+        free(sl);
+        return NULL;
+    }
+    return sl;
+}
+
+void opt_slim_destroy(opt_slim *sl)
+{
+    if (!sl) return;
+    for (int k = 0; k < OPT_PROXY_MAX_BLOCKS; k++) opt_proxy_block_free(&sl->blk[k]);
+    opt_proxy_system_free(&sl->sys);
+    opt_chol_destroy(sl->chol);
+    free(sl->rhs);
+    free(sl->sol);
+    free(sl->dir);
+    free(sl);
+}
+
+const opt_chol *opt_slim_solver(const opt_slim *sl) { return sl->chol; }
+
+int opt_dof_numbering(int nv, const unsigned char *fixed, int *dof)
+{
+    int k = 0;
+    for (int v = 0; v < nv; v++) dof[v] = (fixed && fixed[v]) ? -1 : k++;
+    return k;
+}
+
+static scaf_status grow(double **p, size_t n, scaf_error *err)
+{
+    double *q = realloc(*p, (n ? n : 1) * sizeof *q);
+    if (!q) return err_nomem(err, "SLIM buffers");
+    *p = q;
+    return SCAF_OK;
+}
+
+scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
+                          const int *term_changed, int nv, const int *dof, int nfree, double *X,
+                          opt_slim_stats *st, scaf_error *err)
+{
+    opt_slim_stats local;
+    if (!st) st = &local;
+    memset(st, 0, sizeof *st);
+    if (nterms < 1 || nterms > OPT_PROXY_MAX_BLOCKS)
+        return err_set(err, SCAF_ERR_USAGE, "SLIM: %d terms (1..%d allowed)", nterms,
+                       OPT_PROXY_MAX_BLOCKS);
+    int d = terms[0].s->d;
+    for (int k = 0; k < nterms; k++)
+        if (terms[k].s->d != d)
+            return err_set(err, SCAF_ERR_USAGE, "SLIM: term %d has dimension %d, term 0 has %d", k,
+                           terms[k].s->d, d);
+    if (nfree < 1) return err_set(err, SCAF_ERR_USAGE, "SLIM: no free vertex");
+    size_t n = (size_t)nfree * d, nx = (size_t)nv * d;
+    scaf_status s;
+    if (n > sl->cap_n) {
+        if ((s = grow(&sl->rhs, n, err)) || (s = grow(&sl->sol, n, err)))
+            return s;
+        sl->cap_n = n;
+    }
+    if (nx > sl->cap_x) {
+        if ((s = grow(&sl->dir, nx, err))) return s;
+        sl->cap_x = nx;
+    }
+    /* Patterns. */
+    double t0 = timer_now();
+    for (int k = 0; k < nterms; k++) {
+        opt_proxy_block *b = &sl->blk[k];
+        int stale = !b->A.colptr || sl->blk_of[k] != terms[k].s || b->ns != terms[k].s->n ||
+                    b->nfree != nfree || b->d != d || (term_changed && term_changed[k]);
+        if (stale) {
+            s = opt_proxy_block_pattern(b, terms[k].s, dof, nfree, err);
+            if (s != SCAF_OK) return s;
+            sl->blk_of[k] = terms[k].s;
+        }
+    }
+    double t1 = timer_now();
+    st->t_pattern = t1 - t0;
+    /* Values. */
+    memset(sl->rhs, 0, n * sizeof *sl->rhs);
+    for (int k = 0; k < nterms; k++) opt_proxy_block_fill(&sl->blk[k], &terms[k], dof, X, sl->rhs);
+    const opt_proxy_block *bl[OPT_PROXY_MAX_BLOCKS];
+    for (int k = 0; k < nterms; k++) bl[k] = &sl->blk[k];
+    double t2 = timer_now();
+    s = opt_proxy_system_sum(&sl->sys, bl, nterms, err);
+    if (s != SCAF_OK) return s;
+    double t3 = timer_now();
+    if (sl->o.regularization > 0) {
+        opt_csc *A = &sl->sys.A;
+        for (int c = 0; c < A->n; c++) {
+            int e = A->colptr[c + 1] - 1;
+            if (e >= A->colptr[c] && A->rowidx[e] == c) A->val[e] += sl->o.regularization;
+        }
+    }
+    st->t_assemble = (t2 - t1) + (t3 - t2);
+    /* Factor and solve. */
+    opt_chol_stats c0 = opt_chol_get_stats(sl->chol);
+    s = opt_chol_factor(sl->chol, &sl->sys.A, err);
+    if (s != SCAF_OK) return s;
+    s = opt_chol_solve(sl->chol, 1, sl->rhs, sl->sol, err);
+    if (s != SCAF_OK) return s;
+    opt_chol_stats c1 = opt_chol_get_stats(sl->chol);
+    st->analyzed = c1.analyses > c0.analyses;
+    st->t_analyze = c1.t_analyze - c0.t_analyze;
+    st->t_factor = c1.t_factor - c0.t_factor;
+    st->t_solve = c1.t_solve - c0.t_solve;
+    /* Direction and line search. */
+    double t4 = timer_now();
+    for (int v = 0; v < nv; v++)
+        for (int a = 0; a < d; a++)
+            sl->dir[(size_t)v * d + a] =
+                dof[v] >= 0 ? sl->sol[(size_t)dof[v] * d + a] - X[(size_t)v * d + a] : 0.0;
+    s = opt_line_search(terms, nterms, d, nv, X, sl->dir, &sl->o.ls, &st->ls, err);
+    st->t_line_search = timer_now() - t4;
+    return s;
+}

@@ -1,0 +1,71 @@
+/* opt/slim: one SLIM iteration (local proxy, global solve, safe step).
+ *
+ * An iteration over an objective made of terms (e.g. chart + scaffold, all
+ * of dimension d over one vertex array X):
+ *   1. assembly: per simplex the signed SVD of J and the SLIM weights
+ *      (opt_slim_proxy); values filled into each term's cached pattern
+ *      (opt/proxy_block), blocks summed (opt/proxy_system);
+ *   2. analysis (only when the summed pattern changed), factorization,
+ *      solve (opt/cholmod_solver): the minimizer y of the proxy with the
+ *      fixed vertices (dof = -1) held where they are;
+ *   3. line search along D = y - X (opt/line_search): flip-free bound,
+ *      Armijo backtracking on the true energy, exact orientation check.
+ * The object keeps the per-term patterns, the summed system and the
+ * solver between calls. Pass term_changed[k] != 0 when term k's simplices
+ * (connectivity) or the dof numbering of their vertices changed since the
+ * last call — the scaffold every iteration; the chart's block is then
+ * reused as is. Errors: those of the parts (SCAF_ERR_NUMERIC when the
+ * system is not positive definite or the state is invalid, SCAF_ERR_NOMEM,
+ * SCAF_ERR_USAGE); on error X is unchanged.
+ */
+#ifndef SCAF_OPT_SLIM_H
+#define SCAF_OPT_SLIM_H
+
+#include "opt/cholmod_solver.h"
+#include "opt/line_search.h"
+#include "opt/proxy_system.h"
+
+typedef struct opt_slim_options {
+    opt_ordering ordering;  /* fill-reducing ordering for new patterns (AMD) */
+    opt_ls_options ls;      /* line search (opt_ls_options_default) */
+    double regularization;  /* added to the diagonal of the proxy (0) */
+} opt_slim_options;
+
+typedef struct opt_slim_stats {
+    double t_assemble;   /* proxy weights + value fill + block sum */
+    double t_pattern;    /* pattern (re)builds of blocks and union */
+    double t_analyze;    /* symbolic analysis (0 when reused) */
+    double t_factor;     /* numerical factorization */
+    double t_solve;      /* triangular solves */
+    double t_line_search;
+    int analyzed;        /* 1 if this iteration needed a new analysis */
+    opt_ls_result ls;    /* step, energies before/after, backtracks */
+} opt_slim_stats;
+
+typedef struct opt_slim opt_slim;
+
+void opt_slim_options_default(opt_slim_options *o);
+
+/* New iteration driver; o may be NULL for defaults. NULL on failure. */
+opt_slim *opt_slim_create(const opt_slim_options *o, scaf_error *err);
+
+/* Free; safe on NULL. */
+void opt_slim_destroy(opt_slim *sl);
+
+/* One iteration. terms: nterms (<= OPT_PROXY_MAX_BLOCKS) parts of the
+ * objective, all dimension d. term_changed: nterms flags or NULL (NULL =
+ * nothing changed; the first call builds every pattern anyway). nv: rows of
+ * X. dof: nv entries, a free index in [0, nfree) or -1 for fixed vertices.
+ * X: #X by d, in/out. st: timings and line-search result (may be NULL). */
+scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
+                          const int *term_changed, int nv, const int *dof, int nfree, double *X,
+                          opt_slim_stats *st, scaf_error *err);
+
+/* The solver inside (statistics, permutation). */
+const opt_chol *opt_slim_solver(const opt_slim *sl);
+
+/* Number the free vertices: fixed[v] != 0 marks vertex v fixed (fixed may
+ * be NULL: none). dof gets nv entries; returns the number of free ones. */
+int opt_dof_numbering(int nv, const unsigned char *fixed, int *dof);
+
+#endif /* SCAF_OPT_SLIM_H */
