@@ -15,9 +15,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "app/chart_init.h"
 #include "mesh/mesh.h"
 #include "mesh/uv_charts.h"
+#include "opt/embed.h"
 
 struct scaf_param {
     scaf_options_t opt;
@@ -264,7 +264,9 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
             }
         }
         lstart[nl] = pos;
-        st = chart_embed(n, P, mf, cfaces, nl, lstart, lv, p->opt.init == SCAF_INIT_HARMONIC, cuv, NULL, err);
+        opt_chart_loops ol = {nl, lstart, lv, 0};
+        st = opt_embed_chart(n, P, mf, cfaces, &ol,
+                             p->opt.init == SCAF_INIT_HARMONIC ? OPT_EMBED_HARMONIC : OPT_EMBED_TUTTE, cuv, NULL, err);
         if (st != SCAF_OK) {
             err_prefix(err, "chart %d", c);
             goto fail;

@@ -1,28 +1,24 @@
 /* scaffold/scaf_loop: the SCAF iteration (see scaf_loop.h).
  *
- * Sections: setup (rest frames, boundary edges), energies, one iteration
- * (scaffold, assembly of the SLIM proxy, CHOLMOD solve, line search).
- * The unknowns are the UV positions of all mesh vertices and of the
- * scaffold vertices not on the box, interleaved (u, v) per vertex; box
- * vertices are fixed and moved to the right-hand side.
+ * The numerics are opt's: the chart term (rest frames of the 3D triangles,
+ * weight = 3D area) is built once; each iteration builds the scaffold
+ * (scaffold/scaffold_build), its term (rest = current shape with the eps
+ * guard, weight = lambda), and hands both to opt_slim_step, which keeps the
+ * chart's proxy pattern, assembles, factors with CHOLMOD, solves and runs
+ * the flip-free Armijo line search with exact orientation checks over
+ * mesh AND scaffold. Vertex array X = the mesh vertices, then the scaffold
+ * vertices; box vertices are fixed (dof -1), so mesh vertices keep dofs
+ * 0..nv-1 in every iteration.
  */
 #include "scaffold/scaf_loop.h"
 
-#include <cholmod.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "base/timer.h"
 #include "geom/predicates.h"
-#include "scaffold/tri2.h"
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    if (clock_gettime(CLOCK_MONOTONIC, &ts) != 0) return 0.0;
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+#include "opt/energy.h"
 
 /* ---- setup ------------------------------------------------------------- */
 
@@ -44,7 +40,7 @@ static int cmp_half_edge(const void *x, const void *y)
  * left). Chart topology was validated by the caller. */
 static scaf_status boundary_edges(int nf, const int *F, int **out, int *nout, scaf_error *err)
 {
-    size_t nh = 3 * (size_t)nf;
+    size_t nh = nf > 0 ? 3 * (size_t)nf : 0;
     half_edge *h = malloc(sizeof *h * (nh ? nh : 1));
     int *e = malloc(sizeof(int) * 2 * (nh ? nh : 1));
     if (!h || !e) {
@@ -84,14 +80,11 @@ void scaf_loop_free(scaf_loop *L)
     if (!L) return;
     free(L->F);
     free(L->uv);
-    free(L->Dminv);
-    free(L->area);
     free(L->bedges);
+    opt_simplices_free(&L->chart);
+    opt_simplices_free(&L->scaf);
     scaffold_free(&L->sc);
-    if (L->chol) {
-        cholmod_finish((cholmod_common *)L->chol);
-        free(L->chol);
-    }
+    opt_slim_destroy(L->slim);
     memset(L, 0, sizeof *L);
 }
 
@@ -104,42 +97,27 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
     L->opt = opt ? *opt : scaf_options_default();
     L->F = malloc(sizeof(int) * 3 * (size_t)(nf ? nf : 1));
     L->uv = malloc(sizeof(double) * 2 * (size_t)(nv ? nv : 1));
-    L->Dminv = malloc(sizeof(double) * 4 * (size_t)(nf ? nf : 1));
-    L->area = malloc(sizeof(double) * (size_t)(nf ? nf : 1));
-    L->chol = malloc(sizeof(cholmod_common));
-    if (!L->F || !L->uv || !L->Dminv || !L->area || !L->chol) {
-        free(L->chol);
-        L->chol = NULL;
+    if (!L->F || !L->uv) {
         scaf_loop_free(L);
         return err_nomem(err, "SCAF loop");
     }
-    cholmod_common *c = L->chol;
-    cholmod_start(c);
-    c->print = 0;
-    c->supernodal = CHOLMOD_SUPERNODAL;
-    /* The scaffold changes the pattern every iteration: one cheap ordering. */
-    c->nmethods = 1;
-    c->method[0].ordering = CHOLMOD_AMD;
-    c->postorder = 1;
     memcpy(L->F, F, sizeof(int) * 3 * (size_t)nf);
     memcpy(L->uv, uv0, sizeof(double) * 2 * (size_t)nv);
+    scaf_status st = opt_simplices_from_surface(&L->chart, nv, V3, nf, F, err);
+    if (st != SCAF_OK) {
+        scaf_loop_free(L);
+        return st;
+    }
     L->total_area = 0.0;
+    for (int f = 0; f < nf; f++) L->total_area += L->chart.weight[f];
     for (int f = 0; f < nf; f++) {
         const int *t = F + 3 * f;
-        double a = tri2_rest_from_3d(V3 + 3 * (size_t)t[0], V3 + 3 * (size_t)t[1], V3 + 3 * (size_t)t[2],
-                                     L->Dminv + 4 * (size_t)f);
-        if (!(a > 0.0) || !isfinite(a)) {
-            scaf_loop_free(L);
-            return err_set(err, SCAF_ERR_MESH, "triangle %d has zero 3D area", f);
-        }
-        L->area[f] = a;
-        L->total_area += a;
         if (!(orient2d(uv0 + 2 * (size_t)t[0], uv0 + 2 * (size_t)t[1], uv0 + 2 * (size_t)t[2]) > 0.0)) {
             scaf_loop_free(L);
             return err_set(err, SCAF_ERR_INTERNAL, "initial UV triangle %d is not positively oriented", f);
         }
     }
-    scaf_status st = boundary_edges(nf, F, &L->bedges, &L->nbedges, err);
+    st = boundary_edges(nf, F, &L->bedges, &L->nbedges, err);
     if (st != SCAF_OK) {
         scaf_loop_free(L);
         return st;
@@ -148,30 +126,32 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
         scaf_loop_free(L);
         return err_set(err, SCAF_ERR_MESH, "the mesh has no boundary (closed surface)");
     }
+    opt_slim_options so;
+    opt_slim_options_default(&so);
+    so.ls.safety = L->opt.step_fraction;
+    L->slim = opt_slim_create(&so, err);
+    if (!L->slim) {
+        scaf_loop_free(L);
+        return err->code ? err->code : SCAF_ERR_NOMEM;
+    }
     return SCAF_OK;
 }
 
 /* ---- energies ---------------------------------------------------------- */
 
-static double face_sd(const scaf_loop *L, const double *uv, int f)
-{
-    const int *t = L->F + 3 * f;
-    double J[4];
-    tri2_jacobian(uv + 2 * (size_t)t[0], uv + 2 * (size_t)t[1], uv + 2 * (size_t)t[2],
-                  L->Dminv + 4 * (size_t)f, J);
-    return tri2_energy(SCAF_ENERGY_SYMMETRIC_DIRICHLET, J);
-}
-
 double scaf_loop_energy(const scaf_loop *L)
 {
-    double s = 0.0;
-    for (int f = 0; f < L->nf; f++) s += L->area[f] * face_sd(L, L->uv, f);
-    return s / L->total_area;
+    opt_term t = {&L->chart, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+    return opt_term_energy(&t, L->uv) / L->total_area;
 }
 
 void scaf_loop_face_energy(const scaf_loop *L, double *E)
 {
-    for (int f = 0; f < L->nf; f++) E[f] = face_sd(L, L->uv, f);
+    for (int f = 0; f < L->nf; f++) {
+        double J[4];
+        opt_jacobian(&L->chart, f, L->uv, J);
+        E[f] = opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J);
+    }
 }
 
 scaf_status scaf_loop_scaffold(const scaf_loop *L, scaffold *sc, scaf_error *err)
@@ -183,70 +163,14 @@ scaf_status scaf_loop_scaffold(const scaf_loop *L, scaffold *sc, scaf_error *err
     return scaffold_build(L->uv, L->nv, L->bedges, L->nbedges, box, &so, sc, err);
 }
 
-/* The elements of the total energy: mesh faces then scaffold triangles. */
-typedef struct elements {
-    int n, nmesh;
-    const int *Fm;        /* mesh faces */
-    const int *Ts;        /* scaffold triangles */
-    const double *Dm;     /* mesh rest frames */
-    const double *Ds;     /* scaffold rest frames */
-    const double *wm;     /* mesh weights (areas) */
-    double ws;            /* scaffold weight (lambda) */
-    scaf_energy em;       /* mesh energy */
-} elements;
-
-static inline const int *el_tri(const elements *e, int i)
+static opt_energy to_opt_energy(scaf_energy e)
 {
-    return i < e->nmesh ? e->Fm + 3 * (size_t)i : e->Ts + 3 * (size_t)(i - e->nmesh);
-}
-static inline const double *el_rest(const elements *e, int i)
-{
-    return i < e->nmesh ? e->Dm + 4 * (size_t)i : e->Ds + 4 * (size_t)(i - e->nmesh);
-}
-static inline double el_weight(const elements *e, int i) { return i < e->nmesh ? e->wm[i] : e->ws; }
-static inline scaf_energy el_energy(const elements *e, int i)
-{
-    return i < e->nmesh ? e->em : SCAF_ENERGY_SYMMETRIC_DIRICHLET;
-}
-
-/* Total energy at positions P (all vertex ids); +inf if any triangle is
- * not positively oriented (floating-point determinant). */
-static double total_energy(const elements *e, const double *P)
-{
-    double s = 0.0;
-    for (int i = 0; i < e->n; i++) {
-        const int *t = el_tri(e, i);
-        double J[4];
-        tri2_jacobian(P + 2 * (size_t)t[0], P + 2 * (size_t)t[1], P + 2 * (size_t)t[2], el_rest(e, i), J);
-        double v = tri2_energy(el_energy(e, i), J);
-        if (!isfinite(v)) return INFINITY;
-        s += el_weight(e, i) * v;
+    switch (e) {
+    case SCAF_ENERGY_ARAP: return OPT_ENERGY_ARAP;
+    case SCAF_ENERGY_CONFORMAL: return OPT_ENERGY_CONFORMAL;
+    case SCAF_ENERGY_SYMMETRIC_DIRICHLET: break;
     }
-    return s;
-}
-
-/* Directional derivative of the total energy at P along D. */
-static double total_slope(const elements *e, const double *P, const double *D)
-{
-    double s = 0.0;
-    for (int i = 0; i < e->n; i++) {
-        const int *t = el_tri(e, i);
-        double J[4], dJ[4], G[4];
-        tri2_jacobian(P + 2 * (size_t)t[0], P + 2 * (size_t)t[1], P + 2 * (size_t)t[2], el_rest(e, i), J);
-        tri2_jacobian(D + 2 * (size_t)t[0], D + 2 * (size_t)t[1], D + 2 * (size_t)t[2], el_rest(e, i), dJ);
-        tri2_energy_grad(el_energy(e, i), J, G);
-        s += el_weight(e, i) * (G[0] * dJ[0] + G[1] * dJ[1] + G[2] * dJ[2] + G[3] * dJ[3]);
-    }
-    return s;
-}
-
-static int all_positive(const elements *e, const double *P)
-{
-    for (int i = 0; i < e->n; i++) {
-        const int *t = el_tri(e, i);
-        if (!(orient2d(P + 2 * (size_t)t[0], P + 2 * (size_t)t[1], P + 2 * (size_t)t[2]) > 0.0)) return 0;
-    }
-    return 1;
+    return OPT_ENERGY_SYMMETRIC_DIRICHLET;
 }
 
 /* ---- one iteration ----------------------------------------------------- */
@@ -255,209 +179,86 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
 {
     scaf_iteration_info_t I;
     memset(&I, 0, sizeof I);
-    double t_start = now_seconds(), t0 = t_start, t1;
+    double t_start = timer_now(), t0 = t_start, t1;
     scaf_status st = SCAF_OK;
-    cholmod_common *c = L->chol;
-    cholmod_triplet *Tr = NULL;
-    cholmod_sparse *A = NULL;
-    cholmod_factor *Lf = NULL;
-    cholmod_dense *B = NULL, *X = NULL;
-    double *P = NULL, *D = NULL, *Pt = NULL, *Dsc = NULL, *rhs = NULL;
-    int *unk = NULL;
+    double *X = NULL;
+    int *dof = NULL;
+    unsigned char *fixed = NULL;
 
     I.energy_before = scaf_loop_energy(L);
-    double EM = 0.0;
-    for (int f = 0; f < L->nf; f++) {
-        const int *t = L->F + 3 * f;
-        double J[4];
-        tri2_jacobian(L->uv + 2 * (size_t)t[0], L->uv + 2 * (size_t)t[1], L->uv + 2 * (size_t)t[2],
-                      L->Dminv + 4 * (size_t)f, J);
-        EM += L->area[f] * tri2_energy(L->opt.energy, J);
-    }
-    t1 = now_seconds();
+    opt_term mesh_term = {&L->chart, to_opt_energy(L->opt.energy)};
+    double EM = opt_term_energy(&mesh_term, L->uv);
+    t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_OTHER] += t1 - t0;
     t0 = t1;
 
-    /* ---- scaffold -------------------------------------------------------- */
+    /* ---- scaffold around the current boundary ----------------------------- */
     scaffold_free(&L->sc);
+    opt_simplices_free(&L->scaf);
     st = scaf_loop_scaffold(L, &L->sc, err);
     if (st != SCAF_OK) goto done;
     scaffold *sc = &L->sc;
     int nall = L->nv + sc->nextra;
-    double lambda = L->opt.lambda_ratio * EM / (sc->ntri > 0 ? sc->ntri : 1);
-    t1 = now_seconds();
+    t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_SCAFFOLD] += t1 - t0;
     t0 = t1;
 
-    /* ---- positions, unknown numbering, scaffold rest frames ------------- */
-    P = malloc(sizeof(double) * 2 * (size_t)nall);
-    D = calloc(2 * (size_t)nall, sizeof(double));
-    Pt = malloc(sizeof(double) * 2 * (size_t)nall);
-    Dsc = malloc(sizeof(double) * 4 * (size_t)(sc->ntri ? sc->ntri : 1));
-    unk = malloc(sizeof(int) * (size_t)nall);
-    if (!P || !D || !Pt || !Dsc || !unk) {
+    /* ---- positions, dofs, scaffold term ----------------------------------- */
+    X = malloc(sizeof(double) * 2 * (size_t)nall);
+    dof = malloc(sizeof(int) * (size_t)nall);
+    fixed = calloc((size_t)nall, 1);
+    if (!X || !dof || !fixed) {
         st = err_nomem(err, "SCAF iteration");
         goto done;
     }
-    memcpy(P, L->uv, sizeof(double) * 2 * (size_t)L->nv);
-    memcpy(P + 2 * (size_t)L->nv, sc->extra_uv, sizeof(double) * 2 * (size_t)sc->nextra);
-    int nunk = 0;
-    for (int v = 0; v < nall; v++)
-        unk[v] = (v >= L->nv && sc->extra_fixed[v - L->nv]) ? -1 : nunk++;
-    for (int s = 0; s < sc->ntri; s++) {
-        const int *t = sc->T + 3 * s;
-        tri2_rest_from_2d(P + 2 * (size_t)t[0], P + 2 * (size_t)t[1], P + 2 * (size_t)t[2], sc->eps,
-                          Dsc + 4 * (size_t)s);
-    }
-    elements el = {L->nf + sc->ntri, L->nf, L->F, sc->T, L->Dminv, Dsc, L->area, lambda, L->opt.energy};
-
-    /* ---- assembly -------------------------------------------------------- */
-    size_t n = 2 * (size_t)nunk;
-    size_t maxnz = 21 * (size_t)el.n;
-    Tr = cholmod_allocate_triplet(n, n, maxnz, 1, CHOLMOD_REAL, c);
-    rhs = calloc(n ? n : 1, sizeof(double));
-    if (!Tr || !rhs) {
-        st = err_nomem(err, "SCAF system");
+    memcpy(X, L->uv, sizeof(double) * 2 * (size_t)L->nv);
+    memcpy(X + 2 * (size_t)L->nv, sc->extra_uv, sizeof(double) * 2 * (size_t)sc->nextra);
+    memcpy(fixed + L->nv, sc->extra_fixed, (size_t)sc->nextra);
+    int nfree = opt_dof_numbering(nall, fixed, dof);
+    st = opt_simplices_from_current(&L->scaf, 2, nall, X, sc->ntri, sc->T, sc->eps, err);
+    if (st != SCAF_OK) {
+        err_prefix(err, "scaffold rest shapes");
         goto done;
     }
-    int *Ti = Tr->i, *Tj = Tr->j;
-    double *Tx = Tr->x;
-    size_t nz = 0;
-    for (int e = 0; e < el.n; e++) {
-        const int *t = el_tri(&el, e);
-        const double *Dm = el_rest(&el, e);
-        double J[4], W[4], R[4], K[36], b[6];
-        tri2_jacobian(P + 2 * (size_t)t[0], P + 2 * (size_t)t[1], P + 2 * (size_t)t[2], Dm, J);
-        tri2_slim_weights(el_energy(&el, e), J, W, R);
-        tri2_slim_element(el_weight(&el, e), Dm, W, R, K, b);
-        for (int i = 0; i < 3; i++) {
-            int ui = unk[t[i]];
-            if (ui < 0) continue;
-            for (int k = 0; k < 2; k++) {
-                int row = 2 * ui + k;
-                rhs[row] += b[2 * i + k];
-                for (int j = 0; j < 3; j++) {
-                    int uj = unk[t[j]];
-                    for (int l = 0; l < 2; l++) {
-                        double kv = K[(2 * i + k) * 6 + 2 * j + l];
-                        if (uj < 0) {
-                            rhs[row] -= kv * P[2 * (size_t)t[j] + l];
-                            continue;
-                        }
-                        int col = 2 * uj + l;
-                        if (row > col) continue;
-                        Ti[nz] = row;
-                        Tj[nz] = col;
-                        Tx[nz] = kv;
-                        nz++;
-                    }
-                }
-            }
-        }
-    }
-    Tr->nnz = nz;
-    A = cholmod_triplet_to_sparse(Tr, nz, c);
-    cholmod_free_triplet(&Tr, c);
-    if (!A) {
-        st = err_set(err, c->status == CHOLMOD_OUT_OF_MEMORY ? SCAF_ERR_NOMEM : SCAF_ERR_NUMERIC,
-                     "assembling the SLIM system failed (CHOLMOD status %d)", c->status);
-        goto done;
-    }
-    t1 = now_seconds();
+    double lambda = L->opt.lambda_ratio * EM / (sc->ntri > 0 ? sc->ntri : 1);
+    for (int s = 0; s < L->scaf.n; s++) L->scaf.weight[s] = lambda;
+    t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_ASSEMBLY] += t1 - t0;
     t0 = t1;
 
-    /* ---- ordering, factorization, solve --------------------------------- */
-    Lf = cholmod_analyze(A, c);
-    t1 = now_seconds();
-    I.phase_seconds[SCAF_PHASE_ANALYSIS] += t1 - t0;
-    t0 = t1;
-    if (!Lf || !cholmod_factorize(A, Lf, c) || c->status != CHOLMOD_OK) {
-        st = err_set(err, c->status == CHOLMOD_OUT_OF_MEMORY ? SCAF_ERR_NOMEM : SCAF_ERR_NUMERIC,
-                     "factorizing the SLIM system (%zu unknowns) failed (CHOLMOD status %d)", n,
-                     c->status);
-        goto done;
-    }
-    t1 = now_seconds();
-    I.phase_seconds[SCAF_PHASE_FACTORIZATION] += t1 - t0;
-    t0 = t1;
-    B = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, c);
-    if (!B) {
-        st = err_nomem(err, "SCAF right-hand side");
-        goto done;
-    }
-    memcpy(B->x, rhs, sizeof(double) * n);
-    X = cholmod_solve(CHOLMOD_A, Lf, B, c);
-    if (!X) {
-        st = err_set(err, SCAF_ERR_NUMERIC, "solving the SLIM system failed (CHOLMOD status %d)", c->status);
-        goto done;
-    }
-    const double *x = X->x;
-    for (int v = 0; v < nall; v++) {
-        if (unk[v] < 0) continue;
-        D[2 * (size_t)v] = x[2 * unk[v]] - P[2 * (size_t)v];
-        D[2 * (size_t)v + 1] = x[2 * unk[v] + 1] - P[2 * (size_t)v + 1];
-    }
-    t1 = now_seconds();
-    I.phase_seconds[SCAF_PHASE_SOLVE] += t1 - t0;
+    /* ---- SLIM: assembly, CHOLMOD, line search ----------------------------- */
+    opt_term terms[2] = {mesh_term, {&L->scaf, OPT_ENERGY_SYMMETRIC_DIRICHLET}};
+    int changed[2] = {0, 1};
+    opt_slim_stats ss;
+    st = opt_slim_step(L->slim, terms, 2, changed, nall, dof, nfree, X, &ss, err);
+    if (st != SCAF_OK) goto done;
+    I.phase_seconds[SCAF_PHASE_ASSEMBLY] += ss.t_assemble + ss.t_pattern;
+    I.phase_seconds[SCAF_PHASE_ANALYSIS] += ss.t_analyze;
+    I.phase_seconds[SCAF_PHASE_FACTORIZATION] += ss.t_factor;
+    I.phase_seconds[SCAF_PHASE_SOLVE] += ss.t_solve;
+    I.phase_seconds[SCAF_PHASE_LINE_SEARCH] += ss.t_line_search;
+    double accounted = ss.t_assemble + ss.t_pattern + ss.t_analyze + ss.t_factor + ss.t_solve + ss.t_line_search;
+    t1 = timer_now();
+    I.phase_seconds[SCAF_PHASE_OTHER] += (t1 - t0) - accounted > 0 ? (t1 - t0) - accounted : 0.0;
     t0 = t1;
 
-    /* ---- line search ----------------------------------------------------- */
-    double f0 = total_energy(&el, P);
-    double slope = total_slope(&el, P, D);
-    double tmax = INFINITY;
-    for (int e = 0; e < el.n; e++) {
-        const int *t = el_tri(&el, e);
-        double m = tri2_max_step(P + 2 * (size_t)t[0], P + 2 * (size_t)t[1], P + 2 * (size_t)t[2],
-                                 D + 2 * (size_t)t[0], D + 2 * (size_t)t[1], D + 2 * (size_t)t[2]);
-        if (m < tmax) tmax = m;
-    }
-    double step = L->opt.step_fraction * tmax;
-    if (step > 1.0) step = 1.0;
-    double fa = f0;
-    int accepted = 0;
-    for (int tries = 0; tries < 64 && step > 0.0; tries++, step *= 0.5) {
-        for (size_t k = 0; k < 2 * (size_t)nall; k++) Pt[k] = P[k] + step * D[k];
-        double ft = total_energy(&el, Pt);
-        int ok = slope < 0.0 ? ft <= f0 + 1e-4 * step * slope : ft < f0;
-        if (!ok || !isfinite(ft)) continue;
-        if (!all_positive(&el, Pt)) continue;
-        fa = ft;
-        accepted = 1;
-        break;
-    }
-    if (!accepted) step = 0.0;
-    else {
-        memcpy(L->uv, Pt, sizeof(double) * 2 * (size_t)L->nv);
-        memcpy(sc->extra_uv, Pt + 2 * (size_t)L->nv, sizeof(double) * 2 * (size_t)sc->nextra);
-    }
-    t1 = now_seconds();
-    I.phase_seconds[SCAF_PHASE_LINE_SEARCH] += t1 - t0;
-    t0 = t1;
-
+    memcpy(L->uv, X, sizeof(double) * 2 * (size_t)L->nv);
+    memcpy(sc->extra_uv, X + 2 * (size_t)L->nv, sizeof(double) * 2 * (size_t)sc->nextra);
     L->iterations++;
     I.iteration = L->iterations;
     I.energy = scaf_loop_energy(L);
-    I.total_before = f0;
-    I.total_after = fa;
+    I.total_before = ss.ls.energy_before;
+    I.total_after = ss.ls.step > 0 ? ss.ls.energy_after : ss.ls.energy_before;
     I.lambda = lambda;
-    I.step = step;
+    I.step = ss.ls.step;
     I.scaffold_triangles = sc->ntri;
     I.scaffold_vertices = sc->nextra;
 
 done:
-    cholmod_free_triplet(&Tr, c);
-    cholmod_free_sparse(&A, c);
-    cholmod_free_factor(&Lf, c);
-    cholmod_free_dense(&B, c);
-    cholmod_free_dense(&X, c);
-    free(P);
-    free(D);
-    free(Pt);
-    free(Dsc);
-    free(rhs);
-    free(unk);
-    t1 = now_seconds();
+    free(X);
+    free(dof);
+    free(fixed);
+    t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_OTHER] += t1 - t0;
     I.seconds = t1 - t_start;
     if (info) *info = I;

@@ -24,21 +24,23 @@
 #define SCAF_SCAFFOLD_SCAF_LOOP_H
 
 #include "base/error.h"
+#include "opt/simplices.h"
+#include "opt/slim.h"
 #include "scaffold/scaffold_build.h"
 
 typedef struct scaf_loop {
     int nv, nf;
     int *F;              /* nf by 3 working faces */
     double *uv;          /* nv by 2 current UV positions (updated) */
-    double *Dminv;       /* nf by 4 rest frames */
-    double *area;        /* nf 3D areas */
+    opt_simplices chart; /* rest frames of the mesh triangles, weight = 3D area */
     double total_area;
     int nbedges;
     int *bedges;         /* nbedges by 2 chart boundary edges, chart on the left */
     scaf_options_t opt;
-    scaffold sc;         /* the scaffold of the last iteration */
+    scaffold sc;         /* the scaffold of the last iteration (moved with the step) */
+    opt_simplices scaf;  /* its rest frames (current shape), weight = lambda */
+    opt_slim *slim;      /* SLIM driver: cached chart pattern, CHOLMOD */
     int iterations;
-    void *chol;          /* CHOLMOD common (opaque here) */
 } scaf_loop;
 
 /* Set up. V3 nv by 3 rest positions, F nf by 3 faces (counter-clockwise
