@@ -33,7 +33,11 @@ typedef struct cdt_input {
 typedef struct cdt_options {
     double min_angle_deg;   /* quality bound; 0 disables refinement (20) */
     double max_area;        /* upper bound on triangle area; 0 = none (0) */
-    int max_steiner;        /* safety cap on inserted points; 0 = no cap (0) */
+    int max_steiner;        /* safety cap on inserted points; 0 = no cap (0).
+                               Whatever this says, an internal cap
+                               proportional to the input size (and to
+                               box area / max_area) guarantees termination;
+                               refinement stops quietly at a cap. */
 } cdt_options;
 
 /* The defaults above. */
@@ -45,9 +49,35 @@ typedef struct cdt_output {
                          then the Steiner points */
     int ntriangles;
     int *triangles;   /* #T by 3 point indices, counter-clockwise */
+    int *neighbors;   /* #T by 3: neighbors[3t+i] = triangle across the edge
+                         opposite corner i (from corner i+1 to i+2), or -1
+                         where that edge bounds the domain */
+    int nsubsegments;
+    int *subsegments; /* #SS by 2 point indices: the output edges lying on
+                         input segments that border at least one output
+                         triangle, oriented like their segment; an
+                         unsplittable segment is exactly one subsegment */
+    int *subsegment_of; /* #SS: index of the input segment */
+    int nsteiner;     /* = npoints - input npoints */
+    int nrejected;    /* refinement steps refused (a Steiner point would
+                         encroach an unsplittable segment, leave the domain,
+                         or break orientation); quality is best-effort there */
+    int capped;       /* 1 when refinement stopped at the Steiner cap */
 } cdt_output;
 
-/* Triangulate. Fails with SCAF_ERR_MESH (message names the segments) on
+/* Triangulate the region enclosed by the segments: triangles that can be
+ * reached from far away without crossing a segment are not output, nor are
+ * holes (the left side of segments flagged left_is_hole, and the regions
+ * containing hole seeds, each up to the enclosing segments). Splittable
+ * segments may come out as chains of subsegments.
+ *
+ * Refinement: every output triangle gets a minimum angle of
+ * min_angle_deg (and area <= max_area) except where that would need a
+ * Steiner point encroaching (in the diametral circle of) an unsplittable
+ * segment or beyond it; triangles whose smallest angle lies between two
+ * segments are left alone. Deterministic: same input, same output.
+ *
+ * Fails with SCAF_ERR_MESH (message names the segments) on
  * invalid input: crossing segments, a point in the interior of a segment,
  * duplicate points, non-finite coordinates. On failure *out is empty. */
 scaf_status cdt_triangulate(const cdt_input *in, const cdt_options *opt, cdt_output *out,

@@ -1,0 +1,362 @@
+/* geom/cdt_refine: quality refinement (Ruppert / Chew style, with off-centers).
+ *
+ * Two FIFO queues drive the work: encroached splittable subsegments
+ * (served first) and candidate bad triangles. A bad triangle is a domain
+ * triangle whose smallest angle is below the bound, unless that angle lies
+ * between two segments (a small input angle, left alone), or whose area
+ * exceeds max_area. Its Steiner point is Ungor's off-center on the
+ * bisector of the shortest edge when that is closer than the circumcenter
+ * (fewer points, same grading), else the circumcenter. The point is found
+ * by a walk that may not cross constrained edges; a point beyond a
+ * constrained edge, or whose cavity would touch a subsegment whose
+ * diametral circle contains it, is not inserted: a splittable subsegment is
+ * split instead and the triangle retried (a few times at most), an
+ * unsplittable one means the triangle stays as it is (refinement is
+ * best-effort next to chart edges). Splits use the midpoint, or concentric
+ * shells (a power-of-two distance from the segment's input endpoint) so
+ * small angles between splittable segments cannot ping-pong. Geometric
+ * positions are computed in floating point; every topological decision is
+ * exact (see cdt_mesh.c), and an insertion whose fan would not be strictly
+ * counter-clockwise is refused.
+ */
+#include "geom/cdt_refine.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+typedef struct rq {
+    int *v;
+    long n, cap, head;
+    int width;
+} rq;
+
+static int rq_push(rq *q, const int *item)
+{
+    if (q->head > 0 && q->head * 2 >= q->n && q->n >= 1024) {
+        long live = q->n - q->head;
+        for (long i = 0; i < live * q->width; i++)
+            q->v[i] = q->v[q->head * q->width + i];
+        q->n = live;
+        q->head = 0;
+    }
+    if (q->n >= q->cap) {
+        long nc = q->cap ? 2 * q->cap : 256;
+        int *nv = realloc(q->v, (size_t)nc * (size_t)q->width * sizeof(int));
+        if (!nv)
+            return -1;
+        q->v = nv;
+        q->cap = nc;
+    }
+    for (int k = 0; k < q->width; k++)
+        q->v[q->n * q->width + k] = item[k];
+    q->n++;
+    return 0;
+}
+
+typedef struct refiner {
+    cdt_mesh *m;
+    const cdt_refine_params *prm;
+    cdt_refine_stats *st;
+    double sin2;    /* sin^2 of the angle bound */
+    double offh;    /* off-center height / shortest edge length */
+    rq segq;        /* a, b, forced */
+    rq triq;        /* t, v0, v1, v2, tries */
+} refiner;
+
+static int seg_splittable(const refiner *r, int code)
+{
+    return code >= 0 && !(code & 1) && r->prm->splittable[code >> 1];
+}
+
+static double d2(const double *a, const double *b)
+{
+    double dx = a[0] - b[0], dy = a[1] - b[1];
+    return dx * dx + dy * dy;
+}
+
+/* p in the closed diametral circle of u-w */
+static int encroaches(const double *u, const double *w, const double *p)
+{
+    return (u[0] - p[0]) * (w[0] - p[0]) + (u[1] - p[1]) * (w[1] - p[1]) <= 0;
+}
+
+/* 0 good, 1 bad angle, 2 too big. *k gets the corner of the smallest angle. */
+static int badness(const refiner *r, int t, int *kmin)
+{
+    const cdt_mesh *m = r->m;
+    const int *v = m->V + 3 * t;
+    const double *p0 = m->xy + 2 * v[0], *p1 = m->xy + 2 * v[1], *p2 = m->xy + 2 * v[2];
+    double l[3] = {d2(p1, p2), d2(p2, p0), d2(p0, p1)};
+    double a2 = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    int k = 0;
+    if (l[1] < l[k])
+        k = 1;
+    if (l[2] < l[k])
+        k = 2;
+    *kmin = k;
+    if (r->prm->max_area > 0 && 0.5 * a2 > r->prm->max_area)
+        return 2;
+    if (r->sin2 <= 0)
+        return 0;
+    double ln = l[(k + 1) % 3], lp = l[(k + 2) % 3];
+    if (!(a2 * a2 < r->sin2 * ln * lp))
+        return 0;
+    /* smallest angle between two segments: an input angle, leave it */
+    if (m->S[3 * t + (k + 1) % 3] >= 0 && m->S[3 * t + (k + 2) % 3] >= 0)
+        return 0;
+    return 1;
+}
+
+static int push_tri(refiner *r, int t, int tries)
+{
+    int k;
+    if (r->m->reg[t] != CDT_REG_DOMAIN || !badness(r, t, &k))
+        return 0;
+    const int *v = r->m->V + 3 * t;
+    int item[5] = {t, v[0], v[1], v[2], tries};
+    return rq_push(&r->triq, item);
+}
+
+/* Queue the subsegment facing corner c when it is splittable and (forced
+ * or) an apex of an adjacent domain triangle encroaches it. */
+static int check_seg(refiner *r, int c, int forced)
+{
+    cdt_mesh *m = r->m;
+    if (!seg_splittable(r, m->S[c]))
+        return 0;
+    int u = m->V[cdt_next(c)], w = m->V[cdt_prev(c)];
+    int enc = forced;
+    if (!enc && m->reg[c / 3] == CDT_REG_DOMAIN)
+        enc = encroaches(m->xy + 2 * u, m->xy + 2 * w, m->xy + 2 * m->V[c]);
+    int n = m->N[c];
+    if (!enc && n >= 0 && m->reg[n / 3] == CDT_REG_DOMAIN)
+        enc = encroaches(m->xy + 2 * u, m->xy + 2 * w, m->xy + 2 * m->V[n]);
+    if (!enc)
+        return 0;
+    int item[3] = {u, w, forced};
+    return rq_push(&r->segq, item);
+}
+
+static void freeze(cdt_mesh *m, int c)
+{
+    m->S[c] |= 1;
+    if (m->N[c] >= 0)
+        m->S[m->N[c]] |= 1;
+}
+
+/* After a commit: queue new bad triangles and encroached subsegments. */
+static int after_insert(refiner *r)
+{
+    cdt_mesh *m = r->m;
+    int k = m->ncav;
+    r->st->nsteiner++;
+    for (int j = 0; j < k + 2; j++) {
+        int t = j < k ? m->cav[j] : m->nt - 2 + (j - k);
+        if (push_tri(r, t, 0))
+            return -1;
+        for (int i = 0; i < 3; i++) {
+            int c = 3 * t + i;
+            if (m->S[c] >= 0 && check_seg(r, c, 0))
+                return -1;
+        }
+    }
+    return 0;
+}
+
+static int split_segment(refiner *r, int a, int b, int forced)
+{
+    cdt_mesh *m = r->m;
+    int c = cdt_mesh_find_edge(m, a, b);
+    if (c < 0)
+        c = cdt_mesh_find_edge(m, b, a);
+    if (c < 0 || !seg_splittable(r, m->S[c]))
+        return 0;
+    if (!forced) { /* still encroached? */
+        int u = m->V[cdt_next(c)], w = m->V[cdt_prev(c)], n = m->N[c], enc = 0;
+        if (m->reg[c / 3] == CDT_REG_DOMAIN)
+            enc = encroaches(m->xy + 2 * u, m->xy + 2 * w, m->xy + 2 * m->V[c]);
+        if (!enc && n >= 0 && m->reg[n / 3] == CDT_REG_DOMAIN)
+            enc = encroaches(m->xy + 2 * u, m->xy + 2 * w, m->xy + 2 * m->V[n]);
+        if (!enc)
+            return 0;
+    }
+    if (m->N[c] < 0) {
+        freeze(m, c);
+        return 0;
+    }
+    /* split point: concentric shells around an input endpoint */
+    int v0 = a, v1 = b;
+    if (a >= r->prm->ninput && b < r->prm->ninput) {
+        v0 = b;
+        v1 = a;
+    }
+    const double *p0 = m->xy + 2 * v0, *p1 = m->xy + 2 * v1;
+    double len = sqrt(d2(p0, p1)), f = 0.5;
+    if ((v0 < r->prm->ninput) != (v1 < r->prm->ninput) && len > 0) {
+        double d = exp2(round(log2(0.5 * len)));
+        f = d / len;
+    }
+    double p[2] = {p0[0] + f * (p1[0] - p0[0]), p0[1] + f * (p1[1] - p0[1])};
+    if ((p[0] == p0[0] && p[1] == p0[1]) || (p[0] == p1[0] && p[1] == p1[1])) {
+        freeze(m, c);
+        return 0;
+    }
+    int ok = cdt_mesh_cavity(m, p, c / 3, m->N[c] / 3);
+    if (ok < 0)
+        return -1;
+    if (ok == 1) { /* no Steiner point inside an unsplittable segment's diametral circle */
+        for (int j = 0; j < m->nbnd; j++) {
+            int e = m->bnd[j];
+            if (m->S[e] >= 0 && !seg_splittable(r, m->S[e]) &&
+                encroaches(m->xy + 2 * m->V[cdt_next(e)], m->xy + 2 * m->V[cdt_prev(e)], p)) {
+                ok = 0;
+                break;
+            }
+        }
+    }
+    if (ok != 1) {
+        freeze(m, c);
+        r->st->nrejected++;
+        return 0;
+    }
+    int code = m->S[c];
+    int v = cdt_mesh_add_vertex(m, p[0], p[1]);
+    if (v < 0 || cdt_mesh_commit(m, v, code, a, b) < 0)
+        return -1;
+    return after_insert(r);
+}
+
+static int refine_triangle(refiner *r, const int *item)
+{
+    cdt_mesh *m = r->m;
+    int t = item[0];
+    const int *v = m->V + 3 * t;
+    if (v[0] != item[1] || v[1] != item[2] || v[2] != item[3] || m->reg[t] != CDT_REG_DOMAIN)
+        return 0;
+    int k, bad = badness(r, t, &k);
+    if (!bad)
+        return 0;
+    /* circumcenter, and the off-center on the shortest edge's bisector */
+    const double *pp = m->xy + 2 * v[(k + 1) % 3], *pq = m->xy + 2 * v[(k + 2) % 3];
+    const double *pr = m->xy + 2 * v[k];
+    double bx = pq[0] - pp[0], by = pq[1] - pp[1], cx = pr[0] - pp[0], cy = pr[1] - pp[1];
+    double den = 2.0 * (bx * cy - by * cx);
+    if (!(den > 0)) {
+        r->st->nrejected++;
+        return 0;
+    }
+    double bb = bx * bx + by * by, cc = cx * cx + cy * cy;
+    double p[2] = {pp[0] + (cy * bb - by * cc) / den, pp[1] + (bx * cc - cx * bb) / den};
+    if (bad == 1) {
+        double mx = 0.5 * (pp[0] + pq[0]), my = 0.5 * (pp[1] + pq[1]);
+        double dist = sqrt((p[0] - mx) * (p[0] - mx) + (p[1] - my) * (p[1] - my));
+        double h = r->offh * sqrt(bb);
+        if (dist > h) {
+            p[0] = mx + (p[0] - mx) * (h / dist);
+            p[1] = my + (p[1] - my) * (h / dist);
+        }
+    }
+    if (!isfinite(p[0]) || !isfinite(p[1])) {
+        r->st->nrejected++;
+        return 0;
+    }
+    int blocker, lt = cdt_mesh_walk_constrained(m, t, p, &blocker);
+    int retry = 0, refuse = 0;
+    if (lt < 0) {
+        if (blocker >= 0 && seg_splittable(r, m->S[blocker])) {
+            int it[3] = {m->V[cdt_next(blocker)], m->V[cdt_prev(blocker)], 1};
+            if (rq_push(&r->segq, it))
+                return -1;
+            retry = 1;
+        } else {
+            refuse = 1;
+        }
+    } else {
+        for (int i = 0; i < 3; i++) {
+            const double *q = m->xy + 2 * m->V[3 * lt + i];
+            if (q[0] == p[0] && q[1] == p[1])
+                refuse = 1;
+        }
+        if (!refuse) {
+            int ok = cdt_mesh_cavity(m, p, lt, -1);
+            if (ok < 0)
+                return -1;
+            if (ok == 0)
+                refuse = 1;
+            for (int j = 0; ok == 1 && j < m->nbnd; j++) {
+                int e = m->bnd[j];
+                if (m->S[e] < 0 ||
+                    !encroaches(m->xy + 2 * m->V[cdt_next(e)], m->xy + 2 * m->V[cdt_prev(e)], p))
+                    continue;
+                if (seg_splittable(r, m->S[e])) {
+                    int it[3] = {m->V[cdt_next(e)], m->V[cdt_prev(e)], 1};
+                    if (rq_push(&r->segq, it))
+                        return -1;
+                    retry = 1;
+                } else {
+                    refuse = 1;
+                }
+            }
+        }
+    }
+    if (retry || refuse) {
+        if (retry && item[4] < 3) {
+            int again[5] = {item[0], item[1], item[2], item[3], item[4] + 1};
+            return rq_push(&r->triq, again);
+        }
+        r->st->nrejected++;
+        return 0;
+    }
+    int nv = cdt_mesh_add_vertex(m, p[0], p[1]);
+    if (nv < 0 || cdt_mesh_commit(m, nv, -1, -1, -1) < 0)
+        return -1;
+    return after_insert(r);
+}
+
+int cdt_refine(cdt_mesh *m, const cdt_refine_params *prm, cdt_refine_stats *st)
+{
+    refiner r;
+    r.m = m;
+    r.prm = prm;
+    r.st = st;
+    double th = prm->min_angle_deg * (3.14159265358979323846 / 180.0);
+    r.sin2 = prm->min_angle_deg > 0 ? sin(th) * sin(th) : 0.0;
+    /* isosceles triangle on the shortest edge with apex angle a bit above the bound */
+    r.offh = prm->min_angle_deg > 0 ? 0.5 / tan(0.5 * th) * 0.98 : 0.0;
+    r.segq = (rq){NULL, 0, 0, 0, 3};
+    r.triq = (rq){NULL, 0, 0, 0, 5};
+    int rc = 0;
+    for (int t = 0; t < m->nt && !rc; t++) {
+        if (m->reg[t] != CDT_REG_DOMAIN)
+            continue;
+        for (int i = 0; i < 3 && !rc; i++)
+            if (m->S[3 * t + i] >= 0)
+                rc = check_seg(&r, 3 * t + i, 0);
+        if (!rc)
+            rc = push_tri(&r, t, 0);
+    }
+    while (!rc) {
+        if (st->nsteiner >= prm->max_steiner) {
+            if (r.segq.head < r.segq.n || r.triq.head < r.triq.n)
+                st->capped = 1;
+            break;
+        }
+        if (r.segq.head < r.segq.n) {
+            int *it = r.segq.v + r.segq.head * 3;
+            int a = it[0], b = it[1], f = it[2];
+            r.segq.head++;
+            rc = split_segment(&r, a, b, f);
+        } else if (r.triq.head < r.triq.n) {
+            int it[5];
+            for (int i = 0; i < 5; i++)
+                it[i] = r.triq.v[r.triq.head * 5 + i];
+            r.triq.head++;
+            rc = refine_triangle(&r, it);
+        } else {
+            break;
+        }
+    }
+    free(r.segq.v);
+    free(r.triq.v);
+    return rc;
+}
