@@ -166,7 +166,11 @@ static void chart_edges_are_never_split(void **state)
     cdt_options opt = cdt_default_options();
     opt.max_area = 2.0;
     cdt_output out = run_ok(&b, &opt);
-    assert_checked(&b, &opt, &out, 0);
+    /* area and angle bounds cannot hold next to a 10-long unsplittable edge:
+       check only the structure here */
+    cdt_check_stats st = cdt_check(&b, NULL, &out, 0, 1);
+    if (!st.ok)
+        fail_msg("%s", st.why);
     int chart_subs = 0;
     for (int i = 0; i < out.nsubsegments; i++)
         if (!b.split[out.subsegment_of[i]])

@@ -1,0 +1,269 @@
+/* Adversarial and randomized tests for geom/cdt: what SCAF does to its scaffold.
+ *
+ * Hundreds of charts, chart boundaries 1e-12 apart (between charts and
+ * within one folded chart), nearly collinear boundary chains, long thin
+ * gaps, random star-shaped charts. Each output is checked exactly by
+ * cdt_check (cdt_check.h); refinement must finish without hitting its cap.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include "geom/cdt_check.h"
+
+static unsigned rnd_state = 1;
+static double rnd(void) /* deterministic per test (reset by each test) */
+{
+    rnd_state = rnd_state * 1664525u + 1013904223u;
+    return (rnd_state >> 8) / 16777216.0;
+}
+
+static void run_and_check(cdt_builder *b, const cdt_options *opt, int chi, int strict_angles)
+{
+    cdt_input in = cb_input(b);
+    cdt_output out;
+    scaf_error err;
+    err_clear(&err);
+    if (cdt_triangulate(&in, opt, &out, &err) != SCAF_OK)
+        fail_msg("cdt_triangulate failed: %s", err.message);
+    cdt_check_stats st = cdt_check(b, opt, &out, chi, 1);
+    if (!st.ok)
+        fail_msg("%s", st.why);
+    if (strict_angles && st.nfree_bad > 0)
+        fail_msg("%d of %d triangles away from charts below the bound (min %g)", st.nfree_bad,
+                 st.nfree, st.min_angle_free);
+    assert_false(out.capped);
+    print_message("    %d points (%d Steiner), %d triangles, min angle %.2f (all) %.2f (away "
+                  "from charts, %d triangles), %d refused\n",
+                  out.npoints, out.nsteiner, out.ntriangles, st.min_angle_all, st.min_angle_free,
+                  st.nfree, out.nrejected);
+    cdt_output_free(&out);
+}
+
+/* a random star-shaped polygon in the disk (cx, cy, r), n vertices, CCW */
+static void star(double *xy, int n, double cx, double cy, double r)
+{
+    double ph = rnd() * 6.283185307179586;
+    for (int i = 0; i < n; i++) {
+        double t = ph + 6.283185307179586 * (i + 0.8 * rnd()) / n;
+        double rr = r * (0.3 + 0.7 * rnd());
+        xy[2 * i] = cx + rr * cos(t);
+        xy[2 * i + 1] = cy + rr * sin(t);
+    }
+}
+
+static void hundreds_of_charts_on_a_grid(void **state)
+{
+    (void)state;
+    rnd_state = 7;
+    cdt_builder b;
+    cb_init(&b);
+    int k = 0;
+    for (int i = 0; i < 20; i++)
+        for (int j = 0; j < 20; j++) {
+            double xy[2 * 16];
+            int n = 3 + (int)(rnd() * 13);
+            star(xy, n, i, j, 0.45);
+            cb_loop(&b, xy, n);
+            k++;
+        }
+    cb_box(&b, 3.0, NULL);
+    cdt_options opt = cdt_default_options();
+    run_and_check(&b, &opt, 1 - k, 1);
+    cb_free(&b);
+}
+
+static void random_charts_many_seeds(void **state)
+{
+    (void)state;
+    for (unsigned seed = 1; seed <= 20; seed++) {
+        rnd_state = seed;
+        cdt_builder b;
+        cb_init(&b);
+        int k = 0;
+        int g = 1 + (int)(rnd() * 5);
+        for (int i = 0; i < g; i++)
+            for (int j = 0; j < g; j++) {
+                if (rnd() < 0.3)
+                    continue;
+                double xy[2 * 64];
+                int n = 3 + (int)(rnd() * 60);
+                star(xy, n, i + 0.1 * rnd(), j + 0.1 * rnd(), 0.4 + 0.09 * rnd());
+                cb_loop(&b, xy, n);
+                k++;
+            }
+        if (k == 0)
+            continue;
+        cb_box(&b, 2.0 + 2 * rnd(), NULL);
+        cdt_options opt = cdt_default_options();
+        opt.min_angle_deg = 10 + 20 * rnd();
+        if (seed % 3 == 0)
+            opt.max_area = 0.05;
+        run_and_check(&b, &opt, 1 - k, seed % 3 != 0);
+        cb_free(&b);
+    }
+}
+
+static void boundaries_1e12_apart(void **state)
+{
+    (void)state;
+    /* columns of squares whose facing edges are 1e-12 apart, with the
+       vertices on the facing edges at different heights, plus a C-shaped
+       chart whose arms close to a 1e-12 gap */
+    cdt_builder b;
+    cb_init(&b);
+    int k = 0;
+    for (int i = 0; i < 6; i++) {
+        double x0 = i * (1 + 1e-12), x1 = x0 + 1;
+        double xy[2 * 8];
+        int n = 0;
+        xy[n++] = x0, xy[n++] = 0;
+        xy[n++] = x1, xy[n++] = 0;
+        xy[n++] = x1, xy[n++] = 0.37 + 0.01 * i;
+        xy[n++] = x1, xy[n++] = 1;
+        xy[n++] = x0, xy[n++] = 1;
+        xy[n++] = x0, xy[n++] = 0.61 - 0.02 * i;
+        cb_loop(&b, xy, n / 2);
+        k++;
+    }
+    /* C shape: a ring cut open by a 1e-12 slit on the right */
+    {
+        double xy[2 * 200];
+        int n = 0, m = 60;
+        double gap = 1e-12, cx = 3, cy = -2;
+        for (int i = 0; i <= m; i++) { /* outer arc, from just above the slit round to below */
+            double t = asin(gap / 1.0) + (6.283185307179586 - 2 * asin(gap / 1.0)) * i / m;
+            xy[n++] = cx + cos(t), xy[n++] = cy + sin(t);
+        }
+        for (int i = m; i >= 0; i--) {
+            double t = asin(gap / 0.5) + (6.283185307179586 - 2 * asin(gap / 0.5)) * i / m;
+            xy[n++] = cx + 0.5 * cos(t), xy[n++] = cy + 0.5 * sin(t);
+        }
+        cb_loop(&b, xy, n / 2);
+        k++;
+    }
+    cb_box(&b, 3.0, NULL);
+    cdt_options opt = cdt_default_options();
+    run_and_check(&b, &opt, 1 - k, 0);
+    cb_free(&b);
+}
+
+static void nearly_collinear_boundary(void **state)
+{
+    (void)state;
+    /* a chart whose bottom is 400 points on y = 0 moved by a few ulps up and
+       down (both convex and reflex vertices within 1e-16), and a top that
+       is exactly collinear */
+    cdt_builder b;
+    cb_init(&b);
+    double xy[2 * 1000];
+    int n = 0;
+    for (int i = 0; i <= 400; i++) {
+        double y = (i % 3 == 0) ? 0 : (i % 3 == 1 ? 1e-17 * (i % 7) : -1e-17 * (i % 5));
+        xy[n++] = i / 400.0, xy[n++] = y;
+    }
+    for (int i = 400; i >= 0; i -= 2)
+        xy[n++] = i / 400.0, xy[n++] = 0.25;
+    cb_loop(&b, xy, n / 2);
+    /* a second chart just below following the same wobble 1e-12 lower */
+    int n2 = 0;
+    double xy2[2 * 1000];
+    for (int i = 400; i >= 0; i--) {
+        double y = -1e-12 + ((i % 2) ? 1e-17 : -1e-17);
+        xy2[n2++] = i / 400.0 + 1e-4, xy2[n2++] = y;
+    }
+    xy2[n2++] = 1e-4, xy2[n2++] = -0.3;
+    xy2[n2++] = 1 + 1e-4, xy2[n2++] = -0.3;
+    /* orientation: bottom chain goes right to left, so the chart below is
+       on its left only if the loop is CCW: (1,0)..(0,0),(0,-0.3),(1,-0.3) */
+    cb_loop(&b, xy2, n2 / 2);
+    cb_box(&b, 3.0, NULL);
+    cdt_options opt = cdt_default_options();
+    run_and_check(&b, &opt, -1, 0);
+    cb_free(&b);
+}
+
+static void long_thin_gap(void **state)
+{
+    (void)state;
+    cdt_builder b;
+    cb_init(&b);
+    double *xy = malloc(2 * 2100 * sizeof(double));
+    int n = 0;
+    /* lower chart: top edge from (10, 0) back to (0, 0) with 1000 steps */
+    xy[n++] = 0, xy[n++] = -1;
+    xy[n++] = 10, xy[n++] = -1;
+    for (int i = 1000; i >= 0; i--)
+        xy[n++] = 10.0 * i / 1000, xy[n++] = 0;
+    cb_loop(&b, xy, n / 2);
+    n = 0;
+    /* upper chart: bottom edge 1e-6 higher with 777 steps */
+    for (int i = 0; i <= 777; i++)
+        xy[n++] = 10.0 * i / 777 + 1e-3, xy[n++] = 1e-6;
+    xy[n++] = 10 + 1e-3, xy[n++] = 1;
+    xy[n++] = 1e-3, xy[n++] = 1;
+    cb_loop(&b, xy, n / 2);
+    free(xy);
+    cb_box(&b, 3.0, NULL);
+    cdt_options opt = cdt_default_options();
+    run_and_check(&b, &opt, -1, 0);
+    cb_free(&b);
+}
+
+static void charts_nested_in_holes_deeply(void **state)
+{
+    (void)state;
+    /* rings inside rings: chart ring, free ring, chart ring, ... , a disk */
+    cdt_builder b;
+    cb_init(&b);
+    int rings = 5;
+    for (int r = 0; r < rings; r++) {
+        double ro = 10 - 2 * r, ri = ro - 1;
+        double xy[2 * 64];
+        wiggly(xy, 64, 0, 0, ro, 0.02, 3, 0);
+        cb_loop(&b, xy, 64);
+        wiggly(xy, 48, 0, 0, ri, 0.02, 5, 1);
+        cb_loop(&b, xy, 48);
+    }
+    double xy[2 * 16];
+    wiggly(xy, 16, 0, 0, 0.5, 0.1, 2, 0);
+    cb_loop(&b, xy, 16);
+    cb_box(&b, 3.0, NULL);
+    cdt_options opt = cdt_default_options();
+    /* free pieces: outside (one hole) and 5 rings (each one hole): chi 0 */
+    run_and_check(&b, &opt, 0, 1);
+    cb_free(&b);
+}
+
+static void tiny_and_huge_coordinates(void **state)
+{
+    (void)state;
+    double scales[] = {1e-9, 1e9};
+    for (int s = 0; s < 2; s++) {
+        cdt_builder b;
+        cb_init(&b);
+        double xy[2 * 100];
+        wiggly(xy, 100, 3 * scales[s], -scales[s], scales[s], 0.3, 6, 0);
+        cb_loop(&b, xy, 100);
+        cb_box(&b, 3.0, NULL);
+        cdt_options opt = cdt_default_options();
+        run_and_check(&b, &opt, 0, 1);
+        cb_free(&b);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(hundreds_of_charts_on_a_grid),
+        cmocka_unit_test(random_charts_many_seeds),
+        cmocka_unit_test(boundaries_1e12_apart),
+        cmocka_unit_test(nearly_collinear_boundary),
+        cmocka_unit_test(long_thin_gap),
+        cmocka_unit_test(charts_nested_in_holes_deeply),
+        cmocka_unit_test(tiny_and_huge_coordinates),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
