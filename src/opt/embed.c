@@ -19,16 +19,32 @@
 
 static const double SCAF_PI = 3.14159265358979323846;
 
-/* 1 if some face has the directed edge a -> b, 0 if one has b -> a, -1 if none. */
-static int edge_direction(int nf, const int *F, int a, int b)
+/* Face half-edges keyed by undirected edge, sorted: key = lo * nv + hi,
+ * fwd = whether the face walks lo -> hi. */
+typedef struct half_edge { long long key; int fwd; } half_edge;
+
+static int cmp_half_edge(const void *pa, const void *pb)
 {
-    for (int f = 0; f < nf; f++)
-        for (int k = 0; k < 3; k++) {
-            int p = F[3 * f + k], q = F[3 * f + (k + 1) % 3];
-            if (p == a && q == b) return 1;
-            if (p == b && q == a) return 0;
-        }
-    return -1;
+    const half_edge *a = pa, *b = pb;
+    return (a->key > b->key) - (a->key < b->key);
+}
+
+/* Number of faces with edge {a, b}; *a_to_b gets whether (one of) them
+ * walks a -> b. */
+static int edge_uses(const half_edge *he, size_t n, int nv, int a, int b, int *a_to_b)
+{
+    long long lo = a < b ? a : b, hi = a < b ? b : a, key = lo * nv + hi;
+    size_t l = 0, r = n;
+    while (l < r) {
+        size_t m = l + (r - l) / 2;
+        if (he[m].key < key) l = m + 1; else r = m;
+    }
+    int cnt = 0;
+    for (size_t k = l; k < n && he[k].key == key; k++) {
+        cnt++;
+        *a_to_b = he[k].fwd == (a < b);
+    }
+    return cnt;
 }
 
 static double dist3(const double *a, const double *b)
@@ -141,23 +157,42 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
     for (int f = 0; f < nf; f++)
         area += tri_area3(V + 3 * (size_t)F[3 * f], V + 3 * (size_t)F[3 * f + 1], V + 3 * (size_t)F[3 * f + 2]);
     if (!(area > 0) || !isfinite(area)) return err_set(err, SCAF_ERR_MESH, "chart has 3D area %g", area);
-    /* Loop lengths, outer choice, directions. */
+    /* Loop lengths, outer choice, directions (every loop edge must be a
+     * boundary edge, walked the same way by the loop). */
+    size_t nhe = 3 * (size_t)nf;
+    half_edge *he = malloc(nhe * sizeof *he);
+    int *dir = malloc((size_t)nl * sizeof *dir);
+    if (!he || !dir) { free(he); free(dir); return err_nomem(err, "embedding"); }
+    for (int f = 0; f < nf; f++)
+        for (int k = 0; k < 3; k++) {
+            int p = F[3 * f + k], q = F[3 * f + (k + 1) % 3];
+            he[3 * (size_t)f + k].key = (long long)(p < q ? p : q) * nv + (p < q ? q : p);
+            he[3 * (size_t)f + k].fwd = p < q;
+        }
+    qsort(he, nhe, sizeof *he, cmp_half_edge);
     int outer = loops->outer;
     double best = -1;
-    int *dir = malloc((size_t)nl * sizeof *dir);
-    if (!dir) return err_nomem(err, "embedding");
     for (int l = 0; l < nl; l++) {
         const int *lv = loops->vertices + loops->start[l];
         int len = loops->start[l + 1] - loops->start[l];
         double L = 0;
-        for (int k = 0; k < len; k++) L += dist3(V + 3 * (size_t)lv[k], V + 3 * (size_t)lv[(k + 1) % len]);
-        if (loops->outer < 0 && L > best) { best = L; outer = l; }
-        dir[l] = edge_direction(nf, F, lv[0], lv[1]);
-        if (dir[l] < 0) {
-            free(dir);
-            return err_set(err, SCAF_ERR_MESH, "boundary loop %d: no face has the edge %d-%d", l, lv[0], lv[1]);
+        for (int k = 0; k < len; k++) {
+            int a = lv[k], b = lv[(k + 1) % len], fwd = 0;
+            int uses = edge_uses(he, nhe, nv, a, b, &fwd);
+            if (uses != 1 || (k > 0 && fwd != dir[l])) {
+                free(he); free(dir);
+                return err_set(err, SCAF_ERR_MESH,
+                               "boundary loop %d: edge %d-%d is %s", l, a, b,
+                               uses == 0 ? "not an edge of any face"
+                               : uses > 1 ? "shared by several faces (not a boundary edge)"
+                                          : "walked against the loop's direction");
+            }
+            dir[l] = fwd;
+            L += dist3(V + 3 * (size_t)a, V + 3 * (size_t)b);
         }
+        if (loops->outer < 0 && L > best) { best = L; outer = l; }
     }
+    free(he);
     if (outer < 0 || outer >= nl) { free(dir); return err_set(err, SCAF_ERR_USAGE, "outer loop %d of %d", outer, nl); }
     /* ---- filled disk ---- */
     int nholes = nl - 1, nfill = 0;

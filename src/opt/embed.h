@@ -12,8 +12,9 @@
  * vertex (at the hole's 3D centroid), the filled disk is embedded, and the
  * fill is dropped — the map of the chart stays valid.
  * Vertices not used by any face are placed at the circle's center.
- * Errors: SCAF_ERR_USAGE (bad index, empty loop), SCAF_ERR_MESH (a boundary
- * loop edge that no face has, a vertex on two loops, zero chart area),
+ * Errors: SCAF_ERR_USAGE (bad index, empty loop), SCAF_ERR_MESH (a loop
+ * edge that is not a boundary edge of exactly one face, a loop walked
+ * inconsistently, a vertex on two loops, zero chart area),
  * SCAF_ERR_NUMERIC (singular system: a component not connected to the
  * outer boundary; or Tutte itself produced a non-positive triangle, which
  * happens only for an invalid disk or extreme floating-point degeneracy),

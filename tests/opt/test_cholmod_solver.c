@@ -1,0 +1,144 @@
+/* Tests for opt/cholmod_solver and opt/csc: Laplacian systems solved to
+ * 1e-10 relative residual, analysis reused for an unchanged pattern and
+ * redone for a new one, clear errors. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "opt/cholmod_solver.h"
+#include "opt/csc.h"
+#include "rng.h"
+
+/* Grid Laplacian of an m by m grid with Dirichlet boundary (5-point), plus
+ * shift on the diagonal; extra != 0 adds one long-range coupling. */
+static void grid_laplacian(opt_csc *A, int m, double shift, int extra)
+{
+    int n = m * m, cap = 5 * n + 2, nt = 0;
+    int *I = malloc(cap * sizeof *I), *J = malloc(cap * sizeof *J);
+    double *V = malloc(cap * sizeof *V);
+    for (int y = 0; y < m; y++)
+        for (int x = 0; x < m; x++) {
+            int i = y * m + x;
+            I[nt] = i; J[nt] = i; V[nt++] = 4 + shift;
+            if (x + 1 < m) { I[nt] = i; J[nt] = i + 1; V[nt++] = -1; }
+            if (y + 1 < m) { I[nt] = i + m; J[nt] = i; V[nt++] = -1; } /* lower triangle on purpose */
+        }
+    if (extra) { I[nt] = 0; J[nt] = n - 1; V[nt++] = -0.5; I[nt] = 0; J[nt] = 0; V[nt++] = 0.5; }
+    assert_int_equal(opt_csc_from_triplets(A, n, nt, I, J, V, NULL), SCAF_OK);
+    free(I); free(J); free(V);
+}
+
+static double rel_residual(const opt_csc *A, const double *x, const double *b)
+{
+    double *y = malloc(A->n * sizeof *y), num = 0, den = 0;
+    opt_csc_symv(A, x, y);
+    for (int i = 0; i < A->n; i++) { num += (y[i] - b[i]) * (y[i] - b[i]); den += b[i] * b[i]; }
+    free(y);
+    return sqrt(num / den);
+}
+
+static void triplets_sum_duplicates(void **state)
+{
+    (void)state;
+    int I[5] = {0, 1, 0, 2, 1}, J[5] = {0, 0, 1, 2, 0};
+    double V[5] = {1, 2, 3, 4, 5};
+    opt_csc A;
+    assert_int_equal(opt_csc_from_triplets(&A, 3, 5, I, J, V, NULL), SCAF_OK);
+    assert_int_equal(A.nnz, 3);
+    assert_int_equal(A.colptr[1], 1);
+    assert_int_equal(A.rowidx[1], 0); /* (1,0),(0,1),(1,0) all land at (0,1) */
+    assert_true(A.val[1] == 10);
+    opt_csc_free(&A);
+    int bad[1] = {3};
+    scaf_error e;
+    assert_int_equal(opt_csc_from_triplets(&A, 3, 1, bad, J, V, &e), SCAF_ERR_USAGE);
+}
+
+static void solves_and_reuses_analysis(void **state)
+{
+    (void)state;
+    const opt_ordering ords[3] = {OPT_ORDER_AMD, OPT_ORDER_METIS, OPT_ORDER_CHOLMOD_DEFAULT};
+    rng r = {31};
+    for (int o = 0; o < 3; o++) {
+        opt_csc A;
+        grid_laplacian(&A, 40, 0.0, 0);
+        int n = A.n;
+        double *b = malloc(2 * n * sizeof *b), *x = malloc(2 * n * sizeof *x);
+        for (int i = 0; i < 2 * n; i++) b[i] = rng_uniform(&r, -1, 1);
+        scaf_error e;
+        opt_chol *c = opt_chol_create(ords[o], &e);
+        assert_non_null(c);
+        assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_ERR_USAGE);
+        assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+        assert_int_equal(opt_chol_solve(c, 2, b, x, &e), SCAF_OK);
+        assert_true(rel_residual(&A, x, b) < 1e-10);
+        assert_true(rel_residual(&A, x + n, b + n) < 1e-10);
+        /* New values, same pattern: no new analysis. */
+        for (int k = 0; k < A.nnz; k++) A.val[k] *= 1.5;
+        for (int col = 0; col < n; col++) A.val[A.colptr[col + 1] - 1] += 0.25;
+        assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+        assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+        assert_true(rel_residual(&A, x, b) < 1e-10);
+        opt_chol_stats st = opt_chol_get_stats(c);
+        assert_int_equal(st.analyses, 1);
+        assert_int_equal(st.factorizations, 2);
+        assert_true(st.nnz_L >= A.nnz);
+        /* Reuse the permutation explicitly (cholmod_analyze_p). */
+        int *perm = malloc(n * sizeof *perm);
+        memcpy(perm, opt_chol_permutation(c), n * sizeof *perm);
+        assert_int_equal(opt_chol_analyze_given(c, &A, perm, &e), SCAF_OK);
+        assert_memory_equal(perm, opt_chol_permutation(c), n * sizeof *perm);
+        assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+        assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+        assert_true(rel_residual(&A, x, b) < 1e-10);
+        assert_int_equal(opt_chol_get_stats(c).analyses, 2);
+        free(perm);
+        /* A different pattern: analyzed again automatically. */
+        opt_csc B;
+        grid_laplacian(&B, 40, 0.0, 1);
+        assert_int_equal(opt_chol_factor(c, &B, &e), SCAF_OK);
+        assert_int_equal(opt_chol_get_stats(c).analyses, 3);
+        assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+        assert_true(rel_residual(&B, x, b) < 1e-10);
+        opt_csc_free(&B);
+        opt_chol_destroy(c);
+        opt_csc_free(&A);
+        free(b);
+        free(x);
+    }
+}
+
+static void indefinite_is_an_error(void **state)
+{
+    (void)state;
+    opt_csc A;
+    grid_laplacian(&A, 6, -8.0, 0); /* diagonal -4: negative definite */
+    scaf_error e;
+    opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+    assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_ERR_NUMERIC);
+    assert_non_null(strstr(e.message, "positive definite"));
+    double b[36] = {0}, x[36];
+    assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_ERR_USAGE);
+    opt_chol_destroy(c);
+    opt_csc_free(&A);
+    opt_csc empty = {0};
+    c = opt_chol_create(OPT_ORDER_AMD, &e);
+    assert_int_equal(opt_chol_factor(c, &empty, &e), SCAF_ERR_USAGE);
+    opt_chol_destroy(c);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(triplets_sum_duplicates),
+        cmocka_unit_test(solves_and_reuses_analysis),
+        cmocka_unit_test(indefinite_is_an_error),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,279 @@
+/* Tests for opt/energy, opt/small_svd, opt/simplices: values at known
+ * maps, gradients against central differences, invariance, SLIM property. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include <math.h>
+
+#include "opt/energy.h"
+#include "opt/simplices.h"
+#include "opt/small_svd.h"
+#include "rng.h"
+
+static const opt_energy all_energies[] = {OPT_ENERGY_SYMMETRIC_DIRICHLET, OPT_ENERGY_ARAP,
+                                          OPT_ENERGY_CONFORMAL};
+
+static void matmul(int d, const double *A, const double *B, double *C)
+{
+    for (int i = 0; i < d; i++)
+        for (int j = 0; j < d; j++) {
+            double s = 0;
+            for (int k = 0; k < d; k++) s += A[i * d + k] * B[k * d + j];
+            C[i * d + j] = s;
+        }
+}
+
+static void svd_reconstructs(void **state)
+{
+    (void)state;
+    rng r = {7};
+    for (int d = 2; d <= 3; d++)
+        for (int trial = 0; trial < 2000; trial++) {
+            double J[9], U[9], V[9], s[3];
+            for (int k = 0; k < d * d; k++) J[k] = rng_uniform(&r, -2, 2);
+            if (trial % 7 == 0) /* rank-deficient: duplicate a row */
+                for (int a = 0; a < d; a++) J[d + a] = 0.5 * J[a];
+            if (trial == 1)
+                for (int k = 0; k < d * d; k++) J[k] = 0;
+            svd_signed(d, J, U, s, V);
+            assert_true(fabs(det_d(d, U) - 1) < 1e-9);
+            assert_true(fabs(det_d(d, V) - 1) < 1e-9);
+            for (int i = 0; i + 1 < d; i++) assert_true(s[i] >= fabs(s[i + 1]) - 1e-12);
+            double detJ = det_d(d, J);
+            if (fabs(detJ) > 1e-9) assert_true((s[d - 1] > 0) == (detJ > 0));
+            double SVt[9], R[9];
+            for (int i = 0; i < d; i++)
+                for (int j = 0; j < d; j++) SVt[i * d + j] = s[i] * V[j * d + i];
+            matmul(d, U, SVt, R);
+            for (int k = 0; k < d * d; k++) assert_true(fabs(R[k] - J[k]) < 1e-10);
+        }
+}
+
+/* One-simplex set with rest corners P ((d+1) by d). */
+static void one_simplex(opt_simplices *S, int d, const double *P)
+{
+    int idx[4] = {0, 1, 2, 3};
+    assert_int_equal(opt_simplices_from_current(S, d, d + 1, P, 1, idx, 0.0, NULL), SCAF_OK);
+}
+
+static void gradients_match_finite_differences(void **state)
+{
+    (void)state;
+    rng r = {11};
+    for (int d = 2; d <= 3; d++)
+        for (size_t e = 0; e < sizeof all_energies / sizeof all_energies[0]; e++)
+            for (int trial = 0; trial < 50; trial++) {
+                double P[12], Y[12];
+                rng_simplex(&r, d, P);
+                rng_simplex(&r, d, Y);
+                opt_simplices S;
+                one_simplex(&S, d, P);
+                S.weight[0] = rng_uniform(&r, 0.5, 2);
+                opt_term t = {&S, all_energies[e]};
+                double g[12] = {0};
+                opt_term_gradient(&t, Y, g);
+                double scale = 0;
+                for (int k = 0; k < (d + 1) * d; k++) scale = fmax(scale, fabs(g[k]));
+                for (int k = 0; k < (d + 1) * d; k++) {
+                    double h = 1e-6, keep = Y[k];
+                    Y[k] = keep + h;
+                    double ep = opt_term_energy(&t, Y);
+                    Y[k] = keep - h;
+                    double em = opt_term_energy(&t, Y);
+                    Y[k] = keep;
+                    double fd = (ep - em) / (2 * h);
+                    if (fabs(fd - g[k]) > 1e-5 * (1 + scale)) {
+                        print_error("d=%d energy=%s trial=%d k=%d fd=%g g=%g\n", d,
+                                    opt_energy_name(all_energies[e]), trial, k, fd, g[k]);
+                        fail();
+                    }
+                }
+                opt_simplices_free(&S);
+            }
+}
+
+static void isometry_values(void **state)
+{
+    (void)state;
+    rng r = {3};
+    /* 2D: a 3D triangle laid flat, rotated and moved, has SD = 4. */
+    for (int trial = 0; trial < 100; trial++) {
+        double V[9], q[6], R[4], Y[6];
+        for (int k = 0; k < 9; k++) V[k] = rng_uniform(&r, -1, 1);
+        int F[3] = {0, 1, 2};
+        opt_simplices S;
+        assert_int_equal(opt_simplices_from_surface(&S, 3, V, 1, F, NULL), SCAF_OK);
+        opt_flatten_triangle(V, V + 3, V + 6, q);
+        rng_rotation(&r, 2, R);
+        double tx = rng_uniform(&r, -5, 5), ty = rng_uniform(&r, -5, 5);
+        for (int i = 0; i < 3; i++) {
+            Y[2 * i] = R[0] * q[2 * i] + R[1] * q[2 * i + 1] + tx;
+            Y[2 * i + 1] = R[2] * q[2 * i] + R[3] * q[2 * i + 1] + ty;
+        }
+        double J[4];
+        opt_jacobian(&S, 0, Y, J);
+        assert_true(fabs(opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J) - 4) < 1e-9);
+        assert_true(fabs(opt_density(OPT_ENERGY_ARAP, 2, J)) < 1e-9);
+        assert_true(fabs(opt_density(OPT_ENERGY_CONFORMAL, 2, J) - 1) < 1e-9);
+        /* The weight is the 3D area. */
+        double e1[3] = {V[3] - V[0], V[4] - V[1], V[5] - V[2]}, e2[3] = {V[6] - V[0], V[7] - V[1], V[8] - V[2]};
+        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2], cz = e1[0] * e2[1] - e1[1] * e2[0];
+        assert_true(fabs(S.weight[0] - 0.5 * sqrt(cx * cx + cy * cy + cz * cz)) < 1e-12);
+        opt_simplices_free(&S);
+    }
+    /* 3D: rigid motion of a tet: SD = 6, ARAP 0; scaling keeps conformal at 1. */
+    for (int trial = 0; trial < 100; trial++) {
+        double P[12], R[9], Y[12];
+        rng_simplex(&r, 3, P);
+        rng_rotation(&r, 3, R);
+        double sc = trial % 2 ? 1.0 : rng_uniform(&r, 0.2, 5);
+        for (int i = 0; i < 4; i++)
+            for (int a = 0; a < 3; a++)
+                Y[3 * i + a] = sc * (R[3 * a] * P[3 * i] + R[3 * a + 1] * P[3 * i + 1] + R[3 * a + 2] * P[3 * i + 2]) + 1.5;
+        opt_simplices S;
+        one_simplex(&S, 3, P);
+        double J[9];
+        opt_jacobian(&S, 0, Y, J);
+        assert_true(fabs(opt_density(OPT_ENERGY_CONFORMAL, 3, J) - 1) < 1e-9);
+        if (sc == 1.0) {
+            assert_true(fabs(opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 3, J) - 6) < 1e-9);
+            assert_true(fabs(opt_density(OPT_ENERGY_ARAP, 3, J)) < 1e-9);
+        } else {
+            assert_true(opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 3, J) > 6);
+        }
+        opt_simplices_free(&S);
+    }
+}
+
+static void rotation_invariance(void **state)
+{
+    (void)state;
+    rng r = {5};
+    for (int d = 2; d <= 3; d++)
+        for (size_t e = 0; e < 3; e++)
+            for (int trial = 0; trial < 50; trial++) {
+                double P[12], Y[12], Z[12], R[9];
+                rng_simplex(&r, d, P);
+                rng_simplex(&r, d, Y);
+                rng_rotation(&r, d, R);
+                for (int i = 0; i <= d; i++)
+                    for (int a = 0; a < d; a++) {
+                        double s = 0;
+                        for (int k = 0; k < d; k++) s += R[a * d + k] * Y[i * d + k];
+                        Z[i * d + a] = s;
+                    }
+                opt_simplices S;
+                one_simplex(&S, d, P);
+                opt_term t = {&S, all_energies[e]};
+                double ey = opt_term_energy(&t, Y), ez = opt_term_energy(&t, Z);
+                assert_true(fabs(ey - ez) <= 1e-10 * fabs(ey) + 1e-12);
+                /* Inverted maps: barriers are infinite, ARAP finite. */
+                for (int a = 0; a < d; a++) Z[a] = Y[a], Z[d + a] = Y[2 * d + a], Z[2 * d + a] = Y[d + a];
+                for (int i = 3; i <= d; i++)
+                    for (int a = 0; a < d; a++) Z[i * d + a] = Y[i * d + a];
+                double ei = opt_term_energy(&t, Z);
+                if (all_energies[e] == OPT_ENERGY_ARAP)
+                    assert_true(isfinite(ei));
+                else
+                    assert_true(isinf(ei));
+                opt_simplices_free(&S);
+            }
+}
+
+/* SLIM: the gradient of ||W (J - T)||^2 at the current J is dE/dJ. */
+static void slim_proxy_gradient_matches(void **state)
+{
+    (void)state;
+    rng r = {9};
+    for (int d = 2; d <= 3; d++)
+        for (size_t e = 0; e < 3; e++) {
+            if (d == 3 && all_energies[e] == OPT_ENERGY_CONFORMAL) continue; /* approximate there */
+            for (int trial = 0; trial < 500; trial++) {
+                double J[9];
+                do {
+                    for (int k = 0; k < d * d; k++) J[k] = rng_uniform(&r, -2, 2);
+                } while (det_d(d, J) < 0.01);
+                if (trial == 0) /* exactly a rotation: the 0/0 case of the weights */
+                    for (int k = 0; k < d * d; k++) J[k] = (k % (d + 1) == 0);
+                double W[9], T[9], G[9], M[9], D[9], P[9];
+                opt_slim_proxy(all_energies[e], d, J, W, T);
+                opt_density_grad(all_energies[e], d, J, G);
+                double Wt[9];
+                for (int a = 0; a < d; a++)
+                    for (int b = 0; b < d; b++) Wt[a * d + b] = W[b * d + a];
+                matmul(d, Wt, W, M);
+                for (int k = 0; k < d * d; k++) D[k] = J[k] - T[k];
+                matmul(d, M, D, P);
+                double scale = 0;
+                for (int k = 0; k < d * d; k++) scale = fmax(scale, fabs(G[k]));
+                for (int k = 0; k < d * d; k++) {
+                    if (fabs(2 * P[k] - G[k]) > 1e-8 * (1 + scale)) {
+                        print_error("d=%d %s trial %d: proxy grad %g vs %g\n", d,
+                                    opt_energy_name(all_energies[e]), trial, 2 * P[k], G[k]);
+                        fail();
+                    }
+                }
+                /* W symmetric positive definite. */
+                for (int a = 0; a < d; a++)
+                    for (int b = 0; b < d; b++) assert_true(fabs(W[a * d + b] - W[b * d + a]) < 1e-12);
+                assert_true(det_d(d, M) > 0 && M[0] > 0);
+            }
+        }
+}
+
+static void conformal_3d_proxy_is_spd(void **state)
+{
+    (void)state;
+    rng r = {13};
+    for (int trial = 0; trial < 500; trial++) {
+        double J[9], W[9], T[9];
+        do {
+            for (int k = 0; k < 9; k++) J[k] = rng_uniform(&r, -2, 2);
+        } while (det_d(3, J) < 0.01);
+        opt_slim_proxy(OPT_ENERGY_CONFORMAL, 3, J, W, T);
+        for (int k = 0; k < 9; k++) assert_true(isfinite(W[k]) && isfinite(T[k]));
+        assert_true(W[0] > 0 && W[0] * W[4] - W[1] * W[3] > 0 && det_d(3, W) > 0);
+    }
+}
+
+static void builders_refuse_bad_input(void **state)
+{
+    (void)state;
+    double V[9] = {0, 0, 0, 1, 0, 0, 2, 0, 0}; /* collinear */
+    int F[3] = {0, 1, 2}, Fbad[3] = {0, 1, 5};
+    opt_simplices S;
+    scaf_error e;
+    assert_int_equal(opt_simplices_from_surface(&S, 3, V, 1, F, &e), SCAF_ERR_MESH);
+    assert_non_null(strstr(e.message, "triangle 0"));
+    assert_int_equal(opt_simplices_from_surface(&S, 3, V, 1, Fbad, &e), SCAF_ERR_USAGE);
+    /* Current-shape rest with the degeneracy guard: a collinear triangle
+     * gets an equilateral rest shape of the given area. */
+    double X[6] = {0, 0, 1, 0, 2, 0};
+    assert_int_equal(opt_simplices_from_current(&S, 2, 3, X, 1, F, 0.0, &e), SCAF_ERR_MESH);
+    assert_int_equal(opt_simplices_from_current(&S, 2, 3, X, 1, F, 0.25, &e), SCAF_OK);
+    assert_true(fabs(S.vol[0] - 0.25) < 1e-12);
+    double Y[6] = {0, 0, 1, 0, 0.5, sqrt(3.0) / 2};
+    double J[4];
+    opt_jacobian(&S, 0, Y, J);
+    /* An equilateral triangle of area sqrt(3)/4 vs rest area 1/4: a pure scaling. */
+    assert_true(fabs(opt_density(OPT_ENERGY_CONFORMAL, 2, J) - 1) < 1e-9);
+    opt_simplices_free(&S);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(svd_reconstructs),
+        cmocka_unit_test(gradients_match_finite_differences),
+        cmocka_unit_test(isometry_values),
+        cmocka_unit_test(rotation_invariance),
+        cmocka_unit_test(slim_proxy_gradient_matches),
+        cmocka_unit_test(conformal_3d_proxy_is_spd),
+        cmocka_unit_test(builders_refuse_bad_input),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
