@@ -11,7 +11,7 @@
  *      eps = l^2/4 -> equilateral of area eps), lambda = lambda_ratio *
  *      E_M / |S|;
  *   3. one SLIM proxy solve of E_M + lambda E_S with the box fixed
- *      (CHOLMOD, supernodal);
+ *      (opt's proxy blocks and CHOLMOD wrapper, supernodal);
  *   4. line search: largest flip-free step over mesh and scaffold, a
  *      fraction of it, Armijo backtracking on the total energy, and an
  *      exact orient2d confirmation of every triangle before accepting.
@@ -24,8 +24,11 @@
 #define SCAF_SCAFFOLD_SCAF_LOOP_H
 
 #include "base/error.h"
+#include "opt/cholmod_solver.h"
+#include "opt/line_search.h"
+#include "opt/proxy_block.h"
+#include "opt/proxy_system.h"
 #include "opt/simplices.h"
-#include "opt/slim.h"
 #include "scaffold/scaffold_build.h"
 
 typedef struct scaf_loop {
@@ -39,7 +42,13 @@ typedef struct scaf_loop {
     scaf_options_t opt;
     scaffold sc;         /* the scaffold of the last iteration (moved with the step) */
     opt_simplices scaf;  /* its rest frames (current shape), weight = lambda */
-    opt_slim *slim;      /* SLIM driver: cached chart pattern, CHOLMOD */
+    double *scaf_pw;     /* |S| proxy weights of the scaffold (see scaf_loop.c) */
+    opt_proxy_block blk_chart, blk_scaf; /* SLIM proxy patterns: chart (kept
+                                            while the unknown count stays) and scaffold */
+    opt_proxy_system sys;/* their sum */
+    opt_chol *chol;      /* CHOLMOD, analysis reused while the pattern stays */
+    double *rhs, *sol, *dir;
+    size_t cap_n, cap_x;
     int iterations;
 } scaf_loop;
 

@@ -23,6 +23,7 @@ scaffold_options scaffold_default_options(void)
     o.box_square = 0;
     o.box_points_per_side = 5;
     o.min_angle_deg = 20.0;
+    o.box_splittable = 0;
     return o;
 }
 
@@ -151,7 +152,7 @@ scaf_status scaffold_build(const double *uv, int nmesh, const int *edges, int ne
         int e = nedges + i;
         seg[2 * e] = nb + i;
         seg[2 * e + 1] = nb + (i + 1) % nbox;
-        split[e] = 1;
+        split[e] = (unsigned char)(o.box_splittable != 0);
         hole[e] = 0; /* the scaffold is on the left of the CCW box */
     }
 

@@ -5,7 +5,7 @@
  * triangles: the scaffold. Built with the constrained Delaunay mesher
  * (geom/cdt) from the chart boundary edges (kept whole: no Steiner point
  * on a chart edge) and the box edges (which may be split), refined to a
- * minimum angle. Scaffold triangles reference mesh vertex ids for chart
+ * minimum angle (wherever the fixed edges allow). Scaffold triangles reference mesh vertex ids for chart
  * boundary vertices and new ids (>= nmesh) for box and Steiner points, so
  * the scaffold and the mesh share the boundary vertices.
  *
@@ -25,6 +25,9 @@ typedef struct scaffold_options {
     int box_square;          /* 1: square box around the bbox center (0) */
     int box_points_per_side; /* points per side including one corner (5) */
     double min_angle_deg;    /* CDT quality bound (20) */
+    int box_splittable;      /* 1: Steiner points may go on the box edges;
+                                0: the box keeps its points, like Triangle's
+                                -YY in the reference implementation (0) */
 } scaffold_options;
 
 scaffold_options scaffold_default_options(void);
