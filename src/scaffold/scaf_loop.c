@@ -99,6 +99,8 @@ void scaf_loop_free(scaf_loop *L)
     opt_proxy_block_free(&L->blk_scaf);
     opt_proxy_system_free(&L->sys);
     opt_chol_destroy(L->chol);
+    free(L->mesh_perm);
+    free(L->perm);
     free(L->rhs);
     free(L->sol);
     free(L->dir);
@@ -143,7 +145,7 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
         scaf_loop_free(L);
         return err_set(err, SCAF_ERR_MESH, "the mesh has no boundary (closed surface)");
     }
-    L->chol = opt_chol_create(OPT_ORDER_AMD, err);
+    L->chol = opt_chol_create(OPT_ORDER_METIS, err);
     if (!L->chol) {
         scaf_loop_free(L);
         return err && err->code ? err->code : SCAF_ERR_NOMEM;
@@ -244,7 +246,30 @@ static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, cons
     tm->assembly = timer_now() - t0;
 
     opt_chol_stats c0 = opt_chol_get_stats(L->chol);
-    st = opt_chol_factor(L->chol, &L->sys.A, err);
+    st = SCAF_OK;
+    if (L->mesh_perm) {
+        /* Reuse the mesh's ordering; the few scaffold unknowns go last. */
+        if (n > L->cap_perm) {
+            int *q = realloc(L->perm, n * sizeof *q);
+            if (!q) return err_nomem(err, "ordering");
+            L->perm = q;
+            L->cap_perm = n;
+        }
+        size_t nm = 2 * (size_t)L->nv;
+        memcpy(L->perm, L->mesh_perm, nm * sizeof *L->perm);
+        for (size_t k = nm; k < n; k++) L->perm[k] = (int)k;
+        st = opt_chol_analyze_given(L->chol, &L->sys.A, L->perm, err);
+    }
+    if (st == SCAF_OK) st = opt_chol_factor(L->chol, &L->sys.A, err);
+    if (st == SCAF_OK && !L->mesh_perm) {
+        /* First analysis (METIS on mesh + scaffold): keep the mesh part. */
+        const int *p = opt_chol_permutation(L->chol);
+        L->mesh_perm = malloc(2 * (size_t)L->nv * sizeof *L->mesh_perm);
+        if (!p || !L->mesh_perm) return err_nomem(err, "ordering");
+        size_t k = 0;
+        for (size_t i = 0; i < n; i++)
+            if (p[i] < 2 * L->nv) L->mesh_perm[k++] = p[i];
+    }
     if (st == SCAF_OK) st = opt_chol_solve(L->chol, 1, L->rhs, L->sol, err);
     opt_chol_stats c1 = opt_chol_get_stats(L->chol);
     tm->analysis = c1.t_analyze - c0.t_analyze;

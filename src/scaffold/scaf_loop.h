@@ -47,6 +47,10 @@ typedef struct scaf_loop {
                                             while the unknown count stays) and scaffold */
     opt_proxy_system sys;/* their sum */
     opt_chol *chol;      /* CHOLMOD, analysis reused while the pattern stays */
+    int *mesh_perm;      /* 2 nv: fill-reducing order of the mesh unknowns,
+                            from the first (METIS) analysis; reused */
+    int *perm;           /* scratch: full permutation */
+    size_t cap_perm;
     double *rhs, *sol, *dir;
     size_t cap_n, cap_x;
     int iterations;
