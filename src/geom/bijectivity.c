@@ -288,7 +288,7 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
                     if (shared >= 0) {
                         if (adjacent_overlap(UV + 2 * (size_t)shared, UV + 2 * (size_t)op,
                                              UV + 2 * (size_t)oq))
-                            rep->boundary_touchings++;
+                            rep->boundary_foldbacks++;
                         continue;
                     }
                     int m = bij_segments_meet(p1, p2, q1, q2);
@@ -560,7 +560,8 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
     }
 
     rep->bijective = rep->flipped == 0 && rep->degenerate == 0 && rep->boundary_crossings == 0 &&
-                     rep->boundary_touchings == 0 && rep->folded_edges == 0 &&
+                     rep->boundary_touchings == 0 && rep->boundary_foldbacks == 0 &&
+                     rep->folded_edges == 0 &&
                      rep->nonmanifold_edges == 0 && rep->nested_loops == 0;
     work_free(&w);
     return SCAF_OK;

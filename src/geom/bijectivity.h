@@ -9,7 +9,7 @@
  *  - overlaps between charts and within a chart: pairs of UV boundary
  *    segments (edges used by exactly one triangle) that properly cross, and
  *    pairs that touch (at a point, or overlapping along a line) counted
- *    apart; interior edges whose two triangles lie on the same side
+ *    apart, and adjacent segments folding back onto each other apart again; interior edges whose two triangles lie on the same side
  *    (folds) and edges shared by more than two triangles; boundary loops
  *    lying inside another chart (or inside their own chart elsewhere)
  *    without any boundary contact (nesting).
@@ -49,17 +49,22 @@ typedef struct bij_report {
     int boundary_loops;     /* connected components of boundary edges */
     long long boundary_crossings; /* properly crossing segment pairs that
                                      share no UV index */
-    long long boundary_touchings; /* other contacts: touching at a point
-                                     (incl. distinct coincident vertices),
-                                     collinear overlap (also of adjacent
-                                     segments folding back on each other) */
+    long long boundary_touchings; /* other contacts of segment pairs that
+                                     share no UV index: touching at a point
+                                     (incl. distinct coincident vertices,
+                                     zero-length segments), collinear
+                                     overlap */
+    long long boundary_foldbacks; /* pairs of segments sharing one UV index
+                                     that overlap along a line (the boundary
+                                     turns back on itself by 180 degrees) */
     int folded_edges;       /* interior edges with both triangles on one side */
     int nonmanifold_edges;  /* UV edges used by more than two triangles */
     int nested_loops;       /* boundary loops inside another chart's region
                                with no boundary contact */
     int bijective;          /* 1 when all of the above counts of defects are
                                zero (flipped, degenerate, crossings,
-                               touchings, folds, non-manifold, nesting) */
+                               touchings, foldbacks, folds, non-manifold,
+                               nesting) */
 } bij_report;
 
 /* Check the UV map.

@@ -147,6 +147,21 @@ static void collinear_overlapping_edges(void **state)
     assert_false(r.bijective);
 }
 
+static void boundary_folding_back(void **state)
+{
+    (void)state;
+    /* two triangles sharing vertex 0; their boundary edges 0-1 and 0-3 lie
+     * on one ray (a 360-degree slit at 0), without overlapping area */
+    double UV[] = {0, 0, 2, 0, 1, 1, 1, 0, 1, -1};
+    int F[] = {0, 1, 2, 0, 4, 3};
+    bij_report r = run(5, UV, 2, F);
+    assert_int_equal(r.positive, 2);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_int_equal(r.boundary_foldbacks, 1);
+    assert_int_equal(r.boundary_touchings, 1); /* 4-3 ends at (1,0), inside 0-1 */
+    assert_false(r.bijective);
+}
+
 static void folded_and_nonmanifold_edges(void **state)
 {
     (void)state;
@@ -386,7 +401,7 @@ static void pair_counts_match_brute_force(void **state)
 {
     (void)state;
     uint64_t s = 99;
-    long long seen_cross = 0, seen_touch = 0;
+    long long seen_cross = 0, seen_touch = 0, seen_fold = 0;
     for (int round = 0; round < 40; round++) {
         int nf = 10 + (int)(rnd(&s) % 60), nuv = nf * 2;
         double *UV = malloc((size_t)nuv * 2 * sizeof *UV);
@@ -410,7 +425,7 @@ static void pair_counts_match_brute_force(void **state)
             if (uses == 1) E[ne][0] = a, E[ne][1] = b, ne++;
         }
         assert_int_equal(r.boundary_edges, ne);
-        long long cross = 0, touch = 0;
+        long long cross = 0, touch = 0, fold = 0;
         for (int i = 0; i < ne; i++)
             for (int j = i + 1; j < ne; j++) {
                 int a = E[i][0], b = E[i][1], c = E[j][0], d = E[j][1];
@@ -426,7 +441,7 @@ static void pair_counts_match_brute_force(void **state)
                             0 &&
                         !(P[2 * p] == P[2 * sv] && P[2 * p + 1] == P[2 * sv + 1]) &&
                         !(P[2 * q] == P[2 * sv] && P[2 * q + 1] == P[2 * sv + 1]))
-                        touch++;
+                        fold++;
                     continue;
                 }
                 int m = bij_segments_meet(P + 2 * a, P + 2 * b, P + 2 * c, P + 2 * d);
@@ -435,13 +450,15 @@ static void pair_counts_match_brute_force(void **state)
             }
         assert_int_equal(r.boundary_crossings, cross);
         assert_int_equal(r.boundary_touchings, touch);
-        seen_cross += cross, seen_touch += touch;
+        assert_int_equal(r.boundary_foldbacks, fold);
+        seen_cross += cross, seen_touch += touch, seen_fold += fold;
         free(E);
         free(UV);
         free(F);
     }
     assert_true(seen_cross > 100); /* the generator exercises both kinds */
     assert_true(seen_touch > 100);
+    assert_true(seen_fold > 0);
 }
 
 int main(void)
@@ -455,6 +472,7 @@ int main(void)
         cmocka_unit_test(touching_at_shared_vertex_index_is_fine),
         cmocka_unit_test(touching_at_coincident_distinct_vertices),
         cmocka_unit_test(collinear_overlapping_edges),
+        cmocka_unit_test(boundary_folding_back),
         cmocka_unit_test(folded_and_nonmanifold_edges),
         cmocka_unit_test(chart_nested_in_a_hole),
         cmocka_unit_test(chart_inside_a_triangle),
