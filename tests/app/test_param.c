@@ -13,6 +13,7 @@
 #include <cmocka.h>
 
 #include "app/param.h"
+#include "geom/bijectivity.h"
 #include "geom/predicates.h"
 #include "mesh/samples.h"
 #include "scaf/scaf.h"
@@ -40,10 +41,15 @@ static int seg_cross(const double *a, const double *b, const double *c, const do
     return 0;
 }
 
-/* Number of violations: non-positive triangles + crossing boundary edge pairs. */
+/* Number of violations: non-positive triangles + crossing boundary edge
+ * pairs (own quadratic check), plus the kernel's checker's verdict. */
 static int violations(const scaf_loop *L)
 {
     int bad = 0;
+    bij_report rep;
+    scaf_error err;
+    if (bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, &err) != SCAF_OK) return 1000000;
+    if (!rep.bijective || rep.flipped || rep.degenerate || rep.boundary_crossings) bad++;
     for (int f = 0; f < L->nf; f++) {
         const int *t = L->F + 3 * f;
         if (!(orient2d(L->uv + 2 * t[0], L->uv + 2 * t[1], L->uv + 2 * t[2]) > 0)) bad++;
