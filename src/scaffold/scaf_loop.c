@@ -206,6 +206,45 @@ static scaf_status grow(double **p, size_t n, scaf_error *err)
     return SCAF_OK;
 }
 
+/* Factor A + mu diag(A) with rhs + mu diag(A) x for growing mu, after a
+ * plain factorization failed (see the caller). */
+static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, const double *X, size_t n,
+                                      scaf_error *err)
+{
+    opt_csc *A = &L->sys.A;
+    double *d0 = malloc(n * sizeof *d0), *r0 = malloc(n * sizeof *r0);
+    int *pos = malloc(n * sizeof *pos);
+    if (!d0 || !r0 || !pos) {
+        free(d0);
+        free(r0);
+        free(pos);
+        return err_nomem(err, "regularized system");
+    }
+    for (size_t c = 0; c < n; c++) {
+        int e = A->colptr[c + 1] - 1;
+        pos[c] = (e >= A->colptr[c] && A->rowidx[e] == (int)c) ? e : -1;
+        d0[c] = pos[c] >= 0 ? A->val[e] : 0.0;
+    }
+    memcpy(r0, L->rhs, n * sizeof *r0);
+    scaf_status st = SCAF_ERR_NUMERIC;
+    for (double mu = 1e-10; st == SCAF_ERR_NUMERIC && mu < 10.0; mu *= 1000.0) {
+        for (size_t c = 0; c < n; c++)
+            if (pos[c] >= 0) A->val[pos[c]] = d0[c] * (1.0 + mu);
+        for (int v = 0; v < nall; v++)
+            if (dof[v] >= 0)
+                for (int a = 0; a < 2; a++) {
+                    size_t c = 2 * (size_t)dof[v] + a;
+                    L->rhs[c] = r0[c] + mu * d0[c] * X[2 * (size_t)v + a];
+                }
+        err_clear(err);
+        st = opt_chol_factor(L->chol, A, err);
+    }
+    free(d0);
+    free(r0);
+    free(pos);
+    return st;
+}
+
 /* terms[0] chart, terms[1] scaffold (true energy); the scaffold's proxy
  * uses the weights L->scaf_pw. X (nall by 2) updated by the line search. */
 static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, const int *dof, int nfree,
@@ -261,6 +300,12 @@ static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, cons
         st = opt_chol_analyze_given(L->chol, &L->sys.A, L->perm, err);
     }
     if (st == SCAF_OK) st = opt_chol_factor(L->chol, &L->sys.A, err);
+    /* A sum of PSD element matrices can still fail Cholesky in floating
+     * point when the SLIM weights span many orders of magnitude (a very
+     * distorted start: tiny triangles have huge weights). Then add a
+     * proximal term mu * diag(A) (rhs += mu * diag(A) x): still a descent
+     * direction, same pattern, so only the factorization is redone. */
+    if (st == SCAF_ERR_NUMERIC) st = regularized_factor(L, nall, dof, X, n, err);
     if (st == SCAF_OK && !L->mesh_perm) {
         /* First analysis (METIS on mesh + scaffold): keep the mesh part. */
         const int *p = opt_chol_permutation(L->chol);
