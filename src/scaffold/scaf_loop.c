@@ -145,7 +145,7 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
         scaf_loop_free(L);
         return err_set(err, SCAF_ERR_MESH, "the mesh has no boundary (closed surface)");
     }
-    L->chol = opt_chol_create(OPT_ORDER_METIS, err);
+    L->chol = opt_chol_create(OPT_ORDER_AMD, err);
     if (!L->chol) {
         scaf_loop_free(L);
         return err && err->code ? err->code : SCAF_ERR_NOMEM;
@@ -204,6 +204,57 @@ static scaf_status grow(double **p, size_t n, scaf_error *err)
     if (!q) return err_nomem(err, "SLIM buffers");
     *p = q;
     return SCAF_OK;
+}
+
+/* Fill-reducing ordering, then factorization. The mesh part of the
+ * pattern never changes, so its nested-dissection (METIS) order is computed
+ * once, at the first iteration, and reused: the scaffold's unknowns go
+ * last, which costs little while they are few. When the scaffold is large
+ * (long, folded chart boundaries: hilbert.obj has 40% scaffold unknowns)
+ * a trailing block that big would be nearly dense, so AMD orders the whole
+ * system afresh instead. */
+static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, scaf_error *err)
+{
+    scaf_status st;
+    size_t nm = 2 * (size_t)L->nv, nsc = n - nm;
+    const int *given = NULL;
+    if (!L->mesh_perm) {
+        double t0 = timer_now();
+        opt_chol *m = opt_chol_create(OPT_ORDER_METIS, err);
+        if (!m) return err && err->code ? err->code : SCAF_ERR_NOMEM;
+        st = opt_chol_analyze_given(m, &L->sys.A, NULL, err);
+        const int *p = opt_chol_permutation(m);
+        L->mesh_perm = malloc(nm * sizeof *L->mesh_perm);
+        int *q = realloc(L->perm, n * sizeof *q);
+        if (q) {
+            L->perm = q;
+            L->cap_perm = n;
+        }
+        if (st == SCAF_OK && (!p || !L->mesh_perm || !q)) st = err_nomem(err, "ordering");
+        if (st == SCAF_OK) {
+            size_t k = 0;
+            for (size_t i = 0; i < n; i++)
+                if ((size_t)p[i] < nm) L->mesh_perm[k++] = p[i];
+            memcpy(L->perm, p, n * sizeof *L->perm);
+            given = L->perm;
+        }
+        opt_chol_destroy(m);
+        *t_metis = timer_now() - t0;
+        if (st != SCAF_OK) return st;
+    } else if (nsc <= 256 || nsc * 50 <= n) {
+        if (n > L->cap_perm) {
+            int *q = realloc(L->perm, n * sizeof *q);
+            if (!q) return err_nomem(err, "ordering");
+            L->perm = q;
+            L->cap_perm = n;
+        }
+        memcpy(L->perm, L->mesh_perm, nm * sizeof *L->perm);
+        for (size_t k = nm; k < n; k++) L->perm[k] = (int)k;
+        given = L->perm;
+    }
+    st = opt_chol_analyze_given(L->chol, &L->sys.A, given, err);
+    if (st != SCAF_OK) return st;
+    return opt_chol_factor(L->chol, &L->sys.A, err);
 }
 
 /* Factor A + mu diag(A) with rhs + mu diag(A) x for growing mu, after a
@@ -285,39 +336,12 @@ static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, cons
     tm->assembly = timer_now() - t0;
 
     opt_chol_stats c0 = opt_chol_get_stats(L->chol);
-    st = SCAF_OK;
-    if (L->mesh_perm) {
-        /* Reuse the mesh's ordering; the few scaffold unknowns go last. */
-        if (n > L->cap_perm) {
-            int *q = realloc(L->perm, n * sizeof *q);
-            if (!q) return err_nomem(err, "ordering");
-            L->perm = q;
-            L->cap_perm = n;
-        }
-        size_t nm = 2 * (size_t)L->nv;
-        memcpy(L->perm, L->mesh_perm, nm * sizeof *L->perm);
-        for (size_t k = nm; k < n; k++) L->perm[k] = (int)k;
-        st = opt_chol_analyze_given(L->chol, &L->sys.A, L->perm, err);
-    }
-    if (st == SCAF_OK) st = opt_chol_factor(L->chol, &L->sys.A, err);
-    /* A sum of PSD element matrices can still fail Cholesky in floating
-     * point when the SLIM weights span many orders of magnitude (a very
-     * distorted start: tiny triangles have huge weights). Then add a
-     * proximal term mu * diag(A) (rhs += mu * diag(A) x): still a descent
-     * direction, same pattern, so only the factorization is redone. */
+    double t_metis = 0.0;
+    st = order_and_factor(L, n, &t_metis, err);
     if (st == SCAF_ERR_NUMERIC) st = regularized_factor(L, nall, dof, X, n, err);
-    if (st == SCAF_OK && !L->mesh_perm) {
-        /* First analysis (METIS on mesh + scaffold): keep the mesh part. */
-        const int *p = opt_chol_permutation(L->chol);
-        L->mesh_perm = malloc(2 * (size_t)L->nv * sizeof *L->mesh_perm);
-        if (!p || !L->mesh_perm) return err_nomem(err, "ordering");
-        size_t k = 0;
-        for (size_t i = 0; i < n; i++)
-            if (p[i] < 2 * L->nv) L->mesh_perm[k++] = p[i];
-    }
     if (st == SCAF_OK) st = opt_chol_solve(L->chol, 1, L->rhs, L->sol, err);
     opt_chol_stats c1 = opt_chol_get_stats(L->chol);
-    tm->analysis = c1.t_analyze - c0.t_analyze;
+    tm->analysis = c1.t_analyze - c0.t_analyze + t_metis;
     tm->factor = c1.t_factor - c0.t_factor;
     tm->solve = c1.t_solve - c0.t_solve;
     if (st != SCAF_OK) return st;
