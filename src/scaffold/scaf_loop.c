@@ -354,6 +354,7 @@ static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, cons
     opt_ls_options_default(&lo);
     lo.safety = L->opt.step_fraction;
     st = opt_line_search(terms, 2, 2, nall, X, L->dir, &lo, ls, err);
+
     tm->line_search = timer_now() - t4;
     return st;
 }
