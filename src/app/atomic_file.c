@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 scaf_status atomic_open(atomic_file *a, const char *path, scaf_error *err)
@@ -19,6 +20,7 @@ scaf_status atomic_open(atomic_file *a, const char *path, scaf_error *err)
         a->tmp[0] = '\0';
         return err_set(err, SCAF_ERR_IO, "%s: cannot create the file: %s", path, strerror(e));
     }
+    (void)fchmod(fd, 0644); /* mkstemp makes it 0600; reports are not secret */
     a->f = fdopen(fd, "w");
     if (!a->f) {
         int e = errno;
