@@ -246,6 +246,45 @@ static void chart_inside_a_triangle(void **state)
     assert_true(r.bijective);
 }
 
+static void overlap_at_a_pinch_point(void **state)
+{
+    (void)state;
+    /* a hexagon fan (vertices 0..5 around center 6) and a triangle over it
+     * made of hexagon corners 0, 2, 4: its edges are chords, so it shares
+     * no edge with the fan, its vertices are the fan's, no boundary
+     * segments meet except at shared indices; only the corners at the
+     * pinch points 0, 2, 4 show the overlap */
+    double UV[14];
+    for (int i = 0; i < 6; i++) {
+        UV[2 * i] = 4.0 * cos(i * 3.14159265358979 / 3);
+        UV[2 * i + 1] = 4.0 * sin(i * 3.14159265358979 / 3);
+    }
+    UV[12] = UV[13] = 0;
+    int F[21];
+    for (int i = 0; i < 6; i++) F[3 * i] = 6, F[3 * i + 1] = i, F[3 * i + 2] = (i + 1) % 6;
+    F[18] = 0, F[19] = 2, F[20] = 4;
+    bij_report r = run(7, UV, 7, F);
+    assert_int_equal(r.positive, 7);
+    assert_int_equal(r.folded_edges + r.nonmanifold_edges, 0);
+    assert_int_equal(r.boundary_crossings + r.boundary_touchings + r.boundary_foldbacks, 0);
+    assert_int_equal(r.nested_loops, 0);
+    assert_int_equal(r.pinch_overlaps, 3);
+    assert_false(r.bijective);
+    /* three triangles around point 0 and a fourth one joined only there:
+     * inside the fan's third triangle, then in the empty quadrant */
+    double V[] = {0, 0, 4, 0, 0, 4, -4, 0, 0, -4, -1, -1, -3, -1};
+    int G[] = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 6, 5};
+    r = run(7, V, 4, G);
+    assert_int_equal(r.positive, 4);
+    assert_int_equal(r.pinch_overlaps, 1);
+    assert_false(r.bijective);
+    V[10] = 3, V[11] = -1, V[12] = 1, V[13] = -3;
+    r = run(7, V, 4, G);
+    assert_int_equal(r.positive, 4);
+    assert_int_equal(r.pinch_overlaps, 0);
+    assert_true(r.bijective);
+}
+
 static void mirrored_chart_among_good_ones(void **state)
 {
     (void)state;
@@ -476,6 +515,7 @@ int main(void)
         cmocka_unit_test(folded_and_nonmanifold_edges),
         cmocka_unit_test(chart_nested_in_a_hole),
         cmocka_unit_test(chart_inside_a_triangle),
+        cmocka_unit_test(overlap_at_a_pinch_point),
         cmocka_unit_test(mirrored_chart_among_good_ones),
         cmocka_unit_test(bad_input_is_an_error),
         cmocka_unit_test(large_grid_layouts),
