@@ -7,7 +7,7 @@
  * found through a uniform grid (each pair tested once, in the first grid
  * cell both bounding boxes cover); test the vertices of contact-free loops
  * against all triangles through a grid of those vertices; sort the
- * triangle corners at pinch points by angle and check neighbours. Allocation
+ * triangle corners at boundary points by angle and check neighbours. Allocation
  * failures return SCAF_ERR_NOMEM with everything freed.
  */
 #include "geom/bijectivity.h"
@@ -395,7 +395,7 @@ static scaf_status test_nesting(const double *UV, int nf, const int *F, work *w,
     return SCAF_OK;
 }
 
-/* ---- pinch vertices: several boundary passes through one UV index ---- */
+/* ---- corners at boundary points ---- */
 
 /* Angular order of directions p - v, exact: upper half-plane first (y > 0,
  * or y == 0 and x > 0), then counter-clockwise. */
@@ -423,20 +423,23 @@ static int same_direction(const double *v, const double *p, const double *q)
     return orient2d(v, p, q) == 0 && half(v, p) == half(v, q);
 }
 
-/* At a vertex where the boundary passes more than once, the corners of the
- * incident ccw triangles must not overlap: sort them by start direction and
+/* At every boundary point the corners of the incident ccw triangles must
+ * not overlap. That matters where the boundary passes more than once (fans
+ * joined only at the point) or where a triangle reaches by index into
+ * another chart's fan; the vertex-in-triangle test skips incident
+ * triangles, this covers them. Sort the corners by start direction and
  * check each against the next, cyclically (each corner is below 180
  * degrees, so an overlap always shows between neighbours). */
-static scaf_status test_pinches(const double *UV, int nuv, int nf, const int *F, work *w,
+static scaf_status test_corners(const double *UV, int nuv, int nf, const int *F, work *w,
                                 const int *bdeg, bij_report *rep, scaf_error *err)
 {
     int *start = calloc((size_t)nuv + 1, sizeof *start);
-    if (!start) return err_nomem(err, "pinch vertices");
+    if (!start) return err_nomem(err, "corners at boundary points");
     int any = 0;
     for (int t = 0; t < nf; t++) {
         if (w->ori[t] <= 0) continue;
         for (int k = 0; k < 3; k++)
-            if (bdeg[F[3 * (size_t)t + k]] > 2) start[F[3 * (size_t)t + k] + 1]++, any = 1;
+            if (bdeg[F[3 * (size_t)t + k]] > 0) start[F[3 * (size_t)t + k] + 1]++, any = 1;
     }
     if (!any) {
         free(start);
@@ -447,14 +450,14 @@ static scaf_status test_pinches(const double *UV, int nuv, int nf, const int *F,
     int *pos = malloc(((size_t)nuv + 1) * sizeof *pos);
     if (!sec || !pos) {
         free(start), free(sec), free(pos);
-        return err_nomem(err, "pinch vertices");
+        return err_nomem(err, "corners at boundary points");
     }
     memcpy(pos, start, ((size_t)nuv + 1) * sizeof *pos);
     for (int t = 0; t < nf; t++) {
         if (w->ori[t] <= 0) continue;
         const int *c = F + 3 * (size_t)t;
         for (int k = 0; k < 3; k++)
-            if (bdeg[c[k]] > 2) {
+            if (bdeg[c[k]] > 0) {
                 sector s = {UV + 2 * (size_t)c[k], UV + 2 * (size_t)c[(k + 1) % 3],
                             UV + 2 * (size_t)c[(k + 2) % 3]};
                 sec[pos[c[k]]++] = s;
@@ -469,7 +472,7 @@ static scaf_status test_pinches(const double *UV, int nuv, int nf, const int *F,
             const sector *s = &S[i], *t = &S[(i + 1) % n];
             if (same_direction(s->v, s->a, t->a) ||
                 (orient2d(s->v, s->a, t->a) > 0 && orient2d(s->v, t->a, s->b) > 0)) {
-                rep->pinch_overlaps++;
+                rep->corner_overlaps++;
                 break;
             }
         }
@@ -661,7 +664,7 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
             if (w.bvert[v] && !contact[w.loop_of[v]]) qv[nq] = v, ql[nq++] = w.loop_of[v];
         st = test_nesting(UV, nf, F, &w, nq, qv, ql, rep, nloops, err);
     }
-    if (st == SCAF_OK) st = test_pinches(UV, nuv, nf, F, &w, bdeg, rep, err);
+    if (st == SCAF_OK) st = test_corners(UV, nuv, nf, F, &w, bdeg, rep, err);
     free(contact);
     free(qv);
     free(ql);
@@ -672,7 +675,7 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
 
     rep->bijective = rep->flipped == 0 && rep->degenerate == 0 && rep->boundary_crossings == 0 &&
                      rep->boundary_touchings == 0 && rep->boundary_foldbacks == 0 &&
-                     rep->folded_edges == 0 && rep->pinch_overlaps == 0 &&
+                     rep->folded_edges == 0 && rep->corner_overlaps == 0 &&
                      rep->nonmanifold_edges == 0 && rep->nested_loops == 0;
     work_free(&w);
     return SCAF_OK;

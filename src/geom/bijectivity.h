@@ -13,13 +13,14 @@
  *    (folds) and edges shared by more than two triangles; boundary loops
  *    lying inside another chart (or inside their own chart elsewhere)
  *    without any boundary contact (nesting); overlapping triangle corners
- *    at pinch points (a UV index where the boundary passes more than once).
+ *    at boundary points (pinch points, where the boundary passes through a
+ *    UV index more than once, and triangles sharing only vertices).
  * Soundness: with no flipped or degenerate triangles, no fold, no
  * non-manifold edge, and boundary loops that neither cross nor touch, the
  * number of triangles covering a point is the sum of the winding numbers
  * of the boundary loops around it; testing the boundary vertices against
- * the triangles not incident to them, plus the corners at pinch points,
- * then shows whether any point is covered twice.
+ * the triangles not incident to them, plus the corners at boundary
+ * points, then shows whether any point is covered twice.
  * So `bijective` is exact: every triangle positively oriented and every
  * point of the plane covered by at most one closed triangle, except that
  * triangles may share the vertices and edges they share by index.
@@ -64,13 +65,15 @@ typedef struct bij_report {
     int nested_loops;       /* boundary loops without any boundary contact
                                that have a vertex in the interior of another
                                chart's region (or of their own chart) */
-    int pinch_overlaps;     /* UV points where the boundary passes more than
-                               once (fans joined only at the point) and the
-                               triangle corners there overlap */
+    int corner_overlaps;     /* boundary UV points where the corners of the
+                               triangles using the point overlap: fans
+                               joined only at the point (the boundary passes
+                               more than once), or a triangle reaching into
+                               another chart's fan by a shared index */
     int bijective;          /* 1 when all of the above counts of defects are
                                zero (flipped, degenerate, crossings,
                                touchings, foldbacks, folds, non-manifold,
-                               nesting, pinch overlaps) */
+                               nesting, corner overlaps) */
 } bij_report;
 
 /* Check the UV map.
