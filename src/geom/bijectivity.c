@@ -21,13 +21,18 @@
 
 static int sgn(double x) { return (x > 0) - (x < 0); }
 
+/* Inputs are finite (checked), so plain comparisons do; libm's fmin/fmax
+ * are calls because of their NaN rules. */
+static inline double dmin(double a, double b) { return a < b ? a : b; }
+static inline double dmax(double a, double b) { return a > b ? a : b; }
+
 /* ---- segment contact ---- */
 
 /* c is collinear with a, b: is it within the closed segment? */
 static int on_segment(const double *a, const double *b, const double *c)
 {
-    return fmin(a[0], b[0]) <= c[0] && c[0] <= fmax(a[0], b[0]) && fmin(a[1], b[1]) <= c[1] &&
-           c[1] <= fmax(a[1], b[1]);
+    return dmin(a[0], b[0]) <= c[0] && c[0] <= dmax(a[0], b[0]) && dmin(a[1], b[1]) <= c[1] &&
+           c[1] <= dmax(a[1], b[1]);
 }
 
 int bij_segments_meet(const double p1[2], const double p2[2], const double q1[2],
@@ -222,10 +227,10 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
     double minx = INFINITY, miny = INFINITY, maxx = -INFINITY, maxy = -INFINITY;
     for (int i = 0; i < nseg; i++) {
         const double *p = UV + 2 * (size_t)segs[i].a, *q = UV + 2 * (size_t)segs[i].b;
-        minx = fmin(minx, fmin(p[0], q[0]));
-        maxx = fmax(maxx, fmax(p[0], q[0]));
-        miny = fmin(miny, fmin(p[1], q[1]));
-        maxy = fmax(maxy, fmax(p[1], q[1]));
+        minx = dmin(minx, dmin(p[0], q[0]));
+        maxx = dmax(maxx, dmax(p[0], q[0]));
+        miny = dmin(miny, dmin(p[1], q[1]));
+        maxy = dmax(maxy, dmax(p[1], q[1]));
     }
     grid g;
     long cells = nseg;
@@ -237,10 +242,10 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
         for (int i = 0; i < nseg; i++) {
             seg *s = &segs[i];
             const double *p = UV + 2 * (size_t)s->a, *q = UV + 2 * (size_t)s->b;
-            s->lox = cell_x(&g, fmin(p[0], q[0]));
-            s->hix = cell_x(&g, fmax(p[0], q[0]));
-            s->loy = cell_y(&g, fmin(p[1], q[1]));
-            s->hiy = cell_y(&g, fmax(p[1], q[1]));
+            s->lox = cell_x(&g, dmin(p[0], q[0]));
+            s->hix = cell_x(&g, dmax(p[0], q[0]));
+            s->loy = cell_y(&g, dmin(p[1], q[1]));
+            s->hiy = cell_y(&g, dmax(p[1], q[1]));
             total += (long)(s->hix - s->lox + 1) * (s->hiy - s->loy + 1);
         }
         if (total <= 16L * nseg + 4096 || cells <= 16) break;
@@ -277,10 +282,10 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
                     int fy = s->loy > t->loy ? s->loy : t->loy;
                     if (fx != cx || fy != cy) continue;
                     const double *q1 = UV + 2 * (size_t)t->a, *q2 = UV + 2 * (size_t)t->b;
-                    if (fmax(p1[0], p2[0]) < fmin(q1[0], q2[0]) ||
-                        fmax(q1[0], q2[0]) < fmin(p1[0], p2[0]) ||
-                        fmax(p1[1], p2[1]) < fmin(q1[1], q2[1]) ||
-                        fmax(q1[1], q2[1]) < fmin(p1[1], p2[1]))
+                    if (dmax(p1[0], p2[0]) < dmin(q1[0], q2[0]) ||
+                        dmax(q1[0], q2[0]) < dmin(p1[0], p2[0]) ||
+                        dmax(p1[1], p2[1]) < dmin(q1[1], q2[1]) ||
+                        dmax(q1[1], q2[1]) < dmin(p1[1], p2[1]))
                         continue;
                     int shared = -1, op = -1, oq = -1;
                     if (s->a == t->a) shared = s->a, op = s->b, oq = t->b;
@@ -345,8 +350,8 @@ static scaf_status test_nesting(const double *UV, int nf, const int *F, work *w,
     double minx = INFINITY, miny = INFINITY, maxx = -INFINITY, maxy = -INFINITY;
     for (int q = 0; q < nq; q++) {
         const double *p = UV + 2 * (size_t)qv[q];
-        minx = fmin(minx, p[0]), maxx = fmax(maxx, p[0]);
-        miny = fmin(miny, p[1]), maxy = fmax(maxy, p[1]);
+        minx = dmin(minx, p[0]), maxx = dmax(maxx, p[0]);
+        miny = dmin(miny, p[1]), maxy = dmax(maxy, p[1]);
     }
     grid g;
     grid_init(&g, minx, miny, maxx, maxy, nq);
@@ -373,8 +378,8 @@ static scaf_status test_nesting(const double *UV, int nf, const int *F, work *w,
         if (w->ori[t] == 0) continue;
         const int *c = F + 3 * (size_t)t;
         const double *a = UV + 2 * (size_t)c[0], *b = UV + 2 * (size_t)c[1], *d = UV + 2 * (size_t)c[2];
-        double tminx = fmin(a[0], fmin(b[0], d[0])), tmaxx = fmax(a[0], fmax(b[0], d[0]));
-        double tminy = fmin(a[1], fmin(b[1], d[1])), tmaxy = fmax(a[1], fmax(b[1], d[1]));
+        double tminx = dmin(a[0], dmin(b[0], d[0])), tmaxx = dmax(a[0], dmax(b[0], d[0]));
+        double tminy = dmin(a[1], dmin(b[1], d[1])), tmaxy = dmax(a[1], dmax(b[1], d[1]));
         if (tmaxx < minx || tminx > maxx || tmaxy < miny || tminy > maxy) continue;
         int x0 = cell_x(&g, tminx), x1 = cell_x(&g, tmaxx);
         int y0 = cell_y(&g, tminy), y1 = cell_y(&g, tmaxy);
