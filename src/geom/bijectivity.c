@@ -543,7 +543,6 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
         if (a != b) w.start[(a < b ? a : b) + 1]++;
     }
     for (int i = 0; i < nuv; i++) w.start[i + 1] += w.start[i];
-    int nhe = w.start[nuv];
     {
         int *pos = malloc(((size_t)nuv + 1) * sizeof *pos);
         if (!pos) return nomem(&w, err, "edge table");
@@ -590,7 +589,6 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
             i = j;
         }
     }
-    (void)nhe;
     rep->boundary_edges = nseg;
     free(w.hedges);
     w.hedges = NULL;
