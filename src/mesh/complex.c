@@ -181,7 +181,9 @@ static scaf_status vertex_stats(tri_complex *c, const int *F, scaf_error *err)
     return SCAF_OK;
 }
 
-/* ---- orientability: propagate face flips across 2-face edges ---- */
+/* ---- orientability: propagate face flips across 2-face edges ----
+ * A group without misoriented edges is consistently oriented as given, so
+ * orientable: only groups with misoriented edges need the search. */
 static scaf_status orientability(tri_complex *c, const int *F, scaf_error *err)
 {
     int nf = c->nf;
@@ -197,8 +199,8 @@ static scaf_status orientability(tri_complex *c, const int *F, scaf_error *err)
     for (int g = 0; g < c->ngroups; g++) c->group_orientable[g] = 1;
     for (int i0 = 0; i0 < nf; i0++) {
         int seed = c->group_faces[i0];
-        if (flip[seed] >= 0) continue;
         int g = c->face_group[seed];
+        if (flip[seed] >= 0 || !c->group_misoriented[g]) continue;
         int head = 0, tail = 0;
         flip[seed] = 0;
         queue[tail++] = seed;

@@ -57,8 +57,19 @@ static int count_duplicates(const mesh *m, scaf_error *err)
     int dup = 0, s = 0;
     for (int v = 0; v < nv; v++) {
         int t = start[v];
-        if (t - s > 1) {
+        if (t - s > 32) {
             qsort(keys + s, (size_t)(t - s), sizeof *keys, cmp_u64);
+            for (int i = s + 1; i < t; i++) dup += keys[i] == keys[i - 1];
+        } else if (t - s > 1) {
+            for (int i = s + 1; i < t; i++) {
+                uint64_t x = keys[i];
+                int j = i - 1;
+                while (j >= s && keys[j] > x) {
+                    keys[j + 1] = keys[j];
+                    j--;
+                }
+                keys[j + 1] = x;
+            }
             for (int i = s + 1; i < t; i++) dup += keys[i] == keys[i - 1];
         }
         s = t;
