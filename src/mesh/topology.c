@@ -7,6 +7,7 @@
  */
 #include "mesh/topology.h"
 
+#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -104,6 +105,8 @@ scaf_status mesh_topology_compute(const mesh *m, mesh_topology *t, scaf_error *e
 {
     memset(t, 0, sizeof *t);
     int nv = m->nv, nf = m->nf;
+    if (nf > INT_MAX / 3)
+        return err_set(err, SCAF_ERR_MESH, "%d faces: more than this build can index (%d)", nf, INT_MAX / 3);
     for (int i = 0; i < 3 * nf; i++)
         if (m->F[i] < 0 || m->F[i] >= nv)
             return err_set(err, SCAF_ERR_MESH, "face %d references vertex %d, but the mesh has %d vertices",

@@ -8,6 +8,7 @@
  */
 #include "mesh/uv_charts.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,6 +85,8 @@ scaf_status mesh_charts_compute(const mesh *m, mesh_charts *c, scaf_error *err)
 {
     memset(c, 0, sizeof *c);
     int nf = m->nf;
+    if (nf > INT_MAX / 3)
+        return err_set(err, SCAF_ERR_MESH, "%d faces: more than this build can index (%d)", nf, INT_MAX / 3);
     for (int i = 0; i < 3 * nf; i++)
         if (m->F[i] < 0 || m->F[i] >= m->nv)
             return err_set(err, SCAF_ERR_MESH, "face %d references vertex %d, but the mesh has %d vertices",
@@ -179,6 +182,18 @@ mesh_chart_kind mesh_chart_classify(const mesh_charts *c, int chart)
     for (int i = c->chart_loop_start[chart]; i < c->chart_loop_start[chart + 1]; i++)
         if (!cx->loop_ordered[c->chart_loops[i]]) return MESH_CHART_NON_MANIFOLD;
     return cx->group_loops[chart] == 1 ? MESH_CHART_DISK : MESH_CHART_DISK_WITH_HOLES;
+}
+
+int mesh_chart_loop(const mesh_charts *c, int chart, int i, const int **v, const int **vt, int *id)
+{
+    if (chart < 0 || chart >= c->ncharts || i < 0 || i >= c->chart_loop_start[chart + 1] - c->chart_loop_start[chart])
+        return 0;
+    int l = c->chart_loops[c->chart_loop_start[chart] + i];
+    int s = c->cx.loop_start[l];
+    if (v) *v = c->loop_v + s;
+    if (vt) *vt = c->loop_vt + s;
+    if (id) *id = l;
+    return c->cx.loop_start[l + 1] - s;
 }
 
 const char *mesh_chart_kind_name(mesh_chart_kind kind)

@@ -381,6 +381,41 @@ static void uv_pinch_fails_check(void **state)
     mesh_free(&m);
 }
 
+static void faces_without_uv(void **state)
+{
+    (void)state;
+    /* face 1 has no vt (-1, as the OBJ reader marks it): it is a chart of
+     * its own, a seam borders it, and its chart fails the check */
+    const int F[] = {0, 1, 2, 0, 2, 3};
+    const double UV[] = {0, 0, 1, 0, 1, 1};
+    const int FT[] = {0, 1, 2, -1, -1, -1};
+    mesh m;
+    make(&m, 4, SQUARE_V, 2, F, 3, UV, FT);
+    mesh_topology t;
+    topo(&m, &t);
+    assert_int_equal(t.uv_charts, 2);
+    assert_int_equal(t.seam_edges, 1);
+    mesh_topology_free(&t);
+    mesh_charts c;
+    scaf_error e;
+    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    assert_int_equal(c.ncharts, 2);
+    assert_int_equal(mesh_chart_check(&c, 0, 0, &e), SCAF_OK);
+    assert_int_equal(mesh_chart_check(&c, 1, 1, &e), SCAF_ERR_MESH);
+    assert_non_null(strstr(e.message, "face 1"));
+    /* the loop accessor of the good chart */
+    const int *v, *vt;
+    int id;
+    assert_int_equal(mesh_chart_loop(&c, 0, 0, &v, &vt, &id), 3);
+    assert_int_equal(mesh_chart_loop(&c, 0, 1, &v, &vt, &id), 0);
+    assert_int_equal(v[0], 0);
+    assert_int_equal(vt[0], 0);
+    assert_int_equal(v[1], 1);
+    assert_int_equal(v[2], 2);
+    mesh_charts_free(&c);
+    mesh_free(&m);
+}
+
 static void degenerate_duplicate_unreferenced(void **state)
 {
     (void)state;
@@ -475,6 +510,7 @@ int main(void)
         cmocka_unit_test(hole),
         cmocka_unit_test(seams),
         cmocka_unit_test(uv_pinch_fails_check),
+        cmocka_unit_test(faces_without_uv),
         cmocka_unit_test(degenerate_duplicate_unreferenced),
         cmocka_unit_test(index_out_of_range),
         cmocka_unit_test(empty_mesh),
