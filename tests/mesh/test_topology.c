@@ -7,6 +7,7 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "mesh/degenerate.h"
 #include "mesh/edges.h"
 #include "mesh/topology.h"
 #include "mesh/uv_charts.h"
@@ -439,6 +440,22 @@ static void degenerate_duplicate_unreferenced(void **state)
     mesh_free(&m);
 }
 
+static void zero_area_is_exact(void **state)
+{
+    (void)state;
+    /* tiny but not degenerate: a floating-point cross product underflows */
+    const double a[3] = {0, 0, 0}, b[3] = {1e-200, 0, 0}, c[3] = {0, 1e-200, 0};
+    assert_false(tri3_is_degenerate(a, b, c));
+    /* one ulp off a line */
+    const double d[3] = {1, 1, 1}, e[3] = {2, 2, 2}, f[3] = {3, 3, 3.0000000000000004};
+    assert_false(tri3_is_degenerate(d, e, f));
+    /* exactly on the line x = y = z, with inexact-looking decimals */
+    const double g[3] = {0.1, 0.1, 0.1}, h[3] = {0.2, 0.2, 0.2}, k[3] = {0.7, 0.7, 0.7};
+    assert_true(tri3_is_degenerate(g, h, k));
+    /* coincident points */
+    assert_true(tri3_is_degenerate(d, d, e));
+}
+
 static void index_out_of_range(void **state)
 {
     (void)state;
@@ -512,6 +529,7 @@ int main(void)
         cmocka_unit_test(uv_pinch_fails_check),
         cmocka_unit_test(faces_without_uv),
         cmocka_unit_test(degenerate_duplicate_unreferenced),
+        cmocka_unit_test(zero_area_is_exact),
         cmocka_unit_test(index_out_of_range),
         cmocka_unit_test(empty_mesh),
         cmocka_unit_test(edge_table_is_sorted_and_complete),
