@@ -440,6 +440,49 @@ static void degenerate_duplicate_unreferenced(void **state)
     mesh_free(&m);
 }
 
+/* Many triangles meeting at one vertex / one edge: linear-time code paths
+ * (a quadratic scan per vertex would take minutes here). */
+static void huge_fans_are_handled(void **state)
+{
+    (void)state;
+    enum { N = 50000 };
+    mesh m;
+    scaf_error e;
+    assert_int_equal(mesh_alloc(&m, 2 * N + 2, N, 0, &e), SCAF_OK);
+    for (int i = 0; i < 3 * (2 * N + 2); i++) m.V[i] = (double)(i % 7) + i / 3;
+    /* N separate triangles sharing vertex 0 only */
+    for (int i = 0; i < N; i++) {
+        m.F[3 * i] = 0;
+        m.F[3 * i + 1] = 2 + 2 * i;
+        m.F[3 * i + 2] = 3 + 2 * i;
+    }
+    mesh_topology t;
+    topo(&m, &t);
+    assert_int_equal(t.components, 1);
+    assert_int_equal(t.non_manifold_vertices, 1);
+    assert_int_equal(t.boundary_loops, 1);
+    assert_false(t.cx.loop_ordered[0]);
+    assert_int_equal(t.boundary_edges, 3 * N);
+    mesh_topology_free(&t);
+    /* N triangles on the edge 0-1 */
+    for (int i = 0; i < N; i++) {
+        m.F[3 * i] = i % 2 ? 1 : 0;
+        m.F[3 * i + 1] = i % 2 ? 0 : 1;
+        m.F[3 * i + 2] = 2 + i;
+    }
+    topo(&m, &t);
+    assert_int_equal(t.non_manifold_edges, 1);
+    assert_int_equal(t.misoriented_edges, 2);
+    assert_int_equal(t.non_manifold_vertices, 0);  /* one fan through the edge */
+    assert_int_equal(t.unreferenced_vertices, N);
+    mesh_topology_free(&t);
+    mesh_charts c;
+    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_MESH);
+    mesh_charts_free(&c);
+    mesh_free(&m);
+}
+
 static void zero_area_is_exact(void **state)
 {
     (void)state;
@@ -529,6 +572,7 @@ int main(void)
         cmocka_unit_test(uv_pinch_fails_check),
         cmocka_unit_test(faces_without_uv),
         cmocka_unit_test(degenerate_duplicate_unreferenced),
+        cmocka_unit_test(huge_fans_are_handled),
         cmocka_unit_test(zero_area_is_exact),
         cmocka_unit_test(index_out_of_range),
         cmocka_unit_test(empty_mesh),
