@@ -25,6 +25,8 @@ void mesh_charts_free(mesh_charts *c)
     free(c->loop_length);
     free(c->chart_loop_start);
     free(c->chart_loops);
+    free(c->chart_vertex_start);
+    free(c->chart_vertices);
     memset(c, 0, sizeof *c);
 }
 
@@ -64,6 +66,48 @@ scaf_status mesh_uv_chart_labels(const mesh *m, int *face_chart, int *ncharts, s
     free(parent);
     free(label);
     mesh_edges_free(&E);
+    return SCAF_OK;
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+/* Distinct indices of each chart (CSR), ascending. */
+static scaf_status chart_vertex_lists(mesh_charts *c, const int *IF, int n, scaf_error *err)
+{
+    const tri_complex *cx = &c->cx;
+    int total = 0;
+    for (int g = 0; g < c->ncharts; g++) total += cx->group_vertices[g];
+    c->chart_vertex_start = malloc(((size_t)c->ncharts + 1) * sizeof(int));
+    c->chart_vertices = malloc(((size_t)total + 1) * sizeof(int));
+    int *stamp = malloc(((size_t)n + 1) * sizeof *stamp);
+    if (!c->chart_vertex_start || !c->chart_vertices || !stamp) {
+        free(stamp);
+        return err_nomem(err, "chart vertex lists");
+    }
+    for (int i = 0; i < n; i++) stamp[i] = -1;
+    int k = 0;
+    for (int g = 0; g < c->ncharts; g++) {
+        c->chart_vertex_start[g] = k;
+        for (int i = cx->group_face_start[g]; i < cx->group_face_start[g + 1]; i++) {
+            int f = cx->group_faces[i];
+            if (cx->edges.he_edge[3 * f] < 0) continue; /* invalid face */
+            for (int q = 0; q < 3; q++) {
+                int v = IF[3 * f + q];
+                if (stamp[v] == g) continue;
+                stamp[v] = g;
+                c->chart_vertices[k++] = v;
+            }
+        }
+        qsort(c->chart_vertices + c->chart_vertex_start[g], (size_t)(k - c->chart_vertex_start[g]), sizeof(int),
+              cmp_int);
+    }
+    c->chart_vertex_start[c->ncharts] = k;
+    free(stamp);
+    if (k != total) return err_set(err, SCAF_ERR_INTERNAL, "chart vertex lists: %d indices, expected %d", k, total);
     return SCAF_OK;
 }
 
@@ -151,6 +195,9 @@ scaf_status mesh_charts_compute(const mesh *m, mesh_charts *c, scaf_error *err)
         for (int i = s; i < t; i++) c->chart_loops[i] = keys[i - s].id;
     }
     free(keys);
+    keys = NULL;
+    st = chart_vertex_lists(c, IF, n, err);
+    if (st) goto fail;
     return SCAF_OK;
 
 fail:

@@ -32,6 +32,9 @@ typedef struct mesh_charts {
     double *loop_length;   /* #loops 3D length of each loop */
     int *chart_loop_start; /* ncharts+1: loops of chart c are                    */
     int *chart_loops;      /*   chart_loops[chart_loop_start[c] .. [c+1]-1], longest first */
+    int *chart_vertex_start; /* ncharts+1: the distinct indices (vt, or vertices   */
+    int *chart_vertices;     /*   without UVs) used by chart c's valid faces, ascending:
+                                chart_vertices[chart_vertex_start[c] .. [c+1]-1] */
 } mesh_charts;
 
 /* What a chart is, topologically (in its own index space). */

@@ -196,6 +196,8 @@ static void cubesphere(void **state)
         for (int k = 0; k < 6; k++) {
             assert_int_equal(mesh_chart_check(&c, k, 0, NULL), SCAF_OK);
             assert_int_equal(c.cx.group_face_start[k + 1] - c.cx.group_face_start[k], 2 * n * n);
+            assert_int_equal(c.chart_vertex_start[k + 1] - c.chart_vertex_start[k], (n + 1) * (n + 1));
+            assert_int_equal(c.cx.group_euler[k], 1);
         }
         /* UVs: every triangle CCW, inside [0,1]^2, each chart in its own
          * atlas cell (cells of side 1/3), no two charts in one cell */

@@ -358,6 +358,11 @@ static void seams(void **state)
     }
     assert_int_equal(c.cx.face_group[0], 0);
     assert_int_equal(c.cx.face_group[1], 1);
+    /* chart vertex lists: vt 0,1,2 and vt 3,4,5 */
+    assert_int_equal(c.chart_vertex_start[0], 0);
+    assert_int_equal(c.chart_vertex_start[1], 3);
+    assert_int_equal(c.chart_vertex_start[2], 6);
+    for (int i = 0; i < 6; i++) assert_int_equal(c.chart_vertices[i], i);
     mesh_charts_free(&c);
     mesh_free(&m);
 }
