@@ -40,6 +40,12 @@ typedef struct mesh_read_info {
     int faces_without_uv;       /* OBJ faces lacking vt while others have it */
 } mesh_read_info;
 
+/* The warnings of a read as one line of text for people (no trailing
+ * newline; empty when there is nothing to say), e.g. "12 polygons with
+ * more than 3 corners fan-triangulated". Returns the number of warnings
+ * (normals are not a warning). buf may be NULL when size is 0. */
+int mesh_read_warnings(const mesh_read_info *info, char *buf, size_t size);
+
 /* Read a mesh file; the format comes from the extension (a trailing .gz is
  * decompressed). info may be NULL. On failure *m is left empty. */
 scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_error *err);
