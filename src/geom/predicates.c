@@ -1,0 +1,356 @@
+/* geom/predicates: exact orient2d, incircle, orient3d, insphere on doubles.
+ *
+ * Three stages per call:
+ *  1. Filter: the determinant in plain doubles with a forward error bound
+ *     (Shewchuk's permanent-based bound, constants from his analysis) plus
+ *     an absolute term for products that underflow into the subnormal
+ *     range (each such product is off by at most 2^-1075, scaled by the
+ *     factors it is later multiplied with). Overflow turns the bound into
+ *     inf or NaN, which never passes. Most calls end here.
+ *  2. Expansion arithmetic (geom/expansion) on the exact coordinate
+ *     differences. Exact when every nonzero coordinate magnitude lies in
+ *     [2^-LO, 2^HI] for the predicate's LO/HI below: then every exact
+ *     intermediate is a multiple of 2^-1022 (no bits lost to underflow) and
+ *     below 2^995 (no overflow, Veltkamp split safe).
+ *        orient2d: [2^-450, 2^450]   orient3d: [2^-280, 2^300]
+ *        incircle: [2^-200, 2^200]   insphere: stage skipped
+ *  3. Otherwise fixed-point integers (geom/bigint): exact for every finite
+ *     double, slower. insphere's exact stage always uses it.
+ * So the sign is exact for ALL finite inputs. A NaN or infinite coordinate
+ * yields NaN (no sign). No state, no allocation.
+ */
+#include "geom/predicates.h"
+
+#include <math.h>
+
+#include "geom/bigint.h"
+#include "geom/expansion.h"
+
+#define EPS 0x1p-53 /* half an ulp of 1: the unit roundoff */
+static const double ccw_bound = (3.0 + 16.0 * EPS) * EPS;
+static const double o3d_bound = (7.0 + 56.0 * EPS) * EPS;
+static const double icc_bound = (10.0 + 96.0 * EPS) * EPS;
+static const double isp_bound = (16.0 + 224.0 * EPS) * EPS;
+/* Generous multiple of the largest underflow error of one product. */
+#define UFL 0x1p-1060
+
+/* ---- range test for the expansion stage ---- */
+
+static int in_range(const double *x, int n, double lo, double hi)
+{
+    for (int i = 0; i < n; i++) {
+        double a = fabs(x[i]);
+        if (a != 0.0 && !(a >= lo && a <= hi)) return 0; /* also NaN */
+    }
+    return 1;
+}
+
+static int all_finite(const double *x, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(x[i])) return 0;
+    return 1;
+}
+
+/* Smallest exponent over the nonzero values (0 when all are zero). */
+static int low_exponent(const double *x, int n)
+{
+    int emin = 0, any = 0;
+    for (int i = 0; i < n; i++) {
+        if (x[i] == 0.0) continue;
+        int e = bigint_low_exponent(x[i]);
+        if (!any || e < emin) emin = e;
+        any = 1;
+    }
+    return emin;
+}
+
+static double sign_of(const bigint *b) { return (double)b->sign; }
+
+/* ---- orient2d ---- */
+
+static double orient2d_bigint(const double *p)
+{
+    /* p = {ax, ay, bx, by, cx, cy} */
+    int emin = low_exponent(p, 6);
+    bigint v[6], acx, acy, bcx, bcy, l, r;
+    for (int i = 0; i < 6; i++) bigint_from_double(&v[i], p[i], emin);
+    bigint_sub(&acx, &v[0], &v[4]);
+    bigint_sub(&acy, &v[1], &v[5]);
+    bigint_sub(&bcx, &v[2], &v[4]);
+    bigint_sub(&bcy, &v[3], &v[5]);
+    bigint_mul(&l, &acx, &bcy);
+    bigint_mul(&r, &acy, &bcx);
+    bigint_sub(&l, &l, &r);
+    return sign_of(&l);
+}
+
+static double orient2d_exact(const double a[2], const double b[2], const double c[2])
+{
+    const double p[6] = {a[0], a[1], b[0], b[1], c[0], c[1]};
+    if (!all_finite(p, 6)) return NAN;
+    if (!in_range(p, 6, 0x1p-450, 0x1p450)) return orient2d_bigint(p);
+    double acx[2], acy[2], bcx[2], bcy[2], l[8], r[8], h[16], w[16];
+    int nacx = exp_from_diff(a[0], c[0], acx);
+    int nacy = exp_from_diff(a[1], c[1], acy);
+    int nbcx = exp_from_diff(b[0], c[0], bcx);
+    int nbcy = exp_from_diff(b[1], c[1], bcy);
+    int nl = exp_mul(nacx, acx, nbcy, bcy, l, w);
+    int nr = exp_mul(nacy, acy, nbcx, bcx, r, w);
+    exp_negate(nr, r, r);
+    int nh = exp_sum(nl, l, nr, r, h);
+    return exp_sign_estimate(nh, h);
+}
+
+double orient2d(const double a[2], const double b[2], const double c[2])
+{
+    double acx = a[0] - c[0], bcx = b[0] - c[0];
+    double acy = a[1] - c[1], bcy = b[1] - c[1];
+    double l = acx * bcy, r = acy * bcx;
+    double det = l - r;
+    double bound = ccw_bound * (fabs(l) + fabs(r)) + UFL;
+    if (det > bound || -det > bound) return det;
+    return orient2d_exact(a, b, c);
+}
+
+/* ---- orient3d ---- */
+
+static double orient3d_bigint(const double *p)
+{
+    int emin = low_exponent(p, 12);
+    bigint v[12], d[9], m, t, s, acc;
+    for (int i = 0; i < 12; i++) bigint_from_double(&v[i], p[i], emin);
+    for (int k = 0; k < 3; k++)      /* rows a-d, b-d, c-d */
+        for (int j = 0; j < 3; j++) bigint_sub(&d[3 * k + j], &v[3 * k + j], &v[9 + j]);
+    /* det = adz (bdx cdy - bdy cdx) - bdz (adx cdy - ady cdx) + cdz (adx bdy - ady bdx) */
+    bigint_mul(&m, &d[3], &d[7]);
+    bigint_mul(&t, &d[4], &d[6]);
+    bigint_sub(&m, &m, &t);
+    bigint_mul(&acc, &d[2], &m);
+    bigint_mul(&m, &d[0], &d[7]);
+    bigint_mul(&t, &d[1], &d[6]);
+    bigint_sub(&m, &m, &t);
+    bigint_mul(&s, &d[5], &m);
+    bigint_sub(&acc, &acc, &s);
+    bigint_mul(&m, &d[0], &d[4]);
+    bigint_mul(&t, &d[1], &d[3]);
+    bigint_sub(&m, &m, &t);
+    bigint_mul(&s, &d[8], &m);
+    bigint_add(&acc, &acc, &s);
+    return sign_of(&acc);
+}
+
+/* m = x1 * y2 - y1 * x2 for 2-component expansions; m has room for 16. */
+static int exp_minor(int nx1, const double *x1, int ny2, const double *y2, int ny1,
+                     const double *y1, int nx2, const double *x2, double *m)
+{
+    double l[8], r[8], w[16];
+    int nl = exp_mul(nx1, x1, ny2, y2, l, w);
+    int nr = exp_mul(ny1, y1, nx2, x2, r, w);
+    exp_negate(nr, r, r);
+    return exp_sum(nl, l, nr, r, m);
+}
+
+static double orient3d_exact(const double a[3], const double b[3], const double c[3],
+                             const double d[3])
+{
+    const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
+    if (!all_finite(p, 12)) return NAN;
+    if (!in_range(p, 12, 0x1p-280, 0x1p300)) return orient3d_bigint(p);
+    double ad[3][2], bd[3][2], cd[3][2];
+    int na[3], nb[3], nc[3];
+    for (int j = 0; j < 3; j++) {
+        na[j] = exp_from_diff(a[j], d[j], ad[j]);
+        nb[j] = exp_from_diff(b[j], d[j], bd[j]);
+        nc[j] = exp_from_diff(c[j], d[j], cd[j]);
+    }
+    double m[16], t1[64], t2[64], t3[64], s12[128], h[192], w[128];
+    int nm, n1, n2, n3;
+    nm = exp_minor(nb[0], bd[0], nc[1], cd[1], nb[1], bd[1], nc[0], cd[0], m);
+    n1 = exp_mul(na[2], ad[2], nm, m, t1, w);
+    nm = exp_minor(nc[0], cd[0], na[1], ad[1], nc[1], cd[1], na[0], ad[0], m);
+    n2 = exp_mul(nb[2], bd[2], nm, m, t2, w);
+    nm = exp_minor(na[0], ad[0], nb[1], bd[1], na[1], ad[1], nb[0], bd[0], m);
+    n3 = exp_mul(nc[2], cd[2], nm, m, t3, w);
+    int n12 = exp_sum(n1, t1, n2, t2, s12);
+    int nh = exp_sum(n12, s12, n3, t3, h);
+    return exp_sign_estimate(nh, h);
+}
+
+double orient3d(const double a[3], const double b[3], const double c[3], const double d[3])
+{
+    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+    double adz = a[2] - d[2], bdz = b[2] - d[2], cdz = c[2] - d[2];
+    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    double cdxady = cdx * ady, adxcdy = adx * cdy;
+    double adxbdy = adx * bdy, bdxady = bdx * ady;
+    double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+    double az = fabs(adz), bz = fabs(bdz), cz = fabs(cdz);
+    double perm = (fabs(bdxcdy) + fabs(cdxbdy)) * az + (fabs(cdxady) + fabs(adxcdy)) * bz +
+                  (fabs(adxbdy) + fabs(bdxady)) * cz;
+    double bound = o3d_bound * perm + UFL * (az + bz + cz + 1.0);
+    if (det > bound || -det > bound) return det;
+    return orient3d_exact(a, b, c, d);
+}
+
+/* ---- incircle ---- */
+
+static double incircle_bigint(const double *p)
+{
+    int emin = low_exponent(p, 8);
+    bigint v[8], dx[3], dy[3], lift[3], t, u, m, acc, s;
+    for (int i = 0; i < 8; i++) bigint_from_double(&v[i], p[i], emin);
+    for (int k = 0; k < 3; k++) {
+        bigint_sub(&dx[k], &v[2 * k], &v[6]);
+        bigint_sub(&dy[k], &v[2 * k + 1], &v[7]);
+        bigint_mul(&t, &dx[k], &dx[k]);
+        bigint_mul(&u, &dy[k], &dy[k]);
+        bigint_add(&lift[k], &t, &u);
+    }
+    acc.sign = 0;
+    acc.n = 0;
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3; /* cyclic minors */
+        bigint_mul(&t, &dx[i], &dy[j]);
+        bigint_mul(&u, &dx[j], &dy[i]);
+        bigint_sub(&m, &t, &u);
+        bigint_mul(&s, &lift[k], &m);
+        bigint_add(&acc, &acc, &s);
+    }
+    return sign_of(&acc);
+}
+
+static double incircle_exact(const double a[2], const double b[2], const double c[2],
+                             const double d[2])
+{
+    const double p[8] = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
+    if (!all_finite(p, 8)) return NAN;
+    if (!in_range(p, 8, 0x1p-200, 0x1p200)) return incircle_bigint(p);
+    const double *pt[3] = {a, b, c};
+    double dx[3][2], dy[3][2], lift[3][16];
+    int nx[3], ny[3], nlift[3];
+    double sq1[8], sq2[8], w[1024];
+    for (int k = 0; k < 3; k++) {
+        nx[k] = exp_from_diff(pt[k][0], d[0], dx[k]);
+        ny[k] = exp_from_diff(pt[k][1], d[1], dy[k]);
+        int n1 = exp_mul(nx[k], dx[k], nx[k], dx[k], sq1, w);
+        int n2 = exp_mul(ny[k], dy[k], ny[k], dy[k], sq2, w);
+        nlift[k] = exp_sum(n1, sq1, n2, sq2, lift[k]);
+    }
+    double m[16], term[512], acc[1536], tmp[1536];
+    int nacc = 0;
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        int nm = exp_minor(nx[i], dx[i], ny[j], dy[j], ny[i], dy[i], nx[j], dx[j], m);
+        int nt = exp_mul(nlift[k], lift[k], nm, m, term, w);
+        for (int q = 0; q < nacc; q++) tmp[q] = acc[q];
+        nacc = exp_sum(nacc, tmp, nt, term, acc);
+    }
+    return exp_sign_estimate(nacc, acc);
+}
+
+double incircle(const double a[2], const double b[2], const double c[2], const double d[2])
+{
+    double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
+    double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
+    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    double cdxady = cdx * ady, adxcdy = adx * cdy;
+    double adxbdy = adx * bdy, bdxady = bdx * ady;
+    double alift = adx * adx + ady * ady;
+    double blift = bdx * bdx + bdy * bdy;
+    double clift = cdx * cdx + cdy * cdy;
+    double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+    double pa = fabs(bdxcdy) + fabs(cdxbdy);
+    double pb = fabs(cdxady) + fabs(adxcdy);
+    double pc = fabs(adxbdy) + fabs(bdxady);
+    double perm = pa * alift + pb * blift + pc * clift;
+    double bound = icc_bound * perm + UFL * (alift + blift + clift + pa + pb + pc + 1.0);
+    if (det > bound || -det > bound) return det;
+    return incircle_exact(a, b, c, d);
+}
+
+/* ---- insphere ---- */
+
+static double insphere_bigint(const double *p)
+{
+    /* p = {a, b, c, d, e} as 15 doubles. det = -alift bcd + blift cda
+     * - clift dab + dlift abc, the 4x4 determinant with rows (x-e, |x-e|^2). */
+    int emin = low_exponent(p, 15);
+    bigint v[15], dd[4][3], lift[4], t, u, m2, m3, acc, s;
+    for (int i = 0; i < 15; i++) bigint_from_double(&v[i], p[i], emin);
+    for (int k = 0; k < 4; k++) {
+        lift[k].sign = 0;
+        lift[k].n = 0;
+        for (int j = 0; j < 3; j++) {
+            bigint_sub(&dd[k][j], &v[3 * k + j], &v[12 + j]);
+            bigint_mul(&t, &dd[k][j], &dd[k][j]);
+            bigint_add(&lift[k], &lift[k], &t);
+        }
+    }
+    /* 3x3 determinant of rows r0, r1, r2 (xyz). */
+    static const int rows[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+    acc.sign = 0;
+    acc.n = 0;
+    for (int k = 0; k < 4; k++) {
+        const bigint *r0 = dd[rows[k][0]], *r1 = dd[rows[k][1]], *r2 = dd[rows[k][2]];
+        m3.sign = 0;
+        m3.n = 0;
+        for (int z = 0; z < 3; z++) {
+            int x = (z + 1) % 3, y = (z + 2) % 3; /* cofactor along column z */
+            bigint_mul(&t, &r1[x], &r2[y]);
+            bigint_mul(&u, &r1[y], &r2[x]);
+            bigint_sub(&m2, &t, &u);
+            bigint_mul(&s, &r0[z], &m2);
+            bigint_add(&m3, &m3, &s);
+        }
+        bigint_mul(&s, &lift[k], &m3);
+        if (k % 2 == 0)
+            bigint_sub(&acc, &acc, &s); /* cofactor signs -, +, -, + */
+        else
+            bigint_add(&acc, &acc, &s);
+    }
+    return sign_of(&acc);
+}
+
+double insphere(const double a[3], const double b[3], const double c[3], const double d[3],
+                const double e[3])
+{
+    double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
+    double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
+    double aez = a[2] - e[2], bez = b[2] - e[2], cez = c[2] - e[2], dez = d[2] - e[2];
+    double aexbey = aex * bey, bexaey = bex * aey;
+    double bexcey = bex * cey, cexbey = cex * bey;
+    double cexdey = cex * dey, dexcey = dex * cey;
+    double dexaey = dex * aey, aexdey = aex * dey;
+    double aexcey = aex * cey, cexaey = cex * aey;
+    double bexdey = bex * dey, dexbey = dex * bey;
+    double ab = aexbey - bexaey, bc = bexcey - cexbey, cd = cexdey - dexcey;
+    double da = dexaey - aexdey, ac = aexcey - cexaey, bd = bexdey - dexbey;
+    double abc = aez * bc - bez * ac + cez * ab;
+    double bcd = bez * cd - cez * bd + dez * bc;
+    double cda = cez * da + dez * ac + aez * cd;
+    double dab = dez * ab + aez * bd + bez * da;
+    double alift = aex * aex + aey * aey + aez * aez;
+    double blift = bex * bex + bey * bey + bez * bez;
+    double clift = cex * cex + cey * cey + cez * cez;
+    double dlift = dex * dex + dey * dey + dez * dez;
+    double det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd);
+    double az = fabs(aez), bz = fabs(bez), cz = fabs(cez), dz = fabs(dez);
+    double pab = fabs(aexbey) + fabs(bexaey), pbc = fabs(bexcey) + fabs(cexbey);
+    double pcd = fabs(cexdey) + fabs(dexcey), pda = fabs(dexaey) + fabs(aexdey);
+    double pac = fabs(aexcey) + fabs(cexaey), pbd = fabs(bexdey) + fabs(dexbey);
+    double pabc = az * pbc + bz * pac + cz * pab;
+    double pbcd = bz * pcd + cz * pbd + dz * pbc;
+    double pcda = cz * pda + dz * pac + az * pcd;
+    double pdab = dz * pab + az * pbd + bz * pda;
+    double perm = dlift * pabc + clift * pdab + blift * pcda + alift * pbcd;
+    double lsum = alift + blift + clift + dlift;
+    double bound = isp_bound * perm +
+                   UFL * ((az + bz + cz + dz + 2.0) * (lsum + 1.0) + pabc + pbcd + pcda + pdab + 1.0);
+    if (det > bound || -det > bound) return det;
+    const double p[15] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2],
+                          d[0], d[1], d[2], e[0], e[1], e[2]};
+    if (!all_finite(p, 15)) return NAN;
+    return insphere_bigint(p);
+}
