@@ -59,6 +59,7 @@ typedef struct refiner {
     cdt_refine_stats *st;
     double sin2;    /* sin^2 of the angle bound */
     double offh;    /* off-center height / shortest edge length */
+    double cos1, cos2; /* cos(bound), cos(2 bound) for the lens test */
     rq segq;        /* a, b, forced */
     rq triq;        /* t, v0, v1, v2, tries */
 } refiner;
@@ -78,6 +79,31 @@ static double d2(const double *a, const double *b)
 static int encroaches(const double *u, const double *w, const double *p)
 {
     return (u[0] - p[0]) * (w[0] - p[0]) + (u[1] - p[1]) * (w[1] - p[1]) <= 0;
+}
+
+/* Would a Steiner point p next to unsplittable segment u-w spoil it? True
+ * when p lies in the segment's diametral lens (the triangle (u, w, p)
+ * would have an angle above 180 - 2 * bound at p), or when that triangle
+ * would have an angle below the bound at u or w while p is closer to an
+ * endpoint than the segment is long. A point outside this region makes a
+ * triangle with the segment whose shortest edge is the segment or whose
+ * angles are good, so no cascade of ever closer points can start there. */
+static int spoils(const refiner *r, const double *u, const double *w, const double *p)
+{
+    double ux = u[0] - p[0], uy = u[1] - p[1], wx = w[0] - p[0], wy = w[1] - p[1];
+    double sx = w[0] - u[0], sy = w[1] - u[1];
+    double lu = sqrt(ux * ux + uy * uy), lw = sqrt(wx * wx + wy * wy), ls = sqrt(sx * sx + sy * sy);
+    if (!(lu > 0 && lw > 0 && ls > 0))
+        return 1;
+    if (ux * wx + uy * wy < -r->cos2 * lu * lw)           /* angle at p */
+        return 1;
+    if (lu >= ls && lw >= ls)
+        return 0;
+    if (-(ux * sx + uy * sy) > r->cos1 * lu * ls)          /* angle at u */
+        return 1;
+    if (wx * sx + wy * sy > r->cos1 * lw * ls)             /* angle at w */
+        return 1;
+    return 0;
 }
 
 /* 0 good, 1 bad angle, 2 too big. *k gets the corner of the smallest angle. */
@@ -208,7 +234,7 @@ static int split_segment(refiner *r, int a, int b, int forced)
         for (int j = 0; j < m->nbnd; j++) {
             int e = m->bnd[j];
             if (m->S[e] >= 0 && !seg_splittable(r, m->S[e]) &&
-                encroaches(m->xy + 2 * m->V[cdt_next(e)], m->xy + 2 * m->V[cdt_prev(e)], p)) {
+                spoils(r, m->xy + 2 * m->V[cdt_next(e)], m->xy + 2 * m->V[cdt_prev(e)], p)) {
                 ok = 0;
                 break;
             }
@@ -256,12 +282,21 @@ static int refine_triangle(refiner *r, const int *item)
             p[1] = my + (p[1] - my) * (h / dist);
         }
     }
+    int retry = 0, refuse = 0;
+    for (int attempt = 0; attempt < 2; attempt++) {
+    if (attempt == 1) {
+        /* an area-bad triangle whose circumcenter is refused: try its centroid */
+        if (!refuse || retry || bad != 2)
+            break;
+        refuse = 0;
+        p[0] = (pp[0] + pq[0] + pr[0]) / 3.0;
+        p[1] = (pp[1] + pq[1] + pr[1]) / 3.0;
+    }
     if (!isfinite(p[0]) || !isfinite(p[1])) {
-        r->st->nrejected++;
-        return 0;
+        refuse = 1;
+        continue;
     }
     int blocker, lt = cdt_mesh_walk_constrained(m, t, p, &blocker);
-    int retry = 0, refuse = 0;
     if (lt < 0) {
         if (blocker >= 0 && seg_splittable(r, m->S[blocker])) {
             int it[3] = {m->V[cdt_next(blocker)], m->V[cdt_prev(blocker)], 1};
@@ -285,19 +320,24 @@ static int refine_triangle(refiner *r, const int *item)
                 refuse = 1;
             for (int j = 0; ok == 1 && j < m->nbnd; j++) {
                 int e = m->bnd[j];
-                if (m->S[e] < 0 ||
-                    !encroaches(m->xy + 2 * m->V[cdt_next(e)], m->xy + 2 * m->V[cdt_prev(e)], p))
+                if (m->S[e] < 0)
                     continue;
+                const double *eu = m->xy + 2 * m->V[cdt_next(e)], *ew = m->xy + 2 * m->V[cdt_prev(e)];
                 if (seg_splittable(r, m->S[e])) {
+                    if (!encroaches(eu, ew, p))
+                        continue;
                     int it[3] = {m->V[cdt_next(e)], m->V[cdt_prev(e)], 1};
                     if (rq_push(&r->segq, it))
                         return -1;
                     retry = 1;
-                } else {
+                } else if (spoils(r, eu, ew, p)) {
                     refuse = 1;
                 }
             }
         }
+    }
+    if (!retry && !refuse)
+        break;
     }
     if (retry || refuse) {
         if (retry && item[4] < 3) {
@@ -323,6 +363,9 @@ int cdt_refine(cdt_mesh *m, const cdt_refine_params *prm, cdt_refine_stats *st)
     r.sin2 = prm->min_angle_deg > 0 ? sin(th) * sin(th) : 0.0;
     /* isosceles triangle on the shortest edge with apex angle a bit above the bound */
     r.offh = prm->min_angle_deg > 0 ? 0.5 / tan(0.5 * th) * 0.98 : 0.0;
+    double lens = prm->min_angle_deg > 0 ? th : 20.0 * (3.14159265358979323846 / 180.0);
+    r.cos1 = cos(lens);
+    r.cos2 = cos(2 * lens);
     r.segq = (rq){NULL, 0, 0, 0, 3};
     r.triq = (rq){NULL, 0, 0, 0, 5};
     int rc = 0;
