@@ -141,22 +141,6 @@ int cdt_mesh_first_triangle(cdt_mesh *m, int a, int b, int c)
     return 0;
 }
 
-double cdt_orient(const cdt_mesh *m, int a, int b, int c)
-{
-    return orient2d(m->xy + 2 * a, m->xy + 2 * b, m->xy + 2 * c);
-}
-
-double cdt_orient_p(const cdt_mesh *m, int a, int b, const double p[2])
-{
-    return orient2d(m->xy + 2 * a, m->xy + 2 * b, p);
-}
-
-double cdt_incircle_t(const cdt_mesh *m, int t, const double p[2])
-{
-    const int *v = m->V + 3 * t;
-    return incircle(m->xy + 2 * v[0], m->xy + 2 * v[1], m->xy + 2 * v[2], p);
-}
-
 static unsigned next_rand(cdt_mesh *m)
 {
     /* xorshift32: deterministic, state lives in the structure */
@@ -239,7 +223,7 @@ int cdt_mesh_walk_constrained(cdt_mesh *m, int t, const double p[2], int *blocke
     return -1; /* cycling: treat as unreachable (the caller refuses the point) */
 }
 
-static int push_int(int **a, int *n, int *cap, int v)
+static inline int push_int(int **a, int *n, int *cap, int v)
 {
     if (*n >= *cap && grow((void **)a, cap, *n + 1, sizeof(int)))
         return -1;
