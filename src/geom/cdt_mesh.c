@@ -170,12 +170,13 @@ int cdt_mesh_locate(cdt_mesh *m, int t, const double p[2])
     int from = -1;
     long limit = 4L * m->nt + 64;
     for (long step = 0; step < limit; step++) {
+        static const int rot[7] = {0, 1, 2, 0, 1, 2, 0};
         int k0 = (int)(next_rand(m) % 3u), moved = 0;
         for (int kk = 0; kk < 3; kk++) {
-            int c = 3 * t + (k0 + kk) % 3;
+            int c = 3 * t + rot[k0 + kk];
             if (c == from)
                 continue;
-            if (cdt_orient_p(m, m->V[cdt_next(c)], m->V[cdt_prev(c)], p) < 0) {
+            if (cdt_orient_p(m, m->V[3 * t + rot[k0 + kk + 1]], m->V[3 * t + rot[k0 + kk + 2]], p) < 0) {
                 int n = m->N[c];
                 if (n < 0)
                     return -1;

@@ -51,8 +51,8 @@ typedef struct cdt_mesh {
 } cdt_mesh;
 
 /* Corner helpers. */
-static inline int cdt_next(int c) { return (c % 3 == 2) ? c - 2 : c + 1; }
-static inline int cdt_prev(int c) { return (c % 3 == 0) ? c + 2 : c - 1; }
+static inline int cdt_next(int c) { return ((unsigned)c % 3u == 2u) ? c - 2 : c + 1; }
+static inline int cdt_prev(int c) { return ((unsigned)c % 3u == 0u) ? c + 2 : c - 1; }
 
 /* Start an empty structure able to hold nv_hint vertices before growing. 0 or -1 (no memory). */
 int cdt_mesh_init(cdt_mesh *m, int nv_hint);
