@@ -56,7 +56,9 @@ static void add_box(problem *p)
     }
 }
 
-static problem wiggly(int n)
+/* n vertices on a wiggly closed curve (amp = 0: a circle, as after a
+ * Tutte embedding: all boundary vertices nearly cocircular) */
+static problem wiggly(int n, double amp)
 {
     problem p;
     p.pts = malloc((size_t)(n + 4) * 2 * sizeof(double));
@@ -66,13 +68,41 @@ static problem wiggly(int n)
     p.np = p.ns = 0;
     for (int i = 0; i < n; i++) {
         double t = 2 * 3.14159265358979323846 * i / n;
-        double r = 1 + 0.3 * sin(7 * t) + 0.05 * sin(97 * t);
+        double r = 1 + amp * (0.3 * sin(7 * t) + 0.05 * sin(97 * t));
         p.pts[2 * i] = r * cos(t);
         p.pts[2 * i + 1] = r * sin(t);
         p.seg[2 * i] = i;
         p.seg[2 * i + 1] = (i + 1) % n;
         p.split[i] = 0;
         p.hole[i] = 1;
+    }
+    p.np = p.ns = n;
+    add_box(&p);
+    return p;
+}
+
+/* g x g charts (circles of m vertices, squeezed) on a grid, 0.1 apart */
+static problem atlas(int g, int m)
+{
+    problem p;
+    int n = g * g * m;
+    p.pts = malloc((size_t)(n + 4) * 2 * sizeof(double));
+    p.seg = malloc((size_t)(n + 4) * 2 * sizeof(int));
+    p.split = malloc((size_t)(n + 4));
+    p.hole = malloc((size_t)(n + 4));
+    p.np = p.ns = 0;
+    for (int c = 0; c < g * g; c++) {
+        double cx = 2.1 * (c % g), cy = 2.1 * (c / g);
+        for (int i = 0; i < m; i++) {
+            double t = 2 * 3.14159265358979323846 * i / m;
+            int v = c * m + i;
+            p.pts[2 * v] = cx + cos(t);
+            p.pts[2 * v + 1] = cy + (0.5 + 0.1 * (c % 5)) * sin(t);
+            p.seg[2 * v] = v;
+            p.seg[2 * v + 1] = c * m + (i + 1) % m;
+            p.split[v] = 0;
+            p.hole[v] = 1;
+        }
     }
     p.np = p.ns = n;
     add_box(&p);
@@ -230,14 +260,24 @@ int main(int argc, char **argv)
     printf("|---|---|---|---|---|---|---|---|---|---|\n");
     int sizes[3] = {1000, 10000, 100000}, reps[3] = {30, 10, 3};
     for (int i = 0; i < 3; i++) {
-        problem p = wiggly(sizes[i]);
+        problem p = wiggly(sizes[i], 1);
         char name[64];
         snprintf(name, sizeof name, "wiggly %d, CDT only", sizes[i]);
         run(name, &p, reps[i], 0);
         snprintf(name, sizeof name, "wiggly %d, 20 deg", sizes[i]);
         run(name, &p, reps[i], 20);
         problem_free(&p);
+        p = wiggly(sizes[i], 0);
+        snprintf(name, sizeof name, "circle %d, 20 deg", sizes[i]);
+        run(name, &p, reps[i], 20);
+        problem_free(&p);
     }
+    problem a = atlas(10, 100);
+    run("atlas 10x10 charts x 100", &a, 10, 20);
+    problem_free(&a);
+    a = atlas(30, 12);
+    run("atlas 30x30 charts x 12", &a, 10, 20);
+    problem_free(&a);
     const char *files[] = {"disk/camel_b.obj", "seams/blub.obj", "seams/spot.obj",
                            "seams/myles_knot1_seamed.obj"};
     for (size_t i = 0; i < sizeof files / sizeof *files; i++) {

@@ -252,6 +252,57 @@ static int split_segment(refiner *r, int a, int b, int forced)
     return after_insert(r);
 }
 
+/* Insert Steiner point p for bad triangle t if allowed. Returns 0 when
+ * inserted, 2 when refused, 3 when splittable segments were queued
+ * instead, -1 when memory ran out. */
+static int try_point(refiner *r, int t, const double p[2])
+{
+    cdt_mesh *m = r->m;
+    if (!isfinite(p[0]) || !isfinite(p[1]))
+        return 2;
+    int blocker, lt = cdt_mesh_walk_constrained(m, t, p, &blocker);
+    if (lt < 0) {
+        if (blocker >= 0 && seg_splittable(r, m->S[blocker])) {
+            int it[3] = {m->V[cdt_next(blocker)], m->V[cdt_prev(blocker)], 1};
+            return rq_push(&r->segq, it) ? -1 : 3;
+        }
+        return 2;
+    }
+    for (int i = 0; i < 3; i++) {
+        const double *q = m->xy + 2 * m->V[3 * lt + i];
+        if (q[0] == p[0] && q[1] == p[1])
+            return 2;
+    }
+    int ok = cdt_mesh_cavity(m, p, lt, -1);
+    if (ok <= 0)
+        return ok < 0 ? -1 : 2;
+    int retry = 0, refuse = 0;
+    for (int j = 0; j < m->nbnd; j++) {
+        int e = m->bnd[j];
+        if (m->S[e] < 0)
+            continue;
+        const double *eu = m->xy + 2 * m->V[cdt_next(e)], *ew = m->xy + 2 * m->V[cdt_prev(e)];
+        if (seg_splittable(r, m->S[e])) {
+            if (!encroaches(eu, ew, p))
+                continue;
+            int it[3] = {m->V[cdt_next(e)], m->V[cdt_prev(e)], 1};
+            if (rq_push(&r->segq, it))
+                return -1;
+            retry = 1;
+        } else if (spoils(r, eu, ew, p)) {
+            refuse = 1;
+        }
+    }
+    if (retry)
+        return 3;
+    if (refuse)
+        return 2;
+    int nv = cdt_mesh_add_vertex(m, p[0], p[1]);
+    if (nv < 0 || cdt_mesh_commit(m, nv, -1, -1, -1) < 0)
+        return -1;
+    return after_insert(r) ? -1 : 0;
+}
+
 static int refine_triangle(refiner *r, const int *item)
 {
     cdt_mesh *m = r->m;
@@ -273,8 +324,8 @@ static int refine_triangle(refiner *r, const int *item)
     }
     double bb = bx * bx + by * by, cc = cx * cx + cy * cy;
     double p[2] = {pp[0] + (cy * bb - by * cc) / den, pp[1] + (bx * cc - cx * bb) / den};
+    double mx = 0.5 * (pp[0] + pq[0]), my = 0.5 * (pp[1] + pq[1]);
     if (bad == 1) {
-        double mx = 0.5 * (pp[0] + pq[0]), my = 0.5 * (pp[1] + pq[1]);
         double dist = sqrt((p[0] - mx) * (p[0] - mx) + (p[1] - my) * (p[1] - my));
         double h = r->offh * sqrt(bb);
         if (dist > h) {
@@ -282,75 +333,30 @@ static int refine_triangle(refiner *r, const int *item)
             p[1] = my + (p[1] - my) * (h / dist);
         }
     }
-    int retry = 0, refuse = 0;
-    for (int attempt = 0; attempt < 2; attempt++) {
-    if (attempt == 1) {
-        /* an area-bad triangle whose circumcenter is refused: try its centroid */
-        if (!refuse || retry || bad != 2)
-            break;
-        refuse = 0;
-        p[0] = (pp[0] + pq[0] + pr[0]) / 3.0;
-        p[1] = (pp[1] + pq[1] + pr[1]) / 3.0;
-    }
-    if (!isfinite(p[0]) || !isfinite(p[1])) {
-        refuse = 1;
-        continue;
-    }
-    int blocker, lt = cdt_mesh_walk_constrained(m, t, p, &blocker);
-    if (lt < 0) {
-        if (blocker >= 0 && seg_splittable(r, m->S[blocker])) {
-            int it[3] = {m->V[cdt_next(blocker)], m->V[cdt_prev(blocker)], 1};
-            if (rq_push(&r->segq, it))
-                return -1;
-            retry = 1;
-        } else {
-            refuse = 1;
-        }
+    /* second choice when the first is refused next to an unsplittable
+       segment: the centroid (area), or a point half as far from the
+       shortest edge (angle: still a good triangle on that edge) */
+    double p2[2];
+    if (bad == 2) {
+        p2[0] = (pp[0] + pq[0] + pr[0]) / 3.0;
+        p2[1] = (pp[1] + pq[1] + pr[1]) / 3.0;
     } else {
-        for (int i = 0; i < 3; i++) {
-            const double *q = m->xy + 2 * m->V[3 * lt + i];
-            if (q[0] == p[0] && q[1] == p[1])
-                refuse = 1;
-        }
-        if (!refuse) {
-            int ok = cdt_mesh_cavity(m, p, lt, -1);
-            if (ok < 0)
-                return -1;
-            if (ok == 0)
-                refuse = 1;
-            for (int j = 0; ok == 1 && j < m->nbnd; j++) {
-                int e = m->bnd[j];
-                if (m->S[e] < 0)
-                    continue;
-                const double *eu = m->xy + 2 * m->V[cdt_next(e)], *ew = m->xy + 2 * m->V[cdt_prev(e)];
-                if (seg_splittable(r, m->S[e])) {
-                    if (!encroaches(eu, ew, p))
-                        continue;
-                    int it[3] = {m->V[cdt_next(e)], m->V[cdt_prev(e)], 1};
-                    if (rq_push(&r->segq, it))
-                        return -1;
-                    retry = 1;
-                } else if (spoils(r, eu, ew, p)) {
-                    refuse = 1;
-                }
-            }
-        }
+        p2[0] = mx + 0.5 * (p[0] - mx);
+        p2[1] = my + 0.5 * (p[1] - my);
     }
-    if (!retry && !refuse)
-        break;
-    }
-    if (retry || refuse) {
-        if (retry && item[4] < 3) {
-            int again[5] = {item[0], item[1], item[2], item[3], item[4] + 1};
-            return rq_push(&r->triq, again);
-        }
-        r->st->nrejected++;
-        return 0;
-    }
-    int nv = cdt_mesh_add_vertex(m, p[0], p[1]);
-    if (nv < 0 || cdt_mesh_commit(m, nv, -1, -1, -1) < 0)
+    int verdict = try_point(r, t, p);
+    if (verdict == 2)
+        verdict = try_point(r, t, p2);
+    if (verdict < 0)
         return -1;
-    return after_insert(r);
+    if (verdict == 0)
+        return 0;
+    if (verdict == 3 && item[4] < 3) { /* splittable segments queued first */
+        int again[5] = {item[0], item[1], item[2], item[3], item[4] + 1};
+        return rq_push(&r->triq, again);
+    }
+    r->st->nrejected++;
+    return 0;
 }
 
 int cdt_refine(cdt_mesh *m, const cdt_refine_params *prm, cdt_refine_stats *st)
