@@ -24,6 +24,8 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "geom/predicates.h"
+
 typedef struct rq {
     int *v;
     long n, cap, head;
@@ -189,6 +191,29 @@ static int after_insert(refiner *r)
     return 0;
 }
 
+/* Make p lie exactly on the open segment a-b, moving it by at most one ulp
+ * per coordinate (axis-aligned segments need no move). 0 if impossible. */
+static int on_segment_exactly(const double *a, const double *b, double *p)
+{
+    double x0 = p[0], y0 = p[1];
+    for (int dx = 0; dx < 3; dx++)
+        for (int dy = 0; dy < 3; dy++) {
+            double q[2] = {dx == 0 ? x0 : nextafter(x0, dx == 1 ? INFINITY : -INFINITY),
+                           dy == 0 ? y0 : nextafter(y0, dy == 1 ? INFINITY : -INFINITY)};
+            if (orient2d(a, b, q) != 0)
+                continue;
+            if ((q[0] == a[0] && q[1] == a[1]) || (q[0] == b[0] && q[1] == b[1]))
+                continue;
+            if (q[0] < fmin(a[0], b[0]) || q[0] > fmax(a[0], b[0]) || q[1] < fmin(a[1], b[1]) ||
+                q[1] > fmax(a[1], b[1]))
+                continue;
+            p[0] = q[0];
+            p[1] = q[1];
+            return 1;
+        }
+    return 0;
+}
+
 static int split_segment(refiner *r, int a, int b, int forced)
 {
     cdt_mesh *m = r->m;
@@ -223,8 +248,9 @@ static int split_segment(refiner *r, int a, int b, int forced)
         f = d / len;
     }
     double p[2] = {p0[0] + f * (p1[0] - p0[0]), p0[1] + f * (p1[1] - p0[1])};
-    if ((p[0] == p0[0] && p[1] == p0[1]) || (p[0] == p1[0] && p[1] == p1[1])) {
+    if (!on_segment_exactly(p0, p1, p)) {
         freeze(m, c);
+        r->st->nrejected++;
         return 0;
     }
     int ok = cdt_mesh_cavity(m, p, c / 3, m->N[c] / 3);

@@ -305,8 +305,8 @@ static void random_segment_soup_matches_brute_force(void **state)
         int ns = 1 + (int)(rnd() * 6);
         for (int i = 0; i < ns; i++) {
             int u = (int)(rnd() * np), w = (int)(rnd() * np);
-            if (u != w)
-                cb_segment(&b, u, w, 0, 0);
+            if (u != w) /* some interior segments splittable, at any slope */
+                cb_segment(&b, u, w, trial % 4 == 0 && rnd() < 0.5, 0);
         }
         int expect_error = invalid_soup(&b);
         int q0 = cb_point(&b, -10, -10), q1 = cb_point(&b, 20, -10), q2 = cb_point(&b, 20, 20),
