@@ -102,7 +102,6 @@ void cdt_mesh_free(cdt_mesh *m)
     free(m->tmark);
     free(m->cav);
     free(m->bnd);
-    free(m->stk);
     free(m->ba);
     free(m->bb);
     free(m->bn);
@@ -241,9 +240,8 @@ int cdt_mesh_cavity(cdt_mesh *m, const double p[2], int seed0, int seed1)
     unsigned in = m->stamp, out = m->stamp + 1;
     m->stamp += 2;
     m->ncav = m->nbnd = 0;
-    int nstk = 0, split_c = -1, split_n = -1;
-    if (push_int(&m->cav, &m->ncav, &m->capcav, seed0) ||
-        push_int(&m->stk, &nstk, &m->capstk, seed0))
+    int split_c = -1, split_n = -1;
+    if (push_int(&m->cav, &m->ncav, &m->capcav, seed0))
         return -1;
     m->tmark[seed0] = in;
     if (seed1 >= 0) {
@@ -254,13 +252,13 @@ int cdt_mesh_cavity(cdt_mesh *m, const double p[2], int seed0, int seed1)
             }
         if (split_c < 0)
             return 0;
-        if (push_int(&m->cav, &m->ncav, &m->capcav, seed1) ||
-            push_int(&m->stk, &nstk, &m->capstk, seed1))
+        if (push_int(&m->cav, &m->ncav, &m->capcav, seed1))
             return -1;
         m->tmark[seed1] = in;
     }
-    while (nstk > 0) {
-        int t = m->stk[--nstk];
+    /* breadth-first: the cavity list is its own queue */
+    for (int q = 0; q < m->ncav; q++) {
+        int t = m->cav[q];
         for (int k = 0; k < 3; k++) {
             int c = 3 * t + k, n = m->N[c];
             if (n < 0) {
@@ -278,8 +276,7 @@ int cdt_mesh_cavity(cdt_mesh *m, const double p[2], int seed0, int seed1)
             if (m->S[c] < 0 && m->tmark[u] != out) {
                 if (cdt_incircle_t(m, u, p) > 0) {
                     m->tmark[u] = in;
-                    if (push_int(&m->cav, &m->ncav, &m->capcav, u) ||
-                        push_int(&m->stk, &nstk, &m->capstk, u))
+                    if (push_int(&m->cav, &m->ncav, &m->capcav, u))
                         return -1;
                     continue;
                 }

@@ -44,7 +44,6 @@ typedef struct cdt_mesh {
     /* cavity scratch */
     int *cav, ncav, capcav;       /* triangles of the cavity */
     int *bnd, nbnd, capbnd;       /* boundary corners of the cavity */
-    int *stk, capstk;             /* DFS stack */
     /* per-boundary-edge copies used while committing */
     int *ba, *bb, *bn, *bs, capbx;
     unsigned char *br;
