@@ -487,6 +487,10 @@ static scaf_status check_input(const cdt_input *in, const cdt_options *opt, scaf
         if (!isfinite(in->points[2 * i]) || !isfinite(in->points[2 * i + 1]))
             return err_set(err, SCAF_ERR_MESH, "point %d has a non-finite coordinate "
                            "(%g, %g)", i, in->points[2 * i], in->points[2 * i + 1]);
+        else if (fabs(in->points[2 * i]) > 0x1p500 || fabs(in->points[2 * i + 1]) > 0x1p500)
+            /* the enclosing triangle is 64 times larger: keep it finite */
+            return err_set(err, SCAF_ERR_MESH, "point %d (%g, %g) is too large (|coordinate| "
+                           "> 2^500)", i, in->points[2 * i], in->points[2 * i + 1]);
     for (int s = 0; s < in->nsegments; s++) {
         int a = in->segments[2 * s], b = in->segments[2 * s + 1];
         if (a < 0 || b < 0 || a >= in->npoints || b >= in->npoints)

@@ -89,7 +89,10 @@ typedef struct cdt_output {
  *
  * Fails with SCAF_ERR_MESH (message names the segments) on
  * invalid input: crossing segments, a point in the interior of a segment,
- * duplicate points, non-finite coordinates. On failure *out is empty. */
+ * duplicate points, non-finite coordinates (or beyond 2^500 in magnitude),
+ * segment indices out of range. Bad arguments (negative counts, missing
+ * arrays, min_angle_deg outside [0, 60)) give SCAF_ERR_USAGE. On failure
+ * *out is empty. */
 scaf_status cdt_triangulate(const cdt_input *in, const cdt_options *opt, cdt_output *out,
                             scaf_error *err);
 

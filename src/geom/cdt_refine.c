@@ -71,16 +71,30 @@ static int seg_splittable(const refiner *r, int code)
     return code >= 0 && !(code & 1) && r->prm->splittable[code >> 1];
 }
 
-static double d2(const double *a, const double *b)
+/* 2^-e with 2^e the binade of s: multiplying by it is exact and brings
+ * s into [0.5, 1), so the floating-point geometry below neither
+ * overflows nor underflows at any input scale. */
+static double unit_scale(double s)
 {
-    double dx = a[0] - b[0], dy = a[1] - b[1];
-    return dx * dx + dy * dy;
+    int e;
+    frexp(s, &e);
+    return ldexp(1.0, -e);
+}
+
+static double max_abs4(double a, double b, double c, double d)
+{
+    return fmax(fmax(fabs(a), fabs(b)), fmax(fabs(c), fabs(d)));
 }
 
 /* p in the closed diametral circle of u-w */
 static int encroaches(const double *u, const double *w, const double *p)
 {
-    return (u[0] - p[0]) * (w[0] - p[0]) + (u[1] - p[1]) * (w[1] - p[1]) <= 0;
+    double ux = u[0] - p[0], uy = u[1] - p[1], wx = w[0] - p[0], wy = w[1] - p[1];
+    double s = max_abs4(ux, uy, wx, wy);
+    if (s == 0)
+        return 1;
+    double f = unit_scale(s);
+    return (ux * f) * (wx * f) + (uy * f) * (wy * f) <= 0;
 }
 
 /* Would a Steiner point p next to unsplittable segment u-w spoil it? True
@@ -94,6 +108,11 @@ static int spoils(const refiner *r, const double *u, const double *w, const doub
 {
     double ux = u[0] - p[0], uy = u[1] - p[1], wx = w[0] - p[0], wy = w[1] - p[1];
     double sx = w[0] - u[0], sy = w[1] - u[1];
+    double sc = fmax(max_abs4(ux, uy, wx, wy), fmax(fabs(sx), fabs(sy)));
+    if (sc == 0)
+        return 1;
+    double f = unit_scale(sc);
+    ux *= f, uy *= f, wx *= f, wy *= f, sx *= f, sy *= f;
     double lu = sqrt(ux * ux + uy * uy), lw = sqrt(wx * wx + wy * wy), ls = sqrt(sx * sx + sy * sy);
     if (!(lu > 0 && lw > 0 && ls > 0))
         return 1;
@@ -108,21 +127,36 @@ static int spoils(const refiner *r, const double *u, const double *w, const doub
     return 0;
 }
 
-/* 0 good, 1 bad angle, 2 too big. *k gets the corner of the smallest angle. */
-static int badness(const refiner *r, int t, int *kmin)
+/* 0 good, 1 bad angle, 2 too big. *k gets the corner of the smallest
+ * angle; *f the exact power-of-two scale used (edge vectors times *f are
+ * below 1 in every coordinate). */
+static int badness(const refiner *r, int t, int *kmin, double *fscale)
 {
     const cdt_mesh *m = r->m;
     const int *v = m->V + 3 * t;
     const double *p0 = m->xy + 2 * v[0], *p1 = m->xy + 2 * v[1], *p2 = m->xy + 2 * v[2];
-    double l[3] = {d2(p1, p2), d2(p2, p0), d2(p0, p1)};
-    double a2 = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    double e[3][2] = {{p2[0] - p1[0], p2[1] - p1[1]}, {p0[0] - p2[0], p0[1] - p2[1]},
+                      {p1[0] - p0[0], p1[1] - p0[1]}};
+    double sc = fmax(max_abs4(e[0][0], e[0][1], e[1][0], e[1][1]), fmax(fabs(e[2][0]), fabs(e[2][1])));
+    *kmin = 0;
+    if (fscale)
+        *fscale = sc > 0 ? unit_scale(sc) : 1.0;
+    if (!(sc > 0))
+        return 0;
+    double f = unit_scale(sc), l[3];
+    for (int i = 0; i < 3; i++) {
+        e[i][0] *= f;
+        e[i][1] *= f;
+        l[i] = e[i][0] * e[i][0] + e[i][1] * e[i][1];
+    }
+    double a2 = e[2][0] * (-e[1][1]) - e[2][1] * (-e[1][0]); /* (p1-p0) x (p2-p0), scaled */
     int k = 0;
     if (l[1] < l[k])
         k = 1;
     if (l[2] < l[k])
         k = 2;
     *kmin = k;
-    if (r->prm->max_area > 0 && 0.5 * a2 > r->prm->max_area)
+    if (r->prm->max_area > 0 && 0.5 * a2 / f / f > r->prm->max_area)
         return 2;
     if (r->sin2 <= 0)
         return 0;
@@ -138,7 +172,7 @@ static int badness(const refiner *r, int t, int *kmin)
 static int push_tri(refiner *r, int t, int tries)
 {
     int k;
-    if (r->m->reg[t] != CDT_REG_DOMAIN || !badness(r, t, &k))
+    if (r->m->reg[t] != CDT_REG_DOMAIN || !badness(r, t, &k, NULL))
         return 0;
     const int *v = r->m->V + 3 * t;
     int item[5] = {t, v[0], v[1], v[2], tries};
@@ -242,7 +276,7 @@ static int split_segment(refiner *r, int a, int b, int forced)
         v1 = a;
     }
     const double *p0 = m->xy + 2 * v0, *p1 = m->xy + 2 * v1;
-    double len = sqrt(d2(p0, p1)), f = 0.5;
+    double len = hypot(p1[0] - p0[0], p1[1] - p0[1]), f = 0.5;
     if ((v0 < r->prm->ninput) != (v1 < r->prm->ninput) && len > 0) {
         double d = exp2(round(log2(0.5 * len)));
         f = d / len;
@@ -336,40 +370,38 @@ static int refine_triangle(refiner *r, const int *item)
     const int *v = m->V + 3 * t;
     if (v[0] != item[1] || v[1] != item[2] || v[2] != item[3] || m->reg[t] != CDT_REG_DOMAIN)
         return 0;
-    int k, bad = badness(r, t, &k);
+    int k;
+    double f;
+    int bad = badness(r, t, &k, &f);
     if (!bad)
         return 0;
-    /* circumcenter, and the off-center on the shortest edge's bisector */
+    /* circumcenter and off-center in coordinates relative to pp, scaled by f */
     const double *pp = m->xy + 2 * v[(k + 1) % 3], *pq = m->xy + 2 * v[(k + 2) % 3];
     const double *pr = m->xy + 2 * v[k];
-    double bx = pq[0] - pp[0], by = pq[1] - pp[1], cx = pr[0] - pp[0], cy = pr[1] - pp[1];
+    double bx = (pq[0] - pp[0]) * f, by = (pq[1] - pp[1]) * f;
+    double cx = (pr[0] - pp[0]) * f, cy = (pr[1] - pp[1]) * f;
     double den = 2.0 * (bx * cy - by * cx);
     if (!(den > 0)) {
         r->st->nrejected++;
         return 0;
     }
     double bb = bx * bx + by * by, cc = cx * cx + cy * cy;
-    double p[2] = {pp[0] + (cy * bb - by * cc) / den, pp[1] + (bx * cc - cx * bb) / den};
-    double mx = 0.5 * (pp[0] + pq[0]), my = 0.5 * (pp[1] + pq[1]);
+    double ux = (cy * bb - by * cc) / den, uy = (bx * cc - cx * bb) / den;
+    double mx = 0.5 * bx, my = 0.5 * by;
     if (bad == 1) {
-        double dist = sqrt((p[0] - mx) * (p[0] - mx) + (p[1] - my) * (p[1] - my));
-        double h = r->offh * sqrt(bb);
-        if (dist > h) {
-            p[0] = mx + (p[0] - mx) * (h / dist);
-            p[1] = my + (p[1] - my) * (h / dist);
+        double dist = hypot(ux - mx, uy - my), h = r->offh * sqrt(bb);
+        if (dist > h) { /* the off-center: a triangle just meeting the bound on pp-pq */
+            ux = mx + (ux - mx) * (h / dist);
+            uy = my + (uy - my) * (h / dist);
         }
     }
     /* second choice when the first is refused next to an unsplittable
        segment: the centroid (area), or a point half as far from the
        shortest edge (angle: still a good triangle on that edge) */
-    double p2[2];
-    if (bad == 2) {
-        p2[0] = (pp[0] + pq[0] + pr[0]) / 3.0;
-        p2[1] = (pp[1] + pq[1] + pr[1]) / 3.0;
-    } else {
-        p2[0] = mx + 0.5 * (p[0] - mx);
-        p2[1] = my + 0.5 * (p[1] - my);
-    }
+    double vx = bad == 2 ? (bx + cx) / 3.0 : mx + 0.5 * (ux - mx);
+    double vy = bad == 2 ? (by + cy) / 3.0 : my + 0.5 * (uy - my);
+    double p[2] = {pp[0] + ux / f, pp[1] + uy / f};
+    double p2[2] = {pp[0] + vx / f, pp[1] + vy / f};
     int verdict = try_point(r, t, p);
     if (verdict == 2)
         verdict = try_point(r, t, p2);

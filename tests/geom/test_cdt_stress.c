@@ -240,8 +240,8 @@ static void charts_nested_in_holes_deeply(void **state)
 static void tiny_and_huge_coordinates(void **state)
 {
     (void)state;
-    double scales[] = {1e-9, 1e9};
-    for (int s = 0; s < 2; s++) {
+    double scales[] = {1e-9, 1e9, 1e-150, 1e120};
+    for (int s = 0; s < 4; s++) {
         cdt_builder b;
         cb_init(&b);
         double xy[2 * 100];
