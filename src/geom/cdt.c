@@ -189,7 +189,10 @@ static scaf_status restore_delaunay(recover_ctx *ctx, scaf_error *err)
 {
     cdt_mesh *m = ctx->m;
     pairs *q = &ctx->fresh;
+    long budget = 64L * m->nt + 1024; /* Lawson terminates; this only guards bugs */
     while (q->n > 0) {
+        if (--budget < 0)
+            return err_set(err, SCAF_ERR_INTERNAL, "Delaunay flips did not converge");
         q->n--;
         int u = q->v[2 * q->n], w = q->v[2 * q->n + 1];
         int c = cdt_mesh_find_edge(m, u, w);
@@ -248,7 +251,7 @@ static scaf_status recover_segment(recover_ctx *ctx, int s, scaf_error *err)
         if (n < 0)
             break;
         ca = cdt_next(n);
-    } while (ca != c0 && ++guard < 1000000);
+    } while (ca != c0 && ++guard < 3L * m->nt + 3);
     if (found < 0)
         return err_set(err, SCAF_ERR_INTERNAL, "segment %d (%d->%d): no triangle at point %d "
                        "points towards point %d", s, a, b, a, b);

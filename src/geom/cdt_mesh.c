@@ -369,6 +369,7 @@ int cdt_mesh_find_edge(const cdt_mesh *m, int a, int b)
     if (c0 < 0)
         return -1;
     int c = c0;
+    long guard = 3L * m->nt + 3; /* a broken structure must not hang us */
     /* counter-clockwise around a */
     for (;;) {
         if (m->V[cdt_next(c)] == b)
@@ -377,7 +378,7 @@ int cdt_mesh_find_edge(const cdt_mesh *m, int a, int b)
         if (n < 0)
             break;
         c = cdt_next(n);
-        if (c == c0)
+        if (c == c0 || --guard < 0)
             return -1;
     }
     /* hit the hull: go clockwise from the start */
@@ -389,7 +390,7 @@ int cdt_mesh_find_edge(const cdt_mesh *m, int a, int b)
         c = cdt_prev(n);
         if (m->V[cdt_next(c)] == b)
             return cdt_prev(c);
-        if (c == c0)
+        if (c == c0 || --guard < 0)
             return -1;
     }
 }
