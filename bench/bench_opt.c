@@ -8,6 +8,8 @@
  * of re-analysing with the previous permutation (cholmod_analyze_p), and a
  * checksum of the final positions (determinism across runs / threads).
  * Usage: bench_opt [rings segments iterations]   (default 196 256 6)
+ *        bench_opt --obj FILE.obj [iterations]   a real disk mesh (v/f lines
+ *        only; its single boundary loop fixed on the circle)
  * Set OPENBLAS_NUM_THREADS to study BLAS threading.
  */
 #include <stdint.h>
@@ -32,6 +34,12 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+static int cmp_ll(const void *a, const void *b)
+{
+    long long x = *(const long long *)a, y = *(const long long *)b;
+    return (x > y) - (x < y);
+}
+
 static uint64_t checksum(const double *x, size_t n)
 {
     uint64_t h = 1469598103934665603ULL;
@@ -40,16 +48,79 @@ static uint64_t checksum(const double *x, size_t n)
     return h;
 }
 
+/* Minimal OBJ reading for the benchmark only (the library's reader lives in
+ * mesh/): v and f lines, first index of each corner, fan triangulation. */
+static int load_obj(const char *path, polar_disk *m)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) return -1;
+    size_t cv = 1024, cf = 1024;
+    m->nv = m->nf = 0;
+    m->V = malloc(3 * cv * sizeof *m->V);
+    m->F = malloc(3 * cf * sizeof *m->F);
+    char line[4096];
+    while (m->V && m->F && fgets(line, sizeof line, f)) {
+        if (line[0] == 'v' && line[1] == ' ') {
+            if ((size_t)m->nv == cv) { cv *= 2; m->V = realloc(m->V, 3 * cv * sizeof *m->V); if (!m->V) break; }
+            double *p = m->V + 3 * (size_t)m->nv++;
+            if (sscanf(line + 2, "%lf %lf %lf", p, p + 1, p + 2) != 3) { fclose(f); return -1; }
+        } else if (line[0] == 'f' && line[1] == ' ') {
+            int idx[64], n = 0;
+            char *tok = strtok(line + 2, " \t\r\n");
+            while (tok && n < 64) { idx[n++] = atoi(tok) - 1; tok = strtok(NULL, " \t\r\n"); }
+            for (int k = 1; k + 1 < n; k++) {
+                if ((size_t)m->nf == cf) { cf *= 2; m->F = realloc(m->F, 3 * cf * sizeof *m->F); if (!m->F) break; }
+                int *t = m->F + 3 * (size_t)m->nf++;
+                t[0] = idx[0]; t[1] = idx[k]; t[2] = idx[k + 1];
+            }
+        }
+    }
+    fclose(f);
+    if (!m->V || !m->F) return -1;
+    /* Boundary half-edges: directed edges whose reverse is absent. */
+    int *next = malloc((size_t)m->nv * sizeof *next);
+    long long *keys = malloc(3 * (size_t)m->nf * sizeof *keys);
+    if (!next || !keys) return -1;
+    for (int v = 0; v < m->nv; v++) next[v] = -1;
+    for (int t = 0; t < m->nf; t++)
+        for (int k = 0; k < 3; k++)
+            keys[3 * t + k] = (long long)m->F[3 * t + k] * m->nv + m->F[3 * t + (k + 1) % 3];
+    qsort(keys, 3 * (size_t)m->nf, sizeof *keys, cmp_ll);
+    int start = -1, nb = 0;
+    for (size_t k = 0; k < 3 * (size_t)m->nf; k++) {
+        long long a = keys[k] / m->nv, b = keys[k] % m->nv, rev = b * m->nv + a;
+        if (!bsearch(&rev, keys, 3 * (size_t)m->nf, sizeof *keys, cmp_ll)) { next[a] = (int)b; start = (int)a; nb++; }
+    }
+    free(keys);
+    m->loops = malloc(((size_t)nb + 1) * sizeof *m->loops);
+    if (start < 0 || !m->loops) return -1;
+    int len = 0, v = start;
+    do { m->loops[len++] = v; v = next[v]; } while (v != start && v >= 0 && len < nb);
+    free(next);
+    if (len != nb) { fprintf(stderr, "%s: %d boundary edges, first loop has %d (not one loop)\n", path, nb, len); return -1; }
+    m->nloops = 1;
+    m->start[0] = 0;
+    m->start[1] = len;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
-    int rings = argc > 1 ? atoi(argv[1]) : 196, seg = argc > 2 ? atoi(argv[2]) : 256;
-    int iters = argc > 3 ? atoi(argv[3]) : 6;
-    if (rings < 2 || seg < 3 || iters < 2) {
-        fprintf(stderr, "usage: bench_opt [rings>=2 segments>=3 iterations>=2]\n");
-        return 2;
-    }
     polar_disk m;
-    if (polar_disk_make(&m, rings, seg, 1.0, 0) != 0) return 1;
+    int iters;
+    if (argc > 2 && strcmp(argv[1], "--obj") == 0) {
+        iters = argc > 3 ? atoi(argv[3]) : 6;
+        if (load_obj(argv[2], &m) != 0) { fprintf(stderr, "cannot load %s\n", argv[2]); return 1; }
+    } else {
+        int rings = argc > 1 ? atoi(argv[1]) : 196, seg = argc > 2 ? atoi(argv[2]) : 256;
+        iters = argc > 3 ? atoi(argv[3]) : 6;
+        if (rings < 2 || seg < 3) {
+            fprintf(stderr, "usage: bench_opt [rings>=2 segments>=3 iterations>=2] | --obj FILE [iterations]\n");
+            return 2;
+        }
+        if (polar_disk_make(&m, rings, seg, 1.0, 0) != 0) return 1;
+    }
+    if (iters < 2) iters = 2;
     const char *thr = getenv("OPENBLAS_NUM_THREADS");
     printf("disk: %d vertices, %d triangles; OPENBLAS_NUM_THREADS=%s\n", m.nv, m.nf, thr ? thr : "(unset)");
     scaf_error err;
@@ -71,10 +142,24 @@ int main(int argc, char **argv)
         return 1;
     }
     printf("tutte embedding: %.3f s\n", timer_now() - t0);
+    opt_term tstart = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+    printf("Tutte start: E = %.5f\n", opt_term_mean_energy(&tstart, X0));
     t0 = timer_now();
-    opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_HARMONIC, X, NULL, &err);
-    printf("harmonic embedding: %.3f s\n\n", timer_now() - t0);
+    int fb = 0;
+    if (opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_HARMONIC, X0, &fb, &err) != SCAF_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    printf("harmonic embedding: %.3f s%s; start: E = %.5f (the iterations below start here)\n\n",
+           timer_now() - t0, fb ? " (fell back to Tutte)" : "", opt_term_mean_energy(&tstart, X0));
     for (int k = 0; k < m.start[1]; k++) fixed[m.loops[k]] = 1;
+    {   /* Unreferenced vertices have no simplex: keep them out of the system. */
+        unsigned char *used = calloc((size_t)m.nv, 1);
+        if (!used) return 1;
+        for (int k = 0; k < 3 * m.nf; k++) used[m.F[k]] = 1;
+        for (int v = 0; v < m.nv; v++) if (!used[v]) fixed[v] = 1;
+        free(used);
+    }
     int nfree = opt_dof_numbering(m.nv, fixed, dof);
     opt_term t = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
 
@@ -144,7 +229,7 @@ int main(int argc, char **argv)
         double pa = timer_now();
         opt_proxy_block bb = {0};
         opt_proxy_block_pattern(&bb, &S, dof, nfree, &err);
-        printf("pattern build (sort + map) %.4f s; factor flops %.3g (%.2f GFlop/s), nnz(L) %.0f\n",
+        printf("pattern build (sort + map) %.4f s; factor flops %.3g (%.2f GFlop/s), nnz(L) %.0f\n\n",
                timer_now() - pa, opt_chol_get_stats(c).flops,
                1e-9 * opt_chol_get_stats(c).flops / t_fac, opt_chol_get_stats(c).nnz_L);
         opt_proxy_block_free(&bb);
