@@ -108,11 +108,12 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
     for (int k = 0; k < nterms; k++) {
         opt_proxy_block *b = &sl->blk[k];
         int stale = !b->A.colptr || sl->blk_of[k] != terms[k].s || b->ns != terms[k].s->n ||
-                    b->nfree != nfree || b->d != d || (term_changed && term_changed[k]);
+                    b->d != d || (term_changed && term_changed[k]);
         if (stale) {
             s = opt_proxy_block_pattern(b, terms[k].s, dof, nfree, err);
             if (s != SCAF_OK) return s;
             sl->blk_of[k] = terms[k].s;
+            st->blocks_rebuilt++;
         }
     }
     double t1 = timer_now();
@@ -125,6 +126,10 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
     double t2 = timer_now();
     s = opt_proxy_system_sum(&sl->sys, bl, nterms, err);
     if (s != SCAF_OK) return s;
+    if (sl->sys.nfree != nfree)
+        return err_set(err, SCAF_ERR_USAGE,
+                       "SLIM: %d free vertices but the simplices use only %d (a free vertex is in no "
+                       "simplex: fix it or drop it)", nfree, sl->sys.nfree);
     double t3 = timer_now();
     if (sl->o.regularization > 0) {
         opt_csc *A = &sl->sys.A;

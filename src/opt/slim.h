@@ -39,6 +39,7 @@ typedef struct opt_slim_stats {
     double t_solve;      /* triangular solves */
     double t_line_search;
     int analyzed;        /* 1 if this iteration needed a new analysis */
+    int blocks_rebuilt;  /* terms whose pattern was rebuilt this iteration */
     opt_ls_result ls;    /* step, energies before/after, backtracks */
 } opt_slim_stats;
 
