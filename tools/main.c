@@ -8,7 +8,10 @@
 
 /* Add a subcommand: write tools/cmd_NAME.c with `int cmd_NAME(int, char **)`,
  * declare it here and list it in the table. */
+int cmd_check(int argc, char **argv);
+
 const command scaf_commands[] = {
+    {"check", "verify that a mesh's UV map is bijective (exact)", cmd_check},
     {NULL, NULL, NULL}
 };
 

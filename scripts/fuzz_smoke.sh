@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Bounded fuzz smoke run of the mesh readers (libFuzzer, clang).
+#   FUZZ_SECONDS  total seconds over all fuzz targets (default 60)
+#   FUZZ_JOBS     cmake build parallelism (default 2)
+# Builds build-fuzz/ with -DSCAF_FUZZ=ON, runs every fuzz/fuzz_* target on a
+# scratch copy of fuzz/corpus (so the seed corpus in git is not modified),
+# and exits non-zero if any target crashes, leaks, times out or hits an
+# error. Crashing inputs are left in build-fuzz/fuzz-artifacts/: fix the
+# bug, then copy the input into fuzz/regressions/ (tests/mesh/
+# test_fuzz_regressions.c parses every file there).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${FUZZ_SECONDS:-60}"
+jobs="${FUZZ_JOBS:-2}"
+if ! command -v clang >/dev/null 2>&1; then
+  echo "fuzz_smoke: clang not found (install clang, see scripts/setup.sh)" >&2
+  exit 1
+fi
+CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSCAF_FUZZ=ON -DSCAF_TESTS=OFF \
+  -DSCAF_BENCH=OFF >/dev/null
+cmake --build build-fuzz -j"$jobs" >/dev/null
+targets=(build-fuzz/fuzz/fuzz_*)
+n=${#targets[@]}
+per=$(( seconds / n ))
+[ "$per" -ge 1 ] || per=1
+art=build-fuzz/fuzz-artifacts
+mkdir -p "$art"
+status=0
+for t in "${targets[@]}"; do
+  name=$(basename "$t")
+  work=build-fuzz/corpus-work/$name
+  rm -rf "$work"
+  mkdir -p "$work"
+  cp fuzz/corpus/* "$work"/ 2>/dev/null || true
+  echo "fuzz_smoke: $name for ${per}s"
+  if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
+      "$t" -max_total_time="$per" -max_len=4096 -rss_limit_mb=2048 -timeout=10 \
+      -artifact_prefix="$art/$name-" -print_final_stats=1 "$work" fuzz/regressions \
+      2>build-fuzz/"$name".log; then
+    echo "fuzz_smoke: $name FAILED; log: build-fuzz/$name.log, inputs in $art/" >&2
+    tail -n 40 build-fuzz/"$name".log >&2
+    status=1
+  else
+    grep -E '^stat::number_of_executed_units|^Done' build-fuzz/"$name".log || true
+  fi
+done
+[ "$status" -eq 0 ] && echo "fuzz_smoke: no crash"
+exit "$status"

@@ -1,0 +1,568 @@
+/* geom/bijectivity: exact checker of UV maps (see bijectivity.h).
+ *
+ * Steps: validate; orient every triangle; group the 3F half-edges by their
+ * undirected UV edge (bucket by smaller index, then sort each bucket) to
+ * find boundary, folded and non-manifold edges and to join triangles into
+ * charts; join boundary edges into loops; test boundary segment pairs
+ * found through a uniform grid (each pair tested once, in the first grid
+ * cell both bounding boxes cover); test one vertex per boundary loop
+ * against all triangles through a grid of those vertices. Allocation
+ * failures return SCAF_ERR_NOMEM with everything freed.
+ */
+#include "geom/bijectivity.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom/predicates.h"
+
+static int sgn(double x) { return (x > 0) - (x < 0); }
+
+/* ---- segment contact ---- */
+
+/* c is collinear with a, b: is it within the closed segment? */
+static int on_segment(const double *a, const double *b, const double *c)
+{
+    return fmin(a[0], b[0]) <= c[0] && c[0] <= fmax(a[0], b[0]) && fmin(a[1], b[1]) <= c[1] &&
+           c[1] <= fmax(a[1], b[1]);
+}
+
+int bij_segments_meet(const double p1[2], const double p2[2], const double q1[2],
+                      const double q2[2])
+{
+    int o1 = sgn(orient2d(p1, p2, q1)), o2 = sgn(orient2d(p1, p2, q2));
+    int o3 = sgn(orient2d(q1, q2, p1)), o4 = sgn(orient2d(q1, q2, p2));
+    if (o1 * o2 < 0 && o3 * o4 < 0) return 1;
+    if ((o1 == 0 && on_segment(p1, p2, q1)) || (o2 == 0 && on_segment(p1, p2, q2)) ||
+        (o3 == 0 && on_segment(q1, q2, p1)) || (o4 == 0 && on_segment(q1, q2, p2)))
+        return 2;
+    return 0;
+}
+
+/* Segments s-p and s-q sharing the vertex s: do they overlap along a line
+ * (the boundary folds back onto itself)? */
+static int adjacent_overlap(const double *s, const double *p, const double *q)
+{
+    if (orient2d(s, p, q) != 0) return 0;
+    int px = sgn(p[0] - s[0]), py = sgn(p[1] - s[1]);
+    int qx = sgn(q[0] - s[0]), qy = sgn(q[1] - s[1]);
+    if ((px == 0 && py == 0) || (qx == 0 && qy == 0)) return 0; /* zero length */
+    return px == qx && py == qy;
+}
+
+/* ---- union-find ---- */
+
+static int uf_find(int *parent, int x)
+{
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
+static void uf_union(int *parent, int a, int b)
+{
+    a = uf_find(parent, a);
+    b = uf_find(parent, b);
+    if (a != b) {
+        if (a < b)
+            parent[b] = a;
+        else
+            parent[a] = b;
+    }
+}
+
+/* ---- uniform grid over a box ---- */
+
+typedef struct grid {
+    double minx, miny, invx, invy;
+    int nx, ny;
+} grid;
+
+/* A grid of about `cells` square-ish cells over [minx,maxx] x [miny,maxy]. */
+static void grid_init(grid *g, double minx, double miny, double maxx, double maxy, long cells)
+{
+    double w = maxx - minx, h = maxy - miny;
+    if (cells < 1) cells = 1;
+    if (cells > (1L << 26)) cells = 1L << 26;
+    long nx, ny;
+    if (!(w > 0 && isfinite(w)) && !(h > 0 && isfinite(h))) {
+        nx = ny = 1;
+    } else if (!(w > 0 && isfinite(w))) {
+        nx = 1, ny = cells;
+    } else if (!(h > 0 && isfinite(h))) {
+        nx = cells, ny = 1;
+    } else {
+        double ax = sqrt((double)cells * w / h);
+        nx = (long)ceil(ax);
+        if (nx < 1) nx = 1;
+        if (nx > cells) nx = cells;
+        ny = (cells + nx - 1) / nx;
+    }
+    g->minx = minx;
+    g->miny = miny;
+    g->nx = (int)nx;
+    g->ny = (int)ny;
+    g->invx = (w > 0 && isfinite(w)) ? (double)nx / w : 0.0;
+    g->invy = (h > 0 && isfinite(h)) ? (double)ny / h : 0.0;
+}
+
+/* Monotone in x, so overlapping boxes get overlapping cell ranges. */
+static int cell_x(const grid *g, double x)
+{
+    double v = (x - g->minx) * g->invx;
+    if (!(v >= 0)) return 0;
+    if (v >= g->nx) return g->nx - 1;
+    return (int)v;
+}
+
+static int cell_y(const grid *g, double y)
+{
+    double v = (y - g->miny) * g->invy;
+    if (!(v >= 0)) return 0;
+    if (v >= g->ny) return g->ny - 1;
+    return (int)v;
+}
+
+/* ---- half-edge grouping ---- */
+
+typedef struct hedge {
+    int hi; /* larger UV index of the edge */
+    int he; /* 3 * triangle + corner; edge from corner to corner + 1 */
+} hedge;
+
+static int hedge_cmp(const void *a, const void *b)
+{
+    const hedge *x = a, *y = b;
+    if (x->hi != y->hi) return x->hi < y->hi ? -1 : 1;
+    return (x->he > y->he) - (x->he < y->he);
+}
+
+static void sort_bucket(hedge *h, int n)
+{
+    if (n > 24) {
+        qsort(h, (size_t)n, sizeof *h, hedge_cmp);
+        return;
+    }
+    for (int i = 1; i < n; i++) {
+        hedge t = h[i];
+        int j = i - 1;
+        while (j >= 0 && hedge_cmp(&h[j], &t) > 0) {
+            h[j + 1] = h[j];
+            j--;
+        }
+        h[j + 1] = t;
+    }
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+/* ---- the check ---- */
+
+typedef struct seg {
+    int a, b;         /* UV indices, in the direction of their triangle */
+    int lox, loy;     /* first grid cell of the bounding box */
+    int hix, hiy;
+} seg;
+
+typedef struct work {
+    signed char *ori;
+    unsigned char *tri_bnd; /* bit k: edge k of the triangle is boundary */
+    unsigned char *bvert;   /* UV point is on a boundary edge */
+    int *start, *parent, *vparent, *chart_of, *loop_rep, *loop_of_root;
+    unsigned char *loop_nested;
+    hedge *hedges;
+    seg *segs;
+    int *cell_start, *cell_items;
+    int *chart_ccw, *chart_cw, *ids;
+} work;
+
+static void work_free(work *w)
+{
+    free(w->ori);
+    free(w->tri_bnd);
+    free(w->bvert);
+    free(w->start);
+    free(w->parent);
+    free(w->vparent);
+    free(w->chart_of);
+    free(w->loop_rep);
+    free(w->loop_of_root);
+    free(w->loop_nested);
+    free(w->hedges);
+    free(w->segs);
+    free(w->cell_start);
+    free(w->cell_items);
+    free(w->chart_ccw);
+    free(w->chart_cw);
+    free(w->ids);
+    memset(w, 0, sizeof *w);
+}
+
+static scaf_status nomem(work *w, scaf_error *err, const char *what)
+{
+    work_free(w);
+    return err_nomem(err, what);
+}
+
+/* Count crossing and touching boundary segment pairs with a grid. */
+static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w, bij_report *rep,
+                                 scaf_error *err)
+{
+    if (nseg < 2) return SCAF_OK;
+    double minx = INFINITY, miny = INFINITY, maxx = -INFINITY, maxy = -INFINITY;
+    for (int i = 0; i < nseg; i++) {
+        const double *p = UV + 2 * (size_t)segs[i].a, *q = UV + 2 * (size_t)segs[i].b;
+        minx = fmin(minx, fmin(p[0], q[0]));
+        maxx = fmax(maxx, fmax(p[0], q[0]));
+        miny = fmin(miny, fmin(p[1], q[1]));
+        maxy = fmax(maxy, fmax(p[1], q[1]));
+    }
+    grid g;
+    long cells = nseg;
+    long total;
+    /* Coarsen when long segments would fill too many cells. */
+    for (;;) {
+        grid_init(&g, minx, miny, maxx, maxy, cells);
+        total = 0;
+        for (int i = 0; i < nseg; i++) {
+            seg *s = &segs[i];
+            const double *p = UV + 2 * (size_t)s->a, *q = UV + 2 * (size_t)s->b;
+            s->lox = cell_x(&g, fmin(p[0], q[0]));
+            s->hix = cell_x(&g, fmax(p[0], q[0]));
+            s->loy = cell_y(&g, fmin(p[1], q[1]));
+            s->hiy = cell_y(&g, fmax(p[1], q[1]));
+            total += (long)(s->hix - s->lox + 1) * (s->hiy - s->loy + 1);
+        }
+        if (total <= 16L * nseg + 4096 || cells <= 16) break;
+        cells /= 4;
+    }
+    size_t ncell = (size_t)g.nx * (size_t)g.ny;
+    w->cell_start = calloc(ncell + 1, sizeof *w->cell_start);
+    w->cell_items = malloc((size_t)total * sizeof *w->cell_items);
+    if (!w->cell_start || !w->cell_items) return err_nomem(err, "boundary segment grid");
+    for (int i = 0; i < nseg; i++)
+        for (int y = segs[i].loy; y <= segs[i].hiy; y++)
+            for (int x = segs[i].lox; x <= segs[i].hix; x++) w->cell_start[(size_t)y * g.nx + x + 1]++;
+    for (size_t c = 0; c < ncell; c++) w->cell_start[c + 1] += w->cell_start[c];
+    int *fill = malloc((ncell + 1) * sizeof *fill);
+    if (!fill) return err_nomem(err, "boundary segment grid");
+    memcpy(fill, w->cell_start, (ncell + 1) * sizeof *fill);
+    for (int i = 0; i < nseg; i++)
+        for (int y = segs[i].loy; y <= segs[i].hiy; y++)
+            for (int x = segs[i].lox; x <= segs[i].hix; x++)
+                w->cell_items[fill[(size_t)y * g.nx + x]++] = i;
+    free(fill);
+
+    for (int cy = 0; cy < g.ny; cy++)
+        for (int cx = 0; cx < g.nx; cx++) {
+            size_t c = (size_t)cy * g.nx + cx;
+            int b = w->cell_start[c], e = w->cell_start[c + 1];
+            for (int i = b; i < e; i++) {
+                const seg *s = &segs[w->cell_items[i]];
+                const double *p1 = UV + 2 * (size_t)s->a, *p2 = UV + 2 * (size_t)s->b;
+                for (int j = i + 1; j < e; j++) {
+                    const seg *t = &segs[w->cell_items[j]];
+                    /* test each pair once: in the first cell both cover */
+                    int fx = s->lox > t->lox ? s->lox : t->lox;
+                    int fy = s->loy > t->loy ? s->loy : t->loy;
+                    if (fx != cx || fy != cy) continue;
+                    const double *q1 = UV + 2 * (size_t)t->a, *q2 = UV + 2 * (size_t)t->b;
+                    if (fmax(p1[0], p2[0]) < fmin(q1[0], q2[0]) ||
+                        fmax(q1[0], q2[0]) < fmin(p1[0], p2[0]) ||
+                        fmax(p1[1], p2[1]) < fmin(q1[1], q2[1]) ||
+                        fmax(q1[1], q2[1]) < fmin(p1[1], p2[1]))
+                        continue;
+                    int shared = -1, op = -1, oq = -1;
+                    if (s->a == t->a) shared = s->a, op = s->b, oq = t->b;
+                    else if (s->a == t->b) shared = s->a, op = s->b, oq = t->a;
+                    else if (s->b == t->a) shared = s->b, op = s->a, oq = t->b;
+                    else if (s->b == t->b) shared = s->b, op = s->a, oq = t->a;
+                    if (shared >= 0) {
+                        if (adjacent_overlap(UV + 2 * (size_t)shared, UV + 2 * (size_t)op,
+                                             UV + 2 * (size_t)oq))
+                            rep->boundary_foldbacks++;
+                        continue;
+                    }
+                    int m = bij_segments_meet(p1, p2, q1, q2);
+                    if (m == 1)
+                        rep->boundary_crossings++;
+                    else if (m == 2)
+                        rep->boundary_touchings++;
+                }
+            }
+        }
+    free(w->cell_start);
+    free(w->cell_items);
+    w->cell_start = w->cell_items = NULL;
+    return SCAF_OK;
+}
+
+/* Is loop vertex v (not a corner of t) in the interior of the region of
+ * triangle t's chart, without touching a boundary item there? */
+static int vertex_in_triangle(const double *UV, const int *F, const work *w, int t, int v)
+{
+    const int *c = F + 3 * (size_t)t;
+    const double *p = UV + 2 * (size_t)v;
+    int s = w->ori[t];
+    int o[3];
+    for (int k = 0; k < 3; k++) {
+        o[k] = s * sgn(orient2d(UV + 2 * (size_t)c[k], UV + 2 * (size_t)c[(k + 1) % 3], p));
+        if (o[k] < 0) return 0;
+    }
+    int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+    if (zeros == 0) return 1;
+    if (zeros == 1) {
+        int k = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
+        return !(w->tri_bnd[t] & (1u << k)); /* on a boundary edge: a touching */
+    }
+    /* on a corner: edges k and k+1 meet at corner k+1 */
+    int corner = o[0] == 0 ? (o[1] == 0 ? 1 : 0) : 2;
+    return !w->bvert[c[corner]];
+}
+
+static scaf_status test_nesting(const double *UV, int nf, const int *F, work *w, int nloops,
+                                bij_report *rep, scaf_error *err)
+{
+    if (nloops == 0) return SCAF_OK;
+    double minx = INFINITY, miny = INFINITY, maxx = -INFINITY, maxy = -INFINITY;
+    for (int l = 0; l < nloops; l++) {
+        const double *p = UV + 2 * (size_t)w->loop_rep[l];
+        minx = fmin(minx, p[0]), maxx = fmax(maxx, p[0]);
+        miny = fmin(miny, p[1]), maxy = fmax(maxy, p[1]);
+    }
+    grid g;
+    grid_init(&g, minx, miny, maxx, maxy, nloops);
+    size_t ncell = (size_t)g.nx * (size_t)g.ny;
+    w->cell_start = calloc(ncell + 1, sizeof *w->cell_start);
+    w->cell_items = malloc((size_t)nloops * sizeof *w->cell_items);
+    w->loop_nested = calloc((size_t)nloops, 1);
+    if (!w->cell_start || !w->cell_items || !w->loop_nested) return err_nomem(err, "loop grid");
+    for (int l = 0; l < nloops; l++) {
+        const double *p = UV + 2 * (size_t)w->loop_rep[l];
+        w->cell_start[(size_t)cell_y(&g, p[1]) * g.nx + cell_x(&g, p[0]) + 1]++;
+    }
+    for (size_t c = 0; c < ncell; c++) w->cell_start[c + 1] += w->cell_start[c];
+    int *fill = malloc((ncell + 1) * sizeof *fill);
+    if (!fill) return err_nomem(err, "loop grid");
+    memcpy(fill, w->cell_start, (ncell + 1) * sizeof *fill);
+    for (int l = 0; l < nloops; l++) {
+        const double *p = UV + 2 * (size_t)w->loop_rep[l];
+        w->cell_items[fill[(size_t)cell_y(&g, p[1]) * g.nx + cell_x(&g, p[0])]++] = l;
+    }
+    free(fill);
+
+    for (int t = 0; t < nf; t++) {
+        if (w->ori[t] == 0) continue;
+        const int *c = F + 3 * (size_t)t;
+        const double *a = UV + 2 * (size_t)c[0], *b = UV + 2 * (size_t)c[1], *d = UV + 2 * (size_t)c[2];
+        double tminx = fmin(a[0], fmin(b[0], d[0])), tmaxx = fmax(a[0], fmax(b[0], d[0]));
+        double tminy = fmin(a[1], fmin(b[1], d[1])), tmaxy = fmax(a[1], fmax(b[1], d[1]));
+        if (tmaxx < minx || tminx > maxx || tmaxy < miny || tminy > maxy) continue;
+        int x0 = cell_x(&g, tminx), x1 = cell_x(&g, tmaxx);
+        int y0 = cell_y(&g, tminy), y1 = cell_y(&g, tmaxy);
+        for (int y = y0; y <= y1; y++)
+            for (int x = x0; x <= x1; x++) {
+                size_t cell = (size_t)y * g.nx + x;
+                for (int i = w->cell_start[cell]; i < w->cell_start[cell + 1]; i++) {
+                    int l = w->cell_items[i];
+                    int v = w->loop_rep[l];
+                    if (w->loop_nested[l] || v == c[0] || v == c[1] || v == c[2]) continue;
+                    const double *p = UV + 2 * (size_t)v;
+                    if (p[0] < tminx || p[0] > tmaxx || p[1] < tminy || p[1] > tmaxy) continue;
+                    if (vertex_in_triangle(UV, F, w, t, v)) w->loop_nested[l] = 1;
+                }
+            }
+    }
+    for (int l = 0; l < nloops; l++) rep->nested_loops += w->loop_nested[l];
+    return SCAF_OK;
+}
+
+scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int *chart,
+                      signed char *orient, bij_report *rep, scaf_error *err)
+{
+    memset(rep, 0, sizeof *rep);
+    work w;
+    memset(&w, 0, sizeof w);
+    scaf_status st;
+
+    /* ---- check inputs ---- */
+    if (nuv < 0 || nf < 0 || (nuv > 0 && !UV) || (nf > 0 && !F))
+        return err_set(err, SCAF_ERR_USAGE, "bij_check: bad arguments (nuv %d, nf %d)", nuv, nf);
+    for (int i = 0; i < nuv; i++)
+        if (!isfinite(UV[2 * (size_t)i]) || !isfinite(UV[2 * (size_t)i + 1]))
+            return err_set(err, SCAF_ERR_MESH, "UV point %d is not finite (%g, %g)", i,
+                           UV[2 * (size_t)i], UV[2 * (size_t)i + 1]);
+    for (int t = 0; t < nf; t++)
+        for (int k = 0; k < 3; k++) {
+            int v = F[3 * (size_t)t + k];
+            if (v < 0 || v >= nuv)
+                return err_set(err, SCAF_ERR_MESH,
+                               "triangle %d corner %d: UV index %d out of range [0, %d)", t, k, v,
+                               nuv);
+        }
+    if (chart)
+        for (int t = 0; t < nf; t++)
+            if (chart[t] < 0)
+                return err_set(err, SCAF_ERR_MESH, "triangle %d: negative chart id %d", t,
+                               chart[t]);
+    rep->triangles = nf;
+
+    /* ---- orientation ---- */
+    w.ori = malloc((size_t)nf + 1);
+    if (!w.ori) return nomem(&w, err, "triangle orientations");
+    for (int t = 0; t < nf; t++) {
+        const int *c = F + 3 * (size_t)t;
+        int s = sgn(orient2d(UV + 2 * (size_t)c[0], UV + 2 * (size_t)c[1], UV + 2 * (size_t)c[2]));
+        w.ori[t] = (signed char)s;
+        if (s > 0) rep->positive++;
+        else if (s < 0) rep->flipped++;
+        else rep->degenerate++;
+        if (orient) orient[t] = (signed char)s;
+    }
+
+    /* ---- group half-edges by undirected UV edge ---- */
+    w.start = calloc((size_t)nuv + 2, sizeof *w.start);
+    w.hedges = malloc(3 * (size_t)nf * sizeof *w.hedges + 1);
+    w.tri_bnd = calloc((size_t)nf + 1, 1);
+    w.bvert = calloc((size_t)nuv + 1, 1);
+    w.parent = malloc(((size_t)nf + 1) * sizeof *w.parent);
+    if (!w.start || !w.hedges || !w.tri_bnd || !w.bvert || !w.parent)
+        return nomem(&w, err, "edge table");
+    for (int t = 0; t < nf; t++) w.parent[t] = t;
+    for (size_t h = 0; h < 3 * (size_t)nf; h++) {
+        int a = F[h], b = F[h - h % 3 + (h % 3 + 1) % 3];
+        if (a != b) w.start[(a < b ? a : b) + 1]++;
+    }
+    for (int i = 0; i < nuv; i++) w.start[i + 1] += w.start[i];
+    int nhe = w.start[nuv];
+    {
+        int *pos = malloc(((size_t)nuv + 1) * sizeof *pos);
+        if (!pos) return nomem(&w, err, "edge table");
+        memcpy(pos, w.start, ((size_t)nuv + 1) * sizeof *pos);
+        for (size_t h = 0; h < 3 * (size_t)nf; h++) {
+            int a = F[h], b = F[h - h % 3 + (h % 3 + 1) % 3];
+            if (a == b) continue;
+            int lo = a < b ? a : b;
+            hedge e = {a < b ? b : a, (int)h};
+            w.hedges[pos[lo]++] = e;
+        }
+        free(pos);
+    }
+    int nseg = 0, segcap = 0;
+    for (int v = 0; v < nuv; v++) {
+        int b = w.start[v], e = w.start[v + 1];
+        sort_bucket(w.hedges + b, e - b);
+        for (int i = b; i < e;) {
+            int j = i + 1;
+            while (j < e && w.hedges[j].hi == w.hedges[i].hi) j++;
+            int n = j - i;
+            if (n == 1) {
+                int h = w.hedges[i].he, t = h / 3, k = h % 3;
+                if (nseg == segcap) {
+                    segcap = segcap ? 2 * segcap : 1024;
+                    seg *ns = realloc(w.segs, (size_t)segcap * sizeof *ns);
+                    if (!ns) return nomem(&w, err, "boundary segments");
+                    w.segs = ns;
+                }
+                seg *s = &w.segs[nseg++];
+                s->a = F[3 * (size_t)t + k];
+                s->b = F[3 * (size_t)t + (k + 1) % 3];
+                w.tri_bnd[t] |= (unsigned char)(1u << k);
+                w.bvert[s->a] = w.bvert[s->b] = 1;
+            } else {
+                if (n == 2) {
+                    if (F[w.hedges[i].he] == F[w.hedges[i + 1].he]) rep->folded_edges++;
+                } else {
+                    rep->nonmanifold_edges++;
+                }
+                for (int q = i + 1; q < j; q++)
+                    uf_union(w.parent, w.hedges[i].he / 3, w.hedges[q].he / 3);
+            }
+            i = j;
+        }
+    }
+    (void)nhe;
+    rep->boundary_edges = nseg;
+    free(w.hedges);
+    w.hedges = NULL;
+
+    /* ---- charts ---- */
+    w.chart_of = malloc(((size_t)nf + 1) * sizeof *w.chart_of);
+    if (!w.chart_of) return nomem(&w, err, "charts");
+    if (chart) {
+        w.ids = malloc(((size_t)nf + 1) * sizeof *w.ids);
+        if (!w.ids) return nomem(&w, err, "charts");
+        memcpy(w.ids, chart, (size_t)nf * sizeof *w.ids);
+        qsort(w.ids, (size_t)nf, sizeof *w.ids, cmp_int);
+        int n = 0;
+        for (int t = 0; t < nf; t++)
+            if (t == 0 || w.ids[t] != w.ids[t - 1]) w.ids[n++] = w.ids[t];
+        rep->charts = n;
+        for (int t = 0; t < nf; t++) {
+            int *f = bsearch(&chart[t], w.ids, (size_t)n, sizeof *w.ids, cmp_int);
+            w.chart_of[t] = (int)(f - w.ids);
+        }
+    } else {
+        int n = 0;
+        for (int t = 0; t < nf; t++) {
+            int r = uf_find(w.parent, t);
+            if (r == t) w.chart_of[t] = n++;
+            else w.chart_of[t] = w.chart_of[r]; /* roots are the smallest index */
+        }
+        rep->charts = n;
+    }
+    w.chart_ccw = calloc((size_t)rep->charts + 1, sizeof *w.chart_ccw);
+    w.chart_cw = calloc((size_t)rep->charts + 1, sizeof *w.chart_cw);
+    if (!w.chart_ccw || !w.chart_cw) return nomem(&w, err, "charts");
+    for (int t = 0; t < nf; t++) {
+        if (w.ori[t] > 0) w.chart_ccw[w.chart_of[t]]++;
+        if (w.ori[t] < 0) w.chart_cw[w.chart_of[t]]++;
+    }
+    for (int c = 0; c < rep->charts; c++) {
+        if (w.chart_cw[c] > 0 && w.chart_ccw[c] == 0) rep->mirrored_charts++;
+        if (w.chart_cw[c] > 0 && w.chart_ccw[c] > 0) rep->mixed_charts++;
+    }
+
+    /* ---- boundary loops: one representative vertex each ---- */
+    w.vparent = malloc(((size_t)nuv + 1) * sizeof *w.vparent);
+    w.loop_of_root = malloc(((size_t)nuv + 1) * sizeof *w.loop_of_root);
+    if (!w.vparent || !w.loop_of_root) return nomem(&w, err, "boundary loops");
+    for (int v = 0; v < nuv; v++) w.vparent[v] = v, w.loop_of_root[v] = -1;
+    for (int i = 0; i < nseg; i++) uf_union(w.vparent, w.segs[i].a, w.segs[i].b);
+    int nloops = 0;
+    for (int v = 0; v < nuv; v++)
+        if (w.bvert[v] && uf_find(w.vparent, v) == v) nloops++;
+    w.loop_rep = malloc(((size_t)nloops + 1) * sizeof *w.loop_rep);
+    if (!w.loop_rep) return nomem(&w, err, "boundary loops");
+    nloops = 0;
+    for (int v = 0; v < nuv; v++)
+        if (w.bvert[v] && uf_find(w.vparent, v) == v) w.loop_rep[nloops++] = v;
+    rep->boundary_loops = nloops;
+
+    /* ---- overlaps ---- */
+    st = test_segments(UV, w.segs, nseg, &w, rep, err);
+    if (st != SCAF_OK) {
+        work_free(&w);
+        return st;
+    }
+    st = test_nesting(UV, nf, F, &w, nloops, rep, err);
+    if (st != SCAF_OK) {
+        work_free(&w);
+        return st;
+    }
+
+    rep->bijective = rep->flipped == 0 && rep->degenerate == 0 && rep->boundary_crossings == 0 &&
+                     rep->boundary_touchings == 0 && rep->boundary_foldbacks == 0 &&
+                     rep->folded_edges == 0 &&
+                     rep->nonmanifold_edges == 0 && rep->nested_loops == 0;
+    work_free(&w);
+    return SCAF_OK;
+}

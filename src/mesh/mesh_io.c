@@ -1,0 +1,190 @@
+/* mesh/mesh_io: reading a mesh file (format by extension, gzip transparent).
+ *
+ * mesh_read loads the whole file into memory (plain files with one read of
+ * the known size; gzip files, recognized by their magic bytes, through
+ * zlib's gzread into a growing buffer), then hands it to mesh_parse, which
+ * dispatches to the OBJ, OFF or PLY parser. The format comes from the
+ * extension with any ".gz" removed; an unknown extension falls back to
+ * looking at the content ("ply" / "...OFF" first token, else OBJ).
+ *
+ * Failures: SCAF_ERR_IO naming the path when the file cannot be opened or
+ * read, SCAF_ERR_PARSE for corrupt gzip data or malformed content
+ * ("FILE:LINE: reason"), SCAF_ERR_NOMEM.
+ */
+#include "mesh/mesh_io.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include "mesh/mesh_readers.h"
+
+/* Case-insensitive "does s end with suffix". */
+static int ends_with(const char *s, size_t n, const char *suffix)
+{
+    size_t k = strlen(suffix);
+    return n >= k && strncasecmp(s + n - k, suffix, k) == 0;
+}
+
+static mesh_format format_from_name(const char *path)
+{
+    size_t n = strlen(path);
+    if (ends_with(path, n, ".gz")) n -= 3;
+    if (ends_with(path, n, ".obj")) return MESH_FORMAT_OBJ;
+    if (ends_with(path, n, ".off")) return MESH_FORMAT_OFF;
+    if (ends_with(path, n, ".ply")) return MESH_FORMAT_PLY;
+    return MESH_FORMAT_UNKNOWN;
+}
+
+static mesh_format format_from_content(const char *data, size_t size)
+{
+    if (size >= 3 && memcmp(data, "ply", 3) == 0) return MESH_FORMAT_PLY;
+    size_t i = 0;
+    while (i < size && (data[i] == ' ' || data[i] == '\t' || data[i] == '\r' || data[i] == '\n')) i++;
+    size_t j = i;
+    while (j < size && j - i < 8 && data[j] > ' ') j++;
+    if (j - i >= 3 && memcmp(data + j - 3, "OFF", 3) == 0) return MESH_FORMAT_OFF;
+    return MESH_FORMAT_OBJ;
+}
+
+scaf_status mesh_parse(const char *data, size_t size, mesh_format format, const char *name, mesh *m,
+                       mesh_read_info *info, scaf_error *err)
+{
+    mesh_read_info scratch;
+    if (!info) info = &scratch;
+    memset(info, 0, sizeof *info);
+    memset(m, 0, sizeof *m);
+    if (!name) name = "<memory>";
+    if (!data && size) return err_set(err, SCAF_ERR_USAGE, "mesh_parse: NULL data");
+    if (!data) data = "";
+    if (format == MESH_FORMAT_UNKNOWN) format = format_from_content(data, size);
+    switch (format) {
+    case MESH_FORMAT_OBJ: return mesh_parse_obj(data, size, name, m, info, err);
+    case MESH_FORMAT_OFF: return mesh_parse_off(data, size, name, m, info, err);
+    case MESH_FORMAT_PLY: return mesh_parse_ply(data, size, name, m, info, err);
+    default: return err_set(err, SCAF_ERR_USAGE, "%s: unknown mesh format", name);
+    }
+}
+
+/* Read a whole plain file of known size. */
+static scaf_status load_plain(int fd, const char *path, size_t size, char **out, size_t *out_size,
+                              scaf_error *err)
+{
+    char *buf = malloc(size ? size : 1);
+    if (!buf) return err_set(err, SCAF_ERR_NOMEM, "%s: out of memory (%zu bytes)", path, size);
+    size_t got = 0;
+    while (got < size) {
+        ssize_t r = read(fd, buf + got, size - got > (1u << 30) ? (1u << 30) : size - got);
+        if (r < 0 && errno == EINTR) continue;
+        if (r < 0) {
+            int e = errno;
+            free(buf);
+            return err_set(err, SCAF_ERR_IO, "%s: cannot read: %s", path, strerror(e));
+        }
+        if (r == 0) break; /* file shrank while reading: parse what is there */
+        got += (size_t)r;
+    }
+    *out = buf;
+    *out_size = got;
+    return SCAF_OK;
+}
+
+/* Decompress a whole gzip file (fd is consumed). */
+static scaf_status load_gzip(int fd, const char *path, size_t compressed, char **out, size_t *out_size,
+                             scaf_error *err)
+{
+    gzFile gz = gzdopen(fd, "rb");
+    if (!gz) {
+        close(fd);
+        return err_set(err, SCAF_ERR_NOMEM, "%s: cannot start gzip reader", path);
+    }
+    gzbuffer(gz, 1u << 17);
+    size_t cap = compressed < (SIZE_MAX / 8) ? compressed * 4 + 4096 : SIZE_MAX / 2;
+    size_t n = 0;
+    char *buf = malloc(cap);
+    scaf_status st = SCAF_OK;
+    if (!buf) st = err_set(err, SCAF_ERR_NOMEM, "%s: out of memory", path);
+    while (st == SCAF_OK) {
+        if (n == cap) {
+            if (cap > SIZE_MAX / 2) {
+                st = err_set(err, SCAF_ERR_NOMEM, "%s: decompressed data too large", path);
+                break;
+            }
+            char *b = realloc(buf, cap * 2);
+            if (!b) {
+                st = err_set(err, SCAF_ERR_NOMEM, "%s: out of memory (%zu bytes decompressed)", path, n);
+                break;
+            }
+            buf = b;
+            cap *= 2;
+        }
+        size_t want = cap - n > (1u << 30) ? (1u << 30) : cap - n;
+        int r = gzread(gz, buf + n, (unsigned)want);
+        if (r < 0) {
+            int code;
+            const char *msg = gzerror(gz, &code);
+            st = code == Z_ERRNO ? err_set(err, SCAF_ERR_IO, "%s: cannot read: %s", path, strerror(errno))
+                                 : err_set(err, SCAF_ERR_PARSE, "%s:1: corrupt gzip data (%s)", path, msg);
+            break;
+        }
+        if (r == 0) {
+            int code;
+            const char *msg = gzerror(gz, &code);
+            if (code != Z_OK && code != Z_STREAM_END)
+                st = err_set(err, SCAF_ERR_PARSE, "%s:1: corrupt or truncated gzip data (%s)", path, msg);
+            break;
+        }
+        n += (size_t)r;
+    }
+    gzclose(gz);
+    if (st != SCAF_OK) {
+        free(buf);
+        return st;
+    }
+    *out = buf;
+    *out_size = n;
+    return SCAF_OK;
+}
+
+scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_error *err)
+{
+    memset(m, 0, sizeof *m);
+    if (info) memset(info, 0, sizeof *info);
+    if (!path) return err_set(err, SCAF_ERR_USAGE, "mesh_read: no path");
+    int fd = open(path, O_RDONLY);
+    if (fd < 0) return err_set(err, SCAF_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    struct stat sb;
+    if (fstat(fd, &sb) != 0) {
+        int e = errno;
+        close(fd);
+        return err_set(err, SCAF_ERR_IO, "%s: cannot read: %s", path, strerror(e));
+    }
+    if (!S_ISREG(sb.st_mode)) {
+        close(fd);
+        return err_set(err, SCAF_ERR_IO, "%s: cannot read: %s", path,
+                       S_ISDIR(sb.st_mode) ? "is a directory" : "not a regular file");
+    }
+    size_t size = (size_t)sb.st_size;
+    unsigned char magic[2] = {0, 0};
+    ssize_t mr = pread(fd, magic, 2, 0);
+    char *data = NULL;
+    size_t n = 0;
+    scaf_status st;
+    if (mr == 2 && magic[0] == 0x1f && magic[1] == 0x8b) {
+        st = load_gzip(fd, path, size, &data, &n, err); /* closes fd */
+    } else {
+        st = load_plain(fd, path, size, &data, &n, err);
+        close(fd);
+    }
+    if (st != SCAF_OK) return st;
+    st = mesh_parse(data, n, format_from_name(path), path, m, info, err);
+    free(data);
+    return st;
+}

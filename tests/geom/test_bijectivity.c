@@ -1,0 +1,485 @@
+/* Tests for geom/bijectivity: hand-made overlapping, touching, nested,
+ * mirrored and degenerate UV layouts, large valid grids and their one-vertex
+ * corruptions, and the grid-accelerated pair counts against brute force. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom/bijectivity.h"
+
+static bij_report run(int nuv, const double *UV, int nf, const int *F)
+{
+    bij_report r;
+    scaf_error e;
+    assert_int_equal(bij_check(nuv, UV, nf, F, NULL, NULL, &r, &e), SCAF_OK);
+    return r;
+}
+
+/* ---- single triangles ---- */
+
+static void ccw_triangle_is_bijective(void **state)
+{
+    (void)state;
+    double UV[] = {0, 0, 1, 0, 0, 1};
+    int F[] = {0, 1, 2};
+    bij_report r = run(3, UV, 1, F);
+    assert_int_equal(r.triangles, 1);
+    assert_int_equal(r.positive, 1);
+    assert_int_equal(r.charts, 1);
+    assert_int_equal(r.boundary_edges, 3);
+    assert_int_equal(r.boundary_loops, 1);
+    assert_true(r.bijective);
+}
+
+static void cw_triangle_is_a_mirrored_chart(void **state)
+{
+    (void)state;
+    double UV[] = {0, 0, 1, 0, 0, 1};
+    int F[] = {0, 2, 1};
+    signed char o[1];
+    bij_report r;
+    assert_int_equal(bij_check(3, UV, 1, F, NULL, o, &r, NULL), SCAF_OK);
+    assert_int_equal(o[0], -1);
+    assert_int_equal(r.flipped, 1);
+    assert_int_equal(r.mirrored_charts, 1);
+    assert_int_equal(r.mixed_charts, 0);
+    assert_false(r.bijective);
+}
+
+static void degenerate_triangles(void **state)
+{
+    (void)state;
+    /* a fan around 0 with one collinear triangle, and one with a repeated index */
+    double UV[] = {0, 0, 1, 0, 1, 1, 0, 1, -1, 1, 2, 2};
+    int F[] = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 2, 5, 1, 1, 2};
+    signed char o[5];
+    bij_report r;
+    assert_int_equal(bij_check(6, UV, 5, F, NULL, o, &r, NULL), SCAF_OK);
+    assert_int_equal(o[3], 0); /* (0,0), (1,1), (2,2) */
+    assert_int_equal(o[4], 0);
+    assert_int_equal(r.degenerate, 2);
+    assert_int_equal(r.flipped, 0);
+    assert_false(r.bijective);
+}
+
+/* ---- segment contact ---- */
+
+static void segment_contacts(void **state)
+{
+    (void)state;
+    double a[2] = {0, 0}, b[2] = {2, 2}, c[2] = {0, 2}, d[2] = {2, 0};
+    assert_int_equal(bij_segments_meet(a, b, c, d), 1);
+    double e[2] = {1, 1}, f[2] = {3, -1};
+    assert_int_equal(bij_segments_meet(a, b, e, f), 2); /* T-junction */
+    double g[2] = {1, 1}, h[2] = {3, 3};
+    assert_int_equal(bij_segments_meet(a, b, g, h), 2); /* collinear overlap */
+    double i[2] = {3, 3}, j[2] = {4, 4};
+    assert_int_equal(bij_segments_meet(a, b, i, j), 0); /* collinear apart */
+    assert_int_equal(bij_segments_meet(a, b, b, j), 2); /* shared end point */
+    double k[2] = {1, nextafter(1.0, 2.0)}, l[2] = {1, 5};
+    assert_int_equal(bij_segments_meet(a, b, k, l), 0); /* one ulp above */
+    k[1] = 1.0;
+    assert_int_equal(bij_segments_meet(a, b, k, l), 2);
+    k[1] = nextafter(1.0, 0.0);
+    assert_int_equal(bij_segments_meet(a, b, k, l), 1);
+}
+
+/* ---- two triangles ---- */
+
+static void two_triangles_crossing(void **state)
+{
+    (void)state;
+    /* a hexagram: each edge of one triangle crosses two of the other */
+    double UV[] = {0, 4, -4, -2, 4, -2, 0, -4, 4, 2, -4, 2};
+    int F[] = {0, 1, 2, 3, 4, 5};
+    bij_report r = run(6, UV, 2, F);
+    assert_int_equal(r.positive, 2);
+    assert_int_equal(r.charts, 2);
+    assert_int_equal(r.boundary_crossings, 6);
+    assert_int_equal(r.boundary_touchings, 0);
+    assert_false(r.bijective);
+}
+
+static void touching_at_shared_vertex_index_is_fine(void **state)
+{
+    (void)state;
+    /* bow tie through UV index 0: the triangles share the point by index */
+    double UV[] = {0, 0, 1, -1, 1, 1, -1, 1, -1, -1};
+    int F[] = {0, 1, 2, 0, 3, 4};
+    bij_report r = run(5, UV, 2, F);
+    assert_int_equal(r.charts, 2);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_int_equal(r.boundary_touchings, 0);
+    assert_int_equal(r.nested_loops, 0);
+    assert_true(r.bijective);
+}
+
+static void touching_at_coincident_distinct_vertices(void **state)
+{
+    (void)state;
+    /* same bow tie, but the middle point is two distinct UV indices */
+    double UV[] = {0, 0, 1, -1, 1, 1, -1, 1, -1, -1, 0, 0};
+    int F[] = {0, 1, 2, 5, 3, 4};
+    bij_report r = run(6, UV, 2, F);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_int_equal(r.boundary_touchings, 4); /* 2 segments at each copy */
+    assert_int_equal(r.nested_loops, 0);
+    assert_false(r.bijective);
+}
+
+static void collinear_overlapping_edges(void **state)
+{
+    (void)state;
+    double UV[] = {0, 0, 2, 0, 1, 1, 1, 0, 2, -1, 3, 0};
+    int F[] = {0, 1, 2, 3, 4, 5};
+    bij_report r = run(6, UV, 2, F);
+    assert_int_equal(r.positive, 2);
+    assert_int_equal(r.boundary_crossings, 0);
+    /* (0,0)-(2,0) overlaps (3,0)-(1,0); (1,0) lies on it; (2,0) lies on
+     * (3,0)-(1,0) as the end of (2,0)-(1,1) */
+    assert_int_equal(r.boundary_touchings, 3);
+    assert_false(r.bijective);
+}
+
+static void boundary_folding_back(void **state)
+{
+    (void)state;
+    /* two triangles sharing vertex 0; their boundary edges 0-1 and 0-3 lie
+     * on one ray (a 360-degree slit at 0), without overlapping area */
+    double UV[] = {0, 0, 2, 0, 1, 1, 1, 0, 1, -1};
+    int F[] = {0, 1, 2, 0, 4, 3};
+    bij_report r = run(5, UV, 2, F);
+    assert_int_equal(r.positive, 2);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_int_equal(r.boundary_foldbacks, 1);
+    assert_int_equal(r.boundary_touchings, 1); /* 4-3 ends at (1,0), inside 0-1 */
+    assert_false(r.bijective);
+}
+
+static void folded_and_nonmanifold_edges(void **state)
+{
+    (void)state;
+    /* both triangles left of edge 0->1: they overlap along it */
+    double UV[] = {0, 0, 2, 0, 1, 1, 1, 2, 1, -1};
+    int F[] = {0, 1, 2, 0, 1, 3};
+    bij_report r = run(5, UV, 2, F);
+    assert_int_equal(r.positive, 2);
+    assert_int_equal(r.folded_edges, 1);
+    assert_false(r.bijective);
+    int G[] = {0, 1, 2, 1, 0, 4, 0, 1, 3};
+    r = run(5, UV, 3, G);
+    assert_int_equal(r.nonmanifold_edges, 1);
+    assert_false(r.bijective);
+    int H[] = {0, 1, 2, 1, 0, 4};
+    r = run(5, UV, 2, H);
+    assert_int_equal(r.charts, 1);
+    assert_true(r.bijective);
+}
+
+/* ---- nesting ---- */
+
+/* A square annulus: outer [0,10]^2, hole [4,6]^2, 8 points, 8 triangles. */
+static const double annulus_uv[] = {0, 0, 10, 0, 10, 10, 0, 10, 4, 4, 6, 4, 6, 6, 4, 6};
+static const int annulus_f[] = {0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5,
+                                2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+
+static void chart_nested_in_a_hole(void **state)
+{
+    (void)state;
+    double UV[22];
+    int F[27];
+    memcpy(UV, annulus_uv, sizeof annulus_uv);
+    memcpy(F, annulus_f, sizeof annulus_f);
+    double small[] = {4.5, 4.5, 5.5, 4.5, 5, 5.5};
+    memcpy(UV + 16, small, sizeof small);
+    F[24] = 8, F[25] = 9, F[26] = 10;
+    bij_report r = run(11, UV, 9, F);
+    assert_int_equal(r.positive, 9);
+    assert_int_equal(r.charts, 2);
+    assert_int_equal(r.boundary_loops, 3);
+    assert_int_equal(r.nested_loops, 0);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_true(r.bijective);
+    /* the same chart moved into the annulus body: no contact, but overlap */
+    for (int i = 0; i < 3; i++) UV[16 + 2 * i] -= 3.0;
+    r = run(11, UV, 9, F);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_int_equal(r.boundary_touchings, 0);
+    assert_int_equal(r.nested_loops, 1);
+    assert_false(r.bijective);
+    /* a chart covering the whole annulus hole and more: its loop encloses
+     * the annulus' inner loop, which lands inside it */
+    double big[] = {-20, -20, 30, -20, 5, 30};
+    memcpy(UV + 16, big, sizeof big);
+    r = run(11, UV, 9, F);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_int_equal(r.nested_loops, 2); /* both loops of the annulus */
+    assert_false(r.bijective);
+}
+
+static void chart_inside_a_triangle(void **state)
+{
+    (void)state;
+    double UV[] = {0, 0, 100, 0, 0, 100, 1, 1, 2, 1, 1, 2};
+    int F[] = {0, 1, 2, 3, 4, 5};
+    bij_report r = run(6, UV, 2, F);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_int_equal(r.nested_loops, 1);
+    assert_false(r.bijective);
+    /* a square of two triangles; the small chart's vertex exactly on the
+     * interior diagonal, the rest inside */
+    double S[] = {0, 0, 4, 0, 4, 4, 0, 4, 2, 2, 3, 2, 3, 2.5};
+    int G[] = {0, 1, 2, 0, 2, 3, 4, 5, 6};
+    r = run(7, S, 3, G);
+    assert_int_equal(r.boundary_touchings, 0);
+    assert_int_equal(r.nested_loops, 1);
+    assert_false(r.bijective);
+    /* same, with the small chart outside the square */
+    for (int i = 4; i < 7; i++) S[2 * i] += 10;
+    r = run(7, S, 3, G);
+    assert_true(r.bijective);
+}
+
+static void mirrored_chart_among_good_ones(void **state)
+{
+    (void)state;
+    double UV[] = {0, 0, 1, 0, 1, 1, 0, 1, 5, 0, 6, 0, 6, 1, 5, 1};
+    int F[] = {0, 1, 2, 0, 2, 3, 4, 6, 5, 4, 7, 6};
+    bij_report r = run(8, UV, 4, F);
+    assert_int_equal(r.charts, 2);
+    assert_int_equal(r.flipped, 2);
+    assert_int_equal(r.mirrored_charts, 1);
+    assert_int_equal(r.mixed_charts, 0);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_int_equal(r.nested_loops, 0);
+    assert_false(r.bijective);
+    /* given chart ids override the computed ones */
+    int chart[] = {7, 7, 7, 7};
+    assert_int_equal(bij_check(8, UV, 4, F, chart, NULL, &r, NULL), SCAF_OK);
+    assert_int_equal(r.charts, 1);
+    assert_int_equal(r.mixed_charts, 1);
+}
+
+static void bad_input_is_an_error(void **state)
+{
+    (void)state;
+    double UV[] = {0, 0, 1, 0, NAN, 1};
+    int F[] = {0, 1, 3};
+    bij_report r;
+    scaf_error e;
+    assert_int_equal(bij_check(3, UV, 1, F, NULL, NULL, &r, &e), SCAF_ERR_MESH);
+    UV[4] = 0;
+    assert_int_equal(bij_check(3, UV, 1, F, NULL, NULL, &r, &e), SCAF_ERR_MESH);
+    assert_non_null(strstr(e.message, "out of range"));
+    int chart[] = {-1};
+    F[2] = 2;
+    assert_int_equal(bij_check(3, UV, 1, F, chart, NULL, &r, &e), SCAF_ERR_MESH);
+    assert_int_equal(bij_check(3, UV, 0, F, NULL, NULL, &r, &e), SCAF_OK);
+    assert_true(r.bijective);
+}
+
+/* ---- large layouts ---- */
+
+typedef struct layout {
+    int nuv, nf;
+    double *UV;
+    int *F;
+} layout;
+
+static uint64_t rnd(uint64_t *s)
+{
+    *s ^= *s >> 12;
+    *s ^= *s << 25;
+    *s ^= *s >> 27;
+    return *s * 0x2545F4914F6CDD1DULL;
+}
+
+static double unit(uint64_t *s) { return (double)(rnd(s) >> 11) * 0x1p-53; }
+
+/* bx * by charts, each an n x n grid of unit cells with vertices jittered
+ * by at most 0.2 per coordinate (every triangle stays ccw, every boundary
+ * stays simple), charts one cell apart. */
+static layout grid_layout(int bx, int by, int n, uint64_t seed)
+{
+    layout L;
+    int pv = (n + 1) * (n + 1);
+    L.nuv = bx * by * pv;
+    L.nf = bx * by * 2 * n * n;
+    L.UV = malloc((size_t)L.nuv * 2 * sizeof *L.UV);
+    L.F = malloc((size_t)L.nf * 3 * sizeof *L.F);
+    assert_non_null(L.UV);
+    assert_non_null(L.F);
+    int f = 0;
+    for (int cy = 0; cy < by; cy++)
+        for (int cx = 0; cx < bx; cx++) {
+            int base = (cy * bx + cx) * pv;
+            for (int j = 0; j <= n; j++)
+                for (int i = 0; i <= n; i++) {
+                    int v = base + j * (n + 1) + i;
+                    L.UV[2 * v] = cx * (n + 1) + i + 0.4 * (unit(&seed) - 0.5);
+                    L.UV[2 * v + 1] = cy * (n + 1) + j + 0.4 * (unit(&seed) - 0.5);
+                }
+            for (int j = 0; j < n; j++)
+                for (int i = 0; i < n; i++) {
+                    int a = base + j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+                    int *t = L.F + 3 * f;
+                    t[0] = a, t[1] = b, t[2] = c, t[3] = a, t[4] = c, t[5] = d;
+                    f += 2;
+                }
+        }
+    return L;
+}
+
+static void large_grid_layouts(void **state)
+{
+    (void)state;
+    layout L = grid_layout(6, 5, 40, 12345);
+    bij_report r = run(L.nuv, L.UV, L.nf, L.F);
+    assert_int_equal(r.charts, 30);
+    assert_int_equal(r.boundary_loops, 30);
+    assert_int_equal(r.boundary_edges, 30 * 160);
+    assert_int_equal(r.flipped + r.degenerate, 0);
+    assert_int_equal(r.boundary_crossings + r.boundary_touchings, 0);
+    assert_true(r.bijective);
+    int n = 40, pv = 41 * 41;
+
+    /* an interior vertex thrown far away: flips */
+    double keep[2];
+    int v = 7 * pv + 20 * 41 + 20;
+    memcpy(keep, L.UV + 2 * v, sizeof keep);
+    L.UV[2 * v] += 3.0;
+    r = run(L.nuv, L.UV, L.nf, L.F);
+    assert_true(r.flipped > 0);
+    assert_false(r.bijective);
+    memcpy(L.UV + 2 * v, keep, sizeof keep);
+
+    /* a right-boundary vertex of chart 0 pushed into chart 1: crossings */
+    v = 0 * pv + 20 * 41 + n;
+    memcpy(keep, L.UV + 2 * v, sizeof keep);
+    L.UV[2 * v] += 1.5;
+    r = run(L.nuv, L.UV, L.nf, L.F);
+    assert_int_equal(r.flipped, 0);
+    assert_true(r.boundary_crossings > 0);
+    assert_false(r.bijective);
+
+    /* the same vertex put exactly onto chart 1's boundary vertex position:
+     * contact without crossing */
+    int w = 1 * pv + 20 * 41 + 0;
+    memcpy(L.UV + 2 * v, L.UV + 2 * w, sizeof keep);
+    r = run(L.nuv, L.UV, L.nf, L.F);
+    assert_int_equal(r.boundary_crossings, 0);
+    assert_true(r.boundary_touchings > 0);
+    assert_false(r.bijective);
+    memcpy(L.UV + 2 * v, keep, sizeof keep);
+
+    /* a whole chart shifted by a translation so it lies inside another one
+     * (exactly one cell off in x and y plus a bit: no boundary contact is
+     * impossible here, so instead shrink it into one cell of chart 0) */
+    for (int i = 0; i < pv; i++) {
+        double *p = L.UV + 2 * (29 * pv + i);
+        int ii = i % 41, jj = i / 41;
+        p[0] = 10.3 + 0.4 * ii / 40.0;
+        p[1] = 10.3 + 0.4 * jj / 40.0;
+    }
+    r = run(L.nuv, L.UV, L.nf, L.F);
+    assert_int_equal(r.flipped + r.degenerate, 0);
+    assert_true(r.nested_loops >= 1);
+    assert_false(r.bijective);
+    free(L.UV);
+    free(L.F);
+}
+
+/* ---- grid counts against brute force ---- */
+
+static void pair_counts_match_brute_force(void **state)
+{
+    (void)state;
+    uint64_t s = 99;
+    long long seen_cross = 0, seen_touch = 0, seen_fold = 0;
+    for (int round = 0; round < 40; round++) {
+        int nf = 10 + (int)(rnd(&s) % 60), nuv = nf * 2;
+        double *UV = malloc((size_t)nuv * 2 * sizeof *UV);
+        int *F = malloc((size_t)nf * 3 * sizeof *F);
+        /* small integer coordinates: many exact touchings and collinear cases */
+        for (int i = 0; i < 2 * nuv; i++) UV[i] = (double)(rnd(&s) % 12);
+        for (int i = 0; i < 3 * nf; i++) F[i] = (int)(rnd(&s) % (uint64_t)nuv);
+        bij_report r;
+        assert_int_equal(bij_check(nuv, UV, nf, F, NULL, NULL, &r, NULL), SCAF_OK);
+        /* boundary edges: undirected non-loop edges used once */
+        int ne = 0;
+        int(*E)[2] = malloc((size_t)nf * 3 * sizeof *E);
+        for (int h = 0; h < 3 * nf; h++) {
+            int a = F[h], b = F[h - h % 3 + (h % 3 + 1) % 3];
+            if (a == b) continue;
+            int uses = 0;
+            for (int g = 0; g < 3 * nf; g++) {
+                int c = F[g], d = F[g - g % 3 + (g % 3 + 1) % 3];
+                if ((c == a && d == b) || (c == b && d == a)) uses++;
+            }
+            if (uses == 1) E[ne][0] = a, E[ne][1] = b, ne++;
+        }
+        assert_int_equal(r.boundary_edges, ne);
+        long long cross = 0, touch = 0, fold = 0;
+        for (int i = 0; i < ne; i++)
+            for (int j = i + 1; j < ne; j++) {
+                int a = E[i][0], b = E[i][1], c = E[j][0], d = E[j][1];
+                int shared = (a == c) + (a == d) + (b == c) + (b == d);
+                const double *P = UV;
+                if (shared) {
+                    /* adjacent: only a fold-back along a line counts */
+                    int sv = (a == c || a == d) ? a : b;
+                    int p = sv == a ? b : a, q = (c == sv) ? d : c;
+                    if (bij_segments_meet(P + 2 * sv, P + 2 * p, P + 2 * sv, P + 2 * q) &&
+                        bij_segments_meet(P + 2 * p, P + 2 * p, P + 2 * sv, P + 2 * q) +
+                                bij_segments_meet(P + 2 * q, P + 2 * q, P + 2 * sv, P + 2 * p) >
+                            0 &&
+                        !(P[2 * p] == P[2 * sv] && P[2 * p + 1] == P[2 * sv + 1]) &&
+                        !(P[2 * q] == P[2 * sv] && P[2 * q + 1] == P[2 * sv + 1]))
+                        fold++;
+                    continue;
+                }
+                int m = bij_segments_meet(P + 2 * a, P + 2 * b, P + 2 * c, P + 2 * d);
+                cross += m == 1;
+                touch += m == 2;
+            }
+        assert_int_equal(r.boundary_crossings, cross);
+        assert_int_equal(r.boundary_touchings, touch);
+        assert_int_equal(r.boundary_foldbacks, fold);
+        seen_cross += cross, seen_touch += touch, seen_fold += fold;
+        free(E);
+        free(UV);
+        free(F);
+    }
+    assert_true(seen_cross > 100); /* the generator exercises both kinds */
+    assert_true(seen_touch > 100);
+    assert_true(seen_fold > 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(ccw_triangle_is_bijective),
+        cmocka_unit_test(cw_triangle_is_a_mirrored_chart),
+        cmocka_unit_test(degenerate_triangles),
+        cmocka_unit_test(segment_contacts),
+        cmocka_unit_test(two_triangles_crossing),
+        cmocka_unit_test(touching_at_shared_vertex_index_is_fine),
+        cmocka_unit_test(touching_at_coincident_distinct_vertices),
+        cmocka_unit_test(collinear_overlapping_edges),
+        cmocka_unit_test(boundary_folding_back),
+        cmocka_unit_test(folded_and_nonmanifold_edges),
+        cmocka_unit_test(chart_nested_in_a_hole),
+        cmocka_unit_test(chart_inside_a_triangle),
+        cmocka_unit_test(mirrored_chart_among_good_ones),
+        cmocka_unit_test(bad_input_is_an_error),
+        cmocka_unit_test(large_grid_layouts),
+        cmocka_unit_test(pair_counts_match_brute_force),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
