@@ -8,8 +8,9 @@
  * of re-analysing with the previous permutation (cholmod_analyze_p), and a
  * checksum of the final positions (determinism across runs / threads).
  * Usage: bench_opt [rings segments iterations]   (default 196 256 6)
- *        bench_opt --obj FILE.obj [iterations]   a real disk mesh (v/f lines
- *        only; its single boundary loop fixed on the circle)
+ *        bench_opt --obj FILE [iterations]   a real disk mesh (OBJ/OFF/PLY,
+ *        .gz ok; its single boundary loop fixed on the circle)
+ *        [amd|metis|default] after the iteration count runs one ordering.
  * Set OPENBLAS_NUM_THREADS to study BLAS threading.
  */
 #include <stdint.h>
@@ -19,6 +20,7 @@
 
 #include "../tests/opt/polar_disk.h"
 #include "base/timer.h"
+#include "mesh/mesh_io.h"
 #include "opt/embed.h"
 #include "opt/slim.h"
 
@@ -48,35 +50,22 @@ static uint64_t checksum(const double *x, size_t n)
     return h;
 }
 
-/* Minimal OBJ reading for the benchmark only (the library's reader lives in
- * mesh/): v and f lines, first index of each corner, fan triangulation. */
-static int load_obj(const char *path, polar_disk *m)
+/* Read a mesh with the library's reader (any format, .gz ok) and find its
+ * single boundary loop (the topology module is not used here). */
+static int load_mesh(const char *path, polar_disk *m)
 {
-    FILE *f = fopen(path, "r");
-    if (!f) return -1;
-    size_t cv = 1024, cf = 1024;
-    m->nv = m->nf = 0;
-    m->V = malloc(3 * cv * sizeof *m->V);
-    m->F = malloc(3 * cf * sizeof *m->F);
-    char line[4096];
-    while (m->V && m->F && fgets(line, sizeof line, f)) {
-        if (line[0] == 'v' && line[1] == ' ') {
-            if ((size_t)m->nv == cv) { cv *= 2; m->V = realloc(m->V, 3 * cv * sizeof *m->V); if (!m->V) break; }
-            double *p = m->V + 3 * (size_t)m->nv++;
-            if (sscanf(line + 2, "%lf %lf %lf", p, p + 1, p + 2) != 3) { fclose(f); return -1; }
-        } else if (line[0] == 'f' && line[1] == ' ') {
-            int idx[64], n = 0;
-            char *tok = strtok(line + 2, " \t\r\n");
-            while (tok && n < 64) { idx[n++] = atoi(tok) - 1; tok = strtok(NULL, " \t\r\n"); }
-            for (int k = 1; k + 1 < n; k++) {
-                if ((size_t)m->nf == cf) { cf *= 2; m->F = realloc(m->F, 3 * cf * sizeof *m->F); if (!m->F) break; }
-                int *t = m->F + 3 * (size_t)m->nf++;
-                t[0] = idx[0]; t[1] = idx[k]; t[2] = idx[k + 1];
-            }
-        }
+    mesh in = {0};
+    scaf_error err;
+    if (mesh_read(path, &in, NULL, &err) != SCAF_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return -1;
     }
-    fclose(f);
-    if (!m->V || !m->F) return -1;
+    m->nv = in.nv;
+    m->nf = in.nf;
+    m->V = in.V;
+    m->F = in.F;
+    free(in.UV);
+    free(in.FT);
     /* Boundary half-edges: directed edges whose reverse is absent. */
     int *next = malloc((size_t)m->nv * sizeof *next);
     long long *keys = malloc(3 * (size_t)m->nf * sizeof *keys);
@@ -107,10 +96,11 @@ static int load_obj(const char *path, polar_disk *m)
 int main(int argc, char **argv)
 {
     polar_disk m;
-    int iters;
+    int iters, only = -1;
     if (argc > 2 && strcmp(argv[1], "--obj") == 0) {
         iters = argc > 3 ? atoi(argv[3]) : 6;
-        if (load_obj(argv[2], &m) != 0) { fprintf(stderr, "cannot load %s\n", argv[2]); return 1; }
+        if (argc > 4) only = strcmp(argv[4], "amd") == 0 ? 0 : strcmp(argv[4], "metis") == 0 ? 1 : 2;
+        if (load_mesh(argv[2], &m) != 0) { fprintf(stderr, "cannot load %s\n", argv[2]); return 1; }
     } else {
         int rings = argc > 1 ? atoi(argv[1]) : 196, seg = argc > 2 ? atoi(argv[2]) : 256;
         iters = argc > 3 ? atoi(argv[3]) : 6;
@@ -168,6 +158,7 @@ int main(int argc, char **argv)
     printf("| ordering | iter | pattern | assemble | analyze | factor | solve | line search | total | E after | nnz(L) | flops |\n");
     printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (int o = 0; o < 3; o++) {
+        if (only >= 0 && o != only) continue;
         memcpy(X, X0, 2 * (size_t)m.nv * sizeof *X);
         opt_slim_options so;
         opt_slim_options_default(&so);
