@@ -197,36 +197,41 @@ int main(int argc, char **argv)
         opt_slim_destroy(sl);
     }
 
-    /* Re-analysis cost with a reused permutation vs a fresh AMD analysis. */
+    /* Fresh analyses: scalar vs vertex-graph (block) ordering, AMD vs METIS,
+     * and re-analysis with the previous permutation (cholmod_analyze_p). */
     {
         opt_proxy_block b = {0};
         double *rhs = calloc(2 * (size_t)nfree, sizeof *rhs);
-        opt_proxy_block_pattern(&b, &S, dof, nfree, &err);
-        opt_proxy_block_fill(&b, &t, dof, X0, rhs);
-        opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &err);
         double a = timer_now();
-        opt_chol_analyze_given(c, &b.A, NULL, &err);
-        double t_amd = timer_now() - a;
-        int *perm = malloc((size_t)b.A.n * sizeof *perm);
-        memcpy(perm, opt_chol_permutation(c), (size_t)b.A.n * sizeof *perm);
+        opt_proxy_block_pattern(&b, &S, dof, nfree, &err);
+        double t_pat = timer_now() - a;
         a = timer_now();
-        opt_chol_analyze_given(c, &b.A, perm, &err);
-        double t_given = timer_now() - a;
-        a = timer_now();
-        opt_chol_factor(c, &b.A, &err);
-        double t_fac = timer_now() - a;
-        printf("\n\nanalysis: AMD %.4f s, reusing the permutation (cholmod_analyze_p) %.4f s; one factorization %.4f s\n",
-               t_amd, t_given, t_fac);
-        double pa = timer_now();
-        opt_proxy_block bb = {0};
-        opt_proxy_block_pattern(&bb, &S, dof, nfree, &err);
-        printf("pattern build (sort + map) %.4f s; factor flops %.3g (%.2f GFlop/s), nnz(L) %.0f\n\n",
-               timer_now() - pa, opt_chol_get_stats(c).flops,
-               1e-9 * opt_chol_get_stats(c).flops / t_fac, opt_chol_get_stats(c).nnz_L);
-        opt_proxy_block_free(&bb);
-        free(perm);
+        opt_proxy_block_fill(&b, &t, dof, X0, rhs);
+        double t_fill = timer_now() - a;
+        printf("\n\npattern build (sort + map) %.4f s, value fill (SVD + weights + scatter) %.4f s\n\n", t_pat, t_fill);
+        printf("| ordering | graph | analyze | analyze_p (reused perm) | factor | nnz(L) | flops |\n|---|---|---|---|---|---|---|\n");
+        for (int cfg = 0; cfg < 4; cfg++) {
+            if (only >= 0 && (cfg / 2) != (only == 1)) continue;
+            opt_chol *c = opt_chol_create(cfg / 2 ? OPT_ORDER_METIS : OPT_ORDER_AMD, &err);
+            opt_chol_set_block(c, cfg % 2 ? 2 : 1);
+            a = timer_now();
+            opt_chol_analyze_given(c, &b.A, NULL, &err);
+            double t_an = timer_now() - a;
+            int *perm = malloc((size_t)b.A.n * sizeof *perm);
+            memcpy(perm, opt_chol_permutation(c), (size_t)b.A.n * sizeof *perm);
+            a = timer_now();
+            opt_chol_analyze_given(c, &b.A, perm, &err);
+            double t_given = timer_now() - a;
+            a = timer_now();
+            if (opt_chol_factor(c, &b.A, &err) != SCAF_OK) fprintf(stderr, "%s\n", err.message);
+            double t_fac = timer_now() - a;
+            opt_chol_stats cs = opt_chol_get_stats(c);
+            printf("| %s | %s | %.4f | %.4f | %.4f | %.0f | %.3g |\n", cfg / 2 ? "METIS" : "AMD",
+                   cfg % 2 ? "vertex (block 2)" : "scalar", t_an, t_given, t_fac, cs.nnz_L, cs.flops);
+            free(perm);
+            opt_chol_destroy(c);
+        }
         free(rhs);
-        opt_chol_destroy(c);
         opt_proxy_block_free(&b);
     }
     opt_simplices_free(&S);

@@ -18,6 +18,7 @@ struct opt_slim {
     opt_proxy_system sys;
     opt_chol *chol;
     double *rhs, *sol, *dir;
+    int block_set;   /* solver told the vertex block size */
     size_t cap_n, cap_x;
 };
 
@@ -26,6 +27,7 @@ void opt_slim_options_default(opt_slim_options *o)
     o->ordering = OPT_ORDER_AMD;
     opt_ls_options_default(&o->ls);
     o->regularization = 0.0;
+    o->block_ordering = 1;
 }
 
 opt_slim *opt_slim_create(const opt_slim_options *o, scaf_error *err)
@@ -44,6 +46,7 @@ opt_slim *opt_slim_create(const opt_slim_options *o, scaf_error *err)
         free(sl);
         return NULL;
     }
+    sl->block_set = 0;
     return sl;
 }
 
@@ -139,7 +142,11 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
         }
     }
     st->t_assemble = (t2 - t1) + (t3 - t2);
-    /* Factor and solve. */
+    /* Factor and solve (ordering on the vertex graph: d unknowns per vertex). */
+    if (sl->o.block_ordering && !sl->block_set) {
+        opt_chol_set_block(sl->chol, d);
+        sl->block_set = 1;
+    }
     opt_chol_stats c0 = opt_chol_get_stats(sl->chol);
     s = opt_chol_factor(sl->chol, &sl->sys.A, err);
     if (s != SCAF_OK) return s;

@@ -54,6 +54,7 @@ typedef struct opt_slim_options {
     opt_ordering ordering;  /* fill-reducing ordering for new patterns (AMD) */
     opt_ls_options ls;      /* line search (opt_ls_options_default) */
     double regularization;  /* added to the diagonal of the proxy (0) */
+    int block_ordering;     /* order the vertex graph, not scalars (1) */
 } opt_slim_options;
 
 typedef struct opt_slim_stats {
