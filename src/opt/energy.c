@@ -213,6 +213,13 @@ double opt_term_energy(const opt_term *t, const double *X)
     return acc;
 }
 
+double opt_term_mean_energy(const opt_term *t, const double *X)
+{
+    double w = 0;
+    for (int s = 0; s < t->s->n; s++) w += t->s->weight[s];
+    return w > 0 ? opt_term_energy(t, X) / w : 0.0;
+}
+
 void opt_term_gradient(const opt_term *t, const double *X, double *g)
 {
     const opt_simplices *S = t->s;

@@ -53,6 +53,11 @@ void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T);
 /* sum_s weight_s * density(J_s) over a term at positions X (#X by d). */
 double opt_term_energy(const opt_term *t, const double *X);
 
+/* Weighted mean density: opt_term_energy / sum_s weight_s. For a chart
+ * built by opt_simplices_from_surface this is the reported energy E
+ * (4 at an isometry for symmetric Dirichlet). 0 for an empty term. */
+double opt_term_mean_energy(const opt_term *t, const double *X);
+
 /* g (#X by d) += gradient of opt_term_energy w.r.t. X. */
 void opt_term_gradient(const opt_term *t, const double *X, double *g);
 

@@ -40,6 +40,14 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
     opt_proxy_block_free(b);
     int d = S->d, nc = d + 1, P = (d + 1) * (d + 2) / 2;
     size_t ne = (size_t)S->n * P;
+    int top = -1;
+    for (size_t k = 0; k < (size_t)S->n * nc; k++) {
+        int v = dof[S->idx[k]];
+        if (v >= nfree)
+            return err_set(err, SCAF_ERR_INTERNAL, "simplex %zu: dof %d outside [0, %d)", k / nc, v, nfree);
+        if (v > top) top = v;
+    }
+    nfree = top + 1;
     b->d = d;
     b->ns = S->n;
     b->nfree = nfree;
@@ -58,12 +66,6 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
         for (int i = 0; i < nc; i++)
             for (int j = i; j < nc; j++) {
                 int di = dof[ix[i]], dj = dof[ix[j]];
-                if (di >= nfree || dj >= nfree) {
-                    free(ent); free(fill);
-                    opt_proxy_block_free(b);
-                    return err_set(err, SCAF_ERR_INTERNAL, "simplex %d: dof %d outside [0, %d)", s,
-                                   di > dj ? di : dj, nfree);
-                }
                 if (di < 0 || dj < 0) continue;
                 b->vcolptr[(di > dj ? di : dj) + 1]++;
             }

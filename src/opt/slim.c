@@ -18,6 +18,7 @@ struct opt_slim {
     opt_proxy_system sys;
     opt_chol *chol;
     double *rhs, *sol, *dir;
+    int block_set;   /* solver told the vertex block size */
     size_t cap_n, cap_x;
 };
 
@@ -26,6 +27,7 @@ void opt_slim_options_default(opt_slim_options *o)
     o->ordering = OPT_ORDER_AMD;
     opt_ls_options_default(&o->ls);
     o->regularization = 0.0;
+    o->block_ordering = 1;
 }
 
 opt_slim *opt_slim_create(const opt_slim_options *o, scaf_error *err)
@@ -44,6 +46,7 @@ opt_slim *opt_slim_create(const opt_slim_options *o, scaf_error *err)
         free(sl);
         return NULL;
     }
+    sl->block_set = 0;
     return sl;
 }
 
@@ -108,11 +111,12 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
     for (int k = 0; k < nterms; k++) {
         opt_proxy_block *b = &sl->blk[k];
         int stale = !b->A.colptr || sl->blk_of[k] != terms[k].s || b->ns != terms[k].s->n ||
-                    b->nfree != nfree || b->d != d || (term_changed && term_changed[k]);
+                    b->d != d || (term_changed && term_changed[k]);
         if (stale) {
             s = opt_proxy_block_pattern(b, terms[k].s, dof, nfree, err);
             if (s != SCAF_OK) return s;
             sl->blk_of[k] = terms[k].s;
+            st->blocks_rebuilt++;
         }
     }
     double t1 = timer_now();
@@ -125,6 +129,10 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
     double t2 = timer_now();
     s = opt_proxy_system_sum(&sl->sys, bl, nterms, err);
     if (s != SCAF_OK) return s;
+    if (sl->sys.nfree != nfree)
+        return err_set(err, SCAF_ERR_USAGE,
+                       "SLIM: %d free vertices but the simplices use only %d (a free vertex is in no "
+                       "simplex: fix it or drop it)", nfree, sl->sys.nfree);
     double t3 = timer_now();
     if (sl->o.regularization > 0) {
         opt_csc *A = &sl->sys.A;
@@ -134,7 +142,11 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
         }
     }
     st->t_assemble = (t2 - t1) + (t3 - t2);
-    /* Factor and solve. */
+    /* Factor and solve (ordering on the vertex graph: d unknowns per vertex). */
+    if (sl->o.block_ordering && !sl->block_set) {
+        opt_chol_set_block(sl->chol, d);
+        sl->block_set = 1;
+    }
     opt_chol_stats c0 = opt_chol_get_stats(sl->chol);
     s = opt_chol_factor(sl->chol, &sl->sys.A, err);
     if (s != SCAF_OK) return s;

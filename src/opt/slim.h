@@ -17,6 +17,31 @@
  * reused as is. Errors: those of the parts (SCAF_ERR_NUMERIC when the
  * system is not positive definite or the state is invalid, SCAF_ERR_NOMEM,
  * SCAF_ERR_USAGE); on error X is unchanged.
+ *
+ * Sketch of a SCAF loop on top of it (2D, one chart):
+ *
+ *   opt_simplices chart;                 // once: rest frames, weight = 3D area
+ *   opt_simplices_from_surface(&chart, nv, V, nf, F, err);
+ *   opt_embed_chart(nv, V, nf, F, &loops, OPT_EMBED_HARMONIC, UV, NULL, err);
+ *   opt_slim *sl = opt_slim_create(NULL, err);
+ *   for (it = 0; it < max_iter; it++) {
+ *       // X = [chart UV (nv rows) | scaffold-only vertices]; dof: chart
+ *       // vertices 0..nv-1 first, scaffold after, box corners -1 (fixed).
+ *       build scaffold triangles S_idx over X (kernel's CDT);
+ *       opt_simplices scaf;
+ *       opt_simplices_from_current(&scaf, 2, nX, X, ns, S_idx, eps, err);
+ *       double lambda = opt_term_energy(&chart_term, X) / (100.0 * scaf.n);
+ *       for (s...) scaf.weight[s] = lambda;
+ *       opt_term terms[2] = {{&chart, energy}, {&scaf, OPT_ENERGY_SYMMETRIC_DIRICHLET}};
+ *       int changed[2] = {0, 1};
+ *       opt_slim_step(sl, terms, 2, changed, nX, dof, nfree, X, &st, err);
+ *       E = opt_term_mean_energy(&terms[0], X);  // the reported energy
+ *       opt_simplices_free(&scaf);
+ *   }
+ *
+ * (opt_term_energy uses the chart weights = 3D areas, so lambda above
+ * follows the paper's E_M / (100 |S|) with E_M the area-weighted sum; use
+ * the mean instead if E_M is meant normalized.)
  */
 #ifndef SCAF_OPT_SLIM_H
 #define SCAF_OPT_SLIM_H
@@ -29,6 +54,7 @@ typedef struct opt_slim_options {
     opt_ordering ordering;  /* fill-reducing ordering for new patterns (AMD) */
     opt_ls_options ls;      /* line search (opt_ls_options_default) */
     double regularization;  /* added to the diagonal of the proxy (0) */
+    int block_ordering;     /* order the vertex graph, not scalars (1) */
 } opt_slim_options;
 
 typedef struct opt_slim_stats {
@@ -39,6 +65,7 @@ typedef struct opt_slim_stats {
     double t_solve;      /* triangular solves */
     double t_line_search;
     int analyzed;        /* 1 if this iteration needed a new analysis */
+    int blocks_rebuilt;  /* terms whose pattern was rebuilt this iteration */
     opt_ls_result ls;    /* step, energies before/after, backtracks */
 } opt_slim_stats;
 

@@ -119,6 +119,8 @@ static void isometry_values(void **state)
         assert_true(fabs(opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J) - 4) < 1e-9);
         assert_true(fabs(opt_density(OPT_ENERGY_ARAP, 2, J)) < 1e-9);
         assert_true(fabs(opt_density(OPT_ENERGY_CONFORMAL, 2, J) - 1) < 1e-9);
+        opt_term tt = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+        assert_true(fabs(opt_term_mean_energy(&tt, Y) - 4) < 1e-9);
         /* The weight is the 3D area. */
         double e1[3] = {V[3] - V[0], V[4] - V[1], V[5] - V[2]}, e2[3] = {V[6] - V[0], V[7] - V[1], V[8] - V[2]};
         double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2], cz = e1[0] * e2[1] - e1[1] * e2[0];
