@@ -150,6 +150,7 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
         scaf_loop_free(L);
         return err && err->code ? err->code : SCAF_ERR_NOMEM;
     }
+    opt_chol_set_block(L->chol, 2);
     return SCAF_OK;
 }
 
@@ -222,6 +223,7 @@ static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, sca
         double t0 = timer_now();
         opt_chol *m = opt_chol_create(OPT_ORDER_METIS, err);
         if (!m) return err && err->code ? err->code : SCAF_ERR_NOMEM;
+        opt_chol_set_block(m, 2); /* order vertices, not scalars */
         st = opt_chol_analyze_given(m, &L->sys.A, NULL, err);
         const int *p = opt_chol_permutation(m);
         L->mesh_perm = malloc(nm * sizeof *L->mesh_perm);
