@@ -162,7 +162,9 @@ scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *option
  *   UV  #UV by 2 texture coordinates, or NULL (nuv = 0): then each
  *       connected component is one chart
  *   FT  #F by 3 UV indices per corner (with UV), defining the charts by
- *       their seams; only the connectivity is used, not the UV values
+ *       their seams; only the connectivity is used, not the UV values.
+ *       Where the faces around one UV index form several fans (a chart
+ *       touching itself at a vertex), each fan gets its own output UV. 
  * Fails with SCAF_ERR_MESH naming the chart and the reason when a chart is
  * closed, has genus, is non-manifold or non-orientable, or has a
  * degenerate triangle; SCAF_ERR_USAGE on out-of-range indices. */
