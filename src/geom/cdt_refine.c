@@ -7,16 +7,22 @@
  * exceeds max_area. Its Steiner point is Ungor's off-center on the
  * bisector of the shortest edge when that is closer than the circumcenter
  * (fewer points, same grading), else the circumcenter. The point is found
- * by a walk that may not cross constrained edges; a point beyond a
- * constrained edge, or whose cavity would touch a subsegment whose
- * diametral circle contains it, is not inserted: a splittable subsegment is
- * split instead and the triangle retried (a few times at most), an
- * unsplittable one means the triangle stays as it is (refinement is
- * best-effort next to chart edges). Splits use the midpoint, or concentric
- * shells (a power-of-two distance from the segment's input endpoint) so
- * small angles between splittable segments cannot ping-pong. Geometric
- * positions are computed in floating point; every topological decision is
- * exact (see cdt_mesh.c), and an insertion whose fan would not be strictly
+ * by a walk that may not cross constrained edges. A point beyond a
+ * constrained edge, or inside the diametral circle of a splittable
+ * subsegment on its cavity's boundary, is not inserted: that subsegment is
+ * split instead and the triangle retried (three times at most). A point
+ * that would spoil an unsplittable segment on its cavity's boundary (lie in
+ * its diametral lens, or nearly on its line close to an end: see spoils())
+ * is not inserted either; a second point (half-way to the shortest edge,
+ * or the centroid for an area-bad triangle) is tried, and if it fails too
+ * the triangle stays as it is (refinement is best-effort next to chart
+ * edges). Splits use the midpoint, or concentric shells (a power-of-two
+ * distance from the segment's input endpoint) so small angles between
+ * splittable segments cannot ping-pong; a split point must lie exactly on
+ * its segment or the segment stays whole. Geometric
+ * positions are computed in floating point (scaled by exact powers of two,
+ * so any input scale works); every topological decision is exact (see
+ * cdt_mesh.c), and an insertion whose fan would not be strictly
  * counter-clockwise is refused.
  */
 #include "geom/cdt_refine.h"

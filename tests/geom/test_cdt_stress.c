@@ -150,6 +150,56 @@ static void boundaries_1e12_apart(void **state)
     cb_free(&b);
 }
 
+static void interleaved_combs_1e12_apart(void **state)
+{
+    (void)state;
+    /* two comb-shaped charts whose teeth interleave with 1e-12 gaps on both
+       sides of every tooth; the facing tooth sides carry different numbers
+       of vertices, so the gaps hold only slivers */
+    cdt_builder b;
+    cb_init(&b);
+    int teeth = 12;
+    double g = 1e-12, w = 1.0; /* tooth width; gap g between neighbouring teeth */
+    double *xy = malloc(4096 * sizeof(double));
+    int n = 0;
+    /* lower comb: base [0, L] x [-1, 0], teeth [2i(w+g), 2i(w+g)+w] x [0, 5] */
+    double L = 2 * teeth * (w + g);
+    xy[n++] = 0, xy[n++] = -1;
+    xy[n++] = L, xy[n++] = -1;
+    for (int i = teeth - 1; i >= 0; i--) {
+        double x0 = 2 * i * (w + g), x1 = x0 + w;
+        if (i == teeth - 1)
+            xy[n++] = L, xy[n++] = 0;
+        xy[n++] = x1, xy[n++] = 0;
+        for (int k = 1; k <= 7; k++) /* right side going up */
+            xy[n++] = x1, xy[n++] = 5.0 * k / 7;
+        for (int k = 5; k >= 1; k--) /* left side coming down */
+            xy[n++] = x0, xy[n++] = 5.0 * k / 5;
+        xy[n++] = x0, xy[n++] = 0;
+    }
+    /* the loop is CCW: bottom edge left to right, then back along the teeth */
+    cb_loop(&b, xy, n / 2);
+    /* upper comb: top [0, L] x [6, 7], teeth hanging into the gaps */
+    n = 0;
+    xy[n++] = L, xy[n++] = 7;
+    xy[n++] = 0, xy[n++] = 7;
+    for (int i = 0; i < teeth; i++) {
+        double x0 = 2 * i * (w + g) + w + g, x1 = x0 + w;
+        xy[n++] = x0, xy[n++] = 6;
+        for (int k = 1; k <= 3; k++) /* left side going down, facing the lower tooth */
+            xy[n++] = x0, xy[n++] = 6 - 5.0 * k / 3;
+        for (int k = 9; k >= 1; k--)
+            xy[n++] = x1, xy[n++] = 6 - 5.0 * k / 9;
+        xy[n++] = x1, xy[n++] = 6;
+    }
+    cb_loop(&b, xy, n / 2);
+    free(xy);
+    cb_box(&b, 3.0, NULL);
+    cdt_options opt = cdt_default_options();
+    run_and_check(&b, &opt, -1, 0);
+    cb_free(&b);
+}
+
 static void nearly_collinear_boundary(void **state)
 {
     (void)state;
@@ -346,6 +396,7 @@ int main(void)
         cmocka_unit_test(hundreds_of_charts_on_a_grid),
         cmocka_unit_test(random_charts_many_seeds),
         cmocka_unit_test(boundaries_1e12_apart),
+        cmocka_unit_test(interleaved_combs_1e12_apart),
         cmocka_unit_test(nearly_collinear_boundary),
         cmocka_unit_test(long_thin_gap),
         cmocka_unit_test(charts_nested_in_holes_deeply),
