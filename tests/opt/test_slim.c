@@ -124,6 +124,12 @@ static void slim_two_terms_rebuilt(void **state)
         assert_int_equal(st.blocks_rebuilt, it == 0 ? 2 : 1); /* the chart's block is kept */
     }
     assert_int_equal(opt_chol_get_stats(opt_slim_solver(sl)).analyses, 1);
+    /* An empty second term (no scaffold simplex) is harmless. */
+    opt_simplices none = c.S;
+    none.n = 0;
+    opt_term t2[2] = {{&c.S, OPT_ENERGY_SYMMETRIC_DIRICHLET}, {&none, OPT_ENERGY_SYMMETRIC_DIRICHLET}};
+    assert_int_equal(opt_slim_step(sl, t2, 2, changed, c.m.nv, c.dof, c.nfree, c.X, NULL, NULL), SCAF_OK);
+    assert_true(opt_terms_oriented(t2, 2, c.X, NULL, NULL));
     opt_slim_destroy(sl);
     disk_teardown(&c);
 }
