@@ -356,6 +356,16 @@ static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, cons
     opt_ls_options_default(&lo);
     lo.safety = L->opt.step_fraction;
     st = opt_line_search(terms, 2, 2, nall, X, L->dir, &lo, ls, err);
+    if (st == SCAF_ERR_NUMERIC) {
+        /* The energy is not finite in floating point at the current map (a
+         * triangle exactly positive but too thin for its determinant to
+         * round positive) or the direction is not finite: no step is safe
+         * to judge. X is unchanged and still bijective: report a zero step
+         * (the run then stops) instead of failing. */
+        err_clear(err);
+        memset(ls, 0, sizeof *ls);
+        st = SCAF_OK;
+    }
 
     tm->line_search = timer_now() - t4;
     return st;
