@@ -349,8 +349,11 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
             return err_set(&p->err, SCAF_ERR_CANCELLED, "stopped by the progress callback after iteration %d",
                            info.iteration);
         if (info.step == 0.0) break; /* no descent left */
+        /* Converged when the objective (mesh + scaffold, the energy being
+         * minimized) or the reported E stops decreasing noticeably. */
         double dec = (info.energy_before - info.energy) / info.energy_before;
-        if (p->opt.tolerance > 0.0 && dec >= 0.0 && dec < p->opt.tolerance) break;
+        double tdec = (info.total_before - info.total_after) / info.total_before;
+        if (p->opt.tolerance > 0.0 && ((dec >= 0.0 && dec < p->opt.tolerance) || tdec < p->opt.tolerance)) break;
     }
     return SCAF_OK;
 }
