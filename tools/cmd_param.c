@@ -193,6 +193,10 @@ int cmd_param(int argc, char **argv)
         return EXIT_USAGE;
     }
 
+    if (opt.energy == SCAF_ENERGY_ARAP && !quiet)
+        fprintf(stderr, "scaf param: warning: ARAP is not a barrier energy: triangles pushed towards "
+                        "inversion are only held by the line search and may become very thin "
+                        "(symmetric-dirichlet is the default for that reason)\n");
     double t_start = now();
     mesh m;
     scaf_error err;
