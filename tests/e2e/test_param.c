@@ -68,7 +68,7 @@ static void cli_param_on_generated_sample(void **state)
     test_tmp_path("e2e_param.svg", svg, sizeof svg);
     remove(out);
     assert_int_equal(run("%s gen hemisphere --size 6 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(run("%s param %s -o %s --iterations 4 --quiet --report %s --svg %s --svg-scaffold", SCAF_BINARY,
+    assert_int_equal(run("%s param %s -o %s --iterations 4 --quiet --verify --report %s --svg %s --svg-scaffold", SCAF_BINARY,
                          in, out, rep, svg),
                      0);
     assert_int_equal(run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
