@@ -328,7 +328,7 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
         }
         p = next;
     }
-    return mesh_parse_fail(err, name, line, "truncated header (no end_header)");
+    return mesh_parse_fail(err, name, line > 0 ? line : 1, "truncated header (no end_header)");
 }
 
 /* Smallest number of bytes one item of el can take. */
