@@ -31,7 +31,8 @@ typedef struct cdt_input {
 } cdt_input;
 
 typedef struct cdt_options {
-    double min_angle_deg;   /* quality bound; 0 disables refinement (20) */
+    double min_angle_deg;   /* quality bound in [0, 60); 0 disables angle
+                               refinement (20) */
     double max_area;        /* upper bound on triangle area; 0 = none (0) */
     int max_steiner;        /* safety cap on inserted points; 0 = no cap (0).
                                Whatever this says, an internal cap
@@ -69,7 +70,9 @@ typedef struct cdt_output {
  * reached from far away without crossing a segment are not output, nor are
  * holes (the left side of segments flagged left_is_hole, and the regions
  * containing hole seeds, each up to the enclosing segments). Splittable
- * segments may come out as chains of subsegments.
+ * segments may come out as chains of subsegments. A segment given twice
+ * (either direction) is kept once, as the first index, unsplittable if
+ * either copy is.
  *
  * Refinement (Ruppert / Chew style with off-centers, graded: fine near the
  * charts, coarse towards the box): triangles get a minimum angle of
