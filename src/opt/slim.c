@@ -184,7 +184,7 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
     }
     opt_chol_stats c0 = opt_chol_get_stats(sl->chol);
     double t_extend = 0;
-    if (sl->o.reuse_chart_ordering && nterms > 1 && !opt_chol_pattern_matches(sl->chol, &sl->sys.A)) {
+    if (sl->o.reuse_chart_ordering && !opt_chol_pattern_matches(sl->chol, &sl->sys.A)) {
         double te = timer_now();
         s = analyze_with_chart_ordering(sl, d, err);
         if (s != SCAF_OK) return s;

@@ -55,11 +55,11 @@ typedef struct opt_slim_options {
     opt_ls_options ls;      /* line search (opt_ls_options_default) */
     double regularization;  /* added to the diagonal of the proxy (0) */
     int block_ordering;     /* order the vertex graph, not scalars (1) */
-    int reuse_chart_ordering; /* with several terms: order term 0 (the chart)
-                               once with chart_ordering and extend it to the
-                               other terms at each new pattern
-                               (opt/ordering_reuse) instead of ordering the
-                               whole system from scratch (1) */
+    int reuse_chart_ordering; /* order term 0 (the chart) once with
+                               chart_ordering and extend it to the other
+                               terms at each new pattern (opt/ordering_reuse)
+                               instead of ordering the whole system from
+                               scratch with `ordering` (1) */
     opt_ordering chart_ordering; /* ordering computed once for term 0 (METIS) */
 } opt_slim_options;
 
