@@ -27,7 +27,8 @@ static void usage(FILE *out)
             "  --json   print one JSON object (keys: triangles, positive, flipped,\n"
             "           degenerate, charts, mirrored_charts, mixed_charts, boundary_edges,\n"
             "           boundary_loops, boundary_crossings, boundary_touchings,\n"
-            "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops, bijective)\n"
+            "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops,\n"
+            "           corner_overlaps, bijective)\n"
             "  --help   this text\n"
             "\n"
             "A chart whose triangles are all clockwise is reported as mirrored; it counts\n"
@@ -50,11 +51,11 @@ static void print_json(const char *path, const bij_report *r)
            "\"charts\": %d, \"mirrored_charts\": %d, \"mixed_charts\": %d, "
            "\"boundary_edges\": %d, \"boundary_loops\": %d, \"boundary_crossings\": %lld, "
            "\"boundary_touchings\": %lld, \"boundary_foldbacks\": %lld, \"folded_edges\": %d, \"nonmanifold_edges\": %d, "
-           "\"nested_loops\": %d, \"bijective\": %s}\n",
+           "\"nested_loops\": %d, \"corner_overlaps\": %d, \"bijective\": %s}\n",
            r->triangles, r->positive, r->flipped, r->degenerate, r->charts, r->mirrored_charts,
            r->mixed_charts, r->boundary_edges, r->boundary_loops, r->boundary_crossings,
            r->boundary_touchings, r->boundary_foldbacks, r->folded_edges, r->nonmanifold_edges, r->nested_loops,
-           r->bijective ? "true" : "false");
+           r->corner_overlaps, r->bijective ? "true" : "false");
 }
 
 static void print_text(const char *path, const bij_report *r)
@@ -73,6 +74,7 @@ static void print_text(const char *path, const bij_report *r)
     printf("  folded edges         %d\n", r->folded_edges);
     printf("  non-manifold edges   %d\n", r->nonmanifold_edges);
     printf("  nested loops         %d\n", r->nested_loops);
+    printf("  corner overlaps      %d\n", r->corner_overlaps);
 }
 
 int cmd_check(int argc, char **argv)

@@ -9,9 +9,13 @@
 /* Add a subcommand: write tools/cmd_NAME.c with `int cmd_NAME(int, char **)`,
  * declare it here and list it in the table. */
 int cmd_check(int argc, char **argv);
+int cmd_gen(int argc, char **argv);
+int cmd_info(int argc, char **argv);
 
 const command scaf_commands[] = {
     {"check", "verify that a mesh's UV map is bijective (exact)", cmd_check},
+    {"gen", "write a built-in sample mesh (hemisphere, holes, cubesphere, ...)", cmd_gen},
+    {"info", "print the topology of a mesh (components, loops, genus, defects, charts)", cmd_info},
     {NULL, NULL, NULL}
 };
 
