@@ -23,6 +23,7 @@ struct opt_slim {
     int *lead_perm;  /* ordering of term 0's system, reused across patterns */
     int lead_n;
     unsigned lead_version;    /* term 0 block version lead_perm was made for */
+    int cap_level;            /* SLIM weight cap level to start from */
     size_t cap_n, cap_x;
 };
 
@@ -154,44 +155,58 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
             st->blocks_rebuilt++;
         }
     }
-    double t1 = timer_now();
-    st->t_pattern = t1 - t0;
-    /* Values. */
-    memset(sl->rhs, 0, n * sizeof *sl->rhs);
-    for (int k = 0; k < nterms; k++) opt_proxy_block_fill(&sl->blk[k], &terms[k], dof, X, sl->rhs);
+    st->t_pattern = timer_now() - t0;
+    /* Values, factorization; on a numerically indefinite system (extreme
+     * SLIM weights) retry with the squared weights capped, tighter each
+     * time. The level that worked is kept while it is binding. */
+    static const double caps[] = {INFINITY, 1e12, 1e9, 1e6, 1e4};
+    const int ncaps = (int)(sizeof caps / sizeof caps[0]);
     const opt_proxy_block *bl[OPT_PROXY_MAX_BLOCKS];
     for (int k = 0; k < nterms; k++) bl[k] = &sl->blk[k];
-    double t2 = timer_now();
-    s = opt_proxy_system_sum(&sl->sys, bl, nterms, err);
-    if (s != SCAF_OK) return s;
-    if (sl->sys.nfree != nfree)
-        return err_set(err, SCAF_ERR_USAGE,
-                       "SLIM: %d free vertices but the simplices use only %d (a free vertex is in no "
-                       "simplex: fix it or drop it)", nfree, sl->sys.nfree);
-    double t3 = timer_now();
-    if (sl->o.regularization > 0) {
-        opt_csc *A = &sl->sys.A;
-        for (int c = 0; c < A->n; c++) {
-            int e = A->colptr[c + 1] - 1;
-            if (e >= A->colptr[c] && A->rowidx[e] == c) A->val[e] += sl->o.regularization;
-        }
-    }
-    st->t_assemble = (t2 - t1) + (t3 - t2);
-    /* Factor and solve (ordering on the vertex graph: d unknowns per vertex). */
     if (sl->o.block_ordering && !sl->block_set) {
-        opt_chol_set_block(sl->chol, d);
+        opt_chol_set_block(sl->chol, d); /* order the vertex graph: d unknowns per vertex */
         sl->block_set = 1;
     }
     opt_chol_stats c0 = opt_chol_get_stats(sl->chol);
-    double t_extend = 0;
-    if (sl->o.reuse_chart_ordering && !opt_chol_pattern_matches(sl->chol, &sl->sys.A)) {
-        double te = timer_now();
-        s = analyze_with_chart_ordering(sl, d, err);
+    double t_extend = 0, w2max = 0;
+    int level = sl->cap_level < ncaps ? sl->cap_level : 0;
+    for (;;) {
+        double ta = timer_now();
+        memset(sl->rhs, 0, n * sizeof *sl->rhs);
+        w2max = 0;
+        for (int k = 0; k < nterms; k++) {
+            double w = opt_proxy_block_fill_capped(&sl->blk[k], &terms[k], dof, X, sl->rhs, caps[level]);
+            if (w > w2max) w2max = w;
+        }
+        s = opt_proxy_system_sum(&sl->sys, bl, nterms, err);
         if (s != SCAF_OK) return s;
-        t_extend = timer_now() - te;
+        if (sl->sys.nfree != nfree)
+            return err_set(err, SCAF_ERR_USAGE,
+                           "SLIM: %d free vertices but the simplices use only %d (a free vertex is "
+                           "in no simplex: fix it or drop it)", nfree, sl->sys.nfree);
+        if (sl->o.regularization > 0) {
+            opt_csc *A = &sl->sys.A;
+            for (int c = 0; c < A->n; c++) {
+                int e = A->colptr[c + 1] - 1;
+                if (e >= A->colptr[c] && A->rowidx[e] == c) A->val[e] += sl->o.regularization;
+            }
+        }
+        st->t_assemble += timer_now() - ta;
+        if (sl->o.reuse_chart_ordering && !opt_chol_pattern_matches(sl->chol, &sl->sys.A)) {
+            double te = timer_now();
+            s = analyze_with_chart_ordering(sl, d, err);
+            if (s != SCAF_OK) return s;
+            t_extend += timer_now() - te;
+        }
+        s = opt_chol_factor(sl->chol, &sl->sys.A, err);
+        if (s == SCAF_OK) break;
+        if (s != SCAF_ERR_NUMERIC || level + 1 >= ncaps) return s;
+        level++;
+        st->cap_retries++;
     }
-    s = opt_chol_factor(sl->chol, &sl->sys.A, err);
-    if (s != SCAF_OK) return s;
+    st->weight_cap = caps[level];
+    st->max_weight2 = w2max;
+    sl->cap_level = w2max > caps[level] ? level : 0;
     s = opt_chol_solve(sl->chol, 1, sl->rhs, sl->sol, err);
     if (s != SCAF_OK) return s;
     opt_chol_stats c1 = opt_chol_get_stats(sl->chol);
