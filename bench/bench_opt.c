@@ -97,19 +97,15 @@ int main(int argc, char **argv)
 {
     polar_disk m;
     int iters, only = -1;
-    if (argc > 2 && strcmp(argv[1], "--obj") == 0) {
-        iters = argc > 3 ? atoi(argv[3]) : 6;
-        if (argc > 4) only = strcmp(argv[4], "amd") == 0 ? 0 : strcmp(argv[4], "metis") == 0 ? 1 : 2;
-    } else if (argc > 4) {
-        only = strcmp(argv[4], "amd") == 0 ? 0 : strcmp(argv[4], "metis") == 0 ? 1 : 2;
-        goto generated;
+    int from_file = argc > 2 && strcmp(argv[1], "--obj") == 0;
+    iters = argc > 3 ? atoi(argv[3]) : 6;
+    if (argc > 4) only = strcmp(argv[4], "amd") == 0 ? 0 : strcmp(argv[4], "metis") == 0 ? 1 : 2;
+    if (from_file) {
         if (load_mesh(argv[2], &m) != 0) { fprintf(stderr, "cannot load %s\n", argv[2]); return 1; }
     } else {
-    generated:;
         int rings = argc > 1 ? atoi(argv[1]) : 196, seg = argc > 2 ? atoi(argv[2]) : 256;
-        iters = argc > 3 ? atoi(argv[3]) : 6;
         if (rings < 2 || seg < 3) {
-            fprintf(stderr, "usage: bench_opt [rings>=2 segments>=3 iterations>=2] | --obj FILE [iterations]\n");
+            fprintf(stderr, "usage: bench_opt [rings>=2 segments>=3 [iterations [amd|metis|slim]]] | --obj FILE [iterations [amd|metis|slim]]\n");
             return 2;
         }
         if (polar_disk_make(&m, rings, seg, 1.0, 0) != 0) return 1;
