@@ -165,6 +165,8 @@ static int same_pattern(const opt_chol *c, const opt_csc *A)
            memcmp(c->rowidx, A->rowidx, (size_t)A->nnz * sizeof *A->rowidx) == 0;
 }
 
+int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A) { return same_pattern(c, A); }
+
 scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm,
                                    scaf_error *err)
 {
@@ -210,6 +212,17 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     c->st.analyses++;
     c->st.t_analyze += timer_now() - t0;
     return SCAF_OK;
+}
+
+scaf_status opt_chol_compute_ordering(opt_chol *c, const opt_csc *A, int *perm, scaf_error *err)
+{
+    if (A->n < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD: empty system (no free unknowns)");
+    if (c->block > 1 && A->n % c->block == 0 && c->ordering != OPT_ORDER_CHOLMOD_DEFAULT)
+        return block_ordering(c, A, perm) ? SCAF_OK : fail(c, "block ordering", err);
+    cholmod_sparse S = wrap(A);
+    int ok = c->ordering == OPT_ORDER_METIS ? cholmod_metis(&S, NULL, 0, 1, perm, &c->cm)
+                                            : cholmod_amd(&S, NULL, 0, perm, &c->cm);
+    return ok ? SCAF_OK : fail(c, "ordering", err);
 }
 
 scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)

@@ -61,6 +61,15 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err);
 scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm,
                                    scaf_error *err);
 
+/* Whether A has exactly the pattern of the last analysis (then
+ * opt_chol_factor will not analyse again). */
+int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A);
+
+/* Compute the solver's fill-reducing permutation of A (n entries, block-
+ * aware as set by opt_chol_set_block) without analysing: for building
+ * orderings of related systems (opt/ordering_reuse). */
+scaf_status opt_chol_compute_ordering(opt_chol *c, const opt_csc *A, int *perm, scaf_error *err);
+
 /* Solve A X = B for nrhs right-hand sides. B, X: n by nrhs, column-major
  * (column k at B + k*n); X may equal B. */
 scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, scaf_error *err);

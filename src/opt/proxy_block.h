@@ -55,6 +55,12 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
 void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
                           double *rhs);
 
+/* The same with squared SLIM weights capped at w2_cap (see
+ * opt_slim_proxy_capped). Returns the largest uncapped squared weight, so
+ * the caller knows whether the cap changed anything. */
+double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const int *dof,
+                                   const double *X, double *rhs, double w2_cap);
+
 /* Fill with a fixed quadratic: the same with W = I and T = 0 for every
  * simplex, i.e. the Dirichlet (cotangent Laplacian) system of the rest
  * shapes — the harmonic map with the fixed vertices as boundary. */

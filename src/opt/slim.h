@@ -14,7 +14,10 @@
  * solver between calls. Pass term_changed[k] != 0 when term k's simplices
  * (connectivity) or the dof numbering of their vertices changed since the
  * last call — the scaffold every iteration; the chart's block is then
- * reused as is. Errors: those of the parts (SCAF_ERR_NUMERIC when the
+ * reused as is. When the proxy is numerically indefinite (squared SLIM
+ * weights grow like s^-3 for a very compressed simplex), the factorization
+ * is retried with the weights capped (1e12, 1e9, 1e6, 1e4), and the level
+ * that worked is kept while it is binding. Errors: those of the parts (SCAF_ERR_NUMERIC when the
  * system is not positive definite or the state is invalid, SCAF_ERR_NOMEM,
  * SCAF_ERR_USAGE); on error X is unchanged.
  *
@@ -55,6 +58,12 @@ typedef struct opt_slim_options {
     opt_ls_options ls;      /* line search (opt_ls_options_default) */
     double regularization;  /* added to the diagonal of the proxy (0) */
     int block_ordering;     /* order the vertex graph, not scalars (1) */
+    int reuse_chart_ordering; /* order term 0 (the chart) once with
+                               chart_ordering and extend it to the other
+                               terms at each new pattern (opt/ordering_reuse)
+                               instead of ordering the whole system from
+                               scratch with `ordering` (1) */
+    opt_ordering chart_ordering; /* ordering computed once for term 0 (METIS) */
 } opt_slim_options;
 
 typedef struct opt_slim_stats {
@@ -66,6 +75,9 @@ typedef struct opt_slim_stats {
     double t_line_search;
     int analyzed;        /* 1 if this iteration needed a new analysis */
     int blocks_rebuilt;  /* terms whose pattern was rebuilt this iteration */
+    int cap_retries;     /* factorizations redone with tighter weight caps */
+    double weight_cap;   /* cap on squared SLIM weights used (INFINITY: none) */
+    double max_weight2;  /* largest uncapped squared SLIM weight */
     opt_ls_result ls;    /* step, energies before/after, backtracks */
 } opt_slim_stats;
 
