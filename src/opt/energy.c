@@ -161,9 +161,41 @@ void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T)
     opt_slim_proxy_capped(e, d, J, INFINITY, W, T);
 }
 
+/* Squared SLIM weight of symmetric Dirichlet at singular value s. */
+static double sd_w2(double s) { return s > 0 ? (s + 1) * (s * s + 1) / (s * s * s) : 1.0; }
+
+/* 2D symmetric Dirichlet / ARAP without trigonometry: with J split into
+ * its similarity part (E, H) and anti-similarity part (F, G), the closest
+ * rotation U V^T is the rotation by angle(E, H), and U diag(w) U^T =
+ * mean(w) I + half-difference(w) * reflection by angle(F, G) + angle(E, H). */
+static double proxy2_rotation_target(opt_energy e, const double *J, double w2_cap, double *W,
+                                     double *T)
+{
+    double E = 0.5 * (J[0] + J[3]), F = 0.5 * (J[0] - J[3]);
+    double G = 0.5 * (J[2] + J[1]), H = 0.5 * (J[2] - J[1]);
+    double Q = hypot(E, H), R = hypot(F, G);
+    double s0 = Q + R, s1 = Q - R;
+    double w0 = e == OPT_ENERGY_ARAP ? 1.0 : sd_w2(s0), w1 = e == OPT_ENERGY_ARAP ? 1.0 : sd_w2(s1);
+    double w2max = w0 > w1 ? w0 : w1;
+    if (w0 > w2_cap) w0 = w2_cap;
+    if (w1 > w2_cap) w1 = w2_cap;
+    double ca = Q > 0 ? E / Q : 1.0, sa = Q > 0 ? H / Q : 0.0;
+    T[0] = ca; T[1] = -sa; T[2] = sa; T[3] = ca;
+    double r0 = sqrt(w0), r1 = sqrt(w1), m = 0.5 * (r0 + r1), h = 0.5 * (r0 - r1);
+    double c2 = 1.0, s2 = 0.0;
+    if (R > 0 && Q > 0) {
+        c2 = (F * E - G * H) / (R * Q);
+        s2 = (G * E + F * H) / (R * Q);
+    }
+    W[0] = m + h * c2; W[1] = h * s2; W[2] = h * s2; W[3] = m - h * c2;
+    return w2max;
+}
+
 double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap, double *W,
                              double *T)
 {
+    if (d == 2 && (e == OPT_ENERGY_SYMMETRIC_DIRICHLET || e == OPT_ENERGY_ARAP))
+        return proxy2_rotation_target(e, J, w2_cap, W, T);
     double U[9], V[9], s[3], w2[3], t[3];
     svd_signed(d, J, U, s, V);
     switch (e) {
@@ -171,7 +203,7 @@ double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap
         for (int i = 0; i < d; i++) {
             t[i] = 1.0;
             /* g/(2(s-1)) with g = 2s - 2/s^3, simplified: no 0/0 at s = 1. */
-            w2[i] = s[i] > 0 ? (s[i] + 1) * (s[i] * s[i] + 1) / (s[i] * s[i] * s[i]) : 1.0;
+            w2[i] = sd_w2(s[i]);
         }
         break;
     case OPT_ENERGY_ARAP:

@@ -54,22 +54,26 @@ int opt_terms_oriented(const opt_term *terms, int nterms, const double *X, int *
     return 1;
 }
 
-/* E'(0) along D: sum weight * <dE/dJ, J(D)> (J is linear in positions). */
-static double slope_along(const opt_term *terms, int nterms, const double *X, const double *D)
+/* E(0) and E'(0) along D in one pass: sum weight * density and
+ * sum weight * <dE/dJ, J(D)> (J is linear in positions). */
+static double energy_and_slope(const opt_term *terms, int nterms, const double *X, const double *D,
+                               double *energy)
 {
-    double acc = 0, J[9], G[9], JD[9];
+    double acc = 0, e = 0, J[9], G[9], JD[9];
     for (int k = 0; k < nterms; k++) {
         const opt_simplices *S = terms[k].s;
         int d = S->d;
         for (int s = 0; s < S->n; s++) {
             opt_jacobian(S, s, X, J);
             opt_jacobian(S, s, D, JD);
-            opt_density_grad(terms[k].energy, d, J, G);
+            double v = opt_density_grad(terms[k].energy, d, J, G);
             double dot = 0;
             for (int q = 0; q < d * d; q++) dot += G[q] * JD[q];
             acc += S->weight[s] * dot;
+            e += S->weight[s] * v;
         }
     }
+    *energy = e;
     return acc;
 }
 
@@ -85,7 +89,8 @@ scaf_status opt_line_search(const opt_term *terms, int nterms, int d, int nv, do
         if (!isfinite(D[k]))
             return err_set(err, SCAF_ERR_NUMERIC, "line search: direction entry %zu (vertex %zu) is not finite",
                            k, k / d);
-    double e0 = opt_terms_energy(terms, nterms, X);
+    double e0;
+    double slope = energy_and_slope(terms, nterms, X, D, &e0);
     res->energy_before = e0;
     res->energy_after = e0;
     if (!isfinite(e0))
@@ -97,7 +102,6 @@ scaf_status opt_line_search(const opt_term *terms, int nterms, int d, int nv, do
         if (t < tmax) tmax = t;
     }
     res->max_flip_free = tmax;
-    double slope = slope_along(terms, nterms, X, D);
     res->slope = slope;
     if (!(slope < 0)) return SCAF_OK; /* not a descent direction: no step */
     double t = fmin(o->max_step, o->safety * tmax);

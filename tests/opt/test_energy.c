@@ -227,6 +227,34 @@ static void slim_proxy_gradient_matches(void **state)
         }
 }
 
+/* The trig-free 2D proxy equals the one built from the explicit SVD. */
+static void proxy_2d_matches_svd(void **state)
+{
+    (void)state;
+    rng r = {17};
+    for (int trial = 0; trial < 2000; trial++) {
+        double J[4], U[4], V[4], sv[2], W[4], T[4];
+        do {
+            for (int k = 0; k < 4; k++) J[k] = rng_uniform(&r, -2, 2);
+        } while (det_d(2, J) <= 1e-3);
+        if (trial == 0) { J[0] = 1.5; J[1] = 0; J[2] = 0; J[3] = 1.5; } /* equal singular values */
+        svd2_signed(J, U, sv, V);
+        for (int e = 0; e < 2; e++) {
+            double w[2];
+            for (int i = 0; i < 2; i++)
+                w[i] = e == 0 ? sqrt((sv[i] + 1) * (sv[i] * sv[i] + 1) / (sv[i] * sv[i] * sv[i])) : 1.0;
+            opt_slim_proxy(e == 0 ? OPT_ENERGY_SYMMETRIC_DIRICHLET : OPT_ENERGY_ARAP, 2, J, W, T);
+            for (int a = 0; a < 2; a++)
+                for (int b = 0; b < 2; b++) {
+                    double wr = U[a * 2] * w[0] * U[b * 2] + U[a * 2 + 1] * w[1] * U[b * 2 + 1];
+                    double tr = U[a * 2] * V[b * 2] + U[a * 2 + 1] * V[b * 2 + 1];
+                    assert_true(fabs(W[a * 2 + b] - wr) < 1e-9 * (1 + fabs(wr)));
+                    assert_true(fabs(T[a * 2 + b] - tr) < 1e-12);
+                }
+        }
+    }
+}
+
 static void conformal_3d_proxy_is_spd(void **state)
 {
     (void)state;
@@ -295,6 +323,7 @@ int main(void)
         cmocka_unit_test(isometry_values),
         cmocka_unit_test(rotation_invariance),
         cmocka_unit_test(slim_proxy_gradient_matches),
+        cmocka_unit_test(proxy_2d_matches_svd),
         cmocka_unit_test(conformal_3d_proxy_is_spd),
         cmocka_unit_test(capped_proxy),
         cmocka_unit_test(builders_refuse_bad_input),
