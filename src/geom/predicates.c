@@ -31,6 +31,15 @@ static const double ccw_bound = (3.0 + 16.0 * EPS) * EPS;
 static const double o3d_bound = (7.0 + 56.0 * EPS) * EPS;
 static const double icc_bound = (10.0 + 96.0 * EPS) * EPS;
 static const double isp_bound = (16.0 + 224.0 * EPS) * EPS;
+/* Stage B/C bounds (derivation in the banner): B = the difference rounding
+ * errors; C = second-order terms plus the rounding of the first-order
+ * correction. */
+static const double ccw_boundB = (2.0 + 16.0 * EPS) * EPS;
+static const double ccw_boundC = 16.0 * EPS * EPS;
+static const double o3d_boundB = (3.0 + 32.0 * EPS) * EPS;
+static const double o3d_boundC = 48.0 * EPS * EPS;
+static const double icc_boundB = (4.0 + 64.0 * EPS) * EPS;
+static const double icc_boundC = 64.0 * EPS * EPS;
 /* Generous multiple of the largest underflow error of one product. */
 #define UFL 0x1p-1060
 
@@ -67,6 +76,41 @@ static int low_exponent(const double *x, int n)
 
 static double sign_of(const bigint *b) { return (double)b->sign; }
 
+/* ---- helpers of the adaptive stages B and C ---- */
+
+/* h = a * b exactly, 0..2 components (zeros dropped). */
+static int prod_exp(double a, double b, double *h)
+{
+    double x, y;
+    two_product(a, b, &x, &y);
+    int n = 0;
+    if (y != 0.0) h[n++] = y;
+    if (x != 0.0) h[n++] = x;
+    return n;
+}
+
+/* m = a * b - c * d exactly, 0..4 components. */
+static int det2_exp(double a, double b, double c, double d, double *m)
+{
+    double l[2], r[2];
+    int nl = prod_exp(a, b, l);
+    int nr = prod_exp(-c, d, r); /* negating a factor is exact */
+    return exp_sum(nl, l, nr, r, m);
+}
+
+/* 1 when the value of the expansion e surely exceeds err in magnitude.
+ * e is nonoverlapping and sorted, so everything below its largest
+ * component T sums to less than 2 |e[n-2]| in magnitude (e[n-2] plus the
+ * rest, which is below e[n-2]'s lowest bit): |value| > |T| - 2 |e[n-2]|.
+ * The computed right side rounds down by at most (1 - EPS)^2 on err and
+ * 3 (1 - EPS)^2 > 2 on e[n-2]; the B/C constants absorb the former. */
+static int exceeds(int n, const double *e, double err)
+{
+    if (n == 0) return 0;
+    double below = n > 1 ? fabs(e[n - 2]) : 0.0;
+    return fabs(e[n - 1]) > err + 3.0 * below;
+}
+
 /* ---- orient2d ---- */
 
 static double orient2d_bigint(const double *p)
@@ -85,11 +129,31 @@ static double orient2d_bigint(const double *p)
     return sign_of(&l);
 }
 
+/* Stages B and C (coordinates in range). perm is the filter's permanent.
+ * Sets *done when the sign is decided. */
+static double orient2d_adapt(const double a[2], const double b[2], const double c[2], double perm,
+                             int *done)
+{
+    double acx, acy, bcx, bcy, acxt, acyt, bcxt, bcyt;
+    two_diff(a[0], c[0], &acx, &acxt);
+    two_diff(a[1], c[1], &acy, &acyt);
+    two_diff(b[0], c[0], &bcx, &bcxt);
+    two_diff(b[1], c[1], &bcy, &bcyt);
+    double v[4], w[5];
+    int nv = det2_exp(acx, bcy, acy, bcx, v);
+    *done = 1;
+    if (acxt == 0.0 && acyt == 0.0 && bcxt == 0.0 && bcyt == 0.0) return exp_sign_estimate(nv, v);
+    if (exceeds(nv, v, ccw_boundB * perm)) return v[nv - 1];
+    double lt = (acxt * bcy + acx * bcyt) - (acyt * bcx + acy * bcxt);
+    int nw = exp_sum(nv, v, lt != 0.0, &lt, w);
+    if (exceeds(nw, w, ccw_boundC * perm)) return w[nw - 1];
+    *done = 0;
+    return 0.0;
+}
+
+/* Stage D: the exact determinant from the exact differences. */
 static double orient2d_exact(const double a[2], const double b[2], const double c[2])
 {
-    const double p[6] = {a[0], a[1], b[0], b[1], c[0], c[1]};
-    if (!all_finite(p, 6)) return NAN;
-    if (!in_range(p, 6, 0x1p-450, 0x1p450)) return orient2d_bigint(p);
     double acx[2], acy[2], bcx[2], bcy[2], l[8], r[8], h[16], w[16];
     int nacx = exp_from_diff(a[0], c[0], acx);
     int nacy = exp_from_diff(a[1], c[1], acy);
@@ -108,8 +172,15 @@ double orient2d(const double a[2], const double b[2], const double c[2])
     double acy = a[1] - c[1], bcy = b[1] - c[1];
     double l = acx * bcy, r = acy * bcx;
     double det = l - r;
-    double bound = ccw_bound * (fabs(l) + fabs(r)) + UFL;
+    double perm = fabs(l) + fabs(r);
+    double bound = ccw_bound * perm + UFL;
     if (det > bound || -det > bound) return det;
+    const double p[6] = {a[0], a[1], b[0], b[1], c[0], c[1]};
+    if (!all_finite(p, 6)) return NAN;
+    if (!in_range(p, 6, 0x1p-450, 0x1p450)) return orient2d_bigint(p);
+    int done;
+    det = orient2d_adapt(a, b, c, perm, &done);
+    if (done) return det;
     return orient2d_exact(a, b, c);
 }
 
@@ -151,12 +222,50 @@ static int exp_minor(int nx1, const double *x1, int ny2, const double *y2, int n
     return exp_sum(nl, l, nr, r, m);
 }
 
+/* Stages B and C (coordinates in range), as for orient2d. */
+static double orient3d_adapt(const double a[3], const double b[3], const double c[3],
+                             const double d[3], double perm, int *done)
+{
+    const double *pt[3] = {a, b, c};
+    double x[3], y[3], z[3], xt[3], yt[3], zt[3];
+    int inexact = 0;
+    for (int k = 0; k < 3; k++) {
+        two_diff(pt[k][0], d[0], &x[k], &xt[k]);
+        two_diff(pt[k][1], d[1], &y[k], &yt[k]);
+        two_diff(pt[k][2], d[2], &z[k], &zt[k]);
+        inexact |= (xt[k] != 0.0) | (yt[k] != 0.0) | (zt[k] != 0.0);
+    }
+    /* det = sum over k of z_k (x_i y_j - x_j y_i), (k, i, j) cyclic */
+    double m[4], t[3][8], v01[16], v[24], w[25];
+    int nt[3];
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        int nm = det2_exp(x[i], y[j], x[j], y[i], m);
+        nt[k] = exp_scale(nm, m, z[k], t[k]);
+    }
+    int n01 = exp_sum(nt[0], t[0], nt[1], t[1], v01);
+    int nv = exp_sum(n01, v01, nt[2], t[2], v);
+    *done = 1;
+    if (!inexact) return exp_sign_estimate(nv, v);
+    if (exceeds(nv, v, o3d_boundB * perm)) return v[nv - 1];
+    double tc[3];
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        double mh = x[i] * y[j] - x[j] * y[i];
+        double mt = (xt[i] * y[j] + x[i] * yt[j]) - (xt[j] * y[i] + x[j] * yt[i]);
+        tc[k] = zt[k] * mh + z[k] * mt;
+    }
+    double lt = (tc[0] + tc[1]) + tc[2];
+    int nw = exp_sum(nv, v, lt != 0.0, &lt, w);
+    if (exceeds(nw, w, o3d_boundC * perm)) return w[nw - 1];
+    *done = 0;
+    return 0.0;
+}
+
+/* Stage D: the exact determinant from the exact differences. */
 static double orient3d_exact(const double a[3], const double b[3], const double c[3],
                              const double d[3])
 {
-    const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
-    if (!all_finite(p, 12)) return NAN;
-    if (!in_range(p, 12, 0x1p-280, 0x1p300)) return orient3d_bigint(p);
     double ad[3][2], bd[3][2], cd[3][2];
     int na[3], nb[3], nc[3];
     for (int j = 0; j < 3; j++) {
@@ -191,6 +300,12 @@ double orient3d(const double a[3], const double b[3], const double c[3], const d
                   (fabs(adxbdy) + fabs(bdxady)) * cz;
     double bound = o3d_bound * perm + UFL * (az + bz + cz + 1.0);
     if (det > bound || -det > bound) return det;
+    const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
+    if (!all_finite(p, 12)) return NAN;
+    if (!in_range(p, 12, 0x1p-280, 0x1p300)) return orient3d_bigint(p);
+    int done;
+    det = orient3d_adapt(a, b, c, d, perm, &done);
+    if (done) return det;
     return orient3d_exact(a, b, c, d);
 }
 
@@ -221,12 +336,57 @@ static double incircle_bigint(const double *p)
     return sign_of(&acc);
 }
 
+/* Stages B and C (coordinates in range), as for orient2d. */
+static double incircle_adapt(const double a[2], const double b[2], const double c[2],
+                             const double d[2], double perm, int *done)
+{
+    const double *pt[3] = {a, b, c};
+    double x[3], y[3], xt[3], yt[3];
+    int inexact = 0;
+    for (int k = 0; k < 3; k++) {
+        two_diff(pt[k][0], d[0], &x[k], &xt[k]);
+        two_diff(pt[k][1], d[1], &y[k], &yt[k]);
+        inexact |= (xt[k] != 0.0) | (yt[k] != 0.0);
+    }
+    /* det = sum over k of (x_k^2 + y_k^2) (x_i y_j - x_j y_i), (k, i, j)
+     * cyclic; each lift times minor as ((m x) x) + ((m y) y) */
+    double m[4], s1[8], s2[16], s3[8], s4[16], t[3][32], v01[64], v[96], w[97];
+    int nt[3];
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        int nm = det2_exp(x[i], y[j], x[j], y[i], m);
+        int n1 = exp_scale(nm, m, x[k], s1);
+        int n2 = exp_scale(n1, s1, x[k], s2);
+        int n3 = exp_scale(nm, m, y[k], s3);
+        int n4 = exp_scale(n3, s3, y[k], s4);
+        nt[k] = exp_sum(n2, s2, n4, s4, t[k]);
+    }
+    int n01 = exp_sum(nt[0], t[0], nt[1], t[1], v01);
+    int nv = exp_sum(n01, v01, nt[2], t[2], v);
+    *done = 1;
+    if (!inexact) return exp_sign_estimate(nv, v);
+    if (exceeds(nv, v, icc_boundB * perm)) return v[nv - 1];
+    /* first-order correction: d(lift) = 2 (x xt + y yt), d(minor) = mt */
+    double tc[3];
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        double mh = x[i] * y[j] - x[j] * y[i];
+        double mt = (xt[i] * y[j] + x[i] * yt[j]) - (xt[j] * y[i] + x[j] * yt[i]);
+        double lift = x[k] * x[k] + y[k] * y[k];
+        double lt = x[k] * xt[k] + y[k] * yt[k];
+        tc[k] = lift * mt + (2.0 * lt) * mh;
+    }
+    double lc = (tc[0] + tc[1]) + tc[2];
+    int nw = exp_sum(nv, v, lc != 0.0, &lc, w);
+    if (exceeds(nw, w, icc_boundC * perm)) return w[nw - 1];
+    *done = 0;
+    return 0.0;
+}
+
+/* Stage D: the exact determinant from the exact differences. */
 static double incircle_exact(const double a[2], const double b[2], const double c[2],
                              const double d[2])
 {
-    const double p[8] = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
-    if (!all_finite(p, 8)) return NAN;
-    if (!in_range(p, 8, 0x1p-200, 0x1p200)) return incircle_bigint(p);
     const double *pt[3] = {a, b, c};
     double dx[3][2], dy[3][2], lift[3][16];
     int nx[3], ny[3], nlift[3];
@@ -267,6 +427,12 @@ double incircle(const double a[2], const double b[2], const double c[2], const d
     double perm = pa * alift + pb * blift + pc * clift;
     double bound = icc_bound * perm + UFL * (alift + blift + clift + pa + pb + pc + 1.0);
     if (det > bound || -det > bound) return det;
+    const double p[8] = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
+    if (!all_finite(p, 8)) return NAN;
+    if (!in_range(p, 8, 0x1p-200, 0x1p200)) return incircle_bigint(p);
+    int done;
+    det = incircle_adapt(a, b, c, d, perm, &done);
+    if (done) return det;
     return incircle_exact(a, b, c, d);
 }
 
