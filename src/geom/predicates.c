@@ -40,8 +40,18 @@ static const double o3d_boundB = (3.0 + 32.0 * EPS) * EPS;
 static const double o3d_boundC = 48.0 * EPS * EPS;
 static const double icc_boundB = (4.0 + 64.0 * EPS) * EPS;
 static const double icc_boundC = 64.0 * EPS * EPS;
+static const double icc_boundB1 = 256.0 * EPS * EPS;
+static const double icc_resultB1 = (1.0 + 8.0 * EPS) * EPS;
 /* Generous multiple of the largest underflow error of one product. */
 #define UFL 0x1p-1060
+
+/* The slow paths stay out of line so the filter's fast path keeps a small
+ * stack frame. */
+#if defined(__GNUC__) || defined(__clang__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
 
 /* ---- range test for the expansion stage ---- */
 
@@ -166,6 +176,18 @@ static double orient2d_exact(const double a[2], const double b[2], const double 
     return exp_sign_estimate(nh, h);
 }
 
+/* Filter failed: the range guards, stages B and C, then D. */
+static NOINLINE double orient2d_slow(const double a[2], const double b[2], const double c[2], double perm)
+{
+    const double p[6] = {a[0], a[1], b[0], b[1], c[0], c[1]};
+    if (!all_finite(p, 6)) return NAN;
+    if (!in_range(p, 6, 0x1p-450, 0x1p450)) return orient2d_bigint(p);
+    int done;
+    double det = orient2d_adapt(a, b, c, perm, &done);
+    if (done) return det;
+    return orient2d_exact(a, b, c);
+}
+
 double orient2d(const double a[2], const double b[2], const double c[2])
 {
     double acx = a[0] - c[0], bcx = b[0] - c[0];
@@ -175,13 +197,7 @@ double orient2d(const double a[2], const double b[2], const double c[2])
     double perm = fabs(l) + fabs(r);
     double bound = ccw_bound * perm + UFL;
     if (det > bound || -det > bound) return det;
-    const double p[6] = {a[0], a[1], b[0], b[1], c[0], c[1]};
-    if (!all_finite(p, 6)) return NAN;
-    if (!in_range(p, 6, 0x1p-450, 0x1p450)) return orient2d_bigint(p);
-    int done;
-    det = orient2d_adapt(a, b, c, perm, &done);
-    if (done) return det;
-    return orient2d_exact(a, b, c);
+    return orient2d_slow(a, b, c, perm);
 }
 
 /* ---- orient3d ---- */
@@ -286,6 +302,18 @@ static double orient3d_exact(const double a[3], const double b[3], const double 
     return exp_sign_estimate(nh, h);
 }
 
+/* Filter failed: the range guards, stages B and C, then D. */
+static NOINLINE double orient3d_slow(const double a[3], const double b[3], const double c[3], const double d[3], double perm)
+{
+    const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
+    if (!all_finite(p, 12)) return NAN;
+    if (!in_range(p, 12, 0x1p-280, 0x1p300)) return orient3d_bigint(p);
+    int done;
+    double det = orient3d_adapt(a, b, c, d, perm, &done);
+    if (done) return det;
+    return orient3d_exact(a, b, c, d);
+}
+
 double orient3d(const double a[3], const double b[3], const double c[3], const double d[3])
 {
     double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
@@ -300,13 +328,7 @@ double orient3d(const double a[3], const double b[3], const double c[3], const d
                   (fabs(adxbdy) + fabs(bdxady)) * cz;
     double bound = o3d_bound * perm + UFL * (az + bz + cz + 1.0);
     if (det > bound || -det > bound) return det;
-    const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
-    if (!all_finite(p, 12)) return NAN;
-    if (!in_range(p, 12, 0x1p-280, 0x1p300)) return orient3d_bigint(p);
-    int done;
-    det = orient3d_adapt(a, b, c, d, perm, &done);
-    if (done) return det;
-    return orient3d_exact(a, b, c, d);
+    return orient3d_slow(a, b, c, d, perm);
 }
 
 /* ---- incircle ---- */
@@ -348,6 +370,50 @@ static double incircle_adapt(const double a[2], const double b[2], const double 
         two_diff(pt[k][1], d[1], &y[k], &yt[k]);
         inexact |= (xt[k] != 0.0) | (yt[k] != 0.0);
     }
+    /* first-order tail correction: d(lift) = 2 (x xt + y yt), d(minor) = mt */
+    double lc = 0.0;
+    if (inexact) {
+        double tc[3];
+        for (int k = 0; k < 3; k++) {
+            int i = (k + 1) % 3, j = (k + 2) % 3;
+            double mh = x[i] * y[j] - x[j] * y[i];
+            double mt = (xt[i] * y[j] + x[i] * yt[j]) - (xt[j] * y[i] + x[j] * yt[i]);
+            double lift = x[k] * x[k] + y[k] * y[k];
+            double lt = x[k] * xt[k] + y[k] * yt[k];
+            tc[k] = lift * mt + (2.0 * lt) * mh;
+        }
+        lc = (tc[0] + tc[1]) + tc[2];
+    }
+    /* stage B1: lifts and minors of the heads as unevaluated double sums
+     * (l + lo, s + r), their products' leading parts l s exact, summed
+     * exactly; the rest plus the tail correction in plain floating point */
+    double ps[3], small = 0.0;
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        double p, e, q, f, sh, st, a1, ea, b1, eb, l, lt, pe;
+        two_product(x[i], y[j], &p, &e);
+        two_product(x[j], y[i], &q, &f);
+        two_diff(p, q, &sh, &st);
+        double r = (st + e) - f;
+        two_product(x[k], x[k], &a1, &ea);
+        two_product(y[k], y[k], &b1, &eb);
+        two_sum(a1, b1, &l, &lt);
+        double lo = (lt + ea) + eb;
+        two_product(l, sh, &ps[k], &pe);
+        small += (l * r + lo * sh) + pe;
+    }
+    {
+        double g, gt, G, Gt;
+        two_sum(ps[0], ps[1], &g, &gt);
+        two_sum(g, ps[2], &G, &Gt);
+        double rest = (((gt + Gt) + small) + lc);
+        double det = G + rest;
+        double err = icc_boundB1 * perm + icc_resultB1 * fabs(det);
+        if (det > err || -det > err) {
+            *done = 1;
+            return det;
+        }
+    }
     /* det = sum over k of (x_k^2 + y_k^2) (x_i y_j - x_j y_i), (k, i, j)
      * cyclic; each lift times minor as ((m x) x) + ((m y) y) */
     double m[4], s1[8], s2[16], s3[8], s4[16], t[3][32], v01[64], v[96], w[97];
@@ -366,17 +432,6 @@ static double incircle_adapt(const double a[2], const double b[2], const double 
     *done = 1;
     if (!inexact) return exp_sign_estimate(nv, v);
     if (exceeds(nv, v, icc_boundB * perm)) return v[nv - 1];
-    /* first-order correction: d(lift) = 2 (x xt + y yt), d(minor) = mt */
-    double tc[3];
-    for (int k = 0; k < 3; k++) {
-        int i = (k + 1) % 3, j = (k + 2) % 3;
-        double mh = x[i] * y[j] - x[j] * y[i];
-        double mt = (xt[i] * y[j] + x[i] * yt[j]) - (xt[j] * y[i] + x[j] * yt[i]);
-        double lift = x[k] * x[k] + y[k] * y[k];
-        double lt = x[k] * xt[k] + y[k] * yt[k];
-        tc[k] = lift * mt + (2.0 * lt) * mh;
-    }
-    double lc = (tc[0] + tc[1]) + tc[2];
     int nw = exp_sum(nv, v, lc != 0.0, &lc, w);
     if (exceeds(nw, w, icc_boundC * perm)) return w[nw - 1];
     *done = 0;
@@ -410,6 +465,18 @@ static double incircle_exact(const double a[2], const double b[2], const double 
     return exp_sign_estimate(nacc, acc);
 }
 
+/* Filter failed: the range guards, stages B and C, then D. */
+static NOINLINE double incircle_slow(const double a[2], const double b[2], const double c[2], const double d[2], double perm)
+{
+    const double p[8] = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
+    if (!all_finite(p, 8)) return NAN;
+    if (!in_range(p, 8, 0x1p-200, 0x1p200)) return incircle_bigint(p);
+    int done;
+    double det = incircle_adapt(a, b, c, d, perm, &done);
+    if (done) return det;
+    return incircle_exact(a, b, c, d);
+}
+
 double incircle(const double a[2], const double b[2], const double c[2], const double d[2])
 {
     double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
@@ -427,13 +494,7 @@ double incircle(const double a[2], const double b[2], const double c[2], const d
     double perm = pa * alift + pb * blift + pc * clift;
     double bound = icc_bound * perm + UFL * (alift + blift + clift + pa + pb + pc + 1.0);
     if (det > bound || -det > bound) return det;
-    const double p[8] = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
-    if (!all_finite(p, 8)) return NAN;
-    if (!in_range(p, 8, 0x1p-200, 0x1p200)) return incircle_bigint(p);
-    int done;
-    det = incircle_adapt(a, b, c, d, perm, &done);
-    if (done) return det;
-    return incircle_exact(a, b, c, d);
+    return incircle_slow(a, b, c, d, perm);
 }
 
 /* ---- insphere ---- */
