@@ -1,23 +1,65 @@
 /* geom/predicates: exact orient2d, incircle, orient3d, insphere on doubles.
  *
- * Three stages per call:
- *  1. Filter: the determinant in plain doubles with a forward error bound
+ * Stages per call; each later stage runs only when the earlier ones could
+ * not decide the sign. u = 2^-53 is the unit roundoff.
+ *  A. Filter: the determinant in plain doubles with a forward error bound
  *     (Shewchuk's permanent-based bound, constants from his analysis) plus
  *     an absolute term for products that underflow into the subnormal
  *     range (each such product is off by at most 2^-1075, scaled by the
  *     factors it is later multiplied with). Overflow turns the bound into
  *     inf or NaN, which never passes. Most calls end here.
- *  2. Expansion arithmetic (geom/expansion) on the exact coordinate
- *     differences. Exact when every nonzero coordinate magnitude lies in
- *     [2^-LO, 2^HI] for the predicate's LO/HI below: then every exact
- *     intermediate is a multiple of 2^-1022 (no bits lost to underflow) and
- *     below 2^995 (no overflow, Veltkamp split safe).
+ *  Range guard: a NaN or infinite coordinate gives NaN; if some nonzero
+ *     coordinate magnitude lies outside [2^-LO, 2^HI] the call goes to the
+ *     integer stage E:
  *        orient2d: [2^-450, 2^450]   orient3d: [2^-280, 2^300]
- *        incircle: [2^-200, 2^200]   insphere: stage skipped
- *  3. Otherwise fixed-point integers (geom/bigint): exact for every finite
- *     double, slower. insphere's exact stage always uses it.
- * So the sign is exact for ALL finite inputs. A NaN or infinite coordinate
- * yields NaN (no sign). No state, no allocation.
+ *        incircle: [2^-200, 2^200]   insphere: always E
+ *     Inside the range every coordinate is a multiple of g = 2^-(LO+52),
+ *     so every coordinate difference, its rounded value ("head" x =
+ *     fl(a - d)) and its rounding error ("tail" xt = (a - d) - x, exact by
+ *     two_diff, |xt| <= u |x|) is a multiple of g of magnitude at most
+ *     2^(HI+1). Rounding a multiple of a power of two >= 2^-1074 gives a
+ *     multiple of it, so any value computed with + - x from such numbers
+ *     at polynomial degree k (exactly or in floating point) is 0 or a
+ *     multiple of g^k >= 2^-1008: a normal number. Degrees here are <= 4
+ *     (orient2d 2, orient3d 3), magnitudes stay below 2^995. Hence in
+ *     stages B-D no bits are lost to underflow (the filter's absolute
+ *     term is not needed: each rounding has relative error <= u), nothing
+ *     overflows, and the Veltkamp split of geom/expansion is exact.
+ *  Notation: D = the determinant of the exact differences, D(h) = the same
+ *     polynomial of the heads, P = its permanent (sum of the magnitudes of
+ *     its monomials) in the heads. The filter's computed permanent P' has
+ *     at most 2 (orient2d), 5 (orient3d), 7 (incircle) roundings per
+ *     monomial, so P <= P' (1 + 8u). An n-degree monomial of the exact
+ *     differences is the heads' monomial times prod(1 + d_i), |d_i| <= u.
+ *     A value held as an expansion (nonoverlapping, sorted) exceeds E in
+ *     magnitude when |largest| > E + 3 |second largest| (everything below
+ *     the largest sums to less than 2 |second|; see exceeds()).
+ *  B. D(h) as an exact expansion. If every tail is 0, D(h) = D: done
+ *     (e.g. all coordinates within a factor 2 of each other: Sterbenz).
+ *     Otherwise |D - D(h)| <= ((1+u)^n - 1) P: decided when D(h) exceeds
+ *     (2 + 16u)u P' (orient2d), (3 + 32u)u P' (orient3d).
+ *  B1 (incircle only, before B because it is ~8x cheaper): each lift and
+ *     minor of the heads as an unevaluated sum of two doubles (errors <=
+ *     4u^2 of their permanents), the leading products exact, leading sums
+ *     exact (two_sum), the rest and the first-order tail correction L'
+ *     (stage C) in floating point. Error <= u |det| + 114 u^2 P + O(u^3)P
+ *     (27 from the products, 44 from summing the small parts, 43 from the
+ *     tails as in C); decided when |det| > (1 + 8u)u |det| + 256 u^2 P'.
+ *     When it fails, D is within ~300 u^2 P of 0 and B's own test could
+ *     not pass either, so incircle's B only serves the all-tails-zero exit.
+ *  C. D(h) + L' exactly (one more expansion component), where L' is the
+ *     first-order tail correction (sum over each monomial's factors of the
+ *     monomial with that factor replaced by its tail) in floating point:
+ *     |D - D(h) - L'| <= ((1+u)^n - 1 - nu) P + gamma_k n u P, k the
+ *     roundings per term of L' (3, 7, 9), i.e. 7, 24, 42 u^2 P; decided
+ *     when the sum exceeds 16, 48, 64 u^2 P' (orient2d, orient3d,
+ *     incircle; the slack covers P <= P'(1 + 8u) and the rounding of the
+ *     bound itself).
+ *  D. Expansion arithmetic (geom/expansion) on the exact differences (two
+ *     components each): the exact determinant, valid by the range guard.
+ *  E. Fixed-point integers (geom/bigint): exact for every finite double,
+ *     slower. insphere's exact stage always uses it.
+ * So the sign is exact for ALL finite inputs. No state, no allocation.
  */
 #include "geom/predicates.h"
 
@@ -31,14 +73,13 @@ static const double ccw_bound = (3.0 + 16.0 * EPS) * EPS;
 static const double o3d_bound = (7.0 + 56.0 * EPS) * EPS;
 static const double icc_bound = (10.0 + 96.0 * EPS) * EPS;
 static const double isp_bound = (16.0 + 224.0 * EPS) * EPS;
-/* Stage B/C bounds (derivation in the banner): B = the difference rounding
- * errors; C = second-order terms plus the rounding of the first-order
- * correction. */
+/* Stage B/B1/C bounds (derivation in the banner): B = the difference
+ * rounding errors; C = second-order terms plus the rounding of the
+ * first-order correction; B1 = C plus the double-double evaluation. */
 static const double ccw_boundB = (2.0 + 16.0 * EPS) * EPS;
 static const double ccw_boundC = 16.0 * EPS * EPS;
 static const double o3d_boundB = (3.0 + 32.0 * EPS) * EPS;
 static const double o3d_boundC = 48.0 * EPS * EPS;
-static const double icc_boundB = (4.0 + 64.0 * EPS) * EPS;
 static const double icc_boundC = 64.0 * EPS * EPS;
 static const double icc_boundB1 = 256.0 * EPS * EPS;
 static const double icc_resultB1 = (1.0 + 8.0 * EPS) * EPS;
@@ -176,8 +217,9 @@ static double orient2d_exact(const double a[2], const double b[2], const double 
     return exp_sign_estimate(nh, h);
 }
 
-/* Filter failed: the range guards, stages B and C, then D. */
-static NOINLINE double orient2d_slow(const double a[2], const double b[2], const double c[2], double perm)
+/* Filter failed: the range guard, then stages B, C, D (see the banner). */
+static NOINLINE double orient2d_slow(const double a[2], const double b[2], const double c[2],
+                                     double perm)
 {
     const double p[6] = {a[0], a[1], b[0], b[1], c[0], c[1]};
     if (!all_finite(p, 6)) return NAN;
@@ -302,8 +344,9 @@ static double orient3d_exact(const double a[3], const double b[3], const double 
     return exp_sign_estimate(nh, h);
 }
 
-/* Filter failed: the range guards, stages B and C, then D. */
-static NOINLINE double orient3d_slow(const double a[3], const double b[3], const double c[3], const double d[3], double perm)
+/* Filter failed: the range guard, then stages B, C, D (see the banner). */
+static NOINLINE double orient3d_slow(const double a[3], const double b[3], const double c[3],
+                                     const double d[3], double perm)
 {
     const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
     if (!all_finite(p, 12)) return NAN;
@@ -431,7 +474,6 @@ static double incircle_adapt(const double a[2], const double b[2], const double 
     int nv = exp_sum(n01, v01, nt[2], t[2], v);
     *done = 1;
     if (!inexact) return exp_sign_estimate(nv, v);
-    if (exceeds(nv, v, icc_boundB * perm)) return v[nv - 1];
     int nw = exp_sum(nv, v, lc != 0.0, &lc, w);
     if (exceeds(nw, w, icc_boundC * perm)) return w[nw - 1];
     *done = 0;
@@ -465,8 +507,9 @@ static double incircle_exact(const double a[2], const double b[2], const double 
     return exp_sign_estimate(nacc, acc);
 }
 
-/* Filter failed: the range guards, stages B and C, then D. */
-static NOINLINE double incircle_slow(const double a[2], const double b[2], const double c[2], const double d[2], double perm)
+/* Filter failed: the range guard, then stages B, C, D (see the banner). */
+static NOINLINE double incircle_slow(const double a[2], const double b[2], const double c[2],
+                                     const double d[2], double perm)
 {
     const double p[8] = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
     if (!all_finite(p, 8)) return NAN;
