@@ -45,8 +45,10 @@
  *     (stage C) in floating point. Error <= u |det| + 114 u^2 P + O(u^3)P
  *     (27 from the products, 44 from summing the small parts, 43 from the
  *     tails as in C); decided when |det| > (1 + 8u)u |det| + 256 u^2 P'.
- *     When it fails, D is within ~300 u^2 P of 0 and B's own test could
- *     not pass either, so incircle's B only serves the all-tails-zero exit.
+ *     When it fails, |D| is below ~300 u^2 P, where B's 4u P test would
+ *     practically never pass: incircle skips that test (skipping a test
+ *     never costs exactness) and uses B only for the all-tails-zero exit
+ *     and as the base of C.
  *  C. D(h) + L' exactly (one more expansion component), where L' is the
  *     first-order tail correction (sum over each monomial's factors of the
  *     monomial with that factor replaced by its tail) in floating point:

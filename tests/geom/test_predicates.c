@@ -678,7 +678,8 @@ static void orient3d_stages_match_gmp(void **state)
             pts[q][2] = ldexp(pts[q][0], jj);
         }
         check3(&R, &t, a, b, c, d);
-        int q = irange(&r, 0, 3), qq = fabs(pts[q][0]) < fabs(pts[(q + 1) % 4][0]) ? q : (q + 1) % 4;
+        int q = irange(&r, 0, 3), q1 = (q + 1) % 4;
+        int qq = fabs(pts[q][0]) < fabs(pts[q1][0]) ? q : q1;
         pts[qq][2] = ulps(pts[qq][2], irange(&r, -1, 1) | 1);
         check3(&R, &t, a, b, c, d);
         /* nearly coplanar in floating point */
