@@ -5,8 +5,8 @@
  * the magnitude is only an approximation. A fast floating-point filter
  * decides most calls; when it cannot, adaptive stages of growing precision
  * (then full expansion or integer arithmetic) do, so nearly degenerate
- * inputs cost little more than the filter and only exact degeneracies pay
- * for full exact arithmetic.
+ * inputs cost far less than full exact arithmetic, which mostly only exact
+ * degeneracies reach.
  * Pure functions: no global state, thread-safe. Sign conventions follow
  * Shewchuk's predicates. Exact for every finite input, huge/tiny mixes and
  * subnormals included (predicates.c says how); a NaN or infinite
