@@ -5,7 +5,9 @@
  * vertices, and around the UV chart boundaries of the meshes in the shared
  * data folder that carry UVs (skipped when absent). Prints milliseconds
  * (best of several runs), triangles per second, Steiner points, refused
- * refinements and minimum angles. Usage: bench_cdt [DATA_DIR].
+ * refinements and minimum angles. Usage: bench_cdt [DATA_DIR], or, for
+ * instruction counts under callgrind, bench_cdt --one circle|wiggly N
+ * ANGLE: one triangulation of that input (ANGLE 0 = CDT only).
  */
 #include <math.h>
 #include <stdint.h>
@@ -266,6 +268,17 @@ static void run(const char *name, const problem *p, int reps, double min_angle_d
 
 int main(int argc, char **argv)
 {
+    if (argc == 5 && !strcmp(argv[1], "--one")) {
+        int n = atoi(argv[3]);
+        if (n < 3 || n > 10000000) {
+            fprintf(stderr, "usage: bench_cdt --one circle|wiggly N ANGLE\n");
+            return 2;
+        }
+        problem p = wiggly(n, strcmp(argv[2], "circle") ? 1 : 0);
+        run(argv[2], &p, 1, atof(argv[4]));
+        problem_free(&p);
+        return 0;
+    }
     const char *dir = argc > 1 ? argv[1] : SCAF_DATA_DIR;
     printf("| input | boundary vertices | CPU ms (best) | wall ms (best) | triangles | Steiner | "
            "triangles/s (CPU) | refused | min angle (all) | triangles >= bound | min angle away "

@@ -1,15 +1,23 @@
 /* bench/bench_predicates: calls per second of the exact predicates.
  *
- * Two input sets per predicate: random points in [-1, 1] (decided by the
- * floating-point filter) and near-degenerate points (exactly degenerate
- * integer configurations moved by an ulp or left exact, so the filter
- * fails and expansion arithmetic decides), plus a mixed-magnitude set that
- * exercises the integer fallback. Prints a Markdown table.
+ * Input sets per predicate: random points in [-1, 1] (decided by the
+ * floating-point filter), near-degenerate points (exactly degenerate
+ * configurations moved by an ulp or left exact, so the filter fails and
+ * the adaptive stages decide), a mixed-magnitude set that exercises the
+ * integer fallback, and for incircle/orient2d a "circle" set: points
+ * computed as (cos t, sin t) like SCAF's Tutte boundary, quadruples
+ * (triples) of neighbours or of arbitrary circle points. Prints a
+ * Markdown table. Usage: bench_predicates [seconds], or, for instruction
+ * counts under callgrind, bench_predicates --fixed PRED SET PASSES (PRED
+ * 0..3 = orient2d, incircle, orient3d, insphere; SET 0..3 = random, near,
+ * mixed, circle): fills the set and evaluates it PASSES times; run with
+ * PASSES = 0 to measure the setup to subtract.
  */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "geom/predicates.h"
@@ -37,7 +45,7 @@ static double now(void)
 static double pts[N][5][3];
 static volatile double sink;
 
-enum { RANDOM, NEAR, MIXED };
+enum { RANDOM, NEAR, MIXED, CIRCLE };
 
 static void fill(int kind, int pred)
 {
@@ -59,6 +67,24 @@ static void fill(int kind, int pred)
             }
             int last = pred == 0 ? 2 : pred == 3 ? 4 : 3;
             if (irange(0, 1)) pts[i][last][1] = nextafter(pts[i][last][1], 2.0);
+        } else if (kind == CIRCLE) {
+            /* 10000 points on the unit circle; neighbours (the CDT's usual
+             * query) or arbitrary circle points, one of them the 4th point */
+            const int n = 10000;
+            int base = irange(0, n - 1), stride = irange(0, 3) ? 1 : irange(1, n - 1);
+            for (int q = 0; q < 5; q++) {
+                double t = 2 * 3.14159265358979323846 * ((base + q * stride) % n) / n;
+                pts[i][q][0] = cos(t);
+                pts[i][q][1] = sin(t);
+                pts[i][q][2] = 0.0;
+            }
+            if (pred == 0) { /* orient2d: a, c, b of three neighbours */
+                for (int j = 0; j < 2; j++) {
+                    double t = pts[i][1][j];
+                    pts[i][1][j] = pts[i][2][j];
+                    pts[i][2][j] = t;
+                }
+            }
         } else {
             for (int q = 0; q < 5; q++)
                 for (int j = 0; j < 3; j++)
@@ -95,18 +121,37 @@ static double rate(runner f, double seconds)
 
 int main(int argc, char **argv)
 {
+    runner fs[4] = {run_o2, run_ic, run_o3, run_is};
+    if (argc == 5 && !strcmp(argv[1], "--fixed")) {
+        int p = atoi(argv[2]), k = atoi(argv[3]);
+        long passes = atol(argv[4]);
+        if (p < 0 || p > 3 || k < 0 || k > 3 || passes < 0) {
+            fprintf(stderr, "usage: bench_predicates --fixed PRED(0-3) SET(0-3) PASSES\n");
+            return 2;
+        }
+        fill(k, p);
+        double s = 0;
+        for (long r = 0; r < passes; r++)
+            for (int i = 0; i < N; i++) s += fs[p](i) > 0;
+        sink = s;
+        printf("%s set %d: %ld calls, %.0f positive\n", argv[2], k, passes * N, s);
+        return 0;
+    }
     double seconds = argc > 1 ? atof(argv[1]) : 0.5;
     const char *names[4] = {"orient2d", "incircle", "orient3d", "insphere"};
-    runner fs[4] = {run_o2, run_ic, run_o3, run_is};
     printf("| predicate | random (filter) calls/s | near-degenerate (exact) calls/s | "
-           "mixed magnitudes calls/s |\n|---|---|---|---|\n");
+           "mixed magnitudes calls/s | circle points calls/s |\n|---|---|---|---|---|\n");
     for (int p = 0; p < 4; p++) {
-        double r[3];
-        for (int k = 0; k < 3; k++) {
+        double r[4] = {0, 0, 0, 0};
+        for (int k = 0; k < 4; k++) {
+            if (k == CIRCLE && p > 1) continue;
             fill(k, p);
             r[k] = rate(fs[p], seconds);
         }
-        printf("| %s | %.3g | %.3g | %.3g |\n", names[p], r[0], r[1], r[2]);
+        if (p > 1)
+            printf("| %s | %.3g | %.3g | %.3g | - |\n", names[p], r[0], r[1], r[2]);
+        else
+            printf("| %s | %.3g | %.3g | %.3g | %.3g |\n", names[p], r[0], r[1], r[2], r[3]);
     }
     return 0;
 }

@@ -142,11 +142,17 @@ void bigint_mul(bigint *r, const bigint *a, const bigint *b)
     int n = a->n + b->n;
     if (n > BIGINT_LIMBS) n = BIGINT_LIMBS; /* cannot happen within bounds */
     memset(t.d, 0, (size_t)n * sizeof t.d[0]);
+    /* Values from bigint_from_double have few nonzero limbs (a 53-bit
+     * mantissa above many zero limbs): skipping zero limbs of a and the low
+     * zero limbs of b saves most of the schoolbook work. */
+    int b0 = 0;
+    while (b0 < b->n && b->d[b0] == 0) b0++;
     for (int i = 0; i < a->n; i++) {
         uint64_t carry = 0;
         uint64_t ai = a->d[i];
+        if (ai == 0) continue;
         int j;
-        for (j = 0; j < b->n && i + j < n; j++) {
+        for (j = b0; j < b->n && i + j < n; j++) {
             uint64_t cur = t.d[i + j] + ai * b->d[j] + carry;
             t.d[i + j] = (uint32_t)cur;
             carry = cur >> 32;

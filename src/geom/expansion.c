@@ -47,11 +47,12 @@ int exp_scale(int elen, const double *e, double b, double *h)
 {
     if (elen == 0 || b == 0.0) return 0;
     int n = 0;
-    double q, lo, thi, tlo, s;
-    two_product(e[0], b, &q, &lo);
+    double q, lo, thi, tlo, s, bhi, blo;
+    split(b, &bhi, &blo);
+    two_product_presplit(e[0], b, bhi, blo, &q, &lo);
     if (lo != 0.0) h[n++] = lo;
     for (int i = 1; i < elen; i++) {
-        two_product(e[i], b, &thi, &tlo);
+        two_product_presplit(e[i], b, bhi, blo, &thi, &tlo);
         two_sum(q, tlo, &s, &lo);
         if (lo != 0.0) h[n++] = lo;
         fast_two_sum(thi, s, &q, &lo);

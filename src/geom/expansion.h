@@ -66,6 +66,21 @@ static inline void two_product(double a, double b, double *x, double *y)
     *y = alo * blo - e3;
 }
 
+/* two_product with b already split into bhi + blo (saves a split when one
+ * factor multiplies many). */
+static inline void two_product_presplit(double a, double b, double bhi, double blo, double *x,
+                                        double *y)
+{
+    double p = a * b;
+    double ahi, alo;
+    split(a, &ahi, &alo);
+    double e1 = p - ahi * bhi;
+    double e2 = e1 - alo * bhi;
+    double e3 = e2 - ahi * blo;
+    *x = p;
+    *y = alo * blo - e3;
+}
+
 /* h = e + f. h must have room for elen + flen components. Returns the
  * length of h (zero components dropped; 0 means the value 0). */
 int exp_sum(int elen, const double *e, int flen, const double *f, double *h);

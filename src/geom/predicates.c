@@ -1,23 +1,67 @@
 /* geom/predicates: exact orient2d, incircle, orient3d, insphere on doubles.
  *
- * Three stages per call:
- *  1. Filter: the determinant in plain doubles with a forward error bound
+ * Stages per call; each later stage runs only when the earlier ones could
+ * not decide the sign. u = 2^-53 is the unit roundoff.
+ *  A. Filter: the determinant in plain doubles with a forward error bound
  *     (Shewchuk's permanent-based bound, constants from his analysis) plus
  *     an absolute term for products that underflow into the subnormal
  *     range (each such product is off by at most 2^-1075, scaled by the
  *     factors it is later multiplied with). Overflow turns the bound into
  *     inf or NaN, which never passes. Most calls end here.
- *  2. Expansion arithmetic (geom/expansion) on the exact coordinate
- *     differences. Exact when every nonzero coordinate magnitude lies in
- *     [2^-LO, 2^HI] for the predicate's LO/HI below: then every exact
- *     intermediate is a multiple of 2^-1022 (no bits lost to underflow) and
- *     below 2^995 (no overflow, Veltkamp split safe).
+ *  Range guard: a NaN or infinite coordinate gives NaN; if some nonzero
+ *     coordinate magnitude lies outside [2^-LO, 2^HI] the call goes to the
+ *     integer stage E:
  *        orient2d: [2^-450, 2^450]   orient3d: [2^-280, 2^300]
- *        incircle: [2^-200, 2^200]   insphere: stage skipped
- *  3. Otherwise fixed-point integers (geom/bigint): exact for every finite
- *     double, slower. insphere's exact stage always uses it.
- * So the sign is exact for ALL finite inputs. A NaN or infinite coordinate
- * yields NaN (no sign). No state, no allocation.
+ *        incircle: [2^-200, 2^200]   insphere: always E
+ *     Inside the range every coordinate is a multiple of g = 2^-(LO+52),
+ *     so every coordinate difference, its rounded value ("head" x =
+ *     fl(a - d)) and its rounding error ("tail" xt = (a - d) - x, exact by
+ *     two_diff, |xt| <= u |x|) is a multiple of g of magnitude at most
+ *     2^(HI+1). Rounding a multiple of a power of two >= 2^-1074 gives a
+ *     multiple of it, so any value computed with + - x from such numbers
+ *     at polynomial degree k (exactly or in floating point) is 0 or a
+ *     multiple of g^k >= 2^-1008: a normal number. Degrees here are <= 4
+ *     (orient2d 2, orient3d 3), magnitudes stay below 2^995. Hence in
+ *     stages B-D no bits are lost to underflow (the filter's absolute
+ *     term is not needed: each rounding has relative error <= u), nothing
+ *     overflows, and the Veltkamp split of geom/expansion is exact.
+ *  Notation: D = the determinant of the exact differences, D(h) = the same
+ *     polynomial of the heads, P = its permanent (sum of the magnitudes of
+ *     its monomials) in the heads. The filter's computed permanent P' has
+ *     at most 2 (orient2d), 5 (orient3d), 7 (incircle) roundings per
+ *     monomial, so P <= P' (1 + 8u). An n-degree monomial of the exact
+ *     differences is the heads' monomial times prod(1 + d_i), |d_i| <= u.
+ *     A value held as an expansion (nonoverlapping, sorted) exceeds E in
+ *     magnitude when |largest| > E + 3 |second largest| (everything below
+ *     the largest sums to less than 2 |second|; see exceeds()).
+ *  B. D(h) as an exact expansion. If every tail is 0, D(h) = D: done
+ *     (e.g. all coordinates within a factor 2 of each other: Sterbenz).
+ *     Otherwise |D - D(h)| <= ((1+u)^n - 1) P: decided when D(h) exceeds
+ *     (2 + 16u)u P' (orient2d), (3 + 32u)u P' (orient3d).
+ *  B1 (incircle only, before B because it is ~8x cheaper): each lift and
+ *     minor of the heads as an unevaluated sum of two doubles (errors <=
+ *     4u^2 of their permanents), the leading products exact, leading sums
+ *     exact (two_sum), the rest and the first-order tail correction L'
+ *     (stage C) in floating point. Error <= u |det| + 114 u^2 P + O(u^3)P
+ *     (27 from the products, 44 from summing the small parts, 43 from the
+ *     tails as in C); decided when |det| > (1 + 8u)u |det| + 256 u^2 P'.
+ *     When it fails, |D| is below ~300 u^2 P, where B's 4u P test would
+ *     practically never pass: incircle skips that test (skipping a test
+ *     never costs exactness) and uses B only for the all-tails-zero exit
+ *     and as the base of C.
+ *  C. D(h) + L' exactly (one more expansion component), where L' is the
+ *     first-order tail correction (sum over each monomial's factors of the
+ *     monomial with that factor replaced by its tail) in floating point:
+ *     |D - D(h) - L'| <= ((1+u)^n - 1 - nu) P + gamma_k n u P, k the
+ *     roundings per term of L' (3, 7, 9), i.e. 7, 24, 42 u^2 P; decided
+ *     when the sum exceeds 16, 48, 64 u^2 P' (orient2d, orient3d,
+ *     incircle; the slack covers P <= P'(1 + 8u) and the rounding of the
+ *     bound itself).
+ *  D. Expansion arithmetic (geom/expansion) on the exact differences (two
+ *     components each): the exact determinant, valid by the range guard.
+ *  E. Fixed-point integers (geom/bigint): exact for every finite double,
+ *     slower. insphere's exact stage always uses it.
+ * So the sign is exact for ALL finite inputs. No state, no allocation.
  */
 #include "geom/predicates.h"
 
@@ -31,8 +75,26 @@ static const double ccw_bound = (3.0 + 16.0 * EPS) * EPS;
 static const double o3d_bound = (7.0 + 56.0 * EPS) * EPS;
 static const double icc_bound = (10.0 + 96.0 * EPS) * EPS;
 static const double isp_bound = (16.0 + 224.0 * EPS) * EPS;
+/* Stage B/B1/C bounds (derivation in the banner): B = the difference
+ * rounding errors; C = second-order terms plus the rounding of the
+ * first-order correction; B1 = C plus the double-double evaluation. */
+static const double ccw_boundB = (2.0 + 16.0 * EPS) * EPS;
+static const double ccw_boundC = 16.0 * EPS * EPS;
+static const double o3d_boundB = (3.0 + 32.0 * EPS) * EPS;
+static const double o3d_boundC = 48.0 * EPS * EPS;
+static const double icc_boundC = 64.0 * EPS * EPS;
+static const double icc_boundB1 = 256.0 * EPS * EPS;
+static const double icc_resultB1 = (1.0 + 8.0 * EPS) * EPS;
 /* Generous multiple of the largest underflow error of one product. */
 #define UFL 0x1p-1060
+
+/* The slow paths stay out of line so the filter's fast path keeps a small
+ * stack frame. */
+#if defined(__GNUC__) || defined(__clang__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
 
 /* ---- range test for the expansion stage ---- */
 
@@ -67,6 +129,41 @@ static int low_exponent(const double *x, int n)
 
 static double sign_of(const bigint *b) { return (double)b->sign; }
 
+/* ---- helpers of the adaptive stages B and C ---- */
+
+/* h = a * b exactly, 0..2 components (zeros dropped). */
+static int prod_exp(double a, double b, double *h)
+{
+    double x, y;
+    two_product(a, b, &x, &y);
+    int n = 0;
+    if (y != 0.0) h[n++] = y;
+    if (x != 0.0) h[n++] = x;
+    return n;
+}
+
+/* m = a * b - c * d exactly, 0..4 components. */
+static int det2_exp(double a, double b, double c, double d, double *m)
+{
+    double l[2], r[2];
+    int nl = prod_exp(a, b, l);
+    int nr = prod_exp(-c, d, r); /* negating a factor is exact */
+    return exp_sum(nl, l, nr, r, m);
+}
+
+/* 1 when the value of the expansion e surely exceeds err in magnitude.
+ * e is nonoverlapping and sorted, so everything below its largest
+ * component T sums to less than 2 |e[n-2]| in magnitude (e[n-2] plus the
+ * rest, which is below e[n-2]'s lowest bit): |value| > |T| - 2 |e[n-2]|.
+ * The computed right side rounds down by at most (1 - EPS)^2 on err and
+ * 3 (1 - EPS)^2 > 2 on e[n-2]; the B/C constants absorb the former. */
+static int exceeds(int n, const double *e, double err)
+{
+    if (n == 0) return 0;
+    double below = n > 1 ? fabs(e[n - 2]) : 0.0;
+    return fabs(e[n - 1]) > err + 3.0 * below;
+}
+
 /* ---- orient2d ---- */
 
 static double orient2d_bigint(const double *p)
@@ -85,11 +182,31 @@ static double orient2d_bigint(const double *p)
     return sign_of(&l);
 }
 
+/* Stages B and C (coordinates in range). perm is the filter's permanent.
+ * Sets *done when the sign is decided. */
+static double orient2d_adapt(const double a[2], const double b[2], const double c[2], double perm,
+                             int *done)
+{
+    double acx, acy, bcx, bcy, acxt, acyt, bcxt, bcyt;
+    two_diff(a[0], c[0], &acx, &acxt);
+    two_diff(a[1], c[1], &acy, &acyt);
+    two_diff(b[0], c[0], &bcx, &bcxt);
+    two_diff(b[1], c[1], &bcy, &bcyt);
+    double v[4], w[5];
+    int nv = det2_exp(acx, bcy, acy, bcx, v);
+    *done = 1;
+    if (acxt == 0.0 && acyt == 0.0 && bcxt == 0.0 && bcyt == 0.0) return exp_sign_estimate(nv, v);
+    if (exceeds(nv, v, ccw_boundB * perm)) return v[nv - 1];
+    double lt = (acxt * bcy + acx * bcyt) - (acyt * bcx + acy * bcxt);
+    int nw = exp_sum(nv, v, lt != 0.0, &lt, w);
+    if (exceeds(nw, w, ccw_boundC * perm)) return w[nw - 1];
+    *done = 0;
+    return 0.0;
+}
+
+/* Stage D: the exact determinant from the exact differences. */
 static double orient2d_exact(const double a[2], const double b[2], const double c[2])
 {
-    const double p[6] = {a[0], a[1], b[0], b[1], c[0], c[1]};
-    if (!all_finite(p, 6)) return NAN;
-    if (!in_range(p, 6, 0x1p-450, 0x1p450)) return orient2d_bigint(p);
     double acx[2], acy[2], bcx[2], bcy[2], l[8], r[8], h[16], w[16];
     int nacx = exp_from_diff(a[0], c[0], acx);
     int nacy = exp_from_diff(a[1], c[1], acy);
@@ -102,15 +219,29 @@ static double orient2d_exact(const double a[2], const double b[2], const double 
     return exp_sign_estimate(nh, h);
 }
 
+/* Filter failed: the range guard, then stages B, C, D (see the banner). */
+static NOINLINE double orient2d_slow(const double a[2], const double b[2], const double c[2],
+                                     double perm)
+{
+    const double p[6] = {a[0], a[1], b[0], b[1], c[0], c[1]};
+    if (!all_finite(p, 6)) return NAN;
+    if (!in_range(p, 6, 0x1p-450, 0x1p450)) return orient2d_bigint(p);
+    int done;
+    double det = orient2d_adapt(a, b, c, perm, &done);
+    if (done) return det;
+    return orient2d_exact(a, b, c);
+}
+
 double orient2d(const double a[2], const double b[2], const double c[2])
 {
     double acx = a[0] - c[0], bcx = b[0] - c[0];
     double acy = a[1] - c[1], bcy = b[1] - c[1];
     double l = acx * bcy, r = acy * bcx;
     double det = l - r;
-    double bound = ccw_bound * (fabs(l) + fabs(r)) + UFL;
+    double perm = fabs(l) + fabs(r);
+    double bound = ccw_bound * perm + UFL;
     if (det > bound || -det > bound) return det;
-    return orient2d_exact(a, b, c);
+    return orient2d_slow(a, b, c, perm);
 }
 
 /* ---- orient3d ---- */
@@ -151,12 +282,50 @@ static int exp_minor(int nx1, const double *x1, int ny2, const double *y2, int n
     return exp_sum(nl, l, nr, r, m);
 }
 
+/* Stages B and C (coordinates in range), as for orient2d. */
+static double orient3d_adapt(const double a[3], const double b[3], const double c[3],
+                             const double d[3], double perm, int *done)
+{
+    const double *pt[3] = {a, b, c};
+    double x[3], y[3], z[3], xt[3], yt[3], zt[3];
+    int inexact = 0;
+    for (int k = 0; k < 3; k++) {
+        two_diff(pt[k][0], d[0], &x[k], &xt[k]);
+        two_diff(pt[k][1], d[1], &y[k], &yt[k]);
+        two_diff(pt[k][2], d[2], &z[k], &zt[k]);
+        inexact |= (xt[k] != 0.0) | (yt[k] != 0.0) | (zt[k] != 0.0);
+    }
+    /* det = sum over k of z_k (x_i y_j - x_j y_i), (k, i, j) cyclic */
+    double m[4], t[3][8], v01[16], v[24], w[25];
+    int nt[3];
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        int nm = det2_exp(x[i], y[j], x[j], y[i], m);
+        nt[k] = exp_scale(nm, m, z[k], t[k]);
+    }
+    int n01 = exp_sum(nt[0], t[0], nt[1], t[1], v01);
+    int nv = exp_sum(n01, v01, nt[2], t[2], v);
+    *done = 1;
+    if (!inexact) return exp_sign_estimate(nv, v);
+    if (exceeds(nv, v, o3d_boundB * perm)) return v[nv - 1];
+    double tc[3];
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        double mh = x[i] * y[j] - x[j] * y[i];
+        double mt = (xt[i] * y[j] + x[i] * yt[j]) - (xt[j] * y[i] + x[j] * yt[i]);
+        tc[k] = zt[k] * mh + z[k] * mt;
+    }
+    double lt = (tc[0] + tc[1]) + tc[2];
+    int nw = exp_sum(nv, v, lt != 0.0, &lt, w);
+    if (exceeds(nw, w, o3d_boundC * perm)) return w[nw - 1];
+    *done = 0;
+    return 0.0;
+}
+
+/* Stage D: the exact determinant from the exact differences. */
 static double orient3d_exact(const double a[3], const double b[3], const double c[3],
                              const double d[3])
 {
-    const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
-    if (!all_finite(p, 12)) return NAN;
-    if (!in_range(p, 12, 0x1p-280, 0x1p300)) return orient3d_bigint(p);
     double ad[3][2], bd[3][2], cd[3][2];
     int na[3], nb[3], nc[3];
     for (int j = 0; j < 3; j++) {
@@ -177,6 +346,19 @@ static double orient3d_exact(const double a[3], const double b[3], const double 
     return exp_sign_estimate(nh, h);
 }
 
+/* Filter failed: the range guard, then stages B, C, D (see the banner). */
+static NOINLINE double orient3d_slow(const double a[3], const double b[3], const double c[3],
+                                     const double d[3], double perm)
+{
+    const double p[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
+    if (!all_finite(p, 12)) return NAN;
+    if (!in_range(p, 12, 0x1p-280, 0x1p300)) return orient3d_bigint(p);
+    int done;
+    double det = orient3d_adapt(a, b, c, d, perm, &done);
+    if (done) return det;
+    return orient3d_exact(a, b, c, d);
+}
+
 double orient3d(const double a[3], const double b[3], const double c[3], const double d[3])
 {
     double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
@@ -191,7 +373,7 @@ double orient3d(const double a[3], const double b[3], const double c[3], const d
                   (fabs(adxbdy) + fabs(bdxady)) * cz;
     double bound = o3d_bound * perm + UFL * (az + bz + cz + 1.0);
     if (det > bound || -det > bound) return det;
-    return orient3d_exact(a, b, c, d);
+    return orient3d_slow(a, b, c, d, perm);
 }
 
 /* ---- incircle ---- */
@@ -221,12 +403,89 @@ static double incircle_bigint(const double *p)
     return sign_of(&acc);
 }
 
+/* Stages B and C (coordinates in range), as for orient2d. */
+static double incircle_adapt(const double a[2], const double b[2], const double c[2],
+                             const double d[2], double perm, int *done)
+{
+    const double *pt[3] = {a, b, c};
+    double x[3], y[3], xt[3], yt[3];
+    int inexact = 0;
+    for (int k = 0; k < 3; k++) {
+        two_diff(pt[k][0], d[0], &x[k], &xt[k]);
+        two_diff(pt[k][1], d[1], &y[k], &yt[k]);
+        inexact |= (xt[k] != 0.0) | (yt[k] != 0.0);
+    }
+    /* first-order tail correction: d(lift) = 2 (x xt + y yt), d(minor) = mt */
+    double lc = 0.0;
+    if (inexact) {
+        double tc[3];
+        for (int k = 0; k < 3; k++) {
+            int i = (k + 1) % 3, j = (k + 2) % 3;
+            double mh = x[i] * y[j] - x[j] * y[i];
+            double mt = (xt[i] * y[j] + x[i] * yt[j]) - (xt[j] * y[i] + x[j] * yt[i]);
+            double lift = x[k] * x[k] + y[k] * y[k];
+            double lt = x[k] * xt[k] + y[k] * yt[k];
+            tc[k] = lift * mt + (2.0 * lt) * mh;
+        }
+        lc = (tc[0] + tc[1]) + tc[2];
+    }
+    /* stage B1: lifts and minors of the heads as unevaluated double sums
+     * (l + lo, s + r), their products' leading parts l s exact, summed
+     * exactly; the rest plus the tail correction in plain floating point */
+    double ps[3], small = 0.0;
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        double p, e, q, f, sh, st, a1, ea, b1, eb, l, lt, pe;
+        two_product(x[i], y[j], &p, &e);
+        two_product(x[j], y[i], &q, &f);
+        two_diff(p, q, &sh, &st);
+        double r = (st + e) - f;
+        two_product(x[k], x[k], &a1, &ea);
+        two_product(y[k], y[k], &b1, &eb);
+        two_sum(a1, b1, &l, &lt);
+        double lo = (lt + ea) + eb;
+        two_product(l, sh, &ps[k], &pe);
+        small += (l * r + lo * sh) + pe;
+    }
+    {
+        double g, gt, G, Gt;
+        two_sum(ps[0], ps[1], &g, &gt);
+        two_sum(g, ps[2], &G, &Gt);
+        double rest = (((gt + Gt) + small) + lc);
+        double det = G + rest;
+        double err = icc_boundB1 * perm + icc_resultB1 * fabs(det);
+        if (det > err || -det > err) {
+            *done = 1;
+            return det;
+        }
+    }
+    /* det = sum over k of (x_k^2 + y_k^2) (x_i y_j - x_j y_i), (k, i, j)
+     * cyclic; each lift times minor as ((m x) x) + ((m y) y) */
+    double m[4], s1[8], s2[16], s3[8], s4[16], t[3][32], v01[64], v[96], w[97];
+    int nt[3];
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        int nm = det2_exp(x[i], y[j], x[j], y[i], m);
+        int n1 = exp_scale(nm, m, x[k], s1);
+        int n2 = exp_scale(n1, s1, x[k], s2);
+        int n3 = exp_scale(nm, m, y[k], s3);
+        int n4 = exp_scale(n3, s3, y[k], s4);
+        nt[k] = exp_sum(n2, s2, n4, s4, t[k]);
+    }
+    int n01 = exp_sum(nt[0], t[0], nt[1], t[1], v01);
+    int nv = exp_sum(n01, v01, nt[2], t[2], v);
+    *done = 1;
+    if (!inexact) return exp_sign_estimate(nv, v);
+    int nw = exp_sum(nv, v, lc != 0.0, &lc, w);
+    if (exceeds(nw, w, icc_boundC * perm)) return w[nw - 1];
+    *done = 0;
+    return 0.0;
+}
+
+/* Stage D: the exact determinant from the exact differences. */
 static double incircle_exact(const double a[2], const double b[2], const double c[2],
                              const double d[2])
 {
-    const double p[8] = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
-    if (!all_finite(p, 8)) return NAN;
-    if (!in_range(p, 8, 0x1p-200, 0x1p200)) return incircle_bigint(p);
     const double *pt[3] = {a, b, c};
     double dx[3][2], dy[3][2], lift[3][16];
     int nx[3], ny[3], nlift[3];
@@ -250,6 +509,19 @@ static double incircle_exact(const double a[2], const double b[2], const double 
     return exp_sign_estimate(nacc, acc);
 }
 
+/* Filter failed: the range guard, then stages B, C, D (see the banner). */
+static NOINLINE double incircle_slow(const double a[2], const double b[2], const double c[2],
+                                     const double d[2], double perm)
+{
+    const double p[8] = {a[0], a[1], b[0], b[1], c[0], c[1], d[0], d[1]};
+    if (!all_finite(p, 8)) return NAN;
+    if (!in_range(p, 8, 0x1p-200, 0x1p200)) return incircle_bigint(p);
+    int done;
+    double det = incircle_adapt(a, b, c, d, perm, &done);
+    if (done) return det;
+    return incircle_exact(a, b, c, d);
+}
+
 double incircle(const double a[2], const double b[2], const double c[2], const double d[2])
 {
     double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
@@ -267,7 +539,7 @@ double incircle(const double a[2], const double b[2], const double c[2], const d
     double perm = pa * alift + pb * blift + pc * clift;
     double bound = icc_bound * perm + UFL * (alift + blift + clift + pa + pb + pc + 1.0);
     if (det > bound || -det > bound) return det;
-    return incircle_exact(a, b, c, d);
+    return incircle_slow(a, b, c, d, perm);
 }
 
 /* ---- insphere ---- */

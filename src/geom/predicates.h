@@ -3,7 +3,10 @@
  * Each returns a double whose SIGN is exactly the sign of the determinant
  * computed with real numbers from the given doubles (any finite inputs);
  * the magnitude is only an approximation. A fast floating-point filter
- * decides most calls; only when it cannot, exact expansion arithmetic does.
+ * decides most calls; when it cannot, adaptive stages of growing precision
+ * (then full expansion or integer arithmetic) do, so nearly degenerate
+ * inputs cost far less than full exact arithmetic, which mostly only exact
+ * degeneracies reach.
  * Pure functions: no global state, thread-safe. Sign conventions follow
  * Shewchuk's predicates. Exact for every finite input, huge/tiny mixes and
  * subnormals included (predicates.c says how); a NaN or infinite

@@ -571,6 +571,216 @@ static void insphere_matches_gmp(void **state)
     assert_true(t.zeros > t.cases / 20);
 }
 
+/* ---- cases aimed at the adaptive stages ----
+ * Stage B computes the determinant exactly from the ROUNDED coordinate
+ * differences: it alone decides when every difference is exact (Sterbenz:
+ * coordinates within a factor 2 of each other, or integers), and otherwise
+ * when the determinant is larger than the difference roundings can move
+ * it. Stage C adds a first-order tail correction: it decides determinants
+ * down to about EPS^2 times the permanent. Exactly degenerate inputs with
+ * inexact differences, and nudges of a tiny-magnitude coordinate, reach the
+ * full exact stage. Each group below targets one of these situations, with
+ * scales near the edges of the expansion range (where the integer fallback
+ * takes over). */
+
+/* 2^k for k near the adaptive-range edges of a predicate, or moderate. */
+static int stage_scale(rng *r, int lo, int hi)
+{
+    switch (irange(r, 0, 3)) {
+    case 0: return irange(r, lo - 8, lo + 60);
+    case 1: return irange(r, hi - 60, hi + 4);
+    default: return irange(r, -40, 40);
+    }
+}
+
+static void orient2d_stages_match_gmp(void **state)
+{
+    (void)state;
+    rng r = {0x2545F4914F6CDD1DULL};
+    ref R;
+    ref_init(&R);
+    tally t = {0, 0, 0};
+    long n = scaled(40000);
+    for (long i = 0; i < n; i++) {
+        double a[2], b[2], c[2];
+        int k = stage_scale(&r, -450, 440);
+        /* exact differences: collinear points within a factor 2 (offset
+         * 2^20, integer steps), then c nudged by ulps: stage B decides */
+        double ux = irange(&r, -1000, 1000), uy = irange(&r, -1000, 1000);
+        double px = 0x1p20 + irange(&r, 0, 1000), py = 0x1p20 + irange(&r, 0, 1000);
+        int l1 = irange(&r, -200, 200), l2 = irange(&r, -200, 200);
+        a[0] = ldexp(px, k), a[1] = ldexp(py, k);
+        b[0] = ldexp(px + l1 * ux, k), b[1] = ldexp(py + l1 * uy, k);
+        c[0] = ldexp(px + l2 * ux, k), c[1] = ldexp(py + l2 * uy, k);
+        check2(&R, &t, a, b, c);
+        int co = irange(&r, 0, 1);
+        c[co] = ulps(c[co], irange(&r, -3, 3));
+        check2(&R, &t, a, b, c);
+        /* inexact differences, exactly collinear: on y = 2^j x with mixed
+         * magnitudes (stage D), then a tiny coordinate nudged (C or D) */
+        int j = irange(&r, -3, 3);
+        for (int q = 0; q < 3; q++) {
+            double *p = q == 0 ? a : q == 1 ? b : c;
+            p[0] = ldexp(sym(&r), k - irange(&r, 0, 60));
+            p[1] = ldexp(p[0], j);
+        }
+        check2(&R, &t, a, b, c);
+        double *sm = fabs(a[0]) < fabs(b[0]) ? a : b;
+        co = irange(&r, 0, 1);
+        sm[co] = ulps(sm[co], irange(&r, -1, 1) | 1);
+        check2(&R, &t, a, b, c);
+        /* nearly collinear in floating point, differences inexact */
+        double s = sym(&r) * 2.0;
+        a[0] = ldexp(sym(&r), k), a[1] = ldexp(sym(&r), k);
+        b[0] = ldexp(sym(&r), k - irange(&r, 0, 30)), b[1] = ldexp(sym(&r), k);
+        c[0] = a[0] + s * (b[0] - a[0]), c[1] = a[1] + s * (b[1] - a[1]);
+        co = irange(&r, 0, 1);
+        c[co] = ulps(c[co], irange(&r, -1, 1));
+        check2(&R, &t, a, b, c);
+    }
+    ref_clear(&R);
+    fprintf(stderr, "orient2d stages: %ld cases, %ld exactly degenerate, %ld disagreements\n",
+            t.cases, t.zeros, t.disagreements);
+    assert_int_equal(t.disagreements, 0);
+    assert_true(t.zeros > t.cases / 10);
+}
+
+static void orient3d_stages_match_gmp(void **state)
+{
+    (void)state;
+    rng r = {0x9FB21C651E98DF25ULL};
+    ref R;
+    ref_init(&R);
+    tally t = {0, 0, 0};
+    long n = scaled(20000);
+    for (long i = 0; i < n; i++) {
+        double a[3], b[3], c[3], d[3];
+        double *pts[4] = {a, b, c, d};
+        int k = stage_scale(&r, -280, 290);
+        /* exact differences: coplanar integer points offset by 2^20 */
+        double o[3], e1[3], e2[3];
+        for (int j = 0; j < 3; j++)
+            o[j] = 0x1p20 + irange(&r, 0, 1000), e1[j] = irange(&r, -50, 50),
+            e2[j] = irange(&r, -50, 50);
+        for (int q = 0; q < 4; q++) {
+            int s1 = irange(&r, -100, 100), s2 = irange(&r, -100, 100);
+            for (int j = 0; j < 3; j++) pts[q][j] = ldexp(o[j] + s1 * e1[j] + s2 * e2[j], k);
+        }
+        check3(&R, &t, a, b, c, d);
+        int co = irange(&r, 0, 2);
+        d[co] = ulps(d[co], irange(&r, -3, 3));
+        check3(&R, &t, a, b, c, d);
+        /* inexact differences, exactly coplanar: z = 2^j x, mixed scales */
+        int jj = irange(&r, -3, 3);
+        for (int q = 0; q < 4; q++) {
+            pts[q][0] = ldexp(sym(&r), k - irange(&r, 0, 60));
+            pts[q][1] = ldexp(sym(&r), k - irange(&r, 0, 60));
+            pts[q][2] = ldexp(pts[q][0], jj);
+        }
+        check3(&R, &t, a, b, c, d);
+        int q = irange(&r, 0, 3), q1 = (q + 1) % 4;
+        int qq = fabs(pts[q][0]) < fabs(pts[q1][0]) ? q : q1;
+        pts[qq][2] = ulps(pts[qq][2], irange(&r, -1, 1) | 1);
+        check3(&R, &t, a, b, c, d);
+        /* nearly coplanar in floating point */
+        double s = sym(&r) * 2, u = sym(&r) * 2;
+        for (int j = 0; j < 3; j++) {
+            a[j] = ldexp(sym(&r), k), b[j] = ldexp(sym(&r), k - irange(&r, 0, 20));
+            c[j] = ldexp(sym(&r), k);
+        }
+        for (int j = 0; j < 3; j++) d[j] = a[j] + s * (b[j] - a[j]) + u * (c[j] - a[j]);
+        co = irange(&r, 0, 2);
+        d[co] = ulps(d[co], irange(&r, -1, 1));
+        check3(&R, &t, a, b, c, d);
+    }
+    ref_clear(&R);
+    fprintf(stderr, "orient3d stages: %ld cases, %ld exactly degenerate, %ld disagreements\n",
+            t.cases, t.zeros, t.disagreements);
+    assert_int_equal(t.disagreements, 0);
+    assert_true(t.zeros > t.cases / 10);
+}
+
+/* Integer points on x^2 + y^2 = 5525^2 (5525 = 5^2 13 17: many of them). */
+static int circle5525(int (*out)[2], int max)
+{
+    int n = 0;
+    for (int x = 0; x <= 5525 && n < max; x++) {
+        long y2 = 5525L * 5525L - (long)x * x;
+        long y = (long)sqrt((double)y2);
+        while (y * y > y2) y--;
+        while ((y + 1) * (y + 1) <= y2) y++;
+        if (y * y == y2) out[n][0] = x, out[n][1] = (int)y, n++;
+    }
+    return n;
+}
+
+static void incircle_stages_match_gmp(void **state)
+{
+    (void)state;
+    rng r = {0x3C6EF372FE94F82BULL};
+    ref R;
+    ref_init(&R);
+    tally t = {0, 0, 0};
+    int circ[200][2];
+    int nc = circle5525(circ, 200);
+    assert_true(nc > 20);
+    /* unit-circle points as SCAF's Tutte boundary: (cos t, sin t) */
+    enum { NU = 10000 };
+    long n = scaled(30000);
+    for (long i = 0; i < n; i++) {
+        double a[2], b[2], c[2], d[2];
+        double *pts[4] = {a, b, c, d};
+        int k = stage_scale(&r, -200, 186);
+        /* exact differences: integer circle of radius 5525 around
+         * (2^16, 2^16) (coordinates within a factor 2), d nudged by ulps:
+         * stage B decides */
+        for (int q = 0; q < 4; q++) {
+            int *p = circ[irange(&r, 0, nc - 1)];
+            double x = p[0], y = p[1];
+            if (next_u64(&r) & 1) x = -x;
+            if (next_u64(&r) & 1) y = -y;
+            pts[q][0] = ldexp(0x1p16 + x, k), pts[q][1] = ldexp(0x1p16 + y, k);
+        }
+        check_ic(&R, &t, a, b, c, d);
+        int co = irange(&r, 0, 1);
+        d[co] = ulps(d[co], irange(&r, -3, 3));
+        check_ic(&R, &t, a, b, c, d);
+        /* the same circle around a center with inexact differences
+         * (offset not a multiple of the spacing): rounded, so only
+         * nearly cocircular; B, C or D */
+        double ox = ldexp(sym(&r), irange(&r, 10, 16)), oy = ldexp(sym(&r), irange(&r, 10, 16));
+        int sh = irange(&r, 0, 12);
+        for (int q = 0; q < 4; q++) {
+            int *p = circ[irange(&r, 0, nc - 1)];
+            pts[q][0] = ldexp(ox + ldexp((next_u64(&r) & 1) ? p[0] : -p[0], -sh), k);
+            pts[q][1] = ldexp(oy + ldexp((next_u64(&r) & 1) ? p[1] : -p[1], -sh), k);
+        }
+        check_ic(&R, &t, a, b, c, d);
+        /* rectangles with mixed magnitudes (exactly cocircular, inexact
+         * differences: stage D), then a tiny coordinate nudged by one ulp
+         * (determinant far below EPS times the permanent: C or D) */
+        double x1 = ldexp(sym(&r), k), x2 = ldexp(sym(&r), k - irange(&r, 0, 70));
+        double y1 = ldexp(sym(&r), k), y2 = ldexp(sym(&r), k - irange(&r, 0, 70));
+        a[0] = x1, a[1] = y1, b[0] = x2, b[1] = y1, c[0] = x2, c[1] = y2, d[0] = x1, d[1] = y2;
+        check_ic(&R, &t, a, b, c, d);
+        double *sm = fabs(x2) < fabs(y2) ? &c[0] : &c[1];
+        *sm = ulps(*sm, irange(&r, -1, 1) | 1);
+        check_ic(&R, &t, a, b, c, d);
+        /* unit-circle points (neighbours, or arbitrary) scaled by 2^k */
+        int base = irange(&r, 0, NU - 1), stride = irange(&r, 0, 1) ? 1 : irange(&r, 1, NU - 1);
+        for (int q = 0; q < 4; q++) {
+            double th = 2 * 3.14159265358979323846 * ((base + q * stride) % NU) / NU;
+            pts[q][0] = ldexp(cos(th), k), pts[q][1] = ldexp(sin(th), k);
+        }
+        check_ic(&R, &t, a, b, c, d);
+    }
+    ref_clear(&R);
+    fprintf(stderr, "incircle stages: %ld cases, %ld exactly degenerate, %ld disagreements\n",
+            t.cases, t.zeros, t.disagreements);
+    assert_int_equal(t.disagreements, 0);
+    assert_true(t.zeros > t.cases / 10);
+}
+
 /* ---- sign conventions, documented in predicates.h ---- */
 
 static void sign_conventions(void **state)
@@ -636,6 +846,9 @@ int main(void)
         cmocka_unit_test(orient3d_matches_gmp),
         cmocka_unit_test(incircle_matches_gmp),
         cmocka_unit_test(insphere_matches_gmp),
+        cmocka_unit_test(orient2d_stages_match_gmp),
+        cmocka_unit_test(orient3d_stages_match_gmp),
+        cmocka_unit_test(incircle_stages_match_gmp),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
