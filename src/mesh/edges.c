@@ -7,33 +7,12 @@
  */
 #include "mesh/edges.h"
 
+#include "base/sort_u64.h"
+
 #include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int cmp_u64(const void *a, const void *b)
-{
-    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-    return (x > y) - (x < y);
-}
-
-static void sort_bucket(uint64_t *k, int n)
-{
-    if (n > 32) {
-        qsort(k, (size_t)n, sizeof *k, cmp_u64);
-        return;
-    }
-    for (int i = 1; i < n; i++) {
-        uint64_t x = k[i];
-        int j = i - 1;
-        while (j >= 0 && k[j] > x) {
-            k[j + 1] = k[j];
-            j--;
-        }
-        k[j + 1] = x;
-    }
-}
 
 void mesh_edges_free(mesh_edges *e)
 {
@@ -92,7 +71,7 @@ scaf_status mesh_edges_build(int n, int nf, const int *F, mesh_edges *e, scaf_er
     int ne = 0;
     for (int v = 0; v < n; v++) {
         int s = start[v], t = start[v + 1];
-        sort_bucket(keys + s, t - s);
+        sort_u64(keys + s, t - s);
         for (int i = s; i < t; i++)
             if (i == s || (keys[i] >> 32) != (keys[i - 1] >> 32)) ne++;
     }
