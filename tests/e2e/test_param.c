@@ -25,6 +25,7 @@
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
 #include "scaf/scaf.h"
+#include "support/param_watch.h"
 #include "support/support.h"
 
 static int run(const char *fmt, ...)
@@ -132,72 +133,10 @@ static void cli_bad_input_leaves_no_output(void **state)
 
 /* ---- shared meshes, checked after every iteration ---------------------- */
 
-typedef struct watch {
-    const scaf_param_t *p;
-    int calls, not_bijective, energy_rises;
-    double first_total;
-} watch;
-
-static int every_iteration(const scaf_iteration_info_t *info, void *user)
-{
-    watch *w = user;
-    const scaf_loop *L = param_loop(w->p);
-    bij_report rep;
-    scaf_error err;
-    if (bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, &err) != SCAF_OK || !rep.bijective || rep.flipped ||
-        rep.degenerate || rep.boundary_crossings) {
-        print_error("iteration %d: flipped %d degenerate %d crossings %lld\n", info->iteration, rep.flipped,
-                    rep.degenerate, rep.boundary_crossings);
-        w->not_bijective++;
-    }
-    if (info->step > 0 && !(info->total_after < info->total_before)) w->energy_rises++;
-    w->calls++;
-    return 0;
-}
-
-/* Returns the final E, or NAN when the file is absent (test skipped) or
- * its charts are rejected (then *rejected holds the message). */
-static double run_shared(const char *rel, int iterations, scaf_init init, char *rejected, size_t size)
-{
-    char buf[1024];
-    const char *path = test_data_path(rel, buf, sizeof buf);
-    if (!path) return NAN;
-    mesh m;
-    scaf_error err;
-    assert_int_equal(mesh_read(path, &m, NULL, &err), SCAF_OK);
-    scaf_options_t o = scaf_options_default();
-    o.init = init;
-    o.tolerance = 0;
-    scaf_param_t *p = scaf_param_new(&o);
-    scaf_status st = mesh_has_uv(&m) ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
-                                     : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
-    if (st == SCAF_ERR_MESH && rejected) {
-        snprintf(rejected, size, "%s", scaf_param_error(p));
-        scaf_param_destroy(p);
-        mesh_free(&m);
-        return NAN;
-    }
-    if (st != SCAF_OK) print_error("%s: %s\n", rel, scaf_param_error(p));
-    assert_int_equal(st, SCAF_OK);
-    double e0 = scaf_param_energy(p);
-    watch w = {p, 0, 0, 0, 0};
-    st = scaf_param_run(p, iterations, every_iteration, &w);
-    if (st != SCAF_OK) print_error("%s: %s\n", rel, scaf_param_error(p));
-    assert_int_equal(st, SCAF_OK);
-    assert_int_equal(w.not_bijective, 0);
-    assert_int_equal(w.energy_rises, 0);
-    double e1 = scaf_param_energy(p);
-    print_message("%s: %d charts, E %.6g -> %.6f after %d iterations\n", rel, scaf_param_chart_count(p), e0, e1, w.calls);
-    assert_true(e1 < e0);
-    scaf_param_destroy(p);
-    mesh_free(&m);
-    return e1;
-}
-
 static void camel_b_matches_reference(void **state)
 {
     (void)state;
-    double e = run_shared("disk/camel_b.obj", 30, SCAF_INIT_HARMONIC, NULL, 0);
+    double e = param_run_watched("disk/camel_b.obj", 30, SCAF_INIT_HARMONIC, NULL, 0);
     if (isnan(e)) skip();
     /* libigl's igl::triangle::scaf, same start, same E: 4.1238 after 30.
      * Our trajectory depends on rounding (the fill-reducing ordering alone
@@ -212,8 +151,8 @@ static void disk_meshes_bijective_every_iteration(void **state)
 {
     (void)state;
     int ran = 0;
-    ran += !isnan(run_shared("disk/hand_lowres.obj", 10, SCAF_INIT_TUTTE, NULL, 0));
-    ran += !isnan(run_shared("disk/camelhead.off", 3, SCAF_INIT_HARMONIC, NULL, 0));
+    ran += !isnan(param_run_watched("disk/hand_lowres.obj", 10, SCAF_INIT_TUTTE, NULL, 0));
+    ran += !isnan(param_run_watched("disk/camelhead.off", 3, SCAF_INIT_HARMONIC, NULL, 0));
     if (!ran) skip();
 }
 
@@ -226,7 +165,7 @@ static void seam_meshes_by_charts(void **state)
     for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
         /* Every seam mesh of the data set has charts that are disks once
          * pinch points (one vt shared by two fans) are split: all must run. */
-        double e = run_shared(files[i], 4, SCAF_INIT_TUTTE, NULL, 0);
+        double e = param_run_watched(files[i], 4, SCAF_INIT_TUTTE, NULL, 0);
         ran += !isnan(e);
     }
     if (!ran) skip();
@@ -235,7 +174,7 @@ static void seam_meshes_by_charts(void **state)
 static void plane_with_27_holes(void **state)
 {
     (void)state;
-    double e = run_shared("bad/plane_holes.obj", 4, SCAF_INIT_TUTTE, NULL, 0);
+    double e = param_run_watched("bad/plane_holes.obj", 4, SCAF_INIT_TUTTE, NULL, 0);
     if (isnan(e)) skip();
 }
 
