@@ -1,0 +1,128 @@
+/* app/atlas: a multi-chart texture atlas optimized inside one scaffold.
+ *
+ * The paper's texture-atlas application (Figures 1 and 8). Charts are the
+ * connected components of a mesh without UVs, or its UV charts (pieces cut
+ * along UV seams); vt indices whose faces form several fans (pinch points,
+ * a vt shared by two charts) are first split into one UV per fan, so
+ * every chart keeps its faces and its boundary vertex sequence. Setup
+ * reuses app/param (chart checks naming the chart, Tutte embedding on a
+ * circle of the chart's 3D area, circles on a grid), or with init_input
+ * the input's own UVs when the exact checker proves them bijective.
+ *
+ * Then the SCAF loop (scaffold/scaf_loop) runs on all charts at once in
+ * two phases:
+ *   1. settle: plain SCAF iterations until the relative decrease of E is
+ *      below settle_tolerance;
+ *   2. compaction: the box is rebuilt tight around the charts
+ *      (compact_box_scale) and, before each solve, its vertices are moved
+ *      toward its center by a fraction of their largest flip-free step
+ *      (every scaffold triangle exactly positive afterwards), with the
+ *      scaffold rest shapes taken before the move: the compressed scaffold
+ *      pushes the charts together while the iteration lowers its own total
+ *      energy. Scaffold triangles bridging two charts closer than three
+ *      paddings are stiffened so close pairs hold while others still move.
+ *      It stops when the layout's side stops shrinking, when E rises above
+ *      (1 + distortion_tolerance) times the settled E, or at the cap.
+ * Padding: the loop's feasibility hook rejects (halves) any step after
+ * which two different charts are closer than padding * side (side = the
+ * longest side of the charts' UV bounding box), so the layout normalized
+ * by one uniform scale 1/side into the unit square has every chart gap
+ * >= padding after every iteration. The map stays bijective after every
+ * iteration (exact checks of the loop).
+ *
+ * Errors: SCAF_ERR_MESH naming the chart (not a disk / disk with holes,
+ * degenerate face), or saying why the input UVs cannot be the start;
+ * SCAF_ERR_USAGE for a padding the initial layout cannot give;
+ * SCAF_ERR_NUMERIC, SCAF_ERR_NOMEM from the loop.
+ */
+#ifndef SCAF_APP_ATLAS_H
+#define SCAF_APP_ATLAS_H
+
+#include "base/error.h"
+#include "mesh/mesh.h"
+#include "scaf/scaf.h"
+#include "scaffold/scaf_loop.h"
+
+typedef struct atlas_options {
+    scaf_options_t base;         /* loop options (energy, lambda, box, ...);
+                                    base.max_iterations unused */
+    double padding;              /* minimum gap between charts in the unit
+                                    square (0: charts only never overlap) */
+    int init_input;              /* 1: start from the input UVs (0) */
+    int settle_iterations;       /* cap of phase 1 (30) */
+    double settle_tolerance;     /* phase 1 ends below this relative
+                                    decrease of E per iteration (1e-3) */
+    int compact_iterations;      /* cap of phase 2; 0 = no compaction (150) */
+    double compact_box_scale;    /* box during compaction (1.05) */
+    double compact_fraction;     /* fraction of the box's flip-free step
+                                    taken per iteration (0.5) */
+    double distortion_tolerance; /* phase 2 stops when E > (1 + this) times
+                                    the settled E (0.05) */
+    double progress_tolerance;   /* phase 2 stops when the side shrank by
+                                    less than this relatively over the last
+                                    8 iterations (1e-3) */
+} atlas_options;
+
+atlas_options atlas_options_default(void);
+
+typedef enum atlas_phase { ATLAS_SETTLE = 0, ATLAS_COMPACT = 1 } atlas_phase;
+
+typedef struct atlas_iteration {
+    scaf_iteration_info_t info; /* the loop's numbers */
+    atlas_phase phase;
+    double side;                /* longest side of the charts' UV bbox */
+    double gap;                 /* smallest chart gap / side (normalized);
+                                   INFINITY with one chart */
+    double efficiency;          /* chart UV area / side^2 */
+} atlas_iteration;
+
+typedef struct atlas {
+    atlas_options opt;
+    int nv, nf;                 /* input vertices and faces */
+    int ncharts;
+    int nw;                     /* working vertices = output UVs */
+    int *Fw;                    /* nf by 3 working vertex (output UV) per corner */
+    int *chart;                 /* nf chart id per face */
+    int *wchart;                /* nw chart id per working vertex */
+    int split_uvs;              /* vt indices split at pinch points */
+    int *seg;                   /* nseg by 3 boundary segments (a, b, chart) */
+    int nseg;
+    scaf_loop loop;
+    double settled_energy;      /* E at the end of phase 1 */
+    double eff_before, eff_after; /* packing efficiency before / after phase 2 */
+    double gap_before, gap_after; /* normalized smallest gap, same times */
+    int settle_done, compact_done; /* iterations run in each phase */
+    int stiffened;              /* scaffold triangles stiffened (last iteration) */
+} atlas;
+
+typedef int (*atlas_progress_fn)(const atlas *a, const atlas_iteration *it, void *user);
+
+/* Set up from a mesh (UVs used for the charts' seams, and as the start
+ * with init_input). On failure *a is empty and err says why. */
+scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_error *err);
+
+/* Run both phases; progress (may be NULL) after every iteration; a
+ * nonzero return stops (SCAF_ERR_CANCELLED). */
+scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_error *err);
+
+/* Normalized output: UV (nw by 2) = (uv - lo) / side, in [0, 1]^2. */
+void atlas_normalized_uv(const atlas *a, double *UV);
+
+/* Side and gap (normalized) of the current layout. */
+double atlas_side(const atlas *a);
+scaf_status atlas_gap(const atlas *a, double *gap, scaf_error *err);
+
+/* Per-chart energy sum A_f SD(J_f) / sum A_f (ncharts values). */
+void atlas_chart_energy(const atlas *a, double *E);
+
+void atlas_free(atlas *a);
+
+/* Split vt indices whose corners form several fans (connected through
+ * shared vt edges): FT2 (nf by 3) gets one index per fan, the first fan of
+ * each vt keeps its index, the others get nuv, nuv+1, ...; *nuv2 the new
+ * count, *map (nuv2) the original index of each. Returns the number of
+ * added indices via *nsplit. */
+scaf_status atlas_split_fans(int nf, const int *FT, int nuv, int **FT2, int *nuv2, int **map, int *nsplit,
+                             scaf_error *err);
+
+#endif /* SCAF_APP_ATLAS_H */
