@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/atlas_pack.h"
 #include "app/param.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -38,6 +39,8 @@ atlas_options atlas_options_default(void)
     o.compact_fraction = 0.5;
     o.distortion_tolerance = 0.05;
     o.progress_tolerance = 1e-3;
+    o.repack = 1;
+    o.pack_cells = 512;
     return o;
 }
 
@@ -399,6 +402,53 @@ done:
 
 /* ---- the two phases ------------------------------------------------------------ */
 
+/* Re-place the charts with the raster packer; keep the result only when
+ * it is proved valid and packs better. */
+static scaf_status repack(atlas *a, scaf_error *err)
+{
+    a->eff_packed = NAN;
+    size_t n2 = 2 * (size_t)a->nw;
+    double *out = malloc(sizeof(double) * n2);
+    if (!out) return err_nomem(err, "repacking");
+    double eff0 = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
+    double area = eff0 * pow(atlas_side(a), 2.0);
+    double want = a->opt.padding * sqrt(area / 0.5) * 1.2;
+    scaf_status st = SCAF_OK;
+    for (int attempt = 0; attempt < 4; attempt++, want *= 1.5) {
+        scaf_error e2;
+        err_clear(&e2);
+        st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
+                        out, &e2);
+        if (st == SCAF_ERR_NOMEM) {
+            *err = e2;
+            break;
+        }
+        st = SCAF_OK;
+        if (e2.code != SCAF_OK) break; /* no layout: keep the current one */
+        int ok = 1;
+        for (int f = 0; f < a->nf && ok; f++) {
+            const int *t = a->Fw + 3 * f;
+            if (!(orient2d(out + 2 * (size_t)t[0], out + 2 * (size_t)t[1], out + 2 * (size_t)t[2]) > 0.0)) ok = 0;
+        }
+        if (!ok) break;
+        double g, side = side_of(out, a->nw);
+        st = chart_gap_min_segments(out, a->seg, a->nseg, 0.0, &g, NULL, err);
+        if (st != SCAF_OK) break;
+        if (!(g > a->opt.padding * side * PAD_MARGIN) || !(g > 0.0)) continue; /* wider gap, again */
+        bij_report r;
+        st = bij_check(a->nw, out, a->nf, a->Fw, a->chart, NULL, &r, err);
+        if (st != SCAF_OK || !r.bijective) break;
+        double eff1 = chart_packing_efficiency(a->nw, out, a->nf, a->Fw);
+        if (eff1 > eff0) {
+            memcpy(a->loop.uv, out, sizeof(double) * n2);
+            a->eff_packed = eff1;
+        }
+        break;
+    }
+    free(out);
+    return st;
+}
+
 static scaf_status one_iteration(atlas *a, atlas_phase ph, atlas_progress_fn progress, void *user,
                                  atlas_iteration *it, scaf_error *err)
 {
@@ -435,6 +485,12 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
     a->eff_before = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
     st = atlas_gap(a, &a->gap_before, err);
     if (st != SCAF_OK) return st;
+
+    a->eff_packed = NAN;
+    if (a->ncharts > 1 && a->opt.repack) {
+        st = repack(a, err);
+        if (st != SCAF_OK) return st;
+    }
 
     /* ---- phase 2: compaction ------------------------------------------- */
     if (a->ncharts > 1 && a->opt.compact_iterations > 0) {

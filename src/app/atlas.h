@@ -13,6 +13,11 @@
  * two phases:
  *   1. settle: plain SCAF iterations until the relative decrease of E is
  *      below settle_tolerance;
+ *   1b. re-placement (repack): the settled charts are moved rigidly (a
+ *      translation and a multiple of 90 degrees) by a raster packer into a
+ *      square, keeping the padding; the new layout is used only when the
+ *      exact checker proves it bijective, every triangle keeps its exact
+ *      orientation, the padding holds and the efficiency is higher;
  *   2. compaction: the box is rebuilt tight around the charts
  *      (compact_box_scale) and, before each solve, its vertices are moved
  *      toward its center by a fraction of their largest flip-free step
@@ -58,6 +63,12 @@ typedef struct atlas_options {
                                     taken per iteration (0.5) */
     double distortion_tolerance; /* phase 2 stops when E > (1 + this) times
                                     the settled E (0.05) */
+    int repack;                  /* 1: between the phases, re-place the
+                                    settled charts rigidly with the raster
+                                    packer (app/atlas_pack), kept only when
+                                    the exact checks pass and it packs
+                                    better (1) */
+    int pack_cells;              /* raster cells along the square (512) */
     double progress_tolerance;   /* phase 2 stops when the side shrank by
                                     less than this relatively over the last
                                     8 iterations (1e-3) */
@@ -91,6 +102,7 @@ typedef struct atlas {
     double settled_energy;      /* E at the end of phase 1 */
     double eff_before, eff_after; /* packing efficiency before / after phase 2 */
     double gap_before, gap_after; /* normalized smallest gap, same times */
+    double eff_packed;          /* after the raster re-placement (NAN: not done / rejected) */
     int settle_done, compact_done; /* iterations run in each phase */
     int stiffened;              /* scaffold triangles stiffened (last iteration) */
 } atlas;

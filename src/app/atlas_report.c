@@ -79,6 +79,8 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     json_number(o, scaf_loop_energy(&a->loop));
     fputs(",\n  \"packing_efficiency_before_compaction\": ", o);
     json_number(o, a->eff_before);
+    fputs(",\n  \"packing_efficiency_after_repack\": ", o);
+    json_number(o, a->eff_packed);
     fputs(",\n  \"packing_efficiency_after_compaction\": ", o);
     json_number(o, a->eff_after);
     fputs(",\n  \"min_chart_gap_before_compaction\": ", o);

@@ -1,0 +1,282 @@
+/* app/atlas_pack: raster re-placement of charts (see atlas_pack.h).
+ *
+ * Occupancy is a byte grid with per-row prefix counts, so testing a chart
+ * at a position costs one lookup per run of covered cells in each of its
+ * rows. Positions are scanned row by row and abandoned as soon as they
+ * cannot beat the best square found so far.
+ */
+#include "app/atlas_pack.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct chart_raster {
+    int w, h;          /* cover size in cells */
+    int nrun;
+    int *run;          /* nrun by 3: row, x0, x1 (inclusive) of covered cells */
+    int dw, dh;        /* dilated size = w + 2k, h + 2k */
+    unsigned char *dil;/* dh by dw dilated cover */
+    double m[2];       /* rotated bbox min (cell origin) */
+} chart_raster;
+
+static void rot(int r, const double *p, double *q)
+{
+    switch (r & 3) {
+    case 0: q[0] = p[0]; q[1] = p[1]; break;
+    case 1: q[0] = -p[1]; q[1] = p[0]; break;
+    case 2: q[0] = -p[0]; q[1] = -p[1]; break;
+    default: q[0] = p[1]; q[1] = -p[0]; break;
+    }
+}
+
+static void raster_free(chart_raster *c)
+{
+    free(c->run);
+    free(c->dil);
+    memset(c, 0, sizeof *c);
+}
+
+/* Rasterize chart faces fc (nfc ids) rotated by r with cell h, dilation k. */
+static scaf_status raster_chart(const double *uv, const int *F, const int *fc, int nfc, int r, double h, int k,
+                                chart_raster *c, scaf_error *err)
+{
+    memset(c, 0, sizeof *c);
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < nfc; i++)
+        for (int j = 0; j < 3; j++) {
+            double q[2];
+            rot(r, uv + 2 * (size_t)F[3 * fc[i] + j], q);
+            for (int a = 0; a < 2; a++) {
+                lo[a] = fmin(lo[a], q[a]);
+                hi[a] = fmax(hi[a], q[a]);
+            }
+        }
+    c->m[0] = lo[0];
+    c->m[1] = lo[1];
+    c->w = (int)floor((hi[0] - lo[0]) / h) + 1;
+    c->h = (int)floor((hi[1] - lo[1]) / h) + 1;
+    size_t nc = (size_t)c->w * (size_t)c->h;
+    unsigned char *cov = calloc(nc ? nc : 1, 1);
+    c->dw = c->w + 2 * k;
+    c->dh = c->h + 2 * k;
+    c->dil = calloc((size_t)c->dw * (size_t)c->dh, 1);
+    unsigned char *tmp = calloc((size_t)c->dw * (size_t)c->dh, 1);
+    if (!cov || !c->dil || !tmp) {
+        free(cov);
+        free(tmp);
+        raster_free(c);
+        return err_nomem(err, "chart raster");
+    }
+    for (int i = 0; i < nfc; i++) {
+        double bl[2] = {INFINITY, INFINITY}, bh[2] = {-INFINITY, -INFINITY};
+        for (int j = 0; j < 3; j++) {
+            double q[2];
+            rot(r, uv + 2 * (size_t)F[3 * fc[i] + j], q);
+            for (int a = 0; a < 2; a++) {
+                bl[a] = fmin(bl[a], q[a]);
+                bh[a] = fmax(bh[a], q[a]);
+            }
+        }
+        int x0 = (int)floor((bl[0] - lo[0]) / h), x1 = (int)floor((bh[0] - lo[0]) / h);
+        int y0 = (int)floor((bl[1] - lo[1]) / h), y1 = (int)floor((bh[1] - lo[1]) / h);
+        if (x0 < 0) x0 = 0;
+        if (y0 < 0) y0 = 0;
+        if (x1 > c->w - 1) x1 = c->w - 1;
+        if (y1 > c->h - 1) y1 = c->h - 1;
+        for (int y = y0; y <= y1; y++) memset(cov + (size_t)y * c->w + x0, 1, (size_t)(x1 - x0 + 1));
+    }
+    /* runs */
+    int nrun = 0;
+    for (int y = 0; y < c->h; y++)
+        for (int x = 0; x < c->w; x++)
+            if (cov[(size_t)y * c->w + x] && (x == 0 || !cov[(size_t)y * c->w + x - 1])) nrun++;
+    c->run = malloc(sizeof(int) * 3 * (size_t)(nrun ? nrun : 1));
+    if (!c->run) {
+        free(cov);
+        free(tmp);
+        raster_free(c);
+        return err_nomem(err, "chart raster");
+    }
+    c->nrun = 0;
+    for (int y = 0; y < c->h; y++)
+        for (int x = 0; x < c->w; x++)
+            if (cov[(size_t)y * c->w + x] && (x == 0 || !cov[(size_t)y * c->w + x - 1])) {
+                int e = x;
+                while (e + 1 < c->w && cov[(size_t)y * c->w + e + 1]) e++;
+                int *rr = c->run + 3 * c->nrun++;
+                rr[0] = y;
+                rr[1] = x;
+                rr[2] = e;
+            }
+    /* separable Chebyshev dilation by k: rows, then columns */
+    for (int y = 0; y < c->h; y++)
+        for (int x = 0; x < c->w; x++)
+            if (cov[(size_t)y * c->w + x])
+                memset(tmp + (size_t)(y + k) * c->dw + x, 1, (size_t)(2 * k + 1));
+    for (int y = 0; y < c->dh; y++)
+        for (int x = 0; x < c->dw; x++)
+            if (tmp[(size_t)y * c->dw + x]) {
+                int a = y - k < 0 ? 0 : y - k, b = y + k > c->dh - 1 ? c->dh - 1 : y + k;
+                for (int yy = a; yy <= b; yy++) c->dil[(size_t)yy * c->dw + x] = 1;
+            }
+    free(cov);
+    free(tmp);
+    return SCAF_OK;
+}
+
+typedef struct order_item {
+    double area;
+    int chart;
+} order_item;
+
+static int cmp_order(const void *x, const void *y)
+{
+    const order_item *p = x, *q = y;
+    if (p->area != q->area) return p->area > q->area ? -1 : 1;
+    return p->chart - q->chart;
+}
+
+scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
+                       int ncharts, int cells, double gap, double *out, scaf_error *err)
+{
+    scaf_status st = SCAF_OK;
+    int *start = calloc((size_t)ncharts + 1, sizeof(int));
+    int *faces = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
+    order_item *ord = malloc(sizeof *ord * (size_t)(ncharts ? ncharts : 1));
+    chart_raster *R = calloc((size_t)ncharts * 4, sizeof *R);
+    int *place = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
+    unsigned char *occ = NULL;
+    int *pre = NULL;
+    if (!start || !faces || !ord || !R || !place) {
+        st = err_nomem(err, "packing");
+        goto done;
+    }
+    /* ---- charts' faces and areas ------------------------------------------ */
+    double total = 0.0;
+    for (int c = 0; c < ncharts; c++) {
+        ord[c].area = 0.0;
+        ord[c].chart = c;
+    }
+    for (int f = 0; f < nf; f++) {
+        start[chart[f] + 1]++;
+        const double *a = uv + 2 * (size_t)F[3 * f], *b = uv + 2 * (size_t)F[3 * f + 1], *d = uv + 2 * (size_t)F[3 * f + 2];
+        double A = 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
+        ord[chart[f]].area += A;
+        total += A;
+    }
+    for (int c = 0; c < ncharts; c++) start[c + 1] += start[c];
+    {
+        int *fill = malloc(sizeof(int) * (size_t)(ncharts ? ncharts : 1));
+        if (!fill) {
+            st = err_nomem(err, "packing");
+            goto done;
+        }
+        memcpy(fill, start, sizeof(int) * (size_t)ncharts);
+        for (int f = 0; f < nf; f++) faces[fill[chart[f]]++] = f;
+        free(fill);
+    }
+    if (!(total > 0.0) || !isfinite(total)) {
+        st = err_set(err, SCAF_ERR_NUMERIC, "packing: the layout has no positive area");
+        goto done;
+    }
+    if (cells < 16) cells = 16;
+    double h = sqrt(total / 0.8) / cells;
+    int k = (int)ceil(gap / h) + 1;
+    int maxdim = 0;
+    for (int c = 0; c < ncharts; c++)
+        for (int r = 0; r < 4; r++) {
+            st = raster_chart(uv, F, faces + start[c], start[c + 1] - start[c], r, h, k, &R[4 * c + r], err);
+            if (st != SCAF_OK) goto done;
+            if (R[4 * c + r].w > maxdim) maxdim = R[4 * c + r].w;
+            if (R[4 * c + r].h > maxdim) maxdim = R[4 * c + r].h;
+        }
+    qsort(ord, (size_t)ncharts, sizeof *ord, cmp_order);
+
+    /* ---- grid ---------------------------------------------------------------- */
+    int G = 2 * cells + maxdim + 2 * k + 2;
+    occ = calloc((size_t)G * (size_t)G, 1);
+    pre = calloc((size_t)G * (size_t)(G + 1), sizeof(int));
+    if (!occ || !pre) {
+        st = err_nomem(err, "packing grid");
+        goto done;
+    }
+    int curX = 0, curY = 0;
+    for (int oi = 0; oi < ncharts; oi++) {
+        int c = ord[oi].chart;
+        long bestS = -1;
+        int bx = 0, by = 0, br = 0;
+        for (int r = 0; r < 4; r++) {
+            const chart_raster *cr = &R[4 * c + r];
+            for (int y = 0; y + cr->h <= G; y++) {
+                long sy = curY > y + cr->h ? curY : y + cr->h;
+                if (bestS >= 0 && sy > bestS) break;
+                for (int x = 0; x + cr->w <= G; x++) {
+                    long s = curX > x + cr->w ? curX : x + cr->w;
+                    if (sy > s) s = sy;
+                    if (bestS >= 0 && (s > bestS || (s == bestS && (y > by || (y == by && x >= bx))))) break;
+                    int ok = 1;
+                    for (int q = 0; q < cr->nrun && ok; q++) {
+                        const int *rr = cr->run + 3 * q;
+                        const int *row = pre + (size_t)(y + rr[0]) * (size_t)(G + 1);
+                        if (row[x + rr[2] + 1] - row[x + rr[1]] > 0) ok = 0;
+                    }
+                    if (ok) {
+                        bestS = s;
+                        bx = x;
+                        by = y;
+                        br = r;
+                        break;
+                    }
+                }
+            }
+        }
+        if (bestS < 0) {
+            st = err_set(err, SCAF_ERR_NUMERIC, "packing: chart %d does not fit the grid", c);
+            goto done;
+        }
+        const chart_raster *cr = &R[4 * c + br];
+        place[3 * c] = bx;
+        place[3 * c + 1] = by;
+        place[3 * c + 2] = br;
+        if (bx + cr->w > curX) curX = bx + cr->w;
+        if (by + cr->h > curY) curY = by + cr->h;
+        /* mark the dilated cover, update the touched rows' prefix counts */
+        for (int yy = 0; yy < cr->dh; yy++) {
+            int gy = by - k + yy;
+            if (gy < 0 || gy >= G) continue;
+            for (int xx = 0; xx < cr->dw; xx++) {
+                int gx = bx - k + xx;
+                if (gx < 0 || gx >= G) continue;
+                if (cr->dil[(size_t)yy * cr->dw + xx]) occ[(size_t)gy * G + gx] = 1;
+            }
+            int *row = pre + (size_t)gy * (size_t)(G + 1);
+            for (int x = 0; x < G; x++) row[x + 1] = row[x] + occ[(size_t)gy * G + x];
+        }
+    }
+    /* ---- move the charts ---------------------------------------------------- */
+    for (int v = 0; v < nw; v++) {
+        int c = wchart[v];
+        if (c < 0) {
+            out[2 * (size_t)v] = uv[2 * (size_t)v];
+            out[2 * (size_t)v + 1] = uv[2 * (size_t)v + 1];
+            continue;
+        }
+        const chart_raster *cr = &R[4 * c + place[3 * c + 2]];
+        double q[2];
+        rot(place[3 * c + 2], uv + 2 * (size_t)v, q);
+        out[2 * (size_t)v] = (q[0] - cr->m[0]) + place[3 * c] * h;
+        out[2 * (size_t)v + 1] = (q[1] - cr->m[1]) + place[3 * c + 1] * h;
+    }
+done:
+    if (R)
+        for (int i = 0; i < 4 * ncharts; i++) raster_free(&R[i]);
+    free(R);
+    free(start);
+    free(faces);
+    free(ord);
+    free(place);
+    free(occ);
+    free(pre);
+    return st;
+}
