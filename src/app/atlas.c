@@ -40,7 +40,7 @@ atlas_options atlas_options_default(void)
     o.distortion_tolerance = 0.05;
     o.progress_tolerance = 1e-3;
     o.repack = 1;
-    o.pack_cells = 512;
+    o.pack_cells = 1024;
     return o;
 }
 
@@ -412,9 +412,9 @@ static scaf_status repack(atlas *a, scaf_error *err)
     if (!out) return err_nomem(err, "repacking");
     double eff0 = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
     double area = eff0 * pow(atlas_side(a), 2.0);
-    double want = a->opt.padding * sqrt(area / 0.5) * 1.2;
+    double want = a->opt.padding * sqrt(area / 0.8);
     scaf_status st = SCAF_OK;
-    for (int attempt = 0; attempt < 4; attempt++, want *= 1.5) {
+    for (int attempt = 0; attempt < 6; attempt++, want *= 1.15) {
         scaf_error e2;
         err_clear(&e2);
         st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,

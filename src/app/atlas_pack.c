@@ -8,6 +8,7 @@
 #include "app/atlas_pack.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -69,22 +70,43 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
         return err_nomem(err, "chart raster");
     }
     for (int i = 0; i < nfc; i++) {
-        double bl[2] = {INFINITY, INFINITY}, bh[2] = {-INFINITY, -INFINITY};
+        double P[3][2];
         for (int j = 0; j < 3; j++) {
-            double q[2];
-            rot(r, uv + 2 * (size_t)F[3 * fc[i] + j], q);
-            for (int a = 0; a < 2; a++) {
-                bl[a] = fmin(bl[a], q[a]);
-                bh[a] = fmax(bh[a], q[a]);
-            }
+            rot(r, uv + 2 * (size_t)F[3 * fc[i] + j], P[j]);
+            P[j][0] = (P[j][0] - lo[0]) / h;
+            P[j][1] = (P[j][1] - lo[1]) / h;
         }
-        int x0 = (int)floor((bl[0] - lo[0]) / h), x1 = (int)floor((bh[0] - lo[0]) / h);
-        int y0 = (int)floor((bl[1] - lo[1]) / h), y1 = (int)floor((bh[1] - lo[1]) / h);
-        if (x0 < 0) x0 = 0;
+        double ylo = fmin(P[0][1], fmin(P[1][1], P[2][1])), yhi = fmax(P[0][1], fmax(P[1][1], P[2][1]));
+        int y0 = (int)floor(ylo), y1 = (int)floor(yhi);
         if (y0 < 0) y0 = 0;
-        if (x1 > c->w - 1) x1 = c->w - 1;
         if (y1 > c->h - 1) y1 = c->h - 1;
-        for (int y = y0; y <= y1; y++) memset(cov + (size_t)y * c->w + x0, 1, (size_t)(x1 - x0 + 1));
+        for (int y = y0; y <= y1; y++) {
+            /* x-extent of the triangle within the band [y, y+1]: its
+             * vertices inside the band and its edges' crossings of the
+             * band's two lines (widened a little against rounding) */
+            double b0 = y, b1 = y + 1.0, xl = INFINITY, xr = -INFINITY;
+            for (int j = 0; j < 3; j++) {
+                const double *A = P[j], *B = P[(j + 1) % 3];
+                if (A[1] >= b0 && A[1] <= b1) {
+                    xl = fmin(xl, A[0]);
+                    xr = fmax(xr, A[0]);
+                }
+                for (int e = 0; e < 2; e++) {
+                    double yy = e ? b1 : b0;
+                    if ((A[1] - yy) * (B[1] - yy) <= 0.0 && A[1] != B[1]) {
+                        double t = (yy - A[1]) / (B[1] - A[1]);
+                        double xx = A[0] + t * (B[0] - A[0]);
+                        xl = fmin(xl, xx);
+                        xr = fmax(xr, xx);
+                    }
+                }
+            }
+            if (!(xl <= xr)) continue;
+            int x0 = (int)floor(xl - 1e-6), x1 = (int)floor(xr + 1e-6);
+            if (x0 < 0) x0 = 0;
+            if (x1 > c->w - 1) x1 = c->w - 1;
+            if (x1 >= x0) memset(cov + (size_t)y * c->w + x0, 1, (size_t)(x1 - x0 + 1));
+        }
     }
     /* runs */
     int nrun = 0;
@@ -123,6 +145,18 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
     free(cov);
     free(tmp);
     return SCAF_OK;
+}
+
+/* Whether the cover of cr at (x, y) misses every occupied cell. */
+static int fits(const chart_raster *cr, const int *pre, int G, int x, int y)
+{
+    if (x < 0 || y < 0 || x + cr->w > G || y + cr->h > G) return 0;
+    for (int q = 0; q < cr->nrun; q++) {
+        const int *rr = cr->run + 3 * q;
+        const int *row = pre + (size_t)(y + rr[0]) * (size_t)(G + 1);
+        if (row[x + rr[2] + 1] - row[x + rr[1]] > 0) return 0;
+    }
+    return 1;
 }
 
 typedef struct order_item {
@@ -236,6 +270,13 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
             goto done;
         }
         const chart_raster *cr = &R[4 * c + br];
+        /* slide left, then down, while it fits (closes the gaps the row
+         * scan leaves beside concave neighbours) */
+        for (int moved = 1; moved;) {
+            moved = 0;
+            while (fits(cr, pre, G, bx - 1, by)) bx--, moved = 1;
+            while (fits(cr, pre, G, bx, by - 1)) by--, moved = 1;
+        }
         place[3 * c] = bx;
         place[3 * c + 1] = by;
         place[3 * c + 2] = br;
@@ -254,6 +295,16 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
             for (int x = 0; x < G; x++) row[x + 1] = row[x] + occ[(size_t)gy * G + x];
         }
     }
+    if (getenv("SCAF_PACK_DEBUG")) {
+        FILE *dbg = fopen("/tmp/occ.pgm", "wb");
+        if (dbg) {
+            fprintf(dbg, "P5 %d %d 255\n", curX, curY);
+            for (int y = curY - 1; y >= 0; y--)
+                for (int x = 0; x < curX; x++) fputc(occ[(size_t)y * G + x] ? 0 : 255, dbg);
+            fclose(dbg);
+        }
+    }
+    if (getenv("SCAF_PACK_DEBUG")) fprintf(stderr, "pack: h %g k %d G %d cur %d x %d, total %g\n", h, k, G, curX, curY, total);
     /* ---- move the charts ---------------------------------------------------- */
     for (int v = 0; v < nw; v++) {
         int c = wchart[v];
