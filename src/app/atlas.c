@@ -37,6 +37,7 @@ atlas_options atlas_options_default(void)
     o.compact_iterations = 150;
     o.compact_box_scale = 1.05;
     o.compact_fraction = 0.5;
+    o.compact_rest_scale = 0.8;
     o.distortion_tolerance = 0.05;
     o.progress_tolerance = 1e-3;
     o.repack = 1;
@@ -232,9 +233,12 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
     double near = 3.0 * a->opt.padding * side;
     if (near <= 0.0) near = 0.01 * side;
     a->stiffened = 0;
+    double sigma = a->opt.compact_rest_scale;
     for (int s = 0; s < sc->ntri; s++) {
         const int *t = sc->T + 3 * s;
-        int bridge = 0;
+        int bridge = 0, boxed = 0;
+        for (int i = 0; i < 3; i++)
+            if (t[i] >= L->nv && sc->extra_fixed[t[i] - L->nv]) boxed = 1;
         for (int i = 0; i < 3 && !bridge; i++)
             for (int j = i + 1; j < 3 && !bridge; j++) {
                 int u = t[i], v = t[j];
@@ -246,6 +250,10 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
             L->scaf.weight[s] *= 100.0;
             L->scaf_pw[s] *= 100.0;
             a->stiffened++;
+        } else if (!boxed && sigma < 1.0 && L->scaf.vol[s] > sc->eps) {
+            /* rest shape shrunk by sigma: the free space wants to contract */
+            for (int i = 0; i < 6; i++) L->scaf.grad[6 * (size_t)s + i] /= sigma;
+            L->scaf.vol[s] *= sigma * sigma;
         }
     }
     /* ---- move the box inward ------------------------------------------- */

@@ -61,6 +61,11 @@ typedef struct atlas_options {
     double compact_box_scale;    /* box during compaction (1.05) */
     double compact_fraction;     /* fraction of the box's flip-free step
                                     taken per iteration (0.5) */
+    double compact_rest_scale;   /* during compaction, scaffold triangles
+                                    off the box and not bridging two close
+                                    charts take their current shape scaled
+                                    by this as rest shape, so the free space
+                                    contracts (0.8; 1 = box push only) */
     double distortion_tolerance; /* phase 2 stops when E > (1 + this) times
                                     the settled E (0.05) */
     int repack;                  /* 1: between the phases, re-place the

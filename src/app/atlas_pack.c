@@ -8,7 +8,6 @@
 #include "app/atlas_pack.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,9 +20,18 @@ typedef struct chart_raster {
     double m[2];       /* rotated bbox min (cell origin) */
 } chart_raster;
 
+enum { NROT = 8 }; /* rotations tried: multiples of 360/NROT degrees */
+
+/* Rotation r of NROT; multiples of 90 degrees are exact. */
 static void rot(int r, const double *p, double *q)
 {
-    switch (r & 3) {
+    if (r % (NROT / 4)) {
+        double a = 2.0 * 3.14159265358979323846 * r / NROT, c = cos(a), s = sin(a);
+        q[0] = c * p[0] - s * p[1];
+        q[1] = s * p[0] + c * p[1];
+        return;
+    }
+    switch ((r / (NROT / 4)) & 3) {
     case 0: q[0] = p[0]; q[1] = p[1]; break;
     case 1: q[0] = -p[1]; q[1] = p[0]; break;
     case 2: q[0] = -p[0]; q[1] = -p[1]; break;
@@ -178,10 +186,10 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     int *start = calloc((size_t)ncharts + 1, sizeof(int));
     int *faces = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
     order_item *ord = malloc(sizeof *ord * (size_t)(ncharts ? ncharts : 1));
-    chart_raster *R = calloc((size_t)ncharts * 4, sizeof *R);
+    chart_raster *R = calloc((size_t)ncharts * NROT, sizeof *R);
     int *place = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
     unsigned char *occ = NULL;
-    int *pre = NULL;
+    int *pre = NULL, *best = NULL;
     if (!start || !faces || !ord || !R || !place) {
         st = err_nomem(err, "packing");
         goto done;
@@ -219,92 +227,111 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     int k = (int)ceil(gap / h) + 1;
     int maxdim = 0;
     for (int c = 0; c < ncharts; c++)
-        for (int r = 0; r < 4; r++) {
-            st = raster_chart(uv, F, faces + start[c], start[c + 1] - start[c], r, h, k, &R[4 * c + r], err);
+        for (int r = 0; r < NROT; r++) {
+            st = raster_chart(uv, F, faces + start[c], start[c + 1] - start[c], r, h, k, &R[NROT * c + r], err);
             if (st != SCAF_OK) goto done;
-            if (R[4 * c + r].w > maxdim) maxdim = R[4 * c + r].w;
-            if (R[4 * c + r].h > maxdim) maxdim = R[4 * c + r].h;
+            if (R[NROT * c + r].w > maxdim) maxdim = R[NROT * c + r].w;
+            if (R[NROT * c + r].h > maxdim) maxdim = R[NROT * c + r].h;
         }
-    qsort(ord, (size_t)ncharts, sizeof *ord, cmp_order);
-
     /* ---- grid ---------------------------------------------------------------- */
     int G = 2 * cells + maxdim + 2 * k + 2;
-    occ = calloc((size_t)G * (size_t)G, 1);
-    pre = calloc((size_t)G * (size_t)(G + 1), sizeof(int));
-    if (!occ || !pre) {
+    occ = malloc((size_t)G * (size_t)G);
+    pre = malloc((size_t)G * (size_t)(G + 1) * sizeof(int));
+    best = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
+    if (!occ || !pre || !best) {
         st = err_nomem(err, "packing grid");
         goto done;
     }
-    int curX = 0, curY = 0;
-    for (int oi = 0; oi < ncharts; oi++) {
-        int c = ord[oi].chart;
-        long bestS = -1;
-        int bx = 0, by = 0, br = 0;
-        for (int r = 0; r < 4; r++) {
-            const chart_raster *cr = &R[4 * c + r];
-            for (int y = 0; y + cr->h <= G; y++) {
-                long sy = curY > y + cr->h ? curY : y + cr->h;
-                if (bestS >= 0 && sy > bestS) break;
-                for (int x = 0; x + cr->w <= G; x++) {
-                    long s = curX > x + cr->w ? curX : x + cr->w;
-                    if (sy > s) s = sy;
-                    if (bestS >= 0 && (s > bestS || (s == bestS && (y > by || (y == by && x >= bx))))) break;
-                    int ok = 1;
-                    for (int q = 0; q < cr->nrun && ok; q++) {
-                        const int *rr = cr->run + 3 * q;
-                        const int *row = pre + (size_t)(y + rr[0]) * (size_t)(G + 1);
-                        if (row[x + rr[2] + 1] - row[x + rr[1]] > 0) ok = 0;
-                    }
-                    if (ok) {
-                        bestS = s;
-                        bx = x;
-                        by = y;
-                        br = r;
-                        break;
+    long bestSide = -1;
+    /* Strategies: chart order (area / longest side), rotations (multiples
+     * of 90 degrees only / all), tie rule (lowest bottom / lowest top). */
+    for (int strat = 0; strat < 8; strat++) {
+        int by_dim = strat & 1, all_rot = (strat >> 1) & 1, top = (strat >> 2) & 1;
+        for (int c = 0; c < ncharts; c++) {
+            ord[c].chart = c;
+            ord[c].area = 0.0;
+            if (by_dim) {
+                const chart_raster *r0 = &R[NROT * c];
+                ord[c].area = r0->w > r0->h ? r0->w : r0->h;
+            }
+        }
+        if (!by_dim)
+            for (int f = 0; f < nf; f++) {
+                const double *p0 = uv + 2 * (size_t)F[3 * f], *p1 = uv + 2 * (size_t)F[3 * f + 1], *p2 = uv + 2 * (size_t)F[3 * f + 2];
+                ord[chart[f]].area += (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+            }
+        qsort(ord, (size_t)ncharts, sizeof *ord, cmp_order);
+        memset(occ, 0, (size_t)G * (size_t)G);
+        memset(pre, 0, (size_t)G * (size_t)(G + 1) * sizeof(int));
+        int curX = 0, curY = 0;
+        for (int oi = 0; oi < ncharts; oi++) {
+            int c = ord[oi].chart;
+            long bestS = -1;
+            int bx = 0, by = 0, br = 0, bkey = 0;
+            for (int r = 0; r < NROT; r += all_rot ? 1 : NROT / 4) {
+                const chart_raster *cr = &R[NROT * c + r];
+                for (int y = 0; y + cr->h <= G; y++) {
+                    long sy = curY > y + cr->h ? curY : y + cr->h;
+                    if (bestS >= 0 && sy > bestS) break;
+                    int key = top ? y + cr->h : y;
+                    if (bestS >= 0 && sy == bestS && top && key > bkey + maxdim) break;
+                    for (int x = 0; x + cr->w <= G; x++) {
+                        long sz = curX > x + cr->w ? curX : x + cr->w;
+                        if (sy > sz) sz = sy;
+                        if (bestS >= 0 && (sz > bestS || (sz == bestS && (key > bkey || (key == bkey && x >= bx)))))
+                            break;
+                        if (fits(cr, pre, G, x, y)) {
+                            bestS = sz;
+                            bx = x;
+                            by = y;
+                            br = r;
+                            bkey = key;
+                            break;
+                        }
                     }
                 }
             }
-        }
-        if (bestS < 0) {
-            st = err_set(err, SCAF_ERR_NUMERIC, "packing: chart %d does not fit the grid", c);
-            goto done;
-        }
-        const chart_raster *cr = &R[4 * c + br];
-        /* slide left, then down, while it fits (closes the gaps the row
-         * scan leaves beside concave neighbours) */
-        for (int moved = 1; moved;) {
-            moved = 0;
-            while (fits(cr, pre, G, bx - 1, by)) bx--, moved = 1;
-            while (fits(cr, pre, G, bx, by - 1)) by--, moved = 1;
-        }
-        place[3 * c] = bx;
-        place[3 * c + 1] = by;
-        place[3 * c + 2] = br;
-        if (bx + cr->w > curX) curX = bx + cr->w;
-        if (by + cr->h > curY) curY = by + cr->h;
-        /* mark the dilated cover, update the touched rows' prefix counts */
-        for (int yy = 0; yy < cr->dh; yy++) {
-            int gy = by - k + yy;
-            if (gy < 0 || gy >= G) continue;
-            for (int xx = 0; xx < cr->dw; xx++) {
-                int gx = bx - k + xx;
-                if (gx < 0 || gx >= G) continue;
-                if (cr->dil[(size_t)yy * cr->dw + xx]) occ[(size_t)gy * G + gx] = 1;
+            if (bestS < 0) {
+                curX = curY = G + 1; /* this strategy failed */
+                break;
             }
-            int *row = pre + (size_t)gy * (size_t)(G + 1);
-            for (int x = 0; x < G; x++) row[x + 1] = row[x] + occ[(size_t)gy * G + x];
+            const chart_raster *cr = &R[NROT * c + br];
+            /* slide left, then down, while it fits (closes the gaps the
+             * row scan leaves beside concave neighbours) */
+            for (int moved = 1; moved;) {
+                moved = 0;
+                while (fits(cr, pre, G, bx - 1, by)) bx--, moved = 1;
+                while (fits(cr, pre, G, bx, by - 1)) by--, moved = 1;
+            }
+            place[3 * c] = bx;
+            place[3 * c + 1] = by;
+            place[3 * c + 2] = br;
+            if (bx + cr->w > curX) curX = bx + cr->w;
+            if (by + cr->h > curY) curY = by + cr->h;
+            /* mark the dilated cover, update the touched rows' prefix counts */
+            for (int yy = 0; yy < cr->dh; yy++) {
+                int gy = by - k + yy;
+                if (gy < 0 || gy >= G) continue;
+                for (int xx = 0; xx < cr->dw; xx++) {
+                    int gx = bx - k + xx;
+                    if (gx < 0 || gx >= G) continue;
+                    if (cr->dil[(size_t)yy * cr->dw + xx]) occ[(size_t)gy * G + gx] = 1;
+                }
+                int *row = pre + (size_t)gy * (size_t)(G + 1);
+                for (int x = 0; x < G; x++) row[x + 1] = row[x] + occ[(size_t)gy * G + x];
+            }
+        }
+        long side = curX > curY ? curX : curY;
+        if (side <= G && (bestSide < 0 || side < bestSide)) {
+            bestSide = side;
+            memcpy(best, place, sizeof(int) * 3 * (size_t)ncharts);
         }
     }
-    if (getenv("SCAF_PACK_DEBUG")) {
-        FILE *dbg = fopen("/tmp/occ.pgm", "wb");
-        if (dbg) {
-            fprintf(dbg, "P5 %d %d 255\n", curX, curY);
-            for (int y = curY - 1; y >= 0; y--)
-                for (int x = 0; x < curX; x++) fputc(occ[(size_t)y * G + x] ? 0 : 255, dbg);
-            fclose(dbg);
-        }
+    if (bestSide < 0) {
+        st = err_set(err, SCAF_ERR_NUMERIC, "packing: the charts do not fit the grid");
+        goto done;
     }
-    if (getenv("SCAF_PACK_DEBUG")) fprintf(stderr, "pack: h %g k %d G %d cur %d x %d, total %g\n", h, k, G, curX, curY, total);
+    memcpy(place, best, sizeof(int) * 3 * (size_t)ncharts);
     /* ---- move the charts ---------------------------------------------------- */
     for (int v = 0; v < nw; v++) {
         int c = wchart[v];
@@ -313,7 +340,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
             out[2 * (size_t)v + 1] = uv[2 * (size_t)v + 1];
             continue;
         }
-        const chart_raster *cr = &R[4 * c + place[3 * c + 2]];
+        const chart_raster *cr = &R[NROT * c + place[3 * c + 2]];
         double q[2];
         rot(place[3 * c + 2], uv + 2 * (size_t)v, q);
         out[2 * (size_t)v] = (q[0] - cr->m[0]) + place[3 * c] * h;
@@ -321,7 +348,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     }
 done:
     if (R)
-        for (int i = 0; i < 4 * ncharts; i++) raster_free(&R[i]);
+        for (int i = 0; i < NROT * ncharts; i++) raster_free(&R[i]);
     free(R);
     free(start);
     free(faces);
@@ -329,5 +356,6 @@ done:
     free(place);
     free(occ);
     free(pre);
+    free(best);
     return st;
 }
