@@ -214,6 +214,29 @@ static int feasible_gap(void *user, const scaf_loop *L, const double *X, int nal
     return g > need;
 }
 
+/* The padding failed at X: freeze (zero the direction of) every chart of
+ * a pair closer than the padding, so the others can still move. */
+static int freeze_close(void *user, const scaf_loop *L, const double *X, double *dir, int nall)
+{
+    (void)nall;
+    atlas *a = user;
+    double need = a->opt.padding * side_of(X, L->nv) * PAD_MARGIN;
+    unsigned char *mark = calloc((size_t)a->ncharts, 1);
+    if (!mark) return 0;
+    long np = 0;
+    scaf_error e;
+    err_clear(&e);
+    int changed = 0;
+    if (chart_gap_mark_close(X, a->seg, a->nseg, need, mark, &np, &e) == SCAF_OK && np > 0)
+        for (int v = 0; v < L->nv; v++)
+            if (mark[a->wchart[v]] && (dir[2 * (size_t)v] != 0.0 || dir[2 * (size_t)v + 1] != 0.0)) {
+                dir[2 * (size_t)v] = dir[2 * (size_t)v + 1] = 0.0;
+                changed = 1;
+            }
+    free(mark);
+    return changed;
+}
+
 /* Every scaffold triangle strictly positive at X, decided exactly. */
 static int scaffold_positive(const scaf_loop *L, const double *X)
 {
@@ -237,6 +260,7 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
     for (int s = 0; s < sc->ntri; s++) {
         const int *t = sc->T + 3 * s;
         int bridge = 0, boxed = 0;
+        double dmin = INFINITY;
         for (int i = 0; i < 3; i++)
             if (t[i] >= L->nv && sc->extra_fixed[t[i] - L->nv]) boxed = 1;
         for (int i = 0; i < 3 && !bridge; i++)
@@ -244,12 +268,20 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
                 int u = t[i], v = t[j];
                 if (u >= L->nv || v >= L->nv || a->wchart[u] == a->wchart[v]) continue;
                 const double *p = X + 2 * (size_t)u, *q = X + 2 * (size_t)v;
-                if (hypot(p[0] - q[0], p[1] - q[1]) < near) bridge = 1;
+                double d = hypot(p[0] - q[0], p[1] - q[1]);
+                if (d < dmin) dmin = d;
+                if (d < near) bridge = 1;
             }
         if (bridge) {
+            /* a close pair: stiff, and pushed apart when nearly at the padding */
             L->scaf.weight[s] *= 100.0;
             L->scaf_pw[s] *= 100.0;
             a->stiffened++;
+            if (dmin < 0.5 * near && L->scaf.vol[s] > sc->eps) {
+                double grow = 1.1;
+                for (int i = 0; i < 6; i++) L->scaf.grad[6 * (size_t)s + i] /= grow;
+                L->scaf.vol[s] *= grow * grow;
+            }
         } else if (!boxed && sigma < 1.0 && L->scaf.vol[s] > sc->eps) {
             /* rest shape shrunk by sigma: the free space wants to contract */
             for (int i = 0; i < 6; i++) L->scaf.grad[6 * (size_t)s + i] /= sigma;
@@ -396,6 +428,7 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     if (st != SCAF_OK) goto done;
     a->loop.hooks.user = a;
     a->loop.hooks.feasible = feasible_gap;
+    a->loop.hooks.restrict_dir = freeze_close;
 
 done:
     scaf_param_destroy(p);

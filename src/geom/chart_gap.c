@@ -122,7 +122,7 @@ static int cmp_bedge(const void *x, const void *y)
 
 /* One search with radius r over segments seg (n by {a, b, chart}). */
 static scaf_status grid_search(const double *UV, const int *seg, int n, double r, const double lo[2], double extent,
-                               double *best, int pair[2], scaf_error *err)
+                               double *best, int pair[2], unsigned char *mark, long *npairs, scaf_error *err)
 {
     double cell = extent / sqrt((double)n + 1.0);
     if (r > cell) cell = r;
@@ -183,6 +183,11 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
                 if (fi != ci || fj != cj) continue;
                 double d = chart_segment_distance(UV + 2 * (size_t)seg[3 * s], UV + 2 * (size_t)seg[3 * s + 1],
                                                   UV + 2 * (size_t)seg[3 * t], UV + 2 * (size_t)seg[3 * t + 1]);
+                if (mark && d < r) {
+                    mark[seg[3 * s + 2]] = 1;
+                    mark[seg[3 * t + 2]] = 1;
+                    ++*npairs;
+                }
                 if (d <= r && d < *best) {
                     *best = d;
                     if (pair) {
@@ -257,11 +262,11 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, doub
     }
     double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(extent > 0.0)) extent = 1.0;
-    if (radius > 0.0 && isfinite(radius)) return grid_search(UV, seg, n, radius, lo, extent, gap, pair, err);
+    if (radius > 0.0 && isfinite(radius)) return grid_search(UV, seg, n, radius, lo, extent, gap, pair, NULL, NULL, err);
     double r = len / n;
     if (!(r > 0.0)) r = extent / n;
     for (;;) {
-        scaf_status st = grid_search(UV, seg, n, r, lo, extent, gap, pair, err);
+        scaf_status st = grid_search(UV, seg, n, r, lo, extent, gap, pair, NULL, NULL, err);
         if (st != SCAF_OK || isfinite(*gap) || r > 4.0 * extent) return st;
         r *= 2.0;
     }
@@ -293,4 +298,23 @@ scaf_status chart_gap_min(int nuv, const double *UV, int nf, const int *F, const
     free(own);
     free(seg);
     return st;
+}
+
+scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double radius, unsigned char *mark,
+                                 long *npairs, scaf_error *err)
+{
+    *npairs = 0;
+    if (n < 2 || !(radius > 0.0)) return SCAF_OK;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int s = 0; s < n; s++)
+        for (int k = 0; k < 2; k++) {
+            const double *a = UV + 2 * (size_t)seg[3 * s + k];
+            for (int c = 0; c < 2; c++) {
+                lo[c] = fmin(lo[c], a[c]);
+                hi[c] = fmax(hi[c], a[c]);
+            }
+        }
+    double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]), g = INFINITY;
+    if (!(extent > 0.0)) extent = 1.0;
+    return grid_search(UV, seg, n, radius, lo, extent, &g, NULL, mark, npairs, err);
 }

@@ -49,6 +49,12 @@ scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg
 scaf_status chart_gap_min_segments(const double *UV, const int *seg, int nseg, double radius, double *gap,
                                    int pair[2], scaf_error *err);
 
+/* Mark (mark[chart] = 1) both charts of every segment pair of different
+ * charts closer than radius (> 0); mark has one entry per chart id.
+ * Returns the number of such pairs found (pairs, not charts). */
+scaf_status chart_gap_mark_close(const double *UV, const int *seg, int nseg, double radius, unsigned char *mark,
+                                 long *npairs, scaf_error *err);
+
 /* Total signed UV area of the triangles / (longest side of the UV bounding
  * box of the referenced points)^2; 0 for an empty or flat layout. */
 double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F);

@@ -371,6 +371,16 @@ static scaf_status feasible_backtrack(scaf_loop *L, const opt_term *terms, int n
         return SCAF_OK;
     size_t nx = 2 * (size_t)nall;
     double t = ls->step;
+    for (int round = 0; round < 16 && L->hooks.restrict_dir; round++) {
+        if (!L->hooks.restrict_dir(L->hooks.user, L, X, L->dir, nall)) break;
+        for (size_t i = 0; i < nx; i++) X[i] = X0[i] + t * L->dir[i];
+        double e = opt_terms_energy(terms, 2, X);
+        if (!(e < ls->energy_before) || !opt_terms_oriented(terms, 2, X, NULL, NULL)) break;
+        if (L->hooks.feasible(L->hooks.user, L, X, nall)) {
+            ls->energy_after = e;
+            return SCAF_OK;
+        }
+    }
     for (int k = 0; k < 40; k++) {
         t *= 0.5;
         for (size_t i = 0; i < nx; i++) X[i] = X0[i] + t * L->dir[i];

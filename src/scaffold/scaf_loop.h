@@ -45,10 +45,16 @@ struct scaf_loop;
  *             A line-search step it rejects is halved (exact orientation
  *             and total-energy decrease re-checked) until accepted, or no
  *             step is taken. Must hold at the state the iteration starts.
- *   user      passed to both. */
+ *   restrict  optional: called with a trial state X the feasibility hook
+ *             rejected; may zero rows of the direction dir (nall by 2) so
+ *             the offending parts stay put, returning 1 when it changed
+ *             dir (the same step is then tried again, with the same exact
+ *             orientation, energy and feasibility checks), 0 otherwise.
+ *   user      passed to all. */
 typedef struct scaf_loop_hooks {
     scaf_status (*prepare)(void *user, struct scaf_loop *L, double *X, int nall, scaf_error *err);
     int (*feasible)(void *user, const struct scaf_loop *L, const double *X, int nall);
+    int (*restrict_dir)(void *user, const struct scaf_loop *L, const double *X, double *dir, int nall);
     void *user;
 } scaf_loop_hooks;
 
