@@ -1,8 +1,8 @@
 /* app/atlas_pack: raster re-placement of charts (see atlas_pack.h).
  *
- * Occupancy is a byte grid with per-row prefix counts, so testing a chart
- * at a position costs one lookup per run of covered cells in each of its
- * rows. Positions are scanned row by row and abandoned as soon as they
+ * Occupancy is a byte grid with, per row, the last occupied column at or
+ * before each cell, so testing a chart at a position costs one lookup per
+ * run of covered cells, and a conflict tells how far to skip. Positions are scanned row by row and abandoned as soon as they
  * cannot beat the best square found so far.
  */
 #include "app/atlas_pack.h"
@@ -155,16 +155,27 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
     return SCAF_OK;
 }
 
-/* Whether the cover of cr at (x, y) misses every occupied cell. */
-static int fits(const chart_raster *cr, const int *pre, int G, int x, int y)
+/* last[row * G + x]: the largest occupied column <= x in that row, or -1.
+ * Returns -1 when the cover of cr at (x, y) misses every occupied cell,
+ * else the smallest x' > x that could possibly fit in this row (the first
+ * conflicting run moved past the occupied cell it hit). */
+static int fit_next(const chart_raster *cr, const int *last, int G, int x, int y)
 {
-    if (x < 0 || y < 0 || x + cr->w > G || y + cr->h > G) return 0;
+    if (x < 0 || y < 0 || x + cr->w > G || y + cr->h > G) return x + 1;
     for (int q = 0; q < cr->nrun; q++) {
         const int *rr = cr->run + 3 * q;
-        const int *row = pre + (size_t)(y + rr[0]) * (size_t)(G + 1);
-        if (row[x + rr[2] + 1] - row[x + rr[1]] > 0) return 0;
+        int occ = last[(size_t)(y + rr[0]) * G + x + rr[2]];
+        if (occ >= x + rr[1]) {
+            int nx = occ - rr[1] + 1;
+            return nx > x ? nx : x + 1;
+        }
     }
-    return 1;
+    return -1;
+}
+
+static int fits(const chart_raster *cr, const int *last, int G, int x, int y)
+{
+    return x >= 0 && y >= 0 && fit_next(cr, last, G, x, y) < 0;
 }
 
 typedef struct order_item {
@@ -236,7 +247,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     /* ---- grid ---------------------------------------------------------------- */
     int G = 2 * cells + maxdim + 2 * k + 2;
     occ = malloc((size_t)G * (size_t)G);
-    pre = malloc((size_t)G * (size_t)(G + 1) * sizeof(int));
+    pre = malloc((size_t)G * (size_t)G * sizeof(int));
     best = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
     if (!occ || !pre || !best) {
         st = err_nomem(err, "packing grid");
@@ -245,8 +256,15 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     long bestSide = -1;
     /* Strategies: chart order (area / longest side), rotations (multiples
      * of 90 degrees only / all), tie rule (lowest bottom / lowest top). */
-    for (int strat = 0; strat < 8; strat++) {
-        int by_dim = strat & 1, all_rot = (strat >> 1) & 1, top = (strat >> 2) & 1;
+    /* (many charts: the two cheapest, 90-degree rotations only) */
+    int nstrat = ncharts <= 32 ? 8 : 2;
+    for (int strat = 0; strat < nstrat; strat++) {
+        int by_dim = 0, all_rot = 0, top = strat & 1;
+        if (nstrat == 8) {
+            by_dim = strat & 1;
+            all_rot = (strat >> 1) & 1;
+            top = (strat >> 2) & 1;
+        }
         for (int c = 0; c < ncharts; c++) {
             ord[c].chart = c;
             ord[c].area = 0.0;
@@ -262,7 +280,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
             }
         qsort(ord, (size_t)ncharts, sizeof *ord, cmp_order);
         memset(occ, 0, (size_t)G * (size_t)G);
-        memset(pre, 0, (size_t)G * (size_t)(G + 1) * sizeof(int));
+        for (size_t i = 0; i < (size_t)G * (size_t)G; i++) pre[i] = -1;
         int curX = 0, curY = 0;
         for (int oi = 0; oi < ncharts; oi++) {
             int c = ord[oi].chart;
@@ -275,12 +293,13 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
                     if (bestS >= 0 && sy > bestS) break;
                     int key = top ? y + cr->h : y;
                     if (bestS >= 0 && sy == bestS && top && key > bkey + maxdim) break;
-                    for (int x = 0; x + cr->w <= G; x++) {
+                    for (int x = 0, nx; x + cr->w <= G; x = nx) {
                         long sz = curX > x + cr->w ? curX : x + cr->w;
                         if (sy > sz) sz = sy;
                         if (bestS >= 0 && (sz > bestS || (sz == bestS && (key > bkey || (key == bkey && x >= bx)))))
                             break;
-                        if (fits(cr, pre, G, x, y)) {
+                        nx = fit_next(cr, pre, G, x, y);
+                        if (nx < 0) {
                             bestS = sz;
                             bx = x;
                             by = y;
@@ -317,8 +336,11 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
                     if (gx < 0 || gx >= G) continue;
                     if (cr->dil[(size_t)yy * cr->dw + xx]) occ[(size_t)gy * G + gx] = 1;
                 }
-                int *row = pre + (size_t)gy * (size_t)(G + 1);
-                for (int x = 0; x < G; x++) row[x + 1] = row[x] + occ[(size_t)gy * G + x];
+                int *row = pre + (size_t)gy * (size_t)G, l = -1;
+                for (int x = 0; x < G; x++) {
+                    if (occ[(size_t)gy * G + x]) l = x;
+                    row[x] = l;
+                }
             }
         }
         long side = curX > curY ? curX : curY;

@@ -92,7 +92,7 @@ double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F)
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, area = 0.0;
     for (int f = 0; f < nf; f++) {
         const double *a = UV + 2 * (size_t)F[3 * f], *b = UV + 2 * (size_t)F[3 * f + 1], *c = UV + 2 * (size_t)F[3 * f + 2];
-        area += 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+        area += fabs(0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])));
         for (int j = 0; j < 3; j++)
             for (int k = 0; k < 2; k++) {
                 double x = UV[2 * (size_t)F[3 * f + j] + k];

@@ -55,7 +55,7 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int nseg, d
 scaf_status chart_gap_mark_close(const double *UV, const int *seg, int nseg, double radius, unsigned char *mark,
                                  long *npairs, scaf_error *err);
 
-/* Total signed UV area of the triangles / (longest side of the UV bounding
+/* Total unsigned UV area of the triangles / (longest side of the UV bounding
  * box of the referenced points)^2; 0 for an empty or flat layout. */
 double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F);
 
