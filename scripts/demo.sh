@@ -12,7 +12,7 @@ bash scripts/build.sh
 mkdir -p out
 ./build/scaf --version
 ./build/scaf gen hemisphere --size 24 -o out/hemisphere.obj
-./build/scaf param out/hemisphere.obj -o out/hemisphere_uv.obj --iterations 30 \
+./build/scaf param out/hemisphere.obj -o out/hemisphere_uv.obj --iterations 30 --verify \
     --svg out/hemisphere_uv.svg --svg-scaffold --report out/hemisphere_report.json
 ./build/scaf check out/hemisphere_uv.obj
 echo "wrote out/hemisphere_uv.obj and the picture out/hemisphere_uv.svg"

@@ -35,7 +35,7 @@ for t in "${targets[@]}"; do
   echo "fuzz_smoke: $name for ${per}s"
   if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
       "$t" -max_total_time="$per" -max_len=4096 -rss_limit_mb=2048 -timeout=10 \
-      -artifact_prefix="$art/$name-" -print_final_stats=1 "$work" fuzz/regressions \
+      -artifact_prefix="$art/$name-" -print_final_stats=1 -dict=fuzz/mesh.dict "$work" fuzz/regressions \
       2>build-fuzz/"$name".log; then
     echo "fuzz_smoke: $name FAILED; log: build-fuzz/$name.log, inputs in $art/" >&2
     tail -n 40 build-fuzz/"$name".log >&2

@@ -29,8 +29,8 @@ static void usage(FILE *out)
             "  --json   print one JSON object (keys: triangles, positive, flipped,\n"
             "           degenerate, charts, mirrored_charts, mixed_charts, boundary_edges,\n"
             "           boundary_loops, boundary_crossings, boundary_touchings,\n"
-            "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops, bijective,\n"
-            "           min_chart_gap, packing_efficiency)\n"
+            "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops,\n"
+            "           corner_overlaps, bijective, min_chart_gap, packing_efficiency)\n"
             "  --help   this text\n"
             "\n"
             "min_chart_gap: the smallest distance between two different charts (triangles\n"
@@ -57,11 +57,11 @@ static void print_json(const char *path, const bij_report *r, double gap, double
            "\"charts\": %d, \"mirrored_charts\": %d, \"mixed_charts\": %d, "
            "\"boundary_edges\": %d, \"boundary_loops\": %d, \"boundary_crossings\": %lld, "
            "\"boundary_touchings\": %lld, \"boundary_foldbacks\": %lld, \"folded_edges\": %d, \"nonmanifold_edges\": %d, "
-           "\"nested_loops\": %d, \"bijective\": %s, ",
+           "\"nested_loops\": %d, \"corner_overlaps\": %d, \"bijective\": %s, ",
            r->triangles, r->positive, r->flipped, r->degenerate, r->charts, r->mirrored_charts,
            r->mixed_charts, r->boundary_edges, r->boundary_loops, r->boundary_crossings,
            r->boundary_touchings, r->boundary_foldbacks, r->folded_edges, r->nonmanifold_edges, r->nested_loops,
-           r->bijective ? "true" : "false");
+           r->corner_overlaps, r->bijective ? "true" : "false");
     if (isfinite(gap))
         printf("\"min_chart_gap\": %.17g, ", gap);
     else
@@ -85,6 +85,7 @@ static void print_text(const char *path, const bij_report *r, double gap, double
     printf("  folded edges         %d\n", r->folded_edges);
     printf("  non-manifold edges   %d\n", r->nonmanifold_edges);
     printf("  nested loops         %d\n", r->nested_loops);
+    printf("  corner overlaps      %d\n", r->corner_overlaps);
     printf("  min chart gap        %.6g\n", gap);
     printf("  packing efficiency   %.4f\n", eff);
 }

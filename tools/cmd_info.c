@@ -231,11 +231,8 @@ int cmd_info(int argc, char **argv)
         fprintf(stderr, "scaf info: %s\n", err.message);
         return exit_code_for(st);
     }
-    if (ri.polygons_triangulated)
-        fprintf(stderr, "scaf info: warning: %s: %d polygons with more than 3 corners were fan-triangulated\n",
-                path, ri.polygons_triangulated);
-    if (ri.faces_without_uv)
-        fprintf(stderr, "scaf info: warning: %s: %d faces have no vt while others do\n", path, ri.faces_without_uv);
+    char warn[512];
+    if (mesh_read_warnings(&ri, warn, sizeof warn) > 0) fprintf(stderr, "scaf info: warning: %s: %s\n", path, warn);
 
     mesh_topology t;
     mesh_charts ch;

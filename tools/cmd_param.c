@@ -17,6 +17,7 @@
 #include "app/param_report.h"
 #include "app/uv_svg.h"
 #include "exit_codes.h"
+#include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
 #include "scaf/scaf.h"
 #include "scaffold/scaf_loop.h"
@@ -45,6 +46,8 @@ static void usage(FILE *o)
             "  --report FILE.json     options, per-iteration energy and time, phase split\n"
             "  --svg FILE             picture of the UV layout shaded by distortion\n"
             "  --svg-scaffold         also draw the scaffold in the picture\n"
+            "  --verify               prove the map bijective with the exact checker after\n"
+            "                         every iteration (stops with exit 70 if it ever is not)\n"
             "  -h, --help             this text\n"
             "\n"
             "The energy E reported is sum_f A_f (|J_f|^2 + |J_f^-1|^2) / sum_f A_f over the\n"
@@ -54,6 +57,9 @@ static void usage(FILE *o)
 }
 
 typedef struct progress_state {
+    const scaf_param_t *p;
+    int verify;         /* check bijectivity after every iteration */
+    int not_bijective;  /* iteration at which the check failed, 0 if none */
     int live;
     int cap;
     scaf_iteration_info_t *it;
@@ -75,6 +81,14 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
         s->size = size;
     }
     s->it[s->n++] = *info;
+    if (s->verify) {
+        const scaf_loop *L = param_loop(s->p);
+        bij_report rep;
+        if (bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective) {
+            s->not_bijective = info->iteration;
+            return 1;
+        }
+    }
     if (s->live) {
         fprintf(stderr, "\rscaf param: iteration %d/%d  E = %.6f  step %.3g  %.3f s/it   ", info->iteration, s->cap,
                 info->energy, info->step, info->seconds);
@@ -111,7 +125,7 @@ static double now(void)
 int cmd_param(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
-    int quiet = 0, svg_scaffold = 0;
+    int quiet = 0, svg_scaffold = 0, verify = 0;
     scaf_options_t opt = scaf_options_default();
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -171,6 +185,8 @@ int cmd_param(int argc, char **argv)
             svg = v;
         } else if (!strcmp(a, "--svg-scaffold")) {
             svg_scaffold = 1;
+        } else if (!strcmp(a, "--verify")) {
+            verify = 1;
         } else if (a[0] == '-' && a[1]) {
             fprintf(stderr, "scaf param: unknown option '%s' (see --help)\n", a);
             return EXIT_USAGE;
@@ -193,6 +209,10 @@ int cmd_param(int argc, char **argv)
         return EXIT_USAGE;
     }
 
+    if (opt.energy == SCAF_ENERGY_ARAP && !quiet)
+        fprintf(stderr, "scaf param: warning: ARAP is not a barrier energy: triangles pushed towards "
+                        "inversion are only held by the line search and may become very thin "
+                        "(symmetric-dirichlet is the default for that reason)\n");
     double t_start = now();
     mesh m;
     scaf_error err;
@@ -220,12 +240,20 @@ int cmd_param(int argc, char **argv)
     }
     double setup = now() - t_start;
     double e0 = scaf_param_energy(p);
+    ps.p = p;
+    ps.verify = verify;
     ps.live = !quiet && isatty(fileno(stderr));
     ps.cap = opt.max_iterations;
     if (!quiet && !ps.live)
         fprintf(stderr, "scaf param: %s: %d faces, %d chart(s), initial E = %.6f\n", in, m.nf, scaf_param_chart_count(p), e0);
     st = scaf_param_run(p, opt.max_iterations, on_iteration, &ps);
     if (ps.live) fputc('\n', stderr);
+    if (ps.not_bijective) {
+        fprintf(stderr, "scaf param: %s: BUG: the map is not bijective after iteration %d (please report)\n", in,
+                ps.not_bijective);
+        rc = EXIT_INTERNAL;
+        goto done;
+    }
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf param: %s: %s\n", in, scaf_param_error(p));
         rc = exit_code_for(st);
@@ -233,8 +261,8 @@ int cmd_param(int argc, char **argv)
     }
     double e1 = scaf_param_energy(p);
     if (!quiet)
-        fprintf(stderr, "scaf param: %d iterations, E %.6f -> %.6f, %.3f s\n", scaf_param_iterations(p), e0, e1,
-                now() - t_start);
+        fprintf(stderr, "scaf param: %d iterations, E %.6f -> %.6f, %.3f s%s\n", scaf_param_iterations(p), e0, e1,
+                now() - t_start, verify ? " (bijective after every iteration: verified)" : "");
 
     int nuv = scaf_param_uv_count(p);
     UV = malloc(sizeof(double) * 2 * (size_t)nuv);

@@ -65,7 +65,11 @@ const char *scaf_version(void);
 /* Distortion energies. */
 typedef enum scaf_energy {
     SCAF_ENERGY_SYMMETRIC_DIRICHLET = 0, /* ||J||^2 + ||J^-1||^2 */
-    SCAF_ENERGY_ARAP,                    /* ||J - R||^2 */
+    SCAF_ENERGY_ARAP,                    /* ||J - R||^2; not a barrier:
+                                            triangles the solver pushes
+                                            towards inversion are only
+                                            stopped by the line search and
+                                            can become very thin */
     SCAF_ENERGY_CONFORMAL                /* MIPS: ||J||^2 / det J */
 } scaf_energy;
 
@@ -83,9 +87,10 @@ typedef struct scaf_options {
                                 (SCAF_ENERGY_SYMMETRIC_DIRICHLET) */
     scaf_init init;          /* initial embedding (SCAF_INIT_TUTTE) */
     int max_iterations;      /* iteration cap of scaf_param_run (50) */
-    double tolerance;        /* stop when the relative decrease of the
-                                reported energy E over one iteration is
-                                below this; 0 disables (1e-6) */
+    double tolerance;        /* stop when the relative decrease over one
+                                iteration of the reported energy E, or of
+                                the objective E_M + lambda E_S, is below
+                                this; 0 disables (1e-6) */
     double box_scale;        /* scaffold box = this times the current UV
                                 bounding box, same center; recomputed
                                 before each iteration and fixed during its
@@ -162,7 +167,9 @@ scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *option
  *   UV  #UV by 2 texture coordinates, or NULL (nuv = 0): then each
  *       connected component is one chart
  *   FT  #F by 3 UV indices per corner (with UV), defining the charts by
- *       their seams; only the connectivity is used, not the UV values
+ *       their seams; only the connectivity is used, not the UV values.
+ *       Where the faces around one UV index form several fans (a chart
+ *       touching itself at a vertex), each fan gets its own output UV. 
  * Fails with SCAF_ERR_MESH naming the chart and the reason when a chart is
  * closed, has genus, is non-manifold or non-orientable, or has a
  * degenerate triangle; SCAF_ERR_USAGE on out-of-range indices. */

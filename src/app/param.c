@@ -9,6 +9,7 @@
  * stopping rules. Errors leave a message readable by scaf_param_error.
  */
 #include "app/param.h"
+#include "app/uv_fans.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -169,8 +170,22 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     mesh m = {nv, (double *)V, nf, (int *)F, nuv, (double *)UV, (int *)FT};
     mesh_charts ch;
     memset(&ch, 0, sizeof ch);
-    int *widx = NULL, *local = NULL, *cverts = NULL, *cfaces = NULL, *cloops = NULL;
+    int *widx = NULL, *local = NULL, *cverts = NULL, *cfaces = NULL, *cloops = NULL, *FTs = NULL;
     double *W3 = NULL, *uv = NULL, *P = NULL, *cuv = NULL, *radius = NULL;
+    if (nuv > 0) {
+        /* A chart touching itself at a UV vertex (several fans around one
+         * vt) is a disk all the same: give each fan its own UV index. */
+        FTs = malloc(sizeof(int) * 3 * (size_t)nf);
+        if (!FTs) {
+            st = err_nomem(err, "UV indices");
+            goto fail;
+        }
+        st = uv_split_fans(nf, FT, nuv, FTs, &m.nuv, NULL, err);
+        if (st != SCAF_OK) goto fail;
+        m.FT = FTs;
+        FT = FTs;
+        nuv = m.nuv;
+    }
     st = mesh_charts_compute(&m, &ch, err);
     if (st != SCAF_OK) goto fail;
     int nidx = ch.uses_uv ? nuv : nv;
@@ -312,7 +327,7 @@ fail:
     if (err->code == SCAF_OK) err->code = st;
 done:
     mesh_charts_free(&ch);
-    free(widx); free(local); free(cverts); free(cfaces); free(cloops);
+    free(widx); free(local); free(cverts); free(cfaces); free(cloops); free(FTs);
     free(W3); free(uv); free(P); free(cuv); free(radius);
     return st;
 }
@@ -334,8 +349,11 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
             return err_set(&p->err, SCAF_ERR_CANCELLED, "stopped by the progress callback after iteration %d",
                            info.iteration);
         if (info.step == 0.0) break; /* no descent left */
+        /* Converged when the objective (mesh + scaffold, the energy being
+         * minimized) or the reported E stops decreasing noticeably. */
         double dec = (info.energy_before - info.energy) / info.energy_before;
-        if (p->opt.tolerance > 0.0 && dec >= 0.0 && dec < p->opt.tolerance) break;
+        double tdec = (info.total_before - info.total_after) / info.total_before;
+        if (p->opt.tolerance > 0.0 && ((dec >= 0.0 && dec < p->opt.tolerance) || tdec < p->opt.tolerance)) break;
     }
     return SCAF_OK;
 }

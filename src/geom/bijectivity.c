@@ -5,8 +5,9 @@
  * find boundary, folded and non-manifold edges and to join triangles into
  * charts; join boundary edges into loops; test boundary segment pairs
  * found through a uniform grid (each pair tested once, in the first grid
- * cell both bounding boxes cover); test one vertex per boundary loop
- * against all triangles through a grid of those vertices. Allocation
+ * cell both bounding boxes cover); test the vertices of contact-free loops
+ * against all triangles through a grid of those vertices; sort the
+ * triangle corners at boundary points by angle and check neighbours. Allocation
  * failures return SCAF_ERR_NOMEM with everything freed.
  */
 #include "geom/bijectivity.h"
@@ -20,13 +21,18 @@
 
 static int sgn(double x) { return (x > 0) - (x < 0); }
 
+/* Inputs are finite (checked), so plain comparisons do; libm's fmin/fmax
+ * are calls because of their NaN rules. */
+static inline double dmin(double a, double b) { return a < b ? a : b; }
+static inline double dmax(double a, double b) { return a > b ? a : b; }
+
 /* ---- segment contact ---- */
 
 /* c is collinear with a, b: is it within the closed segment? */
 static int on_segment(const double *a, const double *b, const double *c)
 {
-    return fmin(a[0], b[0]) <= c[0] && c[0] <= fmax(a[0], b[0]) && fmin(a[1], b[1]) <= c[1] &&
-           c[1] <= fmax(a[1], b[1]);
+    return dmin(a[0], b[0]) <= c[0] && c[0] <= dmax(a[0], b[0]) && dmin(a[1], b[1]) <= c[1] &&
+           c[1] <= dmax(a[1], b[1]);
 }
 
 int bij_segments_meet(const double p1[2], const double p2[2], const double q1[2],
@@ -176,7 +182,7 @@ typedef struct work {
     signed char *ori;
     unsigned char *tri_bnd; /* bit k: edge k of the triangle is boundary */
     unsigned char *bvert;   /* UV point is on a boundary edge */
-    int *start, *parent, *vparent, *chart_of, *loop_rep, *loop_of_root;
+    int *start, *parent, *vparent, *chart_of, *bdeg, *loop_of;
     unsigned char *loop_nested;
     hedge *hedges;
     seg *segs;
@@ -193,8 +199,8 @@ static void work_free(work *w)
     free(w->parent);
     free(w->vparent);
     free(w->chart_of);
-    free(w->loop_rep);
-    free(w->loop_of_root);
+    free(w->bdeg);
+    free(w->loop_of);
     free(w->loop_nested);
     free(w->hedges);
     free(w->segs);
@@ -213,17 +219,18 @@ static scaf_status nomem(work *w, scaf_error *err, const char *what)
 }
 
 /* Count crossing and touching boundary segment pairs with a grid. */
-static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w, bij_report *rep,
-                                 scaf_error *err)
+static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
+                                 unsigned char *contact, const int *loop_of_vertex,
+                                 bij_report *rep, scaf_error *err)
 {
     if (nseg < 2) return SCAF_OK;
     double minx = INFINITY, miny = INFINITY, maxx = -INFINITY, maxy = -INFINITY;
     for (int i = 0; i < nseg; i++) {
         const double *p = UV + 2 * (size_t)segs[i].a, *q = UV + 2 * (size_t)segs[i].b;
-        minx = fmin(minx, fmin(p[0], q[0]));
-        maxx = fmax(maxx, fmax(p[0], q[0]));
-        miny = fmin(miny, fmin(p[1], q[1]));
-        maxy = fmax(maxy, fmax(p[1], q[1]));
+        minx = dmin(minx, dmin(p[0], q[0]));
+        maxx = dmax(maxx, dmax(p[0], q[0]));
+        miny = dmin(miny, dmin(p[1], q[1]));
+        maxy = dmax(maxy, dmax(p[1], q[1]));
     }
     grid g;
     long cells = nseg;
@@ -235,10 +242,10 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
         for (int i = 0; i < nseg; i++) {
             seg *s = &segs[i];
             const double *p = UV + 2 * (size_t)s->a, *q = UV + 2 * (size_t)s->b;
-            s->lox = cell_x(&g, fmin(p[0], q[0]));
-            s->hix = cell_x(&g, fmax(p[0], q[0]));
-            s->loy = cell_y(&g, fmin(p[1], q[1]));
-            s->hiy = cell_y(&g, fmax(p[1], q[1]));
+            s->lox = cell_x(&g, dmin(p[0], q[0]));
+            s->hix = cell_x(&g, dmax(p[0], q[0]));
+            s->loy = cell_y(&g, dmin(p[1], q[1]));
+            s->hiy = cell_y(&g, dmax(p[1], q[1]));
             total += (long)(s->hix - s->lox + 1) * (s->hiy - s->loy + 1);
         }
         if (total <= 16L * nseg + 4096 || cells <= 16) break;
@@ -275,10 +282,10 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
                     int fy = s->loy > t->loy ? s->loy : t->loy;
                     if (fx != cx || fy != cy) continue;
                     const double *q1 = UV + 2 * (size_t)t->a, *q2 = UV + 2 * (size_t)t->b;
-                    if (fmax(p1[0], p2[0]) < fmin(q1[0], q2[0]) ||
-                        fmax(q1[0], q2[0]) < fmin(p1[0], p2[0]) ||
-                        fmax(p1[1], p2[1]) < fmin(q1[1], q2[1]) ||
-                        fmax(q1[1], q2[1]) < fmin(p1[1], p2[1]))
+                    if (dmax(p1[0], p2[0]) < dmin(q1[0], q2[0]) ||
+                        dmax(q1[0], q2[0]) < dmin(p1[0], p2[0]) ||
+                        dmax(p1[1], p2[1]) < dmin(q1[1], q2[1]) ||
+                        dmax(q1[1], q2[1]) < dmin(p1[1], p2[1]))
                         continue;
                     int shared = -1, op = -1, oq = -1;
                     if (s->a == t->a) shared = s->a, op = s->b, oq = t->b;
@@ -287,8 +294,10 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
                     else if (s->b == t->b) shared = s->b, op = s->a, oq = t->a;
                     if (shared >= 0) {
                         if (adjacent_overlap(UV + 2 * (size_t)shared, UV + 2 * (size_t)op,
-                                             UV + 2 * (size_t)oq))
+                                             UV + 2 * (size_t)oq)) {
                             rep->boundary_foldbacks++;
+                            contact[loop_of_vertex[s->a]] = contact[loop_of_vertex[t->a]] = 1;
+                        }
                         continue;
                     }
                     int m = bij_segments_meet(p1, p2, q1, q2);
@@ -296,6 +305,7 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
                         rep->boundary_crossings++;
                     else if (m == 2)
                         rep->boundary_touchings++;
+                    if (m) contact[loop_of_vertex[s->a]] = contact[loop_of_vertex[t->a]] = 1;
                 }
             }
         }
@@ -328,34 +338,39 @@ static int vertex_in_triangle(const double *UV, const int *F, const work *w, int
     return !w->bvert[c[corner]];
 }
 
-static scaf_status test_nesting(const double *UV, int nf, const int *F, work *w, int nloops,
-                                bij_report *rep, scaf_error *err)
+/* Test every boundary vertex of the contact-free loops against all
+ * triangles not incident to it (through a grid of those vertices): a loop
+ * is nested when one of its vertices lies in the interior of another
+ * chart's region (or of its own chart elsewhere). */
+static scaf_status test_nesting(const double *UV, int nf, const int *F, work *w, int nq,
+                                const int *qv, const int *ql, bij_report *rep, int nloops,
+                                scaf_error *err)
 {
-    if (nloops == 0) return SCAF_OK;
+    if (nq == 0) return SCAF_OK;
     double minx = INFINITY, miny = INFINITY, maxx = -INFINITY, maxy = -INFINITY;
-    for (int l = 0; l < nloops; l++) {
-        const double *p = UV + 2 * (size_t)w->loop_rep[l];
-        minx = fmin(minx, p[0]), maxx = fmax(maxx, p[0]);
-        miny = fmin(miny, p[1]), maxy = fmax(maxy, p[1]);
+    for (int q = 0; q < nq; q++) {
+        const double *p = UV + 2 * (size_t)qv[q];
+        minx = dmin(minx, p[0]), maxx = dmax(maxx, p[0]);
+        miny = dmin(miny, p[1]), maxy = dmax(maxy, p[1]);
     }
     grid g;
-    grid_init(&g, minx, miny, maxx, maxy, nloops);
+    grid_init(&g, minx, miny, maxx, maxy, nq);
     size_t ncell = (size_t)g.nx * (size_t)g.ny;
     w->cell_start = calloc(ncell + 1, sizeof *w->cell_start);
-    w->cell_items = malloc((size_t)nloops * sizeof *w->cell_items);
-    w->loop_nested = calloc((size_t)nloops, 1);
+    w->cell_items = malloc((size_t)nq * sizeof *w->cell_items);
+    w->loop_nested = calloc((size_t)nloops + 1, 1);
     if (!w->cell_start || !w->cell_items || !w->loop_nested) return err_nomem(err, "loop grid");
-    for (int l = 0; l < nloops; l++) {
-        const double *p = UV + 2 * (size_t)w->loop_rep[l];
+    for (int q = 0; q < nq; q++) {
+        const double *p = UV + 2 * (size_t)qv[q];
         w->cell_start[(size_t)cell_y(&g, p[1]) * g.nx + cell_x(&g, p[0]) + 1]++;
     }
     for (size_t c = 0; c < ncell; c++) w->cell_start[c + 1] += w->cell_start[c];
     int *fill = malloc((ncell + 1) * sizeof *fill);
     if (!fill) return err_nomem(err, "loop grid");
     memcpy(fill, w->cell_start, (ncell + 1) * sizeof *fill);
-    for (int l = 0; l < nloops; l++) {
-        const double *p = UV + 2 * (size_t)w->loop_rep[l];
-        w->cell_items[fill[(size_t)cell_y(&g, p[1]) * g.nx + cell_x(&g, p[0])]++] = l;
+    for (int q = 0; q < nq; q++) {
+        const double *p = UV + 2 * (size_t)qv[q];
+        w->cell_items[fill[(size_t)cell_y(&g, p[1]) * g.nx + cell_x(&g, p[0])]++] = q;
     }
     free(fill);
 
@@ -363,8 +378,8 @@ static scaf_status test_nesting(const double *UV, int nf, const int *F, work *w,
         if (w->ori[t] == 0) continue;
         const int *c = F + 3 * (size_t)t;
         const double *a = UV + 2 * (size_t)c[0], *b = UV + 2 * (size_t)c[1], *d = UV + 2 * (size_t)c[2];
-        double tminx = fmin(a[0], fmin(b[0], d[0])), tmaxx = fmax(a[0], fmax(b[0], d[0]));
-        double tminy = fmin(a[1], fmin(b[1], d[1])), tmaxy = fmax(a[1], fmax(b[1], d[1]));
+        double tminx = dmin(a[0], dmin(b[0], d[0])), tmaxx = dmax(a[0], dmax(b[0], d[0]));
+        double tminy = dmin(a[1], dmin(b[1], d[1])), tmaxy = dmax(a[1], dmax(b[1], d[1]));
         if (tmaxx < minx || tminx > maxx || tmaxy < miny || tminy > maxy) continue;
         int x0 = cell_x(&g, tminx), x1 = cell_x(&g, tmaxx);
         int y0 = cell_y(&g, tminy), y1 = cell_y(&g, tmaxy);
@@ -372,16 +387,102 @@ static scaf_status test_nesting(const double *UV, int nf, const int *F, work *w,
             for (int x = x0; x <= x1; x++) {
                 size_t cell = (size_t)y * g.nx + x;
                 for (int i = w->cell_start[cell]; i < w->cell_start[cell + 1]; i++) {
-                    int l = w->cell_items[i];
-                    int v = w->loop_rep[l];
-                    if (w->loop_nested[l] || v == c[0] || v == c[1] || v == c[2]) continue;
+                    int q = w->cell_items[i];
+                    int v = qv[q];
+                    if (w->loop_nested[ql[q]] || v == c[0] || v == c[1] || v == c[2]) continue;
                     const double *p = UV + 2 * (size_t)v;
                     if (p[0] < tminx || p[0] > tmaxx || p[1] < tminy || p[1] > tmaxy) continue;
-                    if (vertex_in_triangle(UV, F, w, t, v)) w->loop_nested[l] = 1;
+                    if (vertex_in_triangle(UV, F, w, t, v)) w->loop_nested[ql[q]] = 1;
                 }
             }
     }
     for (int l = 0; l < nloops; l++) rep->nested_loops += w->loop_nested[l];
+    return SCAF_OK;
+}
+
+/* ---- corners at boundary points ---- */
+
+/* Angular order of directions p - v, exact: upper half-plane first (y > 0,
+ * or y == 0 and x > 0), then counter-clockwise. */
+typedef struct sector {
+    const double *v, *a, *b; /* apex, start and end of a ccw corner */
+} sector;
+
+static int half(const double *v, const double *p)
+{
+    return (p[1] > v[1] || (p[1] == v[1] && p[0] > v[0])) ? 0 : 1;
+}
+
+static int sector_cmp(const void *x, const void *y)
+{
+    const sector *s = x, *t = y;
+    int hs = half(s->v, s->a), ht = half(t->v, t->a);
+    if (hs != ht) return hs - ht;
+    double o = orient2d(s->v, s->a, t->a);
+    return o > 0 ? -1 : o < 0 ? 1 : 0;
+}
+
+/* Same direction from v (collinear, same side)? */
+static int same_direction(const double *v, const double *p, const double *q)
+{
+    return orient2d(v, p, q) == 0 && half(v, p) == half(v, q);
+}
+
+/* At every boundary point the corners of the incident ccw triangles must
+ * not overlap. That matters where the boundary passes more than once (fans
+ * joined only at the point) or where a triangle reaches by index into
+ * another chart's fan; the vertex-in-triangle test skips incident
+ * triangles, this covers them. Sort the corners by start direction and
+ * check each against the next, cyclically (each corner is below 180
+ * degrees, so an overlap always shows between neighbours). */
+static scaf_status test_corners(const double *UV, int nuv, int nf, const int *F, work *w,
+                                const int *bdeg, bij_report *rep, scaf_error *err)
+{
+    int *start = calloc((size_t)nuv + 1, sizeof *start);
+    if (!start) return err_nomem(err, "corners at boundary points");
+    int any = 0;
+    for (int t = 0; t < nf; t++) {
+        if (w->ori[t] <= 0) continue;
+        for (int k = 0; k < 3; k++)
+            if (bdeg[F[3 * (size_t)t + k]] > 0) start[F[3 * (size_t)t + k] + 1]++, any = 1;
+    }
+    if (!any) {
+        free(start);
+        return SCAF_OK;
+    }
+    for (int v = 0; v < nuv; v++) start[v + 1] += start[v];
+    sector *sec = malloc(((size_t)start[nuv] + 1) * sizeof *sec);
+    int *pos = malloc(((size_t)nuv + 1) * sizeof *pos);
+    if (!sec || !pos) {
+        free(start), free(sec), free(pos);
+        return err_nomem(err, "corners at boundary points");
+    }
+    memcpy(pos, start, ((size_t)nuv + 1) * sizeof *pos);
+    for (int t = 0; t < nf; t++) {
+        if (w->ori[t] <= 0) continue;
+        const int *c = F + 3 * (size_t)t;
+        for (int k = 0; k < 3; k++)
+            if (bdeg[c[k]] > 0) {
+                sector s = {UV + 2 * (size_t)c[k], UV + 2 * (size_t)c[(k + 1) % 3],
+                            UV + 2 * (size_t)c[(k + 2) % 3]};
+                sec[pos[c[k]]++] = s;
+            }
+    }
+    for (int v = 0; v < nuv; v++) {
+        int n = start[v + 1] - start[v];
+        if (n < 2) continue;
+        sector *S = sec + start[v];
+        qsort(S, (size_t)n, sizeof *S, sector_cmp);
+        for (int i = 0; i < n; i++) {
+            const sector *s = &S[i], *t = &S[(i + 1) % n];
+            if (same_direction(s->v, s->a, t->a) ||
+                (orient2d(s->v, s->a, t->a) > 0 && orient2d(s->v, t->a, s->b) > 0)) {
+                rep->corner_overlaps++;
+                break;
+            }
+        }
+    }
+    free(start), free(sec), free(pos);
     return SCAF_OK;
 }
 
@@ -442,7 +543,6 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
         if (a != b) w.start[(a < b ? a : b) + 1]++;
     }
     for (int i = 0; i < nuv; i++) w.start[i + 1] += w.start[i];
-    int nhe = w.start[nuv];
     {
         int *pos = malloc(((size_t)nuv + 1) * sizeof *pos);
         if (!pos) return nomem(&w, err, "edge table");
@@ -489,7 +589,6 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
             i = j;
         }
     }
-    (void)nhe;
     rep->boundary_edges = nseg;
     free(w.hedges);
     w.hedges = NULL;
@@ -531,29 +630,47 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
         if (w.chart_cw[c] > 0 && w.chart_ccw[c] > 0) rep->mixed_charts++;
     }
 
-    /* ---- boundary loops: one representative vertex each ---- */
+    /* ---- boundary loops ---- */
     w.vparent = malloc(((size_t)nuv + 1) * sizeof *w.vparent);
-    w.loop_of_root = malloc(((size_t)nuv + 1) * sizeof *w.loop_of_root);
-    if (!w.vparent || !w.loop_of_root) return nomem(&w, err, "boundary loops");
-    for (int v = 0; v < nuv; v++) w.vparent[v] = v, w.loop_of_root[v] = -1;
-    for (int i = 0; i < nseg; i++) uf_union(w.vparent, w.segs[i].a, w.segs[i].b);
-    int nloops = 0;
+    w.loop_of = malloc(((size_t)nuv + 1) * sizeof *w.loop_of);
+    w.bdeg = calloc((size_t)nuv + 1, sizeof *w.bdeg); /* boundary segments at each point */
+    if (!w.vparent || !w.loop_of || !w.bdeg) return nomem(&w, err, "boundary loops");
+    int *bdeg = w.bdeg;
+    for (int v = 0; v < nuv; v++) w.vparent[v] = v;
+    for (int i = 0; i < nseg; i++) {
+        uf_union(w.vparent, w.segs[i].a, w.segs[i].b);
+        bdeg[w.segs[i].a]++;
+        bdeg[w.segs[i].b]++;
+    }
+    int nloops = 0, nbv = 0;
     for (int v = 0; v < nuv; v++)
-        if (w.bvert[v] && uf_find(w.vparent, v) == v) nloops++;
-    w.loop_rep = malloc(((size_t)nloops + 1) * sizeof *w.loop_rep);
-    if (!w.loop_rep) return nomem(&w, err, "boundary loops");
-    nloops = 0;
-    for (int v = 0; v < nuv; v++)
-        if (w.bvert[v] && uf_find(w.vparent, v) == v) w.loop_rep[nloops++] = v;
+        if (w.bvert[v] && uf_find(w.vparent, v) == v) w.loop_of[v] = nloops++;
+    for (int v = 0; v < nuv; v++) {
+        if (!w.bvert[v]) continue;
+        w.loop_of[v] = w.loop_of[uf_find(w.vparent, v)]; /* the root's loop, then v's */
+        nbv++;
+    }
     rep->boundary_loops = nloops;
 
     /* ---- overlaps ---- */
-    st = test_segments(UV, w.segs, nseg, &w, rep, err);
-    if (st != SCAF_OK) {
-        work_free(&w);
-        return st;
+    unsigned char *contact = calloc((size_t)nloops + 1, 1);
+    if (!contact) return nomem(&w, err, "boundary loops");
+    st = test_segments(UV, w.segs, nseg, &w, contact, w.loop_of, rep, err);
+    int *qv = NULL, *ql = NULL, nq = 0;
+    if (st == SCAF_OK) {
+        qv = malloc(((size_t)nbv + 1) * sizeof *qv);
+        ql = malloc(((size_t)nbv + 1) * sizeof *ql);
+        if (!qv || !ql) st = err_nomem(err, "boundary vertices");
     }
-    st = test_nesting(UV, nf, F, &w, nloops, rep, err);
+    if (st == SCAF_OK) {
+        for (int v = 0; v < nuv; v++)
+            if (w.bvert[v] && !contact[w.loop_of[v]]) qv[nq] = v, ql[nq++] = w.loop_of[v];
+        st = test_nesting(UV, nf, F, &w, nq, qv, ql, rep, nloops, err);
+    }
+    if (st == SCAF_OK) st = test_corners(UV, nuv, nf, F, &w, bdeg, rep, err);
+    free(contact);
+    free(qv);
+    free(ql);
     if (st != SCAF_OK) {
         work_free(&w);
         return st;
@@ -561,7 +678,7 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
 
     rep->bijective = rep->flipped == 0 && rep->degenerate == 0 && rep->boundary_crossings == 0 &&
                      rep->boundary_touchings == 0 && rep->boundary_foldbacks == 0 &&
-                     rep->folded_edges == 0 &&
+                     rep->folded_edges == 0 && rep->corner_overlaps == 0 &&
                      rep->nonmanifold_edges == 0 && rep->nested_loops == 0;
     work_free(&w);
     return SCAF_OK;

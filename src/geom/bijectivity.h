@@ -12,12 +12,15 @@
  *    apart, and adjacent segments folding back onto each other apart again; interior edges whose two triangles lie on the same side
  *    (folds) and edges shared by more than two triangles; boundary loops
  *    lying inside another chart (or inside their own chart elsewhere)
- *    without any boundary contact (nesting).
+ *    without any boundary contact (nesting); overlapping triangle corners
+ *    at boundary points (pinch points, where the boundary passes through a
+ *    UV index more than once, and triangles sharing only vertices).
  * Soundness: with no flipped or degenerate triangles, no fold, no
  * non-manifold edge, and boundary loops that neither cross nor touch, the
  * number of triangles covering a point is the sum of the winding numbers
- * of the boundary loops around it; testing one vertex per loop against the
- * other triangles then shows whether any point is covered twice.
+ * of the boundary loops around it; testing the boundary vertices against
+ * the triangles not incident to them, plus the corners at boundary
+ * points, then shows whether any point is covered twice.
  * So `bijective` is exact: every triangle positively oriented and every
  * point of the plane covered by at most one closed triangle, except that
  * triangles may share the vertices and edges they share by index.
@@ -59,12 +62,18 @@ typedef struct bij_report {
                                      turns back on itself by 180 degrees) */
     int folded_edges;       /* interior edges with both triangles on one side */
     int nonmanifold_edges;  /* UV edges used by more than two triangles */
-    int nested_loops;       /* boundary loops inside another chart's region
-                               with no boundary contact */
+    int nested_loops;       /* boundary loops without any boundary contact
+                               that have a vertex in the interior of another
+                               chart's region (or of their own chart) */
+    int corner_overlaps;     /* boundary UV points where the corners of the
+                               triangles using the point overlap: fans
+                               joined only at the point (the boundary passes
+                               more than once), or a triangle reaching into
+                               another chart's fan by a shared index */
     int bijective;          /* 1 when all of the above counts of defects are
                                zero (flipped, degenerate, crossings,
                                touchings, foldbacks, folds, non-manifold,
-                               nesting) */
+                               nesting, corner overlaps) */
 } bij_report;
 
 /* Check the UV map.

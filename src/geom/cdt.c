@@ -51,25 +51,32 @@ void cdt_output_free(cdt_output *out)
 /* ---------------------------------------------------------------- BRIO order */
 
 typedef struct keyed {
-    uint64_t key;
+    uint32_t key;
     int idx;
 } keyed;
 
-static int cmp_keyed(const void *a, const void *b)
+/* Stable LSD radix sort by key (4 passes of 8 bits); tmp has room for n. */
+static void radix_sort(keyed *a, keyed *tmp, int n)
 {
-    const keyed *x = a, *y = b;
-    if (x->key != y->key)
-        return x->key < y->key ? -1 : 1;
-    return (x->idx > y->idx) - (x->idx < y->idx);
+    for (int shift = 0; shift < 32; shift += 8) {
+        int count[257] = {0};
+        for (int i = 0; i < n; i++)
+            count[((a[i].key >> shift) & 255u) + 1]++;
+        for (int b = 0; b < 256; b++)
+            count[b + 1] += count[b];
+        for (int i = 0; i < n; i++)
+            tmp[count[(a[i].key >> shift) & 255u]++] = a[i];
+        memcpy(a, tmp, (size_t)n * sizeof *a);
+    }
 }
 
-static uint64_t hilbert_key(uint32_t x, uint32_t y)
+static uint32_t hilbert_key(uint32_t x, uint32_t y)
 {
     const uint32_t n = 1u << 16;
-    uint64_t d = 0;
+    uint32_t d = 0;
     for (uint32_t s = n / 2; s > 0; s /= 2) {
         uint32_t rx = (x & s) > 0, ry = (y & s) > 0;
-        d += (uint64_t)s * s * ((3u * rx) ^ ry);
+        d += s * s * ((3u * rx) ^ ry);
         if (ry == 0) {
             if (rx == 1) {
                 x = n - 1 - x;
@@ -87,7 +94,7 @@ static uint64_t hilbert_key(uint32_t x, uint32_t y)
  * of doubling size, each round sorted along a Hilbert curve. */
 static int brio_order(const double *p, int n, const double lo[2], double ext, int *order)
 {
-    keyed *k = malloc((size_t)(n > 0 ? n : 1) * sizeof *k);
+    keyed *k = malloc((size_t)(n > 0 ? n : 1) * 2 * sizeof *k);
     if (!k)
         return -1;
     unsigned r = 0x2545f491u;
@@ -115,7 +122,7 @@ static int brio_order(const double *p, int n, const double lo[2], double ext, in
             k[i].key = hilbert_key(qx, qy);
             k[i].idx = v;
         }
-        qsort(k, (size_t)m, sizeof *k, cmp_keyed);
+        radix_sort(k, k + n, m);
         for (int i = 0; i < m; i++)
             order[start + i] = k[i].idx;
         end = start;
@@ -182,7 +189,10 @@ static scaf_status restore_delaunay(recover_ctx *ctx, scaf_error *err)
 {
     cdt_mesh *m = ctx->m;
     pairs *q = &ctx->fresh;
+    long budget = 64L * m->nt + 1024; /* Lawson terminates; this only guards bugs */
     while (q->n > 0) {
+        if (--budget < 0)
+            return err_set(err, SCAF_ERR_INTERNAL, "Delaunay flips did not converge");
         q->n--;
         int u = q->v[2 * q->n], w = q->v[2 * q->n + 1];
         int c = cdt_mesh_find_edge(m, u, w);
@@ -241,7 +251,7 @@ static scaf_status recover_segment(recover_ctx *ctx, int s, scaf_error *err)
         if (n < 0)
             break;
         ca = cdt_next(n);
-    } while (ca != c0 && ++guard < 1000000);
+    } while (ca != c0 && ++guard < 3L * m->nt + 3);
     if (found < 0)
         return err_set(err, SCAF_ERR_INTERNAL, "segment %d (%d->%d): no triangle at point %d "
                        "points towards point %d", s, a, b, a, b);
@@ -480,6 +490,10 @@ static scaf_status check_input(const cdt_input *in, const cdt_options *opt, scaf
         if (!isfinite(in->points[2 * i]) || !isfinite(in->points[2 * i + 1]))
             return err_set(err, SCAF_ERR_MESH, "point %d has a non-finite coordinate "
                            "(%g, %g)", i, in->points[2 * i], in->points[2 * i + 1]);
+        else if (fabs(in->points[2 * i]) > 0x1p500 || fabs(in->points[2 * i + 1]) > 0x1p500)
+            /* the enclosing triangle is 64 times larger: keep it finite */
+            return err_set(err, SCAF_ERR_MESH, "point %d (%g, %g) is too large (|coordinate| "
+                           "> 2^500)", i, in->points[2 * i], in->points[2 * i + 1]);
     for (int s = 0; s < in->nsegments; s++) {
         int a = in->segments[2 * s], b = in->segments[2 * s + 1];
         if (a < 0 || b < 0 || a >= in->npoints || b >= in->npoints)

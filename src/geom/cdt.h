@@ -31,7 +31,8 @@ typedef struct cdt_input {
 } cdt_input;
 
 typedef struct cdt_options {
-    double min_angle_deg;   /* quality bound; 0 disables refinement (20) */
+    double min_angle_deg;   /* quality bound in [0, 60); 0 disables angle
+                               refinement (20) */
     double max_area;        /* upper bound on triangle area; 0 = none (0) */
     int max_steiner;        /* safety cap on inserted points; 0 = no cap (0).
                                Whatever this says, an internal cap
@@ -69,17 +70,32 @@ typedef struct cdt_output {
  * reached from far away without crossing a segment are not output, nor are
  * holes (the left side of segments flagged left_is_hole, and the regions
  * containing hole seeds, each up to the enclosing segments). Splittable
- * segments may come out as chains of subsegments.
+ * segments may come out as chains of subsegments. A segment given twice
+ * (either direction) is kept once, as the first index, unsplittable if
+ * either copy is.
  *
- * Refinement: every output triangle gets a minimum angle of
- * min_angle_deg (and area <= max_area) except where that would need a
- * Steiner point encroaching (in the diametral circle of) an unsplittable
- * segment or beyond it; triangles whose smallest angle lies between two
- * segments are left alone. Deterministic: same input, same output.
+ * Refinement (Ruppert / Chew style with off-centers, graded: fine near the
+ * charts, coarse towards the box): triangles get a minimum angle of
+ * min_angle_deg and area <= max_area, except where that would need a
+ * Steiner point that an unsplittable segment forbids: one in the segment's
+ * diametral lens (it would see the segment under more than 180 - 2 *
+ * min_angle degrees), or nearly on its line close to one of its ends, or
+ * beyond it. Such points are refused (counted in nrejected), so quality is
+ * best-effort next to chart edges (narrow gaps, sharp chart corners) and
+ * complete elsewhere. Triangles whose smallest angle lies between two
+ * segments (input angles) are left alone. Splittable segments that are
+ * encroached (diametral circle) are split at midpoints or concentric
+ * shells; split points lie exactly on the segment (a segment where no
+ * double does, which cannot happen for axis-aligned ones, stays whole).
+ * Input points inside holes are not used by any triangle.
+ * Deterministic: same input, same output.
  *
  * Fails with SCAF_ERR_MESH (message names the segments) on
  * invalid input: crossing segments, a point in the interior of a segment,
- * duplicate points, non-finite coordinates. On failure *out is empty. */
+ * duplicate points, non-finite coordinates (or beyond 2^500 in magnitude),
+ * segment indices out of range. Bad arguments (negative counts, missing
+ * arrays, min_angle_deg outside [0, 60)) give SCAF_ERR_USAGE. On failure
+ * *out is empty. */
 scaf_status cdt_triangulate(const cdt_input *in, const cdt_options *opt, cdt_output *out,
                             scaf_error *err);
 

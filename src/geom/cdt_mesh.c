@@ -102,7 +102,6 @@ void cdt_mesh_free(cdt_mesh *m)
     free(m->tmark);
     free(m->cav);
     free(m->bnd);
-    free(m->stk);
     free(m->ba);
     free(m->bb);
     free(m->bn);
@@ -141,22 +140,6 @@ int cdt_mesh_first_triangle(cdt_mesh *m, int a, int b, int c)
     return 0;
 }
 
-double cdt_orient(const cdt_mesh *m, int a, int b, int c)
-{
-    return orient2d(m->xy + 2 * a, m->xy + 2 * b, m->xy + 2 * c);
-}
-
-double cdt_orient_p(const cdt_mesh *m, int a, int b, const double p[2])
-{
-    return orient2d(m->xy + 2 * a, m->xy + 2 * b, p);
-}
-
-double cdt_incircle_t(const cdt_mesh *m, int t, const double p[2])
-{
-    const int *v = m->V + 3 * t;
-    return incircle(m->xy + 2 * v[0], m->xy + 2 * v[1], m->xy + 2 * v[2], p);
-}
-
 static unsigned next_rand(cdt_mesh *m)
 {
     /* xorshift32: deterministic, state lives in the structure */
@@ -186,12 +169,13 @@ int cdt_mesh_locate(cdt_mesh *m, int t, const double p[2])
     int from = -1;
     long limit = 4L * m->nt + 64;
     for (long step = 0; step < limit; step++) {
+        static const int rot[7] = {0, 1, 2, 0, 1, 2, 0};
         int k0 = (int)(next_rand(m) % 3u), moved = 0;
         for (int kk = 0; kk < 3; kk++) {
-            int c = 3 * t + (k0 + kk) % 3;
+            int c = 3 * t + rot[k0 + kk];
             if (c == from)
                 continue;
-            if (cdt_orient_p(m, m->V[cdt_next(c)], m->V[cdt_prev(c)], p) < 0) {
+            if (cdt_orient_p(m, m->V[3 * t + rot[k0 + kk + 1]], m->V[3 * t + rot[k0 + kk + 2]], p) < 0) {
                 int n = m->N[c];
                 if (n < 0)
                     return -1;
@@ -239,7 +223,7 @@ int cdt_mesh_walk_constrained(cdt_mesh *m, int t, const double p[2], int *blocke
     return -1; /* cycling: treat as unreachable (the caller refuses the point) */
 }
 
-static int push_int(int **a, int *n, int *cap, int v)
+static inline int push_int(int **a, int *n, int *cap, int v)
 {
     if (*n >= *cap && grow((void **)a, cap, *n + 1, sizeof(int)))
         return -1;
@@ -256,9 +240,8 @@ int cdt_mesh_cavity(cdt_mesh *m, const double p[2], int seed0, int seed1)
     unsigned in = m->stamp, out = m->stamp + 1;
     m->stamp += 2;
     m->ncav = m->nbnd = 0;
-    int nstk = 0, split_c = -1, split_n = -1;
-    if (push_int(&m->cav, &m->ncav, &m->capcav, seed0) ||
-        push_int(&m->stk, &nstk, &m->capstk, seed0))
+    int split_c = -1, split_n = -1;
+    if (push_int(&m->cav, &m->ncav, &m->capcav, seed0))
         return -1;
     m->tmark[seed0] = in;
     if (seed1 >= 0) {
@@ -269,13 +252,13 @@ int cdt_mesh_cavity(cdt_mesh *m, const double p[2], int seed0, int seed1)
             }
         if (split_c < 0)
             return 0;
-        if (push_int(&m->cav, &m->ncav, &m->capcav, seed1) ||
-            push_int(&m->stk, &nstk, &m->capstk, seed1))
+        if (push_int(&m->cav, &m->ncav, &m->capcav, seed1))
             return -1;
         m->tmark[seed1] = in;
     }
-    while (nstk > 0) {
-        int t = m->stk[--nstk];
+    /* breadth-first: the cavity list is its own queue */
+    for (int q = 0; q < m->ncav; q++) {
+        int t = m->cav[q];
         for (int k = 0; k < 3; k++) {
             int c = 3 * t + k, n = m->N[c];
             if (n < 0) {
@@ -293,8 +276,7 @@ int cdt_mesh_cavity(cdt_mesh *m, const double p[2], int seed0, int seed1)
             if (m->S[c] < 0 && m->tmark[u] != out) {
                 if (cdt_incircle_t(m, u, p) > 0) {
                     m->tmark[u] = in;
-                    if (push_int(&m->cav, &m->ncav, &m->capcav, u) ||
-                        push_int(&m->stk, &nstk, &m->capstk, u))
+                    if (push_int(&m->cav, &m->ncav, &m->capcav, u))
                         return -1;
                     continue;
                 }
@@ -387,6 +369,7 @@ int cdt_mesh_find_edge(const cdt_mesh *m, int a, int b)
     if (c0 < 0)
         return -1;
     int c = c0;
+    long guard = 3L * m->nt + 3; /* a broken structure must not hang us */
     /* counter-clockwise around a */
     for (;;) {
         if (m->V[cdt_next(c)] == b)
@@ -395,7 +378,7 @@ int cdt_mesh_find_edge(const cdt_mesh *m, int a, int b)
         if (n < 0)
             break;
         c = cdt_next(n);
-        if (c == c0)
+        if (c == c0 || --guard < 0)
             return -1;
     }
     /* hit the hull: go clockwise from the start */
@@ -407,7 +390,7 @@ int cdt_mesh_find_edge(const cdt_mesh *m, int a, int b)
         c = cdt_prev(n);
         if (m->V[cdt_next(c)] == b)
             return cdt_prev(c);
-        if (c == c0)
+        if (c == c0 || --guard < 0)
             return -1;
     }
 }

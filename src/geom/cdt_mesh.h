@@ -21,6 +21,8 @@
 
 #include <stddef.h>
 
+#include "geom/predicates.h"
+
 /* Region of a triangle, decided after segment recovery. */
 enum { CDT_REG_DOMAIN = 0, CDT_REG_EXTERIOR = 1, CDT_REG_HOLE = 2 };
 
@@ -42,15 +44,14 @@ typedef struct cdt_mesh {
     /* cavity scratch */
     int *cav, ncav, capcav;       /* triangles of the cavity */
     int *bnd, nbnd, capbnd;       /* boundary corners of the cavity */
-    int *stk, capstk;             /* DFS stack */
     /* per-boundary-edge copies used while committing */
     int *ba, *bb, *bn, *bs, capbx;
     unsigned char *br;
 } cdt_mesh;
 
 /* Corner helpers. */
-static inline int cdt_next(int c) { return (c % 3 == 2) ? c - 2 : c + 1; }
-static inline int cdt_prev(int c) { return (c % 3 == 0) ? c + 2 : c - 1; }
+static inline int cdt_next(int c) { return ((unsigned)c % 3u == 2u) ? c - 2 : c + 1; }
+static inline int cdt_prev(int c) { return ((unsigned)c % 3u == 0u) ? c + 2 : c - 1; }
 
 /* Start an empty structure able to hold nv_hint vertices before growing. 0 or -1 (no memory). */
 int cdt_mesh_init(cdt_mesh *m, int nv_hint);
@@ -94,9 +95,19 @@ int cdt_mesh_find_edge(const cdt_mesh *m, int a, int b);
 void cdt_mesh_flip(cdt_mesh *m, int c);
 
 /* Exact predicates on vertex indices / points. */
-double cdt_orient(const cdt_mesh *m, int a, int b, int c);
-double cdt_orient_p(const cdt_mesh *m, int a, int b, const double p[2]);
+static inline double cdt_orient(const cdt_mesh *m, int a, int b, int c)
+{
+    return orient2d(m->xy + 2 * a, m->xy + 2 * b, m->xy + 2 * c);
+}
+static inline double cdt_orient_p(const cdt_mesh *m, int a, int b, const double p[2])
+{
+    return orient2d(m->xy + 2 * a, m->xy + 2 * b, p);
+}
 /* > 0 when p is strictly inside the circumcircle of triangle t. */
-double cdt_incircle_t(const cdt_mesh *m, int t, const double p[2]);
+static inline double cdt_incircle_t(const cdt_mesh *m, int t, const double p[2])
+{
+    const int *v = m->V + 3 * t;
+    return incircle(m->xy + 2 * v[0], m->xy + 2 * v[1], m->xy + 2 * v[2], p);
+}
 
 #endif /* SCAF_GEOM_CDT_MESH_H */

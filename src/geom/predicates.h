@@ -5,7 +5,9 @@
  * the magnitude is only an approximation. A fast floating-point filter
  * decides most calls; only when it cannot, exact expansion arithmetic does.
  * Pure functions: no global state, thread-safe. Sign conventions follow
- * Shewchuk's predicates.
+ * Shewchuk's predicates. Exact for every finite input, huge/tiny mixes and
+ * subnormals included (predicates.c says how); a NaN or infinite
+ * coordinate gives NaN.
  */
 #ifndef SCAF_GEOM_PREDICATES_H
 #define SCAF_GEOM_PREDICATES_H

@@ -8,10 +8,35 @@
  */
 #include "mesh/complex.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "mesh/union_find.h"
+
+static int cmp_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* Ascending; insertion sort for the usual handful, qsort beyond. */
+static void sort_u64(uint64_t *k, int n)
+{
+    if (n > 32) {
+        qsort(k, (size_t)n, sizeof *k, cmp_u64);
+        return;
+    }
+    for (int i = 1; i < n; i++) {
+        uint64_t x = k[i];
+        int j = i - 1;
+        while (j >= 0 && k[j] > x) {
+            k[j + 1] = k[j];
+            j--;
+        }
+        k[j + 1] = x;
+    }
+}
 
 void tri_complex_free(tri_complex *c)
 {
@@ -181,7 +206,9 @@ static scaf_status vertex_stats(tri_complex *c, const int *F, scaf_error *err)
     return SCAF_OK;
 }
 
-/* ---- orientability: propagate face flips across 2-face edges ---- */
+/* ---- orientability: propagate face flips across 2-face edges ----
+ * A group without misoriented edges is consistently oriented as given, so
+ * orientable: only groups with misoriented edges need the search. */
 static scaf_status orientability(tri_complex *c, const int *F, scaf_error *err)
 {
     int nf = c->nf;
@@ -197,8 +224,8 @@ static scaf_status orientability(tri_complex *c, const int *F, scaf_error *err)
     for (int g = 0; g < c->ngroups; g++) c->group_orientable[g] = 1;
     for (int i0 = 0; i0 < nf; i0++) {
         int seed = c->group_faces[i0];
-        if (flip[seed] >= 0) continue;
         int g = c->face_group[seed];
+        if (flip[seed] >= 0 || !c->group_misoriented[g]) continue;
         int head = 0, tail = 0;
         flip[seed] = 0;
         queue[tail++] = seed;
@@ -241,6 +268,7 @@ static scaf_status boundary_loops(tri_complex *c, const int *F, scaf_error *err)
     int *next = malloc(((size_t)nb + 1) * sizeof *next);
     int *loop_of = malloc(((size_t)nb + 1) * sizeof *loop_of);
     int *fill = NULL;
+    uint64_t *scratch = NULL;
     if (!bhe || !vstart || !vlist || !parent || !bad || !next || !loop_of) goto nomem;
 
     int m = 0;
@@ -261,33 +289,48 @@ static scaf_status boundary_loops(tri_complex *c, const int *F, scaf_error *err)
         vlist[fill[he_to(F, bhe[i])]++] = i;
     }
 
+    /* Per index v, its incident boundary half-edges are sorted (by group,
+     * then by loop) so that each step is O(k log k) even when thousands of
+     * boundary edges meet at one index: no quadratic scan. */
+    int maxk = 0;
+    for (int v = 0; v < n; v++)
+        if (vstart[v + 1] - vstart[v] > maxk) maxk = vstart[v + 1] - vstart[v];
+    scratch = malloc(((size_t)maxk + 1) * sizeof *scratch);
+    if (!scratch) goto nomem;
+
     /* link boundary half-edges meeting at an index within one group */
     uf_init(parent, nb);
-    for (int v = 0; v < n; v++)
+    for (int v = 0; v < n; v++) {
+        int k = 0;
         for (int i = vstart[v]; i < vstart[v + 1]; i++)
-            for (int j = vstart[v]; j < i; j++)
-                if (c->face_group[bhe[vlist[i]] / 3] == c->face_group[bhe[vlist[j]] / 3]) {
-                    uf_union(parent, vlist[i], vlist[j]);
-                    break;
-                }
+            scratch[k++] = ((uint64_t)(uint32_t)c->face_group[bhe[vlist[i]] / 3] << 32) | (uint32_t)vlist[i];
+        sort_u64(scratch, k);
+        for (int i = 1; i < k; i++)
+            if (scratch[i] >> 32 == scratch[i - 1] >> 32)
+                uf_union(parent, (int)(uint32_t)scratch[i], (int)(uint32_t)scratch[i - 1]);
+    }
 
     /* a loop is a simple cycle iff each of its indices has one out, one in */
     for (int i = 0; i < nb; i++) next[i] = -1;
     for (int v = 0; v < n; v++) {
-        for (int i = vstart[v]; i < vstart[v + 1]; i++) {
-            int r = uf_find(parent, vlist[i]);
-            int outs = 0, ins = 0, out_b = -1;
-            for (int j = vstart[v]; j < vstart[v + 1]; j++) {
-                if (uf_find(parent, vlist[j]) != r) continue;
-                if (he_from(F, bhe[vlist[j]]) == v) {
+        int k = 0;
+        for (int i = vstart[v]; i < vstart[v + 1]; i++)
+            scratch[k++] = ((uint64_t)(uint32_t)uf_find(parent, vlist[i]) << 32) | (uint32_t)vlist[i];
+        sort_u64(scratch, k);
+        for (int s0 = 0, s1; s0 < k; s0 = s1) {
+            int r = (int)(scratch[s0] >> 32), outs = 0, ins = 0, out_b = -1, in_b = -1;
+            for (s1 = s0; s1 < k && (int)(scratch[s1] >> 32) == r; s1++) {
+                int b = (int)(uint32_t)scratch[s1];
+                if (he_from(F, bhe[b]) == v) {
                     outs++;
-                    out_b = vlist[j];
+                    out_b = b;
                 } else {
                     ins++;
+                    in_b = b;
                 }
             }
             if (outs != 1 || ins != 1) bad[r] = 1;
-            else if (he_to(F, bhe[vlist[i]]) == v) next[vlist[i]] = out_b;
+            else next[in_b] = out_b;
         }
     }
 
@@ -346,6 +389,7 @@ done:
     free(next);
     free(loop_of);
     free(fill);
+    free(scratch);
     return st;
 }
 

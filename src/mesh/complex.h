@@ -74,7 +74,9 @@ typedef struct tri_complex {
 } tri_complex;
 
 /* Analyze F (#F by 3 indices into 0..n-1) with face_group (#F labels in
- * 0..ngroups-1; every group non-empty). On failure (out of memory, bad
+ * 0..ngroups-1; every group non-empty; faces sharing an edge must be in
+ * one group, as connected components and UV charts are: an edge is counted
+ * in the group of its first face). On failure (out of memory, bad
  * label) returns the status and leaves *c empty. */
 scaf_status tri_complex_build(int n, int nf, const int *F, int ngroups, const int *face_group,
                               tri_complex *c, scaf_error *err);

@@ -7,6 +7,7 @@
  */
 #include "mesh/edges.h"
 
+#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -47,6 +48,8 @@ void mesh_edges_free(mesh_edges *e)
 scaf_status mesh_edges_build(int n, int nf, const int *F, mesh_edges *e, scaf_error *err)
 {
     memset(e, 0, sizeof *e);
+    if (n < 0 || nf < 0 || nf > INT_MAX / 3)
+        return err_set(err, SCAF_ERR_MESH, "edge table: %d faces over %d indices is out of range", nf, n);
     size_t nh = 3 * (size_t)nf;
     int *start = calloc((size_t)n + 2, sizeof *start);
     uint64_t *keys = malloc((nh ? nh : 1) * sizeof *keys);

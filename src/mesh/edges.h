@@ -6,7 +6,7 @@
  * lies on the left of its half-edges. Edges are numbered in increasing
  * (smaller endpoint, larger endpoint) order, so the table is deterministic.
  * Built by a counting sort on the smaller endpoint followed by a small sort
- * inside each bucket: linear time in practice (about 0.1 s for 1.8M faces).
+ * inside each bucket: linear time in practice (about 0.2 s for 1.8M faces).
  *
  * Works on any index space: 3D vertex indices (mesh.F) or UV indices
  * (mesh.FT). A face with an index outside [0, n) or with a repeated index

@@ -17,6 +17,7 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -187,4 +188,25 @@ scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_erro
     st = mesh_parse(data, n, format_from_name(path), path, m, info, err);
     free(data);
     return st;
+}
+
+int mesh_read_warnings(const mesh_read_info *info, char *buf, size_t size)
+{
+    int n = 0;
+    size_t o = 0;
+    if (buf && size) buf[0] = '\0';
+    if (!info) return 0;
+    if (info->polygons_triangulated > 0) {
+        n++;
+        if (buf && o < size)
+            o += (size_t)snprintf(buf + o, size - o, "%d polygon%s with more than 3 corners fan-triangulated",
+                                  info->polygons_triangulated, info->polygons_triangulated == 1 ? "" : "s");
+    }
+    if (info->faces_without_uv > 0) {
+        n++;
+        if (buf && o < size)
+            o += (size_t)snprintf(buf + o, size - o, "%s%d face%s without texture indices: UVs dropped",
+                                  o ? "; " : "", info->faces_without_uv, info->faces_without_uv == 1 ? "" : "s");
+    }
+    return n;
 }

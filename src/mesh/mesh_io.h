@@ -1,9 +1,21 @@
 /* mesh/mesh_io: reading OBJ, OFF and PLY meshes, writing OBJ with UVs.
  *
  * Readers accept files by extension (.obj, .off, .ply, each optionally
- * .gz). Every malformed input gets SCAF_ERR_PARSE (or SCAF_ERR_IO when the
- * file cannot be opened/read) with a message naming file, line and reason.
- * Polygons are fan-triangulated; the info struct says how many.
+ * .gz; gzip is recognized by its magic bytes, an unknown extension by the
+ * content). Every malformed input gets SCAF_ERR_PARSE with a message
+ * "FILE:LINE: reason" (index out of range naming the index and the vertex
+ * count, NaN/inf coordinate, truncated file, face with a repeated vertex or
+ * fewer than 3 corners, unknown PLY format or type, garbage token, no
+ * faces...); a file that cannot be opened or read gets SCAF_ERR_IO naming
+ * the path. Counts in OFF/PLY headers are checked against the file size
+ * before anything is allocated.
+ *
+ * Polygons are fan-triangulated (corners a0 ai ai+1); the info struct says
+ * how many. Coordinates equal what strtod gives for the same text.
+ * OBJ UV policy: the mesh gets UVs (UV, FT) when every face has texture
+ * indices; when only some faces have them, the UVs are dropped and
+ * info->faces_without_uv counts the faces without (a warning to print).
+ * Unreferenced vertices are kept (nv counts every `v`).
  */
 #ifndef SCAF_MESH_MESH_IO_H
 #define SCAF_MESH_MESH_IO_H
@@ -27,6 +39,12 @@ typedef struct mesh_read_info {
     int normals_ignored;        /* `vn` lines (OBJ) */
     int faces_without_uv;       /* OBJ faces lacking vt while others have it */
 } mesh_read_info;
+
+/* The warnings of a read as one line of text for people (no trailing
+ * newline; empty when there is nothing to say), e.g. "12 polygons with
+ * more than 3 corners fan-triangulated". Returns the number of warnings
+ * (normals are not a warning). buf may be NULL when size is 0. */
+int mesh_read_warnings(const mesh_read_info *info, char *buf, size_t size);
 
 /* Read a mesh file; the format comes from the extension (a trailing .gz is
  * decompressed). info may be NULL. On failure *m is left empty. */

@@ -243,7 +243,7 @@ scaf_status mesh_parse_obj(const char *data, size_t size, const char *name, mesh
         }
     }
     if (st == SCAF_OK && P.b.nf == 0)
-        st = mesh_parse_fail(err, name, line, "no faces (empty mesh)");
+        st = mesh_parse_fail(err, name, line > 0 ? line : 1, "no faces (empty mesh)");
     if (st == SCAF_OK && P.max_v > (long long)P.b.nv)
         st = mesh_parse_fail(err, name, P.max_v_line, "vertex index %lld out of range (the file has %zu vertices)",
                              P.max_v, P.b.nv);

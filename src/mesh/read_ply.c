@@ -306,8 +306,8 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
                     return mesh_parse_fail(err, name, line, "face indices must have an integer type");
                 pr.role = ROLE_INDICES;
             }
-            for (int k = 0; k < el->nprops; k++)
-                if (pr.role != ROLE_SKIP && el->props[k].role == pr.role)
+            for (int k = 0; pr.role != ROLE_SKIP && k < el->nprops; k++)
+                if (el->props[k].role == pr.role)
                     return mesh_parse_fail(err, name, line, "property declared twice");
             if (el->nprops == el->cap) {
                 int cap = el->cap ? 2 * el->cap : 8;
@@ -328,7 +328,7 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
         }
         p = next;
     }
-    return mesh_parse_fail(err, name, line, "truncated header (no end_header)");
+    return mesh_parse_fail(err, name, line > 0 ? line : 1, "truncated header (no end_header)");
 }
 
 /* Smallest number of bytes one item of el can take. */
@@ -414,6 +414,7 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
     for (int k = 0; k < h.nelems && !st; k++) {
         ply_elem *el = &h.elems[k];
         const char *what = el == ev ? "vertex" : el == ef ? "face" : el->name;
+        if (el->nprops == 0) continue; /* no data at all: never loop over its count */
         for (long long it = 0; it < el->count && !st; it++) {
             double x[3] = {0, 0, 0};
             for (int q = 0; q < el->nprops && !st; q++) {

@@ -7,6 +7,7 @@
  */
 #include "mesh/topology.h"
 
+#include <limits.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,8 +58,19 @@ static int count_duplicates(const mesh *m, scaf_error *err)
     int dup = 0, s = 0;
     for (int v = 0; v < nv; v++) {
         int t = start[v];
-        if (t - s > 1) {
+        if (t - s > 32) {
             qsort(keys + s, (size_t)(t - s), sizeof *keys, cmp_u64);
+            for (int i = s + 1; i < t; i++) dup += keys[i] == keys[i - 1];
+        } else if (t - s > 1) {
+            for (int i = s + 1; i < t; i++) {
+                uint64_t x = keys[i];
+                int j = i - 1;
+                while (j >= s && keys[j] > x) {
+                    keys[j + 1] = keys[j];
+                    j--;
+                }
+                keys[j + 1] = x;
+            }
             for (int i = s + 1; i < t; i++) dup += keys[i] == keys[i - 1];
         }
         s = t;
@@ -93,6 +105,8 @@ scaf_status mesh_topology_compute(const mesh *m, mesh_topology *t, scaf_error *e
 {
     memset(t, 0, sizeof *t);
     int nv = m->nv, nf = m->nf;
+    if (nf > INT_MAX / 3)
+        return err_set(err, SCAF_ERR_MESH, "%d faces: more than this build can index (%d)", nf, INT_MAX / 3);
     for (int i = 0; i < 3 * nf; i++)
         if (m->F[i] < 0 || m->F[i] >= nv)
             return err_set(err, SCAF_ERR_MESH, "face %d references vertex %d, but the mesh has %d vertices",

@@ -8,6 +8,7 @@
  */
 #include "mesh/uv_charts.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +25,8 @@ void mesh_charts_free(mesh_charts *c)
     free(c->loop_length);
     free(c->chart_loop_start);
     free(c->chart_loops);
+    free(c->chart_vertex_start);
+    free(c->chart_vertices);
     memset(c, 0, sizeof *c);
 }
 
@@ -66,6 +69,48 @@ scaf_status mesh_uv_chart_labels(const mesh *m, int *face_chart, int *ncharts, s
     return SCAF_OK;
 }
 
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+/* Distinct indices of each chart (CSR), ascending. */
+static scaf_status chart_vertex_lists(mesh_charts *c, const int *IF, int n, scaf_error *err)
+{
+    const tri_complex *cx = &c->cx;
+    int total = 0;
+    for (int g = 0; g < c->ncharts; g++) total += cx->group_vertices[g];
+    c->chart_vertex_start = malloc(((size_t)c->ncharts + 1) * sizeof(int));
+    c->chart_vertices = malloc(((size_t)total + 1) * sizeof(int));
+    int *stamp = malloc(((size_t)n + 1) * sizeof *stamp);
+    if (!c->chart_vertex_start || !c->chart_vertices || !stamp) {
+        free(stamp);
+        return err_nomem(err, "chart vertex lists");
+    }
+    for (int i = 0; i < n; i++) stamp[i] = -1;
+    int k = 0;
+    for (int g = 0; g < c->ncharts; g++) {
+        c->chart_vertex_start[g] = k;
+        for (int i = cx->group_face_start[g]; i < cx->group_face_start[g + 1]; i++) {
+            int f = cx->group_faces[i];
+            if (cx->edges.he_edge[3 * f] < 0) continue; /* invalid face */
+            for (int q = 0; q < 3; q++) {
+                int v = IF[3 * f + q];
+                if (stamp[v] == g) continue;
+                stamp[v] = g;
+                c->chart_vertices[k++] = v;
+            }
+        }
+        qsort(c->chart_vertices + c->chart_vertex_start[g], (size_t)(k - c->chart_vertex_start[g]), sizeof(int),
+              cmp_int);
+    }
+    c->chart_vertex_start[c->ncharts] = k;
+    free(stamp);
+    if (k != total) return err_set(err, SCAF_ERR_INTERNAL, "chart vertex lists: %d indices, expected %d", k, total);
+    return SCAF_OK;
+}
+
 /* qsort context-free: sort loop ids of one chart by decreasing length,
  * ties by id, using (length, id) pairs. */
 typedef struct loop_key {
@@ -84,6 +129,8 @@ scaf_status mesh_charts_compute(const mesh *m, mesh_charts *c, scaf_error *err)
 {
     memset(c, 0, sizeof *c);
     int nf = m->nf;
+    if (nf > INT_MAX / 3)
+        return err_set(err, SCAF_ERR_MESH, "%d faces: more than this build can index (%d)", nf, INT_MAX / 3);
     for (int i = 0; i < 3 * nf; i++)
         if (m->F[i] < 0 || m->F[i] >= m->nv)
             return err_set(err, SCAF_ERR_MESH, "face %d references vertex %d, but the mesh has %d vertices",
@@ -148,6 +195,9 @@ scaf_status mesh_charts_compute(const mesh *m, mesh_charts *c, scaf_error *err)
         for (int i = s; i < t; i++) c->chart_loops[i] = keys[i - s].id;
     }
     free(keys);
+    keys = NULL;
+    st = chart_vertex_lists(c, IF, n, err);
+    if (st) goto fail;
     return SCAF_OK;
 
 fail:
@@ -179,6 +229,18 @@ mesh_chart_kind mesh_chart_classify(const mesh_charts *c, int chart)
     for (int i = c->chart_loop_start[chart]; i < c->chart_loop_start[chart + 1]; i++)
         if (!cx->loop_ordered[c->chart_loops[i]]) return MESH_CHART_NON_MANIFOLD;
     return cx->group_loops[chart] == 1 ? MESH_CHART_DISK : MESH_CHART_DISK_WITH_HOLES;
+}
+
+int mesh_chart_loop(const mesh_charts *c, int chart, int i, const int **v, const int **vt, int *id)
+{
+    if (chart < 0 || chart >= c->ncharts || i < 0 || i >= c->chart_loop_start[chart + 1] - c->chart_loop_start[chart])
+        return 0;
+    int l = c->chart_loops[c->chart_loop_start[chart] + i];
+    int s = c->cx.loop_start[l];
+    if (v) *v = c->loop_v + s;
+    if (vt) *vt = c->loop_vt + s;
+    if (id) *id = l;
+    return c->cx.loop_start[l + 1] - s;
 }
 
 const char *mesh_chart_kind_name(mesh_chart_kind kind)

@@ -32,6 +32,9 @@ typedef struct mesh_charts {
     double *loop_length;   /* #loops 3D length of each loop */
     int *chart_loop_start; /* ncharts+1: loops of chart c are                    */
     int *chart_loops;      /*   chart_loops[chart_loop_start[c] .. [c+1]-1], longest first */
+    int *chart_vertex_start; /* ncharts+1: the distinct indices (vt, or vertices   */
+    int *chart_vertices;     /*   without UVs) used by chart c's valid faces, ascending:
+                                chart_vertices[chart_vertex_start[c] .. [c+1]-1] */
 } mesh_charts;
 
 /* What a chart is, topologically (in its own index space). */
@@ -63,6 +66,14 @@ mesh_chart_kind mesh_chart_classify(const mesh_charts *c, int chart);
  * disk with holes. Otherwise SCAF_ERR_MESH with a message naming the chart
  * and the reason (the offending edge / vertex, the genus, ...). */
 scaf_status mesh_chart_check(const mesh_charts *c, int chart, int allow_holes, scaf_error *err);
+
+/* Boundary loop i (0 <= i < number of loops of the chart, longest first)
+ * of chart `chart`: returns its length in vertices and points *v at its
+ * 3D vertex indices and *vt at its vt indices (all -1 without UVs), in
+ * loop order. Ordered loops (c->cx.loop_ordered[id]) run with the chart on
+ * their left; *id (may be NULL) receives the loop's global id. Returns 0
+ * when i is out of range. */
+int mesh_chart_loop(const mesh_charts *c, int chart, int i, const int **v, const int **vt, int *id);
 
 /* A short static English name of a kind ("disk", "closed", ...). */
 const char *mesh_chart_kind_name(mesh_chart_kind kind);

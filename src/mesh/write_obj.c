@@ -13,6 +13,7 @@
  * nothing is written) and SCAF_ERR_IO naming the path otherwise.
  */
 #include "mesh/mesh_io.h"
+#include "mesh/text_scan.h"
 
 #include <errno.h>
 #include <math.h>
@@ -28,8 +29,10 @@ static int format_double(char *buf, size_t size, double x)
     int n = 0;
     for (int prec = 15; prec <= 17; prec++) {
         n = snprintf(buf, size, "%.*g", prec, x);
-        double y = strtod(buf, NULL);
-        if (memcmp(&x, &y, sizeof x) == 0) break;
+        /* scan_double equals strtod (fast path when exact, strtod otherwise). */
+        const char *p = buf;
+        double y;
+        if (scan_double(&p, buf + n, &y) == SCAN_OK && memcmp(&x, &y, sizeof x) == 0) break;
     }
     return n;
 }

@@ -21,6 +21,7 @@ struct opt_chol {
     int n, nnz;          /* analyzed pattern */
     int *colptr, *rowidx;
     int factored;        /* L holds a valid numerical factor */
+    int block;           /* unknowns per vertex for compressed ordering */
     opt_chol_stats st;
 };
 
@@ -53,8 +54,57 @@ opt_chol *opt_chol_create(opt_ordering ordering, scaf_error *err)
     c->cm.supernodal = CHOLMOD_SUPERNODAL;
     c->cm.final_ll = 1; /* keep L L^T (not LDL^T) after a supernodal factorization */
     c->ordering = ordering;
+    c->block = 1;
     set_ordering(c, ordering);
     return c;
+}
+
+void opt_chol_set_block(opt_chol *c, int block) { c->block = block > 1 ? block : 1; }
+
+/* Fill-reducing permutation of A computed on its vertex graph: vertex J's
+ * neighbours are the row groups of its last scalar column (which holds
+ * every row of the block column for the interleaved layout). perm: n. */
+static int block_ordering(opt_chol *c, const opt_csc *A, int *perm)
+{
+    int b = c->block, nb = A->n / b;
+    int *cp = malloc(((size_t)nb + 1) * sizeof *cp);
+    int *ri = malloc(((size_t)A->nnz / b + (size_t)nb + 1) * sizeof *ri);
+    int *pv = malloc(((size_t)nb + 1) * sizeof *pv);
+    int ok = cp && ri && pv;
+    if (ok) {
+        int out = 0;
+        for (int J = 0; J < nb; J++) {
+            cp[J] = out;
+            int col = J * b + b - 1, prev = -1;
+            for (int k = A->colptr[col]; k < A->colptr[col + 1]; k++) {
+                int I = A->rowidx[k] / b;
+                if (I != prev) ri[out++] = I;
+                prev = I;
+            }
+        }
+        cp[nb] = out;
+        cholmod_sparse G;
+        memset(&G, 0, sizeof G);
+        G.nrow = G.ncol = (size_t)nb;
+        G.nzmax = (size_t)out;
+        G.p = cp;
+        G.i = ri;
+        G.stype = 1;
+        G.itype = CHOLMOD_INT;
+        G.xtype = CHOLMOD_PATTERN;
+        G.dtype = CHOLMOD_DOUBLE;
+        G.sorted = 1;
+        G.packed = 1;
+        ok = c->ordering == OPT_ORDER_METIS ? cholmod_metis(&G, NULL, 0, 1, pv, &c->cm)
+                                            : cholmod_amd(&G, NULL, 0, pv, &c->cm);
+        if (ok)
+            for (int k = 0; k < nb; k++)
+                for (int a = 0; a < b; a++) perm[k * b + a] = pv[k] * b + a;
+    }
+    free(cp);
+    free(ri);
+    free(pv);
+    return ok;
 }
 
 void opt_chol_destroy(opt_chol *c)
@@ -115,6 +165,8 @@ static int same_pattern(const opt_chol *c, const opt_csc *A)
            memcmp(c->rowidx, A->rowidx, (size_t)A->nnz * sizeof *A->rowidx) == 0;
 }
 
+int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A) { return same_pattern(c, A); }
+
 scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm,
                                    scaf_error *err)
 {
@@ -124,6 +176,16 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     c->factored = 0;
     c->n = c->nnz = 0;
     cholmod_sparse S = wrap(A);
+    int *own = NULL;
+    if (!perm && c->block > 1 && c->ordering != OPT_ORDER_CHOLMOD_DEFAULT && A->n % c->block == 0) {
+        own = malloc((size_t)A->n * sizeof *own);
+        if (!own) return err_nomem(err, "CHOLMOD ordering");
+        if (!block_ordering(c, A, own)) {
+            free(own);
+            return fail(c, "block ordering", err);
+        }
+        perm = own;
+    }
     if (perm) {
         /* A given permutation: use it as the only method. */
         int save_n = c->cm.nmethods, save_ord = c->cm.method[0].ordering;
@@ -135,6 +197,7 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     } else {
         c->L = cholmod_analyze(&S, &c->cm);
     }
+    free(own);
     if (!c->L) return fail(c, "analysis", err);
     int *cp = realloc(c->colptr, ((size_t)A->n + 1) * sizeof *cp);
     if (!cp) return err_nomem(err, "CHOLMOD pattern copy");
@@ -149,6 +212,17 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     c->st.analyses++;
     c->st.t_analyze += timer_now() - t0;
     return SCAF_OK;
+}
+
+scaf_status opt_chol_compute_ordering(opt_chol *c, const opt_csc *A, int *perm, scaf_error *err)
+{
+    if (A->n < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD: empty system (no free unknowns)");
+    if (c->block > 1 && A->n % c->block == 0 && c->ordering != OPT_ORDER_CHOLMOD_DEFAULT)
+        return block_ordering(c, A, perm) ? SCAF_OK : fail(c, "block ordering", err);
+    cholmod_sparse S = wrap(A);
+    int ok = c->ordering == OPT_ORDER_METIS ? cholmod_metis(&S, NULL, 0, 1, perm, &c->cm)
+                                            : cholmod_amd(&S, NULL, 0, perm, &c->cm);
+    return ok ? SCAF_OK : fail(c, "ordering", err);
 }
 
 scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)

@@ -44,6 +44,14 @@ opt_chol *opt_chol_create(opt_ordering ordering, scaf_error *err);
 /* Free; safe on NULL. */
 void opt_chol_destroy(opt_chol *c);
 
+/* Declare that unknowns come in interleaved groups of `block` (the d
+ * coordinates of a vertex: unknown k*block + a). New analyses then compute
+ * the AMD / METIS ordering on the compressed vertex graph (block^2 times
+ * fewer edges) and expand it, which is cheaper and orders each vertex's
+ * coordinates together. block = 1 (the default) orders scalars. Ignored
+ * for OPT_ORDER_CHOLMOD_DEFAULT and when n is not a multiple of block. */
+void opt_chol_set_block(opt_chol *c, int block);
+
 /* Factor A (upper CSC, symmetric positive definite): analysis only when the
  * pattern differs from the last analyzed one. */
 scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err);
@@ -52,6 +60,15 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err);
  * permutation perm (n entries), or the solver's ordering if perm is NULL. */
 scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm,
                                    scaf_error *err);
+
+/* Whether A has exactly the pattern of the last analysis (then
+ * opt_chol_factor will not analyse again). */
+int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A);
+
+/* Compute the solver's fill-reducing permutation of A (n entries, block-
+ * aware as set by opt_chol_set_block) without analysing: for building
+ * orderings of related systems (opt/ordering_reuse). */
+scaf_status opt_chol_compute_ordering(opt_chol *c, const opt_csc *A, int *perm, scaf_error *err);
 
 /* Solve A X = B for nrhs right-hand sides. B, X: n by nrhs, column-major
  * (column k at B + k*n); X may equal B. */

@@ -106,7 +106,9 @@ static scaf_status solve_laplace(int nv2, const double *V2, int nf2, const int *
     if (n > 0) {
         st = opt_csc_from_triplets(&A, n, nt, I, Jc, Val, err);
         if (st != SCAF_OK) goto done;
-        ch = opt_chol_create(OPT_ORDER_AMD, err);
+        /* CHOLMOD's default tries AMD and switches to METIS when the fill
+         * is high (large charts), which pays off for a one-off solve. */
+        ch = opt_chol_create(OPT_ORDER_CHOLMOD_DEFAULT, err);
         if (!ch) { st = err->code; goto done; }
         st = opt_chol_factor(ch, &A, err);
         if (st != SCAF_OK) goto done;

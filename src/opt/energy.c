@@ -158,6 +158,12 @@ double opt_density_grad(opt_energy e, int d, const double *J, double *G)
 
 void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T)
 {
+    opt_slim_proxy_capped(e, d, J, INFINITY, W, T);
+}
+
+double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap, double *W,
+                             double *T)
+{
     double U[9], V[9], s[3], w2[3], t[3];
     svd_signed(d, J, U, s, V);
     switch (e) {
@@ -190,6 +196,11 @@ void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T)
     default:
         for (int i = 0; i < d; i++) { t[i] = 1.0; w2[i] = 1.0; }
     }
+    double w2max = 0;
+    for (int i = 0; i < d; i++) {
+        if (w2[i] > w2max) w2max = w2[i];
+        if (w2[i] > w2_cap) w2[i] = w2_cap;
+    }
     for (int a = 0; a < d; a++)
         for (int b = 0; b < d; b++) {
             double wa = 0, ta = 0;
@@ -200,6 +211,7 @@ void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T)
             W[a * d + b] = wa;
             T[a * d + b] = ta;
         }
+    return w2max;
 }
 
 double opt_term_energy(const opt_term *t, const double *X)
@@ -211,6 +223,13 @@ double opt_term_energy(const opt_term *t, const double *X)
         acc += S->weight[s] * opt_density(t->energy, S->d, J);
     }
     return acc;
+}
+
+double opt_term_mean_energy(const opt_term *t, const double *X)
+{
+    double w = 0;
+    for (int s = 0; s < t->s->n; s++) w += t->s->weight[s];
+    return w > 0 ? opt_term_energy(t, X) / w : 0.0;
 }
 
 void opt_term_gradient(const opt_term *t, const double *X, double *g)

@@ -50,8 +50,23 @@ double opt_density_grad(opt_energy e, int d, const double *J, double *dEdJ);
  * ones would be negative, and the property then holds only approximately). */
 void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T);
 
+/* The same with each squared weight w_i^2 limited to w2_cap (INFINITY: no
+ * limit). Squared SLIM weights of symmetric Dirichlet grow like s^-3: a
+ * Tutte start with singular values of 1e-6 gives 1e18, and a system mixing
+ * such stiffness with O(1) entries is numerically indefinite for Cholesky
+ * (the soft part is lost to rounding). Capping keeps the proxy SPD and well
+ * enough conditioned, at the price of under-weighting the most compressed
+ * simplices. Returns the largest UNcapped squared weight. */
+double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap, double *W,
+                             double *T);
+
 /* sum_s weight_s * density(J_s) over a term at positions X (#X by d). */
 double opt_term_energy(const opt_term *t, const double *X);
+
+/* Weighted mean density: opt_term_energy / sum_s weight_s. For a chart
+ * built by opt_simplices_from_surface this is the reported energy E
+ * (4 at an isometry for symmetric Dirichlet). 0 for an empty term. */
+double opt_term_mean_energy(const opt_term *t, const double *X);
 
 /* g (#X by d) += gradient of opt_term_energy w.r.t. X. */
 void opt_term_gradient(const opt_term *t, const double *X, double *g);

@@ -11,6 +11,7 @@
  */
 #include "opt/proxy_block.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -40,6 +41,14 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
     opt_proxy_block_free(b);
     int d = S->d, nc = d + 1, P = (d + 1) * (d + 2) / 2;
     size_t ne = (size_t)S->n * P;
+    int top = -1;
+    for (size_t k = 0; k < (size_t)S->n * nc; k++) {
+        int v = dof[S->idx[k]];
+        if (v >= nfree)
+            return err_set(err, SCAF_ERR_INTERNAL, "simplex %zu: dof %d outside [0, %d)", k / nc, v, nfree);
+        if (v > top) top = v;
+    }
+    nfree = top + 1;
     b->d = d;
     b->ns = S->n;
     b->nfree = nfree;
@@ -58,12 +67,6 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
         for (int i = 0; i < nc; i++)
             for (int j = i; j < nc; j++) {
                 int di = dof[ix[i]], dj = dof[ix[j]];
-                if (di >= nfree || dj >= nfree) {
-                    free(ent); free(fill);
-                    opt_proxy_block_free(b);
-                    return err_set(err, SCAF_ERR_INTERNAL, "simplex %d: dof %d outside [0, %d)", s,
-                                   di > dj ? di : dj, nfree);
-                }
                 if (di < 0 || dj < 0) continue;
                 b->vcolptr[(di > dj ? di : dj) + 1]++;
             }
@@ -211,13 +214,20 @@ static void scatter(opt_proxy_block *b, const opt_simplices *S, int s, const int
 void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
                           double *rhs)
 {
+    opt_proxy_block_fill_capped(b, t, dof, X, rhs, INFINITY);
+}
+
+double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const int *dof,
+                                   const double *X, double *rhs, double w2_cap)
+{
     const opt_simplices *S = t->s;
     int d = S->d, nc = d + 1;
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
-    double J[9], W[9], T[9], M[9], MT[9], lin[12];
+    double J[9], W[9], T[9], M[9], MT[9], lin[12], w2max = 0;
     for (int s = 0; s < S->n; s++) {
         opt_jacobian(S, s, X, J);
-        opt_slim_proxy(t->energy, d, J, W, T);
+        double w2 = opt_slim_proxy_capped(t->energy, d, J, w2_cap, W, T);
+        if (w2 > w2max) w2max = w2;
         for (int a = 0; a < d; a++)
             for (int c = 0; c < d; c++) {
                 double acc = 0;
@@ -239,6 +249,7 @@ void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,
             }
         scatter(b, S, s, dof, X, M, lin, rhs);
     }
+    return w2max;
 }
 
 void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, const int *dof,

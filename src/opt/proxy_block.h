@@ -26,7 +26,9 @@
 typedef struct opt_proxy_block {
     int d;         /* dimension of the simplices */
     int ns;        /* number of simplices the pattern was built for */
-    int nfree;     /* number of free vertices (the system has nfree*d unknowns) */
+    int nfree;     /* 1 + the largest dof its simplices use: the block's
+                      matrix is nfree*d square (a leading part of the
+                      whole system when other blocks use higher dofs) */
     int *vcolptr;  /* nfree+1: vertex-level upper pattern, columns by dof */
     int *vrowidx;  /* vertex-level rows (dofs), ascending, diagonal last */
     int *map;      /* ns by (d+1)(d+2)/2: vertex-level entry of each local
@@ -39,7 +41,10 @@ typedef struct opt_proxy_block {
 void opt_proxy_block_free(opt_proxy_block *b);
 
 /* (Re)build the pattern for the simplices S under the numbering dof (one
- * entry per vertex of X: a dof in [0, nfree) or -1). Values are zeroed. */
+ * entry per vertex of X: a dof in [0, nfree) or -1). Values are zeroed.
+ * Number the chart's free vertices first (dofs 0..m-1) and the scaffold's
+ * after them: the chart block's pattern then never depends on the
+ * scaffold, whose vertex count changes every iteration. */
 scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, const int *dof,
                                     int nfree, scaf_error *err);
 
@@ -49,6 +54,12 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
  * t->s must be the simplex set the pattern was built for. */
 void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
                           double *rhs);
+
+/* The same with squared SLIM weights capped at w2_cap (see
+ * opt_slim_proxy_capped). Returns the largest uncapped squared weight, so
+ * the caller knows whether the cap changed anything. */
+double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const int *dof,
+                                   const double *X, double *rhs, double w2_cap);
 
 /* Fill with a fixed quadratic: the same with W = I and T = 0 for every
  * simplex, i.e. the Dirichlet (cotangent Laplacian) system of the rest

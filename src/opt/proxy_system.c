@@ -38,27 +38,30 @@ static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *con
     int nfree = sys->nfree, d = sys->d;
     release_union(sys);
     size_t cap = 0;
-    for (int k = 0; k < nb; k++) cap += (size_t)bl[k]->vcolptr[nfree];
+    for (int k = 0; k < nb; k++) cap += (size_t)bl[k]->vcolptr[bl[k]->nfree];
     sys->vcolptr = malloc(((size_t)nfree + 1) * sizeof *sys->vcolptr);
     sys->vrowidx = malloc((cap + 1) * sizeof *sys->vrowidx);
     if (!sys->vcolptr || !sys->vrowidx) return err_nomem(err, "proxy system union pattern");
     for (int k = 0; k < nb; k++) {
-        sys->emap[k] = malloc(((size_t)bl[k]->vcolptr[nfree] + 1) * sizeof *sys->emap[k]);
+        sys->emap[k] = malloc(((size_t)bl[k]->vcolptr[bl[k]->nfree] + 1) * sizeof *sys->emap[k]);
         if (!sys->emap[k]) return err_nomem(err, "proxy system union map");
     }
     int out = 0, cur[OPT_PROXY_MAX_BLOCKS];
     for (int c = 0; c < nfree; c++) {
         sys->vcolptr[c] = out;
-        for (int k = 0; k < nb; k++) cur[k] = bl[k]->vcolptr[c];
+        int end[OPT_PROXY_MAX_BLOCKS];
+        for (int k = 0; k < nb; k++) {
+            int has = c < bl[k]->nfree;
+            cur[k] = has ? bl[k]->vcolptr[c] : 0;
+            end[k] = has ? bl[k]->vcolptr[c + 1] : 0;
+        }
         for (;;) {
             int r = INT_MAX;
             for (int k = 0; k < nb; k++)
-                if (cur[k] < bl[k]->vcolptr[c + 1] && bl[k]->vrowidx[cur[k]] < r)
-                    r = bl[k]->vrowidx[cur[k]];
+                if (cur[k] < end[k] && bl[k]->vrowidx[cur[k]] < r) r = bl[k]->vrowidx[cur[k]];
             if (r == INT_MAX) break;
             for (int k = 0; k < nb; k++)
-                if (cur[k] < bl[k]->vcolptr[c + 1] && bl[k]->vrowidx[cur[k]] == r)
-                    sys->emap[k][cur[k]++] = out;
+                if (cur[k] < end[k] && bl[k]->vrowidx[cur[k]] == r) sys->emap[k][cur[k]++] = out;
             sys->vrowidx[out++] = r;
         }
     }
@@ -102,12 +105,14 @@ scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *c
     if (nb < 1 || nb > OPT_PROXY_MAX_BLOCKS)
         return err_set(err, SCAF_ERR_USAGE, "proxy system: %d blocks (1..%d allowed)", nb,
                        OPT_PROXY_MAX_BLOCKS);
-    for (int k = 1; k < nb; k++)
-        if (bl[k]->d != bl[0]->d || bl[k]->nfree != bl[0]->nfree)
-            return err_set(err, SCAF_ERR_USAGE,
-                           "proxy system: block %d has d=%d nfree=%d, block 0 d=%d nfree=%d", k,
-                           bl[k]->d, bl[k]->nfree, bl[0]->d, bl[0]->nfree);
-    int changed = nb != sys->nblocks || bl[0]->d != sys->d || bl[0]->nfree != sys->nfree;
+    int nfree = 0;
+    for (int k = 0; k < nb; k++) {
+        if (bl[k]->d != bl[0]->d)
+            return err_set(err, SCAF_ERR_USAGE, "proxy system: block %d has d=%d, block 0 d=%d", k,
+                           bl[k]->d, bl[0]->d);
+        if (bl[k]->nfree > nfree) nfree = bl[k]->nfree;
+    }
+    int changed = nb != sys->nblocks || bl[0]->d != sys->d || nfree != sys->nfree;
     for (int k = 0; k < nb && !changed; k++)
         changed = bl[k] != sys->blk[k] || bl[k]->version != sys->seen[k];
     if (nb == 1) {
@@ -120,7 +125,7 @@ scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *c
         sys->owns = 0;
     } else if (changed) {
         sys->d = bl[0]->d;
-        sys->nfree = bl[0]->nfree;
+        sys->nfree = nfree;
         scaf_status st = build_union(sys, bl, nb, err);
         if (st != SCAF_OK) {
             release_union(sys);
@@ -130,17 +135,17 @@ scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *c
         sys->version++;
     }
     sys->d = bl[0]->d;
-    sys->nfree = bl[0]->nfree;
+    sys->nfree = nfree;
     sys->nblocks = nb;
     for (int k = 0; k < nb; k++) { sys->blk[k] = bl[k]; sys->seen[k] = bl[k]->version; }
     if (nb == 1) return SCAF_OK;
     /* Sum values. */
-    int d = sys->d, nfree = sys->nfree;
+    int d = sys->d;
     opt_csc *A = &sys->A;
     memset(A->val, 0, (size_t)A->nnz * sizeof *A->val);
     for (int k = 0; k < nb; k++) {
         const opt_proxy_block *b = bl[k];
-        for (int c = 0; c < nfree; c++)
+        for (int c = 0; c < b->nfree; c++)
             for (int e = b->vcolptr[c]; e < b->vcolptr[c + 1]; e++) {
                 int u = sys->emap[k][e];
                 int kb = e - b->vcolptr[c], ku = u - sys->vcolptr[c];

@@ -19,7 +19,7 @@
 #define OPT_PROXY_MAX_BLOCKS 8
 
 typedef struct opt_proxy_system {
-    int d, nfree;
+    int d, nfree;      /* nfree: max over blocks; A is nfree*d square */
     int nblocks;
     int *vcolptr, *vrowidx;                 /* union vertex-level pattern */
     int *emap[OPT_PROXY_MAX_BLOCKS];        /* block entry -> union entry */
@@ -33,8 +33,10 @@ typedef struct opt_proxy_system {
 /* Free everything; safe on a zeroed system. */
 void opt_proxy_system_free(opt_proxy_system *sys);
 
-/* Sum blocks[0..nblocks) (same d and nfree, nblocks <= OPT_PROXY_MAX_BLOCKS)
- * into sys->A. Blocks must stay alive and unmoved while sys->A is used. */
+/* Sum blocks[0..nblocks) (same d, nblocks <= OPT_PROXY_MAX_BLOCKS) into
+ * sys->A, of dimension max(block nfree) * d (a block with a smaller nfree
+ * covers the leading unknowns). Blocks must stay alive and unmoved while
+ * sys->A is used. */
 scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *const *blocks,
                                  int nblocks, scaf_error *err);
 

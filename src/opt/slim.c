@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "base/timer.h"
+#include "opt/ordering_reuse.h"
 
 struct opt_slim {
     opt_slim_options o;
@@ -18,6 +19,11 @@ struct opt_slim {
     opt_proxy_system sys;
     opt_chol *chol;
     double *rhs, *sol, *dir;
+    int block_set;   /* solver told the vertex block size */
+    int *lead_perm;  /* ordering of term 0's system, reused across patterns */
+    int lead_n;
+    unsigned lead_version;    /* term 0 block version lead_perm was made for */
+    int cap_level;            /* SLIM weight cap level to start from */
     size_t cap_n, cap_x;
 };
 
@@ -26,6 +32,9 @@ void opt_slim_options_default(opt_slim_options *o)
     o->ordering = OPT_ORDER_AMD;
     opt_ls_options_default(&o->ls);
     o->regularization = 0.0;
+    o->block_ordering = 1;
+    o->reuse_chart_ordering = 1;
+    o->chart_ordering = OPT_ORDER_METIS;
 }
 
 opt_slim *opt_slim_create(const opt_slim_options *o, scaf_error *err)
@@ -44,6 +53,7 @@ opt_slim *opt_slim_create(const opt_slim_options *o, scaf_error *err)
         free(sl);
         return NULL;
     }
+    sl->block_set = 0;
     return sl;
 }
 
@@ -56,6 +66,7 @@ void opt_slim_destroy(opt_slim *sl)
     free(sl->rhs);
     free(sl->sol);
     free(sl->dir);
+    free(sl->lead_perm);
     free(sl);
 }
 
@@ -74,6 +85,34 @@ static scaf_status grow(double **p, size_t n, scaf_error *err)
     if (!q) return err_nomem(err, "SLIM buffers");
     *p = q;
     return SCAF_OK;
+}
+
+/* New summed pattern with several terms: extend term 0's ordering (made
+ * once per term-0 pattern) to the whole system and analyse with it. */
+static scaf_status analyze_with_chart_ordering(opt_slim *sl, int d, scaf_error *err)
+{
+    const opt_proxy_block *b0 = &sl->blk[0];
+    scaf_status s;
+    if (b0->A.n < 1) return SCAF_OK; /* nothing to order: let the solver do it */
+    if (!sl->lead_perm || sl->lead_n != b0->A.n || sl->lead_version != b0->version) {
+        int *p = realloc(sl->lead_perm, (size_t)b0->A.n * sizeof *p);
+        if (!p) return err_nomem(err, "chart ordering");
+        sl->lead_perm = p;
+        opt_chol *oc = opt_chol_create(sl->o.chart_ordering, err);
+        if (!oc) return err ? err->code : SCAF_ERR_NOMEM;
+        opt_chol_set_block(oc, sl->o.block_ordering ? d : 1);
+        s = opt_chol_compute_ordering(oc, &b0->A, sl->lead_perm, err);
+        opt_chol_destroy(oc);
+        if (s != SCAF_OK) return s;
+        sl->lead_n = b0->A.n;
+        sl->lead_version = b0->version;
+    }
+    int *perm = malloc((size_t)sl->sys.A.n * sizeof *perm);
+    if (!perm) return err_nomem(err, "system ordering");
+    s = opt_ordering_extend(&sl->sys.A, d, b0->nfree, sl->lead_perm, perm, err);
+    if (s == SCAF_OK) s = opt_chol_analyze_given(sl->chol, &sl->sys.A, perm, err);
+    free(perm);
+    return s;
 }
 
 scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
@@ -108,41 +147,71 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
     for (int k = 0; k < nterms; k++) {
         opt_proxy_block *b = &sl->blk[k];
         int stale = !b->A.colptr || sl->blk_of[k] != terms[k].s || b->ns != terms[k].s->n ||
-                    b->nfree != nfree || b->d != d || (term_changed && term_changed[k]);
+                    b->d != d || (term_changed && term_changed[k]);
         if (stale) {
             s = opt_proxy_block_pattern(b, terms[k].s, dof, nfree, err);
             if (s != SCAF_OK) return s;
             sl->blk_of[k] = terms[k].s;
+            st->blocks_rebuilt++;
         }
     }
-    double t1 = timer_now();
-    st->t_pattern = t1 - t0;
-    /* Values. */
-    memset(sl->rhs, 0, n * sizeof *sl->rhs);
-    for (int k = 0; k < nterms; k++) opt_proxy_block_fill(&sl->blk[k], &terms[k], dof, X, sl->rhs);
+    st->t_pattern = timer_now() - t0;
+    /* Values, factorization; on a numerically indefinite system (extreme
+     * SLIM weights) retry with the squared weights capped, tighter each
+     * time. The level that worked is kept while it is binding. */
+    static const double caps[] = {INFINITY, 1e12, 1e9, 1e6, 1e4};
+    const int ncaps = (int)(sizeof caps / sizeof caps[0]);
     const opt_proxy_block *bl[OPT_PROXY_MAX_BLOCKS];
     for (int k = 0; k < nterms; k++) bl[k] = &sl->blk[k];
-    double t2 = timer_now();
-    s = opt_proxy_system_sum(&sl->sys, bl, nterms, err);
-    if (s != SCAF_OK) return s;
-    double t3 = timer_now();
-    if (sl->o.regularization > 0) {
-        opt_csc *A = &sl->sys.A;
-        for (int c = 0; c < A->n; c++) {
-            int e = A->colptr[c + 1] - 1;
-            if (e >= A->colptr[c] && A->rowidx[e] == c) A->val[e] += sl->o.regularization;
-        }
+    if (sl->o.block_ordering && !sl->block_set) {
+        opt_chol_set_block(sl->chol, d); /* order the vertex graph: d unknowns per vertex */
+        sl->block_set = 1;
     }
-    st->t_assemble = (t2 - t1) + (t3 - t2);
-    /* Factor and solve. */
     opt_chol_stats c0 = opt_chol_get_stats(sl->chol);
-    s = opt_chol_factor(sl->chol, &sl->sys.A, err);
-    if (s != SCAF_OK) return s;
+    double t_extend = 0, w2max = 0;
+    int level = sl->cap_level < ncaps ? sl->cap_level : 0;
+    for (;;) {
+        double ta = timer_now();
+        memset(sl->rhs, 0, n * sizeof *sl->rhs);
+        w2max = 0;
+        for (int k = 0; k < nterms; k++) {
+            double w = opt_proxy_block_fill_capped(&sl->blk[k], &terms[k], dof, X, sl->rhs, caps[level]);
+            if (w > w2max) w2max = w;
+        }
+        s = opt_proxy_system_sum(&sl->sys, bl, nterms, err);
+        if (s != SCAF_OK) return s;
+        if (sl->sys.nfree != nfree)
+            return err_set(err, SCAF_ERR_USAGE,
+                           "SLIM: %d free vertices but the simplices use only %d (a free vertex is "
+                           "in no simplex: fix it or drop it)", nfree, sl->sys.nfree);
+        if (sl->o.regularization > 0) {
+            opt_csc *A = &sl->sys.A;
+            for (int c = 0; c < A->n; c++) {
+                int e = A->colptr[c + 1] - 1;
+                if (e >= A->colptr[c] && A->rowidx[e] == c) A->val[e] += sl->o.regularization;
+            }
+        }
+        st->t_assemble += timer_now() - ta;
+        if (sl->o.reuse_chart_ordering && !opt_chol_pattern_matches(sl->chol, &sl->sys.A)) {
+            double te = timer_now();
+            s = analyze_with_chart_ordering(sl, d, err);
+            if (s != SCAF_OK) return s;
+            t_extend += timer_now() - te;
+        }
+        s = opt_chol_factor(sl->chol, &sl->sys.A, err);
+        if (s == SCAF_OK) break;
+        if (s != SCAF_ERR_NUMERIC || level + 1 >= ncaps) return s;
+        level++;
+        st->cap_retries++;
+    }
+    st->weight_cap = caps[level];
+    st->max_weight2 = w2max;
+    sl->cap_level = w2max > caps[level] ? level : 0;
     s = opt_chol_solve(sl->chol, 1, sl->rhs, sl->sol, err);
     if (s != SCAF_OK) return s;
     opt_chol_stats c1 = opt_chol_get_stats(sl->chol);
     st->analyzed = c1.analyses > c0.analyses;
-    st->t_analyze = c1.t_analyze - c0.t_analyze;
+    st->t_analyze = t_extend > 0 ? t_extend : c1.t_analyze - c0.t_analyze;
     st->t_factor = c1.t_factor - c0.t_factor;
     st->t_solve = c1.t_solve - c0.t_solve;
     /* Direction and line search. */

@@ -14,9 +14,37 @@
  * solver between calls. Pass term_changed[k] != 0 when term k's simplices
  * (connectivity) or the dof numbering of their vertices changed since the
  * last call — the scaffold every iteration; the chart's block is then
- * reused as is. Errors: those of the parts (SCAF_ERR_NUMERIC when the
+ * reused as is. When the proxy is numerically indefinite (squared SLIM
+ * weights grow like s^-3 for a very compressed simplex), the factorization
+ * is retried with the weights capped (1e12, 1e9, 1e6, 1e4), and the level
+ * that worked is kept while it is binding. Errors: those of the parts (SCAF_ERR_NUMERIC when the
  * system is not positive definite or the state is invalid, SCAF_ERR_NOMEM,
  * SCAF_ERR_USAGE); on error X is unchanged.
+ *
+ * Sketch of a SCAF loop on top of it (2D, one chart):
+ *
+ *   opt_simplices chart;                 // once: rest frames, weight = 3D area
+ *   opt_simplices_from_surface(&chart, nv, V, nf, F, err);
+ *   opt_embed_chart(nv, V, nf, F, &loops, OPT_EMBED_HARMONIC, UV, NULL, err);
+ *   opt_slim *sl = opt_slim_create(NULL, err);
+ *   for (it = 0; it < max_iter; it++) {
+ *       // X = [chart UV (nv rows) | scaffold-only vertices]; dof: chart
+ *       // vertices 0..nv-1 first, scaffold after, box corners -1 (fixed).
+ *       build scaffold triangles S_idx over X (kernel's CDT);
+ *       opt_simplices scaf;
+ *       opt_simplices_from_current(&scaf, 2, nX, X, ns, S_idx, eps, err);
+ *       double lambda = opt_term_energy(&chart_term, X) / (100.0 * scaf.n);
+ *       for (s...) scaf.weight[s] = lambda;
+ *       opt_term terms[2] = {{&chart, energy}, {&scaf, OPT_ENERGY_SYMMETRIC_DIRICHLET}};
+ *       int changed[2] = {0, 1};
+ *       opt_slim_step(sl, terms, 2, changed, nX, dof, nfree, X, &st, err);
+ *       E = opt_term_mean_energy(&terms[0], X);  // the reported energy
+ *       opt_simplices_free(&scaf);
+ *   }
+ *
+ * (opt_term_energy uses the chart weights = 3D areas, so lambda above
+ * follows the paper's E_M / (100 |S|) with E_M the area-weighted sum; use
+ * the mean instead if E_M is meant normalized.)
  */
 #ifndef SCAF_OPT_SLIM_H
 #define SCAF_OPT_SLIM_H
@@ -29,6 +57,13 @@ typedef struct opt_slim_options {
     opt_ordering ordering;  /* fill-reducing ordering for new patterns (AMD) */
     opt_ls_options ls;      /* line search (opt_ls_options_default) */
     double regularization;  /* added to the diagonal of the proxy (0) */
+    int block_ordering;     /* order the vertex graph, not scalars (1) */
+    int reuse_chart_ordering; /* order term 0 (the chart) once with
+                               chart_ordering and extend it to the other
+                               terms at each new pattern (opt/ordering_reuse)
+                               instead of ordering the whole system from
+                               scratch with `ordering` (1) */
+    opt_ordering chart_ordering; /* ordering computed once for term 0 (METIS) */
 } opt_slim_options;
 
 typedef struct opt_slim_stats {
@@ -39,6 +74,10 @@ typedef struct opt_slim_stats {
     double t_solve;      /* triangular solves */
     double t_line_search;
     int analyzed;        /* 1 if this iteration needed a new analysis */
+    int blocks_rebuilt;  /* terms whose pattern was rebuilt this iteration */
+    int cap_retries;     /* factorizations redone with tighter weight caps */
+    double weight_cap;   /* cap on squared SLIM weights used (INFINITY: none) */
+    double max_weight2;  /* largest uncapped squared SLIM weight */
     opt_ls_result ls;    /* step, energies before/after, backtracks */
 } opt_slim_stats;
 

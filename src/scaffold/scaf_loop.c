@@ -1,23 +1,26 @@
 /* scaffold/scaf_loop: the SCAF iteration (see scaf_loop.h).
  *
- * The numerics are opt's: the chart term (rest frames of the 3D triangles,
- * weight = 3D area) is built once; each iteration builds the scaffold
- * (scaffold/scaffold_build), its term (rest = current shape with the eps
- * guard, weight = lambda), and hands both to opt_slim_step, which keeps the
- * chart's proxy pattern, assembles, factors with CHOLMOD, solves and runs
- * the flip-free Armijo line search with exact orientation checks over
- * mesh AND scaffold. The step is assembled here from opt's pieces (proxy
- * blocks, their sum, the CHOLMOD solver, the line search) rather than with
- * opt_slim_step, because the scaffold's proxy differs from its energy:
- * a scaffold triangle starts each iteration at its rest shape (J = R), where
- * the SLIM weight of symmetric Dirichlet tends to w = 2 (proxy curvature
- * w^2 = 4); like the reference implementation (libigl's scaf) we use w = 1
- * there, a 4x softer scaffold in the proxy only, which lets the charts move
- * further per iteration (camel_b: E after 30 iterations 4.1240 instead of
- * 4.1253). Guarded (degenerate) scaffold triangles keep the true weights.
- * The line search always uses the true energy. Vertex array X = the mesh vertices, then the scaffold
+ * The numerics are opt's pieces: the chart term (rest frames of the 3D
+ * triangles, weight = 3D area) is built once; each iteration builds the
+ * scaffold (scaffold/scaffold_build) and its term (rest = current shape
+ * with the eps guard, weight = lambda), fills the SLIM proxy blocks
+ * (opt/proxy_block, the chart's element map kept), sums them
+ * (opt/proxy_system), orders and factors with CHOLMOD (opt/cholmod_solver,
+ * see order_and_factor for the ordering policy), solves, and runs opt's
+ * flip-free Armijo line search with exact orientation checks over mesh AND
+ * scaffold. Vertex array X = the mesh vertices, then the scaffold
  * vertices; box vertices are fixed (dof -1), so mesh vertices keep dofs
  * 0..nv-1 in every iteration.
+ *
+ * The step is assembled here rather than with opt_slim_step because the
+ * scaffold's proxy differs from its energy: a scaffold triangle starts each
+ * iteration at its rest shape (J = R), where the SLIM weight of symmetric
+ * Dirichlet tends to w = 2 (proxy curvature w^2 = 4); like the reference
+ * implementation (libigl's scaf) we use w = 1 there, a 4x softer scaffold
+ * in the proxy only, which lets the charts move further per iteration
+ * (camel_b: E after 30 iterations about 4.124 instead of 4.125-4.126).
+ * Guarded (degenerate) scaffold triangles keep the true weights. The line
+ * search always uses the true energy.
  */
 #include "scaffold/scaf_loop.h"
 
@@ -150,6 +153,7 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
         scaf_loop_free(L);
         return err && err->code ? err->code : SCAF_ERR_NOMEM;
     }
+    opt_chol_set_block(L->chol, 2);
     return SCAF_OK;
 }
 
@@ -222,6 +226,7 @@ static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, sca
         double t0 = timer_now();
         opt_chol *m = opt_chol_create(OPT_ORDER_METIS, err);
         if (!m) return err && err->code ? err->code : SCAF_ERR_NOMEM;
+        opt_chol_set_block(m, 2); /* order vertices, not scalars */
         st = opt_chol_analyze_given(m, &L->sys.A, NULL, err);
         const int *p = opt_chol_permutation(m);
         L->mesh_perm = malloc(nm * sizeof *L->mesh_perm);
@@ -354,6 +359,16 @@ static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, cons
     opt_ls_options_default(&lo);
     lo.safety = L->opt.step_fraction;
     st = opt_line_search(terms, 2, 2, nall, X, L->dir, &lo, ls, err);
+    if (st == SCAF_ERR_NUMERIC) {
+        /* The energy is not finite in floating point at the current map (a
+         * triangle exactly positive but too thin for its determinant to
+         * round positive) or the direction is not finite: no step is safe
+         * to judge. X is unchanged and still bijective: report a zero step
+         * (the run then stops) instead of failing. */
+        err_clear(err);
+        memset(ls, 0, sizeof *ls);
+        st = SCAF_OK;
+    }
 
     tm->line_search = timer_now() - t4;
     return st;

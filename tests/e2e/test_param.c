@@ -68,7 +68,7 @@ static void cli_param_on_generated_sample(void **state)
     test_tmp_path("e2e_param.svg", svg, sizeof svg);
     remove(out);
     assert_int_equal(run("%s gen hemisphere --size 6 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(run("%s param %s -o %s --iterations 4 --quiet --report %s --svg %s --svg-scaffold", SCAF_BINARY,
+    assert_int_equal(run("%s param %s -o %s --iterations 4 --quiet --verify --report %s --svg %s --svg-scaffold", SCAF_BINARY,
                          in, out, rep, svg),
                      0);
     assert_int_equal(run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
@@ -224,15 +224,10 @@ static void seam_meshes_by_charts(void **state)
                            "seams/spot.obj", "seams/human_neutral.obj"};
     int ran = 0;
     for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
-        char why[1024] = "";
-        double e = run_shared(files[i], 4, SCAF_INIT_TUTTE, why, sizeof why);
-        if (why[0]) {
-            /* A chart that is not a disk (e.g. two fans of one vt: a pinch
-             * point) is refused with the chart named, never crashed on. */
-            print_message("%s: rejected: %s\n", files[i], why);
-            assert_non_null(strstr(why, "chart "));
-        }
-        ran += !isnan(e) || why[0];
+        /* Every seam mesh of the data set has charts that are disks once
+         * pinch points (one vt shared by two fans) are split: all must run. */
+        double e = run_shared(files[i], 4, SCAF_INIT_TUTTE, NULL, 0);
+        ran += !isnan(e);
     }
     if (!ran) skip();
 }

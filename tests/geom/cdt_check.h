@@ -37,12 +37,12 @@ typedef struct cdt_builder {
     double chart_area; /* signed area enclosed by chart loops (holes negative) */
 } cdt_builder;
 
-static void cb_init(cdt_builder *b)
+static inline void cb_init(cdt_builder *b)
 {
     memset(b, 0, sizeof *b);
 }
 
-static void cb_free(cdt_builder *b)
+static inline void cb_free(cdt_builder *b)
 {
     free(b->pts);
     free(b->seg);
@@ -51,7 +51,7 @@ static void cb_free(cdt_builder *b)
     free(b->seeds);
 }
 
-static int cb_point(cdt_builder *b, double x, double y)
+static inline int cb_point(cdt_builder *b, double x, double y)
 {
     if (b->np == b->capp) {
         b->capp = b->capp ? 2 * b->capp : 256;
@@ -62,7 +62,7 @@ static int cb_point(cdt_builder *b, double x, double y)
     return b->np++;
 }
 
-static void cb_segment(cdt_builder *b, int u, int w, int splittable, int hole)
+static inline void cb_segment(cdt_builder *b, int u, int w, int splittable, int hole)
 {
     if (b->ns == b->caps) {
         b->caps = b->caps ? 2 * b->caps : 256;
@@ -79,7 +79,7 @@ static void cb_segment(cdt_builder *b, int u, int w, int splittable, int hole)
 
 /* A closed chart loop through xy (n points). The chart lies on the left:
  * counter-clockwise for an outer boundary, clockwise around a chart hole. */
-static void cb_loop(cdt_builder *b, const double *xy, int n)
+static inline void cb_loop(cdt_builder *b, const double *xy, int n)
 {
     int first = b->np;
     if (b->nloops < 4096) {
@@ -100,7 +100,7 @@ static void cb_loop(cdt_builder *b, const double *xy, int n)
 
 /* The scaffold box: `factor` times the bounding box of the points so far
  * (about its center), splittable, nothing marked as hole. */
-static void cb_box(cdt_builder *b, double factor, double *box_area)
+static inline void cb_box(cdt_builder *b, double factor, double *box_area)
 {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (int i = 0; i < b->np; i++)
@@ -120,7 +120,7 @@ static void cb_box(cdt_builder *b, double factor, double *box_area)
         *box_area = (2 * h) * (2 * h);
 }
 
-static cdt_input cb_input(const cdt_builder *b)
+static inline cdt_input cb_input(const cdt_builder *b)
 {
     cdt_input in;
     memset(&in, 0, sizeof in);
@@ -136,7 +136,7 @@ static cdt_input cb_input(const cdt_builder *b)
 }
 
 /* A star-like wiggly polygon: n vertices on r(t) = r0 (1 + amp sin(k t)). */
-static void wiggly(double *xy, int n, double cx, double cy, double r0, double amp, int k, int cw)
+static inline void wiggly(double *xy, int n, double cx, double cy, double r0, double amp, int k, int cw)
 {
     for (int i = 0; i < n; i++) {
         double t = 2 * 3.14159265358979323846 * i / n * (cw ? -1 : 1);
@@ -158,13 +158,13 @@ typedef struct cdt_check_stats {
     int euler;               /* V - E + F */
 } cdt_check_stats;
 
-static int cmp_u64(const void *a, const void *b)
+static inline int cmp_u64(const void *a, const void *b)
 {
     uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
     return (x > y) - (x < y);
 }
 
-static uint64_t ekey(int a, int b)
+static inline uint64_t ekey(int a, int b)
 {
     if (a > b) {
         int t = a;
@@ -174,7 +174,7 @@ static uint64_t ekey(int a, int b)
     return ((uint64_t)(uint32_t)a << 32) | (uint32_t)b;
 }
 
-static int has_key(const uint64_t *k, int n, uint64_t x)
+static inline int has_key(const uint64_t *k, int n, uint64_t x)
 {
     return bsearch(&x, k, (size_t)n, sizeof *k, cmp_u64) != NULL;
 }
@@ -187,7 +187,7 @@ static int has_key(const uint64_t *k, int n, uint64_t x)
     } while (0)
 
 /* winding number of q with respect to the chart loops of b */
-static int chart_winding(const cdt_builder *b, const double *q)
+static inline int chart_winding(const cdt_builder *b, const double *q)
 {
     int wn = 0;
     for (int l = 0; l < b->nloops; l++) {
@@ -204,7 +204,7 @@ static int chart_winding(const cdt_builder *b, const double *q)
     return wn;
 }
 
-static double tri_min_angle(const double *a, const double *b, const double *c)
+static inline double tri_min_angle(const double *a, const double *b, const double *c)
 {
     const double *p[3] = {a, b, c};
     double best = 180;
@@ -221,7 +221,7 @@ static double tri_min_angle(const double *a, const double *b, const double *c)
 /* Check out against the builder's input. expect_chi: expected Euler
  * characteristic (or INT32_MIN to skip); check_winding: test centroids
  * against the chart loops. */
-static cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options *opt,
+static inline cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options *opt,
                                  const cdt_output *out, int expect_chi, int check_winding)
 {
     cdt_check_stats s0;
@@ -333,6 +333,12 @@ static cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options *opt,
                     const double *q = out->points + 2 * out->subsegments[2 * i + 1];
                     len += hypot(q[0] - p[0], q[1] - p[1]);
                 }
+            int dup = 0; /* a segment given twice is kept (and reported) once */
+            for (int s2 = 0; s2 < b->ns; s2++)
+                if (s2 != s && ekey(b->seg[2 * s2], b->seg[2 * s2 + 1]) == ekey(u, w))
+                    dup = 1;
+            if (dup && len == 0)
+                continue;
             if (fabs(len - want) > 1e-9 * want)
                 CDT_FAIL("splittable segment %d: chain length %.17g, segment %.17g", s, len, want);
         }

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "geom/bijectivity.h"
+#include "geom/predicates.h"
 
 static bij_report run(int nuv, const double *UV, int nf, const int *F)
 {
@@ -246,6 +247,45 @@ static void chart_inside_a_triangle(void **state)
     assert_true(r.bijective);
 }
 
+static void overlap_at_a_pinch_point(void **state)
+{
+    (void)state;
+    /* a hexagon fan (vertices 0..5 around center 6) and a triangle over it
+     * made of hexagon corners 0, 2, 4: its edges are chords, so it shares
+     * no edge with the fan, its vertices are the fan's, no boundary
+     * segments meet except at shared indices; only the corners at the
+     * pinch points 0, 2, 4 show the overlap */
+    double UV[14];
+    for (int i = 0; i < 6; i++) {
+        UV[2 * i] = 4.0 * cos(i * 3.14159265358979 / 3);
+        UV[2 * i + 1] = 4.0 * sin(i * 3.14159265358979 / 3);
+    }
+    UV[12] = UV[13] = 0;
+    int F[21];
+    for (int i = 0; i < 6; i++) F[3 * i] = 6, F[3 * i + 1] = i, F[3 * i + 2] = (i + 1) % 6;
+    F[18] = 0, F[19] = 2, F[20] = 4;
+    bij_report r = run(7, UV, 7, F);
+    assert_int_equal(r.positive, 7);
+    assert_int_equal(r.folded_edges + r.nonmanifold_edges, 0);
+    assert_int_equal(r.boundary_crossings + r.boundary_touchings + r.boundary_foldbacks, 0);
+    assert_int_equal(r.nested_loops, 0);
+    assert_int_equal(r.corner_overlaps, 3);
+    assert_false(r.bijective);
+    /* three triangles around point 0 and a fourth one joined only there:
+     * inside the fan's third triangle, then in the empty quadrant */
+    double V[] = {0, 0, 4, 0, 0, 4, -4, 0, 0, -4, -1, -1, -3, -1};
+    int G[] = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 6, 5};
+    r = run(7, V, 4, G);
+    assert_int_equal(r.positive, 4);
+    assert_int_equal(r.corner_overlaps, 1);
+    assert_false(r.bijective);
+    V[10] = 3, V[11] = -1, V[12] = 1, V[13] = -3;
+    r = run(7, V, 4, G);
+    assert_int_equal(r.positive, 4);
+    assert_int_equal(r.corner_overlaps, 0);
+    assert_true(r.bijective);
+}
+
 static void mirrored_chart_among_good_ones(void **state)
 {
     (void)state;
@@ -461,6 +501,149 @@ static void pair_counts_match_brute_force(void **state)
     assert_true(seen_fold > 0);
 }
 
+/* ---- the verdict against a brute-force oracle ---- */
+
+/* Closed ccw triangle abc contains p. */
+static int in_closed(const double *a, const double *b, const double *c, const double *p)
+{
+    return orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0;
+}
+
+static int sgn(double x) { return (x > 0) - (x < 0); }
+
+/* Do two ccw triangles meet anywhere beyond the vertices and edges they
+ * share by index? Decided pair by pair from the definition. */
+static int conflict(const double *UV, const int *t1, const int *t2)
+{
+    int in2[3], in1[3], shared = 0;
+    for (int i = 0; i < 3; i++) {
+        in2[i] = t1[i] == t2[0] || t1[i] == t2[1] || t1[i] == t2[2];
+        in1[i] = t2[i] == t1[0] || t2[i] == t1[1] || t2[i] == t1[2];
+        shared += in2[i];
+    }
+    if (shared == 3) return 1;
+    if (shared == 2) {
+        int a = -1, b = -1, c = -1, d = -1;
+        for (int i = 0; i < 3; i++) {
+            if (in2[i]) {
+                if (a < 0) a = t1[i];
+                else b = t1[i];
+            } else {
+                c = t1[i];
+            }
+            if (!in1[i]) d = t2[i];
+        }
+        return sgn(orient2d(UV + 2 * a, UV + 2 * b, UV + 2 * c)) ==
+               sgn(orient2d(UV + 2 * a, UV + 2 * b, UV + 2 * d));
+    }
+    for (int i = 0; i < 3; i++) {
+        if (!in2[i] && in_closed(UV + 2 * t2[0], UV + 2 * t2[1], UV + 2 * t2[2], UV + 2 * t1[i]))
+            return 1;
+        if (!in1[i] && in_closed(UV + 2 * t1[0], UV + 2 * t1[1], UV + 2 * t1[2], UV + 2 * t2[i]))
+            return 1;
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            int p1 = t1[i], p2 = t1[(i + 1) % 3], q1 = t2[j], q2 = t2[(j + 1) % 3];
+            int inc1 = in2[i] || in2[(i + 1) % 3], inc2 = in1[j] || in1[(j + 1) % 3];
+            if (shared == 1 && inc1 && inc2) {
+                /* both edges leave the shared point: overlap only if they
+                 * run along the same ray */
+                int v = in2[i] ? p1 : p2, p = v == p1 ? p2 : p1, q = v == q1 ? q2 : q1;
+                const double *V = UV + 2 * v, *P = UV + 2 * p, *Q = UV + 2 * q;
+                if (orient2d(V, P, Q) == 0 && sgn(P[0] - V[0]) == sgn(Q[0] - V[0]) &&
+                    sgn(P[1] - V[1]) == sgn(Q[1] - V[1]))
+                    return 1;
+                continue;
+            }
+            if (bij_segments_meet(UV + 2 * p1, UV + 2 * p2, UV + 2 * q1, UV + 2 * q2)) return 1;
+        }
+    return 0;
+}
+
+static int oracle_bijective(const double *UV, int nf, const int *F)
+{
+    for (int t = 0; t < nf; t++)
+        if (!(orient2d(UV + 2 * F[3 * t], UV + 2 * F[3 * t + 1], UV + 2 * F[3 * t + 2]) > 0))
+            return 0;
+    for (int t = 0; t < nf; t++)
+        for (int u = t + 1; u < nf; u++)
+            if (conflict(UV, F + 3 * t, F + 3 * u)) return 0;
+    return 1;
+}
+
+/* Random small layouts on an integer lattice: patches of grid cells (some
+ * with a hole), vertices sometimes moved by a lattice step or half a step,
+ * coincident vertices of different patches sometimes welded into one UV
+ * index. Exact contacts, nestings, pinch points, shared edges, folds and
+ * flips all occur; the checker's verdict must equal the oracle's. */
+static void verdict_matches_brute_force_oracle(void **state)
+{
+    (void)state;
+    uint64_t s = 2024;
+    int agree_yes = 0, agree_no = 0;
+    for (int round = 0; round < 3000; round++) {
+        double UV[2 * 200];
+        int F[3 * 200], nuv = 0, nf = 0;
+        int npatch = 1 + (int)(rnd(&s) % 4);
+        for (int k = 0; k < npatch; k++) {
+            int ring = rnd(&s) % 4 == 0;
+            int w = ring ? 3 : 1 + (int)(rnd(&s) % 3), h = ring ? 3 : 1 + (int)(rnd(&s) % 3);
+            int ox = (int)(rnd(&s) % 7), oy = (int)(rnd(&s) % 7);
+            int base = nuv;
+            for (int j = 0; j <= h; j++)
+                for (int i = 0; i <= w; i++) {
+                    UV[2 * nuv] = ox + i;
+                    UV[2 * nuv + 1] = oy + j;
+                    nuv++;
+                }
+            for (int j = 0; j < h; j++)
+                for (int i = 0; i < w; i++) {
+                    if (ring && i == 1 && j == 1) continue;
+                    int a = base + j * (w + 1) + i, b = a + 1, c = a + w + 2, d = a + w + 1;
+                    int *t = F + 3 * nf;
+                    if (rnd(&s) & 1)
+                        t[0] = a, t[1] = b, t[2] = c, t[3] = a, t[4] = c, t[5] = d;
+                    else
+                        t[0] = a, t[1] = b, t[2] = d, t[3] = b, t[4] = c, t[5] = d;
+                    nf += 2;
+                }
+        }
+        if (rnd(&s) % 3 == 0) { /* move one vertex */
+            int v = (int)(rnd(&s) % (uint64_t)nuv);
+            double step = (rnd(&s) & 1) ? 1.0 : 0.5;
+            UV[2 * v] += step * (double)((int)(rnd(&s) % 3) - 1);
+            UV[2 * v + 1] += step * (double)((int)(rnd(&s) % 3) - 1);
+        }
+        if (rnd(&s) % 3 == 0) { /* weld coincident vertices of the layout */
+            for (int t = 0; t < 3 * nf; t++)
+                for (int v = 0; v < F[t]; v++)
+                    if (UV[2 * v] == UV[2 * F[t]] && UV[2 * v + 1] == UV[2 * F[t] + 1]) {
+                        F[t] = v;
+                        break;
+                    }
+        }
+        bij_report r;
+        assert_int_equal(bij_check(nuv, UV, nf, F, NULL, NULL, &r, NULL), SCAF_OK);
+        int want = oracle_bijective(UV, nf, F);
+        if (r.bijective != want) {
+            print_error("round %d: checker says %d, oracle %d (nf %d)\n", round, r.bijective,
+                        want, nf);
+            for (int t = 0; t < nf; t++)
+                print_error("  t%d: %d(%g,%g) %d(%g,%g) %d(%g,%g)\n", t, F[3 * t],
+                            UV[2 * F[3 * t]], UV[2 * F[3 * t] + 1], F[3 * t + 1],
+                            UV[2 * F[3 * t + 1]], UV[2 * F[3 * t + 1] + 1], F[3 * t + 2],
+                            UV[2 * F[3 * t + 2]], UV[2 * F[3 * t + 2] + 1]);
+        }
+        assert_int_equal(r.bijective, want);
+        if (want) agree_yes++;
+        else agree_no++;
+    }
+    print_message("oracle: %d bijective, %d not\n", agree_yes, agree_no);
+    assert_true(agree_yes > 300);
+    assert_true(agree_no > 300);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -476,10 +659,12 @@ int main(void)
         cmocka_unit_test(folded_and_nonmanifold_edges),
         cmocka_unit_test(chart_nested_in_a_hole),
         cmocka_unit_test(chart_inside_a_triangle),
+        cmocka_unit_test(overlap_at_a_pinch_point),
         cmocka_unit_test(mirrored_chart_among_good_ones),
         cmocka_unit_test(bad_input_is_an_error),
         cmocka_unit_test(large_grid_layouts),
         cmocka_unit_test(pair_counts_match_brute_force),
+        cmocka_unit_test(verdict_matches_brute_force_oracle),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -226,6 +226,112 @@ static void deterministic(void **state)
     cb_free(&b);
 }
 
+static void lattice_rectangles_degenerate(void **state)
+{
+    (void)state;
+    /* rectangles on an integer lattice: many exactly collinear and
+       cocircular points, segments along shared lines, a box on the lattice */
+    cdt_builder b;
+    cb_init(&b);
+    int k = 0;
+    for (int i = 0; i < 6; i++)
+        for (int j = 0; j < 6; j++) {
+            double x = 3 * i, y = 3 * j, w = 1 + (i + j) % 2;
+            double xy[] = {x, y, x + w, y, x + w, y + 1, x + w, y + 2, x, y + 2, x, y + 1};
+            cb_loop(&b, xy, 6);
+            k++;
+        }
+    int q0 = cb_point(&b, -6, -6), q1 = cb_point(&b, 24, -6), q2 = cb_point(&b, 24, 24),
+        q3 = cb_point(&b, -6, 24);
+    cb_segment(&b, q0, q1, 1, 0);
+    cb_segment(&b, q1, q2, 1, 0);
+    cb_segment(&b, q2, q3, 1, 0);
+    cb_segment(&b, q3, q0, 1, 0);
+    for (int pass = 0; pass < 2; pass++) {
+        cdt_options opt = cdt_default_options();
+        opt.min_angle_deg = pass ? 25 : 0;
+        cdt_output out = run_ok(&b, &opt);
+        assert_checked(&b, &opt, &out, 1 - k);
+        cdt_output_free(&out);
+    }
+    cb_free(&b);
+}
+
+static void steiner_cap_is_respected(void **state)
+{
+    (void)state;
+    cdt_builder b;
+    cb_init(&b);
+    double xy[2 * 200];
+    wiggly(xy, 200, 0, 0, 1.0, 0.3, 9, 0);
+    cb_loop(&b, xy, 200);
+    cb_box(&b, 3.0, NULL);
+    cdt_options opt = cdt_default_options();
+    opt.max_area = 1e-4;
+    opt.max_steiner = 50;
+    cdt_output out = run_ok(&b, &opt);
+    assert_true(out.capped);
+    assert_true(out.nsteiner <= 50);
+    cdt_check_stats st = cdt_check(&b, NULL, &out, 0, 1);
+    if (!st.ok)
+        fail_msg("%s", st.why);
+    cdt_output_free(&out);
+    cb_free(&b);
+}
+
+static void isolated_points_become_vertices(void **state)
+{
+    (void)state;
+    cdt_builder b;
+    cb_init(&b);
+    double sq[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    cb_loop(&b, sq, 4);
+    cb_box(&b, 3.0, NULL);
+    int extra = cb_point(&b, 1.5, 0.5);
+    int extra2 = cb_point(&b, -0.75, 1.25);
+    cdt_options opt = cdt_default_options();
+    cdt_output out = run_ok(&b, &opt);
+    assert_checked(&b, &opt, &out, 0);
+    int seen = 0;
+    for (int i = 0; i < 3 * out.ntriangles; i++)
+        seen |= (out.triangles[i] == extra) | ((out.triangles[i] == extra2) << 1);
+    assert_int_equal(seen, 3);
+    cdt_output_free(&out);
+    cb_free(&b);
+}
+
+static void empty_and_trivial_inputs(void **state)
+{
+    (void)state;
+    cdt_input in;
+    memset(&in, 0, sizeof in);
+    cdt_output out;
+    scaf_error err;
+    assert_int_equal(cdt_triangulate(&in, NULL, &out, &err), SCAF_OK);
+    assert_int_equal(out.ntriangles, 0);
+    cdt_output_free(&out);
+    /* points without segments: nothing is enclosed */
+    double pts[] = {0, 0, 1, 0, 0, 1};
+    in.npoints = 3;
+    in.points = pts;
+    assert_int_equal(cdt_triangulate(&in, NULL, &out, &err), SCAF_OK);
+    assert_int_equal(out.ntriangles, 0);
+    assert_int_equal(out.npoints, 3);
+    cdt_output_free(&out);
+    /* a single triangle enclosed by unsplittable segments */
+    int segs[] = {0, 1, 1, 2, 2, 0};
+    in.nsegments = 3;
+    in.segments = segs;
+    assert_int_equal(cdt_triangulate(&in, NULL, &out, &err), SCAF_OK);
+    assert_int_equal(out.ntriangles, 1);
+    assert_int_equal(out.nsubsegments, 3);
+    cdt_output_free(&out);
+    /* bad options */
+    cdt_options opt = cdt_default_options();
+    opt.min_angle_deg = 70;
+    assert_int_equal(cdt_triangulate(&in, &opt, &out, &err), SCAF_ERR_USAGE);
+}
+
 /* ------------------------------------------------------------ invalid input */
 
 static void expect_error(cdt_builder *b, const char *needle)
@@ -333,6 +439,10 @@ int main(void)
         cmocka_unit_test(chart_edges_are_never_split),
         cmocka_unit_test(small_input_angle_terminates),
         cmocka_unit_test(deterministic),
+        cmocka_unit_test(lattice_rectangles_degenerate),
+        cmocka_unit_test(steiner_cap_is_respected),
+        cmocka_unit_test(isolated_points_become_vertices),
+        cmocka_unit_test(empty_and_trivial_inputs),
         cmocka_unit_test(crossing_segments_fail),
         cmocka_unit_test(point_on_segment_fails),
         cmocka_unit_test(duplicate_points_fail),

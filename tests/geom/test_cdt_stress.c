@@ -150,6 +150,56 @@ static void boundaries_1e12_apart(void **state)
     cb_free(&b);
 }
 
+static void interleaved_combs_1e12_apart(void **state)
+{
+    (void)state;
+    /* two comb-shaped charts whose teeth interleave with 1e-12 gaps on both
+       sides of every tooth; the facing tooth sides carry different numbers
+       of vertices, so the gaps hold only slivers */
+    cdt_builder b;
+    cb_init(&b);
+    int teeth = 12;
+    double g = 1e-12, w = 1.0; /* tooth width; gap g between neighbouring teeth */
+    double *xy = malloc(4096 * sizeof(double));
+    int n = 0;
+    /* lower comb: base [0, L] x [-1, 0], teeth [2i(w+g), 2i(w+g)+w] x [0, 5] */
+    double L = 2 * teeth * (w + g);
+    xy[n++] = 0, xy[n++] = -1;
+    xy[n++] = L, xy[n++] = -1;
+    for (int i = teeth - 1; i >= 0; i--) {
+        double x0 = 2 * i * (w + g), x1 = x0 + w;
+        if (i == teeth - 1)
+            xy[n++] = L, xy[n++] = 0;
+        xy[n++] = x1, xy[n++] = 0;
+        for (int k = 1; k <= 7; k++) /* right side going up */
+            xy[n++] = x1, xy[n++] = 5.0 * k / 7;
+        for (int k = 5; k >= 1; k--) /* left side coming down */
+            xy[n++] = x0, xy[n++] = 5.0 * k / 5;
+        xy[n++] = x0, xy[n++] = 0;
+    }
+    /* the loop is CCW: bottom edge left to right, then back along the teeth */
+    cb_loop(&b, xy, n / 2);
+    /* upper comb: top [0, L] x [6, 7], teeth hanging into the gaps */
+    n = 0;
+    xy[n++] = L, xy[n++] = 7;
+    xy[n++] = 0, xy[n++] = 7;
+    for (int i = 0; i < teeth; i++) {
+        double x0 = 2 * i * (w + g) + w + g, x1 = x0 + w;
+        xy[n++] = x0, xy[n++] = 6;
+        for (int k = 1; k <= 3; k++) /* left side going down, facing the lower tooth */
+            xy[n++] = x0, xy[n++] = 6 - 5.0 * k / 3;
+        for (int k = 9; k >= 1; k--)
+            xy[n++] = x1, xy[n++] = 6 - 5.0 * k / 9;
+        xy[n++] = x1, xy[n++] = 6;
+    }
+    cb_loop(&b, xy, n / 2);
+    free(xy);
+    cb_box(&b, 3.0, NULL);
+    cdt_options opt = cdt_default_options();
+    run_and_check(&b, &opt, -1, 0);
+    cb_free(&b);
+}
+
 static void nearly_collinear_boundary(void **state)
 {
     (void)state;
@@ -240,8 +290,8 @@ static void charts_nested_in_holes_deeply(void **state)
 static void tiny_and_huge_coordinates(void **state)
 {
     (void)state;
-    double scales[] = {1e-9, 1e9};
-    for (int s = 0; s < 2; s++) {
+    double scales[] = {1e-9, 1e9, 1e-150, 1e120};
+    for (int s = 0; s < 4; s++) {
         cdt_builder b;
         cb_init(&b);
         double xy[2 * 100];
@@ -254,16 +304,104 @@ static void tiny_and_huge_coordinates(void **state)
     }
 }
 
+/* Do segments (a,b) and (c,d) meet anywhere but at a shared endpoint, or
+ * does a point lie in a segment's interior? (brute force, exact) */
+static int on_open_segment(const double *a, const double *b, const double *p)
+{
+    if (orient2d(a, b, p) != 0)
+        return 0;
+    if ((p[0] == a[0] && p[1] == a[1]) || (p[0] == b[0] && p[1] == b[1]))
+        return 0;
+    return fmin(a[0], b[0]) <= p[0] && p[0] <= fmax(a[0], b[0]) && fmin(a[1], b[1]) <= p[1] &&
+           p[1] <= fmax(a[1], b[1]);
+}
+
+static int invalid_soup(const cdt_builder *b)
+{
+    for (int s = 0; s < b->ns; s++) {
+        const double *a = b->pts + 2 * b->seg[2 * s], *c = b->pts + 2 * b->seg[2 * s + 1];
+        for (int i = 0; i < b->np; i++)
+            if (on_open_segment(a, c, b->pts + 2 * i))
+                return 1;
+        for (int t = s + 1; t < b->ns; t++) {
+            const double *p = b->pts + 2 * b->seg[2 * t], *q = b->pts + 2 * b->seg[2 * t + 1];
+            double o1 = orient2d(a, c, p), o2 = orient2d(a, c, q);
+            double o3 = orient2d(p, q, a), o4 = orient2d(p, q, c);
+            if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) &&
+                ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+                return 1;
+        }
+    }
+    return 0;
+}
+
+static void random_segment_soup_matches_brute_force(void **state)
+{
+    (void)state;
+    int nvalid = 0, ninvalid = 0;
+    for (unsigned trial = 1; trial <= 300; trial++) {
+        rnd_state = trial * 7919u;
+        cdt_builder b;
+        cb_init(&b);
+        unsigned char used[64] = {0};
+        int np = 6 + (int)(rnd() * 10);
+        while (b.np < np) {
+            int g = (int)(rnd() * 36);
+            if (used[g])
+                continue;
+            used[g] = 1;
+            cb_point(&b, g % 6 + (trial % 2 ? 1e-13 * (g % 3) : 0), g / 6);
+        }
+        int ns = 1 + (int)(rnd() * 6);
+        for (int i = 0; i < ns; i++) {
+            int u = (int)(rnd() * np), w = (int)(rnd() * np);
+            if (u != w) /* some interior segments splittable, at any slope */
+                cb_segment(&b, u, w, trial % 4 == 0 && rnd() < 0.5, 0);
+        }
+        int expect_error = invalid_soup(&b);
+        int q0 = cb_point(&b, -10, -10), q1 = cb_point(&b, 20, -10), q2 = cb_point(&b, 20, 20),
+            q3 = cb_point(&b, -10, 20);
+        cb_segment(&b, q0, q1, 1, 0);
+        cb_segment(&b, q1, q2, 1, 0);
+        cb_segment(&b, q2, q3, 1, 0);
+        cb_segment(&b, q3, q0, 1, 0);
+        cdt_input in = cb_input(&b);
+        cdt_output out;
+        scaf_error err;
+        cdt_options opt = cdt_default_options();
+        opt.min_angle_deg = trial % 3 ? 20 : 0;
+        scaf_status st = cdt_triangulate(&in, &opt, &out, &err);
+        if (expect_error) {
+            if (st != SCAF_ERR_MESH)
+                fail_msg("trial %u: invalid input accepted (status %d)", trial, (int)st);
+            ninvalid++;
+        } else {
+            if (st != SCAF_OK)
+                fail_msg("trial %u: valid input refused: %s", trial, err.message);
+            cdt_check_stats cs = cdt_check(&b, NULL, &out, 1, 0);
+            if (!cs.ok)
+                fail_msg("trial %u: %s", trial, cs.why);
+            cdt_output_free(&out);
+            nvalid++;
+        }
+        cb_free(&b);
+    }
+    print_message("    %d valid, %d invalid soups\n", nvalid, ninvalid);
+    assert_true(nvalid > 30 && ninvalid > 30);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(hundreds_of_charts_on_a_grid),
         cmocka_unit_test(random_charts_many_seeds),
         cmocka_unit_test(boundaries_1e12_apart),
+        cmocka_unit_test(interleaved_combs_1e12_apart),
         cmocka_unit_test(nearly_collinear_boundary),
         cmocka_unit_test(long_thin_gap),
         cmocka_unit_test(charts_nested_in_holes_deeply),
         cmocka_unit_test(tiny_and_huge_coordinates),
+        cmocka_unit_test(random_segment_soup_matches_brute_force),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

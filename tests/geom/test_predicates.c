@@ -38,7 +38,7 @@
 
 static long scaled(long n)
 {
-    long pct = SANITIZED ? 5 : 100;
+    long pct = SANITIZED ? 4 : 100;
     const char *s = getenv("SCAF_PRED_CASES_SCALE");
     if (s && *s) pct = atol(s);
     long r = n * pct / 100;
@@ -332,7 +332,7 @@ static void orient2d_matches_gmp(void **state)
     ref R;
     ref_init(&R);
     tally t = {0, 0, 0};
-    long n = scaled(200000);
+    long n = scaled(120000);
     for (long i = 0; i < n; i++) {
         double a[2], b[2], c[2];
         /* random */
@@ -390,7 +390,7 @@ static void orient3d_matches_gmp(void **state)
     ref R;
     ref_init(&R);
     tally t = {0, 0, 0};
-    long n = scaled(70000);
+    long n = scaled(40000);
     for (long i = 0; i < n; i++) {
         double a[3], b[3], c[3], d[3];
         for (int j = 0; j < 3; j++) a[j] = sym(&r), b[j] = sym(&r), c[j] = sym(&r), d[j] = sym(&r);
@@ -467,7 +467,7 @@ static void incircle_matches_gmp(void **state)
     ref R;
     ref_init(&R);
     tally t = {0, 0, 0};
-    long n = scaled(70000);
+    long n = scaled(40000);
     for (long i = 0; i < n; i++) {
         double a[2], b[2], c[2], d[2];
         a[0] = sym(&r), a[1] = sym(&r), b[0] = sym(&r), b[1] = sym(&r);
@@ -521,7 +521,7 @@ static void insphere_matches_gmp(void **state)
     ref R;
     ref_init(&R);
     tally t = {0, 0, 0};
-    long n = scaled(30000);
+    long n = scaled(15000);
     for (long i = 0; i < n; i++) {
         double a[3], b[3], c[3], d[3], e[3];
         double *pts[5] = {a, b, c, d, e};

@@ -62,7 +62,8 @@ static int for_each_file(const char *rel, int must_parse)
     int count = 0;
     struct dirent *ent;
     while ((ent = readdir(d)) != NULL) {
-        if (ent->d_name[0] == '.') continue;
+        size_t len = strlen(ent->d_name);
+        if (ent->d_name[0] == '.' || (len > 3 && strcmp(ent->d_name + len - 3, ".md") == 0)) continue;
         snprintf(path, sizeof path, "%s/%s", dir, ent->d_name);
         scaf_status s = check_input(path);
         if (must_parse && s != SCAF_OK) print_error("seed %s does not parse\n", path);

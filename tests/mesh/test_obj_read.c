@@ -74,6 +74,9 @@ static void polygons_are_fanned(void **state)
              &info);
     assert_int_equal(m.nf, 3 + 2 + 1);
     assert_int_equal(info.polygons_triangulated, 2);
+    char w[256];
+    assert_int_equal(mesh_read_warnings(&info, w, sizeof w), 1);
+    assert_string_equal(w, "2 polygons with more than 3 corners fan-triangulated");
     const int F[18] = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 1, 3, 0, 3, 4, 0, 1, 2};
     assert_memory_equal(m.F, F, sizeof F);
     mesh_free(&m);
@@ -197,6 +200,9 @@ static void mixed_uv_faces_drop_uvs(void **state)
     assert_int_equal(m.nuv, 0);
     assert_null(m.FT);
     assert_int_equal(info.faces_without_uv, 2);
+    char w[256];
+    assert_int_equal(mesh_read_warnings(&info, w, sizeof w), 1);
+    assert_non_null(strstr(w, "2 faces without texture indices"));
     mesh_free(&m);
     /* vt lines that no face uses: no UVs, no warning. */
     parse_ok("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1 2 3\n", MESH_FORMAT_OBJ, &m, &info);

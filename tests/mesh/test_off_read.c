@@ -1,4 +1,6 @@
 /* Tests for the OFF reader: variants, comments, CRLF, polygons, colours. */
+#include <zlib.h>
+
 #include "mesh_test_util.h"
 
 static void plain_off(void **state)
@@ -98,6 +100,26 @@ static void format_from_extension_and_content(void **state)
     mesh_free(&m);
 }
 
+static void gzip_off(void **state)
+{
+    (void)state;
+    const char *text = "OFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n";
+    char path[512];
+    test_tmp_path("off_read.off.gz", path, sizeof path);
+    gzFile g = gzopen(path, "wb");
+    assert_non_null(g);
+    assert_int_equal(gzwrite(g, text, (unsigned)strlen(text)), (int)strlen(text));
+    assert_int_equal(gzclose(g), Z_OK);
+    mesh m;
+    scaf_error e;
+    mesh_read_info info;
+    assert_int_equal(mesh_read(path, &m, &info, &e), SCAF_OK);
+    assert_int_equal(info.format, MESH_FORMAT_OFF);
+    assert_int_equal(m.nf, 1);
+    assert_true(m.V[3] == 1.0);
+    mesh_free(&m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -107,6 +129,7 @@ int main(void)
         cmocka_unit_test(variants_and_extra_values),
         cmocka_unit_test(polygons_fanned_with_face_colour),
         cmocka_unit_test(format_from_extension_and_content),
+        cmocka_unit_test(gzip_off),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

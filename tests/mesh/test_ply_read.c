@@ -196,6 +196,19 @@ static void ascii_with_crlf_and_skips(void **state)
     mesh_free(&m);
 }
 
+/* An element with a huge count but no properties holds no data: skipped at once. */
+static void element_without_properties(void **state)
+{
+    (void)state;
+    mesh m;
+    parse_ok("ply\nformat ascii 1.0\nelement nothing 4000000000000000000\nelement vertex 3\nproperty float x\n"
+             "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+             "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+             MESH_FORMAT_PLY, &m, NULL);
+    assert_int_equal(m.nf, 1);
+    mesh_free(&m);
+}
+
 static void gzip_binary_file(void **state)
 {
     (void)state;
@@ -224,6 +237,7 @@ int main(void)
         cmocka_unit_test(binary_little_and_big_endian),
         cmocka_unit_test(every_numeric_type_for_xyz_and_indices),
         cmocka_unit_test(ascii_with_crlf_and_skips),
+        cmocka_unit_test(element_without_properties),
         cmocka_unit_test(gzip_binary_file),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

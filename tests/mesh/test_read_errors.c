@@ -55,7 +55,7 @@ static void obj_garbage_and_empty(void **state)
     parse_fails(TRI "hello world\nf 1 2 3\n", MESH_FORMAT_OBJ, 4, "unknown statement 'hello'");
     parse_fails(TRI "\x01\x02\x03\n", MESH_FORMAT_OBJ, 4, "unknown statement");
     parse_fails(TRI, MESH_FORMAT_OBJ, 3, "no faces");
-    parse_fails("", MESH_FORMAT_OBJ, 0, "no faces");
+    parse_fails("", MESH_FORMAT_OBJ, 1, "no faces");
     parse_fails("# nothing\n\n", MESH_FORMAT_OBJ, 2, "no faces");
     /* Embedded NUL bytes are garbage, not the end of the text. */
     static const char nul[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n\0\n";
@@ -101,7 +101,7 @@ static void off_errors(void **state)
 static void ply_header_errors(void **state)
 {
     (void)state;
-    parse_fails("", MESH_FORMAT_PLY, 0, "truncated header");
+    parse_fails("", MESH_FORMAT_PLY, 1, "truncated header");
     parse_fails("plx\n", MESH_FORMAT_PLY, 1, "not a PLY file");
     parse_fails("ply\nformat ascii 1.0\nelement vertex 3\n", MESH_FORMAT_PLY, 3, "no end_header");
     parse_fails("ply\nformat binary_middle_endian 1.0\nend_header\n", MESH_FORMAT_PLY, 2,

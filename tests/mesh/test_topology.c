@@ -7,6 +7,7 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "mesh/degenerate.h"
 #include "mesh/edges.h"
 #include "mesh/topology.h"
 #include "mesh/uv_charts.h"
@@ -357,6 +358,11 @@ static void seams(void **state)
     }
     assert_int_equal(c.cx.face_group[0], 0);
     assert_int_equal(c.cx.face_group[1], 1);
+    /* chart vertex lists: vt 0,1,2 and vt 3,4,5 */
+    assert_int_equal(c.chart_vertex_start[0], 0);
+    assert_int_equal(c.chart_vertex_start[1], 3);
+    assert_int_equal(c.chart_vertex_start[2], 6);
+    for (int i = 0; i < 6; i++) assert_int_equal(c.chart_vertices[i], i);
     mesh_charts_free(&c);
     mesh_free(&m);
 }
@@ -377,6 +383,41 @@ static void uv_pinch_fails_check(void **state)
     assert_int_equal(c.ncharts, 2);
     assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_MESH);
     assert_non_null(strstr(e.message, "vt 0"));
+    mesh_charts_free(&c);
+    mesh_free(&m);
+}
+
+static void faces_without_uv(void **state)
+{
+    (void)state;
+    /* face 1 has no vt (-1, as the OBJ reader marks it): it is a chart of
+     * its own, a seam borders it, and its chart fails the check */
+    const int F[] = {0, 1, 2, 0, 2, 3};
+    const double UV[] = {0, 0, 1, 0, 1, 1};
+    const int FT[] = {0, 1, 2, -1, -1, -1};
+    mesh m;
+    make(&m, 4, SQUARE_V, 2, F, 3, UV, FT);
+    mesh_topology t;
+    topo(&m, &t);
+    assert_int_equal(t.uv_charts, 2);
+    assert_int_equal(t.seam_edges, 1);
+    mesh_topology_free(&t);
+    mesh_charts c;
+    scaf_error e;
+    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    assert_int_equal(c.ncharts, 2);
+    assert_int_equal(mesh_chart_check(&c, 0, 0, &e), SCAF_OK);
+    assert_int_equal(mesh_chart_check(&c, 1, 1, &e), SCAF_ERR_MESH);
+    assert_non_null(strstr(e.message, "face 1"));
+    /* the loop accessor of the good chart */
+    const int *v, *vt;
+    int id;
+    assert_int_equal(mesh_chart_loop(&c, 0, 0, &v, &vt, &id), 3);
+    assert_int_equal(mesh_chart_loop(&c, 0, 1, &v, &vt, &id), 0);
+    assert_int_equal(v[0], 0);
+    assert_int_equal(vt[0], 0);
+    assert_int_equal(v[1], 1);
+    assert_int_equal(v[2], 2);
     mesh_charts_free(&c);
     mesh_free(&m);
 }
@@ -402,6 +443,65 @@ static void degenerate_duplicate_unreferenced(void **state)
     assert_int_equal(t.vertices, 5);
     mesh_topology_free(&t);
     mesh_free(&m);
+}
+
+/* Many triangles meeting at one vertex / one edge: linear-time code paths
+ * (a quadratic scan per vertex would take minutes here). */
+static void huge_fans_are_handled(void **state)
+{
+    (void)state;
+    enum { N = 50000 };
+    mesh m;
+    scaf_error e;
+    assert_int_equal(mesh_alloc(&m, 2 * N + 2, N, 0, &e), SCAF_OK);
+    for (int i = 0; i < 3 * (2 * N + 2); i++) m.V[i] = (double)(i % 7) + i / 3;
+    /* N separate triangles sharing vertex 0 only */
+    for (int i = 0; i < N; i++) {
+        m.F[3 * i] = 0;
+        m.F[3 * i + 1] = 2 + 2 * i;
+        m.F[3 * i + 2] = 3 + 2 * i;
+    }
+    mesh_topology t;
+    topo(&m, &t);
+    assert_int_equal(t.components, 1);
+    assert_int_equal(t.non_manifold_vertices, 1);
+    assert_int_equal(t.boundary_loops, 1);
+    assert_false(t.cx.loop_ordered[0]);
+    assert_int_equal(t.boundary_edges, 3 * N);
+    mesh_topology_free(&t);
+    /* N triangles on the edge 0-1 */
+    for (int i = 0; i < N; i++) {
+        m.F[3 * i] = i % 2 ? 1 : 0;
+        m.F[3 * i + 1] = i % 2 ? 0 : 1;
+        m.F[3 * i + 2] = 2 + i;
+    }
+    topo(&m, &t);
+    assert_int_equal(t.non_manifold_edges, 1);
+    assert_int_equal(t.misoriented_edges, 2);
+    assert_int_equal(t.non_manifold_vertices, 0);  /* one fan through the edge */
+    assert_int_equal(t.unreferenced_vertices, N);
+    mesh_topology_free(&t);
+    mesh_charts c;
+    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_MESH);
+    mesh_charts_free(&c);
+    mesh_free(&m);
+}
+
+static void zero_area_is_exact(void **state)
+{
+    (void)state;
+    /* tiny but not degenerate: a floating-point cross product underflows */
+    const double a[3] = {0, 0, 0}, b[3] = {1e-200, 0, 0}, c[3] = {0, 1e-200, 0};
+    assert_false(tri3_is_degenerate(a, b, c));
+    /* one ulp off a line */
+    const double d[3] = {1, 1, 1}, e[3] = {2, 2, 2}, f[3] = {3, 3, 3.0000000000000004};
+    assert_false(tri3_is_degenerate(d, e, f));
+    /* exactly on the line x = y = z, with inexact-looking decimals */
+    const double g[3] = {0.1, 0.1, 0.1}, h[3] = {0.2, 0.2, 0.2}, k[3] = {0.7, 0.7, 0.7};
+    assert_true(tri3_is_degenerate(g, h, k));
+    /* coincident points */
+    assert_true(tri3_is_degenerate(d, d, e));
 }
 
 static void index_out_of_range(void **state)
@@ -475,7 +575,10 @@ int main(void)
         cmocka_unit_test(hole),
         cmocka_unit_test(seams),
         cmocka_unit_test(uv_pinch_fails_check),
+        cmocka_unit_test(faces_without_uv),
         cmocka_unit_test(degenerate_duplicate_unreferenced),
+        cmocka_unit_test(huge_fans_are_handled),
+        cmocka_unit_test(zero_area_is_exact),
         cmocka_unit_test(index_out_of_range),
         cmocka_unit_test(empty_mesh),
         cmocka_unit_test(edge_table_is_sorted_and_complete),

@@ -119,6 +119,8 @@ static void isometry_values(void **state)
         assert_true(fabs(opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J) - 4) < 1e-9);
         assert_true(fabs(opt_density(OPT_ENERGY_ARAP, 2, J)) < 1e-9);
         assert_true(fabs(opt_density(OPT_ENERGY_CONFORMAL, 2, J) - 1) < 1e-9);
+        opt_term tt = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+        assert_true(fabs(opt_term_mean_energy(&tt, Y) - 4) < 1e-9);
         /* The weight is the 3D area. */
         double e1[3] = {V[3] - V[0], V[4] - V[1], V[5] - V[2]}, e2[3] = {V[6] - V[0], V[7] - V[1], V[8] - V[2]};
         double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2], cz = e1[0] * e2[1] - e1[1] * e2[0];
@@ -240,6 +242,27 @@ static void conformal_3d_proxy_is_spd(void **state)
     }
 }
 
+/* Capped weights: W^T W never exceeds the cap; the uncapped maximum is
+ * reported; with a cap above it the proxy is unchanged. */
+static void capped_proxy(void **state)
+{
+    (void)state;
+    for (int d = 2; d <= 3; d++) {
+        double J[9] = {0};
+        for (int a = 0; a < d; a++) J[a * d + a] = a == 0 ? 1e-4 : 1.0; /* w2 ~ 1e12 */
+        double W[9], T[9], W2[9], T2[9];
+        double w2 = opt_slim_proxy_capped(OPT_ENERGY_SYMMETRIC_DIRICHLET, d, J, 1e6, W, T);
+        assert_true(w2 > 1e11);
+        /* W is diagonal here: entries are the capped weights. */
+        for (int a = 0; a < d; a++) assert_true(W[a * d + a] * W[a * d + a] <= 1e6 * (1 + 1e-12));
+        assert_true(fabs(W[0] * W[0] - 1e6) < 1e-3);
+        opt_slim_proxy(OPT_ENERGY_SYMMETRIC_DIRICHLET, d, J, W, T);
+        opt_slim_proxy_capped(OPT_ENERGY_SYMMETRIC_DIRICHLET, d, J, 2 * w2, W2, T2);
+        assert_memory_equal(W, W2, d * d * sizeof(double));
+        assert_memory_equal(T, T2, d * d * sizeof(double));
+    }
+}
+
 static void builders_refuse_bad_input(void **state)
 {
     (void)state;
@@ -273,6 +296,7 @@ int main(void)
         cmocka_unit_test(rotation_invariance),
         cmocka_unit_test(slim_proxy_gradient_matches),
         cmocka_unit_test(conformal_3d_proxy_is_spd),
+        cmocka_unit_test(capped_proxy),
         cmocka_unit_test(builders_refuse_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -225,11 +225,87 @@ static void blocks_sum_like_one(void **state)
     }
 }
 
+/* Chart block on the low dofs, a "scaffold" block on the rest whose
+ * numbering and size change (one of its vertices becomes fixed, the others
+ * renumbered): the chart block is reused untouched and the sum equals one
+ * block built from scratch with the new numbering. */
+static void chart_block_survives_scaffold_renumbering(void **state)
+{
+    (void)state;
+    rng r = {59};
+    problem p;
+    make_problem(&p, 2);
+    int d = 2, m = p.nfree / 2, ns = p.S.n;
+    /* Sort simplices: chart = all free corners have dof < m. */
+    int *ia = malloc(ns * sizeof *ia), na = 0, nb = 0;
+    int *ib = malloc(ns * sizeof *ib);
+    for (int s = 0; s < ns; s++) {
+        int chart = 1;
+        for (int i = 0; i < 3; i++) chart &= p.dof[p.S.idx[3 * s + i]] < m;
+        if (chart) ia[na++] = s; else ib[nb++] = s;
+    }
+    assert_true(na > 0 && nb > 0);
+    opt_simplices A, B;
+    assert_int_equal(opt_simplices_alloc(&A, 2, na, NULL), SCAF_OK);
+    assert_int_equal(opt_simplices_alloc(&B, 2, nb, NULL), SCAF_OK);
+    for (int k = 0; k < na; k++) {
+        memcpy(A.idx + 3 * k, p.S.idx + 3 * ia[k], 3 * sizeof(int));
+        memcpy(A.grad + 6 * k, p.S.grad + 6 * ia[k], 6 * sizeof(double));
+        A.vol[k] = p.S.vol[ia[k]]; A.weight[k] = p.S.weight[ia[k]];
+    }
+    for (int k = 0; k < nb; k++) {
+        memcpy(B.idx + 3 * k, p.S.idx + 3 * ib[k], 3 * sizeof(int));
+        memcpy(B.grad + 6 * k, p.S.grad + 6 * ib[k], 6 * sizeof(double));
+        B.vol[k] = p.S.vol[ib[k]]; B.weight[k] = p.S.weight[ib[k]];
+    }
+    opt_term ta = {&A, OPT_ENERGY_SYMMETRIC_DIRICHLET}, tb = {&B, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+    opt_term tall = {&p.S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+    opt_proxy_block ba = {0}, bb = {0}, ball = {0};
+    assert_int_equal(opt_proxy_block_pattern(&ba, &A, p.dof, p.nfree, NULL), SCAF_OK);
+    assert_true(ba.nfree <= m);
+    /* New numbering: the highest-dof free vertex becomes fixed, the others
+     * at or above m are numbered in reverse. */
+    int *dof2 = malloc(p.nv * sizeof *dof2), top = -1, vtop = -1;
+    for (int v = 0; v < p.nv; v++) if (p.dof[v] > top) { top = p.dof[v]; vtop = v; }
+    int n2 = p.nfree - 1;
+    for (int v = 0; v < p.nv; v++) {
+        int k = p.dof[v];
+        dof2[v] = v == vtop ? -1 : k < m ? k : (k >= 0 ? m + (top - 1 - k) : -1);
+    }
+    assert_int_equal(opt_proxy_block_pattern(&bb, &B, dof2, n2, NULL), SCAF_OK);
+    assert_int_equal(opt_proxy_block_pattern(&ball, &p.S, dof2, n2, NULL), SCAF_OK);
+    unsigned va = ba.version;
+    int n = n2 * d;
+    double *r1 = calloc(n, sizeof *r1), *r2 = calloc(n, sizeof *r2);
+    double *y = malloc(n * sizeof *y), *y1 = malloc(n * sizeof *y1), *y2 = malloc(n * sizeof *y2);
+    opt_proxy_block_fill(&ba, &ta, dof2, p.X, r1);
+    opt_proxy_block_fill(&bb, &tb, dof2, p.X, r1);
+    opt_proxy_block_fill(&ball, &tall, dof2, p.X, r2);
+    opt_proxy_system sys = {0};
+    const opt_proxy_block *bl[2] = {&ba, &bb};
+    assert_int_equal(opt_proxy_system_sum(&sys, bl, 2, NULL), SCAF_OK);
+    assert_int_equal(sys.A.n, n);
+    assert_int_equal(ba.version, va);
+    for (int i = 0; i < n; i++) y[i] = rng_uniform(&r, -1, 1);
+    opt_csc_symv(&sys.A, y, y1);
+    opt_csc_symv(&ball.A, y, y2);
+    for (int i = 0; i < n; i++) {
+        assert_true(fabs(y1[i] - y2[i]) < 1e-10 * (1 + fabs(y2[i])));
+        assert_true(fabs(r1[i] - r2[i]) < 1e-10 * (1 + fabs(r2[i])));
+    }
+    free(r1); free(r2); free(y); free(y1); free(y2); free(dof2); free(ia); free(ib);
+    opt_proxy_system_free(&sys);
+    opt_proxy_block_free(&ba); opt_proxy_block_free(&bb); opt_proxy_block_free(&ball);
+    opt_simplices_free(&A); opt_simplices_free(&B);
+    free_problem(&p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(matrix_is_the_proxy_quadratic),
         cmocka_unit_test(blocks_sum_like_one),
+        cmocka_unit_test(chart_block_survives_scaffold_renumbering),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

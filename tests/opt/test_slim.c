@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "geom/predicates.h"
 #include "opt/embed.h"
 #include "opt/slim.h"
 #include "polar_disk.h"
@@ -121,10 +122,93 @@ static void slim_two_terms_rebuilt(void **state)
         assert_true(en <= e_prev);
         e_prev = en;
         assert_int_equal(st.analyzed, it == 0);
+        assert_int_equal(st.blocks_rebuilt, it == 0 ? 2 : 1); /* the chart's block is kept */
     }
     assert_int_equal(opt_chol_get_stats(opt_slim_solver(sl)).analyses, 1);
+    /* An empty second term (no scaffold simplex) is harmless. */
+    opt_simplices none = c.S;
+    none.n = 0;
+    opt_term t2[2] = {{&c.S, OPT_ENERGY_SYMMETRIC_DIRICHLET}, {&none, OPT_ENERGY_SYMMETRIC_DIRICHLET}};
+    assert_int_equal(opt_slim_step(sl, t2, 2, changed, c.m.nv, c.dof, c.nfree, c.X, NULL, NULL), SCAF_OK);
+    assert_true(opt_terms_oriented(t2, 2, c.X, NULL, NULL));
     opt_slim_destroy(sl);
     disk_teardown(&c);
+}
+
+/* A SCAF-like loop: the chart's boundary is free, a ring "scaffold" of
+ * extra rings surrounds it with its outer ring fixed, and every iteration
+ * the scaffold is re-triangulated (quads split along alternating
+ * diagonals where valid), its rest shape reset to the current one and its
+ * weight set to lambda = E_M / (100 |S|). Every simplex stays positive
+ * (exact), each step lowers its iteration's total energy, the chart's
+ * block is never rebuilt and its energy goes down. */
+static void slim_with_changing_scaffold(void **state)
+{
+    (void)state;
+    int rc = 6, seg = 24, rs = 4;
+    polar_disk chart;
+    assert_int_equal(polar_disk_make(&chart, rc, seg, 1.5, 0), 0);
+    int nvc = chart.nv, nv = nvc + rs * seg;
+    double *X = malloc(2 * nv * sizeof *X);
+    opt_chart_loops L = {1, chart.start, chart.loops, 0};
+    assert_int_equal(opt_embed_chart(chart.nv, chart.V, chart.nf, chart.F, &L, OPT_EMBED_TUTTE, X, NULL, NULL), SCAF_OK);
+    for (int k = 1; k <= rs; k++)
+        for (int j = 0; j < seg; j++) {
+            int b = chart.loops[j], v = nvc + (k - 1) * seg + j;
+            X[2 * v] = (1 + 0.25 * k) * X[2 * b];
+            X[2 * v + 1] = (1 + 0.25 * k) * X[2 * b + 1];
+        }
+    /* Ring k = 0 is the chart boundary, 1..rs the scaffold rings. */
+#define RV(k, j) ((k) == 0 ? chart.loops[(j) % seg] : nvc + ((k) - 1) * seg + ((j) % seg))
+    unsigned char *fixed = calloc(nv, 1);
+    for (int j = 0; j < seg; j++) fixed[RV(rs, j)] = 1;
+    int *dof = malloc(nv * sizeof *dof);
+    int nfree = opt_dof_numbering(nv, fixed, dof);
+    opt_simplices C;
+    assert_int_equal(opt_simplices_from_surface(&C, chart.nv, chart.V, chart.nf, chart.F, NULL), SCAF_OK);
+    int nsf = 2 * seg * rs;
+    int *SF = malloc(3 * nsf * sizeof *SF);
+    opt_slim *sl = opt_slim_create(NULL, NULL);
+    opt_term tc = {&C, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+    double e_first = opt_term_mean_energy(&tc, X), e_prev = e_first;
+    for (int it = 0; it < 8; it++) {
+        int f = 0;
+        for (int k = 0; k < rs; k++)
+            for (int j = 0; j < seg; j++) {
+                int a = RV(k, j), b = RV(k, j + 1), c = RV(k + 1, j), d = RV(k + 1, j + 1);
+                int alt = (it + j) % 2;
+                int t1[3] = {a, c, b}, t2[3] = {b, c, d}, u1[3] = {a, c, d}, u2[3] = {a, d, b};
+                int ok_alt = orient2d(X + 2 * a, X + 2 * c, X + 2 * b) > 0 && orient2d(X + 2 * b, X + 2 * c, X + 2 * d) > 0;
+                const int *p1 = alt && ok_alt ? t1 : u1, *p2 = alt && ok_alt ? t2 : u2;
+                if (!alt || !ok_alt) /* the other split must then be valid */
+                    assert_true(orient2d(X + 2 * a, X + 2 * c, X + 2 * d) > 0 && orient2d(X + 2 * a, X + 2 * d, X + 2 * b) > 0);
+                memcpy(SF + 3 * f++, p1, sizeof t1);
+                memcpy(SF + 3 * f++, p2, sizeof t1);
+            }
+        opt_simplices Sc;
+        assert_int_equal(opt_simplices_from_current(&Sc, 2, nv, X, nsf, SF, 1e-12, NULL), SCAF_OK);
+        double lambda = opt_term_energy(&tc, X) / (100.0 * nsf);
+        for (int q = 0; q < nsf; q++) Sc.weight[q] = lambda;
+        opt_term terms[2] = {tc, {&Sc, OPT_ENERGY_SYMMETRIC_DIRICHLET}};
+        int changed[2] = {0, 1};
+        opt_slim_stats st;
+        scaf_error e;
+        scaf_status s = opt_slim_step(sl, terms, 2, changed, nv, dof, nfree, X, &st, &e);
+        if (s != SCAF_OK) print_error("%s\n", e.message);
+        assert_int_equal(s, SCAF_OK);
+        assert_true(st.ls.energy_after <= st.ls.energy_before);
+        assert_true(opt_terms_oriented(terms, 2, X, NULL, NULL));
+        assert_int_equal(st.blocks_rebuilt, it == 0 ? 2 : 1);
+        e_prev = opt_term_mean_energy(&tc, X);
+        opt_simplices_free(&Sc);
+    }
+#undef RV
+    print_message("changing scaffold: chart E %.4f -> %.4f after 8 iterations\n", e_first, e_prev);
+    assert_true(e_prev < e_first);
+    opt_slim_destroy(sl);
+    opt_simplices_free(&C);
+    free(SF); free(dof); free(fixed); free(X);
+    polar_disk_free(&chart);
 }
 
 static void slim_tets(void **state)
@@ -177,6 +261,7 @@ int main(void)
         cmocka_unit_test(slim_disk_arap),
         cmocka_unit_test(slim_disk_conformal),
         cmocka_unit_test(slim_two_terms_rebuilt),
+        cmocka_unit_test(slim_with_changing_scaffold),
         cmocka_unit_test(slim_tets),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
