@@ -42,6 +42,8 @@ atlas_options atlas_options_default(void)
     o.progress_tolerance = 1e-3;
     o.repack = 1;
     o.pack_cells = 1024;
+    o.pack_gap_factor = 2.0;
+    o.compact_lambda_ratio = 0.1;
     return o;
 }
 
@@ -227,12 +229,24 @@ static int freeze_close(void *user, const scaf_loop *L, const double *X, double 
     scaf_error e;
     err_clear(&e);
     int changed = 0;
-    if (chart_gap_mark_close(X, a->seg, a->nseg, need, mark, &np, &e) == SCAF_OK && np > 0)
+    if (chart_gap_mark_close(X, a->seg, a->nseg, need, mark, &np, &e) == SCAF_OK && np > 0) {
         for (int v = 0; v < L->nv; v++)
             if (mark[a->wchart[v]] && (dir[2 * (size_t)v] != 0.0 || dir[2 * (size_t)v + 1] != 0.0)) {
                 dir[2 * (size_t)v] = dir[2 * (size_t)v + 1] = 0.0;
                 changed = 1;
             }
+        /* scaffold-only corners of triangles touching a frozen chart stay
+         * too, so the thin triangles there cannot collapse */
+        for (int s = 0; s < L->sc.ntri; s++) {
+            const int *t = L->sc.T + 3 * s;
+            int touch = 0;
+            for (int i = 0; i < 3; i++)
+                if (t[i] < L->nv && mark[a->wchart[t[i]]]) touch = 1;
+            if (touch)
+                for (int i = 0; i < 3; i++)
+                    if (t[i] >= L->nv) dir[2 * (size_t)t[i]] = dir[2 * (size_t)t[i] + 1] = 0.0;
+        }
+    }
     free(mark);
     return changed;
 }
@@ -334,6 +348,12 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     char msg[256];
     if (param_options_check(&a->opt.base, msg, sizeof msg) != SCAF_OK)
         return err_set(err, SCAF_ERR_USAGE, "%s", msg);
+    if (!(a->opt.pack_gap_factor >= 1.0) || !(a->opt.compact_lambda_ratio > 0.0) || !(a->opt.compact_rest_scale > 0.0) ||
+        !(a->opt.compact_rest_scale <= 1.0) || !(a->opt.compact_box_scale >= 1.0) || !(a->opt.compact_fraction > 0.0) ||
+        !(a->opt.compact_fraction < 1.0) || a->opt.pack_cells < 16 || a->opt.pack_cells > 8192)
+        return err_set(err, SCAF_ERR_USAGE, "invalid atlas option (pack_gap_factor >= 1, compact_lambda_ratio > 0, "
+                                            "compact_rest_scale in (0, 1], compact_box_scale >= 1, "
+                                            "compact_fraction in (0, 1), pack_cells in [16, 8192])");
     if (!(a->opt.padding >= 0.0) || !(a->opt.padding < 0.5))
         return err_set(err, SCAF_ERR_USAGE, "padding %g must be in [0, 0.5)", a->opt.padding);
     if (a->opt.init_input && !mesh_has_uv(m))
@@ -453,9 +473,9 @@ static scaf_status repack(atlas *a, scaf_error *err)
     if (!out) return err_nomem(err, "repacking");
     double eff0 = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
     double area = eff0 * pow(atlas_side(a), 2.0);
-    double want = a->opt.padding * sqrt(area / 0.8);
+    double want = a->opt.padding * sqrt(area / 0.8) * a->opt.pack_gap_factor;
     scaf_status st = SCAF_OK;
-    for (int attempt = 0; attempt < 6; attempt++, want *= 1.15) {
+    for (int attempt = 0; attempt < 6; attempt++) {
         scaf_error e2;
         err_clear(&e2);
         st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
@@ -475,7 +495,11 @@ static scaf_status repack(atlas *a, scaf_error *err)
         double g, side = side_of(out, a->nw);
         st = chart_gap_min_segments(out, a->seg, a->nseg, 0.0, &g, NULL, err);
         if (st != SCAF_OK) break;
-        if (!(g > a->opt.padding * side * PAD_MARGIN) || !(g > 0.0)) continue; /* wider gap, again */
+        if (!(g > a->opt.padding * side * PAD_MARGIN) || !(g > 0.0)) {
+            /* the square came out larger than estimated: wider gap, again */
+            want = fmax(1.03 * want, 1.005 * a->opt.padding * side);
+            continue;
+        }
         bij_report r;
         st = bij_check(a->nw, out, a->nf, a->Fw, a->chart, NULL, &r, err);
         if (st != SCAF_OK || !r.bijective) break;
@@ -536,6 +560,7 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
     /* ---- phase 2: compaction ------------------------------------------- */
     if (a->ncharts > 1 && a->opt.compact_iterations > 0) {
         a->loop.opt.box_scale = a->opt.compact_box_scale;
+        a->loop.opt.lambda_ratio = a->opt.compact_lambda_ratio;
         a->loop.opt.box_square = 0;
         a->loop.hooks.prepare = compact_prepare;
         enum { WINDOW = 8 };

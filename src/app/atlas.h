@@ -73,7 +73,13 @@ typedef struct atlas_options {
                                     packer (app/atlas_pack), kept only when
                                     the exact checks pass and it packs
                                     better (1) */
-    int pack_cells;              /* raster cells along the square (512) */
+    int pack_cells;              /* raster cells along the square (1024) */
+    double pack_gap_factor;      /* the packer leaves this times the padding
+                                    between charts, for compaction to close
+                                    (2) */
+    double compact_lambda_ratio; /* lambda_ratio during compaction: a
+                                    stronger scaffold moves charts further
+                                    (0.1) */
     double progress_tolerance;   /* phase 2 stops when the side shrank by
                                     less than this relatively over the last
                                     8 iterations (1e-3) */
