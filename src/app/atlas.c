@@ -291,8 +291,9 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
             L->scaf.weight[s] *= 100.0;
             L->scaf_pw[s] *= 100.0;
             a->stiffened++;
-            if (dmin < 0.5 * near && L->scaf.vol[s] > sc->eps) {
-                double grow = 1.1;
+            double pad = a->opt.padding * side;
+            if (dmin < 2.0 * pad && L->scaf.vol[s] > sc->eps) {
+                double grow = fmin(2.0 * pad / dmin, 2.0);
                 for (int i = 0; i < 6; i++) L->scaf.grad[6 * (size_t)s + i] /= grow;
                 L->scaf.vol[s] *= grow * grow;
             }

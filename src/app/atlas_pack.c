@@ -257,10 +257,11 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     /* Strategies: chart order (area / longest side), rotations (multiples
      * of 90 degrees only / all), tie rule (lowest bottom / lowest top). */
     /* (many charts: the two cheapest, 90-degree rotations only) */
-    int nstrat = ncharts <= 32 ? 8 : 2;
+    int nstrat = ncharts <= 32 ? 16 : 2;
+    unsigned rng = 2463534242u;
     for (int strat = 0; strat < nstrat; strat++) {
         int by_dim = 0, all_rot = 0, top = strat & 1;
-        if (nstrat == 8) {
+        if (nstrat == 16) {
             by_dim = strat & 1;
             all_rot = (strat >> 1) & 1;
             top = (strat >> 2) & 1;
@@ -277,6 +278,13 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
             for (int f = 0; f < nf; f++) {
                 const double *p0 = uv + 2 * (size_t)F[3 * f], *p1 = uv + 2 * (size_t)F[3 * f + 1], *p2 = uv + 2 * (size_t)F[3 * f + 2];
                 ord[chart[f]].area += (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+            }
+        if (strat >= 8) /* perturbed orders (deterministic xorshift) */
+            for (int c = 0; c < ncharts; c++) {
+                rng ^= rng << 13;
+                rng ^= rng >> 17;
+                rng ^= rng << 5;
+                ord[c].area *= 1.0 + 0.6 * (rng % 1000) / 1000.0;
             }
         qsort(ord, (size_t)ncharts, sizeof *ord, cmp_order);
         memset(occ, 0, (size_t)G * (size_t)G);
