@@ -479,8 +479,13 @@ static scaf_status repack(atlas *a, scaf_error *err)
     for (int attempt = 0; attempt < 6; attempt++) {
         scaf_error e2;
         err_clear(&e2);
-        st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
-                        out, &e2);
+        /* choose the strategy on a grid half as fine, then place with it */
+        int chosen = 0;
+        st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells / 2, want,
+                        -1, &chosen, out, &e2);
+        if (st == SCAF_OK)
+            st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
+                            chosen, NULL, out, &e2);
         if (st == SCAF_ERR_NOMEM) {
             *err = e2;
             break;
@@ -553,7 +558,7 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
     if (st != SCAF_OK) return st;
 
     a->eff_packed = NAN;
-    if (a->ncharts > 1 && a->opt.repack) {
+    if (a->opt.repack) {
         st = repack(a, err);
         if (st != SCAF_OK) return st;
     }

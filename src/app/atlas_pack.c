@@ -190,8 +190,10 @@ static int cmp_order(const void *x, const void *y)
     return p->chart - q->chart;
 }
 
+int atlas_pack_strategies(int ncharts) { return ncharts <= 32 ? 32 : 2; }
+
 scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                       int ncharts, int cells, double gap, double *out, scaf_error *err)
+                       int ncharts, int cells, double gap, int strategy, int *chosen, double *out, scaf_error *err)
 {
     scaf_status st = SCAF_OK;
     int *start = calloc((size_t)ncharts + 1, sizeof(int));
@@ -257,11 +259,21 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     /* Strategies: chart order (area / longest side), rotations (multiples
      * of 90 degrees only / all), tie rule (lowest bottom / lowest top). */
     /* (many charts: the two cheapest, 90-degree rotations only) */
-    int nstrat = ncharts <= 32 ? 16 : 2;
+    int nstrat = atlas_pack_strategies(ncharts);
     unsigned rng = 2463534242u;
     for (int strat = 0; strat < nstrat; strat++) {
+        if (strategy >= 0 && strat != strategy) {
+            /* keep the perturbation sequence identical to a full run */
+            if (strat >= 8)
+                for (int c = 0; c < ncharts; c++) {
+                    rng ^= rng << 13;
+                    rng ^= rng >> 17;
+                    rng ^= rng << 5;
+                }
+            continue;
+        }
         int by_dim = 0, all_rot = 0, top = strat & 1;
-        if (nstrat == 16) {
+        if (nstrat >= 16) {
             by_dim = strat & 1;
             all_rot = (strat >> 1) & 1;
             top = (strat >> 2) & 1;
@@ -354,6 +366,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
         long side = curX > curY ? curX : curY;
         if (side <= G && (bestSide < 0 || side < bestSide)) {
             bestSide = side;
+            if (chosen) *chosen = strat;
             memcpy(best, place, sizeof(int) * 3 * (size_t)ncharts);
         }
     }

@@ -26,8 +26,15 @@
  * ncharts    number of charts
  * cells      target cells along the side of the estimated square (e.g. 512)
  * gap        wanted distance between charts in uv units (>= 0)
+ * strategy   -1: try every placement strategy (chart order: area, longest
+ *            side, perturbed; rotations: 90 / 45 degrees; tie rule) and
+ *            keep the smallest square; k: only strategy k
+ * chosen     out (may be NULL): the strategy kept
  * out        nw by 2 new positions (write) */
 scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                       int ncharts, int cells, double gap, double *out, scaf_error *err);
+                       int ncharts, int cells, double gap, int strategy, int *chosen, double *out, scaf_error *err);
+
+/* Number of strategies tried for ncharts charts. */
+int atlas_pack_strategies(int ncharts);
 
 #endif /* SCAF_APP_ATLAS_PACK_H */
