@@ -479,13 +479,36 @@ static scaf_status repack(atlas *a, scaf_error *err)
     for (int attempt = 0; attempt < 6; attempt++) {
         scaf_error e2;
         err_clear(&e2);
-        /* choose the strategy on a grid half as fine, then place with it */
-        int chosen = 0;
+        /* rank the strategies on a grid half as fine, place the best few at
+         * full resolution, keep the smallest square */
+        int ns = atlas_pack_strategies(a->ncharts), chosen = 0;
+        long *side_c = malloc(sizeof(long) * (size_t)ns);
+        double *trial = malloc(sizeof(double) * n2);
+        if (!side_c || !trial) {
+            free(side_c);
+            free(trial);
+            free(out);
+            return err_nomem(err, "repacking");
+        }
         st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells / 2, want,
-                        -1, &chosen, out, &e2);
-        if (st == SCAF_OK)
+                        -1, &chosen, side_c, trial, &e2);
+        double best_side = INFINITY;
+        for (int pick = 0; pick < 4 && st == SCAF_OK; pick++) {
+            int k = -1;
+            for (int i = 0; i < ns; i++)
+                if (side_c[i] > 0 && (k < 0 || side_c[i] < side_c[k])) k = i;
+            if (k < 0) break;
+            side_c[k] = -1;
             st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
-                            chosen, NULL, out, &e2);
+                            k, NULL, NULL, trial, &e2);
+            double sd = st == SCAF_OK ? side_of(trial, a->nw) : INFINITY;
+            if (sd < best_side) {
+                best_side = sd;
+                memcpy(out, trial, sizeof(double) * n2);
+            }
+        }
+        free(side_c);
+        free(trial);
         if (st == SCAF_ERR_NOMEM) {
             *err = e2;
             break;

@@ -190,10 +190,11 @@ static int cmp_order(const void *x, const void *y)
     return p->chart - q->chart;
 }
 
-int atlas_pack_strategies(int ncharts) { return ncharts <= 32 ? 32 : 2; }
+int atlas_pack_strategies(int ncharts) { return ncharts <= 32 ? 64 : 2; }
 
 scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                       int ncharts, int cells, double gap, int strategy, int *chosen, double *out, scaf_error *err)
+                       int ncharts, int cells, double gap, int strategy, int *chosen, long *strat_side, double *out,
+                       scaf_error *err)
 {
     scaf_status st = SCAF_OK;
     int *start = calloc((size_t)ncharts + 1, sizeof(int));
@@ -262,6 +263,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     int nstrat = atlas_pack_strategies(ncharts);
     unsigned rng = 2463534242u;
     for (int strat = 0; strat < nstrat; strat++) {
+        if (strat_side) strat_side[strat] = -1;
         if (strategy >= 0 && strat != strategy) {
             /* keep the perturbation sequence identical to a full run */
             if (strat >= 8)
@@ -364,6 +366,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
             }
         }
         long side = curX > curY ? curX : curY;
+        if (strat_side) strat_side[strat] = side <= G ? side : -1;
         if (side <= G && (bestSide < 0 || side < bestSide)) {
             bestSide = side;
             if (chosen) *chosen = strat;

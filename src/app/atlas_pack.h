@@ -30,9 +30,12 @@
  *            side, perturbed; rotations: 90 / 45 degrees; tie rule) and
  *            keep the smallest square; k: only strategy k
  * chosen     out (may be NULL): the strategy kept
+ * strat_side out (may be NULL): atlas_pack_strategies(ncharts) entries, the
+ *            square side in cells each strategy reached (-1: not run)
  * out        nw by 2 new positions (write) */
 scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                       int ncharts, int cells, double gap, int strategy, int *chosen, double *out, scaf_error *err);
+                       int ncharts, int cells, double gap, int strategy, int *chosen, long *strat_side, double *out,
+                       scaf_error *err);
 
 /* Number of strategies tried for ncharts charts. */
 int atlas_pack_strategies(int ncharts);
