@@ -43,7 +43,7 @@ atlas_options atlas_options_default(void)
     o.repack = 1;
     o.pack_cells = 1024;
     o.pack_gap_factor = 2.0;
-    o.compact_lambda_ratio = 0.1;
+    o.compact_lambda_ratio = 0.3;
     return o;
 }
 

@@ -79,7 +79,7 @@ typedef struct atlas_options {
                                     (2) */
     double compact_lambda_ratio; /* lambda_ratio during compaction: a
                                     stronger scaffold moves charts further
-                                    (0.1) */
+                                    (0.3) */
     double progress_tolerance;   /* phase 2 stops when the side shrank by
                                     less than this relatively over the last
                                     8 iterations (1e-3) */
