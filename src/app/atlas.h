@@ -14,25 +14,35 @@
  *   1. settle: plain SCAF iterations until the relative decrease of E is
  *      below settle_tolerance;
  *   1b. re-placement (repack): the settled charts are moved rigidly (a
- *      translation and a multiple of 90 degrees) by a raster packer into a
- *      square, keeping the padding; the new layout is used only when the
- *      exact checker proves it bijective, every triangle keeps its exact
- *      orientation, the padding holds and the efficiency is higher;
- *   2. compaction: the box is rebuilt tight around the charts
- *      (compact_box_scale) and, before each solve, its vertices are moved
- *      toward its center by a fraction of their largest flip-free step
- *      (every scaffold triangle exactly positive afterwards), with the
- *      scaffold rest shapes taken before the move: the compressed scaffold
- *      pushes the charts together while the iteration lowers its own total
- *      energy. Scaffold triangles bridging two charts closer than three
- *      paddings are stiffened so close pairs hold while others still move.
- *      It stops when the layout's side stops shrinking, when E rises above
- *      (1 + distortion_tolerance) times the settled E, or at the cap.
- * Padding: the loop's feasibility hook rejects (halves) any step after
- * which two different charts are closer than padding * side (side = the
- * longest side of the charts' UV bounding box), so the layout normalized
- * by one uniform scale 1/side into the unit square has every chart gap
- * >= padding after every iteration. The map stays bijective after every
+ *      translation and a multiple of 45 degrees) by a raster packer
+ *      (app/atlas_pack: several placement strategies ranked on a coarse
+ *      grid, the best few placed on the full grid) into a square, with
+ *      pack_gap_factor times the padding between charts; the new layout
+ *      is used only when every triangle keeps its exact orientation, the
+ *      exact checker proves it bijective, the padding holds and it packs
+ *      better;
+ *   2. compaction: SCAF iterations with a tight box (compact_box_scale),
+ *      a stronger scaffold (compact_lambda_ratio) and, before each solve
+ *      (the loop's prepare hook, after the rest shapes are taken): the
+ *      box vertices moved toward its center by a fraction of their
+ *      largest flip-free step (every scaffold triangle exactly positive
+ *      afterwards); scaffold triangles off the box given a rest shape
+ *      shrunk by compact_rest_scale, so the free space contracts; and
+ *      scaffold triangles bridging two charts closer than three paddings
+ *      stiffened (and given a larger rest shape below two paddings) so
+ *      close pairs hold while the others move. Each iteration still
+ *      lowers its own total energy. It stops when the layout's side stops
+ *      shrinking, when E rises above (1 + distortion_tolerance) times the
+ *      settled E, after three iterations without a step, or at the cap.
+ * Padding: the loop's feasibility hook rejects any step after which two
+ * different charts are closer than padding * side (side = the longest
+ * side of the charts' UV bounding box); the loop then first retries the
+ * same step with the charts of every too-close pair (and the scaffold
+ * corners around them) held still (restrict hook), then halves it. So
+ * the layout normalized by one uniform scale 1/side into the unit square
+ * has every chart gap >= padding after every iteration (checked in the
+ * floating-point distance with a 1e-6 relative margin, and verified again
+ * on the written output). The map stays bijective after every
  * iteration (exact checks of the loop).
  *
  * Errors: SCAF_ERR_MESH naming the chart (not a disk / disk with holes,
