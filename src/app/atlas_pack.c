@@ -190,7 +190,11 @@ static int cmp_order(const void *x, const void *y)
     return p->chart - q->chart;
 }
 
-int atlas_pack_strategies(int ncharts) { return ncharts <= 32 ? 64 : 2; }
+int atlas_pack_strategies(int ncharts)
+{
+    if (ncharts <= 1) return 4; /* one chart: only its rotation matters */
+    return ncharts <= 32 ? 64 : 2;
+}
 
 scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
                        int ncharts, int cells, double gap, int strategy, int *chosen, long *strat_side, double *out,
@@ -238,6 +242,20 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     }
     if (cells < 16) cells = 16;
     double h = sqrt(total / 0.8) / cells;
+    /* long thin charts: coarser cells, so no chart spans more than
+     * 2 * cells (the grid stays O(cells^2)) */
+    for (int c = 0; c < ncharts; c++) {
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (int i = start[c]; i < start[c + 1]; i++)
+            for (int j = 0; j < 3; j++)
+                for (int q = 0; q < 2; q++) {
+                    double x = uv[2 * (size_t)F[3 * faces[i] + j] + q];
+                    lo[q] = fmin(lo[q], x);
+                    hi[q] = fmax(hi[q], x);
+                }
+        double diam = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+        if (diam > 2.0 * cells * h) h = diam / (2.0 * cells);
+    }
     int k = (int)ceil(gap / h) + 1;
     int maxdim = 0;
     for (int c = 0; c < ncharts; c++)
@@ -275,7 +293,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
             continue;
         }
         int by_dim = 0, all_rot = 0, top = strat & 1;
-        if (nstrat >= 16) {
+        if (ncharts <= 32) {
             by_dim = strat & 1;
             all_rot = (strat >> 1) & 1;
             top = (strat >> 2) & 1;
