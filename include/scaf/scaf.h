@@ -154,7 +154,9 @@ typedef int (*scaf_param_progress_fn)(const scaf_iteration_info_t *info, void *u
 typedef struct scaf_param scaf_param_t;
 
 /* A new context with a copy of the options (NULL: defaults). Returns NULL
- * only when out of memory. */
+ * only when out of memory. Invalid options are replaced by the defaults
+ * and scaf_param_error says which one was wrong (use
+ * scaf_param_set_options to get the status). */
 scaf_param_t *scaf_param_new(const scaf_options_t *options);
 
 /* Replace the options (validated: SCAF_ERR_USAGE on a bad value). Takes
