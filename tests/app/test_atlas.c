@@ -124,6 +124,7 @@ static void many_patches_with_padding(void **state)
     patches(&m, 12, 4, 0);
     atlas_options o = atlas_options_default();
     o.padding = 4.0 / 1024.0;
+    o.pack_cells = 256;
     o.settle_iterations = 6;
     o.compact_iterations = 6;
     atlas a;
@@ -152,6 +153,7 @@ static void patches_with_holes(void **state)
     patches(&m, 4, 5, 1);
     atlas_options o = atlas_options_default();
     o.padding = 0.01;
+    o.pack_cells = 256;
     o.settle_iterations = 4;
     o.compact_iterations = 4;
     atlas a;
@@ -198,6 +200,7 @@ static void cubesphere_seams_preserved(void **state)
     assert_true(mesh_has_uv(&m));
     atlas_options o = atlas_options_default();
     o.padding = 0.004;
+    o.pack_cells = 256;
     o.settle_iterations = 5;
     o.compact_iterations = 5;
     atlas a;
