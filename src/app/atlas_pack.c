@@ -376,9 +376,14 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
                     if (gx < 0 || gx >= G) continue;
                     if (cr->dil[(size_t)yy * cr->dw + xx]) occ[(size_t)gy * G + gx] = 1;
                 }
-                int *row = pre + (size_t)gy * (size_t)G, l = -1;
-                for (int x = 0; x < G; x++) {
+                /* last occupied column: recompute from the chart's left
+                 * edge, past its right edge only while it changes */
+                int *row = pre + (size_t)gy * (size_t)G;
+                int x0 = bx - k < 0 ? 0 : bx - k, x1 = bx - k + cr->dw;
+                int l = x0 > 0 ? row[x0 - 1] : -1;
+                for (int x = x0; x < G; x++) {
                     if (occ[(size_t)gy * G + x]) l = x;
+                    if (x >= x1 && row[x] >= l) break;
                     row[x] = l;
                 }
             }
