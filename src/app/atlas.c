@@ -430,6 +430,30 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
                          r.nested_loops);
             goto done;
         }
+        /* Bring the input to the surface's scale (distortion is measured
+         * against 3D lengths) with a power of two: exact in floating
+         * point, so every orientation and non-overlap the checker proved
+         * still holds. */
+        double a3 = 0.0, a2 = 0.0;
+        for (int f = 0; f < a->nf; f++) {
+            const int *t = a->Fw + 3 * f;
+            const double *p0 = W3 + 3 * (size_t)t[0], *p1 = W3 + 3 * (size_t)t[1], *p2 = W3 + 3 * (size_t)t[2];
+            double u[3], w[3];
+            for (int k = 0; k < 3; k++) {
+                u[k] = p1[k] - p0[k];
+                w[k] = p2[k] - p0[k];
+            }
+            a3 += 0.5 * sqrt(pow(u[1] * w[2] - u[2] * w[1], 2) + pow(u[2] * w[0] - u[0] * w[2], 2) +
+                             pow(u[0] * w[1] - u[1] * w[0], 2));
+            const double *q0 = uv0 + 2 * (size_t)t[0], *q1 = uv0 + 2 * (size_t)t[1], *q2 = uv0 + 2 * (size_t)t[2];
+            a2 += 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
+        }
+        if (a3 > 0.0 && a2 > 0.0) {
+            int e = (int)lround(0.5 * log2(a3 / a2));
+            if (e > 200) e = 200;
+            if (e < -200) e = -200;
+            for (int i = 0; i < 2 * a->nw; i++) uv0[i] = ldexp(uv0[i], e);
+        }
     }
 
     /* ---- the padding must hold at the start ------------------------------ */

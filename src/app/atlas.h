@@ -7,7 +7,9 @@
  * every chart keeps its faces and its boundary vertex sequence. Setup
  * reuses app/param (chart checks naming the chart, Tutte embedding on a
  * circle of the chart's 3D area, circles on a grid), or with init_input
- * the input's own UVs when the exact checker proves them bijective.
+ * the input's own UVs when the exact checker proves them bijective,
+ * scaled by the power of two closest to the surface's scale (exact, so
+ * the proof still holds).
  *
  * Then the SCAF loop (scaffold/scaf_loop) runs on all charts at once in
  * two phases:

@@ -269,9 +269,20 @@ static void init_input(void **state)
     for (int v = 16; v < m.nv; v++) m.UV[2 * v] += 5.0;
     err_clear(&err);
     assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    /* the start is the input up to one power-of-two scale (here the UVs
+     * are already at the surface's scale: factor 1) */
     for (int c = 0; c < 3 * m.nf; c++) {
         assert_true(a.loop.uv[2 * a.Fw[c]] == m.UV[2 * m.FT[c]]);
         assert_true(a.loop.uv[2 * a.Fw[c] + 1] == m.UV[2 * m.FT[c] + 1]);
+    }
+    atlas_free(&a);
+    /* UVs 8 times too small: scaled back by exactly 8 */
+    for (int i = 0; i < 2 * m.nuv; i++) m.UV[i] /= 8.0;
+    err_clear(&err);
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    for (int c = 0; c < 3 * m.nf; c++) {
+        assert_true(a.loop.uv[2 * a.Fw[c]] == 8.0 * m.UV[2 * m.FT[c]]);
+        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == 8.0 * m.UV[2 * m.FT[c] + 1]);
     }
     atlas_free(&a);
     mesh_free(&m);
