@@ -6,12 +6,14 @@
  * and nested charts. Exit status: 0 bijective, 1 not bijective,
  * 3 unreadable or malformed file, 4 readable but without UVs, 2 usage.
  */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "commands.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
+#include "geom/chart_gap.h"
 #include "mesh/mesh_io.h"
 
 static void usage(FILE *out)
@@ -28,16 +30,20 @@ static void usage(FILE *out)
             "           degenerate, charts, mirrored_charts, mixed_charts, boundary_edges,\n"
             "           boundary_loops, boundary_crossings, boundary_touchings,\n"
             "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops,\n"
-            "           corner_overlaps, bijective)\n"
+            "           corner_overlaps, bijective, min_chart_gap, packing_efficiency)\n"
             "  --help   this text\n"
             "\n"
+            "min_chart_gap: the smallest distance between two different charts (triangles\n"
+            "sharing a UV index are one chart; null with fewer than two charts).\n"
+            "packing_efficiency: total UV area of the triangles / (longest side of the UV\n"
+            "bounding box)^2, the fraction of the square the layout fills.\n"
             "A chart whose triangles are all clockwise is reported as mirrored; it counts\n"
             "as flipped (the map does not preserve orientation), so it is not bijective.\n"
             "Exit status: 0 bijective, 1 not bijective, 2 usage, 3 unreadable or\n"
             "malformed file, 4 file without UVs.\n");
 }
 
-static void print_json(const char *path, const bij_report *r)
+static void print_json(const char *path, const bij_report *r, double gap, double eff)
 {
     printf("{\"file\": \"");
     for (const char *c = path; *c; c++) {
@@ -51,14 +57,19 @@ static void print_json(const char *path, const bij_report *r)
            "\"charts\": %d, \"mirrored_charts\": %d, \"mixed_charts\": %d, "
            "\"boundary_edges\": %d, \"boundary_loops\": %d, \"boundary_crossings\": %lld, "
            "\"boundary_touchings\": %lld, \"boundary_foldbacks\": %lld, \"folded_edges\": %d, \"nonmanifold_edges\": %d, "
-           "\"nested_loops\": %d, \"corner_overlaps\": %d, \"bijective\": %s}\n",
+           "\"nested_loops\": %d, \"corner_overlaps\": %d, \"bijective\": %s, ",
            r->triangles, r->positive, r->flipped, r->degenerate, r->charts, r->mirrored_charts,
            r->mixed_charts, r->boundary_edges, r->boundary_loops, r->boundary_crossings,
            r->boundary_touchings, r->boundary_foldbacks, r->folded_edges, r->nonmanifold_edges, r->nested_loops,
            r->corner_overlaps, r->bijective ? "true" : "false");
+    if (isfinite(gap))
+        printf("\"min_chart_gap\": %.17g, ", gap);
+    else
+        printf("\"min_chart_gap\": null, ");
+    printf("\"packing_efficiency\": %.17g}\n", eff);
 }
 
-static void print_text(const char *path, const bij_report *r)
+static void print_text(const char *path, const bij_report *r, double gap, double eff)
 {
     printf("%s: %s\n", path, r->bijective ? "bijective" : "NOT bijective");
     printf("  triangles            %d\n", r->triangles);
@@ -75,6 +86,8 @@ static void print_text(const char *path, const bij_report *r)
     printf("  non-manifold edges   %d\n", r->nonmanifold_edges);
     printf("  nested loops         %d\n", r->nested_loops);
     printf("  corner overlaps      %d\n", r->corner_overlaps);
+    printf("  min chart gap        %.6g\n", gap);
+    printf("  packing efficiency   %.4f\n", eff);
 }
 
 int cmd_check(int argc, char **argv)
@@ -123,14 +136,17 @@ int cmd_check(int argc, char **argv)
     }
     bij_report r;
     s = bij_check(m.nuv, m.UV, m.nf, m.FT, NULL, NULL, &r, &err);
+    double gap = INFINITY, eff = 0.0;
+    if (s == SCAF_OK) s = chart_gap_min(m.nuv, m.UV, m.nf, m.FT, NULL, 0.0, &gap, NULL, &err);
+    if (s == SCAF_OK) eff = chart_packing_efficiency(m.nuv, m.UV, m.nf, m.FT);
     mesh_free(&m);
     if (s != SCAF_OK) {
         fprintf(stderr, "scaf check: %s: %s\n", path, err.message);
         return exit_code_for(s);
     }
     if (json)
-        print_json(path, &r);
+        print_json(path, &r, gap, eff);
     else
-        print_text(path, &r);
+        print_text(path, &r, gap, eff);
     return r.bijective ? EXIT_OK : EXIT_NOT_BIJECTIVE;
 }

@@ -12,12 +12,14 @@ int cmd_check(int argc, char **argv);
 int cmd_gen(int argc, char **argv);
 int cmd_info(int argc, char **argv);
 int cmd_param(int argc, char **argv);
+int cmd_atlas(int argc, char **argv);
 
 const command scaf_commands[] = {
     {"check", "verify that a mesh's UV map is bijective (exact)", cmd_check},
     {"gen", "write a built-in sample mesh (hemisphere, holes, cubesphere, ...)", cmd_gen},
     {"info", "print the topology of a mesh (components, loops, genus, defects, charts)", cmd_info},
     {"param", "bijective UV parametrization with SCAF (writes OBJ with vt)", cmd_param},
+    {"atlas", "multi-chart texture atlas: joint bijective optimization, compaction, padding", cmd_atlas},
     {NULL, NULL, NULL}
 };
 

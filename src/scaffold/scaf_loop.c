@@ -374,6 +374,45 @@ static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, cons
     return st;
 }
 
+/* ---- the feasibility hook: shorten a step it rejects -------------------- */
+
+/* X holds the line search's result X0 + step * dir; halve the step until
+ * the hook accepts, every simplex is exactly positive and the total energy
+ * is below its value at X0; otherwise restore X0 (step 0). */
+static scaf_status feasible_backtrack(scaf_loop *L, const opt_term *terms, int nall, const double *X0,
+                                      double *X, opt_ls_result *ls)
+{
+    if (!L->hooks.feasible || ls->step <= 0.0 || L->hooks.feasible(L->hooks.user, L, X, nall))
+        return SCAF_OK;
+    size_t nx = 2 * (size_t)nall;
+    double t = ls->step;
+    for (int round = 0; round < 16 && L->hooks.restrict_dir; round++) {
+        if (!L->hooks.restrict_dir(L->hooks.user, L, X, L->dir, nall)) break;
+        for (size_t i = 0; i < nx; i++) X[i] = X0[i] + t * L->dir[i];
+        double e = opt_terms_energy(terms, 2, X);
+        if (!(e < ls->energy_before) || !opt_terms_oriented(terms, 2, X, NULL, NULL)) break;
+        if (L->hooks.feasible(L->hooks.user, L, X, nall)) {
+            ls->energy_after = e;
+            return SCAF_OK;
+        }
+    }
+    for (int k = 0; k < 40; k++) {
+        t *= 0.5;
+        for (size_t i = 0; i < nx; i++) X[i] = X0[i] + t * L->dir[i];
+        double e = opt_terms_energy(terms, 2, X);
+        if (e < ls->energy_before && opt_terms_oriented(terms, 2, X, NULL, NULL) &&
+            L->hooks.feasible(L->hooks.user, L, X, nall)) {
+            ls->step = t;
+            ls->energy_after = e;
+            return SCAF_OK;
+        }
+    }
+    memcpy(X, X0, nx * sizeof *X);
+    ls->step = 0.0;
+    ls->energy_after = ls->energy_before;
+    return SCAF_OK;
+}
+
 /* ---- one iteration ----------------------------------------------------- */
 
 scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error *err)
@@ -382,7 +421,7 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     memset(&I, 0, sizeof I);
     double t_start = timer_now(), t0 = t_start, t1;
     scaf_status st = SCAF_OK;
-    double *X = NULL;
+    double *X = NULL, *X0 = NULL;
     int *dof = NULL;
     unsigned char *fixed = NULL;
 
@@ -435,6 +474,18 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
         L->scaf.weight[s] = lambda;
         L->scaf_pw[s] = area >= sc->eps ? 0.25 * lambda : lambda; /* see the banner */
     }
+    if (L->hooks.prepare) {
+        st = L->hooks.prepare(L->hooks.user, L, X, nall, err);
+        if (st != SCAF_OK) goto done;
+    }
+    if (L->hooks.feasible) {
+        X0 = malloc(sizeof(double) * 2 * (size_t)nall);
+        if (!X0) {
+            st = err_nomem(err, "SCAF iteration");
+            goto done;
+        }
+        memcpy(X0, X, sizeof(double) * 2 * (size_t)nall);
+    }
     t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_ASSEMBLY] += t1 - t0;
     t0 = t1;
@@ -444,6 +495,7 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     slim_times tm;
     opt_ls_result ls;
     st = slim_step(L, terms, nall, dof, nfree, X, &tm, &ls, err);
+    if (st == SCAF_OK && X0) st = feasible_backtrack(L, terms, nall, X0, X, &ls);
     if (st != SCAF_OK) goto done;
     I.phase_seconds[SCAF_PHASE_ASSEMBLY] += tm.assembly;
     I.phase_seconds[SCAF_PHASE_ANALYSIS] += tm.analysis;
@@ -467,6 +519,7 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
 
 done:
     free(X);
+    free(X0);
     free(dof);
     free(fixed);
     t1 = timer_now();

@@ -31,6 +31,33 @@
 #include "opt/simplices.h"
 #include "scaffold/scaffold_build.h"
 
+struct scaf_loop;
+
+/* Optional hooks of one iteration (all NULL by default), used by the atlas
+ * (app/atlas) for compaction and the padding constraint:
+ *   prepare   after the scaffold is built and its rest shapes and weights
+ *             set (rest = current shape), before the solve: may move FIXED
+ *             (box) vertices in X (nall by 2) and change scaffold weights
+ *             (L->scaf.weight, L->scaf_pw). Every triangle must stay
+ *             positively oriented at X (the hook checks exactly); the
+ *             iteration then lowers the total energy from that state.
+ *   feasible  an extra constraint on a trial state X (nall by 2): 1 = ok.
+ *             A line-search step it rejects is halved (exact orientation
+ *             and total-energy decrease re-checked) until accepted, or no
+ *             step is taken. Must hold at the state the iteration starts.
+ *   restrict  optional: called with a trial state X the feasibility hook
+ *             rejected; may zero rows of the direction dir (nall by 2) so
+ *             the offending parts stay put, returning 1 when it changed
+ *             dir (the same step is then tried again, with the same exact
+ *             orientation, energy and feasibility checks), 0 otherwise.
+ *   user      passed to all. */
+typedef struct scaf_loop_hooks {
+    scaf_status (*prepare)(void *user, struct scaf_loop *L, double *X, int nall, scaf_error *err);
+    int (*feasible)(void *user, const struct scaf_loop *L, const double *X, int nall);
+    int (*restrict_dir)(void *user, const struct scaf_loop *L, const double *X, double *dir, int nall);
+    void *user;
+} scaf_loop_hooks;
+
 typedef struct scaf_loop {
     int nv, nf;
     int *F;              /* nf by 3 working faces */
@@ -54,6 +81,7 @@ typedef struct scaf_loop {
     double *rhs, *sol, *dir;
     size_t cap_n, cap_x;
     int iterations;
+    scaf_loop_hooks hooks; /* zero = none (see above) */
 } scaf_loop;
 
 /* Set up. V3 nv by 3 rest positions, F nf by 3 faces (counter-clockwise

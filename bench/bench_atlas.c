@@ -1,0 +1,151 @@
+/* bench/bench_atlas: the texture atlas on the seam meshes, packing table.
+ *
+ * For every mesh of ../shared/data/seams (skipped when absent) and a
+ * generated 500-chart mesh: runs the atlas with 4 texels of padding at
+ * 1024 (defaults otherwise), verifies the normalized output (exact
+ * checker, chart gap), and prints one markdown row: charts, pinched vt
+ * split, iterations (settle + compaction), packing efficiency after
+ * settling (grid start), after the raster re-placement and after
+ * compaction, min chart gap, E settled / final, seconds (total, setup,
+ * repack, median per iteration), or the error for meshes whose charts
+ * are refused. Usage: bench_atlas [MESH...] (default: the seam meshes).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "app/atlas.h"
+#include "geom/bijectivity.h"
+#include "geom/chart_gap.h"
+#include "mesh/mesh_io.h"
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+typedef struct times {
+    double sum[64 * 1024];
+    int n;
+} times;
+
+static int on_it(const atlas *a, const atlas_iteration *it, void *user)
+{
+    (void)a;
+    times *t = user;
+    if (t->n < 64 * 1024) t->sum[t->n++] = it->info.seconds;
+    return 0;
+}
+
+static int cmp(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+static void many_patches(mesh *m, int n)
+{
+    int r = 2, nvp = 9, nfp = 8;
+    m->nv = n * nvp;
+    m->nf = n * nfp;
+    m->nuv = 0;
+    m->UV = NULL;
+    m->FT = NULL;
+    m->V = malloc(sizeof(double) * 3 * (size_t)m->nv);
+    m->F = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    int f = 0;
+    for (int p = 0; p < n; p++) {
+        double s = 0.5 + 0.37 * (p % 7) + 0.11 * (p % 3);
+        for (int j = 0; j <= r; j++)
+            for (int i = 0; i <= r; i++) {
+                double *v = m->V + 3 * (size_t)(p * nvp + j * 3 + i), x = s * i / r, y = s * j / r;
+                v[0] = x + 10.0 * p;
+                v[1] = y;
+                v[2] = 0.3 * s * sin(1.3 * x / s + p) * cos(0.7 * y / s);
+            }
+        for (int j = 0; j < r; j++)
+            for (int i = 0; i < r; i++) {
+                int a = p * nvp + j * 3 + i, b = a + 1, c = a + 3, d = c + 1;
+                int *t = m->F + 3 * (size_t)f;
+                t[0] = a, t[1] = b, t[2] = d, t[3] = a, t[4] = d, t[5] = c;
+                f += 2;
+            }
+    }
+}
+
+static void bench(const char *name, mesh *m)
+{
+    atlas_options o = atlas_options_default();
+    o.padding = 4.0 / 1024.0;
+    atlas a;
+    scaf_error err;
+    err_clear(&err);
+    static times t;
+    t.n = 0;
+    double t0 = now();
+    if (atlas_init(&a, m, &o, &err) != SCAF_OK) {
+        printf("| %s | refused: %s |\n", name, err.message);
+        return;
+    }
+    double t1 = now();
+    if (atlas_run(&a, on_it, &t, &err) != SCAF_OK) {
+        printf("| %s | failed: %s |\n", name, err.message);
+        atlas_free(&a);
+        return;
+    }
+    double t2 = now();
+    double *UV = malloc(sizeof(double) * 2 * (size_t)a.nw);
+    atlas_normalized_uv(&a, UV);
+    bij_report r;
+    double gap = INFINITY;
+    bij_check(a.nw, UV, a.nf, a.Fw, a.chart, NULL, &r, &err);
+    chart_gap_min(a.nw, UV, a.nf, a.Fw, a.chart, 0.0, &gap, NULL, &err);
+    double eff = chart_packing_efficiency(a.nw, UV, a.nf, a.Fw);
+    double iters = 0.0;
+    for (int i = 0; i < t.n; i++) iters += t.sum[i];
+    qsort(t.sum, (size_t)t.n, sizeof(double), cmp);
+    double med = t.n ? t.sum[t.n / 2] : 0.0;
+    printf("| %s | %d | %d | %d+%d | %.3f | %.3f | %.3f | %.5f | %s | %.4f / %.4f | %.2f | %.2f | %.2f | %.3f |\n", name,
+           a.ncharts, a.split_uvs, a.settle_done, a.compact_done, a.eff_before, a.eff_packed, eff, gap,
+           r.bijective ? "yes" : "NO", a.settled_energy, scaf_loop_energy(&a.loop), t2 - t0, t1 - t0,
+           (t2 - t1) - iters, med);
+    fflush(stdout);
+    free(UV);
+    atlas_free(&a);
+}
+
+int main(int argc, char **argv)
+{
+    const char *seams[] = {"seams/spot.obj", "seams/blub.obj", "seams/human_neutral.obj",
+                           "seams/myles_knot1_seamed.obj", "seams/myles_eight_seamed.obj"};
+    printf("| mesh | charts | split vt | iterations | eff. settled (grid) | eff. re-placed | eff. final | "
+           "min gap | bijective | E settled / final | total s | setup s | repack+checks s | median s/it |\n");
+    printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    int n = argc > 1 ? argc - 1 : (int)(sizeof seams / sizeof *seams);
+    for (int i = 0; i < n; i++) {
+        char path[4096];
+        if (argc > 1)
+            snprintf(path, sizeof path, "%s", argv[i + 1]);
+        else
+            snprintf(path, sizeof path, "%s/%s", SCAF_DATA_DIR, seams[i]);
+        mesh m;
+        scaf_error err;
+        if (mesh_read(path, &m, NULL, &err) != SCAF_OK) {
+            printf("| %s | skipped: %s |\n", argc > 1 ? path : seams[i], err.message);
+            continue;
+        }
+        bench(argc > 1 ? path : seams[i], &m);
+        mesh_free(&m);
+    }
+    if (argc <= 1) {
+        mesh m;
+        many_patches(&m, 500);
+        bench("generated: 500 patches", &m);
+        mesh_free(&m);
+    }
+    return 0;
+}

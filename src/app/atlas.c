@@ -1,0 +1,638 @@
+/* app/atlas: joint bijective optimization of all charts, compaction,
+ * padding (see atlas.h).
+ *
+ * Setup goes through the scaf_param API (chart extraction and checks,
+ * Tutte on circles on a grid) and then runs its own scaf_loop over the
+ * same working mesh, so the atlas can install the loop's hooks: `prepare`
+ * (compaction: box moved inward after the rest shapes are taken, close
+ * chart pairs stiffened) and `feasible` (the padding constraint).
+ */
+#include "app/atlas.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/atlas_pack.h"
+#include "app/param.h"
+#include "geom/bijectivity.h"
+#include "geom/chart_gap.h"
+#include "geom/predicates.h"
+#include "mesh/union_find.h"
+#include "opt/flip_free_step.h"
+
+/* Margin on the padding so rounding in the final normalization cannot
+ * bring a gap below it. */
+#define PAD_MARGIN 1.000001
+
+atlas_options atlas_options_default(void)
+{
+    atlas_options o;
+    memset(&o, 0, sizeof o);
+    o.base = scaf_options_default();
+    o.padding = 0.0;
+    o.init_input = 0;
+    o.settle_iterations = 30;
+    o.settle_tolerance = 1e-3;
+    o.compact_iterations = 150;
+    o.compact_box_scale = 1.05;
+    o.compact_fraction = 0.5;
+    o.compact_rest_scale = 0.8;
+    o.distortion_tolerance = 0.05;
+    o.progress_tolerance = 1e-3;
+    o.repack = 1;
+    o.pack_cells = 1024;
+    o.pack_gap_factor = 2.0;
+    o.compact_lambda_ratio = 0.3;
+    return o;
+}
+
+void atlas_free(atlas *a)
+{
+    if (!a) return;
+    free(a->Fw);
+    free(a->chart);
+    free(a->wchart);
+    free(a->seg);
+    scaf_loop_free(&a->loop);
+    memset(a, 0, sizeof *a);
+}
+
+/* ---- fan splitting ---------------------------------------------------------- */
+
+typedef struct half {
+    int lo, hi, corner_lo, corner_hi;
+} half;
+
+static int cmp_half(const void *x, const void *y)
+{
+    const half *p = x, *q = y;
+    if (p->lo != q->lo) return p->lo < q->lo ? -1 : 1;
+    if (p->hi != q->hi) return p->hi < q->hi ? -1 : 1;
+    return 0;
+}
+
+scaf_status atlas_split_fans(int nf, const int *FT, int nuv, int **FT2, int *nuv2, int **map, int *nsplit,
+                             scaf_error *err)
+{
+    size_t nc = 3 * (size_t)nf;
+    *FT2 = NULL;
+    *map = NULL;
+    half *h = malloc(sizeof *h * (nc ? nc : 1));
+    int *par = malloc(sizeof(int) * (nc ? nc : 1));
+    int *first = malloc(sizeof(int) * (size_t)(nuv > 0 ? nuv : 1));
+    int *root_id = malloc(sizeof(int) * (nc ? nc : 1));
+    int *out = malloc(sizeof(int) * (nc ? nc : 1));
+    int *mp = malloc(sizeof(int) * ((size_t)nuv + nc + 1));
+    if (!h || !par || !first || !root_id || !out || !mp) {
+        free(h); free(par); free(first); free(root_id); free(out); free(mp);
+        return err_nomem(err, "splitting UV fans");
+    }
+    for (int f = 0; f < nf; f++)
+        for (int j = 0; j < 3; j++) {
+            int ca = 3 * f + j, cb = 3 * f + (j + 1) % 3;
+            int a = FT[ca], b = FT[cb];
+            half *x = &h[ca];
+            x->lo = a < b ? a : b;
+            x->hi = a < b ? b : a;
+            x->corner_lo = a < b ? ca : cb;
+            x->corner_hi = a < b ? cb : ca;
+        }
+    qsort(h, nc, sizeof *h, cmp_half);
+    uf_init(par, (int)nc);
+    for (size_t i = 0; i < nc;) {
+        size_t j = i + 1;
+        while (j < nc && h[j].lo == h[i].lo && h[j].hi == h[i].hi) j++;
+        for (size_t k = i + 1; k < j; k++) {
+            uf_union(par, h[i].corner_lo, h[k].corner_lo);
+            uf_union(par, h[i].corner_hi, h[k].corner_hi);
+        }
+        i = j;
+    }
+    for (int i = 0; i < nuv; i++) {
+        first[i] = -1;
+        mp[i] = i;
+    }
+    for (size_t c = 0; c < nc; c++) root_id[c] = -1;
+    int n = nuv, added = 0;
+    for (size_t c = 0; c < nc; c++) {
+        int r = uf_find(par, (int)c), v = FT[c];
+        if (root_id[r] < 0) {
+            if (first[v] < 0) {
+                first[v] = r;
+                root_id[r] = v;
+            } else {
+                root_id[r] = n;
+                mp[n++] = v;
+                added++;
+            }
+        }
+        out[c] = root_id[r];
+    }
+    free(h); free(par); free(first); free(root_id);
+    *FT2 = out;
+    *map = mp;
+    *nuv2 = n;
+    *nsplit = added;
+    return SCAF_OK;
+}
+
+/* ---- geometry of the layout ------------------------------------------------- */
+
+static void bbox(const double *uv, int n, double lo[2], double hi[2])
+{
+    lo[0] = lo[1] = INFINITY;
+    hi[0] = hi[1] = -INFINITY;
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < 2; k++) {
+            double x = uv[2 * (size_t)i + k];
+            if (x < lo[k]) lo[k] = x;
+            if (x > hi[k]) hi[k] = x;
+        }
+}
+
+static double side_of(const double *uv, int n)
+{
+    double lo[2], hi[2];
+    bbox(uv, n, lo, hi);
+    return fmax(hi[0] - lo[0], hi[1] - lo[1]);
+}
+
+double atlas_side(const atlas *a) { return side_of(a->loop.uv, a->nw); }
+
+scaf_status atlas_gap(const atlas *a, double *gap, scaf_error *err)
+{
+    double g;
+    scaf_status st = chart_gap_min_segments(a->loop.uv, a->seg, a->nseg, 0.0, &g, NULL, err);
+    double s = atlas_side(a);
+    *gap = s > 0.0 ? g / s : g;
+    return st;
+}
+
+void atlas_normalized_uv(const atlas *a, double *UV)
+{
+    double lo[2], hi[2];
+    bbox(a->loop.uv, a->nw, lo, hi);
+    double s = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+    if (!(s > 0.0)) s = 1.0;
+    for (int i = 0; i < a->nw; i++)
+        for (int k = 0; k < 2; k++) UV[2 * (size_t)i + k] = (a->loop.uv[2 * (size_t)i + k] - lo[k]) / s;
+}
+
+void atlas_chart_energy(const atlas *a, double *E)
+{
+    double *fe = malloc(sizeof(double) * (size_t)(a->nf ? a->nf : 1));
+    double *w = calloc((size_t)(a->ncharts ? a->ncharts : 1), sizeof(double));
+    for (int c = 0; c < a->ncharts; c++) E[c] = 0.0;
+    if (!fe || !w) {
+        for (int c = 0; c < a->ncharts; c++) E[c] = NAN;
+        free(fe);
+        free(w);
+        return;
+    }
+    scaf_loop_face_energy(&a->loop, fe);
+    for (int f = 0; f < a->nf; f++) {
+        double A = a->loop.chart.weight[f];
+        E[a->chart[f]] += A * fe[f];
+        w[a->chart[f]] += A;
+    }
+    for (int c = 0; c < a->ncharts; c++) E[c] = w[c] > 0.0 ? E[c] / w[c] : NAN;
+    free(fe);
+    free(w);
+}
+
+/* ---- hooks -------------------------------------------------------------------- */
+
+/* Padding: every pair of charts at least padding * side apart at X. */
+static int feasible_gap(void *user, const scaf_loop *L, const double *X, int nall)
+{
+    (void)nall;
+    atlas *a = user;
+    if (!(a->opt.padding > 0.0)) return 1;
+    double need = a->opt.padding * side_of(X, L->nv) * PAD_MARGIN, g;
+    scaf_error e;
+    err_clear(&e);
+    if (chart_gap_min_segments(X, a->seg, a->nseg, need, &g, NULL, &e) != SCAF_OK) return 0;
+    return g > need;
+}
+
+/* The padding failed at X: freeze (zero the direction of) every chart of
+ * a pair closer than the padding, so the others can still move. */
+static int freeze_close(void *user, const scaf_loop *L, const double *X, double *dir, int nall)
+{
+    (void)nall;
+    atlas *a = user;
+    double need = a->opt.padding * side_of(X, L->nv) * PAD_MARGIN;
+    unsigned char *mark = calloc((size_t)a->ncharts, 1);
+    if (!mark) return 0;
+    long np = 0;
+    scaf_error e;
+    err_clear(&e);
+    int changed = 0;
+    if (chart_gap_mark_close(X, a->seg, a->nseg, need, mark, &np, &e) == SCAF_OK && np > 0) {
+        for (int v = 0; v < L->nv; v++)
+            if (mark[a->wchart[v]] && (dir[2 * (size_t)v] != 0.0 || dir[2 * (size_t)v + 1] != 0.0)) {
+                dir[2 * (size_t)v] = dir[2 * (size_t)v + 1] = 0.0;
+                changed = 1;
+            }
+        /* scaffold-only corners of triangles touching a frozen chart stay
+         * too, so the thin triangles there cannot collapse */
+        for (int s = 0; s < L->sc.ntri; s++) {
+            const int *t = L->sc.T + 3 * s;
+            int touch = 0;
+            for (int i = 0; i < 3; i++)
+                if (t[i] < L->nv && mark[a->wchart[t[i]]]) touch = 1;
+            if (touch)
+                for (int i = 0; i < 3; i++)
+                    if (t[i] >= L->nv) dir[2 * (size_t)t[i]] = dir[2 * (size_t)t[i] + 1] = 0.0;
+        }
+    }
+    free(mark);
+    return changed;
+}
+
+/* Every scaffold triangle strictly positive at X, decided exactly. */
+static int scaffold_positive(const scaf_loop *L, const double *X)
+{
+    for (int s = 0; s < L->sc.ntri; s++) {
+        const int *t = L->sc.T + 3 * s;
+        if (!(orient2d(X + 2 * (size_t)t[0], X + 2 * (size_t)t[1], X + 2 * (size_t)t[2]) > 0.0)) return 0;
+    }
+    return 1;
+}
+
+static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall, scaf_error *err)
+{
+    atlas *a = user;
+    const scaffold *sc = &L->sc;
+    /* ---- stiffen scaffold triangles bridging two close charts ---------- */
+    double side = side_of(X, L->nv);
+    double near = 3.0 * a->opt.padding * side;
+    if (near <= 0.0) near = 0.01 * side;
+    a->stiffened = 0;
+    double sigma = a->opt.compact_rest_scale;
+    for (int s = 0; s < sc->ntri; s++) {
+        const int *t = sc->T + 3 * s;
+        int bridge = 0, boxed = 0;
+        double dmin = INFINITY;
+        for (int i = 0; i < 3; i++)
+            if (t[i] >= L->nv && sc->extra_fixed[t[i] - L->nv]) boxed = 1;
+        for (int i = 0; i < 3 && !bridge; i++)
+            for (int j = i + 1; j < 3 && !bridge; j++) {
+                int u = t[i], v = t[j];
+                if (u >= L->nv || v >= L->nv || a->wchart[u] == a->wchart[v]) continue;
+                const double *p = X + 2 * (size_t)u, *q = X + 2 * (size_t)v;
+                double d = hypot(p[0] - q[0], p[1] - q[1]);
+                if (d < dmin) dmin = d;
+                if (d < near) bridge = 1;
+            }
+        if (bridge) {
+            /* a close pair: stiff, and pushed apart when nearly at the padding */
+            L->scaf.weight[s] *= 100.0;
+            L->scaf_pw[s] *= 100.0;
+            a->stiffened++;
+            double pad = a->opt.padding * side;
+            if (dmin < 2.0 * pad && L->scaf.vol[s] > sc->eps) {
+                double grow = fmin(2.0 * pad / dmin, 2.0);
+                for (int i = 0; i < 6; i++) L->scaf.grad[6 * (size_t)s + i] /= grow;
+                L->scaf.vol[s] *= grow * grow;
+            }
+        } else if (!boxed && sigma < 1.0 && L->scaf.vol[s] > sc->eps) {
+            /* rest shape shrunk by sigma: the free space wants to contract */
+            for (int i = 0; i < 6; i++) L->scaf.grad[6 * (size_t)s + i] /= sigma;
+            L->scaf.vol[s] *= sigma * sigma;
+        }
+    }
+    /* ---- move the box inward ------------------------------------------- */
+    double *D = calloc(2 * (size_t)nall, sizeof *D);
+    double *X0 = malloc(sizeof(double) * 2 * (size_t)nall);
+    if (!D || !X0) {
+        free(D);
+        free(X0);
+        return err_nomem(err, "compaction");
+    }
+    memcpy(X0, X, sizeof(double) * 2 * (size_t)nall);
+    double cx = 0.5 * (sc->box[0] + sc->box[2]), cy = 0.5 * (sc->box[1] + sc->box[3]);
+    for (int i = 0; i < sc->nextra; i++)
+        if (sc->extra_fixed[i]) {
+            size_t v = (size_t)(L->nv + i);
+            D[2 * v] = cx - X[2 * v];
+            D[2 * v + 1] = cy - X[2 * v + 1];
+        }
+    double t = opt_max_step(&L->scaf, X, D);
+    if (t > 1.0) t = 1.0;
+    t *= a->opt.compact_fraction;
+    for (int k = 0; k < 60 && t > 0.0; k++) {
+        for (int i = 0; i < sc->nextra; i++)
+            if (sc->extra_fixed[i]) {
+                size_t v = (size_t)(L->nv + i);
+                X[2 * v] = X0[2 * v] + t * D[2 * v];
+                X[2 * v + 1] = X0[2 * v + 1] + t * D[2 * v + 1];
+            }
+        if (scaffold_positive(L, X)) break;
+        t *= 0.5;
+        if (k == 59) t = 0.0;
+    }
+    if (!(t > 0.0)) memcpy(X, X0, sizeof(double) * 2 * (size_t)nall);
+    free(D);
+    free(X0);
+    return SCAF_OK;
+}
+
+/* ---- setup -------------------------------------------------------------------- */
+
+scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_error *err)
+{
+    memset(a, 0, sizeof *a);
+    a->opt = o ? *o : atlas_options_default();
+    scaf_status st = SCAF_OK;
+    char msg[256];
+    if (param_options_check(&a->opt.base, msg, sizeof msg) != SCAF_OK)
+        return err_set(err, SCAF_ERR_USAGE, "%s", msg);
+    if (!(a->opt.pack_gap_factor >= 1.0) || !(a->opt.compact_lambda_ratio > 0.0) || !(a->opt.compact_rest_scale > 0.0) ||
+        !(a->opt.compact_rest_scale <= 1.0) || !(a->opt.compact_box_scale >= 1.0) || !(a->opt.compact_fraction > 0.0) ||
+        !(a->opt.compact_fraction < 1.0) || a->opt.pack_cells < 16 || a->opt.pack_cells > 8192)
+        return err_set(err, SCAF_ERR_USAGE, "invalid atlas option (pack_gap_factor >= 1, compact_lambda_ratio > 0, "
+                                            "compact_rest_scale in (0, 1], compact_box_scale >= 1, "
+                                            "compact_fraction in (0, 1), pack_cells in [16, 8192])");
+    if (!(a->opt.padding >= 0.0) || !(a->opt.padding < 0.5))
+        return err_set(err, SCAF_ERR_USAGE, "padding %g must be in [0, 0.5)", a->opt.padding);
+    if (a->opt.init_input && !mesh_has_uv(m))
+        return err_set(err, SCAF_ERR_USAGE, "--init input: the mesh has no UVs (vt) to start from");
+    int *FT2 = NULL, *map = NULL, nuv2 = 0;
+    double *UV2 = NULL, *W3 = NULL, *uv0 = NULL;
+    scaf_param_t *p = NULL;
+    if (mesh_has_uv(m)) {
+        st = atlas_split_fans(m->nf, m->FT, m->nuv, &FT2, &nuv2, &map, &a->split_uvs, err);
+        if (st != SCAF_OK) goto done;
+        UV2 = malloc(sizeof(double) * 2 * (size_t)nuv2);
+        if (!UV2) {
+            st = err_nomem(err, "atlas");
+            goto done;
+        }
+        for (int i = 0; i < nuv2; i++) memcpy(UV2 + 2 * (size_t)i, m->UV + 2 * (size_t)map[i], sizeof(double) * 2);
+    }
+    scaf_options_t po = a->opt.base;
+    p = scaf_param_new(&po);
+    if (!p) {
+        st = err_nomem(err, "atlas");
+        goto done;
+    }
+    st = UV2 ? scaf_param_set_mesh(p, m->V, m->nv, m->F, m->nf, UV2, nuv2, FT2)
+             : scaf_param_set_mesh(p, m->V, m->nv, m->F, m->nf, NULL, 0, NULL);
+    if (st != SCAF_OK) {
+        err_set(err, st, "%s", scaf_param_error(p));
+        goto done;
+    }
+    a->nv = m->nv;
+    a->nf = m->nf;
+    a->ncharts = scaf_param_chart_count(p);
+    a->nw = scaf_param_uv_count(p);
+    a->Fw = malloc(sizeof(int) * 3 * (size_t)a->nf);
+    a->chart = malloc(sizeof(int) * (size_t)a->nf);
+    uv0 = malloc(sizeof(double) * 2 * (size_t)a->nw);
+    W3 = malloc(sizeof(double) * 3 * (size_t)a->nw);
+    if (!a->Fw || !a->chart || !uv0 || !W3) {
+        st = err_nomem(err, "atlas");
+        goto done;
+    }
+    scaf_param_get_uv(p, uv0, a->Fw);
+    for (int f = 0; f < a->nf; f++)
+        for (int j = 0; j < 3; j++)
+            memcpy(W3 + 3 * (size_t)a->Fw[3 * f + j], m->V + 3 * (size_t)m->F[3 * f + j], sizeof(double) * 3);
+    int nc = 0;
+    st = chart_gap_labels(a->nw, a->nf, a->Fw, a->chart, &nc, err);
+    if (st != SCAF_OK) goto done;
+    st = chart_gap_segments(a->nf, a->Fw, a->chart, &a->seg, &a->nseg, err);
+    if (st != SCAF_OK) goto done;
+    a->wchart = malloc(sizeof(int) * (size_t)a->nw);
+    if (!a->wchart) {
+        st = err_nomem(err, "atlas");
+        goto done;
+    }
+    for (int f = 0; f < a->nf; f++)
+        for (int j = 0; j < 3; j++) a->wchart[a->Fw[3 * f + j]] = a->chart[f];
+
+    /* ---- start from the input UVs: only when proved bijective ------------ */
+    if (a->opt.init_input) {
+        for (int f = 0; f < a->nf; f++)
+            for (int j = 0; j < 3; j++)
+                memcpy(uv0 + 2 * (size_t)a->Fw[3 * f + j], UV2 + 2 * (size_t)FT2[3 * f + j], sizeof(double) * 2);
+        bij_report r;
+        st = bij_check(a->nw, uv0, a->nf, a->Fw, a->chart, NULL, &r, err);
+        if (st != SCAF_OK) goto done;
+        if (!r.bijective) {
+            st = err_set(err, SCAF_ERR_MESH,
+                         "--init input: the input UVs are not bijective (%d flipped, %d degenerate triangles, "
+                         "%d mirrored charts, %lld boundary crossings, %lld touchings, %d nested loops); "
+                         "use the default start (Tutte on circles)",
+                         r.flipped, r.degenerate, r.mirrored_charts, r.boundary_crossings, r.boundary_touchings,
+                         r.nested_loops);
+            goto done;
+        }
+        /* Bring the input to the surface's scale (distortion is measured
+         * against 3D lengths) with a power of two: exact in floating
+         * point, so every orientation and non-overlap the checker proved
+         * still holds. */
+        double a3 = 0.0, a2 = 0.0;
+        for (int f = 0; f < a->nf; f++) {
+            const int *t = a->Fw + 3 * f;
+            const double *p0 = W3 + 3 * (size_t)t[0], *p1 = W3 + 3 * (size_t)t[1], *p2 = W3 + 3 * (size_t)t[2];
+            double u[3], w[3];
+            for (int k = 0; k < 3; k++) {
+                u[k] = p1[k] - p0[k];
+                w[k] = p2[k] - p0[k];
+            }
+            a3 += 0.5 * sqrt(pow(u[1] * w[2] - u[2] * w[1], 2) + pow(u[2] * w[0] - u[0] * w[2], 2) +
+                             pow(u[0] * w[1] - u[1] * w[0], 2));
+            const double *q0 = uv0 + 2 * (size_t)t[0], *q1 = uv0 + 2 * (size_t)t[1], *q2 = uv0 + 2 * (size_t)t[2];
+            a2 += 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
+        }
+        if (a3 > 0.0 && a2 > 0.0) {
+            int e = (int)lround(0.5 * log2(a3 / a2));
+            if (e > 200) e = 200;
+            if (e < -200) e = -200;
+            for (int i = 0; i < 2 * a->nw; i++) uv0[i] = ldexp(uv0[i], e);
+        }
+    }
+
+    /* ---- the padding must hold at the start ------------------------------ */
+    if (a->opt.padding > 0.0) {
+        double g, s = side_of(uv0, a->nw);
+        st = chart_gap_min_segments(uv0, a->seg, a->nseg, 0.0, &g, NULL, err);
+        if (st != SCAF_OK) goto done;
+        if (!(g > a->opt.padding * s * PAD_MARGIN)) {
+            st = err_set(err, SCAF_ERR_USAGE,
+                         "padding %g is not met by the starting layout of %d charts (smallest gap %g of the "
+                         "square): use a smaller padding%s",
+                         a->opt.padding, a->ncharts, g / s, a->opt.init_input ? " or the default start" : "");
+            goto done;
+        }
+    }
+    st = scaf_loop_init(&a->loop, a->nw, W3, a->nf, a->Fw, uv0, &a->opt.base, err);
+    if (st != SCAF_OK) goto done;
+    a->loop.hooks.user = a;
+    a->loop.hooks.feasible = feasible_gap;
+    a->loop.hooks.restrict_dir = freeze_close;
+
+done:
+    scaf_param_destroy(p);
+    free(FT2);
+    free(map);
+    free(UV2);
+    free(W3);
+    free(uv0);
+    if (st != SCAF_OK) atlas_free(a);
+    return st;
+}
+
+/* ---- the two phases ------------------------------------------------------------ */
+
+/* Re-place the charts with the raster packer; keep the result only when
+ * it is proved valid and packs better. */
+static scaf_status repack(atlas *a, scaf_error *err)
+{
+    a->eff_packed = NAN;
+    size_t n2 = 2 * (size_t)a->nw;
+    double *out = malloc(sizeof(double) * n2);
+    if (!out) return err_nomem(err, "repacking");
+    double eff0 = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
+    double area = eff0 * pow(atlas_side(a), 2.0);
+    double want = a->opt.padding * sqrt(area / 0.8) * a->opt.pack_gap_factor;
+    scaf_status st = SCAF_OK;
+    for (int attempt = 0; attempt < 6; attempt++) {
+        scaf_error e2;
+        err_clear(&e2);
+        /* rank the strategies on a grid half as fine, place the best few at
+         * full resolution, keep the smallest square */
+        int ns = atlas_pack_strategies(a->ncharts), chosen = 0;
+        long *side_c = malloc(sizeof(long) * (size_t)ns);
+        double *trial = malloc(sizeof(double) * n2);
+        if (!side_c || !trial) {
+            free(side_c);
+            free(trial);
+            free(out);
+            return err_nomem(err, "repacking");
+        }
+        st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells / 2, want,
+                        -1, &chosen, side_c, trial, &e2);
+        double best_side = INFINITY;
+        for (int pick = 0; pick < 4 && st == SCAF_OK; pick++) {
+            int k = -1;
+            for (int i = 0; i < ns; i++)
+                if (side_c[i] > 0 && (k < 0 || side_c[i] < side_c[k])) k = i;
+            if (k < 0) break;
+            side_c[k] = -1;
+            st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
+                            k, NULL, NULL, trial, &e2);
+            double sd = st == SCAF_OK ? side_of(trial, a->nw) : INFINITY;
+            if (sd < best_side) {
+                best_side = sd;
+                memcpy(out, trial, sizeof(double) * n2);
+            }
+        }
+        free(side_c);
+        free(trial);
+        if (st == SCAF_ERR_NOMEM) {
+            *err = e2;
+            break;
+        }
+        st = SCAF_OK;
+        if (e2.code != SCAF_OK) break; /* no layout: keep the current one */
+        int ok = 1;
+        for (int f = 0; f < a->nf && ok; f++) {
+            const int *t = a->Fw + 3 * f;
+            if (!(orient2d(out + 2 * (size_t)t[0], out + 2 * (size_t)t[1], out + 2 * (size_t)t[2]) > 0.0)) ok = 0;
+        }
+        if (!ok) break;
+        double g, side = side_of(out, a->nw);
+        st = chart_gap_min_segments(out, a->seg, a->nseg, 0.0, &g, NULL, err);
+        if (st != SCAF_OK) break;
+        if (!(g > a->opt.padding * side * PAD_MARGIN) || !(g > 0.0)) {
+            /* the square came out larger than estimated: wider gap, again */
+            want = fmax(1.03 * want, 1.005 * a->opt.padding * side);
+            continue;
+        }
+        bij_report r;
+        st = bij_check(a->nw, out, a->nf, a->Fw, a->chart, NULL, &r, err);
+        if (st != SCAF_OK || !r.bijective) break;
+        double eff1 = chart_packing_efficiency(a->nw, out, a->nf, a->Fw);
+        if (eff1 > eff0) {
+            memcpy(a->loop.uv, out, sizeof(double) * n2);
+            a->eff_packed = eff1;
+        }
+        break;
+    }
+    free(out);
+    return st;
+}
+
+static scaf_status one_iteration(atlas *a, atlas_phase ph, atlas_progress_fn progress, void *user,
+                                 atlas_iteration *it, scaf_error *err)
+{
+    memset(it, 0, sizeof *it);
+    scaf_status st = scaf_loop_step(&a->loop, &it->info, err);
+    if (st != SCAF_OK) return st;
+    it->phase = ph;
+    it->side = atlas_side(a);
+    st = atlas_gap(a, &it->gap, err);
+    if (st != SCAF_OK) return st;
+    it->efficiency = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
+    if (progress && progress(a, it, user))
+        return err_set(err, SCAF_ERR_CANCELLED, "stopped by the progress callback after iteration %d",
+                       it->info.iteration);
+    return SCAF_OK;
+}
+
+scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_error *err)
+{
+    scaf_status st = SCAF_OK;
+    atlas_iteration it;
+    /* ---- phase 1: settle the distortion -------------------------------- */
+    a->loop.opt = a->opt.base;
+    a->loop.hooks.prepare = NULL;
+    for (int k = 0; k < a->opt.settle_iterations; k++) {
+        st = one_iteration(a, ATLAS_SETTLE, progress, user, &it, err);
+        if (st != SCAF_OK) return st;
+        a->settle_done++;
+        if (it.info.step == 0.0) break;
+        double dec = (it.info.energy_before - it.info.energy) / it.info.energy_before;
+        if (dec >= 0.0 && dec < a->opt.settle_tolerance) break;
+    }
+    a->settled_energy = scaf_loop_energy(&a->loop);
+    a->eff_before = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
+    st = atlas_gap(a, &a->gap_before, err);
+    if (st != SCAF_OK) return st;
+
+    a->eff_packed = NAN;
+    if (a->opt.repack) {
+        st = repack(a, err);
+        if (st != SCAF_OK) return st;
+    }
+
+    /* ---- phase 2: compaction ------------------------------------------- */
+    if (a->ncharts > 1 && a->opt.compact_iterations > 0) {
+        a->loop.opt.box_scale = a->opt.compact_box_scale;
+        a->loop.opt.lambda_ratio = a->opt.compact_lambda_ratio;
+        a->loop.opt.box_square = 0;
+        a->loop.hooks.prepare = compact_prepare;
+        enum { WINDOW = 8 };
+        double hist[WINDOW];
+        int zero_steps = 0;
+        for (int k = 0; k < a->opt.compact_iterations; k++) {
+            st = one_iteration(a, ATLAS_COMPACT, progress, user, &it, err);
+            if (st != SCAF_OK) break;
+            a->compact_done++;
+            if (it.info.energy > (1.0 + a->opt.distortion_tolerance) * a->settled_energy) break;
+            zero_steps = it.info.step == 0.0 ? zero_steps + 1 : 0;
+            if (zero_steps >= 3) break;
+            if (k >= WINDOW && hist[k % WINDOW] - it.side < a->opt.progress_tolerance * hist[k % WINDOW]) break;
+            hist[k % WINDOW] = it.side;
+        }
+        a->loop.hooks.prepare = NULL;
+        a->loop.opt = a->opt.base;
+        if (st != SCAF_OK) return st;
+    }
+    a->eff_after = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
+    return atlas_gap(a, &a->gap_after, err);
+}

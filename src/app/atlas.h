@@ -1,0 +1,163 @@
+/* app/atlas: a multi-chart texture atlas optimized inside one scaffold.
+ *
+ * The paper's texture-atlas application (Figures 1 and 8). Charts are the
+ * connected components of a mesh without UVs, or its UV charts (pieces cut
+ * along UV seams); vt indices whose faces form several fans (pinch points,
+ * a vt shared by two charts) are first split into one UV per fan, so
+ * every chart keeps its faces and its boundary vertex sequence. Setup
+ * reuses app/param (chart checks naming the chart, Tutte embedding on a
+ * circle of the chart's 3D area, circles on a grid), or with init_input
+ * the input's own UVs when the exact checker proves them bijective,
+ * scaled by the power of two closest to the surface's scale (exact, so
+ * the proof still holds).
+ *
+ * Then the SCAF loop (scaffold/scaf_loop) runs on all charts at once in
+ * two phases:
+ *   1. settle: plain SCAF iterations until the relative decrease of E is
+ *      below settle_tolerance;
+ *   1b. re-placement (repack): the settled charts are moved rigidly (a
+ *      translation and a multiple of 45 degrees) by a raster packer
+ *      (app/atlas_pack: several placement strategies ranked on a coarse
+ *      grid, the best few placed on the full grid) into a square, with
+ *      pack_gap_factor times the padding between charts; the new layout
+ *      is used only when every triangle keeps its exact orientation, the
+ *      exact checker proves it bijective, the padding holds and it packs
+ *      better;
+ *   2. compaction: SCAF iterations with a tight box (compact_box_scale),
+ *      a stronger scaffold (compact_lambda_ratio) and, before each solve
+ *      (the loop's prepare hook, after the rest shapes are taken): the
+ *      box vertices moved toward its center by a fraction of their
+ *      largest flip-free step (every scaffold triangle exactly positive
+ *      afterwards); scaffold triangles off the box given a rest shape
+ *      shrunk by compact_rest_scale, so the free space contracts; and
+ *      scaffold triangles bridging two charts closer than three paddings
+ *      stiffened (and given a larger rest shape below two paddings) so
+ *      close pairs hold while the others move. Each iteration still
+ *      lowers its own total energy. It stops when the layout's side stops
+ *      shrinking, when E rises above (1 + distortion_tolerance) times the
+ *      settled E, after three iterations without a step, or at the cap.
+ * Padding: the loop's feasibility hook rejects any step after which two
+ * different charts are closer than padding * side (side = the longest
+ * side of the charts' UV bounding box); the loop then first retries the
+ * same step with the charts of every too-close pair (and the scaffold
+ * corners around them) held still (restrict hook), then halves it. So
+ * the layout normalized by one uniform scale 1/side into the unit square
+ * has every chart gap >= padding after every iteration (checked in the
+ * floating-point distance with a 1e-6 relative margin, and verified again
+ * on the written output). The map stays bijective after every
+ * iteration (exact checks of the loop).
+ *
+ * Errors: SCAF_ERR_MESH naming the chart (not a disk / disk with holes,
+ * degenerate face), or saying why the input UVs cannot be the start;
+ * SCAF_ERR_USAGE for a padding the initial layout cannot give;
+ * SCAF_ERR_NUMERIC, SCAF_ERR_NOMEM from the loop.
+ */
+#ifndef SCAF_APP_ATLAS_H
+#define SCAF_APP_ATLAS_H
+
+#include "base/error.h"
+#include "mesh/mesh.h"
+#include "scaf/scaf.h"
+#include "scaffold/scaf_loop.h"
+
+typedef struct atlas_options {
+    scaf_options_t base;         /* loop options (energy, lambda, box, ...);
+                                    base.max_iterations unused */
+    double padding;              /* minimum gap between charts in the unit
+                                    square (0: charts only never overlap) */
+    int init_input;              /* 1: start from the input UVs (0) */
+    int settle_iterations;       /* cap of phase 1 (30) */
+    double settle_tolerance;     /* phase 1 ends below this relative
+                                    decrease of E per iteration (1e-3) */
+    int compact_iterations;      /* cap of phase 2; 0 = no compaction (150) */
+    double compact_box_scale;    /* box during compaction (1.05) */
+    double compact_fraction;     /* fraction of the box's flip-free step
+                                    taken per iteration (0.5) */
+    double compact_rest_scale;   /* during compaction, scaffold triangles
+                                    off the box and not bridging two close
+                                    charts take their current shape scaled
+                                    by this as rest shape, so the free space
+                                    contracts (0.8; 1 = box push only) */
+    double distortion_tolerance; /* phase 2 stops when E > (1 + this) times
+                                    the settled E (0.05) */
+    int repack;                  /* 1: between the phases, re-place the
+                                    settled charts rigidly with the raster
+                                    packer (app/atlas_pack), kept only when
+                                    the exact checks pass and it packs
+                                    better (1) */
+    int pack_cells;              /* raster cells along the square (1024) */
+    double pack_gap_factor;      /* the packer leaves this times the padding
+                                    between charts, for compaction to close
+                                    (2) */
+    double compact_lambda_ratio; /* lambda_ratio during compaction: a
+                                    stronger scaffold moves charts further
+                                    (0.3) */
+    double progress_tolerance;   /* phase 2 stops when the side shrank by
+                                    less than this relatively over the last
+                                    8 iterations (1e-3) */
+} atlas_options;
+
+atlas_options atlas_options_default(void);
+
+typedef enum atlas_phase { ATLAS_SETTLE = 0, ATLAS_COMPACT = 1 } atlas_phase;
+
+typedef struct atlas_iteration {
+    scaf_iteration_info_t info; /* the loop's numbers */
+    atlas_phase phase;
+    double side;                /* longest side of the charts' UV bbox */
+    double gap;                 /* smallest chart gap / side (normalized);
+                                   INFINITY with one chart */
+    double efficiency;          /* chart UV area / side^2 */
+} atlas_iteration;
+
+typedef struct atlas {
+    atlas_options opt;
+    int nv, nf;                 /* input vertices and faces */
+    int ncharts;
+    int nw;                     /* working vertices = output UVs */
+    int *Fw;                    /* nf by 3 working vertex (output UV) per corner */
+    int *chart;                 /* nf chart id per face */
+    int *wchart;                /* nw chart id per working vertex */
+    int split_uvs;              /* vt indices split at pinch points */
+    int *seg;                   /* nseg by 3 boundary segments (a, b, chart) */
+    int nseg;
+    scaf_loop loop;
+    double settled_energy;      /* E at the end of phase 1 */
+    double eff_before, eff_after; /* packing efficiency before / after phase 2 */
+    double gap_before, gap_after; /* normalized smallest gap, same times */
+    double eff_packed;          /* after the raster re-placement (NAN: not done / rejected) */
+    int settle_done, compact_done; /* iterations run in each phase */
+    int stiffened;              /* scaffold triangles stiffened (last iteration) */
+} atlas;
+
+typedef int (*atlas_progress_fn)(const atlas *a, const atlas_iteration *it, void *user);
+
+/* Set up from a mesh (UVs used for the charts' seams, and as the start
+ * with init_input). On failure *a is empty and err says why. */
+scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_error *err);
+
+/* Run both phases; progress (may be NULL) after every iteration; a
+ * nonzero return stops (SCAF_ERR_CANCELLED). */
+scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_error *err);
+
+/* Normalized output: UV (nw by 2) = (uv - lo) / side, in [0, 1]^2. */
+void atlas_normalized_uv(const atlas *a, double *UV);
+
+/* Side and gap (normalized) of the current layout. */
+double atlas_side(const atlas *a);
+scaf_status atlas_gap(const atlas *a, double *gap, scaf_error *err);
+
+/* Per-chart energy sum A_f SD(J_f) / sum A_f (ncharts values). */
+void atlas_chart_energy(const atlas *a, double *E);
+
+void atlas_free(atlas *a);
+
+/* Split vt indices whose corners form several fans (connected through
+ * shared vt edges): FT2 (nf by 3) gets one index per fan, the first fan of
+ * each vt keeps its index, the others get nuv, nuv+1, ...; *nuv2 the new
+ * count, *map (nuv2) the original index of each. Returns the number of
+ * added indices via *nsplit. */
+scaf_status atlas_split_fans(int nf, const int *FT, int nuv, int **FT2, int *nuv2, int **map, int *nsplit,
+                             scaf_error *err);
+
+#endif /* SCAF_APP_ATLAS_H */

@@ -1,0 +1,430 @@
+/* app/atlas_pack: raster re-placement of charts (see atlas_pack.h).
+ *
+ * Occupancy is a byte grid with, per row, the last occupied column at or
+ * before each cell, so testing a chart at a position costs one lookup per
+ * run of covered cells, and a conflict tells how far to skip. Positions are scanned row by row and abandoned as soon as they
+ * cannot beat the best square found so far.
+ */
+#include "app/atlas_pack.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct chart_raster {
+    int w, h;          /* cover size in cells */
+    int nrun;
+    int *run;          /* nrun by 3: row, x0, x1 (inclusive) of covered cells */
+    int dw, dh;        /* dilated size = w + 2k, h + 2k */
+    unsigned char *dil;/* dh by dw dilated cover */
+    double m[2];       /* rotated bbox min (cell origin) */
+} chart_raster;
+
+enum { NROT = 8 }; /* rotations tried: multiples of 360/NROT degrees */
+
+/* Rotation r of NROT; multiples of 90 degrees are exact. */
+static void rot(int r, const double *p, double *q)
+{
+    if (r % (NROT / 4)) {
+        double a = 2.0 * 3.14159265358979323846 * r / NROT, c = cos(a), s = sin(a);
+        q[0] = c * p[0] - s * p[1];
+        q[1] = s * p[0] + c * p[1];
+        return;
+    }
+    switch ((r / (NROT / 4)) & 3) {
+    case 0: q[0] = p[0]; q[1] = p[1]; break;
+    case 1: q[0] = -p[1]; q[1] = p[0]; break;
+    case 2: q[0] = -p[0]; q[1] = -p[1]; break;
+    default: q[0] = p[1]; q[1] = -p[0]; break;
+    }
+}
+
+static void raster_free(chart_raster *c)
+{
+    free(c->run);
+    free(c->dil);
+    memset(c, 0, sizeof *c);
+}
+
+/* Rasterize chart faces fc (nfc ids) rotated by r with cell h, dilation k. */
+static scaf_status raster_chart(const double *uv, const int *F, const int *fc, int nfc, int r, double h, int k,
+                                chart_raster *c, scaf_error *err)
+{
+    memset(c, 0, sizeof *c);
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < nfc; i++)
+        for (int j = 0; j < 3; j++) {
+            double q[2];
+            rot(r, uv + 2 * (size_t)F[3 * fc[i] + j], q);
+            for (int a = 0; a < 2; a++) {
+                lo[a] = fmin(lo[a], q[a]);
+                hi[a] = fmax(hi[a], q[a]);
+            }
+        }
+    c->m[0] = lo[0];
+    c->m[1] = lo[1];
+    c->w = (int)floor((hi[0] - lo[0]) / h) + 1;
+    c->h = (int)floor((hi[1] - lo[1]) / h) + 1;
+    size_t nc = (size_t)c->w * (size_t)c->h;
+    unsigned char *cov = calloc(nc ? nc : 1, 1);
+    c->dw = c->w + 2 * k;
+    c->dh = c->h + 2 * k;
+    c->dil = calloc((size_t)c->dw * (size_t)c->dh, 1);
+    unsigned char *tmp = calloc((size_t)c->dw * (size_t)c->dh, 1);
+    if (!cov || !c->dil || !tmp) {
+        free(cov);
+        free(tmp);
+        raster_free(c);
+        return err_nomem(err, "chart raster");
+    }
+    for (int i = 0; i < nfc; i++) {
+        double P[3][2];
+        for (int j = 0; j < 3; j++) {
+            rot(r, uv + 2 * (size_t)F[3 * fc[i] + j], P[j]);
+            P[j][0] = (P[j][0] - lo[0]) / h;
+            P[j][1] = (P[j][1] - lo[1]) / h;
+        }
+        double ylo = fmin(P[0][1], fmin(P[1][1], P[2][1])), yhi = fmax(P[0][1], fmax(P[1][1], P[2][1]));
+        int y0 = (int)floor(ylo), y1 = (int)floor(yhi);
+        if (y0 < 0) y0 = 0;
+        if (y1 > c->h - 1) y1 = c->h - 1;
+        for (int y = y0; y <= y1; y++) {
+            /* x-extent of the triangle within the band [y, y+1]: its
+             * vertices inside the band and its edges' crossings of the
+             * band's two lines (widened a little against rounding) */
+            double b0 = y, b1 = y + 1.0, xl = INFINITY, xr = -INFINITY;
+            for (int j = 0; j < 3; j++) {
+                const double *A = P[j], *B = P[(j + 1) % 3];
+                if (A[1] >= b0 && A[1] <= b1) {
+                    xl = fmin(xl, A[0]);
+                    xr = fmax(xr, A[0]);
+                }
+                for (int e = 0; e < 2; e++) {
+                    double yy = e ? b1 : b0;
+                    if ((A[1] - yy) * (B[1] - yy) <= 0.0 && A[1] != B[1]) {
+                        double t = (yy - A[1]) / (B[1] - A[1]);
+                        double xx = A[0] + t * (B[0] - A[0]);
+                        xl = fmin(xl, xx);
+                        xr = fmax(xr, xx);
+                    }
+                }
+            }
+            if (!(xl <= xr)) continue;
+            int x0 = (int)floor(xl - 1e-6), x1 = (int)floor(xr + 1e-6);
+            if (x0 < 0) x0 = 0;
+            if (x1 > c->w - 1) x1 = c->w - 1;
+            if (x1 >= x0) memset(cov + (size_t)y * c->w + x0, 1, (size_t)(x1 - x0 + 1));
+        }
+    }
+    /* runs */
+    int nrun = 0;
+    for (int y = 0; y < c->h; y++)
+        for (int x = 0; x < c->w; x++)
+            if (cov[(size_t)y * c->w + x] && (x == 0 || !cov[(size_t)y * c->w + x - 1])) nrun++;
+    c->run = malloc(sizeof(int) * 3 * (size_t)(nrun ? nrun : 1));
+    if (!c->run) {
+        free(cov);
+        free(tmp);
+        raster_free(c);
+        return err_nomem(err, "chart raster");
+    }
+    c->nrun = 0;
+    for (int y = 0; y < c->h; y++)
+        for (int x = 0; x < c->w; x++)
+            if (cov[(size_t)y * c->w + x] && (x == 0 || !cov[(size_t)y * c->w + x - 1])) {
+                int e = x;
+                while (e + 1 < c->w && cov[(size_t)y * c->w + e + 1]) e++;
+                int *rr = c->run + 3 * c->nrun++;
+                rr[0] = y;
+                rr[1] = x;
+                rr[2] = e;
+            }
+    /* separable Chebyshev dilation by k: rows, then columns */
+    for (int y = 0; y < c->h; y++)
+        for (int x = 0; x < c->w; x++)
+            if (cov[(size_t)y * c->w + x])
+                memset(tmp + (size_t)(y + k) * c->dw + x, 1, (size_t)(2 * k + 1));
+    for (int y = 0; y < c->dh; y++)
+        for (int x = 0; x < c->dw; x++)
+            if (tmp[(size_t)y * c->dw + x]) {
+                int a = y - k < 0 ? 0 : y - k, b = y + k > c->dh - 1 ? c->dh - 1 : y + k;
+                for (int yy = a; yy <= b; yy++) c->dil[(size_t)yy * c->dw + x] = 1;
+            }
+    free(cov);
+    free(tmp);
+    return SCAF_OK;
+}
+
+/* last[row * G + x]: the largest occupied column <= x in that row, or -1.
+ * Returns -1 when the cover of cr at (x, y) misses every occupied cell,
+ * else the smallest x' > x that could possibly fit in this row (the first
+ * conflicting run moved past the occupied cell it hit). */
+static int fit_next(const chart_raster *cr, const int *last, int G, int x, int y)
+{
+    if (x < 0 || y < 0 || x + cr->w > G || y + cr->h > G) return x + 1;
+    for (int q = 0; q < cr->nrun; q++) {
+        const int *rr = cr->run + 3 * q;
+        int occ = last[(size_t)(y + rr[0]) * G + x + rr[2]];
+        if (occ >= x + rr[1]) {
+            int nx = occ - rr[1] + 1;
+            return nx > x ? nx : x + 1;
+        }
+    }
+    return -1;
+}
+
+static int fits(const chart_raster *cr, const int *last, int G, int x, int y)
+{
+    return x >= 0 && y >= 0 && fit_next(cr, last, G, x, y) < 0;
+}
+
+typedef struct order_item {
+    double area;
+    int chart;
+} order_item;
+
+static int cmp_order(const void *x, const void *y)
+{
+    const order_item *p = x, *q = y;
+    if (p->area != q->area) return p->area > q->area ? -1 : 1;
+    return p->chart - q->chart;
+}
+
+int atlas_pack_strategies(int ncharts)
+{
+    if (ncharts <= 1) return 4; /* one chart: only its rotation matters */
+    return ncharts <= 32 ? 64 : 2;
+}
+
+scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
+                       int ncharts, int cells, double gap, int strategy, int *chosen, long *strat_side, double *out,
+                       scaf_error *err)
+{
+    scaf_status st = SCAF_OK;
+    int *start = calloc((size_t)ncharts + 1, sizeof(int));
+    int *faces = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
+    order_item *ord = malloc(sizeof *ord * (size_t)(ncharts ? ncharts : 1));
+    chart_raster *R = calloc((size_t)ncharts * NROT, sizeof *R);
+    int *place = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
+    unsigned char *occ = NULL;
+    int *pre = NULL, *best = NULL;
+    if (!start || !faces || !ord || !R || !place) {
+        st = err_nomem(err, "packing");
+        goto done;
+    }
+    /* ---- charts' faces and areas ------------------------------------------ */
+    double total = 0.0;
+    for (int c = 0; c < ncharts; c++) {
+        ord[c].area = 0.0;
+        ord[c].chart = c;
+    }
+    for (int f = 0; f < nf; f++) {
+        start[chart[f] + 1]++;
+        const double *a = uv + 2 * (size_t)F[3 * f], *b = uv + 2 * (size_t)F[3 * f + 1], *d = uv + 2 * (size_t)F[3 * f + 2];
+        double A = 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
+        ord[chart[f]].area += A;
+        total += A;
+    }
+    for (int c = 0; c < ncharts; c++) start[c + 1] += start[c];
+    {
+        int *fill = malloc(sizeof(int) * (size_t)(ncharts ? ncharts : 1));
+        if (!fill) {
+            st = err_nomem(err, "packing");
+            goto done;
+        }
+        memcpy(fill, start, sizeof(int) * (size_t)ncharts);
+        for (int f = 0; f < nf; f++) faces[fill[chart[f]]++] = f;
+        free(fill);
+    }
+    if (!(total > 0.0) || !isfinite(total)) {
+        st = err_set(err, SCAF_ERR_NUMERIC, "packing: the layout has no positive area");
+        goto done;
+    }
+    if (cells < 16) cells = 16;
+    double h = sqrt(total / 0.8) / cells;
+    /* long thin charts: coarser cells, so no chart spans more than
+     * 2 * cells (the grid stays O(cells^2)) */
+    for (int c = 0; c < ncharts; c++) {
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (int i = start[c]; i < start[c + 1]; i++)
+            for (int j = 0; j < 3; j++)
+                for (int q = 0; q < 2; q++) {
+                    double x = uv[2 * (size_t)F[3 * faces[i] + j] + q];
+                    lo[q] = fmin(lo[q], x);
+                    hi[q] = fmax(hi[q], x);
+                }
+        double diam = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+        if (diam > 2.0 * cells * h) h = diam / (2.0 * cells);
+    }
+    int k = (int)ceil(gap / h) + 1;
+    int maxdim = 0;
+    for (int c = 0; c < ncharts; c++)
+        for (int r = 0; r < NROT; r++) {
+            st = raster_chart(uv, F, faces + start[c], start[c + 1] - start[c], r, h, k, &R[NROT * c + r], err);
+            if (st != SCAF_OK) goto done;
+            if (R[NROT * c + r].w > maxdim) maxdim = R[NROT * c + r].w;
+            if (R[NROT * c + r].h > maxdim) maxdim = R[NROT * c + r].h;
+        }
+    /* ---- grid ---------------------------------------------------------------- */
+    int G = 2 * cells + maxdim + 2 * k + 2;
+    occ = malloc((size_t)G * (size_t)G);
+    pre = malloc((size_t)G * (size_t)G * sizeof(int));
+    best = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
+    if (!occ || !pre || !best) {
+        st = err_nomem(err, "packing grid");
+        goto done;
+    }
+    long bestSide = -1;
+    /* Strategies: chart order (area / longest side), rotations (multiples
+     * of 90 degrees only / all), tie rule (lowest bottom / lowest top). */
+    /* (many charts: the two cheapest, 90-degree rotations only) */
+    int nstrat = atlas_pack_strategies(ncharts);
+    unsigned rng = 2463534242u;
+    for (int strat = 0; strat < nstrat; strat++) {
+        if (strat_side) strat_side[strat] = -1;
+        if (strategy >= 0 && strat != strategy) {
+            /* keep the perturbation sequence identical to a full run */
+            if (strat >= 8)
+                for (int c = 0; c < ncharts; c++) {
+                    rng ^= rng << 13;
+                    rng ^= rng >> 17;
+                    rng ^= rng << 5;
+                }
+            continue;
+        }
+        int by_dim = 0, all_rot = 0, top = strat & 1;
+        if (ncharts <= 32) {
+            by_dim = strat & 1;
+            all_rot = (strat >> 1) & 1;
+            top = (strat >> 2) & 1;
+        }
+        for (int c = 0; c < ncharts; c++) {
+            ord[c].chart = c;
+            ord[c].area = 0.0;
+            if (by_dim) {
+                const chart_raster *r0 = &R[NROT * c];
+                ord[c].area = r0->w > r0->h ? r0->w : r0->h;
+            }
+        }
+        if (!by_dim)
+            for (int f = 0; f < nf; f++) {
+                const double *p0 = uv + 2 * (size_t)F[3 * f], *p1 = uv + 2 * (size_t)F[3 * f + 1], *p2 = uv + 2 * (size_t)F[3 * f + 2];
+                ord[chart[f]].area += (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+            }
+        if (strat >= 8) /* perturbed orders (deterministic xorshift) */
+            for (int c = 0; c < ncharts; c++) {
+                rng ^= rng << 13;
+                rng ^= rng >> 17;
+                rng ^= rng << 5;
+                ord[c].area *= 1.0 + 0.6 * (rng % 1000) / 1000.0;
+            }
+        qsort(ord, (size_t)ncharts, sizeof *ord, cmp_order);
+        memset(occ, 0, (size_t)G * (size_t)G);
+        for (size_t i = 0; i < (size_t)G * (size_t)G; i++) pre[i] = -1;
+        int curX = 0, curY = 0;
+        for (int oi = 0; oi < ncharts; oi++) {
+            int c = ord[oi].chart;
+            long bestS = -1;
+            int bx = 0, by = 0, br = 0, bkey = 0;
+            for (int r = 0; r < NROT; r += all_rot ? 1 : NROT / 4) {
+                const chart_raster *cr = &R[NROT * c + r];
+                for (int y = 0; y + cr->h <= G; y++) {
+                    long sy = curY > y + cr->h ? curY : y + cr->h;
+                    if (bestS >= 0 && sy > bestS) break;
+                    int key = top ? y + cr->h : y;
+                    if (bestS >= 0 && sy == bestS && top && key > bkey + maxdim) break;
+                    for (int x = 0, nx; x + cr->w <= G; x = nx) {
+                        long sz = curX > x + cr->w ? curX : x + cr->w;
+                        if (sy > sz) sz = sy;
+                        if (bestS >= 0 && (sz > bestS || (sz == bestS && (key > bkey || (key == bkey && x >= bx)))))
+                            break;
+                        nx = fit_next(cr, pre, G, x, y);
+                        if (nx < 0) {
+                            bestS = sz;
+                            bx = x;
+                            by = y;
+                            br = r;
+                            bkey = key;
+                            break;
+                        }
+                    }
+                }
+            }
+            if (bestS < 0) {
+                curX = curY = G + 1; /* this strategy failed */
+                break;
+            }
+            const chart_raster *cr = &R[NROT * c + br];
+            /* slide left, then down, while it fits (closes the gaps the
+             * row scan leaves beside concave neighbours) */
+            for (int moved = 1; moved;) {
+                moved = 0;
+                while (fits(cr, pre, G, bx - 1, by)) bx--, moved = 1;
+                while (fits(cr, pre, G, bx, by - 1)) by--, moved = 1;
+            }
+            place[3 * c] = bx;
+            place[3 * c + 1] = by;
+            place[3 * c + 2] = br;
+            if (bx + cr->w > curX) curX = bx + cr->w;
+            if (by + cr->h > curY) curY = by + cr->h;
+            /* mark the dilated cover, update the touched rows' prefix counts */
+            for (int yy = 0; yy < cr->dh; yy++) {
+                int gy = by - k + yy;
+                if (gy < 0 || gy >= G) continue;
+                for (int xx = 0; xx < cr->dw; xx++) {
+                    int gx = bx - k + xx;
+                    if (gx < 0 || gx >= G) continue;
+                    if (cr->dil[(size_t)yy * cr->dw + xx]) occ[(size_t)gy * G + gx] = 1;
+                }
+                /* last occupied column: recompute from the chart's left
+                 * edge, past its right edge only while it changes */
+                int *row = pre + (size_t)gy * (size_t)G;
+                int x0 = bx - k < 0 ? 0 : bx - k, x1 = bx - k + cr->dw;
+                int l = x0 > 0 ? row[x0 - 1] : -1;
+                for (int x = x0; x < G; x++) {
+                    if (occ[(size_t)gy * G + x]) l = x;
+                    if (x >= x1 && row[x] >= l) break;
+                    row[x] = l;
+                }
+            }
+        }
+        long side = curX > curY ? curX : curY;
+        if (strat_side) strat_side[strat] = side <= G ? side : -1;
+        if (side <= G && (bestSide < 0 || side < bestSide)) {
+            bestSide = side;
+            if (chosen) *chosen = strat;
+            memcpy(best, place, sizeof(int) * 3 * (size_t)ncharts);
+        }
+    }
+    if (bestSide < 0) {
+        st = err_set(err, SCAF_ERR_NUMERIC, "packing: the charts do not fit the grid");
+        goto done;
+    }
+    memcpy(place, best, sizeof(int) * 3 * (size_t)ncharts);
+    /* ---- move the charts ---------------------------------------------------- */
+    for (int v = 0; v < nw; v++) {
+        int c = wchart[v];
+        if (c < 0) {
+            out[2 * (size_t)v] = uv[2 * (size_t)v];
+            out[2 * (size_t)v + 1] = uv[2 * (size_t)v + 1];
+            continue;
+        }
+        const chart_raster *cr = &R[NROT * c + place[3 * c + 2]];
+        double q[2];
+        rot(place[3 * c + 2], uv + 2 * (size_t)v, q);
+        out[2 * (size_t)v] = (q[0] - cr->m[0]) + place[3 * c] * h;
+        out[2 * (size_t)v + 1] = (q[1] - cr->m[1]) + place[3 * c + 1] * h;
+    }
+done:
+    if (R)
+        for (int i = 0; i < NROT * ncharts; i++) raster_free(&R[i]);
+    free(R);
+    free(start);
+    free(faces);
+    free(ord);
+    free(place);
+    free(occ);
+    free(pre);
+    free(best);
+    return st;
+}

@@ -1,0 +1,172 @@
+/* app/atlas_report: JSON report and SVG picture of an atlas (see
+ * atlas_report.h). */
+#include "app/atlas_report.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "app/atomic_file.h"
+
+static void json_string(FILE *o, const char *s)
+{
+    if (!s) {
+        fputs("null", o);
+        return;
+    }
+    fputc('"', o);
+    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
+        if (*c == '"' || *c == '\\') fprintf(o, "\\%c", *c);
+        else if (*c < 0x20) fprintf(o, "\\u%04x", *c);
+        else fputc(*c, o);
+    }
+    fputc('"', o);
+}
+
+static void json_number(FILE *o, double x)
+{
+    if (isfinite(x)) fprintf(o, "%.17g", x);
+    else fputs("null", o);
+}
+
+scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_error *err)
+{
+    const atlas *a = r->a;
+    double *E = malloc(sizeof(double) * (size_t)(a->ncharts ? a->ncharts : 1));
+    if (!E) return err_nomem(err, "atlas report");
+    atlas_chart_energy(a, E);
+    atomic_file af;
+    scaf_status st = atomic_open(&af, path, err);
+    if (st != SCAF_OK) {
+        free(E);
+        return st;
+    }
+    FILE *o = af.f;
+    const atlas_options *op = &a->opt;
+    fputs("{\n  \"command\": \"atlas\",\n  \"input\": ", o);
+    json_string(o, r->input);
+    fputs(",\n  \"output\": ", o);
+    json_string(o, r->output);
+    fputs(",\n  \"options\": {\"padding\": ", o);
+    json_number(o, op->padding);
+    fputs(", \"resolution\": ", o);
+    json_number(o, r->resolution > 0 ? r->resolution : NAN);
+    fprintf(o, ", \"init\": \"%s\", \"settle_iterations\": %d, \"settle_tolerance\": ",
+            op->init_input ? "input" : (op->base.init == SCAF_INIT_HARMONIC ? "harmonic" : "tutte"),
+            op->settle_iterations);
+    json_number(o, op->settle_tolerance);
+    fprintf(o, ", \"compact_iterations\": %d, \"compact_box_scale\": ", op->compact_iterations);
+    json_number(o, op->compact_box_scale);
+    fputs(", \"compact_fraction\": ", o);
+    json_number(o, op->compact_fraction);
+    fputs(", \"distortion_tolerance\": ", o);
+    json_number(o, op->distortion_tolerance);
+    fputs(", \"box_scale\": ", o);
+    json_number(o, op->base.box_scale);
+    fputs(", \"lambda_ratio\": ", o);
+    json_number(o, op->base.lambda_ratio);
+    fprintf(o, "},\n  \"vertices\": %d,\n  \"faces\": %d,\n  \"charts\": %d,\n  \"split_uvs\": %d,\n", a->nv, a->nf,
+            a->ncharts, a->split_uvs);
+    fputs("  \"setup_seconds\": ", o);
+    json_number(o, r->setup_seconds);
+    fputs(",\n  \"total_seconds\": ", o);
+    json_number(o, r->total_seconds);
+    fprintf(o, ",\n  \"settle_iterations_run\": %d,\n  \"compact_iterations_run\": %d,\n", a->settle_done,
+            a->compact_done);
+    fputs("  \"settled_energy\": ", o);
+    json_number(o, a->settled_energy);
+    fputs(",\n  \"final_energy\": ", o);
+    json_number(o, scaf_loop_energy(&a->loop));
+    fputs(",\n  \"packing_efficiency_before_compaction\": ", o);
+    json_number(o, a->eff_before);
+    fputs(",\n  \"packing_efficiency_after_repack\": ", o);
+    json_number(o, a->eff_packed);
+    fputs(",\n  \"packing_efficiency_after_compaction\": ", o);
+    json_number(o, a->eff_after);
+    fputs(",\n  \"min_chart_gap_before_compaction\": ", o);
+    json_number(o, a->gap_before);
+    fputs(",\n  \"min_chart_gap_after_compaction\": ", o);
+    json_number(o, a->gap_after);
+    fputs(",\n  \"min_chart_gap\": ", o);
+    json_number(o, r->out_gap);
+    fputs(",\n  \"packing_efficiency\": ", o);
+    json_number(o, r->out_efficiency);
+    fputs(",\n  \"chart_distortion\": [", o);
+    for (int c = 0; c < a->ncharts; c++) {
+        if (c) fputs(", ", o);
+        json_number(o, E[c]);
+    }
+    fputs("],\n  \"iterations\": [", o);
+    for (int i = 0; i < r->niterations; i++) {
+        const atlas_iteration *it = &r->iterations[i];
+        fprintf(o, "%s\n    {\"iteration\": %d, \"phase\": \"%s\", \"energy\": ", i ? "," : "", it->info.iteration,
+                it->phase == ATLAS_COMPACT ? "compact" : "settle");
+        json_number(o, it->info.energy);
+        fputs(", \"total_before\": ", o);
+        json_number(o, it->info.total_before);
+        fputs(", \"total_after\": ", o);
+        json_number(o, it->info.total_after);
+        fputs(", \"step\": ", o);
+        json_number(o, it->info.step);
+        fputs(", \"seconds\": ", o);
+        json_number(o, it->info.seconds);
+        fprintf(o, ", \"scaffold_triangles\": %d, \"side\": ", it->info.scaffold_triangles);
+        json_number(o, it->side);
+        fputs(", \"min_chart_gap\": ", o);
+        json_number(o, it->gap);
+        fputs(", \"packing_efficiency\": ", o);
+        json_number(o, it->efficiency);
+        fputc('}', o);
+    }
+    fputs("\n  ]\n}\n", o);
+    free(E);
+    return atomic_commit(&af, err);
+}
+
+static unsigned chart_colour(int c)
+{
+    double h = fmod(0.13 + 0.6180339887498949 * c, 1.0) * 6.0, s = 0.55, v = 0.92;
+    int i = (int)h;
+    double f = h - i, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+    double rgb[6][3] = {{v, t, p}, {q, v, p}, {p, v, t}, {p, q, v}, {t, p, v}, {v, p, q}};
+    unsigned out = 0;
+    for (int k = 0; k < 3; k++) out = (out << 8) | (unsigned)lround(rgb[i % 6][k] * 255.0);
+    return out;
+}
+
+scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, const char *title, scaf_error *err)
+{
+    atomic_file af;
+    scaf_status st = atomic_open(&af, path, err);
+    if (st != SCAF_OK) return st;
+    FILE *o = af.f;
+    const double S = 1000.0, M = 20.0;
+    fprintf(o, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    fprintf(o, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
+            S + 2 * M, S + 2 * M + 30, S + 2 * M, S + 2 * M + 30);
+    fprintf(o, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
+    if (title) {
+        fprintf(o, "<text x=\"%.0f\" y=\"20\" font-family=\"sans-serif\" font-size=\"14\">", M);
+        for (const char *c = title; *c; c++) {
+            if (*c == '<') fputs("&lt;", o);
+            else if (*c == '>') fputs("&gt;", o);
+            else if (*c == '&') fputs("&amp;", o);
+            else fputc(*c, o);
+        }
+        fputs("</text>\n", o);
+    }
+    fprintf(o, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" stroke=\"#888\"/>\n", M,
+            M + 30, S, S);
+    fprintf(o, "<g stroke-width=\"0.15\" stroke-linejoin=\"round\">\n");
+    for (int f = 0; f < a->nf; f++) {
+        unsigned col = chart_colour(a->chart[f]);
+        fputs("<polygon points=\"", o);
+        for (int j = 0; j < 3; j++) {
+            const double *p = UV + 2 * (size_t)a->Fw[3 * f + j];
+            fprintf(o, "%s%.2f,%.2f", j ? " " : "", M + p[0] * S, M + 30 + (1.0 - p[1]) * S);
+        }
+        fprintf(o, "\" fill=\"#%06x\" stroke=\"#%06x\"/>\n", col, col);
+    }
+    fputs("</g>\n</svg>\n", o);
+    return atomic_commit(&af, err);
+}

@@ -1,0 +1,33 @@
+/* app/atlas_report: the JSON report and the SVG picture of an atlas run.
+ *
+ * Report: one JSON object with the input/output names, options, chart
+ * count, split UVs, every iteration (phase, E, total energy before/after
+ * the step, step, seconds, side, normalized smallest chart gap, packing
+ * efficiency), packing efficiency and min_chart_gap before and after
+ * compaction, the final ones of the output, and per-chart distortion.
+ * Picture: the normalized atlas in the unit square, each chart filled in
+ * its own colour (golden-ratio hues), the unit square outlined. Both
+ * written atomically
+ * (app/atomic_file); fail only with SCAF_ERR_IO / SCAF_ERR_NOMEM.
+ */
+#ifndef SCAF_APP_ATLAS_REPORT_H
+#define SCAF_APP_ATLAS_REPORT_H
+
+#include "app/atlas.h"
+
+typedef struct atlas_report {
+    const char *input, *output;   /* may be NULL */
+    const atlas *a;
+    double resolution;            /* texels (0: not given) */
+    double setup_seconds, total_seconds;
+    double out_gap, out_efficiency; /* of the written, normalized layout */
+    int niterations;
+    const atlas_iteration *iterations;
+} atlas_report;
+
+scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_error *err);
+
+/* UV nw by 2 normalized positions (faces a->Fw, charts a->chart). */
+scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, const char *title, scaf_error *err);
+
+#endif /* SCAF_APP_ATLAS_REPORT_H */

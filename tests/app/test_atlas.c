@@ -1,0 +1,342 @@
+/* Tests of app/atlas: the multi-chart atlas on generated meshes.
+ *
+ * Meshes are built here: many small curved patches (each a component, a
+ * disk), patches with a hole, the cubesphere sample (6 vt charts), a closed
+ * component. Properties asserted, all decided by independent code: after
+ * EVERY iteration the map is bijective by the exact checker, the chart gap
+ * is at least padding * side (the normalized padding), and an accepted
+ * step lowers that iteration's total energy; the normalized output lies in
+ * the unit square with the same properties; seams are preserved (two
+ * corners share an output UV exactly when they shared an input vt);
+ * invalid charts and non-bijective input UVs are refused with a message
+ * naming the chart / the reason. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "app/atlas.h"
+#include "geom/bijectivity.h"
+#include "geom/chart_gap.h"
+#include "mesh/samples.h"
+
+/* ---- generated meshes ---------------------------------------------------- */
+
+/* n patches, patch i an (r+1) x (r+1) grid of size s_i, bent in z, laid out
+ * far apart in 3D; with hole, the middle cell of each patch is removed
+ * (r must be odd). */
+static void patches(mesh *m, int n, int r, int hole)
+{
+    int nvp = (r + 1) * (r + 1), nfp = 2 * r * r - (hole ? 2 : 0);
+    memset(m, 0, sizeof *m);
+    m->nv = n * nvp;
+    m->nf = n * nfp;
+    m->V = malloc(sizeof(double) * 3 * (size_t)m->nv);
+    m->F = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    assert_non_null(m->V);
+    assert_non_null(m->F);
+    int f = 0;
+    for (int p = 0; p < n; p++) {
+        double s = 0.5 + 0.37 * (p % 7) + 0.11 * (p % 3);
+        for (int j = 0; j <= r; j++)
+            for (int i = 0; i <= r; i++) {
+                double *v = m->V + 3 * (size_t)(p * nvp + j * (r + 1) + i);
+                double x = s * i / r, y = s * j / r;
+                v[0] = x + 10.0 * p;
+                v[1] = y;
+                v[2] = 0.3 * s * sin(1.3 * x / s + p) * cos(0.7 * y / s);
+            }
+        for (int j = 0; j < r; j++)
+            for (int i = 0; i < r; i++) {
+                if (hole && i == r / 2 && j == r / 2) continue;
+                int a = p * nvp + j * (r + 1) + i, b = a + 1, c = a + r + 1, d = c + 1;
+                int *t = m->F + 3 * (size_t)f;
+                t[0] = a, t[1] = b, t[2] = d;
+                t[3] = a, t[4] = d, t[5] = c;
+                f += 2;
+            }
+    }
+    assert_int_equal(f, m->nf);
+}
+
+/* ---- per-iteration checks ---------------------------------------------- */
+
+typedef struct check_state {
+    int iterations, compact_iterations;
+    double padding;
+} check_state;
+
+static int check_iteration(const atlas *a, const atlas_iteration *it, void *user)
+{
+    check_state *s = user;
+    s->iterations++;
+    if (it->phase == ATLAS_COMPACT) s->compact_iterations++;
+    bij_report r;
+    scaf_error err;
+    assert_int_equal(bij_check(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, NULL, &r, &err), SCAF_OK);
+    assert_true(r.bijective);
+    assert_int_equal(r.flipped, 0);
+    assert_int_equal(r.boundary_crossings, 0);
+    if (s->padding > 0.0 && a->ncharts > 1) {
+        double g, side = atlas_side(a);
+        assert_int_equal(chart_gap_min(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, 0.0, &g, NULL, &err), SCAF_OK);
+        assert_true(g >= s->padding * side);
+    }
+    if (it->info.step > 0.0) assert_true(it->info.total_after < it->info.total_before);
+    return 0;
+}
+
+static void check_output(const atlas *a, double padding)
+{
+    double *UV = malloc(sizeof(double) * 2 * (size_t)a->nw);
+    assert_non_null(UV);
+    atlas_normalized_uv(a, UV);
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < 2 * a->nw; i++) {
+        lo = fmin(lo, UV[i]);
+        hi = fmax(hi, UV[i]);
+    }
+    assert_true(lo >= 0.0);
+    assert_true(hi <= 1.0);
+    bij_report r;
+    scaf_error err;
+    assert_int_equal(bij_check(a->nw, UV, a->nf, a->Fw, NULL, NULL, &r, &err), SCAF_OK);
+    assert_true(r.bijective);
+    double g;
+    assert_int_equal(chart_gap_min(a->nw, UV, a->nf, a->Fw, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    if (a->ncharts > 1) assert_true(g >= padding);
+    double eff = chart_packing_efficiency(a->nw, UV, a->nf, a->Fw);
+    assert_true(eff > 0.0 && eff <= 1.0);
+    free(UV);
+}
+
+/* ---- tests ------------------------------------------------------------------ */
+
+static void many_patches_with_padding(void **state)
+{
+    (void)state;
+    mesh m;
+    patches(&m, 12, 4, 0);
+    atlas_options o = atlas_options_default();
+    o.padding = 4.0 / 1024.0;
+    o.pack_cells = 256;
+    o.settle_iterations = 6;
+    o.compact_iterations = 6;
+    atlas a;
+    scaf_error err;
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    assert_int_equal(a.ncharts, 12);
+    check_state s = {0, 0, o.padding};
+    assert_int_equal(atlas_run(&a, check_iteration, &s, &err), SCAF_OK);
+    assert_true(s.iterations >= 2);
+    assert_true(s.compact_iterations >= 1);
+    /* compaction (and re-placement) never loosen the packing */
+    assert_true(a.eff_after >= a.eff_before);
+    check_output(&a, o.padding);
+    double *E = malloc(sizeof(double) * (size_t)a.ncharts);
+    atlas_chart_energy(&a, E);
+    for (int c = 0; c < a.ncharts; c++) assert_true(E[c] >= 4.0 - 1e-9 && isfinite(E[c]));
+    free(E);
+    atlas_free(&a);
+    mesh_free(&m);
+}
+
+static void patches_with_holes(void **state)
+{
+    (void)state;
+    mesh m;
+    patches(&m, 4, 5, 1);
+    atlas_options o = atlas_options_default();
+    o.padding = 0.01;
+    o.pack_cells = 256;
+    o.settle_iterations = 4;
+    o.compact_iterations = 4;
+    atlas a;
+    scaf_error err;
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    assert_int_equal(a.ncharts, 4);
+    check_state s = {0, 0, o.padding};
+    assert_int_equal(atlas_run(&a, check_iteration, &s, &err), SCAF_OK);
+    check_output(&a, o.padding);
+    atlas_free(&a);
+    mesh_free(&m);
+}
+
+/* 500 small charts: setup, a few iterations, all checked. */
+static void five_hundred_charts(void **state)
+{
+    (void)state;
+    mesh m;
+    patches(&m, 500, 2, 0);
+    atlas_options o = atlas_options_default();
+    o.padding = 0.0005;
+    o.pack_cells = 256;
+    o.settle_iterations = 2;
+    o.compact_iterations = 2;
+    atlas a;
+    scaf_error err;
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    assert_int_equal(a.ncharts, 500);
+    check_state s = {0, 0, o.padding};
+    assert_int_equal(atlas_run(&a, check_iteration, &s, &err), SCAF_OK);
+    assert_true(s.iterations >= 2);
+    check_output(&a, o.padding);
+    atlas_free(&a);
+    mesh_free(&m);
+}
+
+/* The cubesphere sample: 6 vt charts; seams preserved. */
+static void cubesphere_seams_preserved(void **state)
+{
+    (void)state;
+    mesh m;
+    scaf_error err;
+    assert_int_equal(mesh_sample_make("cubesphere", 4, &m, &err), SCAF_OK);
+    assert_true(mesh_has_uv(&m));
+    atlas_options o = atlas_options_default();
+    o.padding = 0.004;
+    o.pack_cells = 256;
+    o.settle_iterations = 5;
+    o.compact_iterations = 5;
+    atlas a;
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    assert_int_equal(a.ncharts, 6);
+    assert_int_equal(a.split_uvs, 0);
+    check_state s = {0, 0, o.padding};
+    assert_int_equal(atlas_run(&a, check_iteration, &s, &err), SCAF_OK);
+    check_output(&a, o.padding);
+    /* corners share an output UV exactly when they share an input vt */
+    int *first = malloc(sizeof(int) * (size_t)m.nuv);
+    int *back = malloc(sizeof(int) * (size_t)a.nw);
+    for (int i = 0; i < m.nuv; i++) first[i] = -1;
+    for (int i = 0; i < a.nw; i++) back[i] = -1;
+    for (int c = 0; c < 3 * m.nf; c++) {
+        int in = m.FT[c], out = a.Fw[c];
+        if (first[in] < 0) first[in] = out;
+        assert_int_equal(first[in], out);
+        if (back[out] < 0) back[out] = in;
+        assert_int_equal(back[out], in);
+    }
+    free(first);
+    free(back);
+    atlas_free(&a);
+    mesh_free(&m);
+}
+
+static void closed_chart_is_refused(void **state)
+{
+    (void)state;
+    mesh m;
+    scaf_error err;
+    assert_int_equal(mesh_sample_make("tetrahedron", 1, &m, &err), SCAF_OK);
+    atlas a;
+    atlas_options o = atlas_options_default();
+    err_clear(&err);
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_ERR_MESH);
+    assert_non_null(strstr(err.message, "chart"));
+    mesh_free(&m);
+}
+
+/* --init input: refused when the UVs overlap, used when bijective. */
+static void init_input(void **state)
+{
+    (void)state;
+    mesh m;
+    patches(&m, 2, 3, 0);
+    /* UVs = the flat grid coordinates (x, y) of each patch: the two
+     * patches overlap in UV */
+    m.nuv = m.nv;
+    m.UV = malloc(sizeof(double) * 2 * (size_t)m.nv);
+    m.FT = malloc(sizeof(int) * 3 * (size_t)m.nf);
+    for (int v = 0; v < m.nv; v++) {
+        m.UV[2 * v] = m.V[3 * v] - 10.0 * (v / 16);
+        m.UV[2 * v + 1] = m.V[3 * v + 1];
+    }
+    memcpy(m.FT, m.F, sizeof(int) * 3 * (size_t)m.nf);
+    atlas_options o = atlas_options_default();
+    o.init_input = 1;
+    atlas a;
+    scaf_error err;
+    err_clear(&err);
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_ERR_MESH);
+    assert_non_null(strstr(err.message, "not bijective"));
+    /* move the second patch away: now bijective, and used as the start */
+    for (int v = 16; v < m.nv; v++) m.UV[2 * v] += 5.0;
+    err_clear(&err);
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    /* the start is the input up to one power-of-two scale (here the UVs
+     * are already at the surface's scale: factor 1) */
+    for (int c = 0; c < 3 * m.nf; c++) {
+        assert_true(a.loop.uv[2 * a.Fw[c]] == m.UV[2 * m.FT[c]]);
+        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == m.UV[2 * m.FT[c] + 1]);
+    }
+    atlas_free(&a);
+    /* UVs 8 times too small: scaled back by exactly 8 */
+    for (int i = 0; i < 2 * m.nuv; i++) m.UV[i] /= 8.0;
+    err_clear(&err);
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    for (int c = 0; c < 3 * m.nf; c++) {
+        assert_true(a.loop.uv[2 * a.Fw[c]] == 8.0 * m.UV[2 * m.FT[c]]);
+        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == 8.0 * m.UV[2 * m.FT[c] + 1]);
+    }
+    atlas_free(&a);
+    mesh_free(&m);
+}
+
+/* Two triangles sharing only a vt (a pinch): split into two. */
+static void split_fans(void **state)
+{
+    (void)state;
+    int FT[6] = {0, 1, 2, 0, 3, 4};
+    int *FT2, *map, n2, ns;
+    scaf_error err;
+    assert_int_equal(atlas_split_fans(2, FT, 5, &FT2, &n2, &map, &ns, &err), SCAF_OK);
+    assert_int_equal(ns, 1);
+    assert_int_equal(n2, 6);
+    assert_int_not_equal(FT2[0], FT2[3]);
+    assert_int_equal(map[FT2[3]], 0);
+    free(FT2);
+    free(map);
+    /* two triangles sharing an edge: nothing split */
+    int G[6] = {0, 1, 2, 0, 2, 3};
+    assert_int_equal(atlas_split_fans(2, G, 4, &FT2, &n2, &map, &ns, &err), SCAF_OK);
+    assert_int_equal(ns, 0);
+    assert_memory_equal(FT2, G, sizeof G);
+    free(FT2);
+    free(map);
+}
+
+static void padding_too_large_is_refused(void **state)
+{
+    (void)state;
+    mesh m;
+    patches(&m, 30, 2, 0);
+    atlas_options o = atlas_options_default();
+    o.padding = 0.2;
+    atlas a;
+    scaf_error err;
+    err_clear(&err);
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_ERR_USAGE);
+    assert_non_null(strstr(err.message, "padding"));
+    mesh_free(&m);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(many_patches_with_padding),
+        cmocka_unit_test(patches_with_holes),
+        cmocka_unit_test(five_hundred_charts),
+        cmocka_unit_test(cubesphere_seams_preserved),
+        cmocka_unit_test(closed_chart_is_refused),
+        cmocka_unit_test(init_input),
+        cmocka_unit_test(split_fans),
+        cmocka_unit_test(padding_too_large_is_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

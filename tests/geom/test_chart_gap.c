@@ -1,0 +1,148 @@
+/* Tests of geom/chart_gap: chart labels, smallest distance between
+ * different charts (against brute-force segment distances), packing
+ * efficiency on layouts whose numbers are known by construction. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <cmocka.h>
+
+#include "geom/chart_gap.h"
+
+/* Unit squares (2 triangles each) with lower-left corners at (ox[i], oy[i]). */
+static void squares(int n, const double *ox, const double *oy, double *UV, int *F)
+{
+    for (int i = 0; i < n; i++) {
+        double *p = UV + 8 * i;
+        p[0] = ox[i], p[1] = oy[i];
+        p[2] = ox[i] + 1, p[3] = oy[i];
+        p[4] = ox[i] + 1, p[5] = oy[i] + 1;
+        p[6] = ox[i], p[7] = oy[i] + 1;
+        int *t = F + 6 * i, b = 4 * i;
+        t[0] = b, t[1] = b + 1, t[2] = b + 2;
+        t[3] = b, t[4] = b + 2, t[5] = b + 3;
+    }
+}
+
+static void two_squares_gap(void **state)
+{
+    (void)state;
+    double ox[2] = {0, 1.25}, oy[2] = {0, 0.5}, UV[16];
+    int F[12], chart[4], nc;
+    squares(2, ox, oy, UV, F);
+    scaf_error err;
+    assert_int_equal(chart_gap_labels(8, 4, F, chart, &nc, &err), SCAF_OK);
+    assert_int_equal(nc, 2);
+    assert_int_equal(chart[0], chart[1]);
+    assert_int_not_equal(chart[0], chart[2]);
+    double g;
+    int pair[2];
+    assert_int_equal(chart_gap_min(8, UV, 4, F, NULL, 0.0, &g, pair, &err), SCAF_OK);
+    assert_true(fabs(g - 0.25) < 1e-15);
+    assert_int_equal(pair[0], 0);
+    assert_int_equal(pair[1], 1);
+    /* a radius below the gap finds nothing */
+    assert_int_equal(chart_gap_min(8, UV, 4, F, NULL, 0.2, &g, NULL, &err), SCAF_OK);
+    assert_true(isinf(g));
+    /* touching squares: gap exactly 0 */
+    ox[1] = 1.0;
+    squares(2, ox, oy, UV, F);
+    assert_int_equal(chart_gap_min(8, UV, 4, F, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    assert_true(g == 0.0);
+    /* one chart: no pair */
+    assert_int_equal(chart_gap_min(8, UV, 2, F, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    assert_true(isinf(g));
+}
+
+static void corner_distance(void **state)
+{
+    (void)state;
+    double ox[2] = {0, 4}, oy[2] = {0, 5}, UV[16];
+    int F[12];
+    squares(2, ox, oy, UV, F);
+    double g;
+    scaf_error err;
+    assert_int_equal(chart_gap_min(8, UV, 4, F, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    assert_true(fabs(g - 5.0) < 1e-12); /* (1,1) to (4,5) */
+}
+
+/* Many random squares on a lattice (never overlapping): grid search equals
+ * brute force over all boundary segment pairs. */
+static void random_layout_matches_brute_force(void **state)
+{
+    (void)state;
+    enum { N = 60 };
+    double ox[N], oy[N], UV[8 * N];
+    int F[6 * N];
+    unsigned seed = 12345;
+    for (int i = 0; i < N; i++) {
+        seed = seed * 1103515245u + 12345u;
+        double jx = (seed >> 8) % 1000 / 1000.0 * 0.8;
+        seed = seed * 1103515245u + 12345u;
+        double jy = (seed >> 8) % 1000 / 1000.0 * 0.8;
+        ox[i] = 2.0 * (i % 8) + jx;
+        oy[i] = 2.0 * (i / 8) + jy;
+    }
+    squares(N, ox, oy, UV, F);
+    double g;
+    scaf_error err;
+    assert_int_equal(chart_gap_min(4 * N, UV, 2 * N, F, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    double best = INFINITY;
+    for (int a = 0; a < N; a++)
+        for (int b = a + 1; b < N; b++)
+            for (int i = 0; i < 4; i++)
+                for (int j = 0; j < 4; j++) {
+                    const double *p1 = UV + 8 * a + 2 * i, *p2 = UV + 8 * a + 2 * ((i + 1) % 4);
+                    const double *q1 = UV + 8 * b + 2 * j, *q2 = UV + 8 * b + 2 * ((j + 1) % 4);
+                    double d = chart_segment_distance(p1, p2, q1, q2);
+                    if (d < best) best = d;
+                }
+    assert_true(g == best);
+    unsigned char mark[N] = {0};
+    long np;
+    assert_int_equal(chart_gap_min(4 * N, UV, 2 * N, F, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    int *seg, nseg, chart[2 * N], nc;
+    assert_int_equal(chart_gap_labels(4 * N, 2 * N, F, chart, &nc, &err), SCAF_OK);
+    assert_int_equal(chart_gap_segments(2 * N, F, chart, &seg, &nseg, &err), SCAF_OK);
+    assert_int_equal(nseg, 4 * N);
+    assert_int_equal(chart_gap_mark_close(UV, seg, nseg, best * 1.0000001, mark, &np, &err), SCAF_OK);
+    assert_true(np >= 1);
+    int marked = 0;
+    for (int i = 0; i < N; i++) marked += mark[i];
+    assert_true(marked >= 2);
+    free(seg);
+}
+
+static void packing_efficiency(void **state)
+{
+    (void)state;
+    /* two unit squares side by side at distance 0.5: area 2, side 2.5 */
+    double ox[2] = {0, 1.5}, oy[2] = {0, 0}, UV[16];
+    int F[12];
+    squares(2, ox, oy, UV, F);
+    assert_true(fabs(chart_packing_efficiency(8, UV, 4, F) - 2.0 / 6.25) < 1e-15);
+    /* one square: 1 */
+    assert_true(fabs(chart_packing_efficiency(4, UV, 2, F) - 1.0) < 1e-15);
+}
+
+static void segment_distance(void **state)
+{
+    (void)state;
+    double a[2] = {0, 0}, b[2] = {2, 0}, c[2] = {1, -1}, d[2] = {1, 1}, e[2] = {3, 1}, f[2] = {4, 1};
+    assert_true(chart_segment_distance(a, b, c, d) == 0.0); /* crossing */
+    assert_true(fabs(chart_segment_distance(a, b, e, f) - sqrt(2.0)) < 1e-15);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(two_squares_gap),
+        cmocka_unit_test(corner_distance),
+        cmocka_unit_test(random_layout_matches_brute_force),
+        cmocka_unit_test(packing_efficiency),
+        cmocka_unit_test(segment_distance),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

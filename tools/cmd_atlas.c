@@ -1,0 +1,306 @@
+/* tools/cmd_atlas: `scaf atlas IN -o OUT.obj`: multi-chart texture atlas.
+ *
+ * Reads the mesh, optimizes all charts together inside one scaffold
+ * (app/atlas: settle, then compaction), normalizes the layout with one
+ * uniform scale into the unit square, verifies the result with the exact
+ * checker (bijective) and the chart-gap measure (>= padding), and only
+ * then writes the OBJ (original `v` lines, new `vt` + `f v/vt`)
+ * atomically; optional JSON report and SVG picture. Bad input gives a
+ * message and the exit status of tools/exit_codes.h, and no output file.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "app/atlas.h"
+#include "app/atlas_report.h"
+#include "exit_codes.h"
+#include "geom/bijectivity.h"
+#include "geom/chart_gap.h"
+#include "mesh/mesh_io.h"
+
+static void usage(FILE *o)
+{
+    fprintf(o,
+            "usage: scaf atlas IN -o OUT.obj [options]\n"
+            "\n"
+            "Builds a texture atlas: every chart (connected component of a mesh without vt,\n"
+            "or UV chart cut along the input's UV seams) is optimized together with all the\n"
+            "others inside one scaffold (no two charts can ever overlap), re-placed rigidly\n"
+            "by a raster packer (kept only when proved bijective), compacted by SCAF\n"
+            "iterations with a contracting scaffold, and scaled uniformly into the unit UV\n"
+            "square. The map is bijective after every iteration; the padding is kept by\n"
+            "the line search and checked again before the file is written.\n"
+            "Each chart must be a disk, possibly with holes.\n"
+            "\n"
+            "options:\n"
+            "  -o, --output FILE        output OBJ (required)\n"
+            "  --padding P              minimum distance between two charts, in units of the\n"
+            "                           unit square (default 0: charts only never overlap)\n"
+            "  --resolution R           texture size in texels; with --padding-texels K the\n"
+            "                           padding is K / R\n"
+            "  --padding-texels K       padding in texels (needs --resolution)\n"
+            "  --init NAME              tutte (default), harmonic, or input: start from the\n"
+            "                           input UVs, only when the exact checker proves them\n"
+            "                           bijective\n"
+            "  --iterations N           cap of the settling iterations (default 30)\n"
+            "  --compact-iterations N   cap of the compaction iterations (default 150;\n"
+            "                           0 = no compaction)\n"
+            "  --distortion-tolerance T stop compacting when E exceeds (1+T) times the settled\n"
+            "                           E (default 0.05)\n"
+            "  --box-scale S            scaffold box while settling (default 3)\n"
+            "  --lambda-ratio R         scaffold weight ratio (default 0.01)\n"
+            "  --quiet                  no progress line\n"
+            "  --report FILE.json       per-iteration energy, gap and packing efficiency,\n"
+            "                           before/after compaction, per-chart distortion\n"
+            "  --svg FILE               picture of the atlas, charts in distinct colours\n"
+            "  -h, --help               this text\n"
+            "\n"
+            "Exit status: 0 ok, 2 usage, 3 unreadable input, 4 invalid chart (named) or\n"
+            "input UVs not bijective with --init input, 5 output not written, 6 numerical\n"
+            "failure.\n");
+}
+
+typedef struct progress_state {
+    int live;
+    atlas_iteration *it;
+    int n, size;
+} progress_state;
+
+static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
+{
+    (void)a;
+    progress_state *s = user;
+    if (s->n == s->size) {
+        int size = s->size ? 2 * s->size : 64;
+        atlas_iteration *p = realloc(s->it, sizeof *p * (size_t)size);
+        if (!p) return 0;
+        s->it = p;
+        s->size = size;
+    }
+    s->it[s->n++] = *it;
+    if (s->live) {
+        fprintf(stderr, "\rscaf atlas: %s %d  E = %.5f  efficiency %.3f  gap %.5f  %.3f s   ",
+                it->phase == ATLAS_COMPACT ? "compact" : "settle", it->info.iteration, it->info.energy, it->efficiency,
+                it->gap, it->info.seconds);
+        fflush(stderr);
+    }
+    return 0;
+}
+
+static int parse_int(const char *s, int *out)
+{
+    char *end;
+    long v = strtol(s, &end, 10);
+    if (!*s || *end || v < 0 || v > 100000000) return 0;
+    *out = (int)v;
+    return 1;
+}
+
+static int parse_double(const char *s, double *out)
+{
+    char *end;
+    double v = strtod(s, &end);
+    if (!*s || *end || !isfinite(v)) return 0;
+    *out = v;
+    return 1;
+}
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int cmd_atlas(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
+    int quiet = 0;
+    double resolution = 0.0, texels = -1.0, padding = -1.0;
+    atlas_options opt = atlas_options_default();
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+#define NEED_VALUE()                                                             \
+    do {                                                                         \
+        if (!v) {                                                                \
+            fprintf(stderr, "scaf atlas: %s needs a value (see --help)\n", a); \
+            return EXIT_USAGE;                                                   \
+        }                                                                        \
+        i++;                                                                     \
+    } while (0)
+#define BAD_VALUE()                                                                    \
+    do {                                                                               \
+        fprintf(stderr, "scaf atlas: invalid value '%s' for %s (see --help)\n", v, a); \
+        return EXIT_USAGE;                                                             \
+    } while (0)
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            usage(stdout);
+            return EXIT_OK;
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            NEED_VALUE();
+            out = v;
+        } else if (!strcmp(a, "--padding")) {
+            NEED_VALUE();
+            if (!parse_double(v, &padding) || padding < 0 || padding >= 0.5) BAD_VALUE();
+        } else if (!strcmp(a, "--resolution")) {
+            NEED_VALUE();
+            if (!parse_double(v, &resolution) || resolution < 1) BAD_VALUE();
+        } else if (!strcmp(a, "--padding-texels")) {
+            NEED_VALUE();
+            if (!parse_double(v, &texels) || texels < 0) BAD_VALUE();
+        } else if (!strcmp(a, "--init")) {
+            NEED_VALUE();
+            if (!strcmp(v, "tutte")) opt.base.init = SCAF_INIT_TUTTE;
+            else if (!strcmp(v, "harmonic")) opt.base.init = SCAF_INIT_HARMONIC;
+            else if (!strcmp(v, "input")) opt.init_input = 1;
+            else BAD_VALUE();
+        } else if (!strcmp(a, "--iterations")) {
+            NEED_VALUE();
+            if (!parse_int(v, &opt.settle_iterations)) BAD_VALUE();
+        } else if (!strcmp(a, "--compact-iterations")) {
+            NEED_VALUE();
+            if (!parse_int(v, &opt.compact_iterations)) BAD_VALUE();
+        } else if (!strcmp(a, "--distortion-tolerance")) {
+            NEED_VALUE();
+            if (!parse_double(v, &opt.distortion_tolerance) || opt.distortion_tolerance < 0) BAD_VALUE();
+        } else if (!strcmp(a, "--box-scale")) {
+            NEED_VALUE();
+            if (!parse_double(v, &opt.base.box_scale)) BAD_VALUE();
+        } else if (!strcmp(a, "--lambda-ratio")) {
+            NEED_VALUE();
+            if (!parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
+        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
+            quiet = 1;
+        } else if (!strcmp(a, "--report")) {
+            NEED_VALUE();
+            report = v;
+        } else if (!strcmp(a, "--svg")) {
+            NEED_VALUE();
+            svg = v;
+        } else if (a[0] == '-' && a[1]) {
+            fprintf(stderr, "scaf atlas: unknown option '%s' (see --help)\n", a);
+            return EXIT_USAGE;
+        } else if (!in) {
+            in = a;
+        } else {
+            fprintf(stderr, "scaf atlas: more than one input ('%s', '%s')\n", in, a);
+            return EXIT_USAGE;
+        }
+#undef NEED_VALUE
+#undef BAD_VALUE
+    }
+    if (!in || !out) {
+        fprintf(stderr, "scaf atlas: %s (see --help)\n", !in ? "no input file" : "no output file: use -o OUT.obj");
+        return EXIT_USAGE;
+    }
+    if (texels >= 0.0) {
+        if (!(resolution > 0.0)) {
+            fprintf(stderr, "scaf atlas: --padding-texels needs --resolution\n");
+            return EXIT_USAGE;
+        }
+        if (padding >= 0.0) {
+            fprintf(stderr, "scaf atlas: give either --padding or --padding-texels, not both\n");
+            return EXIT_USAGE;
+        }
+        padding = texels / resolution;
+        if (padding >= 0.5) {
+            fprintf(stderr, "scaf atlas: padding %g texels at %g is half the square or more\n", texels, resolution);
+            return EXIT_USAGE;
+        }
+    }
+    opt.padding = padding > 0.0 ? padding : 0.0;
+
+    double t_start = now();
+    mesh m;
+    scaf_error err;
+    err_clear(&err);
+    if (mesh_read(in, &m, NULL, &err) != SCAF_OK) {
+        fprintf(stderr, "scaf atlas: %s\n", err.message);
+        return err.code == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_INPUT;
+    }
+    int rc = EXIT_OK;
+    atlas a;
+    progress_state ps = {0};
+    double *UV = NULL;
+    scaf_status st = atlas_init(&a, &m, &opt, &err);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf atlas: %s: %s\n", in, err.message);
+        mesh_free(&m);
+        return exit_code_for(st);
+    }
+    double setup = now() - t_start;
+    ps.live = !quiet && isatty(fileno(stderr));
+    if (!quiet && !ps.live)
+        fprintf(stderr, "scaf atlas: %s: %d faces, %d chart(s)%s, padding %g\n", in, m.nf, a.ncharts,
+                a.split_uvs ? " (pinched vt split)" : "", opt.padding);
+    st = atlas_run(&a, on_iteration, &ps, &err);
+    if (ps.live) fputc('\n', stderr);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf atlas: %s: %s\n", in, err.message);
+        rc = exit_code_for(st);
+        goto done;
+    }
+
+    /* ---- normalize and verify before writing ---------------------------- */
+    UV = malloc(sizeof(double) * 2 * (size_t)a.nw);
+    if (!UV) {
+        fprintf(stderr, "scaf atlas: out of memory\n");
+        rc = EXIT_NOMEM;
+        goto done;
+    }
+    atlas_normalized_uv(&a, UV);
+    bij_report br;
+    double gap = INFINITY;
+    if (bij_check(a.nw, UV, a.nf, a.Fw, a.chart, NULL, &br, &err) != SCAF_OK ||
+        chart_gap_min(a.nw, UV, a.nf, a.Fw, a.chart, 0.0, &gap, NULL, &err) != SCAF_OK) {
+        fprintf(stderr, "scaf atlas: %s\n", err.message);
+        rc = EXIT_INTERNAL;
+        goto done;
+    }
+    if (!br.bijective || (opt.padding > 0.0 && !(gap >= opt.padding))) {
+        fprintf(stderr, "scaf atlas: internal error: the normalized atlas is %s (gap %g, padding %g); nothing written\n",
+                br.bijective ? "bijective but too tight" : "not bijective", gap, opt.padding);
+        rc = EXIT_INTERNAL;
+        goto done;
+    }
+    double eff = chart_packing_efficiency(a.nw, UV, a.nf, a.Fw);
+    mesh o = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
+    if (mesh_write_obj(out, &o, &err) != SCAF_OK) {
+        fprintf(stderr, "scaf atlas: %s\n", err.message);
+        rc = EXIT_OUTPUT;
+        goto done;
+    }
+    double total = now() - t_start;
+    if (!quiet)
+        fprintf(stderr,
+                "scaf atlas: %d charts, %d+%d iterations, E %.5f, packing efficiency %.3f -> %.3f, "
+                "min chart gap %.5f, %.2f s\n",
+                a.ncharts, a.settle_done, a.compact_done, scaf_loop_energy(&a.loop), a.eff_before, eff, gap, total);
+    if (svg) {
+        char title[256];
+        snprintf(title, sizeof title, "%s: %d charts, packing efficiency %.3f, min gap %.4f, E = %.4f", in,
+                 a.ncharts, eff, gap, scaf_loop_energy(&a.loop));
+        if (atlas_svg_write(svg, &a, UV, title, &err) != SCAF_OK) {
+            fprintf(stderr, "scaf atlas: %s\n", err.message);
+            rc = EXIT_OUTPUT;
+        }
+    }
+    if (report) {
+        atlas_report r = {in, out, &a, resolution, setup, total, gap, eff, ps.n, ps.it};
+        if (atlas_report_write(report, &r, &err) != SCAF_OK) {
+            fprintf(stderr, "scaf atlas: %s\n", err.message);
+            rc = EXIT_OUTPUT;
+        }
+    }
+done:
+    free(UV);
+    free(ps.it);
+    atlas_free(&a);
+    mesh_free(&m);
+    return rc;
+}
