@@ -39,7 +39,8 @@ static void usage(FILE *o)
             "options:\n"
             "  -o, --output FILE        output OBJ (required)\n"
             "  --padding P              minimum distance between two charts, in units of the\n"
-            "                           unit square (default 0: charts only never overlap)\n"
+            "                           unit square (default 4 texels at 1024: 0.00390625;\n"
+            "                           --padding 0: charts only never overlap)\n"
             "  --resolution R           texture size in texels; with --padding-texels K the\n"
             "                           padding is K / R\n"
             "  --padding-texels K       padding in texels (needs --resolution)\n"
@@ -213,7 +214,10 @@ int cmd_atlas(int argc, char **argv)
             return EXIT_USAGE;
         }
     }
-    opt.padding = padding > 0.0 ? padding : 0.0;
+    /* Default: 4 texels at 1024, so mip levels of a baked texture do not
+     * bleed between charts; --padding 0 asks for none. */
+    if (padding < 0.0) padding = 4.0 / 1024.0;
+    opt.padding = padding;
 
     double t_start = now();
     mesh m;
