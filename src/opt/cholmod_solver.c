@@ -92,6 +92,13 @@ opt_chol *opt_chol_create(opt_ordering ordering, scaf_error *err)
 
 void opt_chol_set_block(opt_chol *c, int block) { c->block = block > 1 ? block : 1; }
 
+void opt_chol_set_relax(opt_chol *c, int scale)
+{
+    static const size_t base[3] = {4, 16, 48}; /* CHOLMOD's defaults */
+    if (scale < 1) scale = 1;
+    for (int k = 0; k < 3; k++) c->cm.nrelax[k] = base[k] * (size_t)scale;
+}
+
 /* Fill-reducing permutation of A computed on its vertex graph: vertex J's
  * neighbours are the row groups of its last scalar column (which holds
  * every row of the block column for the interleaved layout). perm: n. */
