@@ -149,7 +149,7 @@ int main(int argc, char **argv)
 #ifdef __GLIBC__
     /* as the scaf program does (tools/main.c): reuse freed factor memory */
     mallopt(M_MMAP_MAX, 0);
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, -1); /* never give the heap back */
 #endif
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--large")) large = 1;

@@ -3,6 +3,7 @@
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
+#include <stdlib.h>
 #include <string.h>
 
 #include "commands.h"
@@ -46,19 +47,33 @@ static void print_help(FILE *out)
  * meshes) every iteration. glibc serves such blocks with fresh mmap pages,
  * so each iteration page-faulted its whole factor anew (aphrodite.obj:
  * ~17k faults, a fifth of the process time in the kernel). Keep big
- * blocks in the heap and never trim it: freed memory is reused as is;
+ * blocks in the heap and never trim it (-1): freed memory is reused as is;
  * the peak is unchanged. */
 static void tune_allocator(void)
 {
 #ifdef __GLIBC__
     mallopt(M_MMAP_MAX, 0);
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, -1); /* never give the heap back */
 #endif
+}
+
+/* OpenBLAS, when linked (weak: absent -> nothing to set). */
+extern void openblas_set_num_threads(int) __attribute__((weak));
+
+/* One BLAS thread unless OPENBLAS_NUM_THREADS says otherwise: results are
+ * then the same on every machine (threaded BLAS sums in another order),
+ * and on a busy machine two spinning BLAS threads made the factorization
+ * several times slower (bench/RESULTS-param.md). */
+static void default_threads(void)
+{
+    const char *e = getenv("OPENBLAS_NUM_THREADS");
+    if ((!e || !*e) && openblas_set_num_threads) openblas_set_num_threads(1);
 }
 
 int main(int argc, char **argv)
 {
     tune_allocator();
+    default_threads();
     if (argc < 2) {
         print_help(stderr);
         return EXIT_USAGE;
