@@ -9,7 +9,11 @@
  * n, nnz(A), nnz(L), flops, the supernode count, and the median iteration
  * time of the run for the ratio iteration / factorization.
  *
- *   build/bench/bench_factor [MESH.obj|.off] [K] [R]   (default camelhead, 5, 5)
+ * The variants with T BLAS threads run (T = 1 by default; after a
+ * two-thread call OpenBLAS's second thread keeps spinning for a while, so
+ * mixing thread counts in one run would slow the one-thread variants).
+ *
+ *   build/bench/bench_factor [MESH.obj|.off] [K] [R] [T]   (default camelhead, 5, 5, 1)
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -116,6 +120,7 @@ int main(int argc, char **argv)
     if (argc > 1) snprintf(path, sizeof path, "%s", argv[1]);
     else snprintf(path, sizeof path, "%s/disk/camelhead.off", dir);
     int K = argc > 2 ? atoi(argv[2]) : 5, R = argc > 3 ? atoi(argv[3]) : 5;
+    int T = argc > 4 ? atoi(argv[4]) : 1; /* BLAS threads of the variants run */
     if (K < 1) K = 1;
     if (R < 1) R = 1;
     mesh m;
@@ -219,6 +224,7 @@ int main(int argc, char **argv)
     long nsuper[8];
     for (int r = 0; r < R && r < 64; r++)
         for (int v = 0; v < nvar; v++) {
+            if (var[v].threads != T) continue;
             for (int q = 0; q < 3; q++) { cm.nrelax[q] = (size_t)var[v].nrelax[q]; cm.zrelax[q] = var[v].zrelax[q]; }
             if (openblas_set_num_threads) openblas_set_num_threads(var[v].threads);
             F[v] = analyze(&S, var[v].alt ? perm2 : perm, &cm, &ta[v][r]);
@@ -237,6 +243,7 @@ int main(int argc, char **argv)
     printf("|---|---|---|---|---|---|---|\n");
     int Rn = R < 64 ? R : 64;
     for (int v = 0; v < nvar; v++) {
+        if (var[v].threads != T) continue;
         double a = median(ta[v], Rn), f = median(tf[v], Rn);
         printf("| %s | %ld | %.0f | %.3g | %.4f | %.4f | %.2f |\n", var[v].name, nsuper[v], lnz[v], fl[v], a, f,
                f > 0 ? it_med / f : 0.0);
