@@ -258,8 +258,12 @@ static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, sca
         for (size_t k = nm; k < n; k++) L->perm[k] = (int)k;
         given = L->perm;
     }
-    st = opt_chol_analyze_given(L->chol, &L->sys.A, given, err);
-    if (st != SCAF_OK) return st;
+    /* A scaffold identical to the last one (late iterations, the boundary
+     * barely moving) gives the same pattern: keep that analysis. */
+    if (!opt_chol_pattern_matches(L->chol, &L->sys.A)) {
+        st = opt_chol_analyze_given(L->chol, &L->sys.A, given, err);
+        if (st != SCAF_OK) return st;
+    }
     return opt_chol_factor(L->chol, &L->sys.A, err);
 }
 
