@@ -3,11 +3,14 @@
  * Runs K SCAF iterations (harmonic start) on a single-disk mesh, keeps the
  * last assembled system and then times, on that very matrix, interleaved
  * (so machine load hits every variant alike), median of R repetitions:
- * the symbolic analysis with the loop's own permutation, the numerical
- * factorization with CHOLMOD's default supernode relaxation and with a
- * looser one, and the factorization with 1 and 2 OpenBLAS threads. Prints
- * n, nnz(A), nnz(L), flops, the supernode count, and the median iteration
- * time of the run for the ratio iteration / factorization.
+ * the symbolic analysis with the loop's own permutation and the numerical
+ * factorization, for CHOLMOD's default supernode relaxation and looser
+ * ones, for an alternative placement of the scaffold unknowns (those not
+ * next to the chart first), with one or two OpenBLAS threads. Prints n,
+ * nnz(A), the stored factor entries, the flops of the exact factor, the
+ * supernode count, and the median iteration time of the run for the ratio
+ * iteration / factorization. A missing or non-disk mesh, or a failing
+ * step, prints the reason and exits with status 1.
  *
  * The variants with T BLAS threads run (T = 1 by default; after a
  * two-thread call OpenBLAS's second thread keeps spinning for a while, so
@@ -150,6 +153,7 @@ int main(int argc, char **argv)
         return 1;
     }
     double *it = malloc(sizeof(double) * (size_t)K), fsum = 0;
+    if (!it) return 1;
     for (int k = 0; k < K; k++) {
         scaf_iteration_info_t info;
         if (scaf_loop_step(&L, &info, &err) != SCAF_OK) {
@@ -178,16 +182,20 @@ int main(int argc, char **argv)
     S.packed = 1;
     size_t nm = 2 * (size_t)L.nv;
     int *perm = malloc(sizeof(int) * (size_t)A->n);
+    int *perm2 = malloc(sizeof(int) * (size_t)A->n), np2 = 0, nring = 0;
+    char *ring = calloc((size_t)A->n / 2 + 1, 1);
+    if (!perm || !perm2 || !ring) {
+        fprintf(stderr, "out of memory\n");
+        return 1;
+    }
     memcpy(perm, L.mesh_perm, nm * sizeof(int));
     for (size_t k = nm; k < (size_t)A->n; k++) perm[k] = (int)k;
 
     /* Variant ordering: scaffold vertices not adjacent to the chart
      * ("outer") first, then the mesh order, then the ring next to the
      * chart (which the mesh elimination turns into a clique). */
-    int *perm2 = malloc(sizeof(int) * (size_t)A->n), np2 = 0, nring = 0;
     {
         int nvs = A->n / 2;
-        char *ring = calloc((size_t)nvs, 1);
         for (int J = L.nv; J < nvs; J++) {
             int col = 2 * J + 1;
             for (int k = A->colptr[col]; k < A->colptr[col + 1]; k++)
