@@ -15,6 +15,9 @@
  *   build/bench/bench_param [--large] [--large-iterations N] > bench/RESULTS-param.md
  */
 #include <stdio.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
@@ -143,6 +146,11 @@ static void bench(const char *rel, int iterations, double ref_seconds, const cha
 int main(int argc, char **argv)
 {
     int large = 0, large_its = 100;
+#ifdef __GLIBC__
+    /* as the scaf program does (tools/main.c): reuse freed factor memory */
+    mallopt(M_MMAP_MAX, 0);
+    mallopt(M_TRIM_THRESHOLD, -1); /* never give the heap back */
+#endif
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--large")) large = 1;
         else if (!strcmp(argv[i], "--large-iterations") && i + 1 < argc) large_its = atoi(argv[++i]);

@@ -1,5 +1,9 @@
 /* tools/main: the `scaf` program: dispatches to one subcommand. */
 #include <stdio.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+#include <stdlib.h>
 #include <string.h>
 
 #include "commands.h"
@@ -38,11 +42,42 @@ static void print_help(FILE *out)
             "`scaf COMMAND --help` describes a command. `scaf --version` prints the version.\n"
             "Exit status: 0 ok, 1 not bijective (check), 2 usage, 3 unreadable or malformed\n"
             "input, 4 mesh invalid for the command, 5 output not written, 6 numerical\n"
-            "failure, 7 out of memory, 8 interrupted, 70 internal error.\n");
+            "failure, 7 out of memory, 8 interrupted, 70 internal error.\n"
+            "The sparse solver uses one BLAS thread (same results on every machine);\n"
+            "set OPENBLAS_NUM_THREADS=N to use N.\n");
+}
+
+/* The solver frees and reallocates its factor (hundreds of MB on big
+ * meshes) every iteration. glibc serves such blocks with fresh mmap pages,
+ * so each iteration page-faulted its whole factor anew (aphrodite.obj:
+ * ~17k faults, a fifth of the process time in the kernel). Keep big
+ * blocks in the heap and never trim it (-1): freed memory is reused as is;
+ * the peak is unchanged. */
+static void tune_allocator(void)
+{
+#ifdef __GLIBC__
+    mallopt(M_MMAP_MAX, 0);
+    mallopt(M_TRIM_THRESHOLD, -1); /* never give the heap back */
+#endif
+}
+
+/* OpenBLAS, when linked (weak: absent -> nothing to set). */
+extern void openblas_set_num_threads(int) __attribute__((weak));
+
+/* One BLAS thread unless OPENBLAS_NUM_THREADS says otherwise: results are
+ * then the same on every machine (threaded BLAS sums in another order),
+ * and on a busy machine two spinning BLAS threads made the factorization
+ * several times slower (bench/RESULTS-param.md). */
+static void default_threads(void)
+{
+    const char *e = getenv("OPENBLAS_NUM_THREADS");
+    if ((!e || !*e) && openblas_set_num_threads) openblas_set_num_threads(1);
 }
 
 int main(int argc, char **argv)
 {
+    tune_allocator();
+    default_threads();
     if (argc < 2) {
         print_help(stderr);
         return EXIT_USAGE;

@@ -4,6 +4,19 @@
  * compared exactly; comparing costs O(nnz) memory reads, negligible next to
  * a factorization. CHOLMOD's own printing is switched off: failures come
  * back as scaf_error messages.
+ *
+ * OpenMP: the Debian CHOLMOD runs small loops of its supernodal
+ * factorization (zeroing and scattering each supernode) in OpenMP regions
+ * with a compiled-in team of 4 threads, whatever OMP_NUM_THREADS says. On a
+ * 2-core machine that oversubscription costs more than the loops (measured:
+ * 30-40% of the process CPU time of an iteration went to spinning and
+ * futex calls, aphrodite.obj). The loops only move data (no sums), so the
+ * factor is bit-identical with any team size: the CHOLMOD calls run with
+ * OpenMP's max-active-levels at 0 (every region gets one thread) and the
+ * previous value is restored afterwards. The dense work stays in BLAS,
+ * whose threads OpenBLAS controls. libgomp is reached through weak
+ * references (it is loaded by CHOLMOD), so nothing changes when it is
+ * absent.
  */
 #include "opt/cholmod_solver.h"
 
@@ -13,6 +26,24 @@
 #include <cholmod.h>
 
 #include "base/timer.h"
+
+/* libgomp, if loaded (see the banner). */
+extern int omp_get_max_active_levels(void) __attribute__((weak));
+extern void omp_set_max_active_levels(int) __attribute__((weak));
+
+/* Serialize CHOLMOD's OpenMP regions; returns the level to restore. */
+static int omp_serial_begin(void)
+{
+    if (!omp_get_max_active_levels || !omp_set_max_active_levels) return -1;
+    int old = omp_get_max_active_levels();
+    omp_set_max_active_levels(0);
+    return old;
+}
+
+static void omp_serial_end(int old)
+{
+    if (old >= 0 && omp_set_max_active_levels) omp_set_max_active_levels(old);
+}
 
 struct opt_chol {
     cholmod_common cm;
@@ -60,6 +91,13 @@ opt_chol *opt_chol_create(opt_ordering ordering, scaf_error *err)
 }
 
 void opt_chol_set_block(opt_chol *c, int block) { c->block = block > 1 ? block : 1; }
+
+void opt_chol_set_relax(opt_chol *c, int scale)
+{
+    static const size_t base[3] = {4, 16, 48}; /* CHOLMOD's defaults */
+    if (scale < 1) scale = 1;
+    for (int k = 0; k < 3; k++) c->cm.nrelax[k] = base[k] * (size_t)scale;
+}
 
 /* Fill-reducing permutation of A computed on its vertex graph: vertex J's
  * neighbours are the row groups of its last scalar column (which holds
@@ -186,6 +224,7 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
         }
         perm = own;
     }
+    int lv = omp_serial_begin();
     if (perm) {
         /* A given permutation: use it as the only method. */
         int save_n = c->cm.nmethods, save_ord = c->cm.method[0].ordering;
@@ -197,6 +236,7 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     } else {
         c->L = cholmod_analyze(&S, &c->cm);
     }
+    omp_serial_end(lv);
     free(own);
     if (!c->L) return fail(c, "analysis", err);
     int *cp = realloc(c->colptr, ((size_t)A->n + 1) * sizeof *cp);
@@ -234,7 +274,9 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
     double t0 = timer_now();
     cholmod_sparse S = wrap(A);
     c->factored = 0;
+    int lv = omp_serial_begin();
     int ok = cholmod_factorize(&S, c->L, &c->cm);
+    omp_serial_end(lv);
     c->st.t_factor += timer_now() - t0;
     if (!ok) return fail(c, "factorization", err);
     if (c->cm.status == CHOLMOD_NOT_POSDEF || c->L->minor < c->L->n)
@@ -264,7 +306,9 @@ scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, sc
     Bd.x = (void *)B;
     Bd.xtype = CHOLMOD_REAL;
     Bd.dtype = CHOLMOD_DOUBLE;
+    int lv = omp_serial_begin();
     cholmod_dense *Xd = cholmod_solve(CHOLMOD_A, c->L, &Bd, &c->cm);
+    omp_serial_end(lv);
     if (!Xd) return fail(c, "solve", err);
     memcpy(X, Xd->x, Bd.nzmax * sizeof *X);
     cholmod_free_dense(&Xd, &c->cm);

@@ -81,7 +81,7 @@ static void closest_rotation(int d, const double *J, double *R, double *sv)
         }
 }
 
-double opt_density(opt_energy e, int d, const double *J)
+static inline double density_d(opt_energy e, int d, const double *J)
 {
     switch (e) {
     case OPT_ENERGY_SYMMETRIC_DIRICHLET: {
@@ -105,7 +105,7 @@ double opt_density(opt_energy e, int d, const double *J)
     return NAN;
 }
 
-double opt_density_grad(opt_energy e, int d, const double *J, double *G)
+static inline double density_grad_d(opt_energy e, int d, const double *J, double *G)
 {
     switch (e) {
     case OPT_ENERGY_SYMMETRIC_DIRICHLET: {
@@ -154,6 +154,18 @@ double opt_density_grad(opt_energy e, int d, const double *J, double *G)
     }
     }
     return NAN;
+}
+
+/* Dispatch with d a compile-time constant in the hot 2D case: the small
+ * loops unroll, the operations and their order stay the same. */
+double opt_density(opt_energy e, int d, const double *J)
+{
+    return d == 2 ? density_d(e, 2, J) : density_d(e, d, J);
+}
+
+double opt_density_grad(opt_energy e, int d, const double *J, double *G)
+{
+    return d == 2 ? density_grad_d(e, 2, J, G) : density_grad_d(e, d, J, G);
 }
 
 void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T)

@@ -159,10 +159,10 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
 
 /* Accumulate one simplex: coefficient matrix M (d by d, symmetric) and
  * per-corner linear terms lin ((d+1) by d). */
-static void scatter(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
-                    const double *X, const double *M, const double *lin, double *rhs)
+static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
+                             const double *X, const double *M, const double *lin, double *rhs, int d)
 {
-    int d = S->d, nc = d + 1, P = (d + 1) * (d + 2) / 2;
+    int nc = d + 1, P = (d + 1) * (d + 2) / 2;
     const int *ix = S->idx + (size_t)s * nc;
     const double *G = S->grad + (size_t)s * nc * d;
     const int *mp = b->map + (size_t)s * P;
@@ -211,6 +211,47 @@ static void scatter(opt_proxy_block *b, const opt_simplices *S, int s, const int
         }
 }
 
+/* The same code with d a compile-time constant in the hot 2D case (the
+ * compiler unrolls the small loops; the operations and their order are
+ * unchanged, so results are bit-identical). */
+static void scatter(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
+                    const double *X, const double *M, const double *lin, double *rhs)
+{
+    if (S->d == 2) scatter_d(b, S, s, dof, X, M, lin, rhs, 2);
+    else scatter_d(b, S, s, dof, X, M, lin, rhs, S->d);
+}
+
+/* SLIM proxy of simplex s: M = W^T W, lin = M T G^T per corner; returns w^2. */
+static inline double proxy_d(const opt_term *t, int s, const double *X, double w2_cap, double *M,
+                             double *lin, int d)
+{
+    const opt_simplices *S = t->s;
+    int nc = d + 1;
+    double J[9], W[9], T[9], MT[9];
+    opt_jacobian(S, s, X, J);
+    double w2 = opt_slim_proxy_capped(t->energy, d, J, w2_cap, W, T);
+    for (int a = 0; a < d; a++)
+        for (int c = 0; c < d; c++) {
+            double acc = 0;
+            for (int q = 0; q < d; q++) acc += W[q * d + a] * W[q * d + c];
+            M[a * d + c] = acc;
+        }
+    for (int a = 0; a < d; a++)
+        for (int c = 0; c < d; c++) {
+            double acc = 0;
+            for (int q = 0; q < d; q++) acc += M[a * d + q] * T[q * d + c];
+            MT[a * d + c] = acc;
+        }
+    const double *G = S->grad + (size_t)s * nc * d;
+    for (int i = 0; i < nc; i++)
+        for (int a = 0; a < d; a++) {
+            double acc = 0;
+            for (int c = 0; c < d; c++) acc += MT[a * d + c] * G[i * d + c];
+            lin[i * d + a] = acc;
+        }
+    return w2;
+}
+
 void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
                           double *rhs)
 {
@@ -221,32 +262,12 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
                                    const double *X, double *rhs, double w2_cap)
 {
     const opt_simplices *S = t->s;
-    int d = S->d, nc = d + 1;
+    int d = S->d;
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
-    double J[9], W[9], T[9], M[9], MT[9], lin[12], w2max = 0;
+    double M[9], lin[12], w2max = 0;
     for (int s = 0; s < S->n; s++) {
-        opt_jacobian(S, s, X, J);
-        double w2 = opt_slim_proxy_capped(t->energy, d, J, w2_cap, W, T);
+        double w2 = d == 2 ? proxy_d(t, s, X, w2_cap, M, lin, 2) : proxy_d(t, s, X, w2_cap, M, lin, d);
         if (w2 > w2max) w2max = w2;
-        for (int a = 0; a < d; a++)
-            for (int c = 0; c < d; c++) {
-                double acc = 0;
-                for (int q = 0; q < d; q++) acc += W[q * d + a] * W[q * d + c];
-                M[a * d + c] = acc;
-            }
-        for (int a = 0; a < d; a++)
-            for (int c = 0; c < d; c++) {
-                double acc = 0;
-                for (int q = 0; q < d; q++) acc += M[a * d + q] * T[q * d + c];
-                MT[a * d + c] = acc;
-            }
-        const double *G = S->grad + (size_t)s * nc * d;
-        for (int i = 0; i < nc; i++)
-            for (int a = 0; a < d; a++) {
-                double acc = 0;
-                for (int c = 0; c < d; c++) acc += MT[a * d + c] * G[i * d + c];
-                lin[i * d + a] = acc;
-            }
         scatter(b, S, s, dof, X, M, lin, rhs);
     }
     return w2max;

@@ -1,6 +1,6 @@
 /* Tests for opt/cholmod_solver and opt/csc: Laplacian systems solved to
  * 1e-10 relative residual, analysis reused for an unchanged pattern and
- * redone for a new one, clear errors. */
+ * redone for a new one, relaxed supernodes, clear errors. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -155,6 +155,40 @@ static void block_ordering_solves(void **state)
     opt_csc_free(&G);
 }
 
+/* libgomp, when loaded (through CHOLMOD): the solver must leave it as it
+ * found it. */
+extern int omp_get_max_active_levels(void) __attribute__((weak));
+extern void omp_set_max_active_levels(int) __attribute__((weak));
+
+/* Looser supernode amalgamation (more explicit zeros) still solves to the
+ * same accuracy and agrees with the default relaxation; the OpenMP level
+ * the solver lowers around CHOLMOD is restored. */
+static void relaxed_supernodes_solve(void **state)
+{
+    (void)state;
+    opt_csc A;
+    grid_laplacian(&A, 60, 0.01, 1);
+    rng r = {11};
+    double *b = malloc(A.n * sizeof *b), *x0 = malloc(A.n * sizeof *x0), *x1 = malloc(A.n * sizeof *x1);
+    for (int i = 0; i < A.n; i++) b[i] = rng_uniform(&r, -1, 1);
+    int lv = omp_get_max_active_levels ? omp_get_max_active_levels() : -1;
+    if (lv >= 0) omp_set_max_active_levels(3); /* a value the solver must not keep */
+    for (int scale = 1; scale <= 8; scale *= 2) {
+        opt_chol *c = opt_chol_create(OPT_ORDER_METIS, NULL);
+        opt_chol_set_relax(c, scale);
+        assert_int_equal(opt_chol_factor(c, &A, NULL), SCAF_OK);
+        assert_int_equal(opt_chol_solve(c, 1, b, scale == 1 ? x0 : x1, NULL), SCAF_OK);
+        assert_true(rel_residual(&A, scale == 1 ? x0 : x1, b) < 1e-10);
+        if (scale > 1)
+            for (int i = 0; i < A.n; i++) assert_true(fabs(x1[i] - x0[i]) <= 1e-8 * (1 + fabs(x0[i])));
+        if (lv >= 0) assert_int_equal(omp_get_max_active_levels(), 3);
+        opt_chol_destroy(c);
+    }
+    if (lv >= 0) omp_set_max_active_levels(lv);
+    free(b); free(x0); free(x1);
+    opt_csc_free(&A);
+}
+
 static void indefinite_is_an_error(void **state)
 {
     (void)state;
@@ -180,6 +214,7 @@ int main(void)
         cmocka_unit_test(triplets_sum_duplicates),
         cmocka_unit_test(solves_and_reuses_analysis),
         cmocka_unit_test(block_ordering_solves),
+        cmocka_unit_test(relaxed_supernodes_solve),
         cmocka_unit_test(indefinite_is_an_error),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,0 +1,268 @@
+/* bench/bench_factor: one SCAF system against its factorization (the floor).
+ *
+ * Runs K SCAF iterations (harmonic start) on a single-disk mesh, keeps the
+ * last assembled system and then times, on that very matrix, interleaved
+ * (so machine load hits every variant alike), median of R repetitions:
+ * the symbolic analysis with the loop's own permutation and the numerical
+ * factorization, for CHOLMOD's default supernode relaxation and looser
+ * ones, for an alternative placement of the scaffold unknowns (those not
+ * next to the chart first), with one or two OpenBLAS threads. Prints n,
+ * nnz(A), the stored factor entries, the flops of the exact factor, the
+ * supernode count, and the median iteration time of the run for the ratio
+ * iteration / factorization. A missing or non-disk mesh, or a failing
+ * step, prints the reason and exits with status 1.
+ *
+ * The variants with T BLAS threads run (T = 1 by default; after a
+ * two-thread call OpenBLAS's second thread keeps spinning for a while, so
+ * mixing thread counts in one run would slow the one-thread variants).
+ *
+ *   build/bench/bench_factor [MESH.obj|.off] [K] [R] [T]   (default camelhead, 5, 5, 1)
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cholmod.h>
+
+#include "base/timer.h"
+#include "mesh/mesh_io.h"
+#include "opt/embed.h"
+#include "scaffold/scaf_loop.h"
+
+#ifndef SCAF_DATA_DIR
+#define SCAF_DATA_DIR "../shared/data"
+#endif
+
+extern void openblas_set_num_threads(int) __attribute__((weak));
+extern int omp_get_max_active_levels(void) __attribute__((weak));
+extern void omp_set_max_active_levels(int) __attribute__((weak));
+
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_d);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+typedef struct dedge { long long key; int a, b; } dedge;
+
+static int cmp_dedge(const void *x, const void *y)
+{
+    const dedge *p = x, *q = y;
+    return (p->key > q->key) - (p->key < q->key);
+}
+
+/* The boundary loop of a disk, in order (loop: nv ints). Returns its
+ * length, 0 when the boundary is not one simple loop. */
+static int boundary_loop(const mesh *m, int *loop)
+{
+    size_t ne = 3 * (size_t)m->nf;
+    dedge *e = malloc(sizeof *e * ne);
+    int *next = malloc(sizeof(int) * (size_t)m->nv);
+    if (!e || !next) { free(e); free(next); return 0; }
+    for (int f = 0; f < m->nf; f++)
+        for (int j = 0; j < 3; j++) {
+            int a = m->F[3 * f + j], b = m->F[3 * f + (j + 1) % 3];
+            long long lo = a < b ? a : b, hi = a < b ? b : a;
+            e[3 * (size_t)f + j] = (dedge){lo * m->nv + hi, a, b};
+        }
+    qsort(e, ne, sizeof *e, cmp_dedge);
+    for (int v = 0; v < m->nv; v++) next[v] = -1;
+    int first = -1, nb = 0;
+    for (size_t i = 0; i < ne;) {
+        size_t j = i + 1;
+        while (j < ne && e[j].key == e[i].key) j++;
+        if (j - i == 1) { next[e[i].a] = e[i].b; first = e[i].a; nb++; }
+        i = j;
+    }
+    free(e);
+    int n = 0;
+    for (int v = first; v >= 0 && n < nb; v = next[v]) {
+        loop[n++] = v;
+        if (next[v] == first) break;
+    }
+    free(next);
+    return n == nb ? n : 0;
+}
+
+/* Factor A (upper CSC wrapper) with the analysis Lsym's relaxation, time. */
+static double time_factor(cholmod_sparse *A, cholmod_factor *L, cholmod_common *cm)
+{
+    double t0 = timer_now();
+    int lv = omp_get_max_active_levels ? omp_get_max_active_levels() : -1;
+    if (lv >= 0) omp_set_max_active_levels(0);
+    cholmod_factorize(A, L, cm);
+    if (lv >= 0) omp_set_max_active_levels(lv);
+    return timer_now() - t0;
+}
+
+static cholmod_factor *analyze(cholmod_sparse *A, int *perm, cholmod_common *cm, double *t)
+{
+    cm->nmethods = 1;
+    cm->method[0].ordering = CHOLMOD_GIVEN;
+    cm->postorder = 1;
+    double t0 = timer_now();
+    int lv = omp_get_max_active_levels ? omp_get_max_active_levels() : -1;
+    if (lv >= 0) omp_set_max_active_levels(0);
+    cholmod_factor *L = cholmod_analyze_p(A, perm, NULL, 0, cm);
+    if (lv >= 0) omp_set_max_active_levels(lv);
+    *t = timer_now() - t0;
+    return L;
+}
+
+int main(int argc, char **argv)
+{
+    const char *dir = getenv("SCAF_DATA_DIR");
+    if (!dir || !*dir) dir = SCAF_DATA_DIR;
+    char path[2048];
+    if (argc > 1) snprintf(path, sizeof path, "%s", argv[1]);
+    else snprintf(path, sizeof path, "%s/disk/camelhead.off", dir);
+    int K = argc > 2 ? atoi(argv[2]) : 5, R = argc > 3 ? atoi(argv[3]) : 5;
+    int T = argc > 4 ? atoi(argv[4]) : 1; /* BLAS threads of the variants run */
+    if (K < 1) K = 1;
+    if (R < 1) R = 1;
+    mesh m;
+    scaf_error err;
+    if (mesh_read(path, &m, NULL, &err) != SCAF_OK) {
+        fprintf(stderr, "%s: %s\n", path, err.message);
+        return 1;
+    }
+    int *loop = malloc(sizeof(int) * (size_t)m.nv), st0[2];
+    double *uv = malloc(sizeof(double) * 2 * (size_t)m.nv);
+    int nb = loop && uv ? boundary_loop(&m, loop) : 0;
+    if (!nb) {
+        fprintf(stderr, "%s: not a single-boundary disk\n", path);
+        return 1;
+    }
+    st0[0] = 0;
+    st0[1] = nb;
+    opt_chart_loops ol = {1, st0, loop, 0};
+    if (opt_embed_chart(m.nv, m.V, m.nf, m.F, &ol, OPT_EMBED_HARMONIC, uv, NULL, &err) != SCAF_OK) {
+        fprintf(stderr, "embed: %s\n", err.message);
+        return 1;
+    }
+    scaf_loop L;
+    scaf_options_t o = scaf_options_default();
+    if (scaf_loop_init(&L, m.nv, m.V, m.nf, m.F, uv, &o, &err) != SCAF_OK) {
+        fprintf(stderr, "loop: %s\n", err.message);
+        return 1;
+    }
+    double *it = malloc(sizeof(double) * (size_t)K), fsum = 0;
+    if (!it) return 1;
+    for (int k = 0; k < K; k++) {
+        scaf_iteration_info_t info;
+        if (scaf_loop_step(&L, &info, &err) != SCAF_OK) {
+            fprintf(stderr, "step: %s\n", err.message);
+            return 1;
+        }
+        it[k] = info.seconds;
+        if (k == K - 1) fsum = info.phase_seconds[SCAF_PHASE_FACTORIZATION];
+    }
+    double it_med = K > 1 ? median(it + 1, K - 1) : it[0]; /* the first has METIS */
+
+    /* The last system and the loop's permutation. */
+    opt_csc *A = &L.sys.A;
+    cholmod_sparse S;
+    memset(&S, 0, sizeof S);
+    S.nrow = S.ncol = (size_t)A->n;
+    S.nzmax = (size_t)A->nnz;
+    S.p = A->colptr;
+    S.i = A->rowidx;
+    S.x = A->val;
+    S.stype = 1;
+    S.itype = CHOLMOD_INT;
+    S.xtype = CHOLMOD_REAL;
+    S.dtype = CHOLMOD_DOUBLE;
+    S.sorted = 1;
+    S.packed = 1;
+    size_t nm = 2 * (size_t)L.nv;
+    int *perm = malloc(sizeof(int) * (size_t)A->n);
+    int *perm2 = malloc(sizeof(int) * (size_t)A->n), np2 = 0, nring = 0;
+    char *ring = calloc((size_t)A->n / 2 + 1, 1);
+    if (!perm || !perm2 || !ring) {
+        fprintf(stderr, "out of memory\n");
+        return 1;
+    }
+    memcpy(perm, L.mesh_perm, nm * sizeof(int));
+    for (size_t k = nm; k < (size_t)A->n; k++) perm[k] = (int)k;
+
+    /* Variant ordering: scaffold vertices not adjacent to the chart
+     * ("outer") first, then the mesh order, then the ring next to the
+     * chart (which the mesh elimination turns into a clique). */
+    {
+        int nvs = A->n / 2;
+        for (int J = L.nv; J < nvs; J++) {
+            int col = 2 * J + 1;
+            for (int k = A->colptr[col]; k < A->colptr[col + 1]; k++)
+                if (A->rowidx[k] / 2 < L.nv) { ring[J] = 1; break; }
+        }
+        for (int J = L.nv; J < nvs; J++)
+            if (!ring[J]) { perm2[np2++] = 2 * J; perm2[np2++] = 2 * J + 1; }
+        memcpy(perm2 + np2, L.mesh_perm, nm * sizeof(int));
+        np2 += (int)nm;
+        for (int J = L.nv; J < nvs; J++)
+            if (ring[J]) { perm2[np2++] = 2 * J; perm2[np2++] = 2 * J + 1; nring++; }
+        free(ring);
+    }
+    printf("scaffold vertices next to the chart: %d of %zu\n", nring, ((size_t)A->n - nm) / 2);
+    cholmod_common cm;
+    cholmod_start(&cm);
+    cm.print = 0;
+    cm.supernodal = CHOLMOD_SUPERNODAL;
+    cm.final_ll = 1;
+    typedef struct variant { const char *name; int nrelax[3]; double zrelax[3]; int threads; int alt; } variant;
+    variant var[] = {
+        {"default relax, 1 thread", {4, 16, 48}, {0.8, 0.1, 0.05}, 1, 0},
+        {"relax x2, 1 thread", {8, 32, 96}, {0.8, 0.1, 0.05}, 1, 0},
+        {"relax x4, 1 thread", {16, 64, 192}, {0.8, 0.1, 0.05}, 1, 0},
+        {"relax x4 looser, 1 thread", {16, 64, 192}, {0.8, 0.2, 0.1}, 1, 0},
+        {"relax x8, 1 thread", {32, 128, 384}, {0.8, 0.1, 0.05}, 1, 0},
+        {"default relax, 2 threads", {4, 16, 48}, {0.8, 0.1, 0.05}, 2, 0},
+        {"relax x4, outer scaffold first, 1 thread", {16, 64, 192}, {0.8, 0.1, 0.05}, 1, 1},
+        {"relax x4, 2 threads", {16, 64, 192}, {0.8, 0.1, 0.05}, 2, 0},
+    };
+    int nvar = (int)(sizeof var / sizeof var[0]);
+    cholmod_factor *F[8];
+    double ta[8][64], tf[8][64], lnz[8], fl[8];
+    long nsuper[8];
+    for (int r = 0; r < R && r < 64; r++)
+        for (int v = 0; v < nvar; v++) {
+            if (var[v].threads != T) continue;
+            for (int q = 0; q < 3; q++) { cm.nrelax[q] = (size_t)var[v].nrelax[q]; cm.zrelax[q] = var[v].zrelax[q]; }
+            if (openblas_set_num_threads) openblas_set_num_threads(var[v].threads);
+            F[v] = analyze(&S, var[v].alt ? perm2 : perm, &cm, &ta[v][r]);
+            if (!F[v]) { fprintf(stderr, "analysis failed\n"); return 1; }
+            tf[v][r] = time_factor(&S, F[v], &cm);
+            fl[v] = cm.fl;
+            nsuper[v] = (long)F[v]->nsuper;
+            lnz[v] = (double)F[v]->xsize; /* stored entries (relaxed supernodes hold zeros) */
+            cholmod_free_factor(&F[v], &cm);
+        }
+    if (openblas_set_num_threads) openblas_set_num_threads(1);
+    printf("%s: %d vertices, %d faces; system n = %d, nnz(A) = %d (upper), scaffold unknowns %zu; "
+           "%d iterations, median iteration %.4f s (last: factorization %.4f s)\n",
+           path, m.nv, m.nf, A->n, A->nnz, (size_t)A->n - nm, K, it_med, fsum);
+    printf("| variant | supernodes | stored L entries | flops (exact L) | analysis s | factorization s | iteration / factorization |\n");
+    printf("|---|---|---|---|---|---|---|\n");
+    int Rn = R < 64 ? R : 64;
+    for (int v = 0; v < nvar; v++) {
+        if (var[v].threads != T) continue;
+        double a = median(ta[v], Rn), f = median(tf[v], Rn);
+        printf("| %s | %ld | %.0f | %.3g | %.4f | %.4f | %.2f |\n", var[v].name, nsuper[v], lnz[v], fl[v], a, f,
+               f > 0 ? it_med / f : 0.0);
+    }
+    cholmod_finish(&cm);
+    free(perm);
+    free(perm2);
+    free(it);
+    scaf_loop_free(&L);
+    free(loop);
+    free(uv);
+    mesh_free(&m);
+    return 0;
+}
