@@ -266,9 +266,16 @@ int cmd_atlas(int argc, char **argv)
         rc = EXIT_INTERNAL;
         goto done;
     }
-    if (!br.bijective || (opt.padding > 0.0 && !(gap >= opt.padding))) {
+    /* the padding decided exactly on the doubles written (chart_gap.h) */
+    int certified = 1, cpair[2];
+    if (chart_gap_certify(UV, a.seg, a.nseg, opt.padding, &certified, cpair, &err) != SCAF_OK) {
+        fprintf(stderr, "scaf atlas: %s\n", err.message);
+        rc = EXIT_INTERNAL;
+        goto done;
+    }
+    if (!br.bijective || !certified) {
         fprintf(stderr, "scaf atlas: internal error: the normalized atlas is %s (gap %g, padding %g); nothing written\n",
-                br.bijective ? "bijective but too tight" : "not bijective", gap, opt.padding);
+                br.bijective ? "bijective but not certified >= padding" : "not bijective", gap, opt.padding);
         rc = EXIT_INTERNAL;
         goto done;
     }

@@ -43,8 +43,9 @@
  * corners around them) held still (restrict hook), then halves it. So
  * the layout normalized by one uniform scale 1/side into the unit square
  * has every chart gap >= padding after every iteration (checked in the
- * floating-point distance with a 1e-6 relative margin, and verified again
- * on the written output). The map stays bijective after every
+ * floating-point distance with a 1e-6 relative margin during the run; the
+ * normalized output is then certified exactly, chart_gap_certify in
+ * geom/chart_gap.h, before `scaf atlas` writes it). The map stays bijective after every
  * iteration (exact checks of the loop).
  *
  * Errors: SCAF_ERR_MESH naming the chart (not a disk / disk with holes,

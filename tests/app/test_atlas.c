@@ -110,6 +110,10 @@ static void check_output(const atlas *a, double padding)
     double g;
     assert_int_equal(chart_gap_min(a->nw, UV, a->nf, a->Fw, NULL, 0.0, &g, NULL, &err), SCAF_OK);
     if (a->ncharts > 1) assert_true(g >= padding);
+    /* and decided exactly on the normalized doubles */
+    int ok = 0;
+    assert_int_equal(chart_gap_certify(UV, a->seg, a->nseg, padding, &ok, NULL, &err), SCAF_OK);
+    assert_true(ok);
     double eff = chart_packing_efficiency(a->nw, UV, a->nf, a->Fw);
     assert_true(eff > 0.0 && eff <= 1.0);
     free(UV);
