@@ -18,7 +18,7 @@
  *   1b. re-placement (repack): the settled charts are moved rigidly (a
  *      translation and a multiple of 45 degrees) by a raster packer
  *      (app/atlas_pack: several placement strategies ranked on a coarse
- *      grid, the best few placed on the full grid) into a square, with
+ *      grid, the best pack_picks placed on the full grid) into a square, with
  *      pack_gap_factor times the padding between charts; the new layout
  *      is used only when every triangle keeps its exact orientation, the
  *      exact checker proves it bijective, the padding holds and it packs
@@ -87,6 +87,11 @@ typedef struct atlas_options {
                                     the exact checks pass and it packs
                                     better (1) */
     int pack_cells;              /* raster cells along the square (1024) */
+    int pack_picks;              /* strategies ranked on a grid of
+                                    pack_cells / 2 whose best this many are
+                                    placed again at full resolution (2; 4
+                                    before: the same layouts on the seam
+                                    meshes, twice the full-grid work) */
     double pack_gap_factor;      /* the packer leaves this times the padding
                                     between charts, for compaction to close
                                     (2) */
