@@ -259,9 +259,12 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
                     /* boxes apart by more than cert along an axis: far
                      * enough (rounding is monotone, so fl(gap) > cert
                      * implies gap > cert); otherwise decide exactly */
-                    if (fmin(q1[0], q2[0]) - fmax(p1[0], p2[0]) > cert || fmin(p1[0], p2[0]) - fmax(q1[0], q2[0]) > cert ||
-                        fmin(q1[1], q2[1]) - fmax(p1[1], p2[1]) > cert || fmin(p1[1], p2[1]) - fmax(q1[1], q2[1]) > cert)
-                        continue;
+                    int apart = 0;
+                    for (int c = 0; c < 2; c++)
+                        if (fmin(q1[c], q2[c]) - fmax(p1[c], p2[c]) > cert ||
+                            fmin(p1[c], p2[c]) - fmax(q1[c], q2[c]) > cert)
+                            apart = 1;
+                    if (apart) continue;
                     if (!chart_segment_distance_at_least(p1, p2, q1, q2, cert)) {
                         if (!*bad && pair) {
                             int p = seg[3 * s + 2], q = seg[3 * t + 2];
@@ -352,7 +355,8 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, doub
     }
     double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(extent > 0.0)) extent = 1.0;
-    if (radius > 0.0 && isfinite(radius)) return grid_search(UV, seg, n, radius, lo, extent, gap, pair, NULL, NULL, 0.0, NULL, err);
+    if (radius > 0.0 && isfinite(radius))
+        return grid_search(UV, seg, n, radius, lo, extent, gap, pair, NULL, NULL, 0.0, NULL, err);
     double r = len / n;
     if (!(r > 0.0)) r = extent / n;
     for (;;) {
