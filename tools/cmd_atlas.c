@@ -55,6 +55,8 @@ static void usage(FILE *o)
             "                           E (default 0.05)\n"
             "  --box-scale S            scaffold box while settling (default 3)\n"
             "  --lambda-ratio R         scaffold weight ratio (default 0.01)\n"
+            "  --compact-lambda-ratio R scaffold weight ratio while compacting (default 1:\n"
+            "                           fewer iterations; 0.3 keeps E lower, packs slower)\n"
             "  --quiet                  no progress line\n"
             "  --report FILE.json       per-iteration energy, gap and packing efficiency,\n"
             "                           before/after compaction, per-chart distortion\n"
@@ -173,6 +175,9 @@ int cmd_atlas(int argc, char **argv)
         } else if (!strcmp(a, "--box-scale")) {
             NEED_VALUE();
             if (!parse_double(v, &opt.base.box_scale)) BAD_VALUE();
+        } else if (!strcmp(a, "--compact-lambda-ratio")) {
+            NEED_VALUE();
+            if (!parse_double(v, &opt.compact_lambda_ratio) || !(opt.compact_lambda_ratio > 0)) BAD_VALUE();
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
             if (!parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();

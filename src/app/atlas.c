@@ -44,7 +44,7 @@ atlas_options atlas_options_default(void)
     o.pack_cells = 1024;
     o.pack_gap_factor = 2.0;
     o.pack_picks = 2;
-    o.compact_lambda_ratio = 0.3;
+    o.compact_lambda_ratio = 1.0;
     return o;
 }
 

@@ -97,7 +97,10 @@ typedef struct atlas_options {
                                     (2) */
     double compact_lambda_ratio; /* lambda_ratio during compaction: a
                                     stronger scaffold moves charts further
-                                    (0.3) */
+                                    per iteration (1; was 0.3: on
+                                    human_neutral 40 compaction iterations
+                                    to 0.701 and E +1.1%, with 1: 22 to
+                                    0.713 and E +3.2%; bench/RESULTS-atlas.md) */
     double progress_tolerance;   /* phase 2 stops when the side shrank by
                                     less than this relatively over the last
                                     8 iterations (1e-3) */
