@@ -43,7 +43,8 @@ atlas_options atlas_options_default(void)
     o.repack = 1;
     o.pack_cells = 1024;
     o.pack_gap_factor = 2.0;
-    o.compact_lambda_ratio = 0.3;
+    o.pack_picks = 2;
+    o.compact_lambda_ratio = 1.0;
     return o;
 }
 
@@ -351,10 +352,10 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         return err_set(err, SCAF_ERR_USAGE, "%s", msg);
     if (!(a->opt.pack_gap_factor >= 1.0) || !(a->opt.compact_lambda_ratio > 0.0) || !(a->opt.compact_rest_scale > 0.0) ||
         !(a->opt.compact_rest_scale <= 1.0) || !(a->opt.compact_box_scale >= 1.0) || !(a->opt.compact_fraction > 0.0) ||
-        !(a->opt.compact_fraction < 1.0) || a->opt.pack_cells < 16 || a->opt.pack_cells > 8192)
+        !(a->opt.compact_fraction < 1.0) || a->opt.pack_cells < 16 || a->opt.pack_cells > 8192 || a->opt.pack_picks < 1 || a->opt.pack_picks > 16)
         return err_set(err, SCAF_ERR_USAGE, "invalid atlas option (pack_gap_factor >= 1, compact_lambda_ratio > 0, "
                                             "compact_rest_scale in (0, 1], compact_box_scale >= 1, "
-                                            "compact_fraction in (0, 1), pack_cells in [16, 8192])");
+                                            "compact_fraction in (0, 1), pack_cells in [16, 8192], pack_picks in [1, 16])");
     if (!(a->opt.padding >= 0.0) || !(a->opt.padding < 0.5))
         return err_set(err, SCAF_ERR_USAGE, "padding %g must be in [0, 0.5)", a->opt.padding);
     if (a->opt.init_input && !mesh_has_uv(m))
@@ -503,8 +504,9 @@ static scaf_status repack(atlas *a, scaf_error *err)
     for (int attempt = 0; attempt < 6; attempt++) {
         scaf_error e2;
         err_clear(&e2);
-        /* rank the strategies on a grid half as fine, place the best few at
-         * full resolution, keep the smallest square */
+        /* rank the strategies on a grid half as fine (abandoning those
+         * that cannot be among the best pack_picks), place the best
+         * pack_picks at full resolution, keep the smallest square */
         int ns = atlas_pack_strategies(a->ncharts), chosen = 0;
         long *side_c = malloc(sizeof(long) * (size_t)ns);
         double *trial = malloc(sizeof(double) * n2);
@@ -514,17 +516,18 @@ static scaf_status repack(atlas *a, scaf_error *err)
             free(out);
             return err_nomem(err, "repacking");
         }
+        int npick = a->opt.pack_picks;
         st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells / 2, want,
-                        -1, &chosen, side_c, trial, &e2);
+                        -1, npick, &chosen, side_c, trial, &e2);
         double best_side = INFINITY;
-        for (int pick = 0; pick < 4 && st == SCAF_OK; pick++) {
+        for (int pick = 0; pick < npick && st == SCAF_OK; pick++) {
             int k = -1;
             for (int i = 0; i < ns; i++)
                 if (side_c[i] > 0 && (k < 0 || side_c[i] < side_c[k])) k = i;
             if (k < 0) break;
             side_c[k] = -1;
             st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
-                            k, NULL, NULL, trial, &e2);
+                            k, 0, NULL, NULL, trial, &e2);
             double sd = st == SCAF_OK ? side_of(trial, a->nw) : INFINITY;
             if (sd < best_side) {
                 best_side = sd;

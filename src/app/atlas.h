@@ -18,7 +18,7 @@
  *   1b. re-placement (repack): the settled charts are moved rigidly (a
  *      translation and a multiple of 45 degrees) by a raster packer
  *      (app/atlas_pack: several placement strategies ranked on a coarse
- *      grid, the best few placed on the full grid) into a square, with
+ *      grid, the best pack_picks placed on the full grid) into a square, with
  *      pack_gap_factor times the padding between charts; the new layout
  *      is used only when every triangle keeps its exact orientation, the
  *      exact checker proves it bijective, the padding holds and it packs
@@ -43,8 +43,9 @@
  * corners around them) held still (restrict hook), then halves it. So
  * the layout normalized by one uniform scale 1/side into the unit square
  * has every chart gap >= padding after every iteration (checked in the
- * floating-point distance with a 1e-6 relative margin, and verified again
- * on the written output). The map stays bijective after every
+ * floating-point distance with a 1e-6 relative margin during the run; the
+ * normalized output is then certified exactly, chart_gap_certify in
+ * geom/chart_gap.h, before `scaf atlas` writes it). The map stays bijective after every
  * iteration (exact checks of the loop).
  *
  * Errors: SCAF_ERR_MESH naming the chart (not a disk / disk with holes,
@@ -86,12 +87,20 @@ typedef struct atlas_options {
                                     the exact checks pass and it packs
                                     better (1) */
     int pack_cells;              /* raster cells along the square (1024) */
+    int pack_picks;              /* strategies ranked on a grid of
+                                    pack_cells / 2 whose best this many are
+                                    placed again at full resolution (2; 4
+                                    before: the same layouts on the seam
+                                    meshes, twice the full-grid work) */
     double pack_gap_factor;      /* the packer leaves this times the padding
                                     between charts, for compaction to close
                                     (2) */
     double compact_lambda_ratio; /* lambda_ratio during compaction: a
                                     stronger scaffold moves charts further
-                                    (0.3) */
+                                    per iteration (1; was 0.3: on
+                                    human_neutral 40 compaction iterations
+                                    to 0.701 and E +1.1%, with 1: 22 to
+                                    0.713 and E +3.2%; bench/RESULTS-atlas.md) */
     double progress_tolerance;   /* phase 2 stops when the side shrank by
                                     less than this relatively over the last
                                     8 iterations (1e-3) */

@@ -197,7 +197,7 @@ int atlas_pack_strategies(int ncharts)
 }
 
 scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                       int ncharts, int cells, double gap, int strategy, int *chosen, long *strat_side, double *out,
+                       int ncharts, int cells, double gap, int strategy, int keep, int *chosen, long *strat_side, double *out,
                        scaf_error *err)
 {
     scaf_status st = SCAF_OK;
@@ -275,6 +275,11 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
         goto done;
     }
     long bestSide = -1;
+    /* the keep smallest completed sides, ascending (branch and bound) */
+    long topk[16];
+    int ntop = 0;
+    if (strategy >= 0 || keep < 0) keep = 0;
+    if (keep > 16) keep = 16;
     /* Strategies: chart order (area / longest side), rotations (multiples
      * of 90 degrees only / all), tie rule (lowest bottom / lowest top). */
     /* (many charts: the two cheapest, 90-degree rotations only) */
@@ -367,6 +372,10 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
             place[3 * c + 2] = br;
             if (bx + cr->w > curX) curX = bx + cr->w;
             if (by + cr->h > curY) curY = by + cr->h;
+            if (keep > 0 && ntop == keep && (curX > curY ? curX : curY) > topk[keep - 1]) {
+                curX = curY = G + 1; /* cannot be among the keep best */
+                break;
+            }
             /* mark the dilated cover, update the touched rows' prefix counts */
             for (int yy = 0; yy < cr->dh; yy++) {
                 int gy = by - k + yy;
@@ -390,6 +399,15 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
         }
         long side = curX > curY ? curX : curY;
         if (strat_side) strat_side[strat] = side <= G ? side : -1;
+        if (keep > 0 && side <= G && (ntop < keep || side < topk[ntop - 1])) {
+            /* insert into the sorted list, dropping the largest when full */
+            int i = ntop < keep ? ntop++ : ntop - 1;
+            while (i > 0 && topk[i - 1] > side) {
+                topk[i] = topk[i - 1];
+                i--;
+            }
+            topk[i] = side;
+        }
         if (side <= G && (bestSide < 0 || side < bestSide)) {
             bestSide = side;
             if (chosen) *chosen = strat;

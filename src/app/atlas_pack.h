@@ -30,11 +30,16 @@
  *            side, perturbed; rotations: 90 / 45 degrees; tie rule) and
  *            keep the smallest square; k: only strategy k
  * chosen     out (may be NULL): the strategy kept
+ * keep       with strategy -1 and keep > 0: a strategy is abandoned as
+ *            soon as its square is larger than the keep-th smallest square
+ *            of the strategies completed before it (it cannot be among the
+ *            keep best; the best is never abandoned); 0: run all fully
  * strat_side out (may be NULL): atlas_pack_strategies(ncharts) entries, the
- *            square side in cells each strategy reached (-1: not run)
+ *            square side in cells each strategy reached (-1: not run or
+ *            abandoned)
  * out        nw by 2 new positions (write) */
 scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                       int ncharts, int cells, double gap, int strategy, int *chosen, long *strat_side, double *out,
+                       int ncharts, int cells, double gap, int strategy, int keep, int *chosen, long *strat_side, double *out,
                        scaf_error *err);
 
 /* Number of strategies tried for ncharts charts. */

@@ -65,6 +65,8 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     json_number(o, op->base.box_scale);
     fputs(", \"lambda_ratio\": ", o);
     json_number(o, op->base.lambda_ratio);
+    fputs(", \"compact_lambda_ratio\": ", o);
+    json_number(o, op->compact_lambda_ratio);
     fprintf(o, "},\n  \"vertices\": %d,\n  \"faces\": %d,\n  \"charts\": %d,\n  \"split_uvs\": %d,\n", a->nv, a->nf,
             a->ncharts, a->split_uvs);
     fputs("  \"setup_seconds\": ", o);

@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "geom/bijectivity.h"
+#include "geom/expansion.h"
 
 static int find_root(int *p, int x)
 {
@@ -87,6 +88,76 @@ double chart_segment_distance(const double p1[2], const double p2[2], const doub
     return d;
 }
 
+/* ---- exact decisions ------------------------------------------------------ */
+
+/* Every number below is a polynomial of degree <= 4 in coordinate
+ * differences; with every coordinate 0 or of magnitude in [2^-200, 2^200]
+ * (checked by the caller) no expansion component overflows or underflows,
+ * so the expansion arithmetic is exact. */
+
+/* h = x1 * y1 + x2 * y2 for expansions (lengths <= 16 each). */
+static int exp_dot2(int lx1, const double *x1, int ly1, const double *y1, int lx2, const double *x2, int ly2,
+                    const double *y2, double *h)
+{
+    double a[128], b[128], work[512];
+    int la = exp_mul(lx1, x1, ly1, y1, a, work);
+    int lb = exp_mul(lx2, x2, ly2, y2, b, work);
+    return exp_sum(la, a, lb, b, h);
+}
+
+/* sign(|w|^2 - P^2), w an expansion pair (lengths <= 2); P2 the expansion
+ * of P^2 (length lp). */
+static double sq_minus(int lwx, const double *wx, int lwy, const double *wy, int lp, const double *P2)
+{
+    double n[16], neg[2], h[20];
+    int ln = exp_dot2(lwx, wx, lwx, wx, lwy, wy, lwy, wy, n);
+    exp_negate(lp, P2, neg);
+    int lh = exp_sum(ln, n, lp, neg, h);
+    return exp_sign_estimate(lh, h);
+}
+
+/* Exactly: is the distance from p to the closed segment ab at least P
+ * (P2 = the expansion of P^2)? */
+static int point_segment_at_least(const double *p, const double *a, const double *b, int lp, const double *P2)
+{
+    double dx[2], dy[2], wx[2], wy[2], vx[2], vy[2], dot[16];
+    int ldx = exp_from_diff(b[0], a[0], dx), ldy = exp_from_diff(b[1], a[1], dy);
+    int lwx = exp_from_diff(p[0], a[0], wx), lwy = exp_from_diff(p[1], a[1], wy);
+    /* nearest point a: (p - a).(b - a) <= 0 (also a == b) */
+    int ld = exp_dot2(lwx, wx, ldx, dx, lwy, wy, ldy, dy, dot);
+    if (exp_sign_estimate(ld, dot) <= 0.0) return sq_minus(lwx, wx, lwy, wy, lp, P2) >= 0.0;
+    /* nearest point b: (p - b).(b - a) >= 0 */
+    int lvx = exp_from_diff(p[0], b[0], vx), lvy = exp_from_diff(p[1], b[1], vy);
+    ld = exp_dot2(lvx, vx, ldx, dx, lvy, vy, ldy, dy, dot);
+    if (exp_sign_estimate(ld, dot) >= 0.0) return sq_minus(lvx, vx, lvy, vy, lp, P2) >= 0.0;
+    /* interior: cross(d, w)^2 >= P^2 |d|^2 */
+    double mwy[2], cr[16], cr2[512], d2[16], pd[64], work[1024], h[576];
+    exp_negate(ldy, dy, mwy);
+    int lc = exp_dot2(ldx, dx, lwy, wy, ldy, mwy, lwx, wx, cr);
+    int lc2 = exp_mul(lc, cr, lc, cr, cr2, work);
+    int ld2 = exp_dot2(ldx, dx, ldx, dx, ldy, dy, ldy, dy, d2);
+    int lpd = exp_mul(lp, P2, ld2, d2, pd, work);
+    exp_negate(lpd, pd, pd);
+    int lh = exp_sum(lc2, cr2, lpd, pd, h);
+    return exp_sign_estimate(lh, h) >= 0.0;
+}
+
+int chart_segment_distance_at_least(const double p1[2], const double p2[2], const double q1[2], const double q2[2],
+                                    double P)
+{
+    if (!(P > 0.0)) return 1;
+    if (bij_segments_meet(p1, p2, q1, q2)) return 0;
+    double P2[2], x, y;
+    two_product(P, P, &x, &y);
+    int lp = 0;
+    if (y != 0.0) P2[lp++] = y;
+    P2[lp++] = x;
+    /* two disjoint segments: their distance is the smallest of the four
+     * endpoint-to-segment distances */
+    return point_segment_at_least(p1, q1, q2, lp, P2) && point_segment_at_least(p2, q1, q2, lp, P2) &&
+           point_segment_at_least(q1, p1, p2, lp, P2) && point_segment_at_least(q2, p1, p2, lp, P2);
+}
+
 double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F)
 {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, area = 0.0;
@@ -122,7 +193,8 @@ static int cmp_bedge(const void *x, const void *y)
 
 /* One search with radius r over segments seg (n by {a, b, chart}). */
 static scaf_status grid_search(const double *UV, const int *seg, int n, double r, const double lo[2], double extent,
-                               double *best, int pair[2], unsigned char *mark, long *npairs, scaf_error *err)
+                               double *best, int pair[2], unsigned char *mark, long *npairs, double cert,
+                               int *bad, scaf_error *err)
 {
     double cell = extent / sqrt((double)n + 1.0);
     if (r > cell) cell = r;
@@ -181,8 +253,29 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
                 int fi = box[s][0] > box[t][0] ? box[s][0] : box[t][0];
                 int fj = box[s][1] > box[t][1] ? box[s][1] : box[t][1];
                 if (fi != ci || fj != cj) continue;
-                double d = chart_segment_distance(UV + 2 * (size_t)seg[3 * s], UV + 2 * (size_t)seg[3 * s + 1],
-                                                  UV + 2 * (size_t)seg[3 * t], UV + 2 * (size_t)seg[3 * t + 1]);
+                const double *p1 = UV + 2 * (size_t)seg[3 * s], *p2 = UV + 2 * (size_t)seg[3 * s + 1];
+                const double *q1 = UV + 2 * (size_t)seg[3 * t], *q2 = UV + 2 * (size_t)seg[3 * t + 1];
+                if (cert > 0.0) {
+                    /* boxes apart by more than cert along an axis: far
+                     * enough (rounding is monotone, so fl(gap) > cert
+                     * implies gap > cert); otherwise decide exactly */
+                    int apart = 0;
+                    for (int c = 0; c < 2; c++)
+                        if (fmin(q1[c], q2[c]) - fmax(p1[c], p2[c]) > cert ||
+                            fmin(p1[c], p2[c]) - fmax(q1[c], q2[c]) > cert)
+                            apart = 1;
+                    if (apart) continue;
+                    if (!chart_segment_distance_at_least(p1, p2, q1, q2, cert)) {
+                        if (!*bad && pair) {
+                            int p = seg[3 * s + 2], q = seg[3 * t + 2];
+                            pair[0] = p < q ? p : q;
+                            pair[1] = p < q ? q : p;
+                        }
+                        *bad = 1;
+                    }
+                    continue;
+                }
+                double d = chart_segment_distance(p1, p2, q1, q2);
                 if (mark && d < r) {
                     mark[seg[3 * s + 2]] = 1;
                     mark[seg[3 * t + 2]] = 1;
@@ -262,11 +355,12 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, doub
     }
     double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(extent > 0.0)) extent = 1.0;
-    if (radius > 0.0 && isfinite(radius)) return grid_search(UV, seg, n, radius, lo, extent, gap, pair, NULL, NULL, err);
+    if (radius > 0.0 && isfinite(radius))
+        return grid_search(UV, seg, n, radius, lo, extent, gap, pair, NULL, NULL, 0.0, NULL, err);
     double r = len / n;
     if (!(r > 0.0)) r = extent / n;
     for (;;) {
-        scaf_status st = grid_search(UV, seg, n, r, lo, extent, gap, pair, NULL, NULL, err);
+        scaf_status st = grid_search(UV, seg, n, r, lo, extent, gap, pair, NULL, NULL, 0.0, NULL, err);
         if (st != SCAF_OK || isfinite(*gap) || r > 4.0 * extent) return st;
         r *= 2.0;
     }
@@ -316,5 +410,47 @@ scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double
         }
     double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]), g = INFINITY;
     if (!(extent > 0.0)) extent = 1.0;
-    return grid_search(UV, seg, n, radius, lo, extent, &g, NULL, mark, npairs, err);
+    return grid_search(UV, seg, n, radius, lo, extent, &g, NULL, mark, npairs, 0.0, NULL, err);
+}
+
+/* Coordinates the exact test can take: 0 or magnitude in [2^-200, 2^200]
+ * (no expansion component of a degree-4 polynomial in their differences
+ * overflows or underflows). */
+static int exact_range(double x)
+{
+    double ax = fabs(x);
+    return ax == 0.0 || (ax >= 0x1p-200 && ax <= 0x1p200);
+}
+
+scaf_status chart_gap_certify(const double *UV, const int *seg, int n, double padding, int *ok, int pair[2],
+                              scaf_error *err)
+{
+    *ok = 1;
+    if (pair) pair[0] = pair[1] = -1;
+    if (!(padding >= 0.0) || !exact_range(padding))
+        return err_set(err, SCAF_ERR_NUMERIC, "chart gap certificate: padding %g outside [2^-200, 2^200]", padding);
+    if (n < 2 || padding == 0.0) return SCAF_OK;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int s = 0; s < n; s++)
+        for (int k = 0; k < 2; k++) {
+            int v = seg[3 * s + k];
+            const double *a = UV + 2 * (size_t)v;
+            for (int c = 0; c < 2; c++) {
+                if (!exact_range(a[c]))
+                    return err_set(err, SCAF_ERR_NUMERIC,
+                                   "chart gap certificate: UV %d coordinate %g is not 0 and outside [2^-200, 2^200]",
+                                   v, a[c]);
+                lo[c] = fmin(lo[c], a[c]);
+                hi[c] = fmax(hi[c], a[c]);
+            }
+        }
+    double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]), g = INFINITY;
+    if (!(extent > 0.0)) extent = 1.0;
+    int bad = 0;
+    /* search radius 2 * padding: boxes widened by a whole padding on each
+     * side, so every pair closer than the padding shares a cell with a
+     * margin far above the rounding of the cell indices */
+    scaf_status st = grid_search(UV, seg, n, 2.0 * padding, lo, extent, &g, pair, NULL, NULL, padding, &bad, err);
+    *ok = !bad;
+    return st;
 }

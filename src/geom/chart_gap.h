@@ -11,6 +11,24 @@
  * distance of the others is computed in floating point from the four
  * endpoint-to-segment distances (relative error a few ulps).
  *
+ * Certified padding (chart_gap_certify): "the layout has padding P" means,
+ * for the UV coordinates exactly as the doubles given (the real numbers
+ * they represent, no rounding) and P exactly as the double given: every
+ * point of one chart's boundary is at Euclidean distance >= P from every
+ * point of any other chart's boundary (so charts are >= P apart, touching
+ * at exactly P is allowed). It is decided without error: two boundary
+ * segments that meet fail; for two disjoint segments the distance is the
+ * smallest endpoint-to-segment distance, and dist(p, ab) >= P is decided
+ * by signs of polynomials in the coordinates evaluated in exact expansion
+ * arithmetic (geom/expansion): with w = p - a, d = b - a, the nearest
+ * point is a when w.d <= 0 (test |w|^2 >= P^2), b when (p - b).d >= 0
+ * (test |p - b|^2 >= P^2), else interior (test cross(d, w)^2 >= P^2 |d|^2).
+ * P^2 is formed exactly (two_product). The test needs every coordinate and
+ * P to be 0 or of magnitude in [2^-200, 2^200] (so no expansion component
+ * overflows or underflows); anything else is refused (SCAF_ERR_NUMERIC),
+ * never guessed. The OBJ writer prints doubles that read back identically,
+ * so a certified layout is certified in the written file too.
+ *
  * Packing efficiency: total UV area of the triangles divided by the area
  * of the smallest axis-aligned square containing the layout, i.e. by
  * (max(width, height))^2 of the UV bounding box: the fraction of the unit
@@ -54,6 +72,24 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int nseg, d
  * Returns the number of such pairs found (pairs, not charts). */
 scaf_status chart_gap_mark_close(const double *UV, const int *seg, int nseg, double radius, unsigned char *mark,
                                  long *npairs, scaf_error *err);
+
+/* Exact certificate (definition above): *ok = 1 when every pair of
+ * boundary segments of different charts is at distance >= padding, else 0
+ * with pair (may be NULL) = two charts of a failing pair.
+ *   UV        positions (referenced by seg), each 0 or |x| in [2^-200, 2^200]
+ *   seg       nseg by {a, b, chart} (chart_gap_segments)
+ *   padding   P >= 0 (0: always certified; non-overlap is the checker's)
+ * Candidate pairs come from the grid with radius 2P; pairs whose bounding
+ * boxes are more than P apart along an axis (decided by a floating-point
+ * subtraction, whose rounding is monotone) pass; the others are decided
+ * exactly. SCAF_ERR_NUMERIC for coordinates outside the exact range. */
+scaf_status chart_gap_certify(const double *UV, const int *seg, int nseg, double padding, int *ok, int pair[2],
+                              scaf_error *err);
+
+/* Exactly: is the distance between the closed segments p1p2 and q1q2 at
+ * least P (P > 0; coordinates in the range above)? 1 yes, 0 no. */
+int chart_segment_distance_at_least(const double p1[2], const double p2[2], const double q1[2], const double q2[2],
+                                    double P);
 
 /* Total unsigned UV area of the triangles / (longest side of the UV bounding
  * box of the referenced points)^2; 0 for an empty or flat layout. */

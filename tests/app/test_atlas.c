@@ -21,6 +21,7 @@
 #include <cmocka.h>
 
 #include "app/atlas.h"
+#include "app/atlas_pack.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
 #include "mesh/samples.h"
@@ -110,6 +111,10 @@ static void check_output(const atlas *a, double padding)
     double g;
     assert_int_equal(chart_gap_min(a->nw, UV, a->nf, a->Fw, NULL, 0.0, &g, NULL, &err), SCAF_OK);
     if (a->ncharts > 1) assert_true(g >= padding);
+    /* and decided exactly on the normalized doubles */
+    int ok = 0;
+    assert_int_equal(chart_gap_certify(UV, a->seg, a->nseg, padding, &ok, NULL, &err), SCAF_OK);
+    assert_true(ok);
     double eff = chart_packing_efficiency(a->nw, UV, a->nf, a->Fw);
     assert_true(eff > 0.0 && eff <= 1.0);
     free(UV);
@@ -326,6 +331,60 @@ static void padding_too_large_is_refused(void **state)
     mesh_free(&m);
 }
 
+/* The ranking's branch and bound (keep) abandons only strategies that
+ * cannot be among the keep best: the chosen strategy and the keep
+ * smallest squares equal those of the full ranking. */
+static void pack_keep_matches_full_ranking(void **state)
+{
+    (void)state;
+    mesh m;
+    patches(&m, 12, 4, 0);
+    atlas_options o = atlas_options_default();
+    o.padding = 4.0 / 1024.0;
+    o.settle_iterations = 2;
+    o.compact_iterations = 0;
+    o.repack = 0;
+    atlas a;
+    scaf_error err;
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    assert_int_equal(atlas_run(&a, NULL, NULL, &err), SCAF_OK);
+    int ns = atlas_pack_strategies(a.ncharts), c0 = -1, c1 = -1;
+    long *s0 = malloc(sizeof(long) * (size_t)ns), *s1 = malloc(sizeof(long) * (size_t)ns);
+    double *o0 = malloc(sizeof(double) * 2 * (size_t)a.nw), *o1 = malloc(sizeof(double) * 2 * (size_t)a.nw);
+    assert_non_null(s0);
+    assert_non_null(s1);
+    assert_non_null(o0);
+    assert_non_null(o1);
+    double gap = 2.0 * o.padding * atlas_side(&a);
+    for (int keep = 1; keep <= 3; keep++) {
+        assert_int_equal(atlas_pack(a.nw, a.loop.uv, a.nf, a.Fw, a.chart, a.wchart, a.ncharts, 128, gap, -1, 0, &c0,
+                                    s0, o0, &err),
+                         SCAF_OK);
+        assert_int_equal(atlas_pack(a.nw, a.loop.uv, a.nf, a.Fw, a.chart, a.wchart, a.ncharts, 128, gap, -1, keep,
+                                    &c1, s1, o1, &err),
+                         SCAF_OK);
+        assert_int_equal(s0[c0], s1[c1]);
+        for (int i = 0; i < 2 * a.nw; i++) assert_true(o0[i] == o1[i]);
+        /* the keep smallest sides are the same multiset */
+        for (int k = 0; k < keep; k++) {
+            int i0 = -1, i1 = -1;
+            for (int i = 0; i < ns; i++) {
+                if (s0[i] > 0 && (i0 < 0 || s0[i] < s0[i0])) i0 = i;
+                if (s1[i] > 0 && (i1 < 0 || s1[i] < s1[i1])) i1 = i;
+            }
+            assert_true(i0 >= 0 && i1 >= 0);
+            assert_int_equal(s0[i0], s1[i1]);
+            s0[i0] = s1[i1] = -1;
+        }
+    }
+    free(s0);
+    free(s1);
+    free(o0);
+    free(o1);
+    atlas_free(&a);
+    mesh_free(&m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -337,6 +396,7 @@ int main(void)
         cmocka_unit_test(init_input),
         cmocka_unit_test(split_fans),
         cmocka_unit_test(padding_too_large_is_refused),
+        cmocka_unit_test(pack_keep_matches_full_ranking),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

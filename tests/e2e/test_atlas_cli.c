@@ -95,6 +95,23 @@ static void cli_atlas_on_generated_sample(void **state)
     assert_true(gap >= 4.0 / 1024.0);
     assert_true(eff > 0.0 && eff <= 1.0);
     free(c);
+    {
+        /* the written file itself, read back: padding decided exactly */
+        mesh m;
+        scaf_error err;
+        assert_int_equal(mesh_read(out, &m, NULL, &err), SCAF_OK);
+        assert_true(mesh_has_uv(&m));
+        int *lab = malloc(sizeof(int) * (size_t)m.nf), nc, *seg = NULL, nseg = 0, ok = 0;
+        assert_non_null(lab);
+        assert_int_equal(chart_gap_labels(m.nuv, m.nf, m.FT, lab, &nc, &err), SCAF_OK);
+        assert_true(nc > 1);
+        assert_int_equal(chart_gap_segments(m.nf, m.FT, lab, &seg, &nseg, &err), SCAF_OK);
+        assert_int_equal(chart_gap_certify(m.UV, seg, nseg, 4.0 / 1024.0, &ok, NULL, &err), SCAF_OK);
+        assert_true(ok);
+        free(seg);
+        free(lab);
+        mesh_free(&m);
+    }
     char *r = slurp(rep);
     assert_non_null(r);
     assert_true(json_num(r, "min_chart_gap") >= 4.0 / 1024.0);
@@ -205,6 +222,9 @@ static int atlas_shared(const char *rel)
     double g;
     assert_int_equal(chart_gap_min(a.nw, UV, a.nf, a.Fw, a.chart, 0.0, &g, NULL, &err), SCAF_OK);
     if (a.ncharts > 1) assert_true(g >= o.padding);
+    int ok = 0;
+    assert_int_equal(chart_gap_certify(UV, a.seg, a.nseg, o.padding, &ok, NULL, &err), SCAF_OK);
+    assert_true(ok);
     /* every triangle keeps its chart: the output's UV charts (by shared
      * UV edges) are the input's charts (after splitting pinched vt) */
     mesh out = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};

@@ -135,6 +135,84 @@ static void segment_distance(void **state)
     assert_true(fabs(chart_segment_distance(a, b, e, f) - sqrt(2.0)) < 1e-15);
 }
 
+/* Exact boundaries: the certificate holds at exactly P and fails at the
+ * next double above, for the three nearest-point cases. */
+static void certified_exact_boundary(void **state)
+{
+    (void)state;
+    double above = nextafter(5.0, 6.0);
+    /* interior: segment (-3,-4)-(3,4), point (4,-3): distance exactly 5 */
+    double a[2] = {-3, -4}, b[2] = {3, 4}, p[2] = {4, -3}, p2[2] = {8, -6};
+    assert_true(chart_segment_distance_at_least(a, b, p, p2, 5.0));
+    assert_false(chart_segment_distance_at_least(a, b, p, p2, above));
+    /* endpoint a: (4,-3) from the segment (0,0)-(3,4) is 5 at (0,0) */
+    double o[2] = {0, 0}, q[2] = {8, -6};
+    assert_true(chart_segment_distance_at_least(o, b, p, q, 5.0));
+    assert_false(chart_segment_distance_at_least(o, b, p, q, above));
+    /* endpoint b: (6,8)+(4,-3) from (0,0)-(6,8) */
+    double e[2] = {6, 8}, r[2] = {10, 5}, r2[2] = {14, 2};
+    assert_true(chart_segment_distance_at_least(o, e, r, r2, 5.0));
+    assert_false(chart_segment_distance_at_least(o, e, r, r2, above));
+    /* crossing segments are at distance 0 */
+    double c1[2] = {1, -1}, c2[2] = {1, 1}, d1[2] = {0, 0}, d2[2] = {2, 0};
+    assert_false(chart_segment_distance_at_least(c1, c2, d1, d2, 1e-300 * 0x1p900));
+}
+
+static void certified_layouts(void **state)
+{
+    (void)state;
+    double ox[2] = {0, 1.25}, oy[2] = {0, 0.5}, UV[16];
+    int F[12], chart[4], nc, *seg = NULL, nseg = 0, ok = 0, pair[2];
+    squares(2, ox, oy, UV, F);
+    scaf_error err;
+    assert_int_equal(chart_gap_labels(8, 4, F, chart, &nc, &err), SCAF_OK);
+    assert_int_equal(chart_gap_segments(4, F, chart, &seg, &nseg, &err), SCAF_OK);
+    assert_int_equal(chart_gap_certify(UV, seg, nseg, 0.25, &ok, pair, &err), SCAF_OK);
+    assert_true(ok);
+    assert_int_equal(chart_gap_certify(UV, seg, nseg, nextafter(0.25, 1.0), &ok, pair, &err), SCAF_OK);
+    assert_false(ok);
+    assert_int_equal(pair[0], 0);
+    assert_int_equal(pair[1], 1);
+    assert_int_equal(chart_gap_certify(UV, seg, nseg, 0.0, &ok, NULL, &err), SCAF_OK);
+    assert_true(ok);
+    /* a coordinate the exact test cannot take is refused, not guessed */
+    UV[0] = 1e-300;
+    assert_int_equal(chart_gap_certify(UV, seg, nseg, 0.25, &ok, NULL, &err), SCAF_ERR_NUMERIC);
+    free(seg);
+}
+
+/* Random segment pairs: the exact decision agrees with the floating-point
+ * distance wherever that is not within 1e-9 of the threshold, and random
+ * layouts certify exactly when their measured gap is clearly above P. */
+static void certified_agrees_with_distance(void **state)
+{
+    (void)state;
+    unsigned s = 12345u;
+    int agree = 0, n = 20000;
+    for (int i = 0; i < n; i++) {
+        double x[8];
+        for (int k = 0; k < 8; k++) {
+            s = s * 1103515245u + 12345u;
+            x[k] = (double)(s >> 8) / (double)(1u << 24);
+        }
+        double P = 0.05 + 0.3 * x[0] * x[7];
+        double d = chart_segment_distance(x, x + 2, x + 4, x + 6);
+        int cert = chart_segment_distance_at_least(x, x + 2, x + 4, x + 6, P);
+        if (fabs(d - P) > 1e-9) {
+            assert_int_equal(cert, d >= P);
+            agree++;
+        }
+        /* just below / above the measured distance (whose rounding error,
+         * relative to d, grows as d shrinks against the segment lengths:
+         * 1e-12 is exceeded at d = 1.7e-5 here) */
+        if (d > 1e-3) {
+            assert_true(chart_segment_distance_at_least(x, x + 2, x + 4, x + 6, d * (1.0 - 1e-9)));
+            assert_false(chart_segment_distance_at_least(x, x + 2, x + 4, x + 6, d * (1.0 + 1e-9)));
+        }
+    }
+    assert_true(agree > n / 2);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -143,6 +221,9 @@ int main(void)
         cmocka_unit_test(random_layout_matches_brute_force),
         cmocka_unit_test(packing_efficiency),
         cmocka_unit_test(segment_distance),
+        cmocka_unit_test(certified_exact_boundary),
+        cmocka_unit_test(certified_layouts),
+        cmocka_unit_test(certified_agrees_with_distance),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
