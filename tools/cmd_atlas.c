@@ -17,6 +17,8 @@
 
 #include "app/atlas.h"
 #include "app/atlas_report.h"
+#include "base/timer.h"
+#include "cli_args.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -95,31 +97,6 @@ static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
     return 0;
 }
 
-static int parse_int(const char *s, int *out)
-{
-    char *end;
-    long v = strtol(s, &end, 10);
-    if (!*s || *end || v < 0 || v > 100000000) return 0;
-    *out = (int)v;
-    return 1;
-}
-
-static int parse_double(const char *s, double *out)
-{
-    char *end;
-    double v = strtod(s, &end);
-    if (!*s || *end || !isfinite(v)) return 0;
-    *out = v;
-    return 1;
-}
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 int cmd_atlas(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
@@ -150,13 +127,13 @@ int cmd_atlas(int argc, char **argv)
             out = v;
         } else if (!strcmp(a, "--padding")) {
             NEED_VALUE();
-            if (!parse_double(v, &padding) || padding < 0 || padding >= 0.5) BAD_VALUE();
+            if (!cli_parse_double(v, &padding) || padding < 0 || padding >= 0.5) BAD_VALUE();
         } else if (!strcmp(a, "--resolution")) {
             NEED_VALUE();
-            if (!parse_double(v, &resolution) || resolution < 1) BAD_VALUE();
+            if (!cli_parse_double(v, &resolution) || resolution < 1) BAD_VALUE();
         } else if (!strcmp(a, "--padding-texels")) {
             NEED_VALUE();
-            if (!parse_double(v, &texels) || texels < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &texels) || texels < 0) BAD_VALUE();
         } else if (!strcmp(a, "--init")) {
             NEED_VALUE();
             if (!strcmp(v, "tutte")) opt.base.init = SCAF_INIT_TUTTE;
@@ -165,22 +142,22 @@ int cmd_atlas(int argc, char **argv)
             else BAD_VALUE();
         } else if (!strcmp(a, "--iterations")) {
             NEED_VALUE();
-            if (!parse_int(v, &opt.settle_iterations)) BAD_VALUE();
+            if (!cli_parse_int(v, &opt.settle_iterations)) BAD_VALUE();
         } else if (!strcmp(a, "--compact-iterations")) {
             NEED_VALUE();
-            if (!parse_int(v, &opt.compact_iterations)) BAD_VALUE();
+            if (!cli_parse_int(v, &opt.compact_iterations)) BAD_VALUE();
         } else if (!strcmp(a, "--distortion-tolerance")) {
             NEED_VALUE();
-            if (!parse_double(v, &opt.distortion_tolerance) || opt.distortion_tolerance < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.distortion_tolerance) || opt.distortion_tolerance < 0) BAD_VALUE();
         } else if (!strcmp(a, "--box-scale")) {
             NEED_VALUE();
-            if (!parse_double(v, &opt.base.box_scale)) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.base.box_scale)) BAD_VALUE();
         } else if (!strcmp(a, "--compact-lambda-ratio")) {
             NEED_VALUE();
-            if (!parse_double(v, &opt.compact_lambda_ratio) || !(opt.compact_lambda_ratio > 0)) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.compact_lambda_ratio) || !(opt.compact_lambda_ratio > 0)) BAD_VALUE();
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
-            if (!parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             quiet = 1;
         } else if (!strcmp(a, "--report")) {
@@ -225,7 +202,7 @@ int cmd_atlas(int argc, char **argv)
     if (padding < 0.0) padding = 4.0 / 1024.0;
     opt.padding = padding;
 
-    double t_start = now();
+    double t_start = timer_now();
     mesh m;
     scaf_error err;
     err_clear(&err);
@@ -243,7 +220,7 @@ int cmd_atlas(int argc, char **argv)
         mesh_free(&m);
         return exit_code_for(st);
     }
-    double setup = now() - t_start;
+    double setup = timer_now() - t_start;
     ps.live = !quiet && isatty(fileno(stderr));
     if (!quiet && !ps.live)
         fprintf(stderr, "scaf atlas: %s: %d faces, %d chart(s)%s, padding %g\n", in, m.nf, a.ncharts,
@@ -292,7 +269,7 @@ int cmd_atlas(int argc, char **argv)
         rc = EXIT_OUTPUT;
         goto done;
     }
-    double total = now() - t_start;
+    double total = timer_now() - t_start;
     if (!quiet)
         fprintf(stderr,
                 "scaf atlas: %d charts, %d+%d iterations, E %.5f, packing efficiency %.3f -> %.3f, "

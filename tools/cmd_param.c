@@ -16,6 +16,8 @@
 #include "app/param.h"
 #include "app/param_report.h"
 #include "app/uv_svg.h"
+#include "base/timer.h"
+#include "cli_args.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
@@ -97,31 +99,6 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
     return 0;
 }
 
-static int parse_int(const char *s, int *out)
-{
-    char *end;
-    long v = strtol(s, &end, 10);
-    if (!*s || *end || v < 0 || v > 100000000) return 0;
-    *out = (int)v;
-    return 1;
-}
-
-static int parse_double(const char *s, double *out)
-{
-    char *end;
-    double v = strtod(s, &end);
-    if (!*s || *end || !isfinite(v)) return 0;
-    *out = v;
-    return 1;
-}
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 int cmd_param(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
@@ -151,10 +128,10 @@ int cmd_param(int argc, char **argv)
             out = v;
         } else if (!strcmp(a, "--iterations")) {
             NEED_VALUE();
-            if (!parse_int(v, &opt.max_iterations)) BAD_VALUE();
+            if (!cli_parse_int(v, &opt.max_iterations)) BAD_VALUE();
         } else if (!strcmp(a, "--tolerance")) {
             NEED_VALUE();
-            if (!parse_double(v, &opt.tolerance) || opt.tolerance < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.tolerance) || opt.tolerance < 0) BAD_VALUE();
         } else if (!strcmp(a, "--energy")) {
             NEED_VALUE();
             if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd")) opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
@@ -168,13 +145,13 @@ int cmd_param(int argc, char **argv)
             else BAD_VALUE();
         } else if (!strcmp(a, "--box-scale")) {
             NEED_VALUE();
-            if (!parse_double(v, &opt.box_scale)) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.box_scale)) BAD_VALUE();
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
-            if (!parse_double(v, &opt.lambda_ratio)) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.lambda_ratio)) BAD_VALUE();
         } else if (!strcmp(a, "--min-angle")) {
             NEED_VALUE();
-            if (!parse_double(v, &opt.min_angle_deg)) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.min_angle_deg)) BAD_VALUE();
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             quiet = 1;
         } else if (!strcmp(a, "--report")) {
@@ -213,7 +190,7 @@ int cmd_param(int argc, char **argv)
         fprintf(stderr, "scaf param: warning: ARAP is not a barrier energy: triangles pushed towards "
                         "inversion are only held by the line search and may become very thin "
                         "(symmetric-dirichlet is the default for that reason)\n");
-    double t_start = now();
+    double t_start = timer_now();
     mesh m;
     scaf_error err;
     err_clear(&err);
@@ -238,7 +215,7 @@ int cmd_param(int argc, char **argv)
         rc = st == SCAF_ERR_USAGE ? EXIT_MESH : exit_code_for(st);
         goto done;
     }
-    double setup = now() - t_start;
+    double setup = timer_now() - t_start;
     double e0 = scaf_param_energy(p);
     ps.p = p;
     ps.verify = verify;
@@ -262,7 +239,7 @@ int cmd_param(int argc, char **argv)
     double e1 = scaf_param_energy(p);
     if (!quiet)
         fprintf(stderr, "scaf param: %d iterations, E %.6f -> %.6f, %.3f s%s\n", scaf_param_iterations(p), e0, e1,
-                now() - t_start, verify ? " (bijective after every iteration: verified)" : "");
+                timer_now() - t_start, verify ? " (bijective after every iteration: verified)" : "");
 
     int nuv = scaf_param_uv_count(p);
     UV = malloc(sizeof(double) * 2 * (size_t)nuv);
