@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "commands.h"
+#include "base/json_write.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -45,15 +46,9 @@ static void usage(FILE *out)
 
 static void print_json(const char *path, const bij_report *r, double gap, double eff)
 {
-    printf("{\"file\": \"");
-    for (const char *c = path; *c; c++) {
-        if (*c == '"' || *c == '\\') putchar('\\');
-        if ((unsigned char)*c < 0x20)
-            printf("\\u%04x", (unsigned)(unsigned char)*c);
-        else
-            putchar(*c);
-    }
-    printf("\", \"triangles\": %d, \"positive\": %d, \"flipped\": %d, \"degenerate\": %d, "
+    printf("{\"file\": ");
+    json_write_string(stdout, path);
+    printf(", \"triangles\": %d, \"positive\": %d, \"flipped\": %d, \"degenerate\": %d, "
            "\"charts\": %d, \"mirrored_charts\": %d, \"mixed_charts\": %d, "
            "\"boundary_edges\": %d, \"boundary_loops\": %d, \"boundary_crossings\": %lld, "
            "\"boundary_touchings\": %lld, \"boundary_foldbacks\": %lld, \"folded_edges\": %d, \"nonmanifold_edges\": %d, "

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "commands.h"
+#include "base/json_write.h"
 #include "exit_codes.h"
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
@@ -60,19 +61,6 @@ static const char *format_name(mesh_format f)
     }
 }
 
-/* JSON string body with the few escapes a path can need. */
-static void json_string(FILE *out, const char *s)
-{
-    fputc('"', out);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\') fprintf(out, "\\%c", c);
-        else if (c < 0x20) fprintf(out, "\\u%04x", c);
-        else fputc(c, out);
-    }
-    fputc('"', out);
-}
-
 static void json_genus(FILE *out, int g)
 {
     if (g < 0) fputs("null", out);
@@ -93,7 +81,7 @@ static void print_json(FILE *out, const char *path, const mesh_read_info *ri, co
     int kinds[MESH_CHART_NON_ORIENTABLE + 1] = {0};
     for (int c = 0; c < ch->ncharts; c++) kinds[mesh_chart_classify(ch, c)]++;
     fputs("{\n  \"file\": ", out);
-    json_string(out, path);
+    json_write_string(out, path);
     fprintf(out, ",\n  \"format\": \"%s\",\n", format_name(ri->format));
     fprintf(out, "  \"vertices\": %d,\n", t->vertices);
     fprintf(out, "  \"vertices_in_file\": %d,\n", m->nv);

@@ -7,27 +7,7 @@
 #include <stdlib.h>
 
 #include "app/atomic_file.h"
-
-static void json_string(FILE *o, const char *s)
-{
-    if (!s) {
-        fputs("null", o);
-        return;
-    }
-    fputc('"', o);
-    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
-        if (*c == '"' || *c == '\\') fprintf(o, "\\%c", *c);
-        else if (*c < 0x20) fprintf(o, "\\u%04x", *c);
-        else fputc(*c, o);
-    }
-    fputc('"', o);
-}
-
-static void json_number(FILE *o, double x)
-{
-    if (isfinite(x)) fprintf(o, "%.17g", x);
-    else fputs("null", o);
-}
+#include "base/json_write.h"
 
 scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_error *err)
 {
@@ -44,80 +24,80 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     FILE *o = af.f;
     const atlas_options *op = &a->opt;
     fputs("{\n  \"command\": \"atlas\",\n  \"input\": ", o);
-    json_string(o, r->input);
+    json_write_string(o, r->input);
     fputs(",\n  \"output\": ", o);
-    json_string(o, r->output);
+    json_write_string(o, r->output);
     fputs(",\n  \"options\": {\"padding\": ", o);
-    json_number(o, op->padding);
+    json_write_number(o, op->padding);
     fputs(", \"resolution\": ", o);
-    json_number(o, r->resolution > 0 ? r->resolution : NAN);
+    json_write_number(o, r->resolution > 0 ? r->resolution : NAN);
     fprintf(o, ", \"init\": \"%s\", \"settle_iterations\": %d, \"settle_tolerance\": ",
             op->init_input ? "input" : (op->base.init == SCAF_INIT_HARMONIC ? "harmonic" : "tutte"),
             op->settle_iterations);
-    json_number(o, op->settle_tolerance);
+    json_write_number(o, op->settle_tolerance);
     fprintf(o, ", \"compact_iterations\": %d, \"compact_box_scale\": ", op->compact_iterations);
-    json_number(o, op->compact_box_scale);
+    json_write_number(o, op->compact_box_scale);
     fputs(", \"compact_fraction\": ", o);
-    json_number(o, op->compact_fraction);
+    json_write_number(o, op->compact_fraction);
     fputs(", \"distortion_tolerance\": ", o);
-    json_number(o, op->distortion_tolerance);
+    json_write_number(o, op->distortion_tolerance);
     fputs(", \"box_scale\": ", o);
-    json_number(o, op->base.box_scale);
+    json_write_number(o, op->base.box_scale);
     fputs(", \"lambda_ratio\": ", o);
-    json_number(o, op->base.lambda_ratio);
+    json_write_number(o, op->base.lambda_ratio);
     fputs(", \"compact_lambda_ratio\": ", o);
-    json_number(o, op->compact_lambda_ratio);
+    json_write_number(o, op->compact_lambda_ratio);
     fprintf(o, "},\n  \"vertices\": %d,\n  \"faces\": %d,\n  \"charts\": %d,\n  \"split_uvs\": %d,\n", a->nv, a->nf,
             a->ncharts, a->split_uvs);
     fputs("  \"setup_seconds\": ", o);
-    json_number(o, r->setup_seconds);
+    json_write_number(o, r->setup_seconds);
     fputs(",\n  \"total_seconds\": ", o);
-    json_number(o, r->total_seconds);
+    json_write_number(o, r->total_seconds);
     fprintf(o, ",\n  \"settle_iterations_run\": %d,\n  \"compact_iterations_run\": %d,\n", a->settle_done,
             a->compact_done);
     fputs("  \"settled_energy\": ", o);
-    json_number(o, a->settled_energy);
+    json_write_number(o, a->settled_energy);
     fputs(",\n  \"final_energy\": ", o);
-    json_number(o, scaf_loop_energy(&a->loop));
+    json_write_number(o, scaf_loop_energy(&a->loop));
     fputs(",\n  \"packing_efficiency_before_compaction\": ", o);
-    json_number(o, a->eff_before);
+    json_write_number(o, a->eff_before);
     fputs(",\n  \"packing_efficiency_after_repack\": ", o);
-    json_number(o, a->eff_packed);
+    json_write_number(o, a->eff_packed);
     fputs(",\n  \"packing_efficiency_after_compaction\": ", o);
-    json_number(o, a->eff_after);
+    json_write_number(o, a->eff_after);
     fputs(",\n  \"min_chart_gap_before_compaction\": ", o);
-    json_number(o, a->gap_before);
+    json_write_number(o, a->gap_before);
     fputs(",\n  \"min_chart_gap_after_compaction\": ", o);
-    json_number(o, a->gap_after);
+    json_write_number(o, a->gap_after);
     fputs(",\n  \"min_chart_gap\": ", o);
-    json_number(o, r->out_gap);
+    json_write_number(o, r->out_gap);
     fputs(",\n  \"packing_efficiency\": ", o);
-    json_number(o, r->out_efficiency);
+    json_write_number(o, r->out_efficiency);
     fputs(",\n  \"chart_distortion\": [", o);
     for (int c = 0; c < a->ncharts; c++) {
         if (c) fputs(", ", o);
-        json_number(o, E[c]);
+        json_write_number(o, E[c]);
     }
     fputs("],\n  \"iterations\": [", o);
     for (int i = 0; i < r->niterations; i++) {
         const atlas_iteration *it = &r->iterations[i];
         fprintf(o, "%s\n    {\"iteration\": %d, \"phase\": \"%s\", \"energy\": ", i ? "," : "", it->info.iteration,
                 it->phase == ATLAS_COMPACT ? "compact" : "settle");
-        json_number(o, it->info.energy);
+        json_write_number(o, it->info.energy);
         fputs(", \"total_before\": ", o);
-        json_number(o, it->info.total_before);
+        json_write_number(o, it->info.total_before);
         fputs(", \"total_after\": ", o);
-        json_number(o, it->info.total_after);
+        json_write_number(o, it->info.total_after);
         fputs(", \"step\": ", o);
-        json_number(o, it->info.step);
+        json_write_number(o, it->info.step);
         fputs(", \"seconds\": ", o);
-        json_number(o, it->info.seconds);
+        json_write_number(o, it->info.seconds);
         fprintf(o, ", \"scaffold_triangles\": %d, \"side\": ", it->info.scaffold_triangles);
-        json_number(o, it->side);
+        json_write_number(o, it->side);
         fputs(", \"min_chart_gap\": ", o);
-        json_number(o, it->gap);
+        json_write_number(o, it->gap);
         fputs(", \"packing_efficiency\": ", o);
-        json_number(o, it->efficiency);
+        json_write_number(o, it->efficiency);
         fputc('}', o);
     }
     fputs("\n  ]\n}\n", o);

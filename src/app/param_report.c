@@ -6,27 +6,7 @@
 #include <stdlib.h>
 
 #include "app/atomic_file.h"
-
-static void json_string(FILE *o, const char *s)
-{
-    if (!s) {
-        fputs("null", o);
-        return;
-    }
-    fputc('"', o);
-    for (const unsigned char *c = (const unsigned char *)s; *c; c++) {
-        if (*c == '"' || *c == '\\') fprintf(o, "\\%c", *c);
-        else if (*c < 0x20) fprintf(o, "\\u%04x", *c);
-        else fputc(*c, o);
-    }
-    fputc('"', o);
-}
-
-static void json_number(FILE *o, double x)
-{
-    if (isfinite(x)) fprintf(o, "%.17g", x);
-    else fputs("null", o);
-}
+#include "base/json_write.h"
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -64,36 +44,36 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
     FILE *o = a.f;
     const scaf_options_t *op = r->options;
     fputs("{\n  \"input\": ", o);
-    json_string(o, r->input);
+    json_write_string(o, r->input);
     fputs(",\n  \"output\": ", o);
-    json_string(o, r->output);
+    json_write_string(o, r->output);
     fputs(",\n  \"status\": ", o);
-    json_string(o, r->status);
+    json_write_string(o, r->status);
     if (op) {
         fprintf(o, ",\n  \"options\": {\"energy\": \"%s\", \"init\": \"%s\", \"max_iterations\": %d, \"tolerance\": ",
                 energy_name(op->energy), op->init == SCAF_INIT_HARMONIC ? "harmonic" : "tutte", op->max_iterations);
-        json_number(o, op->tolerance);
+        json_write_number(o, op->tolerance);
         fputs(", \"box_scale\": ", o);
-        json_number(o, op->box_scale);
+        json_write_number(o, op->box_scale);
         fprintf(o, ", \"box_square\": %s, \"box_points_per_side\": %d, \"lambda_ratio\": ", op->box_square ? "true" : "false",
                 op->box_points_per_side);
-        json_number(o, op->lambda_ratio);
+        json_write_number(o, op->lambda_ratio);
         fputs(", \"min_angle_deg\": ", o);
-        json_number(o, op->min_angle_deg);
+        json_write_number(o, op->min_angle_deg);
         fputs(", \"step_fraction\": ", o);
-        json_number(o, op->step_fraction);
+        json_write_number(o, op->step_fraction);
         fputs("}", o);
     }
     fprintf(o, ",\n  \"mesh\": {\"vertices\": %d, \"faces\": %d, \"charts\": %d}", r->vertices, r->faces, r->charts);
     fputs(",\n  \"setup_seconds\": ", o);
-    json_number(o, r->setup_seconds);
+    json_write_number(o, r->setup_seconds);
     fputs(",\n  \"initial_energy\": ", o);
-    json_number(o, r->initial_energy);
+    json_write_number(o, r->initial_energy);
     fputs(",\n  \"final_energy\": ", o);
-    json_number(o, r->final_energy);
+    json_write_number(o, r->final_energy);
     fprintf(o, ",\n  \"iteration_count\": %d", r->niterations);
     fputs(",\n  \"median_seconds_per_iteration\": ", o);
-    json_number(o, param_report_median_seconds(r->iterations, r->niterations));
+    json_write_number(o, param_report_median_seconds(r->iterations, r->niterations));
 
     double sum[SCAF_PHASE_COUNT] = {0}, total = 0.0;
     for (int i = 0; i < r->niterations; i++) {
@@ -101,39 +81,39 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
         for (int k = 0; k < SCAF_PHASE_COUNT; k++) sum[k] += r->iterations[i].phase_seconds[k];
     }
     fputs(",\n  \"seconds\": ", o);
-    json_number(o, total);
+    json_write_number(o, total);
     fputs(",\n  \"phase_seconds\": {", o);
     for (int k = 0; k < SCAF_PHASE_COUNT; k++) {
         fprintf(o, "%s\"%s\": ", k ? ", " : "", scaf_phase_name((scaf_phase)k));
-        json_number(o, sum[k]);
+        json_write_number(o, sum[k]);
     }
     fputs("},\n  \"phase_fraction\": {", o);
     for (int k = 0; k < SCAF_PHASE_COUNT; k++) {
         fprintf(o, "%s\"%s\": ", k ? ", " : "", scaf_phase_name((scaf_phase)k));
-        json_number(o, total > 0.0 ? sum[k] / total : 0.0);
+        json_write_number(o, total > 0.0 ? sum[k] / total : 0.0);
     }
     fputs("},\n  \"iterations\": [", o);
     for (int i = 0; i < r->niterations; i++) {
         const scaf_iteration_info_t *it = &r->iterations[i];
         fprintf(o, "%s\n    {\"iteration\": %d, \"energy\": ", i ? "," : "", it->iteration);
-        json_number(o, it->energy);
+        json_write_number(o, it->energy);
         fputs(", \"energy_before\": ", o);
-        json_number(o, it->energy_before);
+        json_write_number(o, it->energy_before);
         fputs(", \"total_before\": ", o);
-        json_number(o, it->total_before);
+        json_write_number(o, it->total_before);
         fputs(", \"total_after\": ", o);
-        json_number(o, it->total_after);
+        json_write_number(o, it->total_after);
         fputs(", \"lambda\": ", o);
-        json_number(o, it->lambda);
+        json_write_number(o, it->lambda);
         fputs(", \"step\": ", o);
-        json_number(o, it->step);
+        json_write_number(o, it->step);
         fprintf(o, ", \"scaffold_triangles\": %d, \"scaffold_vertices\": %d, \"seconds\": ", it->scaffold_triangles,
                 it->scaffold_vertices);
-        json_number(o, it->seconds);
+        json_write_number(o, it->seconds);
         fputs(", \"phase_seconds\": {", o);
         for (int k = 0; k < SCAF_PHASE_COUNT; k++) {
             fprintf(o, "%s\"%s\": ", k ? ", " : "", scaf_phase_name((scaf_phase)k));
-            json_number(o, it->phase_seconds[k]);
+            json_write_number(o, it->phase_seconds[k]);
         }
         fputs("}}", o);
     }
