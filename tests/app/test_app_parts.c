@@ -16,20 +16,6 @@
 #include "app/uv_svg.h"
 #include "support/support.h"
 
-static char *slurp(const char *p)
-{
-    FILE *f = fopen(p, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = '\0';
-    fclose(f);
-    return s;
-}
-
 static int count(const char *s, const char *needle)
 {
     int n = 0;
@@ -95,7 +81,7 @@ static void svg_file_has_every_triangle(void **state)
     char path[512];
     test_tmp_path("parts.svg", path, sizeof path);
     assert_int_equal(uv_svg_write(path, 4, uv, 2, F, E, &sc, "a <title> & more", NULL), SCAF_OK);
-    char *s = slurp(path);
+    char *s = test_slurp(path);
     assert_non_null(s);
     assert_int_equal(count(s, "<polygon"), 3);
     assert_non_null(strstr(s, "&lt;title&gt; &amp;"));
@@ -128,7 +114,7 @@ static void report_is_json_with_phases(void **state)
     char path[512];
     test_tmp_path("parts.json", path, sizeof path);
     assert_int_equal(param_report_write(path, &r, NULL), SCAF_OK);
-    char *s = slurp(path);
+    char *s = test_slurp(path);
     assert_non_null(s);
     assert_int_equal(count(s, "{"), count(s, "}"));
     assert_int_equal(count(s, "["), count(s, "]"));

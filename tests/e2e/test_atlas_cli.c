@@ -29,37 +29,6 @@
 #include "mesh/uv_charts.h"
 #include "support/support.h"
 
-static int run(const char *fmt, ...)
-{
-    char cmd[4096];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(cmd, sizeof cmd, fmt, ap);
-    va_end(ap);
-    int s = system(cmd);
-    return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-}
-
-static int exists(const char *p)
-{
-    struct stat st;
-    return stat(p, &st) == 0;
-}
-
-static char *slurp(const char *p)
-{
-    FILE *f = fopen(p, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = '\0';
-    fclose(f);
-    return s;
-}
-
 /* The number after "key": in a JSON text (NAN when absent / null). */
 static double json_num(const char *s, const char *key)
 {
@@ -82,13 +51,13 @@ static void cli_atlas_on_generated_sample(void **state)
     test_tmp_path("e2e_atlas.svg", svg, sizeof svg);
     test_tmp_path("e2e_atlas_check.json", chk, sizeof chk);
     remove(out);
-    assert_int_equal(run("%s gen cubesphere --size 4 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(run("%s atlas %s -o %s --resolution 1024 --padding-texels 4 --iterations 4 "
+    assert_int_equal(test_run("%s gen cubesphere --size 4 -o %s", SCAF_BINARY, in), 0);
+    assert_int_equal(test_run("%s atlas %s -o %s --resolution 1024 --padding-texels 4 --iterations 4 "
                          "--compact-iterations 4 --quiet --report %s --svg %s",
                          SCAF_BINARY, in, out, rep, svg),
                      0);
-    assert_int_equal(run("%s check --json %s > %s", SCAF_BINARY, out, chk), 0);
-    char *c = slurp(chk);
+    assert_int_equal(test_run("%s check --json %s > %s", SCAF_BINARY, out, chk), 0);
+    char *c = test_slurp(chk);
     assert_non_null(c);
     assert_non_null(strstr(c, "\"bijective\": true"));
     double gap = json_num(c, "min_chart_gap"), eff = json_num(c, "packing_efficiency");
@@ -112,14 +81,14 @@ static void cli_atlas_on_generated_sample(void **state)
         free(lab);
         mesh_free(&m);
     }
-    char *r = slurp(rep);
+    char *r = test_slurp(rep);
     assert_non_null(r);
     assert_true(json_num(r, "min_chart_gap") >= 4.0 / 1024.0);
     assert_false(isnan(json_num(r, "packing_efficiency_before_compaction")));
     assert_false(isnan(json_num(r, "packing_efficiency_after_compaction")));
     assert_non_null(strstr(r, "\"chart_distortion\": ["));
     free(r);
-    char *s = slurp(svg);
+    char *s = test_slurp(svg);
     assert_non_null(s);
     assert_non_null(strstr(s, "<svg"));
     free(s);
@@ -143,16 +112,16 @@ static void cli_atlas_errors(void **state)
     test_tmp_path("e2e_atlas_tet.obj", in, sizeof in);
     test_tmp_path("e2e_atlas_bad_out.obj", out, sizeof out);
     remove(out);
-    assert_int_equal(run("%s gen tetrahedron -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(run("%s atlas %s -o %s --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
-    assert_false(exists(out));
-    assert_int_equal(run("%s atlas %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY, SCAF_TEST_TMPDIR, out), 3);
-    assert_int_equal(run("%s atlas %s 2> /dev/null", SCAF_BINARY, in), 2);
-    assert_int_equal(run("%s atlas %s -o %s --padding-texels 4 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(run("%s atlas %s -o %s --padding 0.7 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(run("%s atlas %s -o %s --init nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(run("%s atlas --help > /dev/null", SCAF_BINARY), 0);
-    assert_false(exists(out));
+    assert_int_equal(test_run("%s gen tetrahedron -o %s", SCAF_BINARY, in), 0);
+    assert_int_equal(test_run("%s atlas %s -o %s --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
+    assert_false(test_exists(out));
+    assert_int_equal(test_run("%s atlas %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY, SCAF_TEST_TMPDIR, out), 3);
+    assert_int_equal(test_run("%s atlas %s 2> /dev/null", SCAF_BINARY, in), 2);
+    assert_int_equal(test_run("%s atlas %s -o %s --padding-texels 4 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(test_run("%s atlas %s -o %s --padding 0.7 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(test_run("%s atlas %s -o %s --init nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(test_run("%s atlas --help > /dev/null", SCAF_BINARY), 0);
+    assert_false(test_exists(out));
 }
 
 /* --init input on a mesh whose input UVs overlap: exit 4, no output. */
@@ -164,8 +133,8 @@ static void cli_init_input_refused(void **state)
     if (!p) skip();
     test_tmp_path("e2e_atlas_hn_input.obj", out, sizeof out);
     remove(out);
-    assert_int_equal(run("%s atlas %s -o %s --init input --quiet 2> /dev/null", SCAF_BINARY, p, out), 4);
-    assert_false(exists(out));
+    assert_int_equal(test_run("%s atlas %s -o %s --init input --quiet 2> /dev/null", SCAF_BINARY, p, out), 4);
+    assert_false(test_exists(out));
 }
 
 /* ---- shared seam meshes, checked after every iteration ---------------- */

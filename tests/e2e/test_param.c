@@ -28,37 +28,6 @@
 #include "support/param_watch.h"
 #include "support/support.h"
 
-static int run(const char *fmt, ...)
-{
-    char cmd[4096];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(cmd, sizeof cmd, fmt, ap);
-    va_end(ap);
-    int s = system(cmd);
-    return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-}
-
-static int exists(const char *p)
-{
-    struct stat st;
-    return stat(p, &st) == 0;
-}
-
-static char *slurp(const char *p)
-{
-    FILE *f = fopen(p, "rb");
-    if (!f) return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = '\0';
-    fclose(f);
-    return s;
-}
-
 static void cli_param_on_generated_sample(void **state)
 {
     (void)state;
@@ -68,11 +37,11 @@ static void cli_param_on_generated_sample(void **state)
     test_tmp_path("e2e_param_report.json", rep, sizeof rep);
     test_tmp_path("e2e_param.svg", svg, sizeof svg);
     remove(out);
-    assert_int_equal(run("%s gen hemisphere --size 6 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(run("%s param %s -o %s --iterations 4 --quiet --verify --report %s --svg %s --svg-scaffold", SCAF_BINARY,
+    assert_int_equal(test_run("%s gen hemisphere --size 6 -o %s", SCAF_BINARY, in), 0);
+    assert_int_equal(test_run("%s param %s -o %s --iterations 4 --quiet --verify --report %s --svg %s --svg-scaffold", SCAF_BINARY,
                          in, out, rep, svg),
                      0);
-    assert_int_equal(run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
     /* v lines untouched, UVs present */
     mesh a, b;
     scaf_error err;
@@ -85,23 +54,23 @@ static void cli_param_on_generated_sample(void **state)
     assert_true(mesh_has_uv(&b));
     mesh_free(&a);
     mesh_free(&b);
-    char *r = slurp(rep);
+    char *r = test_slurp(rep);
     assert_non_null(r);
     assert_non_null(strstr(r, "\"iterations\""));
     assert_non_null(strstr(r, "\"phase_seconds\""));
     assert_non_null(strstr(r, "\"factorization\""));
     assert_non_null(strstr(r, "\"options\""));
     free(r);
-    char *s = slurp(svg);
+    char *s = test_slurp(svg);
     assert_non_null(s);
     assert_true(strncmp(s, "<?xml", 5) == 0);
     assert_non_null(strstr(s, "<polygon"));
     assert_non_null(strstr(s, "</svg>"));
     free(s);
     /* a mesh with UV seams: charts by seams */
-    assert_int_equal(run("%s gen cubesphere --size 3 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(run("%s param %s -o %s --iterations 3 --quiet", SCAF_BINARY, in, out), 0);
-    assert_int_equal(run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    assert_int_equal(test_run("%s gen cubesphere --size 3 -o %s", SCAF_BINARY, in), 0);
+    assert_int_equal(test_run("%s param %s -o %s --iterations 3 --quiet", SCAF_BINARY, in, out), 0);
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
 }
 
 static void cli_bad_input_leaves_no_output(void **state)
@@ -111,22 +80,22 @@ static void cli_bad_input_leaves_no_output(void **state)
     test_tmp_path("e2e_param_bad.obj", in, sizeof in);
     test_tmp_path("e2e_param_bad_out.obj", out, sizeof out);
     remove(out);
-    assert_int_equal(run("%s gen tetrahedron -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(run("%s param %s -o %s --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
-    assert_false(exists(out));
-    assert_int_equal(run("%s param %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY, SCAF_TEST_TMPDIR, out), 3);
-    assert_false(exists(out));
-    assert_int_equal(run("%s param %s 2> /dev/null", SCAF_BINARY, in), 2);
-    assert_int_equal(run("%s param %s -o %s --energy nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(run("%s param %s -o %s --iterations -3 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(run("%s param %s -o %s --box-scale 0.5 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(run("%s param --help > /dev/null", SCAF_BINARY), 0);
-    assert_false(exists(out));
+    assert_int_equal(test_run("%s gen tetrahedron -o %s", SCAF_BINARY, in), 0);
+    assert_int_equal(test_run("%s param %s -o %s --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
+    assert_false(test_exists(out));
+    assert_int_equal(test_run("%s param %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY, SCAF_TEST_TMPDIR, out), 3);
+    assert_false(test_exists(out));
+    assert_int_equal(test_run("%s param %s 2> /dev/null", SCAF_BINARY, in), 2);
+    assert_int_equal(test_run("%s param %s -o %s --energy nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(test_run("%s param %s -o %s --iterations -3 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(test_run("%s param %s -o %s --box-scale 0.5 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(test_run("%s param --help > /dev/null", SCAF_BINARY), 0);
+    assert_false(test_exists(out));
     /* output folder that does not exist: exit 5, nothing written */
     char hemi[512];
     test_tmp_path("e2e_param_hemi.obj", hemi, sizeof hemi);
-    assert_int_equal(run("%s gen hemisphere --size 3 -o %s", SCAF_BINARY, hemi), 0);
-    assert_int_equal(run("%s param %s -o %s/missing-dir/x.obj --iterations 1 --quiet 2> /dev/null", SCAF_BINARY, hemi,
+    assert_int_equal(test_run("%s gen hemisphere --size 3 -o %s", SCAF_BINARY, hemi), 0);
+    assert_int_equal(test_run("%s param %s -o %s/missing-dir/x.obj --iterations 1 --quiet 2> /dev/null", SCAF_BINARY, hemi,
                          SCAF_TEST_TMPDIR),
                      5);
 }

@@ -1,9 +1,11 @@
 /* tests/support: see support.h. */
 #include "support/support.h"
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 
 #ifndef SCAF_DATA_DIR
 #define SCAF_DATA_DIR "../shared/data"
@@ -26,4 +28,45 @@ const char *test_tmp_path(const char *name, char *buf, size_t size)
 {
     snprintf(buf, size, "%s/%s", SCAF_TEST_TMPDIR, name);
     return buf;
+}
+
+int test_run(const char *fmt, ...)
+{
+    char cmd[4096];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(cmd, sizeof cmd, fmt, ap);
+    va_end(ap);
+    int s = system(cmd);
+    return s != -1 && WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+}
+
+int test_exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+char *test_slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    if (fseek(f, 0, SEEK_END) != 0) {
+        fclose(f);
+        return NULL;
+    }
+    long n = ftell(f);
+    if (n < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fclose(f);
+        return NULL;
+    }
+    char *s = malloc((size_t)n + 1);
+    if (!s) {
+        fclose(f);
+        return NULL;
+    }
+    size_t got = fread(s, 1, (size_t)n, f);
+    s[got] = '\0';
+    fclose(f);
+    return s;
 }

@@ -14,4 +14,15 @@ const char *test_data_path(const char *relative, char *buf, size_t size);
  * "<tmpdir>/<name>" (the folder is created by the build). */
 const char *test_tmp_path(const char *name, char *buf, size_t size);
 
+/* Run a shell command built printf-style; returns its exit status, or -1
+ * when it did not exit normally. */
+int test_run(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Whether a file (or folder) exists. */
+int test_exists(const char *path);
+
+/* The whole file as a NUL-terminated string (caller frees), NULL when it
+ * cannot be read. */
+char *test_slurp(const char *path);
+
 #endif
