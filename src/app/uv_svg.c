@@ -63,6 +63,7 @@ scaf_status uv_svg_write(const char *path, int nuv, const double *uv, int nf, co
     if (!(ext > 0.0)) ext = 1.0;
     double scale = 1000.0 / ext, margin = 20.0;
     double W = w * scale + 2 * margin, H = h * scale + 2 * margin + 30.0;
+    if (W < 720.0) W = 720.0; /* room for the title line on tall layouts */
 
     atomic_file a;
     scaf_status st = atomic_open(&a, path, err);
