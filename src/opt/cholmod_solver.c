@@ -5,6 +5,11 @@
  * a factorization. CHOLMOD's own printing is switched off: failures come
  * back as scaf_error messages.
  *
+ * With a given permutation the symbolic analysis runs CHOLMOD's own steps
+ * (etree, column counts, weighted postorder, supernodes) on matrices built
+ * here with three passes instead of cholmod_analyze_p's four transposes;
+ * the factor it produces is the same (see analyze_given_fast).
+ *
  * OpenMP: the Debian CHOLMOD runs small loops of its supernodal
  * factorization (zeroing and scattering each supernode) in OpenMP regions
  * with a compiled-in team of 4 threads, whatever OMP_NUM_THREADS says. On a
