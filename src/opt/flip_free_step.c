@@ -125,6 +125,32 @@ double opt_max_step_tet(const double *x0, const double *x1, const double *x2, co
     return opt_first_positive_root(3, c);
 }
 
+/* opt_max_step_triangle for the running minimum: a root t above `best`
+ * (by more than the bisection can move it: it only brings t down to the
+ * last double before the sign change, a few ulps) cannot lower the
+ * minimum, so its bisection (about 50 polynomial evaluations from 0, the
+ * bulk of the cost) is skipped and t returned as is. */
+static double max_step_triangle_below(const double *x0, const double *x1, const double *x2,
+                                      const double *d0, const double *d1, const double *d2,
+                                      double best)
+{
+    double e1x = x1[0] - x0[0], e1y = x1[1] - x0[1], e2x = x2[0] - x0[0], e2y = x2[1] - x0[1];
+    double f1x = d1[0] - d0[0], f1y = d1[1] - d0[1], f2x = d2[0] - d0[0], f2y = d2[1] - d0[1];
+    double c = e1x * e2y - e1y * e2x;
+    double b = e1x * f2y - e1y * f2x + f1x * e2y - f1y * e2x;
+    double a = f1x * f2y - f1y * f2x;
+    if (!(c > 0)) return 0.0;
+    if (a >= 0 && b >= 0) return INFINITY;
+    double coef[3] = {c, b, a};
+    double r[2];
+    int n = positive_quadratic_roots(c, b, a, r);
+    if (n == 0) return INFINITY;
+    double t = r[0];
+    if (t > best * (1.0 + 1e-9)) return t;
+    if (eval(2, coef, t) <= 0) t = bisect(2, coef, 0.0, t);
+    return t;
+}
+
 double opt_max_step(const opt_simplices *S, const double *X, const double *D)
 {
     double best = INFINITY;
@@ -133,9 +159,9 @@ double opt_max_step(const opt_simplices *S, const double *X, const double *D)
         const int *ix = S->idx + (size_t)s * (d + 1);
         double t;
         if (d == 2)
-            t = opt_max_step_triangle(X + 2 * (size_t)ix[0], X + 2 * (size_t)ix[1],
-                                      X + 2 * (size_t)ix[2], D + 2 * (size_t)ix[0],
-                                      D + 2 * (size_t)ix[1], D + 2 * (size_t)ix[2]);
+            t = max_step_triangle_below(X + 2 * (size_t)ix[0], X + 2 * (size_t)ix[1],
+                                        X + 2 * (size_t)ix[2], D + 2 * (size_t)ix[0],
+                                        D + 2 * (size_t)ix[1], D + 2 * (size_t)ix[2], best);
         else
             t = opt_max_step_tet(X + 3 * (size_t)ix[0], X + 3 * (size_t)ix[1],
                                  X + 3 * (size_t)ix[2], X + 3 * (size_t)ix[3],

@@ -114,6 +114,64 @@ static void solves_and_reuses_analysis(void **state)
     }
 }
 
+/* A given permutation that is not postordered (random): the analysis
+ * combines it with the etree's postorder; the factor solves, re-analyzing
+ * with the resulting permutation reproduces it with the same fill and
+ * flops, and a repeated index is reported, not trusted. */
+static void given_random_permutation(void **state)
+{
+    (void)state;
+    opt_csc A;
+    grid_laplacian(&A, 30, 0.1, 1);
+    int n = A.n;
+    rng r = {7};
+    int *perm = malloc(n * sizeof *perm), *seen = calloc(n, sizeof *seen);
+    double *b = malloc(n * sizeof *b), *x = malloc(n * sizeof *x);
+    for (int i = 0; i < n; i++) perm[i] = i;
+    for (int i = n - 1; i > 0; i--) {
+        int j = (int)rng_uniform(&r, 0, i + 1);
+        if (j > i) j = i;
+        int t = perm[i]; perm[i] = perm[j]; perm[j] = t;
+    }
+    for (int i = 0; i < n; i++) b[i] = rng_uniform(&r, -1, 1);
+    scaf_error e;
+    for (int relax = 1; relax <= 4; relax += 3) {
+        opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+        assert_non_null(c);
+        opt_chol_set_relax(c, relax);
+        assert_int_equal(opt_chol_analyze_given(c, &A, perm, &e), SCAF_OK);
+        assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+        assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+        assert_true(rel_residual(&A, x, b) < 1e-10);
+        opt_chol_stats s1 = opt_chol_get_stats(c);
+        memset(seen, 0, n * sizeof *seen);
+        const int *lp = opt_chol_permutation(c);
+        for (int i = 0; i < n; i++) {
+            assert_true(lp[i] >= 0 && lp[i] < n);
+            assert_int_equal(seen[lp[i]]++, 0);
+        }
+        int *post = malloc(n * sizeof *post);
+        memcpy(post, lp, n * sizeof *post);
+        assert_int_equal(opt_chol_analyze_given(c, &A, post, &e), SCAF_OK);
+        assert_memory_equal(post, opt_chol_permutation(c), n * sizeof *post);
+        assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+        opt_chol_stats s2 = opt_chol_get_stats(c);
+        assert_true(s2.nnz_L == s1.nnz_L);
+        assert_true(s2.flops == s1.flops);
+        assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+        assert_true(rel_residual(&A, x, b) < 1e-10);
+        post[1] = post[0]; /* not a permutation */
+        assert_int_not_equal(opt_chol_analyze_given(c, &A, post, &e), SCAF_OK);
+        free(post);
+        opt_chol_destroy(c);
+    }
+    opt_csc_free(&A);
+    free(perm);
+    free(seen);
+    free(b);
+    free(x);
+}
+
 /* kron(grid Laplacian, M) with M 2x2 SPD: interleaved 2-blocks, like the
  * SLIM systems. Ordering the vertex graph must still solve exactly and
  * keep each vertex's two unknowns together. */
@@ -213,6 +271,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(triplets_sum_duplicates),
         cmocka_unit_test(solves_and_reuses_analysis),
+        cmocka_unit_test(given_random_permutation),
         cmocka_unit_test(block_ordering_solves),
         cmocka_unit_test(relaxed_supernodes_solve),
         cmocka_unit_test(indefinite_is_an_error),

@@ -90,6 +90,47 @@ static double det3(const double *x)
     return det_d(3, e);
 }
 
+/* opt_max_step skips work for triangles that cannot lower its running
+ * minimum: it must still return exactly the minimum of
+ * opt_max_step_triangle over the triangles, in every order. */
+static void mesh_step_is_exact_minimum(void **state)
+{
+    (void)state;
+    rng r = {99};
+    enum { NV = 60, NT = 200 };
+    double X[2 * NV], D[2 * NV];
+    int idx[3 * NT];
+    opt_simplices S = {2, NT, idx, NULL, NULL, NULL};
+    int finite = 0;
+    for (int trial = 0; trial < 50; trial++) {
+        for (int i = 0; i < 2 * NV; i++) {
+            X[i] = rng_uniform(&r, -1, 1);
+            D[i] = rng_uniform(&r, -1, 1) * (trial % 5 == 0 ? 1e-3 : 1.0);
+        }
+        for (int t = 0; t < NT; t++) {
+            int a = (int)rng_uniform(&r, 0, NV), b = (int)rng_uniform(&r, 0, NV), c = (int)rng_uniform(&r, 0, NV);
+            a = a % NV; b = b % NV; c = c % NV;
+            if (a == b || b == c || a == c) { b = (a + 1) % NV; c = (a + 2) % NV; }
+            /* orient counter-clockwise so most triangles are valid */
+            double o = (X[2 * b] - X[2 * a]) * (X[2 * c + 1] - X[2 * a + 1]) -
+                       (X[2 * b + 1] - X[2 * a + 1]) * (X[2 * c] - X[2 * a]);
+            if (o < 0) { int tmp = b; b = c; c = tmp; }
+            idx[3 * t] = a; idx[3 * t + 1] = b; idx[3 * t + 2] = c;
+        }
+        double want = INFINITY;
+        for (int t = 0; t < NT; t++) {
+            const int *ix = idx + 3 * t;
+            double v = opt_max_step_triangle(X + 2 * ix[0], X + 2 * ix[1], X + 2 * ix[2],
+                                             D + 2 * ix[0], D + 2 * ix[1], D + 2 * ix[2]);
+            if (v < want) want = v;
+        }
+        double got = opt_max_step(&S, X, D);
+        assert_true(got == want || (isinf(got) && isinf(want)));
+        finite += want > 0 && isfinite(want);
+    }
+    assert_true(finite >= 25); /* the minimum is a real root most of the time */
+}
+
 static void tet_steps(void **state)
 {
     (void)state;
@@ -205,6 +246,7 @@ int main(void)
         cmocka_unit_test(known_triangle_roots),
         cmocka_unit_test(random_triangle_steps),
         cmocka_unit_test(tet_steps),
+        cmocka_unit_test(mesh_step_is_exact_minimum),
         cmocka_unit_test(polynomial_edge_cases),
         cmocka_unit_test(line_search_never_flips),
     };
