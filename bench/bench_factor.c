@@ -26,6 +26,7 @@
 
 #include "base/timer.h"
 #include "mesh/mesh_io.h"
+#include "opt/cholmod_view.h"
 #include "opt/embed.h"
 #include "scaffold/scaf_loop.h"
 
@@ -167,19 +168,7 @@ int main(int argc, char **argv)
 
     /* The last system and the loop's permutation. */
     opt_csc *A = &L.sys.A;
-    cholmod_sparse S;
-    memset(&S, 0, sizeof S);
-    S.nrow = S.ncol = (size_t)A->n;
-    S.nzmax = (size_t)A->nnz;
-    S.p = A->colptr;
-    S.i = A->rowidx;
-    S.x = A->val;
-    S.stype = 1;
-    S.itype = CHOLMOD_INT;
-    S.xtype = CHOLMOD_REAL;
-    S.dtype = CHOLMOD_DOUBLE;
-    S.sorted = 1;
-    S.packed = 1;
+    cholmod_sparse S = opt_csc_cholmod_view(A);
     size_t nm = 2 * (size_t)L.nv;
     int *perm = malloc(sizeof(int) * (size_t)A->n);
     int *perm2 = malloc(sizeof(int) * (size_t)A->n), np2 = 0, nring = 0;

@@ -10,4 +10,23 @@ int cli_parse_int(const char *s, int *out);
 /* A whole finite floating-point number: 1 and *out set, or 0. */
 int cli_parse_double(const char *s, double *out);
 
+/* Inside an argument loop `for (i ...) { const char *a = argv[i], *v =
+ * i + 1 < argc ? argv[i + 1] : NULL; ... }` of command CMD: take the
+ * option's value (or fail with a usage error naming the option), and
+ * refuse a value that does not parse. Both return EXIT_USAGE from the
+ * enclosing function on failure (needs <stdio.h> and exit_codes.h). */
+#define CLI_NEED_VALUE(cmd)                                                           \
+    do {                                                                              \
+        if (!v) {                                                                     \
+            fprintf(stderr, "scaf %s: %s needs a value (see --help)\n", (cmd), a);     \
+            return EXIT_USAGE;                                                        \
+        }                                                                             \
+        i++;                                                                          \
+    } while (0)
+#define CLI_BAD_VALUE(cmd)                                                                     \
+    do {                                                                                       \
+        fprintf(stderr, "scaf %s: invalid value '%s' for %s (see --help)\n", (cmd), v, a);   \
+        return EXIT_USAGE;                                                                     \
+    } while (0)
+
 #endif

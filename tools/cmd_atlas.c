@@ -106,19 +106,8 @@ int cmd_atlas(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-#define NEED_VALUE()                                                             \
-    do {                                                                         \
-        if (!v) {                                                                \
-            fprintf(stderr, "scaf atlas: %s needs a value (see --help)\n", a); \
-            return EXIT_USAGE;                                                   \
-        }                                                                        \
-        i++;                                                                     \
-    } while (0)
-#define BAD_VALUE()                                                                    \
-    do {                                                                               \
-        fprintf(stderr, "scaf atlas: invalid value '%s' for %s (see --help)\n", v, a); \
-        return EXIT_USAGE;                                                             \
-    } while (0)
+#define NEED_VALUE() CLI_NEED_VALUE("atlas")
+#define BAD_VALUE() CLI_BAD_VALUE("atlas")
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             usage(stdout);
             return EXIT_OK;

@@ -25,6 +25,8 @@
  */
 #include "opt/cholmod_solver.h"
 
+#include "opt/cholmod_view.h"
+
 #include <stdlib.h>
 #include <string.h>
 
@@ -158,25 +160,6 @@ void opt_chol_destroy(opt_chol *c)
     free(c->colptr);
     free(c->rowidx);
     free(c);
-}
-
-/* A header over the caller's arrays (never freed by CHOLMOD). */
-static cholmod_sparse wrap(const opt_csc *A)
-{
-    cholmod_sparse S;
-    memset(&S, 0, sizeof S);
-    S.nrow = S.ncol = (size_t)A->n;
-    S.nzmax = (size_t)A->nnz;
-    S.p = A->colptr;
-    S.i = A->rowidx;
-    S.x = A->val;
-    S.stype = 1;
-    S.itype = CHOLMOD_INT;
-    S.xtype = CHOLMOD_REAL;
-    S.dtype = CHOLMOD_DOUBLE;
-    S.sorted = 1;
-    S.packed = 1;
-    return S;
 }
 
 static const char *status_text(int status)
@@ -341,7 +324,7 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     if (c->L) cholmod_free_factor(&c->L, &c->cm);
     c->factored = 0;
     c->n = c->nnz = 0;
-    cholmod_sparse S = wrap(A);
+    cholmod_sparse S = opt_csc_cholmod_view(A);
     int *own = NULL;
     if (!perm && c->block > 1 && c->ordering != OPT_ORDER_CHOLMOD_DEFAULT && A->n % c->block == 0) {
         own = malloc((size_t)A->n * sizeof *own);
@@ -390,7 +373,7 @@ scaf_status opt_chol_compute_ordering(opt_chol *c, const opt_csc *A, int *perm, 
     if (A->n < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD: empty system (no free unknowns)");
     if (c->block > 1 && A->n % c->block == 0 && c->ordering != OPT_ORDER_CHOLMOD_DEFAULT)
         return block_ordering(c, A, perm) ? SCAF_OK : fail(c, "block ordering", err);
-    cholmod_sparse S = wrap(A);
+    cholmod_sparse S = opt_csc_cholmod_view(A);
     int ok = c->ordering == OPT_ORDER_METIS ? cholmod_metis(&S, NULL, 0, 1, perm, &c->cm)
                                             : cholmod_amd(&S, NULL, 0, perm, &c->cm);
     return ok ? SCAF_OK : fail(c, "ordering", err);
@@ -403,7 +386,7 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
         if (st != SCAF_OK) return st;
     }
     double t0 = timer_now();
-    cholmod_sparse S = wrap(A);
+    cholmod_sparse S = opt_csc_cholmod_view(A);
     c->factored = 0;
     int lv = omp_serial_begin();
     int ok = cholmod_factorize(&S, c->L, &c->cm);
