@@ -98,6 +98,19 @@ static inline void cb_loop(cdt_builder *b, const double *xy, int n)
         cb_segment(b, first + i, first + (i + 1) % n, 0, 1);
 }
 
+/* An axis-aligned rectangle [x0, x1] x [y0, y1]: four new corners in
+ * counter-clockwise order from (x0, y0), joined by splittable segments with
+ * nothing marked as hole (a scaffold box). */
+static inline void cb_rect(cdt_builder *b, double x0, double y0, double x1, double y1)
+{
+    int q0 = cb_point(b, x0, y0), q1 = cb_point(b, x1, y0);
+    int q2 = cb_point(b, x1, y1), q3 = cb_point(b, x0, y1);
+    cb_segment(b, q0, q1, 1, 0);
+    cb_segment(b, q1, q2, 1, 0);
+    cb_segment(b, q2, q3, 1, 0);
+    cb_segment(b, q3, q0, 1, 0);
+}
+
 /* The scaffold box: `factor` times the bounding box of the points so far
  * (about its center), splittable, nothing marked as hole. */
 static inline void cb_box(cdt_builder *b, double factor, double *box_area)
@@ -110,12 +123,7 @@ static inline void cb_box(cdt_builder *b, double factor, double *box_area)
         }
     double c[2] = {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])};
     double h = 0.5 * factor * fmax(hi[0] - lo[0], hi[1] - lo[1]);
-    int q0 = cb_point(b, c[0] - h, c[1] - h), q1 = cb_point(b, c[0] + h, c[1] - h);
-    int q2 = cb_point(b, c[0] + h, c[1] + h), q3 = cb_point(b, c[0] - h, c[1] + h);
-    cb_segment(b, q0, q1, 1, 0);
-    cb_segment(b, q1, q2, 1, 0);
-    cb_segment(b, q2, q3, 1, 0);
-    cb_segment(b, q3, q0, 1, 0);
+    cb_rect(b, c[0] - h, c[1] - h, c[0] + h, c[1] + h);
     if (box_area)
         *box_area = (2 * h) * (2 * h);
 }
@@ -144,6 +152,31 @@ static inline void wiggly(double *xy, int n, double cx, double cy, double r0, do
         xy[2 * i] = cx + r * cos(t);
         xy[2 * i + 1] = cy + r * sin(t);
     }
+}
+
+/* A wiggly chart loop (see wiggly; cw: clockwise, around a chart hole). */
+static inline void cb_wiggly_loop(cdt_builder *b, int n, double cx, double cy, double r0, double amp,
+                                  int k, int cw)
+{
+    double *xy = malloc((size_t)n * 2 * sizeof(double));
+    if (!xy) {
+        fprintf(stderr, "cb_wiggly_loop: out of memory\n");
+        abort();
+    }
+    wiggly(xy, n, cx, cy, r0, amp, k, cw);
+    cb_loop(b, xy, n);
+    free(xy);
+}
+
+/* The commonest test domain: b starts empty, gets one counter-clockwise
+ * wiggly chart (see wiggly) and the 3x scaffold box (area into box_area
+ * when given). */
+static inline void cb_wiggly_in_box(cdt_builder *b, int n, double cx, double cy, double r0, double amp,
+                                    int k, double *box_area)
+{
+    cb_init(b);
+    cb_wiggly_loop(b, n, cx, cy, r0, amp, k, 0);
+    cb_box(b, 3.0, box_area);
 }
 
 /* ------------------------------------------------------------ checker */

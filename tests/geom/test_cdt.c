@@ -35,6 +35,15 @@ static void assert_checked(const cdt_builder *b, const cdt_options *opt, const c
                  st.nfree_bad, st.nfree, opt->min_angle_deg, st.min_angle_free);
 }
 
+/* The triangles cover exactly the expected area (relative to `scale`). */
+static void assert_area(const cdt_builder *b, const cdt_options *opt, const cdt_output *out, int chi,
+                        double want, double scale)
+{
+    double got = cdt_check(b, opt, out, chi, 0).area;
+    if (!(fabs(got - want) < 1e-9 * scale))
+        fail_msg("triangle area %.17g, expected %.17g", got, want);
+}
+
 static void box_only_is_refined(void **state)
 {
     (void)state;
@@ -42,18 +51,13 @@ static void box_only_is_refined(void **state)
     cb_init(&b);
     double area = 12;
     /* a plain square with a generous area bound */
-    int q0 = cb_point(&b, 0, 0), q1 = cb_point(&b, 4, 0), q2 = cb_point(&b, 4, 3),
-        q3 = cb_point(&b, 0, 3);
-    cb_segment(&b, q0, q1, 1, 0);
-    cb_segment(&b, q1, q2, 1, 0);
-    cb_segment(&b, q2, q3, 1, 0);
-    cb_segment(&b, q3, q0, 1, 0);
+    cb_rect(&b, 0, 0, 4, 3);
     cdt_options opt = cdt_default_options();
     opt.max_area = 0.05;
     cdt_output out = run_ok(&b, &opt);
     assert_checked(&b, &opt, &out, 1);
     assert_true(out.ntriangles >= (int)(area / opt.max_area));
-    assert_true(fabs(cdt_check(&b, &opt, &out, 1, 0).area - area) < 1e-9 * area);
+    assert_area(&b, &opt, &out, 1, area, area);
     cdt_output_free(&out);
     cb_free(&b);
 }
@@ -62,16 +66,12 @@ static void single_chart_default_quality(void **state)
 {
     (void)state;
     cdt_builder b;
-    cb_init(&b);
-    double xy[2 * 300], box;
-    wiggly(xy, 300, 0.3, -0.2, 1.0, 0.2, 7, 0);
-    cb_loop(&b, xy, 300);
-    cb_box(&b, 3.0, &box);
+    double box;
+    cb_wiggly_in_box(&b, 300, 0.3, -0.2, 1.0, 0.2, 7, &box);
     cdt_options opt = cdt_default_options();
     cdt_output out = run_ok(&b, &opt);
     assert_checked(&b, &opt, &out, 0);
-    cdt_check_stats st = cdt_check(&b, &opt, &out, 0, 0);
-    assert_true(fabs(st.area - (box - b.chart_area)) < 1e-9 * box);
+    assert_area(&b, &opt, &out, 0, box - b.chart_area, box);
     assert_true(out.nsteiner > 0);
     /* graded: far fewer triangles than a uniform mesh at the chart's edge length */
     assert_true(out.ntriangles < 20 * 300);
@@ -83,11 +83,7 @@ static void no_refinement_is_pure_cdt(void **state)
 {
     (void)state;
     cdt_builder b;
-    cb_init(&b);
-    double xy[2 * 100];
-    wiggly(xy, 100, 0, 0, 1.0, 0.4, 5, 0);
-    cb_loop(&b, xy, 100);
-    cb_box(&b, 3.0, NULL);
+    cb_wiggly_in_box(&b, 100, 0, 0, 1.0, 0.4, 5, NULL);
     cdt_options opt = cdt_default_options();
     opt.min_angle_deg = 0;
     cdt_output out = run_ok(&b, &opt);
@@ -103,13 +99,9 @@ static void chart_with_hole_and_nested_chart(void **state)
     (void)state;
     cdt_builder b;
     cb_init(&b);
-    double outer[2 * 80], inner[2 * 60], nested[2 * 40];
-    wiggly(outer, 80, 0, 0, 2.0, 0.1, 5, 0);
-    wiggly(inner, 60, 0, 0, 1.2, 0.1, 3, 1); /* chart hole: clockwise */
-    wiggly(nested, 40, 0.1, 0, 0.5, 0.2, 4, 0);
-    cb_loop(&b, outer, 80);
-    cb_loop(&b, inner, 60);
-    cb_loop(&b, nested, 40);
+    cb_wiggly_loop(&b, 80, 0, 0, 2.0, 0.1, 5, 0);   /* outer */
+    cb_wiggly_loop(&b, 60, 0, 0, 1.2, 0.1, 3, 1);   /* chart hole: clockwise */
+    cb_wiggly_loop(&b, 40, 0.1, 0, 0.5, 0.2, 4, 0); /* nested */
     double box;
     cb_box(&b, 3.0, &box);
     cdt_options opt = cdt_default_options();
@@ -118,8 +110,7 @@ static void chart_with_hole_and_nested_chart(void **state)
        one with two holes? no: outside the annulus (1 hole) + the ring between
        the annulus and the nested chart (1 hole): chi = 0 + 0 */
     assert_checked(&b, &opt, &out, 0);
-    cdt_check_stats st = cdt_check(&b, &opt, &out, 0, 0);
-    assert_true(fabs(st.area - (box - b.chart_area)) < 1e-9 * box);
+    assert_area(&b, &opt, &out, 0, box - b.chart_area, box);
     /* some triangles lie in the chart's hole, around the nested chart */
     int inside = 0;
     for (int t = 0; t < out.ntriangles; t++) {
@@ -136,11 +127,7 @@ static void hole_seeds_work_like_flags(void **state)
 {
     (void)state;
     cdt_builder b;
-    cb_init(&b);
-    double xy[2 * 50];
-    wiggly(xy, 50, 0, 0, 1.0, 0.1, 3, 0);
-    cb_loop(&b, xy, 50);
-    cb_box(&b, 3.0, NULL);
+    cb_wiggly_in_box(&b, 50, 0, 0, 1.0, 0.1, 3, NULL);
     for (int s = 0; s < b.ns; s++)
         b.hole[s] = 0;
     b.seeds = malloc(2 * sizeof(double));
@@ -168,9 +155,7 @@ static void chart_edges_are_never_split(void **state)
     cdt_output out = run_ok(&b, &opt);
     /* area and angle bounds cannot hold next to a 10-long unsplittable edge:
        check only the structure here */
-    cdt_check_stats st = cdt_check(&b, NULL, &out, 0, 1);
-    if (!st.ok)
-        fail_msg("%s", st.why);
+    assert_checked(&b, NULL, &out, 0);
     int chart_subs = 0;
     for (int i = 0; i < out.nsubsegments; i++)
         if (!b.split[out.subsegment_of[i]])
@@ -210,11 +195,7 @@ static void deterministic(void **state)
 {
     (void)state;
     cdt_builder b;
-    cb_init(&b);
-    double xy[2 * 500];
-    wiggly(xy, 500, 0, 0, 1.0, 0.3, 11, 0);
-    cb_loop(&b, xy, 500);
-    cb_box(&b, 3.0, NULL);
+    cb_wiggly_in_box(&b, 500, 0, 0, 1.0, 0.3, 11, NULL);
     cdt_options opt = cdt_default_options();
     cdt_output o1 = run_ok(&b, &opt), o2 = run_ok(&b, &opt);
     assert_int_equal(o1.npoints, o2.npoints);
@@ -241,12 +222,7 @@ static void lattice_rectangles_degenerate(void **state)
             cb_loop(&b, xy, 6);
             k++;
         }
-    int q0 = cb_point(&b, -6, -6), q1 = cb_point(&b, 24, -6), q2 = cb_point(&b, 24, 24),
-        q3 = cb_point(&b, -6, 24);
-    cb_segment(&b, q0, q1, 1, 0);
-    cb_segment(&b, q1, q2, 1, 0);
-    cb_segment(&b, q2, q3, 1, 0);
-    cb_segment(&b, q3, q0, 1, 0);
+    cb_rect(&b, -6, -6, 24, 24);
     for (int pass = 0; pass < 2; pass++) {
         cdt_options opt = cdt_default_options();
         opt.min_angle_deg = pass ? 25 : 0;
@@ -261,20 +237,14 @@ static void steiner_cap_is_respected(void **state)
 {
     (void)state;
     cdt_builder b;
-    cb_init(&b);
-    double xy[2 * 200];
-    wiggly(xy, 200, 0, 0, 1.0, 0.3, 9, 0);
-    cb_loop(&b, xy, 200);
-    cb_box(&b, 3.0, NULL);
+    cb_wiggly_in_box(&b, 200, 0, 0, 1.0, 0.3, 9, NULL);
     cdt_options opt = cdt_default_options();
     opt.max_area = 1e-4;
     opt.max_steiner = 50;
     cdt_output out = run_ok(&b, &opt);
     assert_true(out.capped);
     assert_true(out.nsteiner <= 50);
-    cdt_check_stats st = cdt_check(&b, NULL, &out, 0, 1);
-    if (!st.ok)
-        fail_msg("%s", st.why);
+    assert_checked(&b, NULL, &out, 0);
     cdt_output_free(&out);
     cb_free(&b);
 }
@@ -334,99 +304,94 @@ static void empty_and_trivial_inputs(void **state)
 
 /* ------------------------------------------------------------ invalid input */
 
-static void expect_error(cdt_builder *b, const char *needle)
+/* One invalid input: how to build it (after the builder is initialised) and
+ * a phrase the error message must contain. */
+typedef struct invalid_case {
+    const char *name;
+    void (*build)(cdt_builder *b);
+    const char *needle;
+} invalid_case;
+
+static const double square02[] = {0, 0, 2, 0, 2, 2, 0, 2};
+
+static void build_crossing_squares(cdt_builder *b)
 {
-    cdt_input in = cb_input(b);
+    static const double sq2[] = {1, 1, 3, 1, 3, 3, 1, 3};
+    cb_loop(b, square02, 4);
+    cb_loop(b, sq2, 4);
+    cb_box(b, 3, NULL);
+}
+
+static void build_point_on_segment(cdt_builder *b)
+{
+    cb_loop(b, square02, 4);
+    cb_point(b, 1, 0); /* on segment 0 */
+    cb_box(b, 3, NULL);
+}
+
+static void build_duplicate_point(cdt_builder *b)
+{
+    cb_loop(b, square02, 4);
+    cb_point(b, 2, 2);
+    cb_box(b, 3, NULL);
+}
+
+static void build_nan_coordinate(cdt_builder *b)
+{
+    cb_loop(b, square02, 4);
+    cb_box(b, 3, NULL);
+    b->pts[3] = NAN;
+}
+
+static void build_bad_segment_index(cdt_builder *b)
+{
+    cb_loop(b, square02, 4);
+    cb_box(b, 3, NULL);
+    b->seg[3] = 99;
+}
+
+static void build_overlapping_collinear(cdt_builder *b)
+{
+    int p0 = cb_point(b, 0, 0), p1 = cb_point(b, 2, 0), p2 = cb_point(b, 1, 0), p3 = cb_point(b, 3, 0);
+    cb_segment(b, p0, p1, 0, 0);
+    cb_segment(b, p2, p3, 0, 0);
+    cb_box(b, 3, NULL);
+}
+
+static const invalid_case invalid_cases[] = {
+    {"crossing_segments_fail", build_crossing_squares, "crosses segment"},
+    {"point_on_segment_fails", build_point_on_segment, "interior of segment 0"},
+    {"duplicate_points_fail", build_duplicate_point, "points 2 and 4 coincide"},
+    {"nan_fails", build_nan_coordinate, "non-finite"},
+    {"bad_index_fails", build_bad_segment_index, "segment 1"},
+    {"overlapping_collinear_segments_fail", build_overlapping_collinear, "interior of segment"},
+};
+
+/* The case's input is refused with SCAF_ERR_MESH, the message names the
+ * problem, and the output is left empty. */
+static void invalid_input_fails(void **state)
+{
+    const invalid_case *c = *state;
+    cdt_builder b;
+    cb_init(&b);
+    c->build(&b);
+    cdt_input in = cb_input(&b);
     cdt_output out;
     scaf_error err;
     err_clear(&err);
     scaf_status s = cdt_triangulate(&in, NULL, &out, &err);
-    assert_int_equal(s, SCAF_ERR_MESH);
-    if (!strstr(err.message, needle))
-        fail_msg("message '%s' lacks '%s'", err.message, needle);
+    if (s != SCAF_ERR_MESH)
+        fail_msg("%s: status %d, expected SCAF_ERR_MESH (%d)", c->name, (int)s, (int)SCAF_ERR_MESH);
+    if (!strstr(err.message, c->needle))
+        fail_msg("%s: message '%s' lacks '%s'", c->name, err.message, c->needle);
     assert_int_equal(out.ntriangles, 0);
     assert_null(out.triangles);
-}
-
-static void crossing_segments_fail(void **state)
-{
-    (void)state;
-    cdt_builder b;
-    cb_init(&b);
-    double sq1[] = {0, 0, 2, 0, 2, 2, 0, 2};
-    double sq2[] = {1, 1, 3, 1, 3, 3, 1, 3};
-    cb_loop(&b, sq1, 4);
-    cb_loop(&b, sq2, 4);
-    cb_box(&b, 3, NULL);
-    expect_error(&b, "crosses segment");
     cb_free(&b);
 }
 
-static void point_on_segment_fails(void **state)
-{
-    (void)state;
-    cdt_builder b;
-    cb_init(&b);
-    double sq1[] = {0, 0, 2, 0, 2, 2, 0, 2};
-    cb_loop(&b, sq1, 4);
-    cb_point(&b, 1, 0); /* on segment 0 */
-    cb_box(&b, 3, NULL);
-    expect_error(&b, "interior of segment 0");
-    cb_free(&b);
-}
-
-static void duplicate_points_fail(void **state)
-{
-    (void)state;
-    cdt_builder b;
-    cb_init(&b);
-    double sq1[] = {0, 0, 2, 0, 2, 2, 0, 2};
-    cb_loop(&b, sq1, 4);
-    cb_point(&b, 2, 2);
-    cb_box(&b, 3, NULL);
-    expect_error(&b, "points 2 and 4 coincide");
-    cb_free(&b);
-}
-
-static void nan_fails(void **state)
-{
-    (void)state;
-    cdt_builder b;
-    cb_init(&b);
-    double sq1[] = {0, 0, 2, 0, 2, 2, 0, 2};
-    cb_loop(&b, sq1, 4);
-    cb_box(&b, 3, NULL);
-    b.pts[3] = NAN;
-    expect_error(&b, "non-finite");
-    cb_free(&b);
-}
-
-static void bad_index_fails(void **state)
-{
-    (void)state;
-    cdt_builder b;
-    cb_init(&b);
-    double sq1[] = {0, 0, 2, 0, 2, 2, 0, 2};
-    cb_loop(&b, sq1, 4);
-    cb_box(&b, 3, NULL);
-    b.seg[3] = 99;
-    expect_error(&b, "segment 1");
-    cb_free(&b);
-}
-
-static void overlapping_collinear_segments_fail(void **state)
-{
-    (void)state;
-    cdt_builder b;
-    cb_init(&b);
-    int p0 = cb_point(&b, 0, 0), p1 = cb_point(&b, 2, 0), p2 = cb_point(&b, 1, 0),
-        p3 = cb_point(&b, 3, 0);
-    cb_segment(&b, p0, p1, 0, 0);
-    cb_segment(&b, p2, p3, 0, 0);
-    cb_box(&b, 3, NULL);
-    expect_error(&b, "interior of segment");
-    cb_free(&b);
-}
+/* one cmocka test per row, named after it */
+#define INVALID_CASE(i)                                                                            \
+    { invalid_cases[i].name, invalid_input_fails, NULL, NULL, (void *)&invalid_cases[i] }
 
 int main(void)
 {
@@ -443,12 +408,10 @@ int main(void)
         cmocka_unit_test(steiner_cap_is_respected),
         cmocka_unit_test(isolated_points_become_vertices),
         cmocka_unit_test(empty_and_trivial_inputs),
-        cmocka_unit_test(crossing_segments_fail),
-        cmocka_unit_test(point_on_segment_fails),
-        cmocka_unit_test(duplicate_points_fail),
-        cmocka_unit_test(nan_fails),
-        cmocka_unit_test(bad_index_fails),
-        cmocka_unit_test(overlapping_collinear_segments_fail),
+        INVALID_CASE(0), INVALID_CASE(1), INVALID_CASE(2),
+        INVALID_CASE(3), INVALID_CASE(4), INVALID_CASE(5),
     };
+    _Static_assert(sizeof invalid_cases / sizeof invalid_cases[0] == 6,
+                   "one INVALID_CASE entry per row of invalid_cases");
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -42,6 +42,16 @@ static void run_and_check(cdt_builder *b, const cdt_options *opt, int chi, int s
     cdt_output_free(&out);
 }
 
+/* The usual ending: add the 3x scaffold box, mesh with the default options,
+ * check as run_and_check does, free the builder. */
+static void boxed_default_run_and_check(cdt_builder *b, int chi, int strict_angles)
+{
+    cb_box(b, 3.0, NULL);
+    cdt_options opt = cdt_default_options();
+    run_and_check(b, &opt, chi, strict_angles);
+    cb_free(b);
+}
+
 /* a random star-shaped polygon in the disk (cx, cy, r), n vertices, CCW */
 static void star(double *xy, int n, double cx, double cy, double r)
 {
@@ -69,10 +79,7 @@ static void hundreds_of_charts_on_a_grid(void **state)
             cb_loop(&b, xy, n);
             k++;
         }
-    cb_box(&b, 3.0, NULL);
-    cdt_options opt = cdt_default_options();
-    run_and_check(&b, &opt, 1 - k, 1);
-    cb_free(&b);
+    boxed_default_run_and_check(&b, 1 - k, 1);
 }
 
 static void random_charts_many_seeds(void **state)
@@ -144,10 +151,7 @@ static void boundaries_1e12_apart(void **state)
         cb_loop(&b, xy, n / 2);
         k++;
     }
-    cb_box(&b, 3.0, NULL);
-    cdt_options opt = cdt_default_options();
-    run_and_check(&b, &opt, 1 - k, 0);
-    cb_free(&b);
+    boxed_default_run_and_check(&b, 1 - k, 0);
 }
 
 static void interleaved_combs_1e12_apart(void **state)
@@ -194,10 +198,7 @@ static void interleaved_combs_1e12_apart(void **state)
     }
     cb_loop(&b, xy, n / 2);
     free(xy);
-    cb_box(&b, 3.0, NULL);
-    cdt_options opt = cdt_default_options();
-    run_and_check(&b, &opt, -1, 0);
-    cb_free(&b);
+    boxed_default_run_and_check(&b, -1, 0);
 }
 
 static void nearly_collinear_boundary(void **state)
@@ -229,10 +230,7 @@ static void nearly_collinear_boundary(void **state)
     /* orientation: bottom chain goes right to left, so the chart below is
        on its left only if the loop is CCW: (1,0)..(0,0),(0,-0.3),(1,-0.3) */
     cb_loop(&b, xy2, n2 / 2);
-    cb_box(&b, 3.0, NULL);
-    cdt_options opt = cdt_default_options();
-    run_and_check(&b, &opt, -1, 0);
-    cb_free(&b);
+    boxed_default_run_and_check(&b, -1, 0);
 }
 
 static void long_thin_gap(void **state)
@@ -256,10 +254,7 @@ static void long_thin_gap(void **state)
     xy[n++] = 1e-3, xy[n++] = 1;
     cb_loop(&b, xy, n / 2);
     free(xy);
-    cb_box(&b, 3.0, NULL);
-    cdt_options opt = cdt_default_options();
-    run_and_check(&b, &opt, -1, 0);
-    cb_free(&b);
+    boxed_default_run_and_check(&b, -1, 0);
 }
 
 static void charts_nested_in_holes_deeply(void **state)
@@ -271,20 +266,12 @@ static void charts_nested_in_holes_deeply(void **state)
     int rings = 5;
     for (int r = 0; r < rings; r++) {
         double ro = 10 - 2 * r, ri = ro - 1;
-        double xy[2 * 64];
-        wiggly(xy, 64, 0, 0, ro, 0.02, 3, 0);
-        cb_loop(&b, xy, 64);
-        wiggly(xy, 48, 0, 0, ri, 0.02, 5, 1);
-        cb_loop(&b, xy, 48);
+        cb_wiggly_loop(&b, 64, 0, 0, ro, 0.02, 3, 0);
+        cb_wiggly_loop(&b, 48, 0, 0, ri, 0.02, 5, 1);
     }
-    double xy[2 * 16];
-    wiggly(xy, 16, 0, 0, 0.5, 0.1, 2, 0);
-    cb_loop(&b, xy, 16);
-    cb_box(&b, 3.0, NULL);
-    cdt_options opt = cdt_default_options();
+    cb_wiggly_loop(&b, 16, 0, 0, 0.5, 0.1, 2, 0);
     /* free pieces: outside (one hole) and 5 rings (each one hole): chi 0 */
-    run_and_check(&b, &opt, 0, 1);
-    cb_free(&b);
+    boxed_default_run_and_check(&b, 0, 1);
 }
 
 static void tiny_and_huge_coordinates(void **state)
@@ -292,15 +279,11 @@ static void tiny_and_huge_coordinates(void **state)
     (void)state;
     double scales[] = {1e-9, 1e9, 1e-150, 1e120};
     for (int s = 0; s < 4; s++) {
+        print_message("    scale %g\n", scales[s]); /* names the case if it fails */
         cdt_builder b;
         cb_init(&b);
-        double xy[2 * 100];
-        wiggly(xy, 100, 3 * scales[s], -scales[s], scales[s], 0.3, 6, 0);
-        cb_loop(&b, xy, 100);
-        cb_box(&b, 3.0, NULL);
-        cdt_options opt = cdt_default_options();
-        run_and_check(&b, &opt, 0, 1);
-        cb_free(&b);
+        cb_wiggly_loop(&b, 100, 3 * scales[s], -scales[s], scales[s], 0.3, 6, 0);
+        boxed_default_run_and_check(&b, 0, 1);
     }
 }
 
@@ -359,12 +342,7 @@ static void random_segment_soup_matches_brute_force(void **state)
                 cb_segment(&b, u, w, trial % 4 == 0 && rnd() < 0.5, 0);
         }
         int expect_error = invalid_soup(&b);
-        int q0 = cb_point(&b, -10, -10), q1 = cb_point(&b, 20, -10), q2 = cb_point(&b, 20, 20),
-            q3 = cb_point(&b, -10, 20);
-        cb_segment(&b, q0, q1, 1, 0);
-        cb_segment(&b, q1, q2, 1, 0);
-        cb_segment(&b, q2, q3, 1, 0);
-        cb_segment(&b, q3, q0, 1, 0);
+        cb_rect(&b, -10, -10, 20, 20);
         cdt_input in = cb_input(&b);
         cdt_output out;
         scaf_error err;
