@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "scaf/scaf.h"
+#include "support/sanitized.h" /* test_is_sanitized, used with param_watch */
 
 /* Runs `iterations` iterations on ../shared/data/<rel> with the given start
  * (tolerance 0: no early stop) and asserts the properties above and a final
@@ -15,9 +16,5 @@
  * absent (the caller skips) or, when `rejected` is given, when its charts
  * are refused (then `rejected` holds the message). */
 double param_run_watched(const char *rel, int iterations, scaf_init init, char *rejected, size_t size);
-
-/* 1 when built with AddressSanitizer (runs there are ~10x slower, so
- * heavy tests shorten themselves). */
-int test_is_sanitized(void);
 
 #endif
