@@ -11,6 +11,7 @@
 #include "mesh/samples.h"
 #include "mesh/topology.h"
 #include "mesh/uv_charts.h"
+#include "support/loop_area.h"
 
 static void make(const char *name, int size, mesh *m)
 {
@@ -47,17 +48,20 @@ static double volume(const mesh *m)
     return vol;
 }
 
-/* Signed xy area of loop l of a complex whose indices are vertices. */
-static double loop_area_xy(const mesh *m, const tri_complex *cx, int l)
+/* Sample `name` at `size` with its topology and charts (see make, topo);
+ * the sample is named in the test output so a failure names its case. */
+static void open_sample(const char *name, int size, mesh *m, mesh_topology *t, mesh_charts *c)
 {
-    double a = 0;
-    int s = cx->loop_start[l], t = cx->loop_start[l + 1];
-    for (int i = s; i < t; i++) {
-        const double *p = m->V + 3 * m->F[cx->loop_he[i]];
-        const double *q = m->V + 3 * m->F[cx->loop_he[i + 1 < t ? i + 1 : s]];
-        a += p[0] * q[1] - p[1] * q[0];
-    }
-    return a / 2;
+    print_message("    %s size %d\n", name, size);
+    make(name, size, m);
+    topo(m, t, c);
+}
+
+static void close_sample(mesh *m, mesh_topology *t, mesh_charts *c)
+{
+    mesh_charts_free(c);
+    mesh_topology_free(t);
+    mesh_free(m);
 }
 
 static void triangle_and_tetrahedron(void **state)
@@ -66,27 +70,21 @@ static void triangle_and_tetrahedron(void **state)
     mesh m;
     mesh_topology t;
     mesh_charts c;
-    make("triangle", 0, &m);
-    topo(&m, &t, &c);
+    open_sample("triangle", 0, &m, &t, &c);
     assert_int_equal(t.vertices, 3);
     assert_int_equal(t.faces, 1);
     assert_int_equal(t.boundary_loops, 1);
     assert_true(t.has_uv);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_DISK);
-    mesh_charts_free(&c);
-    mesh_topology_free(&t);
-    mesh_free(&m);
+    close_sample(&m, &t, &c);
 
-    make("tetrahedron", 0, &m);
-    topo(&m, &t, &c);
+    open_sample("tetrahedron", 0, &m, &t, &c);
     assert_int_equal(t.faces, 4);
     assert_int_equal(t.euler_characteristic, 2);
     assert_int_equal(t.boundary_loops, 0);
     assert_true(volume(&m) > 0);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_CLOSED);
-    mesh_charts_free(&c);
-    mesh_topology_free(&t);
-    mesh_free(&m);
+    close_sample(&m, &t, &c);
 }
 
 static void grid(void **state)
@@ -96,8 +94,7 @@ static void grid(void **state)
         mesh m;
         mesh_topology t;
         mesh_charts c;
-        make("grid", n, &m);
-        topo(&m, &t, &c);
+        open_sample("grid", n, &m, &t, &c);
         assert_int_equal(t.vertices, (n + 1) * (n + 1));
         assert_int_equal(t.faces, 2 * n * n);
         assert_int_equal(t.boundary_loops, 1);
@@ -106,10 +103,8 @@ static void grid(void **state)
         assert_int_equal(t.uv_charts, 1);
         assert_int_equal(t.seam_edges, 0);
         assert_int_equal(mesh_chart_check(&c, 0, 0, NULL), SCAF_OK);
-        assert_true(loop_area_xy(&m, &t.cx, 0) > 0.999);  /* unit square, CCW */
-        mesh_charts_free(&c);
-        mesh_topology_free(&t);
-        mesh_free(&m);
+        assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0.999);  /* unit square, CCW */
+        close_sample(&m, &t, &c);
     }
 }
 
@@ -120,8 +115,7 @@ static void hemisphere(void **state)
         mesh m;
         mesh_topology t;
         mesh_charts c;
-        make("hemisphere", n, &m);
-        topo(&m, &t, &c);
+        open_sample("hemisphere", n, &m, &t, &c);
         assert_int_equal(t.vertices, 1 + 3 * n * (n + 1));
         assert_int_equal(t.faces, 6 * n * n);
         assert_int_equal(t.boundary_loops, 1);
@@ -131,7 +125,7 @@ static void hemisphere(void **state)
         assert_false(t.has_uv);
         assert_int_equal(t.uv_charts, 1);
         assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_DISK);
-        assert_true(loop_area_xy(&m, &t.cx, 0) > 0);  /* seen from +z: CCW */
+        assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0);  /* seen from +z: CCW */
         /* outward: each face normal points away from the centre */
         for (int f = 0; f < m.nf; f++) {
             const double *a = m.V + 3 * m.F[3 * f], *b = m.V + 3 * m.F[3 * f + 1], *p = m.V + 3 * m.F[3 * f + 2];
@@ -139,9 +133,7 @@ static void hemisphere(void **state)
             double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
             assert_true(nrm[0] * (a[0] + b[0] + p[0]) + nrm[1] * (a[1] + b[1] + p[1]) + nrm[2] * (a[2] + b[2] + p[2]) > 0);
         }
-        mesh_charts_free(&c);
-        mesh_topology_free(&t);
-        mesh_free(&m);
+        close_sample(&m, &t, &c);
     }
 }
 
@@ -152,8 +144,7 @@ static void holes(void **state)
         mesh m;
         mesh_topology t;
         mesh_charts c;
-        make("holes", n, &m);
-        topo(&m, &t, &c);
+        open_sample("holes", n, &m, &t, &c);
         assert_int_equal(t.boundary_loops, 7);
         assert_int_equal(t.euler_characteristic, 2 - 7);
         assert_int_equal(t.genus_sum, 0);
@@ -164,13 +155,11 @@ static void holes(void **state)
         int outer = c.chart_loops[0];
         assert_int_equal(c.cx.loop_start[outer + 1] - c.cx.loop_start[outer], 2 * (3 * n + 2 * n));
         for (int l = 0; l < 7; l++) {
-            double a = loop_area_xy(&m, &c.cx, l);
+            double a = test_loop_area_xy(&m, &c.cx, l);
             if (l == outer) assert_true(a > 5.99 && a < 6.01);
             else assert_true(a < 0);
         }
-        mesh_charts_free(&c);
-        mesh_topology_free(&t);
-        mesh_free(&m);
+        close_sample(&m, &t, &c);
     }
 }
 
@@ -181,8 +170,7 @@ static void cubesphere(void **state)
         mesh m;
         mesh_topology t;
         mesh_charts c;
-        make("cubesphere", n, &m);
-        topo(&m, &t, &c);
+        open_sample("cubesphere", n, &m, &t, &c);
         assert_int_equal(t.vertices, 6 * n * n + 2);
         assert_int_equal(t.faces, 12 * n * n);
         assert_int_equal(t.boundary_loops, 0);
@@ -216,9 +204,7 @@ static void cubesphere(void **state)
         }
         for (int i = 0; i < 6; i++)
             for (int j = 0; j < i; j++) assert_int_not_equal(cell_of[i], cell_of[j]);
-        mesh_charts_free(&c);
-        mesh_topology_free(&t);
-        mesh_free(&m);
+        close_sample(&m, &t, &c);
     }
 }
 

@@ -11,6 +11,7 @@
 #include "mesh/edges.h"
 #include "mesh/topology.h"
 #include "mesh/uv_charts.h"
+#include "support/loop_area.h"
 
 /* Build a mesh from literal arrays (UV/FT may be NULL). */
 static void make(mesh *m, int nv, const double *V, int nf, const int *F, int nuv, const double *UV,
@@ -33,17 +34,35 @@ static void topo(const mesh *m, mesh_topology *t)
     assert_int_equal(mesh_topology_compute(m, t, &e), SCAF_OK);
 }
 
-/* Signed area (in xy) of an ordered loop of the topology, from positions. */
-static double loop_area(const mesh *m, const tri_complex *cx, int l)
+/* The charts of m, which must compute. */
+static void charts(const mesh *m, mesh_charts *c)
 {
-    double a = 0;
-    int s = cx->loop_start[l], t = cx->loop_start[l + 1];
-    for (int i = s; i < t; i++) {
-        const double *p = m->V + 3 * m->F[cx->loop_he[i]];
-        const double *q = m->V + 3 * m->F[cx->loop_he[i + 1 < t ? i + 1 : s]];
-        a += p[0] * q[1] - p[1] * q[0];
-    }
-    return a / 2;
+    scaf_error e;
+    err_clear(&e);
+    assert_int_equal(mesh_charts_compute(m, c, &e), SCAF_OK);
+}
+
+/* mesh_chart_check of chart k returns `want`, with a message containing
+ * `needle` when one is given. */
+static void assert_chart_check(const mesh_charts *c, int k, int allow_holes, scaf_status want,
+                               const char *needle)
+{
+    scaf_error e;
+    err_clear(&e);
+    scaf_status s = mesh_chart_check(c, k, allow_holes, &e);
+    if (s != want)
+        fail_msg("chart %d (holes %s): status %d, expected %d (%s)", k, allow_holes ? "allowed" : "refused",
+                 (int)s, (int)want, e.message);
+    if (needle && !strstr(e.message, needle))
+        fail_msg("chart %d: message '%s' lacks '%s'", k, e.message, needle);
+}
+
+/* Everything a test built, in reverse order. */
+static void free_all(mesh *m, mesh_topology *t, mesh_charts *c)
+{
+    mesh_charts_free(c);
+    mesh_topology_free(t);
+    mesh_free(m);
 }
 
 /* Each half-edge of an ordered loop must end where the next one starts. */
@@ -82,7 +101,7 @@ static void single_triangle(void **state)
     assert_int_equal(t.uv_charts, 1);
     assert_int_equal(t.cx.loop_start[1], 3);
     assert_loop_closed(&m, &t.cx, 0);
-    assert_true(loop_area(&m, &t.cx, 0) > 0);  /* mesh on the left: CCW */
+    assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0);  /* mesh on the left: CCW */
     mesh_topology_free(&t);
     mesh_free(&m);
 }
@@ -102,18 +121,15 @@ static void two_triangles(void **state)
     assert_int_equal(t.euler_characteristic, 1);
     assert_int_equal(t.cx.loop_start[1], 4);
     assert_loop_closed(&m, &t.cx, 0);
-    assert_true(loop_area(&m, &t.cx, 0) > 0);
+    assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0);
 
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    charts(&m, &c);
     assert_int_equal(c.ncharts, 1);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_DISK);
-    assert_int_equal(mesh_chart_check(&c, 0, 0, &e), SCAF_OK);
+    assert_chart_check(&c, 0, 0, SCAF_OK, NULL);
     assert_int_equal(c.loop_vt[0], -1);
-    mesh_charts_free(&c);
-    mesh_topology_free(&t);
-    mesh_free(&m);
+    free_all(&m, &t, &c);
 }
 
 static const double TET_V[] = {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1};
@@ -136,14 +152,10 @@ static void closed_tetrahedron(void **state)
     assert_int_equal(t.misoriented_edges, 0);
 
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    charts(&m, &c);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_CLOSED);
-    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_MESH);
-    assert_non_null(strstr(e.message, "closed"));
-    mesh_charts_free(&c);
-    mesh_topology_free(&t);
-    mesh_free(&m);
+    assert_chart_check(&c, 0, 1, SCAF_ERR_MESH, "closed");
+    free_all(&m, &t, &c);
 }
 
 static void non_manifold_edge(void **state)
@@ -165,13 +177,9 @@ static void non_manifold_edge(void **state)
     assert_int_equal(t.euler_characteristic, 5 - 7 + 3);
 
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
-    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_MESH);
-    assert_non_null(strstr(e.message, "0-1 has 3 faces"));
-    mesh_charts_free(&c);
-    mesh_topology_free(&t);
-    mesh_free(&m);
+    charts(&m, &c);
+    assert_chart_check(&c, 0, 1, SCAF_ERR_MESH, "0-1 has 3 faces");
+    free_all(&m, &t, &c);
 }
 
 static void non_manifold_vertex(void **state)
@@ -194,14 +202,10 @@ static void non_manifold_vertex(void **state)
     assert_int_equal(t.cx.group_genus[0], -1);
 
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    charts(&m, &c);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_NON_MANIFOLD);
-    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_MESH);
-    assert_non_null(strstr(e.message, "vertex 0"));
-    mesh_charts_free(&c);
-    mesh_topology_free(&t);
-    mesh_free(&m);
+    assert_chart_check(&c, 0, 1, SCAF_ERR_MESH, "vertex 0");
+    free_all(&m, &t, &c);
 }
 
 static void misoriented(void **state)
@@ -220,14 +224,10 @@ static void misoriented(void **state)
     assert_false(t.cx.loop_ordered[0]);
 
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    charts(&m, &c);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_MISORIENTED);
-    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_MESH);
-    assert_non_null(strstr(e.message, "0-2"));
-    mesh_charts_free(&c);
-    mesh_topology_free(&t);
-    mesh_free(&m);
+    assert_chart_check(&c, 0, 1, SCAF_ERR_MESH, "0-2");
+    free_all(&m, &t, &c);
 }
 
 static void mobius_strip(void **state)
@@ -258,12 +258,9 @@ static void mobius_strip(void **state)
     assert_int_equal(t.euler_characteristic, 0);
     assert_int_equal(t.cx.group_genus[0], -1);
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    charts(&m, &c);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_NON_ORIENTABLE);
-    mesh_charts_free(&c);
-    mesh_topology_free(&t);
-    mesh_free(&m);
+    free_all(&m, &t, &c);
 }
 
 /* 4 x 4 vertex grid (3 x 3 cells) without its centre cell: an annulus. */
@@ -297,23 +294,19 @@ static void hole(void **state)
     assert_int_equal(t.cx.loop_start[2 - outer] - t.cx.loop_start[1 - outer], 4);
     assert_loop_closed(&m, &t.cx, 0);
     assert_loop_closed(&m, &t.cx, 1);
-    assert_true(loop_area(&m, &t.cx, outer) > 0);      /* outer loop CCW */
-    assert_true(loop_area(&m, &t.cx, 1 - outer) < 0);  /* hole CW: mesh on the left */
+    assert_true(test_loop_area_xy(&m, &t.cx, outer) > 0);      /* outer loop CCW */
+    assert_true(test_loop_area_xy(&m, &t.cx, 1 - outer) < 0);  /* hole CW: mesh on the left */
 
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    charts(&m, &c);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_DISK_WITH_HOLES);
-    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_OK);
-    assert_int_equal(mesh_chart_check(&c, 0, 0, &e), SCAF_ERR_MESH);
-    assert_non_null(strstr(e.message, "1 holes"));
+    assert_chart_check(&c, 0, 1, SCAF_OK, NULL);
+    assert_chart_check(&c, 0, 0, SCAF_ERR_MESH, "1 holes");
     /* longest loop first */
     int first = c.chart_loops[0];
     assert_int_equal(c.cx.loop_start[first + 1] - c.cx.loop_start[first], 12);
     assert_true(c.loop_length[c.chart_loops[0]] > c.loop_length[c.chart_loops[1]]);
-    mesh_charts_free(&c);
-    mesh_topology_free(&t);
-    mesh_free(&m);
+    free_all(&m, &t, &c);
 }
 
 static void seams(void **state)
@@ -341,12 +334,11 @@ static void seams(void **state)
     mesh_topology_free(&t);
 
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    charts(&m, &c);
     assert_int_equal(c.ncharts, 2);
     assert_true(c.uses_uv);
     for (int k = 0; k < 2; k++) {
-        assert_int_equal(mesh_chart_check(&c, k, 0, &e), SCAF_OK);
+        assert_chart_check(&c, k, 0, SCAF_OK, NULL);
         int l = c.chart_loops[c.chart_loop_start[k]];
         assert_int_equal(c.cx.loop_start[l + 1] - c.cx.loop_start[l], 3);
         for (int i = c.cx.loop_start[l]; i < c.cx.loop_start[l + 1]; i++) {
@@ -378,11 +370,9 @@ static void uv_pinch_fails_check(void **state)
     mesh m;
     make(&m, 4, SQUARE_V, 2, F, 5, UV, FT);
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    charts(&m, &c);
     assert_int_equal(c.ncharts, 2);
-    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_MESH);
-    assert_non_null(strstr(e.message, "vt 0"));
+    assert_chart_check(&c, 0, 1, SCAF_ERR_MESH, "vt 0");
     mesh_charts_free(&c);
     mesh_free(&m);
 }
@@ -403,12 +393,10 @@ static void faces_without_uv(void **state)
     assert_int_equal(t.seam_edges, 1);
     mesh_topology_free(&t);
     mesh_charts c;
-    scaf_error e;
-    assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
+    charts(&m, &c);
     assert_int_equal(c.ncharts, 2);
-    assert_int_equal(mesh_chart_check(&c, 0, 0, &e), SCAF_OK);
-    assert_int_equal(mesh_chart_check(&c, 1, 1, &e), SCAF_ERR_MESH);
-    assert_non_null(strstr(e.message, "face 1"));
+    assert_chart_check(&c, 0, 0, SCAF_OK, NULL);
+    assert_chart_check(&c, 1, 1, SCAF_ERR_MESH, "face 1");
     /* the loop accessor of the good chart */
     const int *v, *vt;
     int id;
@@ -483,7 +471,7 @@ static void huge_fans_are_handled(void **state)
     mesh_topology_free(&t);
     mesh_charts c;
     assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
-    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_MESH);
+    assert_chart_check(&c, 0, 1, SCAF_ERR_MESH, NULL);
     mesh_charts_free(&c);
     mesh_free(&m);
 }
@@ -535,7 +523,7 @@ static void empty_mesh(void **state)
     mesh_charts c;
     assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
     assert_int_equal(c.ncharts, 0);
-    assert_int_equal(mesh_chart_check(&c, 0, 1, &e), SCAF_ERR_USAGE);
+    assert_chart_check(&c, 0, 1, SCAF_ERR_USAGE, NULL);
     mesh_charts_free(&c);
     mesh_free(&m);
 }
