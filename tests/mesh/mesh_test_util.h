@@ -41,28 +41,61 @@ static inline void parse_ok(const char *text, mesh_format fmt, mesh *m, mesh_rea
     assert_int_equal(s, SCAF_OK);
 }
 
-/* Parse bytes expecting failure with `code`, the message starting with
- * "t:LINE:" and containing `needle` (may be NULL). */
-static inline void parse_fails_n(const char *bytes, size_t n, mesh_format fmt, scaf_status code, long line,
-                                 const char *needle)
+/* Parse bytes expecting failure with `code`, no mesh left behind, and the
+ * message starting with "t:LINE:" and containing `needle` (may be NULL).
+ * Returns 0 when all of that holds, else 1 with the first difference
+ * written into why. */
+static inline int parse_failure_differs(const char *bytes, size_t n, mesh_format fmt, scaf_status code, long line,
+                                        const char *needle, char *why, size_t size)
 {
     scaf_error e;
     err_clear(&e);
     mesh m;
     scaf_status s = mesh_parse(bytes, n, fmt, "t", &m, NULL, &e);
-    if (s != code) print_error("expected failure, got status %d: %s\n", (int)s, e.message);
-    assert_int_equal(s, code);
-    assert_int_equal(m.nv, 0);
-    assert_null(m.V);
     char want[64];
     snprintf(want, sizeof want, "t:%ld: ", line);
-    if (strncmp(e.message, want, strlen(want)) != 0) print_error("message: %s (wanted %s)\n", e.message, want);
-    assert_true(strncmp(e.message, want, strlen(want)) == 0);
-    if (needle) {
-        if (!strstr(e.message, needle)) print_error("message: %s (wanted '%s')\n", e.message, needle);
-        assert_non_null(strstr(e.message, needle));
+    if (s != code)
+        snprintf(why, size, "expected failure %d, got status %d: %s", (int)code, (int)s, e.message);
+    else if (m.nv != 0 || m.V != NULL)
+        snprintf(why, size, "the failed parse left a mesh (nv %d)", m.nv);
+    else if (strncmp(e.message, want, strlen(want)) != 0)
+        snprintf(why, size, "message: %s (wanted %s)", e.message, want);
+    else if (needle && !strstr(e.message, needle))
+        snprintf(why, size, "message: %s (wanted '%s')", e.message, needle);
+    else
+        return 0;
+    return 1;
+}
+
+/* Asserts parse_failure_differs finds no difference. */
+static inline void parse_fails_n(const char *bytes, size_t n, mesh_format fmt, scaf_status code, long line,
+                                 const char *needle)
+{
+    char why[2048];
+    if (parse_failure_differs(bytes, n, fmt, code, line, needle, why, sizeof why)) fail_msg("%s", why);
+}
+
+/* One malformed text of a table: the line its error names and a phrase the
+ * message must contain (may be NULL). */
+typedef struct parse_case {
+    const char *text;
+    long line;
+    const char *needle;
+} parse_case;
+
+/* Every row of cases (n rows, format fmt) fails with SCAF_ERR_PARSE as
+ * parse_fails_n expects; a failure names the table and the row. */
+static inline void parse_cases_fail(const char *table, mesh_format fmt, const parse_case *cases, int n)
+{
+    for (int i = 0; i < n; i++) {
+        char why[2048];
+        if (parse_failure_differs(cases[i].text, strlen(cases[i].text), fmt, SCAF_ERR_PARSE, cases[i].line,
+                                  cases[i].needle, why, sizeof why))
+            fail_msg("%s, row %d (needle '%s'): %s", table, i, cases[i].needle ? cases[i].needle : "", why);
     }
 }
+
+#define PARSE_CASES_FAIL(fmt, cases) parse_cases_fail(#cases, fmt, cases, (int)(sizeof cases / sizeof cases[0]))
 
 static inline void parse_fails(const char *text, mesh_format fmt, long line, const char *needle)
 {

@@ -6,143 +6,166 @@
 
 #define TRI "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
 
+static const parse_case obj_index_cases[] = {
+    {TRI "f 1 2 4\n", 4, "vertex index 4 out of range (the file has 3 vertices)"},
+    {TRI "f 1 2 3\nf 1 2 99\nv 1 1 1\n", 5, "99"},
+    {TRI "f 0 1 2\n", 4, "index 0"},
+    {TRI "f -4 -2 -1\n", 4, "relative vertex index -4"},
+    {TRI "f 1 2 99999999999\n", 4, "overflows"},
+    {TRI "f 1 2 -99999999999999999999999\n", 4, "overflows"},
+    {TRI "vt 0 0\nf 1/1 2/2 3/3\n", 5, "texture index 3 out of range (the file has 1 vt)"},
+    {TRI "f 1/1 2/1 3/1\n", 4, "texture index 1 out of range (the file has 0 vt)"},
+    {TRI "vt 0 0\nf 1/-2 2/-1 3/-1\n", 5, "relative texture index -2"},
+    {TRI "vt 0 0\nf 1/1 2 3\n", 5, "mixes"},
+};
+
 static void obj_index_errors(void **state)
 {
     (void)state;
-    parse_fails(TRI "f 1 2 4\n", MESH_FORMAT_OBJ, 4, "vertex index 4 out of range (the file has 3 vertices)");
-    parse_fails(TRI "f 1 2 3\nf 1 2 99\nv 1 1 1\n", MESH_FORMAT_OBJ, 5, "99");
-    parse_fails(TRI "f 0 1 2\n", MESH_FORMAT_OBJ, 4, "index 0");
-    parse_fails(TRI "f -4 -2 -1\n", MESH_FORMAT_OBJ, 4, "relative vertex index -4");
-    parse_fails(TRI "f 1 2 99999999999\n", MESH_FORMAT_OBJ, 4, "overflows");
-    parse_fails(TRI "f 1 2 -99999999999999999999999\n", MESH_FORMAT_OBJ, 4, "overflows");
-    parse_fails(TRI "vt 0 0\nf 1/1 2/2 3/3\n", MESH_FORMAT_OBJ, 5, "texture index 3 out of range (the file has 1 vt)");
-    parse_fails(TRI "f 1/1 2/1 3/1\n", MESH_FORMAT_OBJ, 4, "texture index 1 out of range (the file has 0 vt)");
-    parse_fails(TRI "vt 0 0\nf 1/-2 2/-1 3/-1\n", MESH_FORMAT_OBJ, 5, "relative texture index -2");
-    parse_fails(TRI "vt 0 0\nf 1/1 2 3\n", MESH_FORMAT_OBJ, 5, "mixes");
+    PARSE_CASES_FAIL(MESH_FORMAT_OBJ, obj_index_cases);
 }
+
+static const parse_case obj_face_shape_cases[] = {
+    {TRI "f 1 2\n", 4, "2 corners"},
+    {TRI "f\n", 4, "0 corners"},
+    {TRI "f 1 2 1\n", 4, "vertex 1 more than once"},
+    {TRI "v 1 1 0\nf 1 2 3 -3\n", 5, "vertex 2 more than once"},
+    {TRI "f 1 2 3x\n", 4, "bad face corner '3x'"},
+    {TRI "f 1/2/3/4 2 3\n", 4, "bad face corner"},
+    {TRI "f 1/x 2 3\n", 4, "bad face corner"},
+    {TRI "f 1//x 2//1 3//1\n", 4, "bad face corner"},
+};
 
 static void obj_face_shape_errors(void **state)
 {
     (void)state;
-    parse_fails(TRI "f 1 2\n", MESH_FORMAT_OBJ, 4, "2 corners");
-    parse_fails(TRI "f\n", MESH_FORMAT_OBJ, 4, "0 corners");
-    parse_fails(TRI "f 1 2 1\n", MESH_FORMAT_OBJ, 4, "vertex 1 more than once");
-    parse_fails(TRI "v 1 1 0\nf 1 2 3 -3\n", MESH_FORMAT_OBJ, 5, "vertex 2 more than once");
-    parse_fails(TRI "f 1 2 3x\n", MESH_FORMAT_OBJ, 4, "bad face corner '3x'");
-    parse_fails(TRI "f 1/2/3/4 2 3\n", MESH_FORMAT_OBJ, 4, "bad face corner");
-    parse_fails(TRI "f 1/x 2 3\n", MESH_FORMAT_OBJ, 4, "bad face corner");
-    parse_fails(TRI "f 1//x 2//1 3//1\n", MESH_FORMAT_OBJ, 4, "bad face corner");
+    PARSE_CASES_FAIL(MESH_FORMAT_OBJ, obj_face_shape_cases);
 }
+
+static const parse_case obj_number_cases[] = {
+    {"v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", 2, "not a finite number"},
+    {"v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n", 2, "not a finite number"},
+    {"v 0 0 0\nv 1 0 -Infinity\nv 0 1 0\nf 1 2 3\n", 2, "not a finite number"},
+    {"v 0 0 0\nv 1 0 1e999\nv 0 1 0\nf 1 2 3\n", 2, "not a finite number"},
+    {"v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n", 2, "missing value"},
+    {"v 0 0 0\nv 1 0 abc\nv 0 1 0\nf 1 2 3\n", 2, "'abc' is not a number"},
+    {"v 0 0 0\nv 1 0 1.5.5\nv 0 1 0\nf 1 2 3\n", 2, "not a number"},
+    {"v 0 0 0\nv 1 0 1e\n", 2, "not a number"},
+    {"v 0 0 0\nv 1 0 0x10\n", 2, "not a number"},
+    {TRI "vt 0 nan\n", 4, "texture coordinate"},
+};
 
 static void obj_number_errors(void **state)
 {
     (void)state;
-    parse_fails("v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", MESH_FORMAT_OBJ, 2, "not a finite number");
-    parse_fails("v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n", MESH_FORMAT_OBJ, 2, "not a finite number");
-    parse_fails("v 0 0 0\nv 1 0 -Infinity\nv 0 1 0\nf 1 2 3\n", MESH_FORMAT_OBJ, 2, "not a finite number");
-    parse_fails("v 0 0 0\nv 1 0 1e999\nv 0 1 0\nf 1 2 3\n", MESH_FORMAT_OBJ, 2, "not a finite number");
-    parse_fails("v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n", MESH_FORMAT_OBJ, 2, "missing value");
-    parse_fails("v 0 0 0\nv 1 0 abc\nv 0 1 0\nf 1 2 3\n", MESH_FORMAT_OBJ, 2, "'abc' is not a number");
-    parse_fails("v 0 0 0\nv 1 0 1.5.5\nv 0 1 0\nf 1 2 3\n", MESH_FORMAT_OBJ, 2, "not a number");
-    parse_fails("v 0 0 0\nv 1 0 1e\n", MESH_FORMAT_OBJ, 2, "not a number");
-    parse_fails("v 0 0 0\nv 1 0 0x10\n", MESH_FORMAT_OBJ, 2, "not a number");
-    parse_fails(TRI "vt 0 nan\n", MESH_FORMAT_OBJ, 4, "texture coordinate");
+    PARSE_CASES_FAIL(MESH_FORMAT_OBJ, obj_number_cases);
 }
+
+static const parse_case obj_garbage_cases[] = {
+    {TRI "hello world\nf 1 2 3\n", 4, "unknown statement 'hello'"},
+    {TRI "\x01\x02\x03\n", 4, "unknown statement"},
+    {TRI, 3, "no faces"},
+    {"", 1, "no faces"},
+    {"# nothing\n\n", 2, "no faces"},
+};
 
 static void obj_garbage_and_empty(void **state)
 {
     (void)state;
-    parse_fails(TRI "hello world\nf 1 2 3\n", MESH_FORMAT_OBJ, 4, "unknown statement 'hello'");
-    parse_fails(TRI "\x01\x02\x03\n", MESH_FORMAT_OBJ, 4, "unknown statement");
-    parse_fails(TRI, MESH_FORMAT_OBJ, 3, "no faces");
-    parse_fails("", MESH_FORMAT_OBJ, 1, "no faces");
-    parse_fails("# nothing\n\n", MESH_FORMAT_OBJ, 2, "no faces");
+    PARSE_CASES_FAIL(MESH_FORMAT_OBJ, obj_garbage_cases);
     /* Embedded NUL bytes are garbage, not the end of the text. */
     static const char nul[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n\0\n";
     parse_fails_n(nul, sizeof nul - 1, MESH_FORMAT_OBJ, SCAF_ERR_PARSE, 5, "unknown statement");
 }
 
+static const parse_case off_cases[] = {
+    {"", 1, "no OFF header"},
+    {"PLY\n", 1, "not an OFF file"},
+    {"4OFF\n3 1 0\n", 1, "4D"},
+    {"nOFF\n2\n3 1 0\n", 2, "dimension 2"},
+    {"OFF\n", 2, "missing vertex count"},
+    {"OFF\n3 x 0\n", 2, "bad face count 'x'"},
+    {"OFF\n-3 1 0\n", 2, "bad vertex count"},
+    {"OFF\n1000000000000 1 0\n0 0 0\n", 2, "bad vertex count"},
+    {"OFF\n2000000000 2000000000 0\n0 0 0\n", 2, "truncated"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n", 2, "truncated"},
+    {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n# no more faces here\n", 8, "truncated file: 1 of 2 faces"},
+    {"OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", 2, "no faces"},
+    {"OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", 4, "finite"},
+    {"OFF\n3 1 0\n0 0 0\n10 0\n0 1 0\n3 0 1 2\n", 4, "has 2 coordinates"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", 6, "vertex index 3 out of range (the file has 3 vertices)"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", 6, "-1 out of range"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 99999999999999999999\n", 6, "out of range"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n", 6, "more than once"},
+    {"OFF\n3 1 0\n0 0 0.5\n1 0 0.5\n0 1 0\n2 0 1\n", 6, "2 corners"},
+    {"OFF\n3 1 0\n0 0 0.5\n1 0 0.5\n0 1 0\n3 0 1\n", 6, "2 of its 3 indices"},
+    {"OFF\n3 1 0\n0 0 0.5\n1 0 0.5\n0 1 0\n300 0 1 2\n", 6, "line is shorter"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2    \n", 6, "3 of its 4 indices"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 z\n", 6, "bad vertex index 'z'"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\nx 0 1 2\n", 6, "bad corner count"},
+};
+
 static void off_errors(void **state)
 {
     (void)state;
-    parse_fails("", MESH_FORMAT_OFF, 1, "no OFF header");
-    parse_fails("PLY\n", MESH_FORMAT_OFF, 1, "not an OFF file");
-    parse_fails("4OFF\n3 1 0\n", MESH_FORMAT_OFF, 1, "4D");
-    parse_fails("nOFF\n2\n3 1 0\n", MESH_FORMAT_OFF, 2, "dimension 2");
-    parse_fails("OFF\n", MESH_FORMAT_OFF, 2, "missing vertex count");
-    parse_fails("OFF\n3 x 0\n", MESH_FORMAT_OFF, 2, "bad face count 'x'");
-    parse_fails("OFF\n-3 1 0\n", MESH_FORMAT_OFF, 2, "bad vertex count");
-    parse_fails("OFF\n1000000000000 1 0\n0 0 0\n", MESH_FORMAT_OFF, 2, "bad vertex count");
-    parse_fails("OFF\n2000000000 2000000000 0\n0 0 0\n", MESH_FORMAT_OFF, 2, "truncated");
-    parse_fails("OFF\n3 1 0\n0 0 0\n1 0 0\n", MESH_FORMAT_OFF, 2, "truncated");
-    parse_fails("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n# no more faces here\n", MESH_FORMAT_OFF, 8,
-                "truncated file: 1 of 2 faces");
-    parse_fails("OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", MESH_FORMAT_OFF, 2, "no faces");
-    parse_fails("OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", MESH_FORMAT_OFF, 4, "finite");
-    parse_fails("OFF\n3 1 0\n0 0 0\n10 0\n0 1 0\n3 0 1 2\n", MESH_FORMAT_OFF, 4, "has 2 coordinates");
-    parse_fails("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", MESH_FORMAT_OFF, 6,
-                "vertex index 3 out of range (the file has 3 vertices)");
-    parse_fails("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", MESH_FORMAT_OFF, 6, "-1 out of range");
-    parse_fails("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 99999999999999999999\n", MESH_FORMAT_OFF, 6,
-                "out of range");
-    parse_fails("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n", MESH_FORMAT_OFF, 6, "more than once");
-    parse_fails("OFF\n3 1 0\n0 0 0.5\n1 0 0.5\n0 1 0\n2 0 1\n", MESH_FORMAT_OFF, 6, "2 corners");
-    parse_fails("OFF\n3 1 0\n0 0 0.5\n1 0 0.5\n0 1 0\n3 0 1\n", MESH_FORMAT_OFF, 6, "2 of its 3 indices");
-    parse_fails("OFF\n3 1 0\n0 0 0.5\n1 0 0.5\n0 1 0\n300 0 1 2\n", MESH_FORMAT_OFF, 6, "line is shorter");
-    parse_fails("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2    \n", MESH_FORMAT_OFF, 6, "3 of its 4 indices");
-    parse_fails("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 z\n", MESH_FORMAT_OFF, 6, "bad vertex index 'z'");
-    parse_fails("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\nx 0 1 2\n", MESH_FORMAT_OFF, 6, "bad corner count");
+    PARSE_CASES_FAIL(MESH_FORMAT_OFF, off_cases);
 }
 
 #define PLY_HEAD(fmt, nv, nf)                                                                              \
     "ply\nformat " fmt " 1.0\nelement vertex " nv "\nproperty float x\nproperty float y\nproperty float z\n" \
     "element face " nf "\nproperty list uchar int vertex_indices\nend_header\n"
 
+static const parse_case ply_header_cases[] = {
+    {"", 1, "truncated header"},
+    {"plx\n", 1, "not a PLY file"},
+    {"ply\nformat ascii 1.0\nelement vertex 3\n", 3, "no end_header"},
+    {"ply\nformat binary_middle_endian 1.0\nend_header\n", 2, "unknown PLY format 'binary_middle_endian'"},
+    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float128 x\nend_header\n",
+     4, "unknown PLY type 'float128'"},
+    {"ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\nend_header\n",
+     4, "count type"},
+    {"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar float vertex_indices\nend_header\n",
+     4, "integer type"},
+    {"ply\nformat ascii 1.0\nproperty float x\nend_header\n", 3, "before any element"},
+    {"ply\nformat ascii 1.0\nelement vertex x\nend_header\n", 3, "bad element count"},
+    {"ply\nformat ascii 1.0\nelement vertex -1\nend_header\n", 3, "bad element count"},
+    {"ply\nformat ascii 1.0\nbanana\nend_header\n", 3, "unknown header line"},
+    {"ply\nend_header\n", 2, "no format"},
+    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nend_header\n"
+     "0 0\n1 0\n0 1\n",
+     6, "lacks x, y or z"},
+    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+     "end_header\n0 0 0\n1 0 0\n0 1 0\n",
+     7, "no faces"},
+    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+     "element face 1\nproperty list uchar int corners\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+     9, "lacks a 'vertex_indices'"},
+};
+
 static void ply_header_errors(void **state)
 {
     (void)state;
-    parse_fails("", MESH_FORMAT_PLY, 1, "truncated header");
-    parse_fails("plx\n", MESH_FORMAT_PLY, 1, "not a PLY file");
-    parse_fails("ply\nformat ascii 1.0\nelement vertex 3\n", MESH_FORMAT_PLY, 3, "no end_header");
-    parse_fails("ply\nformat binary_middle_endian 1.0\nend_header\n", MESH_FORMAT_PLY, 2,
-                "unknown PLY format 'binary_middle_endian'");
-    parse_fails("ply\nformat ascii 1.0\nelement vertex 3\nproperty float128 x\nend_header\n", MESH_FORMAT_PLY, 4,
-                "unknown PLY type 'float128'");
-    parse_fails("ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\nend_header\n",
-                MESH_FORMAT_PLY, 4, "count type");
-    parse_fails("ply\nformat ascii 1.0\nelement face 1\nproperty list uchar float vertex_indices\nend_header\n",
-                MESH_FORMAT_PLY, 4, "integer type");
-    parse_fails("ply\nformat ascii 1.0\nproperty float x\nend_header\n", MESH_FORMAT_PLY, 3, "before any element");
-    parse_fails("ply\nformat ascii 1.0\nelement vertex x\nend_header\n", MESH_FORMAT_PLY, 3, "bad element count");
-    parse_fails("ply\nformat ascii 1.0\nelement vertex -1\nend_header\n", MESH_FORMAT_PLY, 3, "bad element count");
-    parse_fails("ply\nformat ascii 1.0\nbanana\nend_header\n", MESH_FORMAT_PLY, 3, "unknown header line");
-    parse_fails("ply\nend_header\n", MESH_FORMAT_PLY, 2, "no format");
-    parse_fails("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nend_header\n"
-                "0 0\n1 0\n0 1\n",
-                MESH_FORMAT_PLY, 6, "lacks x, y or z");
-    parse_fails("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                "end_header\n0 0 0\n1 0 0\n0 1 0\n",
-                MESH_FORMAT_PLY, 7, "no faces");
-    parse_fails("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                "element face 1\nproperty list uchar int corners\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-                MESH_FORMAT_PLY, 9, "lacks a 'vertex_indices'");
+    PARSE_CASES_FAIL(MESH_FORMAT_PLY, ply_header_cases);
 }
+
+static const parse_case ply_body_cases[] = {
+    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
+     13, "vertex index 3 out of range (the file has 3 vertices)"},
+    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", 13, "out of range"},
+    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 0\n", 13, "more than once"},
+    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", 13, "2 corners"},
+    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", 11, "finite number"},
+    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n", 11, "'x'"},
+    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1\n", 14, "truncated"},
+    {PLY_HEAD("ascii", "3", "2") "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 14, "truncated"},
+    {PLY_HEAD("ascii", "4000000000", "1") "0 0 0\n", 9, "truncated"},
+    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 2.5\n", 13, "integer"},
+};
 
 static void ply_body_errors(void **state)
 {
     (void)state;
-    parse_fails(PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", MESH_FORMAT_PLY, 13,
-                "vertex index 3 out of range (the file has 3 vertices)");
-    parse_fails(PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", MESH_FORMAT_PLY, 13, "out of range");
-    parse_fails(PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 0\n", MESH_FORMAT_PLY, 13, "more than once");
-    parse_fails(PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", MESH_FORMAT_PLY, 13, "2 corners");
-    parse_fails(PLY_HEAD("ascii", "3", "1") "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", MESH_FORMAT_PLY, 11,
-                "finite number");
-    parse_fails(PLY_HEAD("ascii", "3", "1") "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n", MESH_FORMAT_PLY, 11, "'x'");
-    parse_fails(PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1\n", MESH_FORMAT_PLY, 14, "truncated");
-    parse_fails(PLY_HEAD("ascii", "3", "2") "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", MESH_FORMAT_PLY, 14, "truncated");
-    parse_fails(PLY_HEAD("ascii", "4000000000", "1") "0 0 0\n", MESH_FORMAT_PLY, 9, "truncated");
-    parse_fails(PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 2.5\n", MESH_FORMAT_PLY, 13, "integer");
+    PARSE_CASES_FAIL(MESH_FORMAT_PLY, ply_body_cases);
     /* Binary: a face whose list claims 200 corners in a short file; a huge element count. */
     char buf[512];
     size_t n = (size_t)snprintf(buf, sizeof buf, "%s", PLY_HEAD("binary_little_endian", "3", "1"));
