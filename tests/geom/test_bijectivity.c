@@ -14,6 +14,7 @@
 
 #include "geom/bijectivity.h"
 #include "geom/predicates.h"
+#include "support/count_checks.h"
 
 static bij_report run(int nuv, const double *UV, int nf, const int *F)
 {
@@ -23,27 +24,6 @@ static bij_report run(int nuv, const double *UV, int nf, const int *F)
     return r;
 }
 
-/* One expected count: the expression's text, its value, the value wanted. */
-typedef struct count_check {
-    const char *what;
-    long long got, want;
-} count_check;
-
-#define HAS(expr, value) {#expr, (long long)(expr), (long long)(value)}
-
-/* Asserts every check of a list; a failure names the case and the count. */
-static void expect_counts(const char *label, const count_check *c, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (c[i].got != c[i].want)
-            fail_msg("%s: %s = %lld, expected %lld", label, c[i].what, c[i].got, c[i].want);
-}
-
-/* EXPECT("case", HAS(r.charts, 2), HAS(r.flipped, 0), ...) */
-#define EXPECT(label, ...)                                                                         \
-    expect_counts(label, (const count_check[]){__VA_ARGS__},                                       \
-                  (int)(sizeof((const count_check[]){__VA_ARGS__}) / sizeof(count_check)))
-
 /* ---- single triangles ---- */
 
 static void ccw_triangle_is_bijective(void **state)
@@ -52,9 +32,9 @@ static void ccw_triangle_is_bijective(void **state)
     double UV[] = {0, 0, 1, 0, 0, 1};
     int F[] = {0, 1, 2};
     bij_report r = run(3, UV, 1, F);
-    EXPECT("ccw_triangle_is_bijective",
-           HAS(r.triangles, 1), HAS(r.positive, 1), HAS(r.charts, 1), HAS(r.boundary_edges, 3),
-           HAS(r.boundary_loops, 1));
+    EXPECT_COUNTS("ccw_triangle_is_bijective",
+        HAS(r.triangles, 1), HAS(r.positive, 1), HAS(r.charts, 1), HAS(r.boundary_edges, 3),
+        HAS(r.boundary_loops, 1));
     assert_true(r.bijective);
 }
 
@@ -66,8 +46,8 @@ static void cw_triangle_is_a_mirrored_chart(void **state)
     signed char o[1];
     bij_report r;
     assert_int_equal(bij_check(3, UV, 1, F, NULL, o, &r, NULL), SCAF_OK);
-    EXPECT("cw_triangle_is_a_mirrored_chart",
-           HAS(o[0], -1), HAS(r.flipped, 1), HAS(r.mirrored_charts, 1), HAS(r.mixed_charts, 0));
+    EXPECT_COUNTS("cw_triangle_is_a_mirrored_chart",
+        HAS(o[0], -1), HAS(r.flipped, 1), HAS(r.mirrored_charts, 1), HAS(r.mixed_charts, 0));
     assert_false(r.bijective);
 }
 
@@ -80,9 +60,9 @@ static void degenerate_triangles(void **state)
     signed char o[5];
     bij_report r;
     assert_int_equal(bij_check(6, UV, 5, F, NULL, o, &r, NULL), SCAF_OK);
-    EXPECT("degenerate_triangles",
-           HAS(o[3], 0), /* (0,0), (1,1), (2,2) */
-           HAS(o[4], 0), HAS(r.degenerate, 2), HAS(r.flipped, 0));
+    EXPECT_COUNTS("degenerate_triangles",
+        HAS(o[3], 0), /* (0,0), (1,1), (2,2) */
+        HAS(o[4], 0), HAS(r.degenerate, 2), HAS(r.flipped, 0));
     assert_false(r.bijective);
 }
 
@@ -117,9 +97,9 @@ static void two_triangles_crossing(void **state)
     double UV[] = {0, 4, -4, -2, 4, -2, 0, -4, 4, 2, -4, 2};
     int F[] = {0, 1, 2, 3, 4, 5};
     bij_report r = run(6, UV, 2, F);
-    EXPECT("two_triangles_crossing",
-           HAS(r.positive, 2), HAS(r.charts, 2), HAS(r.boundary_crossings, 6),
-           HAS(r.boundary_touchings, 0));
+    EXPECT_COUNTS("two_triangles_crossing",
+        HAS(r.positive, 2), HAS(r.charts, 2), HAS(r.boundary_crossings, 6),
+        HAS(r.boundary_touchings, 0));
     assert_false(r.bijective);
 }
 
@@ -130,9 +110,9 @@ static void touching_at_shared_vertex_index_is_fine(void **state)
     double UV[] = {0, 0, 1, -1, 1, 1, -1, 1, -1, -1};
     int F[] = {0, 1, 2, 0, 3, 4};
     bij_report r = run(5, UV, 2, F);
-    EXPECT("touching_at_shared_vertex_index_is_fine",
-           HAS(r.charts, 2), HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 0),
-           HAS(r.nested_loops, 0));
+    EXPECT_COUNTS("touching_at_shared_vertex_index_is_fine",
+        HAS(r.charts, 2), HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 0),
+        HAS(r.nested_loops, 0));
     assert_true(r.bijective);
 }
 
@@ -143,9 +123,9 @@ static void touching_at_coincident_distinct_vertices(void **state)
     double UV[] = {0, 0, 1, -1, 1, 1, -1, 1, -1, -1, 0, 0};
     int F[] = {0, 1, 2, 5, 3, 4};
     bij_report r = run(6, UV, 2, F);
-    EXPECT("touching_at_coincident_distinct_vertices",
-           HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 4), /* 2 segments at each copy */
-           HAS(r.nested_loops, 0));
+    EXPECT_COUNTS("touching_at_coincident_distinct_vertices",
+        HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 4), /* 2 segments at each copy */
+        HAS(r.nested_loops, 0));
     assert_false(r.bijective);
 }
 
@@ -155,8 +135,8 @@ static void collinear_overlapping_edges(void **state)
     double UV[] = {0, 0, 2, 0, 1, 1, 1, 0, 2, -1, 3, 0};
     int F[] = {0, 1, 2, 3, 4, 5};
     bij_report r = run(6, UV, 2, F);
-    EXPECT("collinear_overlapping_edges",
-           HAS(r.positive, 2), HAS(r.boundary_crossings, 0));
+    EXPECT_COUNTS("collinear_overlapping_edges",
+        HAS(r.positive, 2), HAS(r.boundary_crossings, 0));
     /* (0,0)-(2,0) overlaps (3,0)-(1,0); (1,0) lies on it; (2,0) lies on
      * (3,0)-(1,0) as the end of (2,0)-(1,1) */
     assert_int_equal(r.boundary_touchings, 3);
@@ -171,9 +151,9 @@ static void boundary_folding_back(void **state)
     double UV[] = {0, 0, 2, 0, 1, 1, 1, 0, 1, -1};
     int F[] = {0, 1, 2, 0, 4, 3};
     bij_report r = run(5, UV, 2, F);
-    EXPECT("boundary_folding_back",
-           HAS(r.positive, 2), HAS(r.boundary_crossings, 0), HAS(r.boundary_foldbacks, 1),
-           HAS(r.boundary_touchings, 1)); /* 4-3 ends at (1,0), inside 0-1 */
+    EXPECT_COUNTS("boundary_folding_back",
+        HAS(r.positive, 2), HAS(r.boundary_crossings, 0), HAS(r.boundary_foldbacks, 1),
+        HAS(r.boundary_touchings, 1)); /* 4-3 ends at (1,0), inside 0-1 */
     assert_false(r.bijective);
 }
 
@@ -184,8 +164,8 @@ static void folded_and_nonmanifold_edges(void **state)
     double UV[] = {0, 0, 2, 0, 1, 1, 1, 2, 1, -1};
     int F[] = {0, 1, 2, 0, 1, 3};
     bij_report r = run(5, UV, 2, F);
-    EXPECT("folded_and_nonmanifold_edges",
-           HAS(r.positive, 2), HAS(r.folded_edges, 1));
+    EXPECT_COUNTS("folded_and_nonmanifold_edges",
+        HAS(r.positive, 2), HAS(r.folded_edges, 1));
     assert_false(r.bijective);
     int G[] = {0, 1, 2, 1, 0, 4, 0, 1, 3};
     r = run(5, UV, 3, G);
@@ -215,23 +195,23 @@ static void chart_nested_in_a_hole(void **state)
     memcpy(UV + 16, small, sizeof small);
     F[24] = 8, F[25] = 9, F[26] = 10;
     bij_report r = run(11, UV, 9, F);
-    EXPECT("chart_nested_in_a_hole",
-           HAS(r.positive, 9), HAS(r.charts, 2), HAS(r.boundary_loops, 3), HAS(r.nested_loops, 0),
-           HAS(r.boundary_crossings, 0));
+    EXPECT_COUNTS("small chart in the annulus hole",
+        HAS(r.positive, 9), HAS(r.charts, 2), HAS(r.boundary_loops, 3), HAS(r.nested_loops, 0),
+        HAS(r.boundary_crossings, 0));
     assert_true(r.bijective);
     /* the same chart moved into the annulus body: no contact, but overlap */
     for (int i = 0; i < 3; i++) UV[16 + 2 * i] -= 3.0;
     r = run(11, UV, 9, F);
-    EXPECT("chart_nested_in_a_hole (2)",
-           HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 0), HAS(r.nested_loops, 1));
+    EXPECT_COUNTS("small chart moved into the annulus body",
+        HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 0), HAS(r.nested_loops, 1));
     assert_false(r.bijective);
     /* a chart covering the whole annulus hole and more: its loop encloses
      * the annulus' inner loop, which lands inside it */
     double big[] = {-20, -20, 30, -20, 5, 30};
     memcpy(UV + 16, big, sizeof big);
     r = run(11, UV, 9, F);
-    EXPECT("chart_nested_in_a_hole (3)",
-           HAS(r.boundary_crossings, 0), HAS(r.nested_loops, 2)); /* both loops of the annulus */
+    EXPECT_COUNTS("big chart around the annulus hole",
+        HAS(r.boundary_crossings, 0), HAS(r.nested_loops, 2)); /* both loops of the annulus */
     assert_false(r.bijective);
 }
 
@@ -241,16 +221,16 @@ static void chart_inside_a_triangle(void **state)
     double UV[] = {0, 0, 100, 0, 0, 100, 1, 1, 2, 1, 1, 2};
     int F[] = {0, 1, 2, 3, 4, 5};
     bij_report r = run(6, UV, 2, F);
-    EXPECT("chart_inside_a_triangle",
-           HAS(r.boundary_crossings, 0), HAS(r.nested_loops, 1));
+    EXPECT_COUNTS("chart inside a big triangle",
+        HAS(r.boundary_crossings, 0), HAS(r.nested_loops, 1));
     assert_false(r.bijective);
     /* a square of two triangles; the small chart's vertex exactly on the
      * interior diagonal, the rest inside */
     double S[] = {0, 0, 4, 0, 4, 4, 0, 4, 2, 2, 3, 2, 3, 2.5};
     int G[] = {0, 1, 2, 0, 2, 3, 4, 5, 6};
     r = run(7, S, 3, G);
-    EXPECT("chart_inside_a_triangle (2)",
-           HAS(r.boundary_touchings, 0), HAS(r.nested_loops, 1));
+    EXPECT_COUNTS("chart vertex on a square's diagonal",
+        HAS(r.boundary_touchings, 0), HAS(r.nested_loops, 1));
     assert_false(r.bijective);
     /* same, with the small chart outside the square */
     for (int i = 4; i < 7; i++) S[2 * i] += 10;
@@ -279,21 +259,21 @@ static void overlap_at_a_pinch_point(void **state)
     assert_int_equal(r.positive, 7);
     assert_int_equal(r.folded_edges + r.nonmanifold_edges, 0);
     assert_int_equal(r.boundary_crossings + r.boundary_touchings + r.boundary_foldbacks, 0);
-    EXPECT("overlap_at_a_pinch_point",
-           HAS(r.nested_loops, 0), HAS(r.corner_overlaps, 3));
+    EXPECT_COUNTS("triangle on hexagon chords",
+        HAS(r.nested_loops, 0), HAS(r.corner_overlaps, 3));
     assert_false(r.bijective);
     /* three triangles around point 0 and a fourth one joined only there:
      * inside the fan's third triangle, then in the empty quadrant */
     double V[] = {0, 0, 4, 0, 0, 4, -4, 0, 0, -4, -1, -1, -3, -1};
     int G[] = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 6, 5};
     r = run(7, V, 4, G);
-    EXPECT("overlap_at_a_pinch_point (2)",
-           HAS(r.positive, 4), HAS(r.corner_overlaps, 1));
+    EXPECT_COUNTS("fourth triangle inside the fan",
+        HAS(r.positive, 4), HAS(r.corner_overlaps, 1));
     assert_false(r.bijective);
     V[10] = 3, V[11] = -1, V[12] = 1, V[13] = -3;
     r = run(7, V, 4, G);
-    EXPECT("overlap_at_a_pinch_point (3)",
-           HAS(r.positive, 4), HAS(r.corner_overlaps, 0));
+    EXPECT_COUNTS("fourth triangle in the empty quadrant",
+        HAS(r.positive, 4), HAS(r.corner_overlaps, 0));
     assert_true(r.bijective);
 }
 
@@ -303,15 +283,15 @@ static void mirrored_chart_among_good_ones(void **state)
     double UV[] = {0, 0, 1, 0, 1, 1, 0, 1, 5, 0, 6, 0, 6, 1, 5, 1};
     int F[] = {0, 1, 2, 0, 2, 3, 4, 6, 5, 4, 7, 6};
     bij_report r = run(8, UV, 4, F);
-    EXPECT("mirrored_chart_among_good_ones",
-           HAS(r.charts, 2), HAS(r.flipped, 2), HAS(r.mirrored_charts, 1), HAS(r.mixed_charts, 0),
-           HAS(r.boundary_crossings, 0), HAS(r.nested_loops, 0));
+    EXPECT_COUNTS("mirrored chart among good ones",
+        HAS(r.charts, 2), HAS(r.flipped, 2), HAS(r.mirrored_charts, 1), HAS(r.mixed_charts, 0),
+        HAS(r.boundary_crossings, 0), HAS(r.nested_loops, 0));
     assert_false(r.bijective);
     /* given chart ids override the computed ones */
     int chart[] = {7, 7, 7, 7};
     assert_int_equal(bij_check(8, UV, 4, F, chart, NULL, &r, NULL), SCAF_OK);
-    EXPECT("mirrored_chart_among_good_ones (2)",
-           HAS(r.charts, 1), HAS(r.mixed_charts, 1));
+    EXPECT_COUNTS("given chart ids override",
+        HAS(r.charts, 1), HAS(r.mixed_charts, 1));
 }
 
 static void bad_input_is_an_error(void **state)
@@ -389,8 +369,8 @@ static void large_grid_layouts(void **state)
     (void)state;
     layout L = grid_layout(6, 5, 40, 12345);
     bij_report r = run(L.nuv, L.UV, L.nf, L.F);
-    EXPECT("large_grid_layouts",
-           HAS(r.charts, 30), HAS(r.boundary_loops, 30), HAS(r.boundary_edges, 30 * 160));
+    EXPECT_COUNTS("large_grid_layouts",
+        HAS(r.charts, 30), HAS(r.boundary_loops, 30), HAS(r.boundary_edges, 30 * 160));
     assert_int_equal(r.flipped + r.degenerate, 0);
     assert_int_equal(r.boundary_crossings + r.boundary_touchings, 0);
     assert_true(r.bijective);
@@ -497,8 +477,8 @@ static void pair_counts_match_brute_force(void **state)
             }
         char label[64];
         snprintf(label, sizeof label, "pair counts, round %d", round);
-        EXPECT(label, HAS(r.boundary_crossings, cross), HAS(r.boundary_touchings, touch),
-               HAS(r.boundary_foldbacks, fold));
+        EXPECT_COUNTS(label, HAS(r.boundary_crossings, cross), HAS(r.boundary_touchings, touch),
+            HAS(r.boundary_foldbacks, fold));
         seen_cross += cross, seen_touch += touch, seen_fold += fold;
         free(E);
         free(UV);

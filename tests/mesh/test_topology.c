@@ -11,6 +11,7 @@
 #include "mesh/edges.h"
 #include "mesh/topology.h"
 #include "mesh/uv_charts.h"
+#include "support/count_checks.h"
 #include "support/loop_area.h"
 
 /* Build a mesh from literal arrays (UV/FT may be NULL). */
@@ -86,20 +87,14 @@ static void single_triangle(void **state)
     make(&m, 3, SQUARE_V, 1, F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    assert_int_equal(t.vertices, 3);
-    assert_int_equal(t.faces, 1);
-    assert_int_equal(t.edges, 3);
-    assert_int_equal(t.boundary_edges, 3);
-    assert_int_equal(t.components, 1);
-    assert_int_equal(t.boundary_loops, 1);
-    assert_int_equal(t.euler_characteristic, 1);
-    assert_int_equal(t.cx.group_genus[0], 0);
-    assert_int_equal(t.genus_sum, 0);
     assert_true(t.manifold);
-    assert_int_equal(t.non_manifold_edges + t.non_manifold_vertices + t.misoriented_edges, 0);
-    assert_int_equal(t.degenerate_faces + t.duplicate_faces + t.unreferenced_vertices, 0);
-    assert_int_equal(t.uv_charts, 1);
-    assert_int_equal(t.cx.loop_start[1], 3);
+    EXPECT_COUNTS("single_triangle",
+        HAS(t.vertices, 3), HAS(t.faces, 1), HAS(t.edges, 3), HAS(t.boundary_edges, 3),
+        HAS(t.components, 1), HAS(t.boundary_loops, 1), HAS(t.euler_characteristic, 1),
+        HAS(t.cx.group_genus[0], 0), HAS(t.genus_sum, 0),
+        HAS(t.non_manifold_edges + t.non_manifold_vertices + t.misoriented_edges, 0),
+        HAS(t.degenerate_faces + t.duplicate_faces + t.unreferenced_vertices, 0),
+        HAS(t.uv_charts, 1), HAS(t.cx.loop_start[1], 3));
     assert_loop_closed(&m, &t.cx, 0);
     assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0);  /* mesh on the left: CCW */
     mesh_topology_free(&t);
@@ -114,12 +109,9 @@ static void two_triangles(void **state)
     make(&m, 4, SQUARE_V, 2, F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    assert_int_equal(t.vertices, 4);
-    assert_int_equal(t.edges, 5);
-    assert_int_equal(t.boundary_edges, 4);
-    assert_int_equal(t.boundary_loops, 1);
-    assert_int_equal(t.euler_characteristic, 1);
-    assert_int_equal(t.cx.loop_start[1], 4);
+    EXPECT_COUNTS("two_triangles",
+        HAS(t.vertices, 4), HAS(t.edges, 5), HAS(t.boundary_edges, 4), HAS(t.boundary_loops, 1),
+        HAS(t.euler_characteristic, 1), HAS(t.cx.loop_start[1], 4));
     assert_loop_closed(&m, &t.cx, 0);
     assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0);
 
@@ -142,11 +134,9 @@ static void closed_tetrahedron(void **state)
     make(&m, 4, TET_V, 4, TET_F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    assert_int_equal(t.edges, 6);
-    assert_int_equal(t.boundary_edges, 0);
-    assert_int_equal(t.boundary_loops, 0);
-    assert_int_equal(t.euler_characteristic, 2);
-    assert_int_equal(t.cx.group_genus[0], 0);
+    EXPECT_COUNTS("closed_tetrahedron",
+        HAS(t.edges, 6), HAS(t.boundary_edges, 0), HAS(t.boundary_loops, 0),
+        HAS(t.euler_characteristic, 2), HAS(t.cx.group_genus[0], 0));
     assert_true(t.manifold);
     assert_true(t.orientable);
     assert_int_equal(t.misoriented_edges, 0);
@@ -170,11 +160,10 @@ static void non_manifold_edge(void **state)
     topo(&m, &t);
     assert_int_equal(t.non_manifold_edges, 1);
     assert_false(t.manifold);
-    assert_int_equal(t.cx.group_genus[0], -1);
-    assert_int_equal(t.genus_sum, -1);
-    assert_int_equal(t.misoriented_edges, 1);  /* 0->1 used by faces 0 and 2 */
-    assert_int_equal(t.edges, 7);
-    assert_int_equal(t.euler_characteristic, 5 - 7 + 3);
+    EXPECT_COUNTS("non_manifold_edge",
+        HAS(t.cx.group_genus[0], -1), HAS(t.genus_sum, -1),
+        HAS(t.misoriented_edges, 1), /* 0->1 used by faces 0 and 2 */
+        HAS(t.edges, 7), HAS(t.euler_characteristic, 5 - 7 + 3));
 
     mesh_charts c;
     charts(&m, &c);
@@ -192,10 +181,10 @@ static void non_manifold_vertex(void **state)
     make(&m, 5, V, 2, F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    assert_int_equal(t.non_manifold_vertices, 1);
-    assert_int_equal(t.non_manifold_edges, 0);
-    assert_int_equal(t.components, 1);       /* joined through vertex 0 */
-    assert_int_equal(t.boundary_loops, 1);   /* boundary graph joined at 0 too */
+    EXPECT_COUNTS("non_manifold_vertex",
+        HAS(t.non_manifold_vertices, 1), HAS(t.non_manifold_edges, 0),
+        HAS(t.components, 1), /* joined through vertex 0 */
+        HAS(t.boundary_loops, 1)); /* boundary graph joined at 0 too */
     assert_false(t.cx.loop_ordered[0]);      /* not a simple cycle */
     assert_int_equal(t.cx.loop_start[1], 6);
     assert_false(t.manifold);
@@ -254,9 +243,8 @@ static void mobius_strip(void **state)
     topo(&m, &t);
     assert_false(t.orientable);
     assert_true(t.manifold);
-    assert_int_equal(t.boundary_loops, 1);
-    assert_int_equal(t.euler_characteristic, 0);
-    assert_int_equal(t.cx.group_genus[0], -1);
+    EXPECT_COUNTS("mobius_strip",
+        HAS(t.boundary_loops, 1), HAS(t.euler_characteristic, 0), HAS(t.cx.group_genus[0], -1));
     mesh_charts c;
     charts(&m, &c);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_NON_ORIENTABLE);
@@ -286,12 +274,12 @@ static void hole(void **state)
     make(&m, 16, V, nf, F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    assert_int_equal(t.boundary_loops, 2);
-    assert_int_equal(t.euler_characteristic, 0);
-    assert_int_equal(t.cx.group_genus[0], 0);
+    EXPECT_COUNTS("hole",
+        HAS(t.boundary_loops, 2), HAS(t.euler_characteristic, 0), HAS(t.cx.group_genus[0], 0));
     int outer = t.cx.loop_start[1] - t.cx.loop_start[0] == 12 ? 0 : 1;
-    assert_int_equal(t.cx.loop_start[outer + 1] - t.cx.loop_start[outer], 12);
-    assert_int_equal(t.cx.loop_start[2 - outer] - t.cx.loop_start[1 - outer], 4);
+    EXPECT_COUNTS("hole: loop lengths",
+        HAS(t.cx.loop_start[outer + 1] - t.cx.loop_start[outer], 12),
+        HAS(t.cx.loop_start[2 - outer] - t.cx.loop_start[1 - outer], 4));
     assert_loop_closed(&m, &t.cx, 0);
     assert_loop_closed(&m, &t.cx, 1);
     assert_true(test_loop_area_xy(&m, &t.cx, outer) > 0);      /* outer loop CCW */
@@ -323,14 +311,13 @@ static void seams(void **state)
     mesh_topology t;
     topo(&m, &t);
     assert_true(t.has_uv);
-    assert_int_equal(t.uv_charts, 1);
-    assert_int_equal(t.seam_edges, 0);
+    EXPECT_COUNTS("seams: shared diagonal vt",
+        HAS(t.uv_charts, 1), HAS(t.seam_edges, 0));
     mesh_topology_free(&t);
     memcpy(m.FT, FT2, sizeof FT2);
     topo(&m, &t);
-    assert_int_equal(t.uv_charts, 2);
-    assert_int_equal(t.seam_edges, 1);
-    assert_int_equal(t.components, 1);
+    EXPECT_COUNTS("seams: diagonal vt split",
+        HAS(t.uv_charts, 2), HAS(t.seam_edges, 1), HAS(t.components, 1));
     mesh_topology_free(&t);
 
     mesh_charts c;
@@ -348,12 +335,12 @@ static void seams(void **state)
             assert_int_equal(c.loop_v[i], m.F[h]);
         }
     }
-    assert_int_equal(c.cx.face_group[0], 0);
-    assert_int_equal(c.cx.face_group[1], 1);
+    EXPECT_COUNTS("seams: face groups",
+        HAS(c.cx.face_group[0], 0), HAS(c.cx.face_group[1], 1));
     /* chart vertex lists: vt 0,1,2 and vt 3,4,5 */
-    assert_int_equal(c.chart_vertex_start[0], 0);
-    assert_int_equal(c.chart_vertex_start[1], 3);
-    assert_int_equal(c.chart_vertex_start[2], 6);
+    EXPECT_COUNTS("seams: chart vertex lists",
+        HAS(c.chart_vertex_start[0], 0), HAS(c.chart_vertex_start[1], 3),
+        HAS(c.chart_vertex_start[2], 6));
     for (int i = 0; i < 6; i++) assert_int_equal(c.chart_vertices[i], i);
     mesh_charts_free(&c);
     mesh_free(&m);
@@ -389,8 +376,8 @@ static void faces_without_uv(void **state)
     make(&m, 4, SQUARE_V, 2, F, 3, UV, FT);
     mesh_topology t;
     topo(&m, &t);
-    assert_int_equal(t.uv_charts, 2);
-    assert_int_equal(t.seam_edges, 1);
+    EXPECT_COUNTS("faces_without_uv",
+        HAS(t.uv_charts, 2), HAS(t.seam_edges, 1));
     mesh_topology_free(&t);
     mesh_charts c;
     charts(&m, &c);
@@ -424,11 +411,10 @@ static void degenerate_duplicate_unreferenced(void **state)
     make(&m, 6, V, 4, F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    assert_int_equal(t.duplicate_faces, 1);
-    assert_int_equal(t.repeated_index_faces, 1);
-    assert_int_equal(t.degenerate_faces, 2);
-    assert_int_equal(t.unreferenced_vertices, 1);  /* vertex 5 */
-    assert_int_equal(t.vertices, 5);
+    EXPECT_COUNTS("degenerate_duplicate_unreferenced",
+        HAS(t.duplicate_faces, 1), HAS(t.repeated_index_faces, 1), HAS(t.degenerate_faces, 2),
+        HAS(t.unreferenced_vertices, 1), /* vertex 5 */
+        HAS(t.vertices, 5));
     mesh_topology_free(&t);
     mesh_free(&m);
 }
@@ -451,9 +437,8 @@ static void huge_fans_are_handled(void **state)
     }
     mesh_topology t;
     topo(&m, &t);
-    assert_int_equal(t.components, 1);
-    assert_int_equal(t.non_manifold_vertices, 1);
-    assert_int_equal(t.boundary_loops, 1);
+    EXPECT_COUNTS("huge fan at one vertex",
+        HAS(t.components, 1), HAS(t.non_manifold_vertices, 1), HAS(t.boundary_loops, 1));
     assert_false(t.cx.loop_ordered[0]);
     assert_int_equal(t.boundary_edges, 3 * N);
     mesh_topology_free(&t);
@@ -464,10 +449,10 @@ static void huge_fans_are_handled(void **state)
         m.F[3 * i + 2] = 2 + i;
     }
     topo(&m, &t);
-    assert_int_equal(t.non_manifold_edges, 1);
-    assert_int_equal(t.misoriented_edges, 2);
-    assert_int_equal(t.non_manifold_vertices, 0);  /* one fan through the edge */
-    assert_int_equal(t.unreferenced_vertices, N);
+    EXPECT_COUNTS("huge fan on one edge",
+        HAS(t.non_manifold_edges, 1), HAS(t.misoriented_edges, 2),
+        HAS(t.non_manifold_vertices, 0), /* one fan through the edge */
+        HAS(t.unreferenced_vertices, N));
     mesh_topology_free(&t);
     mesh_charts c;
     assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
@@ -515,10 +500,9 @@ static void empty_mesh(void **state)
     assert_int_equal(mesh_alloc(&m, 0, 0, 0, &e), SCAF_OK);
     mesh_topology t;
     topo(&m, &t);
-    assert_int_equal(t.faces, 0);
-    assert_int_equal(t.components, 0);
-    assert_int_equal(t.boundary_loops, 0);
-    assert_int_equal(t.euler_characteristic, 0);
+    EXPECT_COUNTS("empty_mesh",
+        HAS(t.faces, 0), HAS(t.components, 0), HAS(t.boundary_loops, 0),
+        HAS(t.euler_characteristic, 0));
     mesh_topology_free(&t);
     mesh_charts c;
     assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
