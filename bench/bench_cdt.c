@@ -20,6 +20,10 @@
 #include "geom/predicates.h"
 #include "mesh/mesh_io.h"
 
+/* the tests' builder (cb_*), box, UV boundary and angle helpers */
+#include "../tests/geom/cdt_check.h"
+#include "../tests/geom/cdt_uv_boundary.h"
+
 static double now(void)
 {
     struct timespec ts;
@@ -36,186 +40,52 @@ static double cpu_now(void)
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-typedef struct problem {
-    double *pts;
-    int np;
-    int *seg;
-    unsigned char *split, *hole;
-    int ns;
-} problem;
-
-static void add_box(problem *p)
-{
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int i = 0; i < p->np; i++)
-        for (int k = 0; k < 2; k++) {
-            lo[k] = fmin(lo[k], p->pts[2 * i + k]);
-            hi[k] = fmax(hi[k], p->pts[2 * i + k]);
-        }
-    double c[2] = {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])};
-    double h = 1.5 * fmax(hi[0] - lo[0], hi[1] - lo[1]);
-    double box[8] = {c[0] - h, c[1] - h, c[0] + h, c[1] - h, c[0] + h, c[1] + h, c[0] - h, c[1] + h};
-    int b0 = p->np;
-    memcpy(p->pts + 2 * p->np, box, sizeof box);
-    p->np += 4;
-    for (int i = 0; i < 4; i++) {
-        p->seg[2 * p->ns] = b0 + i;
-        p->seg[2 * p->ns + 1] = b0 + (i + 1) % 4;
-        p->split[p->ns] = 1;
-        p->hole[p->ns] = 0;
-        p->ns++;
-    }
-}
-
 /* n vertices on a wiggly closed curve (amp = 0: a circle, as after a
- * Tutte embedding: all boundary vertices nearly cocircular) */
-static problem wiggly(int n, double amp)
+ * Tutte embedding: all boundary vertices nearly cocircular), then the box */
+static void wiggly_input(cdt_builder *b, int n, double amp)
 {
-    problem p;
-    p.pts = malloc((size_t)(n + 4) * 2 * sizeof(double));
-    p.seg = malloc((size_t)(n + 4) * 2 * sizeof(int));
-    p.split = malloc((size_t)(n + 4));
-    p.hole = malloc((size_t)(n + 4));
-    p.np = p.ns = 0;
+    double *xy = malloc((size_t)n * 2 * sizeof(double));
+    if (!xy) {
+        fprintf(stderr, "bench_cdt: out of memory\n");
+        exit(1);
+    }
     for (int i = 0; i < n; i++) {
         double t = 2 * 3.14159265358979323846 * i / n;
         double r = 1 + amp * (0.3 * sin(7 * t) + 0.05 * sin(97 * t));
-        p.pts[2 * i] = r * cos(t);
-        p.pts[2 * i + 1] = r * sin(t);
-        p.seg[2 * i] = i;
-        p.seg[2 * i + 1] = (i + 1) % n;
-        p.split[i] = 0;
-        p.hole[i] = 1;
+        xy[2 * i] = r * cos(t);
+        xy[2 * i + 1] = r * sin(t);
     }
-    p.np = p.ns = n;
-    add_box(&p);
-    return p;
+    cb_init(b);
+    cb_loop(b, xy, n);
+    free(xy);
+    cb_box(b, 3.0, NULL);
 }
 
 /* g x g charts (circles of m vertices, squeezed) on a grid, 0.1 apart */
-static problem atlas(int g, int m)
+static void atlas_input(cdt_builder *b, int g, int m)
 {
-    problem p;
-    int n = g * g * m;
-    p.pts = malloc((size_t)(n + 4) * 2 * sizeof(double));
-    p.seg = malloc((size_t)(n + 4) * 2 * sizeof(int));
-    p.split = malloc((size_t)(n + 4));
-    p.hole = malloc((size_t)(n + 4));
-    p.np = p.ns = 0;
+    double *xy = malloc((size_t)m * 2 * sizeof(double));
+    if (!xy) {
+        fprintf(stderr, "bench_cdt: out of memory\n");
+        exit(1);
+    }
+    cb_init(b);
     for (int c = 0; c < g * g; c++) {
         double cx = 2.1 * (c % g), cy = 2.1 * (c / g);
         for (int i = 0; i < m; i++) {
             double t = 2 * 3.14159265358979323846 * i / m;
-            int v = c * m + i;
-            p.pts[2 * v] = cx + cos(t);
-            p.pts[2 * v + 1] = cy + (0.5 + 0.1 * (c % 5)) * sin(t);
-            p.seg[2 * v] = v;
-            p.seg[2 * v + 1] = c * m + (i + 1) % m;
-            p.split[v] = 0;
-            p.hole[v] = 1;
+            xy[2 * i] = cx + cos(t);
+            xy[2 * i + 1] = cy + (0.5 + 0.1 * (c % 5)) * sin(t);
         }
+        cb_loop(b, xy, m);
     }
-    p.np = p.ns = n;
-    add_box(&p);
-    return p;
+    free(xy);
+    cb_box(b, 3.0, NULL);
 }
 
-static void problem_free(problem *p)
+static void run(const char *name, const cdt_builder *p, int reps, double min_angle_deg)
 {
-    free(p->pts);
-    free(p->seg);
-    free(p->split);
-    free(p->hole);
-}
-
-typedef struct ekey {
-    int a, b, face_ccw, lo, hi;
-} ekey;
-
-static int cmp_ekey(const void *x, const void *y)
-{
-    const ekey *p = x, *q = y;
-    if (p->lo != q->lo)
-        return p->lo < q->lo ? -1 : 1;
-    return (p->hi > q->hi) - (p->hi < q->hi);
-}
-
-/* The UV boundary of a mesh with UVs: edges of the vt-index triangulation
- * with one incident face, oriented so that the chart is on their left. */
-static int uv_boundary(const mesh *m, problem *p)
-{
-    int nf = m->nf;
-    ekey *e = malloc((size_t)nf * 3 * sizeof *e);
-    int *map = malloc((size_t)m->nuv * sizeof(int));
-    if (!e || !map)
-        return -1;
-    for (int f = 0; f < nf; f++) {
-        const int *t = m->FT + 3 * f;
-        double o = orient2d(m->UV + 2 * t[0], m->UV + 2 * t[1], m->UV + 2 * t[2]);
-        for (int k = 0; k < 3; k++) {
-            ekey *q = e + 3 * f + k;
-            q->a = t[k];
-            q->b = t[(k + 1) % 3];
-            q->face_ccw = o >= 0;
-            q->lo = q->a < q->b ? q->a : q->b;
-            q->hi = q->a < q->b ? q->b : q->a;
-        }
-    }
-    qsort(e, (size_t)nf * 3, sizeof *e, cmp_ekey);
-    for (int i = 0; i < m->nuv; i++)
-        map[i] = -1;
-    int nb = 0;
-    for (int i = 0; i < 3 * nf;) {
-        int j = i;
-        while (j < 3 * nf && e[j].lo == e[i].lo && e[j].hi == e[i].hi)
-            j++;
-        if (j - i == 1)
-            e[nb++] = e[i];
-        i = j;
-    }
-    p->pts = malloc((size_t)(nb + 4) * 2 * sizeof(double));
-    p->seg = malloc((size_t)(nb + 4) * 2 * sizeof(int));
-    p->split = malloc((size_t)(nb + 4));
-    p->hole = malloc((size_t)(nb + 4));
-    p->np = p->ns = 0;
-    for (int i = 0; i < nb; i++) {
-        int ends[2] = {e[i].face_ccw ? e[i].a : e[i].b, e[i].face_ccw ? e[i].b : e[i].a};
-        for (int k = 0; k < 2; k++) {
-            if (map[ends[k]] < 0) {
-                map[ends[k]] = p->np;
-                p->pts[2 * p->np] = m->UV[2 * ends[k]];
-                p->pts[2 * p->np + 1] = m->UV[2 * ends[k] + 1];
-                p->np++;
-            }
-        }
-        p->seg[2 * p->ns] = map[ends[0]];
-        p->seg[2 * p->ns + 1] = map[ends[1]];
-        p->split[p->ns] = 0;
-        p->hole[p->ns] = 1;
-        p->ns++;
-    }
-    free(e);
-    free(map);
-    add_box(p);
-    return 0;
-}
-
-static double min_angle(const double *a, const double *b, const double *c)
-{
-    const double *p[3] = {a, b, c};
-    double best = 180;
-    for (int i = 0; i < 3; i++) {
-        const double *o = p[i], *u = p[(i + 1) % 3], *w = p[(i + 2) % 3];
-        double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 / 3.14159265358979323846;
-        best = fmin(best, ang);
-    }
-    return best;
-}
-
-static void run(const char *name, const problem *p, int reps, double min_angle_deg)
-{
-    cdt_input in = {p->np, p->pts, p->ns, p->seg, p->split, p->hole, 0, NULL};
+    cdt_input in = cb_input(p);
     cdt_options opt = cdt_default_options();
     opt.min_angle_deg = min_angle_deg;
     double best = 1e30, best_cpu = 1e30;
@@ -245,7 +115,7 @@ static void run(const char *name, const problem *p, int reps, double min_angle_d
     long nfree = 0, below = 0, nbelow_all = 0;
     for (int t = 0; t < out.ntriangles; t++) {
         const int *v = out.triangles + 3 * t;
-        double a = min_angle(out.points + 2 * v[0], out.points + 2 * v[1], out.points + 2 * v[2]);
+        double a = tri_min_angle(out.points + 2 * v[0], out.points + 2 * v[1], out.points + 2 * v[2]);
         amin = fmin(amin, a);
         if (a < min_angle_deg - 1e-9)
             nbelow_all++;
@@ -274,9 +144,10 @@ int main(int argc, char **argv)
             fprintf(stderr, "usage: bench_cdt --one circle|wiggly N ANGLE\n");
             return 2;
         }
-        problem p = wiggly(n, strcmp(argv[2], "circle") ? 1 : 0);
+        cdt_builder p;
+        wiggly_input(&p, n, strcmp(argv[2], "circle") ? 1 : 0);
         run(argv[2], &p, 1, atof(argv[4]));
-        problem_free(&p);
+        cb_free(&p);
         return 0;
     }
     const char *dir = argc > 1 ? argv[1] : SCAF_DATA_DIR;
@@ -286,24 +157,26 @@ int main(int argc, char **argv)
     printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
     int sizes[3] = {1000, 10000, 100000}, reps[3] = {30, 10, 3};
     for (int i = 0; i < 3; i++) {
-        problem p = wiggly(sizes[i], 1);
+        cdt_builder p;
+        wiggly_input(&p, sizes[i], 1);
         char name[64];
         snprintf(name, sizeof name, "wiggly %d, CDT only", sizes[i]);
         run(name, &p, reps[i], 0);
         snprintf(name, sizeof name, "wiggly %d, 20 deg", sizes[i]);
         run(name, &p, reps[i], 20);
-        problem_free(&p);
-        p = wiggly(sizes[i], 0);
+        cb_free(&p);
+        wiggly_input(&p, sizes[i], 0);
         snprintf(name, sizeof name, "circle %d, 20 deg", sizes[i]);
         run(name, &p, reps[i], 20);
-        problem_free(&p);
+        cb_free(&p);
     }
-    problem a = atlas(10, 100);
+    cdt_builder a;
+    atlas_input(&a, 10, 100);
     run("atlas 10x10 charts x 100", &a, 10, 20);
-    problem_free(&a);
-    a = atlas(30, 12);
+    cb_free(&a);
+    atlas_input(&a, 30, 12);
     run("atlas 30x30 charts x 12", &a, 10, 20);
-    problem_free(&a);
+    cb_free(&a);
     const char *files[] = {"disk/camel_b.obj", "seams/blub.obj", "seams/spot.obj",
                            "seams/myles_knot1_seamed.obj"};
     for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
@@ -320,10 +193,10 @@ int main(int argc, char **argv)
             mesh_free(&m);
             continue;
         }
-        problem p;
-        if (uv_boundary(&m, &p) == 0) {
+        cdt_builder p;
+        if (cb_uv_boundary(&m, &p)) {
             run(files[i], &p, 10, 20);
-            problem_free(&p);
+            cb_free(&p);
         }
         mesh_free(&m);
     }

@@ -15,23 +15,13 @@
 #include <cmocka.h>
 
 #include "geom/cdt_check.h"
+#include "geom/cdt_uv_boundary.h"
 #include "mesh/mesh_io.h"
 #include "support/support.h"
 
-typedef struct uvedge {
-    int a, b, ccw, lo, hi;
-} uvedge;
-
-static int cmp_uvedge(const void *x, const void *y)
-{
-    const uvedge *p = x, *q = y;
-    if (p->lo != q->lo)
-        return p->lo < q->lo ? -1 : 1;
-    return (p->hi > q->hi) - (p->hi < q->hi);
-}
-
-/* Chart boundary segments (chart on the left) of the vt triangulation, as
- * one pseudo-loop for the winding test, then the box. 0 when no UVs. */
+/* The chart boundaries of a shared mesh's UVs and the box (see
+ * cdt_uv_boundary.h): 1, or 0 when the mesh has no UVs, -1 when the file is
+ * absent. */
 static int uv_builder(const char *rel, cdt_builder *b)
 {
     char path[4096];
@@ -45,44 +35,10 @@ static int uv_builder(const char *rel, cdt_builder *b)
         mesh_free(&m);
         return 0;
     }
-    uvedge *e = malloc((size_t)m.nf * 3 * sizeof *e);
-    int *map = malloc((size_t)m.nuv * sizeof(int));
-    for (int f = 0; f < m.nf; f++) {
-        const int *t = m.FT + 3 * f;
-        double o = orient2d(m.UV + 2 * t[0], m.UV + 2 * t[1], m.UV + 2 * t[2]);
-        for (int k = 0; k < 3; k++) {
-            uvedge *q = e + 3 * f + k;
-            q->a = t[k];
-            q->b = t[(k + 1) % 3];
-            q->ccw = o >= 0;
-            q->lo = q->a < q->b ? q->a : q->b;
-            q->hi = q->a < q->b ? q->b : q->a;
-        }
-    }
-    qsort(e, (size_t)m.nf * 3, sizeof *e, cmp_uvedge);
-    for (int i = 0; i < m.nuv; i++)
-        map[i] = -1;
-    cb_init(b);
-    b->loop_start[0] = 0;
-    b->nloops = 1;
-    for (int i = 0; i < 3 * m.nf;) {
-        int j = i;
-        while (j < 3 * m.nf && e[j].lo == e[i].lo && e[j].hi == e[i].hi)
-            j++;
-        if (j - i == 1) {
-            int ends[2] = {e[i].ccw ? e[i].a : e[i].b, e[i].ccw ? e[i].b : e[i].a};
-            for (int k = 0; k < 2; k++)
-                if (map[ends[k]] < 0)
-                    map[ends[k]] = cb_point(b, m.UV[2 * ends[k]], m.UV[2 * ends[k] + 1]);
-            cb_segment(b, map[ends[0]], map[ends[1]], 0, 1);
-        }
-        i = j;
-    }
-    b->loop_len[0] = b->ns;
-    free(e);
-    free(map);
+    int ok = cb_uv_boundary(&m, b);
     mesh_free(&m);
-    cb_box(b, 3.0, NULL);
+    if (!ok)
+        fail_msg("%s: out of memory", rel);
     return 1;
 }
 
