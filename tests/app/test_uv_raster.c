@@ -13,7 +13,6 @@
  * file or temporary behind; a bad size is refused. */
 #include <dirent.h>
 #include <math.h>
-#include <png.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -28,6 +27,7 @@
 #include "app/png_write.h"
 #include "app/uv_png.h"
 #include "app/uv_raster.h"
+#include "support/png_read.h"
 #include "support/support.h"
 
 /* Draw each triangle alone and add up, per pixel, how many covered it. */
@@ -132,31 +132,6 @@ static void jittered_grid_has_no_cracks(void **state)
     free(count);
 }
 
-static unsigned char *read_png(const char *path, int *w, int *h)
-{
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&img, path)) return NULL;
-    img.format = PNG_FORMAT_RGBA;
-    unsigned char *buf = malloc(PNG_IMAGE_SIZE(img));
-    assert_non_null(buf);
-    if (!png_image_finish_read(&img, NULL, buf, 0, NULL)) {
-        free(buf);
-        return NULL;
-    }
-    *w = (int)img.width;
-    *h = (int)img.height;
-    return buf;
-}
-
-static unsigned pixel(const unsigned char *buf, int w, int i, int j, int *alpha)
-{
-    const unsigned char *p = buf + 4 * ((size_t)j * w + i);
-    if (alpha) *alpha = p[3];
-    return (unsigned)p[0] << 16 | (unsigned)p[1] << 8 | p[2];
-}
-
 /* Two charts in the unit square: quads [0.1, 0.4]^2 and [0.6, 0.9] x [0.1, 0.4]. */
 static const double two_uv[16] = {0.1, 0.1, 0.4, 0.1, 0.4, 0.4, 0.1, 0.4, 0.6, 0.1, 0.9, 0.1, 0.9, 0.4, 0.6, 0.4};
 static const int two_F[12] = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
@@ -175,32 +150,32 @@ static void png_two_charts_read_back(void **state)
     scaf_error err;
     assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err), SCAF_OK);
     int w = 0, h = 0, a;
-    unsigned char *buf = read_png(path, &w, &h);
+    unsigned char *buf = test_png_read(path, &w, &h);
     assert_non_null(buf);
     assert_int_equal(w, 100);
     assert_int_equal(h, 100);
     /* unit square = picture: u = 0.25 -> x = 25, v = 0.25 -> y = 75 */
-    unsigned c0 = pixel(buf, w, 25, 75, &a);
+    unsigned c0 = test_png_pixel(buf, w, 25, 75, &a);
     assert_int_equal(a, 255);
     assert_int_equal(c0, col[0]);
-    unsigned c1 = pixel(buf, w, 75, 75, &a);
+    unsigned c1 = test_png_pixel(buf, w, 75, 75, &a);
     assert_int_equal(a, 255);
     assert_int_equal(c1, col[2]);
     assert_int_not_equal(c0, c1);
     /* background: between the charts, above them, in the corners */
     int bg[4][2] = {{50, 75}, {25, 25}, {0, 0}, {99, 99}};
     for (int k = 0; k < 4; k++) {
-        pixel(buf, w, bg[k][0], bg[k][1], &a);
+        test_png_pixel(buf, w, bg[k][0], bg[k][1], &a);
         assert_int_equal(a, 0);
     }
     /* every centre strictly inside chart 0, away from the outline (2 px), has its colour */
     for (int j = 62; j <= 87; j++)
         for (int i = 12; i <= 37; i++) {
-            assert_int_equal(pixel(buf, w, i, j, &a), col[0]);
+            assert_int_equal(test_png_pixel(buf, w, i, j, &a), col[0]);
             assert_int_equal(a, 255);
         }
     /* the outline: a dark pixel on the left boundary of chart 0 (u = 0.1 -> x = 10) */
-    unsigned e = pixel(buf, w, 10, 75, &a);
+    unsigned e = test_png_pixel(buf, w, 10, 75, &a);
     assert_int_equal(a, 255);
     assert_true(((e >> 16) & 255) < 0x60 && ((e >> 8) & 255) < 0x60 && (e & 255) < 0x60);
     free(buf);
@@ -208,7 +183,7 @@ static void png_two_charts_read_back(void **state)
     /* a fitted picture keeps the aspect ratio: 0.8 by 0.3 -> 100 by about 38 */
     o.unit_square = 0;
     assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err), SCAF_OK);
-    buf = read_png(path, &w, &h);
+    buf = test_png_read(path, &w, &h);
     assert_non_null(buf);
     assert_int_equal(w, 100);
     assert_true(h >= 36 && h <= 40);
@@ -254,7 +229,7 @@ static void checker_follows_3d_cells(void **state)
             double u = (i + 0.5) / S, v = 1.0 - (j + 0.5) / S;
             double x = 3 * u, y = v, z = 0.25;
             int a;
-            unsigned got = pixel(r.rgba, S, i, j, &a);
+            unsigned got = test_png_pixel(r.rgba, S, i, j, &a);
             assert_int_equal(a, 255);
             int par = cell_parity(x, y, z, c);
             if (prev >= 0 && par != prev) {
