@@ -44,12 +44,14 @@ uv_raster_frame uv_raster_fit(const double lo[2], const double hi[2], int long_s
                               int *height)
 {
     double w = hi[0] - lo[0], h = hi[1] - lo[1];
-    if (!(w > 0.0)) w = 0.0;
-    if (!(h > 0.0)) h = 0.0;
+    /* a flat, empty or non-finite box draws at scale long_side (no NaN sizes) */
+    if (!(w > 0.0) || !isfinite(w)) w = 0.0;
+    if (!(h > 0.0) || !isfinite(h)) h = 0.0;
     double ext = w > h ? w : h;
     if (!(ext > 0.0)) ext = 1.0;
+    if (long_side < 1) long_side = 1;
+    if (margin < 0 || 2 * margin >= long_side) margin = (long_side - 1) / 2;
     int inner = long_side - 2 * margin;
-    if (inner < 1) inner = 1, margin = (long_side - 1) / 2 > 0 ? (long_side - 1) / 2 : 0;
     uv_raster_frame fr = {lo[0], hi[1], inner / ext, margin, margin};
     int W = (int)ceil(w * fr.scale - 1e-9) + 2 * margin, H = (int)ceil(h * fr.scale - 1e-9) + 2 * margin;
     *width = W < 1 ? 1 : (W > long_side ? long_side : W);
