@@ -255,6 +255,56 @@ static void checker_follows_3d_cells(void **state)
     uv_raster_free(&r);
 }
 
+static void png_checker_squares_from_diagonal(void **state)
+{
+    (void)state;
+    /* uv_png: N squares across the 3D bounding-box diagonal. The same
+     * stretched quad, written and read back; the diagonal of the 3D box
+     * [0, 3] x [0, 1] x {0.25} is sqrt(10). */
+    const double uv[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    const double V[12] = {0, 0, 0.25, 3, 0, 0.25, 3, 1, 0.25, 0, 1, 0.25};
+    const int F[6] = {0, 1, 2, 0, 2, 3};
+    const unsigned col[2] = {0x80c0ffu, 0x80c0ffu};
+    char path[512];
+    test_tmp_path("raster_checker.png", path, sizeof path);
+    uv_png_options o = uv_png_options_default();
+    o.size = 300;
+    o.unit_square = 1;
+    o.outline = 0;
+    o.checker = 25;
+    scaf_error err;
+    assert_int_equal(uv_png_write(path, 4, uv, 2, F, col, 4, V, F, &o, &err), SCAF_OK);
+    int w, h;
+    unsigned char *buf = test_png_read(path, &w, &h);
+    assert_non_null(buf);
+    assert_int_equal(w, 300);
+    assert_int_equal(h, 300);
+    double c = sqrt(10.0) / 25.0;
+    int checked = 0, changes = 0, prev = -1;
+    unsigned dark = 0;
+    for (int i = 0; i < 300; i++) {
+        int j = 101, a;
+        double x = 3.0 * (i + 0.5) / 300, y = 1.0 - (j + 0.5) / 300;
+        int par = cell_parity(x, y, 0.25, c);
+        if (prev >= 0 && par != prev) changes++;
+        prev = par;
+        if (dist_to_grid(x, c) < 1e-6 || dist_to_grid(y, c) < 1e-6) continue;
+        unsigned got = test_png_pixel(buf, w, i, j, &a);
+        assert_int_equal(a, 255);
+        checked++;
+        if (!par) {
+            assert_int_equal(got, col[0]);
+        } else {
+            assert_int_not_equal(got, col[0]);
+            if (!dark) dark = got;
+            assert_int_equal(got, dark);
+        }
+    }
+    assert_true(checked > 250);
+    assert_int_equal(changes, (int)floor(3.0 / c)); /* cell faces crossed in x in (0, 3) */
+    free(buf);
+}
+
 /* Whether the tmp folder holds a file whose name starts with prefix. */
 static int tmp_has_prefix(const char *prefix)
 {
@@ -318,6 +368,7 @@ int main(void)
         cmocka_unit_test(jittered_grid_has_no_cracks),
         cmocka_unit_test(png_two_charts_read_back),
         cmocka_unit_test(checker_follows_3d_cells),
+        cmocka_unit_test(png_checker_squares_from_diagonal),
         cmocka_unit_test(write_failures_leave_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
