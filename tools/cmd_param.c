@@ -52,7 +52,7 @@ static void usage(FILE *o)
             "  --png FILE             the same picture (without scaffold) as PNG: triangles\n"
             "                         shaded by distortion, chart boundaries outlined,\n"
             "                         transparent outside the charts\n"
-            "  --png-size N           pixels of the PNG's longer side (16..16384; 1024)\n"
+            "  --png-size N           longer PNG side in pixels (16..16384, default 1024)\n"
             "  --checker [N]          PNG only (the SVG has none): shade the fill with a\n"
             "                         checkerboard on the 3D surface, N squares across the\n"
             "                         bounding-box diagonal (default 20); stretched or\n"
