@@ -5,7 +5,7 @@
  * uniform scale into the unit square, verifies the result with the exact
  * checker (bijective) and the chart-gap measure (>= padding), and only
  * then writes the OBJ (original `v` lines, new `vt` + `f v/vt`)
- * atomically; optional JSON report and SVG picture. Bad input gives a
+ * atomically; optional JSON report and SVG / PNG pictures. Bad input gives a
  * message and the exit status of tools/exit_codes.h, and no output file.
  */
 #include <math.h>
@@ -19,6 +19,7 @@
 #include "app/atlas_report.h"
 #include "base/timer.h"
 #include "cli_args.h"
+#include "cli_png.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -63,6 +64,14 @@ static void usage(FILE *o)
             "  --report FILE.json       per-iteration energy, gap and packing efficiency,\n"
             "                           before/after compaction, per-chart distortion\n"
             "  --svg FILE               picture of the atlas, charts in distinct colours\n"
+            "  --png FILE               the same picture as a PNG texture of the unit UV\n"
+            "                           square (transparent outside the charts, chart\n"
+            "                           boundaries outlined)\n"
+            "  --png-size N             pixels of the PNG's side (16..16384, default 1024)\n"
+            "  --checker [N]            PNG only (the SVG has none): shade the fill with a\n"
+            "                           checkerboard on the 3D surface, N squares across the\n"
+            "                           bounding-box diagonal (default 20); stretched or\n"
+            "                           sheared squares show the distortion\n"
             "  -h, --help               this text\n"
             "\n"
             "Exit status: 0 ok, 2 usage, 3 unreadable input, 4 invalid chart (named) or\n"
@@ -103,9 +112,14 @@ int cmd_atlas(int argc, char **argv)
     int quiet = 0;
     double resolution = 0.0, texels = -1.0, padding = -1.0;
     atlas_options opt = atlas_options_default();
+    cli_png png;
+    cli_png_init(&png, 1);
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int pr = cli_png_option("atlas", argc, argv, &i, &png);
+        if (pr < 0) return EXIT_USAGE;
+        if (pr > 0) continue;
 #define NEED_VALUE() CLI_NEED_VALUE("atlas")
 #define BAD_VALUE() CLI_BAD_VALUE("atlas")
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -171,6 +185,7 @@ int cmd_atlas(int argc, char **argv)
         fprintf(stderr, "scaf atlas: %s (see --help)\n", !in ? "no input file" : "no output file: use -o OUT.obj");
         return EXIT_USAGE;
     }
+    if (cli_png_finish("atlas", &png) < 0) return EXIT_USAGE;
     if (texels >= 0.0) {
         if (!(resolution > 0.0)) {
             fprintf(stderr, "scaf atlas: --padding-texels needs --resolution\n");
@@ -271,6 +286,17 @@ int cmd_atlas(int argc, char **argv)
         if (atlas_svg_write(svg, &a, UV, title, &err) != SCAF_OK) {
             fprintf(stderr, "scaf atlas: %s\n", err.message);
             rc = EXIT_OUTPUT;
+        }
+    }
+    if (png.path) {
+        unsigned *col = malloc(sizeof(unsigned) * (size_t)(a.nf ? a.nf : 1));
+        st = col ? SCAF_OK : err_nomem(&err, "picture colours");
+        for (int f = 0; col && f < a.nf; f++) col[f] = atlas_chart_colour(a.chart[f]);
+        if (st == SCAF_OK) st = uv_png_write(png.path, a.nw, UV, a.nf, a.Fw, col, m.nv, m.V, m.F, &png.opt, &err);
+        free(col);
+        if (st != SCAF_OK) {
+            fprintf(stderr, "scaf atlas: %s\n", err.message);
+            rc = st == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_OUTPUT;
         }
     }
     if (report) {

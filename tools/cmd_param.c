@@ -3,7 +3,7 @@
  * A thin layer over the scaf_param_* API: reads the mesh, runs SCAF with
  * a live progress line on stderr (when it is a terminal), writes the OBJ
  * (original `v` lines, new `vt` + `f v/vt`) atomically, and optionally an
- * SVG picture and a JSON report. Bad input gives a message and the exit
+ * SVG / PNG picture and a JSON report. Bad input gives a message and the exit
  * status of tools/exit_codes.h, and no output file.
  */
 #include <math.h>
@@ -18,6 +18,7 @@
 #include "app/uv_svg.h"
 #include "base/timer.h"
 #include "cli_args.h"
+#include "cli_png.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
@@ -48,6 +49,14 @@ static void usage(FILE *o)
             "  --report FILE.json     options, per-iteration energy and time, phase split\n"
             "  --svg FILE             picture of the UV layout shaded by distortion\n"
             "  --svg-scaffold         also draw the scaffold in the picture\n"
+            "  --png FILE             the same picture (without scaffold) as PNG: triangles\n"
+            "                         shaded by distortion, chart boundaries outlined,\n"
+            "                         transparent outside the charts\n"
+            "  --png-size N           longer PNG side in pixels (16..16384, default 1024)\n"
+            "  --checker [N]          PNG only (the SVG has none): shade the fill with a\n"
+            "                         checkerboard on the 3D surface, N squares across the\n"
+            "                         bounding-box diagonal (default 20); stretched or\n"
+            "                         sheared squares show the distortion\n"
             "  --verify               prove the map bijective with the exact checker after\n"
             "                         every iteration (stops with exit 70 if it ever is not)\n"
             "  -h, --help             this text\n"
@@ -104,9 +113,14 @@ int cmd_param(int argc, char **argv)
     const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
     int quiet = 0, svg_scaffold = 0, verify = 0;
     scaf_options_t opt = scaf_options_default();
+    cli_png png;
+    cli_png_init(&png, 0);
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int pr = cli_png_option("param", argc, argv, &i, &png);
+        if (pr < 0) return EXIT_USAGE;
+        if (pr > 0) continue;
 #define NEED_VALUE() CLI_NEED_VALUE("param")
 #define BAD_VALUE() CLI_BAD_VALUE("param")
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
@@ -169,6 +183,7 @@ int cmd_param(int argc, char **argv)
         fprintf(stderr, "scaf param: %s (see --help)\n", !in ? "no input file" : "no output file: use -o OUT.obj");
         return EXIT_USAGE;
     }
+    if (cli_png_finish("param", &png) < 0) return EXIT_USAGE;
     char msg[256];
     if (param_options_check(&opt, msg, sizeof msg) != SCAF_OK) {
         fprintf(stderr, "scaf param: %s\n", msg);
@@ -263,6 +278,24 @@ int cmd_param(int argc, char **argv)
         if (st != SCAF_OK) {
             fprintf(stderr, "scaf param: %s\n", err.message);
             rc = EXIT_OUTPUT;
+        }
+    }
+    if (png.path) {
+        /* same colours as the SVG; the loop's first nf faces are the mesh's, in order */
+        const scaf_loop *L = param_loop(p);
+        double *E = malloc(sizeof(double) * (size_t)(L->nf ? L->nf : 1));
+        unsigned *col = malloc(sizeof(unsigned) * (size_t)(L->nf ? L->nf : 1));
+        st = E && col ? SCAF_OK : err_nomem(&err, "picture colours");
+        if (st == SCAF_OK) {
+            scaf_loop_face_energy(L, E);
+            for (int f = 0; f < L->nf; f++) col[f] = uv_svg_colour(E[f]);
+            st = uv_png_write(png.path, L->nv, L->uv, L->nf, L->F, col, m.nv, m.V, m.F, &png.opt, &err);
+        }
+        free(E);
+        free(col);
+        if (st != SCAF_OK) {
+            fprintf(stderr, "scaf param: %s\n", err.message);
+            rc = st == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_OUTPUT;
         }
     }
     if (report) {

@@ -105,7 +105,7 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     return atomic_commit(&af, err);
 }
 
-static unsigned chart_colour(int c)
+unsigned atlas_chart_colour(int c)
 {
     double h = fmod(0.13 + 0.6180339887498949 * c, 1.0) * 6.0, s = 0.55, v = 0.92;
     int i = (int)h;
@@ -141,7 +141,7 @@ scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, 
             M + 30, S, S);
     fprintf(o, "<g stroke-width=\"0.15\" stroke-linejoin=\"round\">\n");
     for (int f = 0; f < a->nf; f++) {
-        unsigned col = chart_colour(a->chart[f]);
+        unsigned col = atlas_chart_colour(a->chart[f]);
         fputs("<polygon points=\"", o);
         for (int j = 0; j < 3; j++) {
             const double *p = UV + 2 * (size_t)a->Fw[3 * f + j];

@@ -30,4 +30,8 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
 /* UV nw by 2 normalized positions (faces a->Fw, charts a->chart). */
 scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, const char *title, scaf_error *err);
 
+/* The picture colour of chart c (>= 0), 0xRRGGBB: golden-ratio hues, so
+ * neighbouring ids differ clearly (shared by the SVG and the PNG). */
+unsigned atlas_chart_colour(int c);
+
 #endif /* SCAF_APP_ATLAS_REPORT_H */

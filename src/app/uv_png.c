@@ -1,0 +1,112 @@
+/* app/uv_png: layout picture as PNG (see uv_png.h).
+ *
+ * Frame, fill, outline, encode: the geometry work is app/uv_raster, the
+ * file app/png_write. Boundary edges are found by sorting the undirected
+ * UV edge keys: an edge seen once bounds a chart (or a hole).
+ */
+#include "app/uv_png.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "app/png_write.h"
+#include "app/uv_raster.h"
+#include "base/sort_u64.h"
+
+uv_png_options uv_png_options_default(void)
+{
+    uv_png_options o = {1024, 0, 0.0, 1};
+    return o;
+}
+
+static scaf_status outline(uv_raster *r, const uv_raster_frame *fr, const double *uv, int nf, const int *F,
+                           scaf_error *err)
+{
+    size_t ne = 3 * (size_t)nf;
+    if (ne > INT32_MAX) return err_nomem(err, "picture outline");
+    uint64_t *k = malloc(sizeof *k * (ne ? ne : 1));
+    if (!k) return err_nomem(err, "picture outline");
+    for (int f = 0; f < nf; f++)
+        for (int j = 0; j < 3; j++) {
+            uint32_t a = (uint32_t)F[3 * f + j], b = (uint32_t)F[3 * f + (j + 1) % 3];
+            k[3 * (size_t)f + j] = a < b ? ((uint64_t)a << 32 | b) : ((uint64_t)b << 32 | a);
+        }
+    sort_u64(k, (int)ne);
+    for (size_t i = 0; i < ne;) {
+        size_t e = i + 1;
+        while (e < ne && k[e] == k[i]) e++;
+        if (e - i == 1)
+            uv_raster_line(r, fr, uv + 2 * (size_t)(k[i] >> 32), uv + 2 * (size_t)(k[i] & 0xffffffffu), 0x303030u);
+        i = e;
+    }
+    free(k);
+    return SCAF_OK;
+}
+
+scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, const int *F, const unsigned *colour,
+                         int nv, const double *V, const int *F3, const uv_png_options *o, scaf_error *err)
+{
+    uv_png_options d = uv_png_options_default();
+    if (!o) o = &d;
+    if (o->size < UV_PNG_MIN_SIZE || o->size > UV_PNG_MAX_SIZE)
+        return err_set(err, SCAF_ERR_USAGE, "%s: picture size %d is outside %d..%d pixels", path, o->size,
+                       UV_PNG_MIN_SIZE, UV_PNG_MAX_SIZE);
+    if (o->checker > 0.0 && (!V || !F3 || nv < 1))
+        return err_set(err, SCAF_ERR_USAGE, "%s: the checker needs the 3D positions", path);
+    for (int f = 0; f < nf; f++)
+        for (int j = 0; j < 3; j++) {
+            int t = F[3 * f + j], v = F3 ? F3[3 * f + j] : 0;
+            if (t < 0 || t >= nuv || (o->checker > 0.0 && (v < 0 || v >= nv)))
+                return err_set(err, SCAF_ERR_USAGE, "%s: triangle %d has an index out of range", path, f);
+        }
+    double lo[2] = {0.0, 0.0}, hi[2] = {1.0, 1.0};
+    int margin = 0;
+    if (!o->unit_square) {
+        lo[0] = lo[1] = INFINITY;
+        hi[0] = hi[1] = -INFINITY;
+        for (int f = 0; f < nf; f++)
+            for (int j = 0; j < 3; j++) {
+                const double *p = uv + 2 * (size_t)F[3 * f + j];
+                for (int c = 0; c < 2; c++) {
+                    if (p[c] < lo[c]) lo[c] = p[c];
+                    if (p[c] > hi[c]) hi[c] = p[c];
+                }
+            }
+        if (!(hi[0] >= lo[0] && hi[1] >= lo[1])) lo[0] = lo[1] = 0.0, hi[0] = hi[1] = 1.0;
+        margin = o->size / 64; /* room for the outline */
+    }
+    int W, H;
+    uv_raster_frame fr = uv_raster_fit(lo, hi, o->size, margin, &W, &H);
+    uv_raster_mesh m = {nf, uv, F, colour, NULL, NULL, 0.0};
+    if (o->checker > 0.0) {
+        double blo[3] = {INFINITY, INFINITY, INFINITY}, bhi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (int v = 0; v < nv; v++)
+            for (int c = 0; c < 3; c++) {
+                if (V[3 * (size_t)v + c] < blo[c]) blo[c] = V[3 * (size_t)v + c];
+                if (V[3 * (size_t)v + c] > bhi[c]) bhi[c] = V[3 * (size_t)v + c];
+            }
+        double diag = sqrt((bhi[0] - blo[0]) * (bhi[0] - blo[0]) + (bhi[1] - blo[1]) * (bhi[1] - blo[1]) +
+                           (bhi[2] - blo[2]) * (bhi[2] - blo[2]));
+        if (diag > 0.0 && isfinite(diag)) {
+            m.xyz = V;
+            m.F3 = F3;
+            m.checker = diag / o->checker;
+        }
+    }
+    uv_raster r;
+    scaf_status st = uv_raster_new(&r, W, H, err);
+    if (st != SCAF_OK) {
+        err_prefix(err, "%s", path);
+        return st;
+    }
+    uv_raster_fill(&r, &fr, &m);
+    if (o->outline && (st = outline(&r, &fr, uv, nf, F, err)) != SCAF_OK) {
+        err_prefix(err, "%s", path);
+        uv_raster_free(&r);
+        return st;
+    }
+    st = png_write_rgba(path, W, H, r.rgba, err);
+    uv_raster_free(&r);
+    return st;
+}
