@@ -28,22 +28,37 @@ typedef struct chart_raster {
 
 enum { NROT = 8 }; /* rotations tried: multiples of 360/NROT degrees */
 
-/* Rotation r of NROT; multiples of 90 degrees are exact. */
-static void rot(int r, const double *p, double *q)
+/* cos and sin of rotation r of NROT (computed once per packing). */
+typedef struct rotation {
+    int r;
+    double c, s;
+} rotation;
+
+static rotation rotation_of(int r)
 {
-    if (r % (NROT / 4)) {
-        double a = 2.0 * 3.14159265358979323846 * r / NROT, c = cos(a), s = sin(a);
-        q[0] = c * p[0] - s * p[1];
-        q[1] = s * p[0] + c * p[1];
+    double a = 2.0 * 3.14159265358979323846 * r / NROT;
+    rotation R = {r, cos(a), sin(a)};
+    return R;
+}
+
+/* Rotate p by R; multiples of 90 degrees are exact. */
+static inline void rot(const rotation *R, const double *p, double *q)
+{
+    if (R->r % (NROT / 4)) {
+        q[0] = R->c * p[0] - R->s * p[1];
+        q[1] = R->s * p[0] + R->c * p[1];
         return;
     }
-    switch ((r / (NROT / 4)) & 3) {
+    switch ((R->r / (NROT / 4)) & 3) {
     case 0: q[0] = p[0]; q[1] = p[1]; break;
     case 1: q[0] = -p[1]; q[1] = p[0]; break;
     case 2: q[0] = -p[0]; q[1] = -p[1]; break;
     default: q[0] = p[1]; q[1] = -p[0]; break;
     }
 }
+
+static inline double dmin(double a, double b) { return b < a ? b : a; }
+static inline double dmax(double a, double b) { return b > a ? b : a; }
 
 static void raster_free(chart_raster *c)
 {
@@ -53,8 +68,8 @@ static void raster_free(chart_raster *c)
 }
 
 /* Rasterize chart faces fc (nfc ids) rotated by r with cell h, dilation k. */
-static scaf_status raster_chart(const double *uv, const int *F, const int *fc, int nfc, int r, double h, int k,
-                                chart_raster *c, scaf_error *err)
+static scaf_status raster_chart(const double *uv, const int *F, const int *fc, int nfc, const rotation *r, double h,
+                                int k, chart_raster *c, scaf_error *err)
 {
     memset(c, 0, sizeof *c);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
@@ -63,8 +78,8 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
             double q[2];
             rot(r, uv + 2 * (size_t)F[3 * fc[i] + j], q);
             for (int a = 0; a < 2; a++) {
-                lo[a] = fmin(lo[a], q[a]);
-                hi[a] = fmax(hi[a], q[a]);
+                lo[a] = dmin(lo[a], q[a]);
+                hi[a] = dmax(hi[a], q[a]);
             }
         }
     c->m[0] = lo[0];
@@ -90,7 +105,7 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
             P[j][0] = (P[j][0] - lo[0]) / h;
             P[j][1] = (P[j][1] - lo[1]) / h;
         }
-        double ylo = fmin(P[0][1], fmin(P[1][1], P[2][1])), yhi = fmax(P[0][1], fmax(P[1][1], P[2][1]));
+        double ylo = dmin(P[0][1], dmin(P[1][1], P[2][1])), yhi = dmax(P[0][1], dmax(P[1][1], P[2][1]));
         int y0 = (int)floor(ylo), y1 = (int)floor(yhi);
         if (y0 < 0) y0 = 0;
         if (y1 > c->h - 1) y1 = c->h - 1;
@@ -102,16 +117,16 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
             for (int j = 0; j < 3; j++) {
                 const double *A = P[j], *B = P[(j + 1) % 3];
                 if (A[1] >= b0 && A[1] <= b1) {
-                    xl = fmin(xl, A[0]);
-                    xr = fmax(xr, A[0]);
+                    xl = dmin(xl, A[0]);
+                    xr = dmax(xr, A[0]);
                 }
                 for (int e = 0; e < 2; e++) {
                     double yy = e ? b1 : b0;
                     if ((A[1] - yy) * (B[1] - yy) <= 0.0 && A[1] != B[1]) {
                         double t = (yy - A[1]) / (B[1] - A[1]);
                         double xx = A[0] + t * (B[0] - A[0]);
-                        xl = fmin(xl, xx);
-                        xr = fmax(xr, xx);
+                        xl = dmin(xl, xx);
+                        xr = dmax(xr, xx);
                     }
                 }
             }
@@ -163,10 +178,11 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
         const unsigned char *in = y + k < c->dh ? tmp + (size_t)(y + k) * c->dw : NULL;
         const unsigned char *out = y - k - 1 >= 0 ? tmp + (size_t)(y - k - 1) * c->dw : NULL;
         unsigned char *d = c->dil + (size_t)y * c->dw;
-        for (int x = 0; x < c->dw; x++) {
-            cnt[x] += (in ? in[x] : 0) - (out ? out[x] : 0);
-            d[x] = cnt[x] > 0;
-        }
+        if (in)
+            for (int x = 0; x < c->dw; x++) cnt[x] += in[x];
+        if (out)
+            for (int x = 0; x < c->dw; x++) cnt[x] -= out[x];
+        for (int x = 0; x < c->dw; x++) d[x] = cnt[x] > 0;
     }
     free(cnt);
     free(cov);
@@ -285,6 +301,8 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
                        scaf_error *err)
 {
     scaf_status st = SCAF_OK;
+    rotation rots[NROT];
+    for (int r = 0; r < NROT; r++) rots[r] = rotation_of(r);
     int *start = calloc((size_t)ncharts + 1, sizeof(int));
     int *faces = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
     order_item *ord = malloc(sizeof *ord * (size_t)(ncharts ? ncharts : 1));
@@ -344,7 +362,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     int maxdim = 0;
     for (int c = 0; c < ncharts; c++)
         for (int r = 0; r < NROT; r++) {
-            st = raster_chart(uv, F, faces + start[c], start[c + 1] - start[c], r, h, k, &R[NROT * c + r], err);
+            st = raster_chart(uv, F, faces + start[c], start[c + 1] - start[c], &rots[r], h, k, &R[NROT * c + r], err);
             if (st != SCAF_OK) goto done;
             if (R[NROT * c + r].w > maxdim) maxdim = R[NROT * c + r].w;
             if (R[NROT * c + r].h > maxdim) maxdim = R[NROT * c + r].h;
@@ -507,7 +525,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
         }
         const chart_raster *cr = &R[NROT * c + place[3 * c + 2]];
         double q[2];
-        rot(place[3 * c + 2], uv + 2 * (size_t)v, q);
+        rot(&rots[place[3 * c + 2]], uv + 2 * (size_t)v, q);
         out[2 * (size_t)v] = (q[0] - cr->m[0]) + place[3 * c] * h;
         out[2 * (size_t)v + 1] = (q[1] - cr->m[1]) + place[3 * c + 1] * h;
     }
