@@ -36,10 +36,11 @@ atlas_options atlas_options_default(void)
     o.settle_tolerance = 1e-3;
     o.compact_iterations = 150;
     o.compact_box_scale = 1.05;
-    o.compact_fraction = 0.5;
+    o.compact_fraction = 0.65;
     o.compact_rest_scale = 0.8;
     o.distortion_tolerance = 0.05;
-    o.progress_tolerance = 1e-3;
+    o.progress_tolerance = 1.5e-3;
+    o.progress_window = 4;
     o.repack = 1;
     o.pack_cells = 1024;
     o.pack_gap_factor = 2.0;
@@ -619,8 +620,9 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
         a->loop.opt.lambda_ratio = a->opt.compact_lambda_ratio;
         a->loop.opt.box_square = 0;
         a->loop.hooks.prepare = compact_prepare;
-        enum { WINDOW = 8 };
-        double hist[WINDOW];
+        enum { MAXWIN = 64 };
+        int win = a->opt.progress_window < 1 ? 1 : a->opt.progress_window > MAXWIN ? MAXWIN : a->opt.progress_window;
+        double hist[MAXWIN];
         int zero_steps = 0;
         for (int k = 0; k < a->opt.compact_iterations; k++) {
             st = one_iteration(a, ATLAS_COMPACT, progress, user, &it, err);
@@ -629,8 +631,8 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
             if (it.info.energy > (1.0 + a->opt.distortion_tolerance) * a->settled_energy) break;
             zero_steps = it.info.step == 0.0 ? zero_steps + 1 : 0;
             if (zero_steps >= 3) break;
-            if (k >= WINDOW && hist[k % WINDOW] - it.side < a->opt.progress_tolerance * hist[k % WINDOW]) break;
-            hist[k % WINDOW] = it.side;
+            if (k >= win && hist[k % win] - it.side < a->opt.progress_tolerance * hist[k % win]) break;
+            hist[k % win] = it.side;
         }
         a->loop.hooks.prepare = NULL;
         a->loop.opt = a->opt.base;

@@ -1,9 +1,14 @@
 /* app/atlas_pack: raster re-placement of charts (see atlas_pack.h).
  *
  * Occupancy is a byte grid with, per row, the last occupied column at or
- * before each cell, so testing a chart at a position costs one lookup per
- * run of covered cells, and a conflict tells how far to skip. Positions are scanned row by row and abandoned as soon as they
- * cannot beat the best square found so far.
+ * before each cell and the first free column at or after each occupied
+ * cell, so testing a chart at a position costs one lookup per run of
+ * covered cells, and a conflict skips the whole occupied block it hit.
+ * The run that conflicted last is tested first (neighbouring positions
+ * mostly fail on the same run). Positions are scanned row by row and
+ * abandoned as soon as they cannot beat the best square found so far.
+ * These shortcuts only skip positions that cannot fit, so the layout is
+ * the same as testing every position.
  */
 #include "app/atlas_pack.h"
 
@@ -15,6 +20,7 @@ typedef struct chart_raster {
     int w, h;          /* cover size in cells */
     int nrun;
     int *run;          /* nrun by 3: row, x0, x1 (inclusive) of covered cells */
+    int hint;          /* run to test first (the last one that conflicted) */
     int dw, dh;        /* dilated size = w + 2k, h + 2k */
     unsigned char *dil;/* dh by dw dilated cover */
     double m[2];       /* rotated bbox min (cell origin) */
@@ -22,22 +28,37 @@ typedef struct chart_raster {
 
 enum { NROT = 8 }; /* rotations tried: multiples of 360/NROT degrees */
 
-/* Rotation r of NROT; multiples of 90 degrees are exact. */
-static void rot(int r, const double *p, double *q)
+/* cos and sin of rotation r of NROT (computed once per packing). */
+typedef struct rotation {
+    int r;
+    double c, s;
+} rotation;
+
+static rotation rotation_of(int r)
 {
-    if (r % (NROT / 4)) {
-        double a = 2.0 * 3.14159265358979323846 * r / NROT, c = cos(a), s = sin(a);
-        q[0] = c * p[0] - s * p[1];
-        q[1] = s * p[0] + c * p[1];
+    double a = 2.0 * 3.14159265358979323846 * r / NROT;
+    rotation R = {r, cos(a), sin(a)};
+    return R;
+}
+
+/* Rotate p by R; multiples of 90 degrees are exact. */
+static inline void rot(const rotation *R, const double *p, double *q)
+{
+    if (R->r % (NROT / 4)) {
+        q[0] = R->c * p[0] - R->s * p[1];
+        q[1] = R->s * p[0] + R->c * p[1];
         return;
     }
-    switch ((r / (NROT / 4)) & 3) {
+    switch ((R->r / (NROT / 4)) & 3) {
     case 0: q[0] = p[0]; q[1] = p[1]; break;
     case 1: q[0] = -p[1]; q[1] = p[0]; break;
     case 2: q[0] = -p[0]; q[1] = -p[1]; break;
     default: q[0] = p[1]; q[1] = -p[0]; break;
     }
 }
+
+static inline double dmin(double a, double b) { return b < a ? b : a; }
+static inline double dmax(double a, double b) { return b > a ? b : a; }
 
 static void raster_free(chart_raster *c)
 {
@@ -47,8 +68,8 @@ static void raster_free(chart_raster *c)
 }
 
 /* Rasterize chart faces fc (nfc ids) rotated by r with cell h, dilation k. */
-static scaf_status raster_chart(const double *uv, const int *F, const int *fc, int nfc, int r, double h, int k,
-                                chart_raster *c, scaf_error *err)
+static scaf_status raster_chart(const double *uv, const int *F, const int *fc, int nfc, const rotation *r, double h,
+                                int k, chart_raster *c, scaf_error *err)
 {
     memset(c, 0, sizeof *c);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
@@ -57,8 +78,8 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
             double q[2];
             rot(r, uv + 2 * (size_t)F[3 * fc[i] + j], q);
             for (int a = 0; a < 2; a++) {
-                lo[a] = fmin(lo[a], q[a]);
-                hi[a] = fmax(hi[a], q[a]);
+                lo[a] = dmin(lo[a], q[a]);
+                hi[a] = dmax(hi[a], q[a]);
             }
         }
     c->m[0] = lo[0];
@@ -84,7 +105,7 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
             P[j][0] = (P[j][0] - lo[0]) / h;
             P[j][1] = (P[j][1] - lo[1]) / h;
         }
-        double ylo = fmin(P[0][1], fmin(P[1][1], P[2][1])), yhi = fmax(P[0][1], fmax(P[1][1], P[2][1]));
+        double ylo = dmin(P[0][1], dmin(P[1][1], P[2][1])), yhi = dmax(P[0][1], dmax(P[1][1], P[2][1]));
         int y0 = (int)floor(ylo), y1 = (int)floor(yhi);
         if (y0 < 0) y0 = 0;
         if (y1 > c->h - 1) y1 = c->h - 1;
@@ -96,16 +117,16 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
             for (int j = 0; j < 3; j++) {
                 const double *A = P[j], *B = P[(j + 1) % 3];
                 if (A[1] >= b0 && A[1] <= b1) {
-                    xl = fmin(xl, A[0]);
-                    xr = fmax(xr, A[0]);
+                    xl = dmin(xl, A[0]);
+                    xr = dmax(xr, A[0]);
                 }
                 for (int e = 0; e < 2; e++) {
                     double yy = e ? b1 : b0;
                     if ((A[1] - yy) * (B[1] - yy) <= 0.0 && A[1] != B[1]) {
                         double t = (yy - A[1]) / (B[1] - A[1]);
                         double xx = A[0] + t * (B[0] - A[0]);
-                        xl = fmin(xl, xx);
-                        xr = fmax(xr, xx);
+                        xl = dmin(xl, xx);
+                        xr = dmax(xr, xx);
                     }
                 }
             }
@@ -139,43 +160,122 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
                 rr[1] = x;
                 rr[2] = e;
             }
-    /* separable Chebyshev dilation by k: rows, then columns */
-    for (int y = 0; y < c->h; y++)
-        for (int x = 0; x < c->w; x++)
-            if (cov[(size_t)y * c->w + x])
-                memset(tmp + (size_t)(y + k) * c->dw + x, 1, (size_t)(2 * k + 1));
-    for (int y = 0; y < c->dh; y++)
-        for (int x = 0; x < c->dw; x++)
-            if (tmp[(size_t)y * c->dw + x]) {
-                int a = y - k < 0 ? 0 : y - k, b = y + k > c->dh - 1 ? c->dh - 1 : y + k;
-                for (int yy = a; yy <= b; yy++) c->dil[(size_t)yy * c->dw + x] = 1;
-            }
+    /* separable Chebyshev dilation by k: each run widened by k on both
+     * sides, then a sliding count over 2k+1 rows per column (contiguous
+     * rows, no strided writes) */
+    for (int q = 0; q < c->nrun; q++) {
+        const int *rr = c->run + 3 * q;
+        memset(tmp + (size_t)(rr[0] + k) * c->dw + rr[1], 1, (size_t)(rr[2] - rr[1] + 2 * k + 1));
+    }
+    int *cnt = calloc((size_t)c->dw, sizeof(int));
+    if (!cnt) {
+        free(cov);
+        free(tmp);
+        raster_free(c);
+        return err_nomem(err, "chart raster");
+    }
+    for (int y = 0; y < c->dh; y++) {
+        const unsigned char *in = y + k < c->dh ? tmp + (size_t)(y + k) * c->dw : NULL;
+        const unsigned char *out = y - k - 1 >= 0 ? tmp + (size_t)(y - k - 1) * c->dw : NULL;
+        unsigned char *d = c->dil + (size_t)y * c->dw;
+        if (in)
+            for (int x = 0; x < c->dw; x++) cnt[x] += in[x];
+        if (out)
+            for (int x = 0; x < c->dw; x++) cnt[x] -= out[x];
+        for (int x = 0; x < c->dw; x++) d[x] = cnt[x] > 0;
+    }
+    free(cnt);
     free(cov);
     free(tmp);
     return SCAF_OK;
 }
 
-/* last[row * G + x]: the largest occupied column <= x in that row, or -1.
- * Returns -1 when the cover of cr at (x, y) misses every occupied cell,
- * else the smallest x' > x that could possibly fit in this row (the first
- * conflicting run moved past the occupied cell it hit). */
-static int fit_next(const chart_raster *cr, const int *last, int G, int x, int y)
+/* Occupancy of the packing grid (G by G cells), per row:
+ *   occ[x]   1 where a placed chart's dilated cover is;
+ *   rowmax   the largest occupied column (-1: empty row);
+ *   last[x]  the largest occupied column <= x, valid for x <= rowmax
+ *            (beyond it the answer is rowmax, so a placement never has to
+ *            propagate it across the empty rest of the row);
+ *   nxt[x]   the first free column >= x, valid where occ[x] (the only
+ *            place it is read).
+ * Stale entries of a previous strategy are never read, so resetting the
+ * grid costs one memset of occ and of rowmax. */
+typedef struct occ_grid {
+    int G;
+    unsigned char *occ;
+    int *last, *nxt, *rowmax;
+} occ_grid;
+
+static void grid_reset(occ_grid *g)
 {
-    if (x < 0 || y < 0 || x + cr->w > G || y + cr->h > G) return x + 1;
-    for (int q = 0; q < cr->nrun; q++) {
+    memset(g->occ, 0, (size_t)g->G * (size_t)g->G);
+    for (int y = 0; y < g->G; y++) g->rowmax[y] = -1;
+}
+
+/* The largest occupied column <= x in row y, or -1. */
+static inline int grid_last(const occ_grid *g, int y, int x)
+{
+    int rm = g->rowmax[y];
+    return x >= rm ? rm : g->last[(size_t)y * g->G + x];
+}
+
+/* Row y gained occupied cells within [x0, x1) (x1 <= G): bring last, nxt
+ * and rowmax up to date, touching only what can have changed. */
+static void grid_row_update(occ_grid *g, int y, int x0, int x1)
+{
+    size_t base = (size_t)y * g->G;
+    const unsigned char *o = g->occ + base;
+    int *last = g->last + base, *nxt = g->nxt + base;
+    int rm = g->rowmax[y];
+    /* last: from x0 (or from just past the old rowmax, whose stale
+     * entries become readable) rightwards; past x1 only within the old
+     * rowmax and while it changes */
+    int xs = x0 < rm + 1 ? x0 : rm + 1;
+    int l = xs > 0 ? grid_last(g, y, xs - 1) : -1;
+    for (int x = xs; x < g->G; x++) {
+        if (x >= x1 && (x > rm || last[x] >= l)) break;
+        if (o[x]) l = x;
+        last[x] = l;
+    }
+    int nrm = rm;
+    for (int x = x1 - 1; x >= x0 && x > nrm; x--)
+        if (o[x]) nrm = x;
+    g->rowmax[y] = nrm;
+    /* nxt: from x1 leftwards; past x0 only through occupied cells */
+    int n = x1 < g->G && o[x1] ? nxt[x1] : x1;
+    for (int x = x1 - 1; x >= 0; x--) {
+        if (!o[x]) {
+            if (x < x0) break;
+            n = x;
+        }
+        nxt[x] = n;
+    }
+}
+
+/* Returns -1 when the cover of cr at (x, y) misses every occupied cell,
+ * else the smallest x' > x that could possibly fit in this row: the
+ * conflicting run moved past the whole occupied block it hit (every
+ * position in between puts that run on an occupied cell of the block). */
+static int fit_next(chart_raster *cr, const occ_grid *g, int x, int y)
+{
+    if (x < 0 || y < 0 || x + cr->w > g->G || y + cr->h > g->G) return x + 1;
+    /* start with the run that conflicted last: neighbouring positions
+     * mostly fail on the same run */
+    for (int i = 0, q = cr->hint; i < cr->nrun; i++, q = q + 1 < cr->nrun ? q + 1 : 0) {
         const int *rr = cr->run + 3 * q;
-        int occ = last[(size_t)(y + rr[0]) * G + x + rr[2]];
+        int occ = grid_last(g, y + rr[0], x + rr[2]);
         if (occ >= x + rr[1]) {
-            int nx = occ - rr[1] + 1;
+            int nx = g->nxt[(size_t)(y + rr[0]) * g->G + occ] - rr[1];
+            cr->hint = q;
             return nx > x ? nx : x + 1;
         }
     }
     return -1;
 }
 
-static int fits(const chart_raster *cr, const int *last, int G, int x, int y)
+static int fits(chart_raster *cr, const occ_grid *g, int x, int y)
 {
-    return x >= 0 && y >= 0 && fit_next(cr, last, G, x, y) < 0;
+    return x >= 0 && y >= 0 && fit_next(cr, g, x, y) < 0;
 }
 
 typedef struct order_item {
@@ -201,13 +301,15 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
                        scaf_error *err)
 {
     scaf_status st = SCAF_OK;
+    rotation rots[NROT];
+    for (int r = 0; r < NROT; r++) rots[r] = rotation_of(r);
     int *start = calloc((size_t)ncharts + 1, sizeof(int));
     int *faces = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
     order_item *ord = malloc(sizeof *ord * (size_t)(ncharts ? ncharts : 1));
     chart_raster *R = calloc((size_t)ncharts * NROT, sizeof *R);
     int *place = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
-    unsigned char *occ = NULL;
-    int *pre = NULL, *best = NULL;
+    occ_grid grid = {0};
+    int *best = NULL;
     if (!start || !faces || !ord || !R || !place) {
         st = err_nomem(err, "packing");
         goto done;
@@ -260,17 +362,20 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     int maxdim = 0;
     for (int c = 0; c < ncharts; c++)
         for (int r = 0; r < NROT; r++) {
-            st = raster_chart(uv, F, faces + start[c], start[c + 1] - start[c], r, h, k, &R[NROT * c + r], err);
+            st = raster_chart(uv, F, faces + start[c], start[c + 1] - start[c], &rots[r], h, k, &R[NROT * c + r], err);
             if (st != SCAF_OK) goto done;
             if (R[NROT * c + r].w > maxdim) maxdim = R[NROT * c + r].w;
             if (R[NROT * c + r].h > maxdim) maxdim = R[NROT * c + r].h;
         }
     /* ---- grid ---------------------------------------------------------------- */
     int G = 2 * cells + maxdim + 2 * k + 2;
-    occ = malloc((size_t)G * (size_t)G);
-    pre = malloc((size_t)G * (size_t)G * sizeof(int));
+    grid.G = G;
+    grid.occ = malloc((size_t)G * (size_t)G);
+    grid.last = malloc((size_t)G * (size_t)G * sizeof(int));
+    grid.nxt = malloc((size_t)G * (size_t)G * sizeof(int));
+    grid.rowmax = malloc((size_t)G * sizeof(int));
     best = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
-    if (!occ || !pre || !best) {
+    if (!grid.occ || !grid.last || !grid.nxt || !grid.rowmax || !best) {
         st = err_nomem(err, "packing grid");
         goto done;
     }
@@ -324,15 +429,14 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
                 ord[c].area *= 1.0 + 0.6 * (rng % 1000) / 1000.0;
             }
         qsort(ord, (size_t)ncharts, sizeof *ord, cmp_order);
-        memset(occ, 0, (size_t)G * (size_t)G);
-        for (size_t i = 0; i < (size_t)G * (size_t)G; i++) pre[i] = -1;
+        grid_reset(&grid);
         int curX = 0, curY = 0;
         for (int oi = 0; oi < ncharts; oi++) {
             int c = ord[oi].chart;
             long bestS = -1;
             int bx = 0, by = 0, br = 0, bkey = 0;
             for (int r = 0; r < NROT; r += all_rot ? 1 : NROT / 4) {
-                const chart_raster *cr = &R[NROT * c + r];
+                chart_raster *cr = &R[NROT * c + r];
                 for (int y = 0; y + cr->h <= G; y++) {
                     long sy = curY > y + cr->h ? curY : y + cr->h;
                     if (bestS >= 0 && sy > bestS) break;
@@ -343,7 +447,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
                         if (sy > sz) sz = sy;
                         if (bestS >= 0 && (sz > bestS || (sz == bestS && (key > bkey || (key == bkey && x >= bx)))))
                             break;
-                        nx = fit_next(cr, pre, G, x, y);
+                        nx = fit_next(cr, &grid, x, y);
                         if (nx < 0) {
                             bestS = sz;
                             bx = x;
@@ -359,13 +463,13 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
                 curX = curY = G + 1; /* this strategy failed */
                 break;
             }
-            const chart_raster *cr = &R[NROT * c + br];
+            chart_raster *cr = &R[NROT * c + br];
             /* slide left, then down, while it fits (closes the gaps the
              * row scan leaves beside concave neighbours) */
             for (int moved = 1; moved;) {
                 moved = 0;
-                while (fits(cr, pre, G, bx - 1, by)) bx--, moved = 1;
-                while (fits(cr, pre, G, bx, by - 1)) by--, moved = 1;
+                while (fits(cr, &grid, bx - 1, by)) bx--, moved = 1;
+                while (fits(cr, &grid, bx, by - 1)) by--, moved = 1;
             }
             place[3 * c] = bx;
             place[3 * c + 1] = by;
@@ -376,25 +480,17 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
                 curX = curY = G + 1; /* cannot be among the keep best */
                 break;
             }
-            /* mark the dilated cover, update the touched rows' prefix counts */
+            /* mark the dilated cover, update the touched rows */
             for (int yy = 0; yy < cr->dh; yy++) {
                 int gy = by - k + yy;
                 if (gy < 0 || gy >= G) continue;
                 for (int xx = 0; xx < cr->dw; xx++) {
                     int gx = bx - k + xx;
                     if (gx < 0 || gx >= G) continue;
-                    if (cr->dil[(size_t)yy * cr->dw + xx]) occ[(size_t)gy * G + gx] = 1;
+                    if (cr->dil[(size_t)yy * cr->dw + xx]) grid.occ[(size_t)gy * G + gx] = 1;
                 }
-                /* last occupied column: recompute from the chart's left
-                 * edge, past its right edge only while it changes */
-                int *row = pre + (size_t)gy * (size_t)G;
-                int x0 = bx - k < 0 ? 0 : bx - k, x1 = bx - k + cr->dw;
-                int l = x0 > 0 ? row[x0 - 1] : -1;
-                for (int x = x0; x < G; x++) {
-                    if (occ[(size_t)gy * G + x]) l = x;
-                    if (x >= x1 && row[x] >= l) break;
-                    row[x] = l;
-                }
+                int x0 = bx - k < 0 ? 0 : bx - k, x1 = bx - k + cr->dw > G ? G : bx - k + cr->dw;
+                grid_row_update(&grid, gy, x0, x1);
             }
         }
         long side = curX > curY ? curX : curY;
@@ -429,7 +525,7 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
         }
         const chart_raster *cr = &R[NROT * c + place[3 * c + 2]];
         double q[2];
-        rot(place[3 * c + 2], uv + 2 * (size_t)v, q);
+        rot(&rots[place[3 * c + 2]], uv + 2 * (size_t)v, q);
         out[2 * (size_t)v] = (q[0] - cr->m[0]) + place[3 * c] * h;
         out[2 * (size_t)v + 1] = (q[1] - cr->m[1]) + place[3 * c + 1] * h;
     }
@@ -441,8 +537,10 @@ done:
     free(faces);
     free(ord);
     free(place);
-    free(occ);
-    free(pre);
+    free(grid.occ);
+    free(grid.last);
+    free(grid.nxt);
+    free(grid.rowmax);
     free(best);
     return st;
 }
