@@ -208,4 +208,8 @@ void scaf_param_destroy(scaf_param_t *p);
 #ifdef __cplusplus
 }
 #endif
+
+/* The multi-chart texture atlas (scaf_atlas_*). */
+#include "atlas.h"
+
 #endif /* SCAF_SCAF_H */
