@@ -23,6 +23,7 @@ libdir="$(pkg-config --variable=libdir scaf)"
 test -f "$tmp/prefix/include/scaf/scaf.h" && test -f "$tmp/prefix/include/scaf/atlas.h"
 test -x "$tmp/prefix/bin/scaf"
 ls "$libdir"/libscaf.so.0 >/dev/null   # SOVERSION link
+"$tmp/prefix/bin/scaf" --version | grep -qx "scaf $(pkg-config --modversion scaf)"
 flags=(-std=c17 -Wall -Wextra -Wpedantic -Werror $extra)
 for ex in atlas_example param_example; do
   # shared: the only include path and library come from pkg-config
