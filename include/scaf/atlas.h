@@ -78,7 +78,7 @@ typedef struct scaf_atlas_options {
 } scaf_atlas_options_t;
 
 /* The documented defaults above. */
-scaf_atlas_options_t scaf_atlas_options_default(void);
+SCAF_API scaf_atlas_options_t scaf_atlas_options_default(void);
 
 /* Which phase an iteration belongs to. */
 typedef enum scaf_atlas_phase {
@@ -115,12 +115,12 @@ typedef struct scaf_atlas scaf_atlas_t;
  * only when out of memory. Invalid options are replaced by the defaults
  * and scaf_atlas_error says which one was wrong (use
  * scaf_atlas_set_options to get the status). */
-scaf_atlas_t *scaf_atlas_new(const scaf_atlas_options_t *options);
+SCAF_API scaf_atlas_t *scaf_atlas_new(const scaf_atlas_options_t *options);
 
 /* Replace the options: SCAF_ERR_USAGE naming the first invalid value
  * (the options are then unchanged). They take effect at the next
  * scaf_atlas_set_mesh (the padding must hold in the starting layout). */
-scaf_status scaf_atlas_set_options(scaf_atlas_t *a, const scaf_atlas_options_t *options);
+SCAF_API scaf_status scaf_atlas_set_options(scaf_atlas_t *a, const scaf_atlas_options_t *options);
 
 /* Set the mesh, find and check the charts, compute the starting layout.
  *   V   #V by 3 vertex positions (nv rows), finite
@@ -138,22 +138,22 @@ scaf_status scaf_atlas_set_options(scaf_atlas_t *a, const scaf_atlas_options_t *
  * disk (possibly with holes), is non-manifold, non-orientable, has a
  * degenerate face or a non-finite coordinate, or when init_input is set
  * and the input UVs are not bijective. On failure the context has no mesh. */
-scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const int *F, int nf,
-                                const double *UV, int nuv, const int *FT);
+SCAF_API scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const int *F, int nf,
+                                         const double *UV, int nuv, const int *FT);
 
 /* Run both phases (once per scaf_atlas_set_mesh; a second call fails with
  * SCAF_ERR_USAGE). progress may be NULL. Returns SCAF_OK,
  * SCAF_ERR_CANCELLED (see the callback), SCAF_ERR_NUMERIC, SCAF_ERR_NOMEM,
  * or SCAF_ERR_INTERNAL when the final layout fails its certificate (see
  * scaf_atlas_get_uv; a bug). */
-scaf_status scaf_atlas_run(scaf_atlas_t *a, scaf_atlas_progress_fn progress, void *user);
+SCAF_API scaf_status scaf_atlas_run(scaf_atlas_t *a, scaf_atlas_progress_fn progress, void *user);
 
 /* Number of charts; of output UV coordinates (one per chart corner fan:
  * a vertex on a seam gets one UV per chart); of finished iterations in
  * each phase. 0 without a mesh. */
-int scaf_atlas_chart_count(const scaf_atlas_t *a);
-int scaf_atlas_uv_count(const scaf_atlas_t *a);
-int scaf_atlas_iterations(const scaf_atlas_t *a, scaf_atlas_phase phase);
+SCAF_API int scaf_atlas_chart_count(const scaf_atlas_t *a);
+SCAF_API int scaf_atlas_uv_count(const scaf_atlas_t *a);
+SCAF_API int scaf_atlas_iterations(const scaf_atlas_t *a, scaf_atlas_phase phase);
 
 /* Copy the current layout out, normalized into [0,1]^2 (one scale for all
  * charts) and certified: bijective by the exact checker and every two
@@ -167,32 +167,32 @@ int scaf_atlas_iterations(const scaf_atlas_t *a, scaf_atlas_phase phase);
  *          NULL)
  * SCAF_ERR_USAGE without a mesh or with UV NULL; SCAF_ERR_INTERNAL (and
  * nothing copied) if the certificate fails, which is a bug. */
-scaf_status scaf_atlas_get_uv(scaf_atlas_t *a, double *UV, int *FT, int *chart);
+SCAF_API scaf_status scaf_atlas_get_uv(scaf_atlas_t *a, double *UV, int *FT, int *chart);
 
 /* Of the same normalized, certified layout: the packing efficiency (total
  * chart UV area / area of the unit square) and the smallest distance
  * between two different charts (INFINITY with one chart). NAN without a
  * mesh or when the certificate fails (scaf_atlas_error says why). */
-double scaf_atlas_packing_efficiency(scaf_atlas_t *a);
-double scaf_atlas_min_chart_gap(scaf_atlas_t *a);
+SCAF_API double scaf_atlas_packing_efficiency(scaf_atlas_t *a);
+SCAF_API double scaf_atlas_min_chart_gap(scaf_atlas_t *a);
 
 /* The current energy E of all charts (see scaf_iteration_info_t); NAN
  * without a mesh. */
-double scaf_atlas_energy(const scaf_atlas_t *a);
+SCAF_API double scaf_atlas_energy(const scaf_atlas_t *a);
 
 /* Per-chart distortion: E[c] = sum_f A_f (||J_f||^2 + ||J_f^-1||^2) /
  * sum_f A_f over the triangles f of chart c (A_f 3D area; 4 at an
  * isometry).
  *   E  out, #charts values (scaf_atlas_chart_count)
  * SCAF_ERR_USAGE without a mesh or with E NULL; SCAF_ERR_NOMEM. */
-scaf_status scaf_atlas_chart_distortion(scaf_atlas_t *a, double *E);
+SCAF_API scaf_status scaf_atlas_chart_distortion(scaf_atlas_t *a, double *E);
 
 /* The message of the last failure ("" when none). Valid until the next
  * call on a. */
-const char *scaf_atlas_error(const scaf_atlas_t *a);
+SCAF_API const char *scaf_atlas_error(const scaf_atlas_t *a);
 
 /* Free everything. NULL is allowed. */
-void scaf_atlas_destroy(scaf_atlas_t *a);
+SCAF_API void scaf_atlas_destroy(scaf_atlas_t *a);
 
 #ifdef __cplusplus
 }

@@ -23,6 +23,12 @@ libdir="$(pkg-config --variable=libdir scaf)"
 test -f "$tmp/prefix/include/scaf/scaf.h" && test -f "$tmp/prefix/include/scaf/atlas.h"
 test -x "$tmp/prefix/bin/scaf"
 ls "$libdir"/libscaf.so.0 >/dev/null   # SOVERSION link
+# the shared library exports the public API only (scaf_*, see SCAF_API)
+if command -v nm >/dev/null; then
+  other="$(nm -D --defined-only "$libdir/libscaf.so" | awk '{print $3}' | grep -v '^scaf_' | grep -v '^_\(_\|init\|fini\|edata\|end\)' || true)"
+  [ -z "$other" ] || { echo "libscaf.so exports non-API symbols:"; echo "$other" | head; exit 1; }
+  nm -D --defined-only "$libdir/libscaf.so" | grep -q ' scaf_atlas_get_uv$'
+fi
 "$tmp/prefix/bin/scaf" --version | grep -qx "scaf $(pkg-config --modversion scaf)"
 flags=(-std=c17 -Wall -Wextra -Wpedantic -Werror $extra)
 for ex in atlas_example param_example; do
