@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "app/atlas.h"
+#include "app/atlas_output.h"
 #include "app/atlas_report.h"
 #include "base/timer.h"
 #include "cli_args.h"
@@ -244,29 +245,15 @@ int cmd_atlas(int argc, char **argv)
         rc = EXIT_NOMEM;
         goto done;
     }
-    atlas_normalized_uv(&a, UV);
-    bij_report br;
-    double gap = INFINITY;
-    if (bij_check(a.nw, UV, a.nf, a.Fw, a.chart, NULL, &br, &err) != SCAF_OK ||
-        chart_gap_min(a.nw, UV, a.nf, a.Fw, a.chart, 0.0, &gap, NULL, &err) != SCAF_OK) {
-        fprintf(stderr, "scaf atlas: %s\n", err.message);
-        rc = EXIT_INTERNAL;
+    /* bijective and padding certified exactly on the doubles written */
+    atlas_output ao;
+    st = atlas_output_verify(&a, UV, &ao, &err);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf atlas: %s; nothing written\n", err.message);
+        rc = st == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_INTERNAL;
         goto done;
     }
-    /* the padding decided exactly on the doubles written (chart_gap.h) */
-    int certified = 1, cpair[2];
-    if (chart_gap_certify(UV, a.seg, a.nseg, opt.padding, &certified, cpair, &err) != SCAF_OK) {
-        fprintf(stderr, "scaf atlas: %s\n", err.message);
-        rc = EXIT_INTERNAL;
-        goto done;
-    }
-    if (!br.bijective || !certified) {
-        fprintf(stderr, "scaf atlas: internal error: the normalized atlas is %s (gap %g, padding %g); nothing written\n",
-                br.bijective ? "bijective but not certified >= padding" : "not bijective", gap, opt.padding);
-        rc = EXIT_INTERNAL;
-        goto done;
-    }
-    double eff = chart_packing_efficiency(a.nw, UV, a.nf, a.Fw);
+    double gap = ao.gap, eff = ao.efficiency;
     mesh o = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
     if (mesh_write_obj(out, &o, &err) != SCAF_OK) {
         fprintf(stderr, "scaf atlas: %s\n", err.message);

@@ -16,6 +16,14 @@
 extern "C" {
 #endif
 
+/* Marks the functions the shared library exports; everything else in it
+ * is built with hidden visibility. */
+#if defined(__GNUC__) || defined(__clang__)
+#define SCAF_API __attribute__((visibility("default")))
+#else
+#define SCAF_API
+#endif
+
 /* Status codes. The command-line program maps them to exit codes
  * (see scaf_status_exit_code). */
 typedef enum scaf_status {
@@ -32,10 +40,10 @@ typedef enum scaf_status {
 } scaf_status;
 
 /* A short, static English name of a status ("parse error", ...). */
-const char *scaf_status_name(scaf_status status);
+SCAF_API const char *scaf_status_name(scaf_status status);
 
 /* The version of the library, "MAJOR.MINOR.PATCH". */
-const char *scaf_version(void);
+SCAF_API const char *scaf_version(void);
 
 /* ------------------------------------------------------------------------
  * Bijective parametrization (SCAF).
@@ -110,7 +118,7 @@ typedef struct scaf_options {
 } scaf_options_t;
 
 /* The documented defaults above. */
-scaf_options_t scaf_options_default(void);
+SCAF_API scaf_options_t scaf_options_default(void);
 
 /* What one iteration did, passed to the progress callback. */
 typedef enum scaf_phase {
@@ -125,7 +133,7 @@ typedef enum scaf_phase {
 } scaf_phase;
 
 /* A static English name of a phase ("assembly", ...). */
-const char *scaf_phase_name(scaf_phase phase);
+SCAF_API const char *scaf_phase_name(scaf_phase phase);
 
 typedef struct scaf_iteration_info {
     int iteration;            /* 1-based count of finished iterations */
@@ -157,11 +165,11 @@ typedef struct scaf_param scaf_param_t;
  * only when out of memory. Invalid options are replaced by the defaults
  * and scaf_param_error says which one was wrong (use
  * scaf_param_set_options to get the status). */
-scaf_param_t *scaf_param_new(const scaf_options_t *options);
+SCAF_API scaf_param_t *scaf_param_new(const scaf_options_t *options);
 
 /* Replace the options (validated: SCAF_ERR_USAGE on a bad value). Takes
  * effect at the next scaf_param_run; `init` only at scaf_param_set_mesh. */
-scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *options);
+SCAF_API scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *options);
 
 /* Set the mesh and compute the initial embedding.
  *   V   #V by 3 vertex positions (nv rows)
@@ -175,37 +183,41 @@ scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *option
  * Fails with SCAF_ERR_MESH naming the chart and the reason when a chart is
  * closed, has genus, is non-manifold or non-orientable, or has a
  * degenerate triangle; SCAF_ERR_USAGE on out-of-range indices. */
-scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F, int nf,
-                                const double *UV, int nuv, const int *FT);
+SCAF_API scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F, int nf,
+                                         const double *UV, int nuv, const int *FT);
 
 /* Run up to `iterations` SCAF iterations (<= 0: options.max_iterations),
  * stopping early at the tolerance. progress may be NULL. */
-scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_fn progress,
-                           void *user);
+SCAF_API scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_fn progress,
+                                    void *user);
 
 /* The current reported energy E (see scaf_iteration_info_t). */
-double scaf_param_energy(const scaf_param_t *p);
+SCAF_API double scaf_param_energy(const scaf_param_t *p);
 
 /* Number of charts, of finished iterations. */
-int scaf_param_chart_count(const scaf_param_t *p);
-int scaf_param_iterations(const scaf_param_t *p);
+SCAF_API int scaf_param_chart_count(const scaf_param_t *p);
+SCAF_API int scaf_param_iterations(const scaf_param_t *p);
 
 /* Number of output UV coordinates: one per (chart, vertex) pair. */
-int scaf_param_uv_count(const scaf_param_t *p);
+SCAF_API int scaf_param_uv_count(const scaf_param_t *p);
 
 /* Copy the current map out:
  *   UV  #UV by 2 (#UV = scaf_param_uv_count)
  *   FT  #F by 3 UV index per corner of each input triangle (may be NULL) */
-scaf_status scaf_param_get_uv(const scaf_param_t *p, double *UV, int *FT);
+SCAF_API scaf_status scaf_param_get_uv(const scaf_param_t *p, double *UV, int *FT);
 
 /* The message of the last failure ("" when none). Valid until the next
  * call on p. */
-const char *scaf_param_error(const scaf_param_t *p);
+SCAF_API const char *scaf_param_error(const scaf_param_t *p);
 
 /* Free everything. NULL is allowed. */
-void scaf_param_destroy(scaf_param_t *p);
+SCAF_API void scaf_param_destroy(scaf_param_t *p);
 
 #ifdef __cplusplus
 }
 #endif
+
+/* The multi-chart texture atlas (scaf_atlas_*). */
+#include "atlas.h"
+
 #endif /* SCAF_SCAF_H */

@@ -11,6 +11,7 @@
 #include "app/param.h"
 #include "app/uv_fans.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -129,10 +130,13 @@ const scaf_loop *param_loop(const scaf_param_t *p) { return p && p->has_mesh ? &
 
 /* ---- set_mesh ------------------------------------------------------------ */
 
-static scaf_status check_arrays(const double *V, int nv, const int *F, int nf, const double *UV, int nuv,
-                                const int *FT, scaf_error *err)
+scaf_status param_check_arrays(const double *V, int nv, const int *F, int nf, const double *UV, int nuv,
+                               const int *FT, scaf_error *err)
 {
-    if (nv <= 0 || nf <= 0 || !V || !F) return err_set(err, SCAF_ERR_USAGE, "the mesh is empty (%d vertices, %d faces)", nv, nf);
+    if (nv <= 0 || nf <= 0) return err_set(err, SCAF_ERR_USAGE, "the mesh is empty (%d vertices, %d faces)", nv, nf);
+    if (!V || !F) return err_set(err, SCAF_ERR_USAGE, "%s is NULL (%d vertices, %d faces)", !V ? "V" : "F", nv, nf);
+    if (nv > INT_MAX / 3 || nf > INT_MAX / 3 || nuv > INT_MAX / 2)
+        return err_set(err, SCAF_ERR_USAGE, "the mesh is too large for int indices (%d vertices, %d faces, %d UVs)", nv, nf, nuv);
     if (nuv < 0 || (nuv > 0 && (!UV || !FT)) || (nuv == 0 && FT))
         return err_set(err, SCAF_ERR_USAGE, "UV and FT must be given together (nuv = %d)", nuv);
     for (int i = 0; i < 3 * nv; i++)
@@ -164,7 +168,7 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     err_clear(&p->err);
     drop_mesh(p);
     scaf_error *err = &p->err;
-    scaf_status st = check_arrays(V, nv, F, nf, UV, nuv, FT, err);
+    scaf_status st = param_check_arrays(V, nv, F, nf, UV, nuv, FT, err);
     if (st != SCAF_OK) return st;
 
     mesh m = {nv, (double *)V, nf, (int *)F, nuv, (double *)UV, (int *)FT};

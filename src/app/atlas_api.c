@@ -1,0 +1,305 @@
+/* app/atlas_api: the scaf_atlas_* API (see include/scaf/atlas.h).
+ *
+ * A thin handle around app/atlas: the public options are copied onto the
+ * internal defaults (atlas_options_default, so internal knobs added later
+ * keep their defaults), set_mesh checks the arrays (app/param's check)
+ * before atlas_init, run adapts the progress callback, and every layout
+ * handed out goes through app/atlas_output (normalized, proved bijective,
+ * padding certified exactly), the same code the `scaf atlas` program runs
+ * before writing. The verified output is computed once per layout and
+ * kept until the layout changes. Errors leave a message readable by
+ * scaf_atlas_error; no call crashes on NULL or out-of-range arguments.
+ */
+#include "scaf/atlas.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/atlas.h"
+#include "app/atlas_output.h"
+#include "app/param.h"
+#include "base/error.h"
+#include "mesh/mesh.h"
+
+struct scaf_atlas {
+    scaf_atlas_options_t opt;
+    scaf_error err;
+    int has_mesh;
+    int ran;                 /* scaf_atlas_run called on this mesh */
+    atlas at;
+    /* the verified output of the current layout (out_state: 0 not
+     * computed, 1 verified, -1 failed with out_err) */
+    int out_state;
+    double *UV;              /* at.nw by 2 normalized */
+    atlas_output out;
+    scaf_error out_err;
+};
+
+/* ---- options ---------------------------------------------------------------- */
+
+scaf_atlas_options_t scaf_atlas_options_default(void)
+{
+    atlas_options in = atlas_options_default();
+    scaf_atlas_options_t o;
+    memset(&o, 0, sizeof o);
+    o.padding = 4.0 / 1024.0; /* as `scaf atlas`: mip levels do not bleed */
+    o.energy = in.base.energy;
+    o.init = in.base.init;
+    o.init_input = in.init_input;
+    o.settle_iterations = in.settle_iterations;
+    o.settle_tolerance = in.settle_tolerance;
+    o.compact_iterations = in.compact_iterations;
+    o.distortion_tolerance = in.distortion_tolerance;
+    o.repack = in.repack;
+    o.pack_cells = in.pack_cells;
+    o.box_scale = in.base.box_scale;
+    o.lambda_ratio = in.base.lambda_ratio;
+    o.compact_lambda_ratio = in.compact_lambda_ratio;
+    return o;
+}
+
+static atlas_options to_internal(const scaf_atlas_options_t *o)
+{
+    atlas_options in = atlas_options_default();
+    in.padding = o->padding;
+    in.base.energy = o->energy;
+    in.base.init = o->init;
+    in.init_input = o->init_input;
+    in.settle_iterations = o->settle_iterations;
+    in.settle_tolerance = o->settle_tolerance;
+    in.compact_iterations = o->compact_iterations;
+    in.distortion_tolerance = o->distortion_tolerance;
+    in.repack = o->repack;
+    in.pack_cells = o->pack_cells;
+    in.base.box_scale = o->box_scale;
+    in.base.lambda_ratio = o->lambda_ratio;
+    in.compact_lambda_ratio = o->compact_lambda_ratio;
+    return in;
+}
+
+static int finite_at_least(double x, double lo) { return isfinite(x) && x >= lo; }
+
+/* SCAF_OK, or SCAF_ERR_USAGE naming the first invalid field. */
+static scaf_status options_check(const scaf_atlas_options_t *o, scaf_error *err)
+{
+    const char *bad = NULL;
+    if (!(o->padding >= 0.0 && o->padding < 0.5)) bad = "padding must be in [0, 0.5)";
+    else if ((int)o->energy < 0 || o->energy > SCAF_ENERGY_CONFORMAL) bad = "energy is not a known energy";
+    else if ((int)o->init < 0 || o->init > SCAF_INIT_HARMONIC) bad = "init is not tutte or harmonic";
+    else if (o->init_input != 0 && o->init_input != 1) bad = "init_input must be 0 or 1";
+    else if (o->settle_iterations < 0) bad = "settle_iterations must be >= 0";
+    else if (!finite_at_least(o->settle_tolerance, 0.0)) bad = "settle_tolerance must be a finite number >= 0";
+    else if (o->compact_iterations < 0) bad = "compact_iterations must be >= 0";
+    else if (!finite_at_least(o->distortion_tolerance, 0.0))
+        bad = "distortion_tolerance must be a finite number >= 0";
+    else if (o->repack != 0 && o->repack != 1) bad = "repack must be 0 or 1";
+    else if (o->pack_cells < 16 || o->pack_cells > 8192) bad = "pack_cells must be in [16, 8192]";
+    else if (!(o->box_scale >= 1.0 && o->box_scale <= 1e6)) bad = "box_scale must be in [1, 1e6]";
+    else if (!(o->lambda_ratio > 0.0) || !isfinite(o->lambda_ratio)) bad = "lambda_ratio must be a finite number > 0";
+    else if (!(o->compact_lambda_ratio > 0.0) || !isfinite(o->compact_lambda_ratio))
+        bad = "compact_lambda_ratio must be a finite number > 0";
+    if (bad) return err_set(err, SCAF_ERR_USAGE, "invalid atlas option: %s", bad);
+    /* the loop's own rules on the fields it shares */
+    atlas_options in = to_internal(o);
+    char msg[256];
+    if (param_options_check(&in.base, msg, sizeof msg) != SCAF_OK)
+        return err_set(err, SCAF_ERR_USAGE, "invalid atlas option: %s", msg);
+    return SCAF_OK;
+}
+
+scaf_atlas_t *scaf_atlas_new(const scaf_atlas_options_t *options)
+{
+    scaf_atlas_t *a = calloc(1, sizeof *a);
+    if (!a) return NULL;
+    err_clear(&a->err);
+    a->opt = scaf_atlas_options_default();
+    if (options) {
+        if (options_check(options, &a->err) == SCAF_OK) a->opt = *options;
+    }
+    return a;
+}
+
+scaf_status scaf_atlas_set_options(scaf_atlas_t *a, const scaf_atlas_options_t *options)
+{
+    if (!a) return SCAF_ERR_USAGE;
+    err_clear(&a->err);
+    if (!options) return err_set(&a->err, SCAF_ERR_USAGE, "options is NULL");
+    scaf_status st = options_check(options, &a->err);
+    if (st != SCAF_OK) return st;
+    a->opt = *options;
+    return SCAF_OK;
+}
+
+/* ---- mesh ---------------------------------------------------------------------- */
+
+static void drop_output(scaf_atlas_t *a)
+{
+    a->out_state = 0;
+    err_clear(&a->out_err);
+}
+
+static void drop_mesh(scaf_atlas_t *a)
+{
+    if (a->has_mesh) atlas_free(&a->at);
+    memset(&a->at, 0, sizeof a->at);
+    free(a->UV);
+    a->UV = NULL;
+    a->has_mesh = a->ran = 0;
+    drop_output(a);
+}
+
+void scaf_atlas_destroy(scaf_atlas_t *a)
+{
+    if (!a) return;
+    drop_mesh(a);
+    free(a);
+}
+
+const char *scaf_atlas_error(const scaf_atlas_t *a) { return a ? a->err.message : "no atlas context (NULL)"; }
+
+scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const int *F, int nf, const double *UV,
+                                int nuv, const int *FT)
+{
+    if (!a) return SCAF_ERR_USAGE;
+    err_clear(&a->err);
+    drop_mesh(a);
+    scaf_status st = param_check_arrays(V, nv, F, nf, UV, nuv, FT, &a->err);
+    if (st != SCAF_OK) return st;
+    if (a->opt.init_input && nuv == 0)
+        return err_set(&a->err, SCAF_ERR_USAGE, "init_input is set but no UVs (UV, FT) were given to start from");
+    mesh m = {nv, (double *)V, nf, (int *)F, nuv, nuv > 0 ? (double *)UV : NULL, nuv > 0 ? (int *)FT : NULL};
+    atlas_options in = to_internal(&a->opt);
+    st = atlas_init(&a->at, &m, &in, &a->err);
+    if (st != SCAF_OK) {
+        memset(&a->at, 0, sizeof a->at);
+        return st;
+    }
+    a->UV = malloc(sizeof(double) * 2 * (size_t)a->at.nw);
+    if (!a->UV) {
+        atlas_free(&a->at);
+        return err_nomem(&a->err, "atlas output");
+    }
+    a->has_mesh = 1;
+    return SCAF_OK;
+}
+
+/* ---- verified output ----------------------------------------------------------- */
+
+/* Normalize and verify the current layout once; on failure copy the
+ * reason into a->err. */
+static scaf_status ensure_output(scaf_atlas_t *a)
+{
+    if (!a->has_mesh) return err_set(&a->err, SCAF_ERR_USAGE, "no mesh: call scaf_atlas_set_mesh first");
+    if (a->out_state == 0) {
+        err_clear(&a->out_err);
+        scaf_status st = atlas_output_verify(&a->at, a->UV, &a->out, &a->out_err);
+        if (st != SCAF_OK && a->out_err.code == SCAF_OK) a->out_err.code = st;
+        a->out_state = st == SCAF_OK ? 1 : -1;
+    }
+    if (a->out_state < 0) {
+        a->err = a->out_err;
+        return a->err.code;
+    }
+    return SCAF_OK;
+}
+
+/* ---- run ----------------------------------------------------------------------- */
+
+typedef struct progress_adapter {
+    scaf_atlas_progress_fn fn;
+    void *user;
+} progress_adapter;
+
+static int on_iteration(const atlas *at, const atlas_iteration *it, void *user)
+{
+    progress_adapter *pa = user;
+    scaf_atlas_iteration_info_t info;
+    memset(&info, 0, sizeof info);
+    info.phase = it->phase == ATLAS_COMPACT ? SCAF_ATLAS_COMPACT : SCAF_ATLAS_SETTLE;
+    /* the phase counters are raised after this call returns */
+    info.iteration = at->settle_done + at->compact_done + 1;
+    info.phase_iteration = (it->phase == ATLAS_COMPACT ? at->compact_done : at->settle_done) + 1;
+    info.energy = it->info.energy;
+    info.efficiency = it->efficiency;
+    info.gap = it->gap;
+    info.seconds = it->info.seconds;
+    info.loop = it->info;
+    return pa->fn(&info, pa->user);
+}
+
+scaf_status scaf_atlas_run(scaf_atlas_t *a, scaf_atlas_progress_fn progress, void *user)
+{
+    if (!a) return SCAF_ERR_USAGE;
+    err_clear(&a->err);
+    if (!a->has_mesh) return err_set(&a->err, SCAF_ERR_USAGE, "no mesh: call scaf_atlas_set_mesh first");
+    if (a->ran)
+        return err_set(&a->err, SCAF_ERR_USAGE,
+                       "scaf_atlas_run was already called for this mesh: call scaf_atlas_set_mesh to start over");
+    a->ran = 1;
+    drop_output(a);
+    progress_adapter pa = {progress, user};
+    scaf_status st = atlas_run(&a->at, progress ? on_iteration : NULL, &pa, &a->err);
+    if (st != SCAF_OK) {
+        if (a->err.code == SCAF_OK) a->err.code = st;
+        return st;
+    }
+    /* certify now, so a failing certificate shows up here too */
+    return ensure_output(a);
+}
+
+/* ---- results ------------------------------------------------------------------- */
+
+int scaf_atlas_chart_count(const scaf_atlas_t *a) { return a && a->has_mesh ? a->at.ncharts : 0; }
+int scaf_atlas_uv_count(const scaf_atlas_t *a) { return a && a->has_mesh ? a->at.nw : 0; }
+
+int scaf_atlas_iterations(const scaf_atlas_t *a, scaf_atlas_phase phase)
+{
+    if (!a || !a->has_mesh) return 0;
+    if (phase == SCAF_ATLAS_SETTLE) return a->at.settle_done;
+    if (phase == SCAF_ATLAS_COMPACT) return a->at.compact_done;
+    return 0;
+}
+
+double scaf_atlas_energy(const scaf_atlas_t *a) { return a && a->has_mesh ? scaf_loop_energy(&a->at.loop) : NAN; }
+
+scaf_status scaf_atlas_get_uv(scaf_atlas_t *a, double *UV, int *FT, int *chart)
+{
+    if (!a) return SCAF_ERR_USAGE;
+    err_clear(&a->err);
+    if (!UV) return err_set(&a->err, SCAF_ERR_USAGE, "UV is NULL (give %d by 2 doubles)", scaf_atlas_uv_count(a));
+    scaf_status st = ensure_output(a);
+    if (st != SCAF_OK) return st;
+    memcpy(UV, a->UV, sizeof(double) * 2 * (size_t)a->at.nw);
+    if (FT) memcpy(FT, a->at.Fw, sizeof(int) * 3 * (size_t)a->at.nf);
+    if (chart) memcpy(chart, a->at.chart, sizeof(int) * (size_t)a->at.nf);
+    return SCAF_OK;
+}
+
+double scaf_atlas_packing_efficiency(scaf_atlas_t *a)
+{
+    if (!a) return NAN;
+    err_clear(&a->err);
+    return ensure_output(a) == SCAF_OK ? a->out.efficiency : NAN;
+}
+
+double scaf_atlas_min_chart_gap(scaf_atlas_t *a)
+{
+    if (!a) return NAN;
+    err_clear(&a->err);
+    return ensure_output(a) == SCAF_OK ? a->out.gap : NAN;
+}
+
+scaf_status scaf_atlas_chart_distortion(scaf_atlas_t *a, double *E)
+{
+    if (!a) return SCAF_ERR_USAGE;
+    err_clear(&a->err);
+    if (!a->has_mesh) return err_set(&a->err, SCAF_ERR_USAGE, "no mesh: call scaf_atlas_set_mesh first");
+    if (!E) return err_set(&a->err, SCAF_ERR_USAGE, "E is NULL (give %d doubles)", a->at.ncharts);
+    atlas_chart_energy(&a->at, E);
+    /* atlas_chart_energy writes NAN everywhere when its scratch memory
+     * cannot be allocated; chart areas are positive otherwise */
+    for (int c = 0; c < a->at.ncharts; c++)
+        if (isnan(E[c])) return err_nomem(&a->err, "per-chart distortion");
+    return SCAF_OK;
+}
