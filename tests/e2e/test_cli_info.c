@@ -123,6 +123,7 @@ static void info_json_on_generated_samples(void **state)
     gen_then_info_json("cubesphere --size 5", "cli_info_cubesphere.obj", path, sizeof path, json, sizeof json);
     EXPECT_FIELDS("cubesphere --size 5", json, cubesphere5_fields);
     assert_non_null(strstr(json, "\"chart_kinds\": {\"disk\": 6}"));
+    assert_true(strlen(json) >= 2);
     assert_int_equal(json[strlen(json) - 2], '}');
 
     gen_then_info_json("holes", "cli_info_holes.obj", path, sizeof path, json, sizeof json);

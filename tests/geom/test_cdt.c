@@ -106,9 +106,8 @@ static void chart_with_hole_and_nested_chart(void **state)
     cb_box(&b, 3.0, &box);
     cdt_options opt = cdt_default_options();
     cdt_output out = run_ok(&b, &opt);
-    /* the domain: box minus the annulus minus the nested disk = two pieces,
-       one with two holes? no: outside the annulus (1 hole) + the ring between
-       the annulus and the nested chart (1 hole): chi = 0 + 0 */
+    /* the free space is two annuli: the box outside the outer chart
+       loop, and the chart's hole around the nested chart: chi = 0 + 0 */
     assert_checked(&b, &opt, &out, 0);
     assert_area(&b, &opt, &out, 0, box - b.chart_area, box);
     /* some triangles lie in the chart's hole, around the nested chart */
