@@ -164,8 +164,10 @@ static int check_iteration(const atlas *a, const atlas_iteration *it, void *user
     return 0;
 }
 
-/* Returns 0 when the file is absent. */
-static int atlas_shared(const char *rel)
+/* Returns 0 when the file is absent. min_efficiency: the packing
+ * efficiency the atlas must reach (issue 5's target on the three seam
+ * meshes with many charts; 0 for the one-chart strips). */
+static int atlas_shared(const char *rel, double min_efficiency)
 {
     char buf[1024];
     const char *p = test_data_path(rel, buf, sizeof buf);
@@ -173,11 +175,9 @@ static int atlas_shared(const char *rel)
     mesh m;
     scaf_error err;
     assert_int_equal(mesh_read(p, &m, NULL, &err), SCAF_OK);
+    /* the default pipeline, as `scaf atlas` runs it (4 texels at 1024) */
     atlas_options o = atlas_options_default();
     o.padding = 4.0 / 1024.0;
-    o.settle_iterations = 3;
-    o.compact_iterations = 3;
-    o.pack_cells = 256;
     atlas a;
     assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
     check_state s = {0, o.padding};
@@ -194,6 +194,9 @@ static int atlas_shared(const char *rel)
     int ok = 0;
     assert_int_equal(chart_gap_certify(UV, a.seg, a.nseg, o.padding, &ok, NULL, &err), SCAF_OK);
     assert_true(ok);
+    double eff = chart_packing_efficiency(a.nw, UV, a.nf, a.Fw);
+    print_message("%s: %d charts, %d iterations, packing efficiency %.4f\n", rel, a.ncharts, s.iterations, eff);
+    assert_true(eff >= min_efficiency);
     /* every triangle keeps its chart: the output's UV charts (by shared
      * UV edges) are the input's charts (after splitting pinched vt) */
     mesh out = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
@@ -211,10 +214,16 @@ static int atlas_shared(const char *rel)
 static void shared_seam_meshes(void **state)
 {
     (void)state;
-    const char *names[] = {"seams/spot.obj", "seams/blub.obj", "seams/human_neutral.obj",
-                           "seams/myles_knot1_seamed.obj", "seams/myles_eight_seamed.obj"};
+    const struct {
+        const char *name;
+        double min_efficiency;
+    } cases[] = {{"seams/spot.obj", 0.70},
+                 {"seams/blub.obj", 0.70},
+                 {"seams/human_neutral.obj", 0.70},
+                 {"seams/myles_knot1_seamed.obj", 0.0},
+                 {"seams/myles_eight_seamed.obj", 0.0}};
     int ran = 0;
-    for (size_t i = 0; i < sizeof names / sizeof *names; i++) ran += atlas_shared(names[i]);
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) ran += atlas_shared(cases[i].name, cases[i].min_efficiency);
     if (!ran) skip();
 }
 
