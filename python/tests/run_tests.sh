@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# python/tests/run_tests.sh: the ctest python/test_python.
+#
+# Runs the unittest suite python/tests/test_*.py with the given interpreter
+# (the Debian /usr/bin/python3 by default, whose numpy is python3-numpy)
+# against the build's libscaf.so (SCAF_LIBRARY, set by ctest with
+# SCAF_BINARY, SCAF_LAYOUT_PROGRAM, SCAF_TEST_TMPDIR). Exit 0 pass, 1 fail,
+# 77 skip (no interpreter, or a sanitizer build, see below).
+#
+# usage: run_tests.sh PYTHON PYTHON_SOURCE_DIR
+set -euo pipefail
+py="$1" dir="$2"
+[ -x "$py" ] || { echo "$py not found: skipped"; exit 77; }
+export PYTHONPATH="$dir${PYTHONPATH:+:$PYTHONPATH}"
+export PYTHONDONTWRITEBYTECODE=1 OPENBLAS_NUM_THREADS=1
+mkdir -p "$SCAF_TEST_TMPDIR"
+exec "$py" -m unittest discover -s "$dir/tests" -p 'test_*.py' -v
