@@ -4,13 +4,20 @@
 # Runs the unittest suite python/tests/test_*.py with the given interpreter
 # (the Debian /usr/bin/python3 by default, whose numpy is python3-numpy)
 # against the build's libscaf.so (SCAF_LIBRARY, set by ctest with
-# SCAF_BINARY, SCAF_LAYOUT_PROGRAM, SCAF_TEST_TMPDIR). Exit 0 pass, 1 fail,
-# 77 skip (no interpreter, or a sanitizer build, see below).
+# SCAF_BINARY, SCAF_LAYOUT_PROGRAM, SCAF_TEST_TMPDIR). When libscaf.so is
+# sanitizer-instrumented (SCAF_SANITIZE=ON), the interpreter is not, so the
+# sanitizer runtimes the library links are preloaded (LD_PRELOAD) and leak
+# detection is off: the leaks LeakSanitizer would report are the
+# interpreter's own at exit (the C tests check the library's leaks). Exit 0
+# pass, 1 fail, 77 skip (no interpreter, or an instrumented library whose
+# runtimes cannot be preloaded, e.g. clang's static ASan runtime).
 #
 # usage: run_tests.sh PYTHON PYTHON_SOURCE_DIR
 set -euo pipefail
 py="$1" dir="$2"
 [ -x "$py" ] || { echo "$py not found: skipped"; exit 77; }
+source "$dir/tests/sanitizer_env.sh"
+scaf_python_sanitizer_env "$SCAF_LIBRARY" || exit 77
 export PYTHONPATH="$dir${PYTHONPATH:+:$PYTHONPATH}"
 export PYTHONDONTWRITEBYTECODE=1 OPENBLAS_NUM_THREADS=1
 mkdir -p "$SCAF_TEST_TMPDIR"
