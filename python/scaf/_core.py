@@ -10,8 +10,10 @@ inside it (KeyboardInterrupt included) cancels the run in C and is
 re-raised once the C call has returned, so nothing is lost or crashes.
 """
 
+import contextlib
 import ctypes
 import math
+import threading
 from dataclasses import dataclass, field
 from typing import Any, Dict, Optional
 
@@ -257,6 +259,10 @@ class _Handle:
     def __init__(self, **options):
         self._h = None
         self._nf = 0  # faces of the current mesh, 0 without one
+        # One call at a time: the C context is not thread-safe, and a call
+        # from inside a progress callback (close() above all) would act on
+        # a context in the middle of its run.
+        self._lock = threading.Lock()
         h = getattr(lib, self._prefix + "new")(None)
         if not h:
             raise MemoryError("scaf: out of memory creating a context")
@@ -265,10 +271,19 @@ class _Handle:
         if options:
             self.set_options(**options)
 
-    def _handle(self):
-        if not self._h:
-            raise UsageError("this %s is closed" % type(self).__name__, 1, _status_name(1))
-        return self._h
+    @contextlib.contextmanager
+    def _use(self):
+        """The C pointer, held for one call (UsageError when closed or busy)."""
+        if not self._lock.acquire(blocking=False):
+            raise UsageError("this %s is busy: a run is in progress (inside a progress callback, use its "
+                             "info argument; across threads, one call at a time)" % type(self).__name__,
+                             1, _status_name(1))
+        try:
+            if not self._h:
+                raise UsageError("this %s is closed" % type(self).__name__, 1, _status_name(1))
+            yield self._h
+        finally:
+            self._lock.release()
 
     def _check(self, status):
         if status != _lib.SCAF_OK:
@@ -283,10 +298,10 @@ class _Handle:
     def set_options(self, **options):
         """Change some options (the others keep their values). UsageError,
         with the C message, when a value is out of range."""
-        h = self._handle()
         new = self._Options.from_buffer_copy(self._opts)
         _fill(new, options)
-        self._check(getattr(lib, self._prefix + "set_options")(h, ctypes.byref(new)))
+        with self._use() as h:
+            self._check(getattr(lib, self._prefix + "set_options")(h, ctypes.byref(new)))
         self._opts = new
 
     def set_mesh(self, V, F, UV=None, FT=None):
@@ -295,18 +310,23 @@ class _Handle:
         define the charts. ValueError on a bad shape or dtype (before any C
         call); MeshError naming the chart when a chart cannot be mapped;
         UsageError on an index out of range."""
-        h = self._handle()
         v, f, uv, ft = _mesh_args(V, F, UV, FT)
-        self._check(getattr(lib, self._prefix + "set_mesh")(
-            h, v.ptr, v.rows, f.ptr, f.rows, uv.ptr if uv else None, uv.rows if uv else 0,
-            ft.ptr if ft else None))
-        self._nf = f.rows
+        with self._use() as h:
+            self._nf = 0  # the C context has no mesh after a failure
+            self._check(getattr(lib, self._prefix + "set_mesh")(
+                h, v.ptr, v.rows, f.ptr, f.rows, uv.ptr if uv else None, uv.rows if uv else 0,
+                ft.ptr if ft else None))
+            self._nf = f.rows
+            self._mesh_opts = self._Options.from_buffer_copy(self._opts)  # in force for this mesh
 
     def close(self):
-        """Free the C context now (idempotent)."""
-        if self._h:
-            getattr(lib, self._prefix + "destroy")(self._h)
+        """Free the C context now (idempotent). UsageError when called
+        during a run (from its progress callback or another thread)."""
+        if not self._h:
+            return
+        with self._use() as h:
             self._h = None
+            getattr(lib, self._prefix + "destroy")(h)
 
     def __enter__(self):
         return self
@@ -316,10 +336,10 @@ class _Handle:
         return False
 
     def __del__(self):
-        try:
-            self.close()
-        except Exception:
-            pass
+        h = getattr(self, "_h", None)  # (None when __init__ failed early)
+        if h:
+            getattr(lib, self._prefix + "destroy")(h)
+            self._h = None
 
 
 class Param(_Handle):
@@ -345,36 +365,43 @@ class Param(_Handle):
         max_iterations), stopping early at the tolerance. progress(info:
         IterationInfo) is called after each; a true return raises
         Cancelled (the map of the last iteration stays available)."""
-        h = self._handle()
-        status = _call_with_progress(_lib.PARAM_PROGRESS, IterationInfo, progress,
-                                     lambda cb: lib.scaf_param_run(h, int(iterations), cb, None))
-        self._check(status)
+        if isinstance(iterations, bool) or not isinstance(iterations, int):
+            raise ValueError("iterations: expected an int, got %r" % (iterations,))
+        n = max(min(iterations, _arrays.INT32_MAX), -1)
+        with self._use() as h:
+            status = _call_with_progress(_lib.PARAM_PROGRESS, IterationInfo, progress,
+                                         lambda cb: lib.scaf_param_run(h, n, cb, None))
+            self._check(status)
 
     @property
     def energy(self):
-        return lib.scaf_param_energy(self._handle())
+        with self._use() as h:
+            return lib.scaf_param_energy(h)
 
     @property
     def chart_count(self):
-        return lib.scaf_param_chart_count(self._handle())
+        with self._use() as h:
+            return lib.scaf_param_chart_count(h)
 
     @property
     def iterations(self):
-        return lib.scaf_param_iterations(self._handle())
+        with self._use() as h:
+            return lib.scaf_param_iterations(h)
 
     @property
     def uv_count(self):
-        return lib.scaf_param_uv_count(self._handle())
+        with self._use() as h:
+            return lib.scaf_param_uv_count(h)
 
     def get_uv(self):
         """(UV #UV x 2, FT #F x 3) of the current map."""
-        h = self._handle()
-        if self._nf <= 0:
-            raise UsageError("set_mesh first: there is no map yet", 1, _status_name(1))
-        uv = _arrays.Output(lib.scaf_param_uv_count(h), 2, False)
-        ft = _arrays.Output(self._nf, 3, True)
-        self._check(lib.scaf_param_get_uv(h, uv.ptr, ft.ptr))
-        return uv.value(), ft.value()
+        with self._use() as h:
+            if self._nf <= 0:
+                raise UsageError("set_mesh first: there is no map yet", 1, _status_name(1))
+            uv = _arrays.Output(lib.scaf_param_uv_count(h), 2, False)
+            ft = _arrays.Output(self._nf, 3, True)
+            self._check(lib.scaf_param_get_uv(h, uv.ptr, ft.ptr))
+            return uv.value(), ft.value()
 
     def result(self):
         """The current map and its numbers as a ParamResult."""
@@ -404,36 +431,39 @@ class Atlas(_Handle):
         """Run both phases. progress(info: AtlasIterationInfo) is called
         after each iteration; a true return raises Cancelled (the layout
         of the last iteration stays available, certified)."""
-        h = self._handle()
-        status = _call_with_progress(_lib.ATLAS_PROGRESS, AtlasIterationInfo, progress,
-                                     lambda cb: lib.scaf_atlas_run(h, cb, None))
-        self._check(status)
+        with self._use() as h:
+            status = _call_with_progress(_lib.ATLAS_PROGRESS, AtlasIterationInfo, progress,
+                                         lambda cb: lib.scaf_atlas_run(h, cb, None))
+            self._check(status)
 
     @property
     def chart_count(self):
-        return lib.scaf_atlas_chart_count(self._handle())
+        with self._use() as h:
+            return lib.scaf_atlas_chart_count(h)
 
     @property
     def uv_count(self):
-        return lib.scaf_atlas_uv_count(self._handle())
+        with self._use() as h:
+            return lib.scaf_atlas_uv_count(h)
 
     @property
     def iterations(self):
         """Finished iterations per phase: {"settle": n, "compact": m}."""
-        h = self._handle()
-        return {name: lib.scaf_atlas_iterations(h, i) for i, name in enumerate(_lib.ATLAS_PHASES)}
+        with self._use() as h:
+            return {name: lib.scaf_atlas_iterations(h, i) for i, name in enumerate(_lib.ATLAS_PHASES)}
 
     @property
     def energy(self):
-        return lib.scaf_atlas_energy(self._handle())
+        with self._use() as h:
+            return lib.scaf_atlas_energy(h)
 
     def _number(self, fn):
-        h = self._handle()
-        x = fn(h)
-        if math.isnan(x):
-            msg = lib.scaf_atlas_error(h)
-            _raise(8 if self._nf > 0 else 1, msg.decode("utf-8", "replace") if msg else "")
-        return x
+        with self._use() as h:
+            x = fn(h)
+            if math.isnan(x):  # no mesh (usage), or the certificate failed (a bug)
+                msg = lib.scaf_atlas_error(h)
+                _raise(8 if self._nf > 0 else 1, msg.decode("utf-8", "replace") if msg else "")
+            return x
 
     @property
     def efficiency(self):
@@ -449,27 +479,29 @@ class Atlas(_Handle):
     def get_uv(self):
         """(UV #UV x 2 in [0,1]^2, FT #F x 3, chart #F) of the current,
         certified layout."""
-        h = self._handle()
-        if self._nf <= 0:
-            raise UsageError("set_mesh first: there is no layout yet", 1, _status_name(1))
-        uv = _arrays.Output(lib.scaf_atlas_uv_count(h), 2, False)
-        ft = _arrays.Output(self._nf, 3, True)
-        chart = _arrays.Output(self._nf, None, True)
-        self._check(lib.scaf_atlas_get_uv(h, uv.ptr, ft.ptr, chart.ptr))
-        return uv.value(), ft.value(), chart.value()
+        with self._use() as h:
+            if self._nf <= 0:
+                raise UsageError("set_mesh first: there is no layout yet", 1, _status_name(1))
+            uv = _arrays.Output(lib.scaf_atlas_uv_count(h), 2, False)
+            ft = _arrays.Output(self._nf, 3, True)
+            chart = _arrays.Output(self._nf, None, True)
+            self._check(lib.scaf_atlas_get_uv(h, uv.ptr, ft.ptr, chart.ptr))
+            return uv.value(), ft.value(), chart.value()
 
     def chart_distortion(self):
         """E of each chart (#charts values)."""
-        h = self._handle()
-        e = _arrays.Output(max(lib.scaf_atlas_chart_count(h), 1), None, False)
-        self._check(lib.scaf_atlas_chart_distortion(h, e.ptr))
-        return e.value()
+        with self._use() as h:
+            if self._nf <= 0:
+                raise UsageError("set_mesh first: there are no charts yet", 1, _status_name(1))
+            e = _arrays.Output(lib.scaf_atlas_chart_count(h), None, False)
+            self._check(lib.scaf_atlas_chart_distortion(h, e.ptr))
+            return e.value()
 
     def result(self):
         """The current layout and its numbers as an AtlasResult."""
         uv, ft, chart = self.get_uv()
         return AtlasResult(uv, ft, chart, self.chart_count, self.chart_distortion(), self.energy,
-                           self.efficiency, self.min_gap, self._opts.padding, self.iterations)
+                           self.efficiency, self.min_gap, self._mesh_opts.padding, self.iterations)
 
 
 # --- one-call functions ----------------------------------------------------------

@@ -310,6 +310,64 @@ class ParamTest(unittest.TestCase):
             p.run(1)
             self.assertEqual(p.iterations, 3)
 
+    def test_handle_is_refused_inside_its_own_callback(self):
+        with scaf.Param() as p:
+            p.set_mesh(self.V, self.F)
+            with self.assertRaises(scaf.UsageError) as cm:
+                p.run(5, progress=lambda info: p.close())  # would free a running context
+            self.assertIn("busy", str(cm.exception))
+            self.assertEqual(p.iterations, 1)  # cancelled after the first call
+            p.run(1)  # still open and usable
+            self.assertEqual(p.iterations, 2)
+
+    def test_c_context_freed_deterministically(self):
+        from scaf import _core
+
+        real, destroyed = _core.lib, []
+
+        class Spy:
+            def __getattr__(self, name):
+                fn = getattr(real, name)
+                if name.endswith("_destroy"):
+                    return lambda h: (destroyed.append(name), fn(h))[1]
+                return fn
+
+        _core.lib = Spy()
+        try:
+            with scaf.Param() as p:
+                p.set_mesh(self.V, self.F)
+                self.assertEqual(destroyed, [])
+            self.assertEqual(destroyed, ["scaf_param_destroy"])
+            p.close()  # idempotent
+            self.assertEqual(len(destroyed), 1)
+            a = scaf.Atlas()
+            del a  # CPython frees at once
+            self.assertEqual(destroyed, ["scaf_param_destroy", "scaf_atlas_destroy"])
+            scaf.param(self.V, self.F, iterations=1)
+            with self.assertRaises(scaf.MeshError):
+                scaf.param([[0, 0, 0], [1, 0, 0], [2, 0, 0]], [[0, 1, 2]])  # degenerate
+            self.assertEqual(destroyed[2:], ["scaf_param_destroy"] * 2)
+        finally:
+            _core.lib = real
+
+    def test_two_threads_two_contexts(self):
+        import threading
+
+        ref = scaf.param(self.V, self.F, iterations=4)
+        out = [None, None]
+
+        def work(k):
+            out[k] = scaf.param(self.V, self.F, iterations=4)
+
+        threads = [threading.Thread(target=work, args=(k,)) for k in range(2)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        for r in out:
+            self.assertEqual(rows(r.uv), rows(ref.uv))
+            self.assertEqual(r.energy, ref.energy)
+
 
 class InputTest(unittest.TestCase):
     V = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]]
