@@ -13,6 +13,7 @@ re-raised once the C call has returned, so nothing is lost or crashes.
 import contextlib
 import ctypes
 import math
+import signal
 import threading
 from dataclasses import dataclass, field
 from typing import Any, Dict, Optional
@@ -158,28 +159,51 @@ class AtlasIterationInfo:
                    IterationInfo._from_c(c.loop))
 
 
+@contextlib.contextmanager
+def _deferred_sigint(flag):
+    """While a C run is in progress in the main thread with Python's default
+    SIGINT handling, Ctrl-C only sets `flag` (the callback then cancels the
+    run and KeyboardInterrupt is raised once C has returned): raised inside
+    a ctypes callback, before its first line, it would be lost and leave
+    the callback's return value undefined."""
+    if (threading.current_thread() is not threading.main_thread()
+            or signal.getsignal(signal.SIGINT) is not signal.default_int_handler):
+        yield
+        return
+    old = signal.signal(signal.SIGINT, lambda signum, frame: flag.append(signum))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, old)
+
+
 def _call_with_progress(cfunc_type, info_type, progress, call):
     """Run call(c_callback) where the callback forwards to `progress`;
-    returns the C status, re-raises what the callback raised."""
-    if progress is None:
-        return call(cfunc_type())  # NULL: no callback
-    if not callable(progress):
+    returns the C status, re-raises what the callback raised. Without a
+    progress function a callback is installed all the same, so that Ctrl-C
+    stops a long run after the current iteration (KeyboardInterrupt)."""
+    if progress is not None and not callable(progress):
         raise TypeError("progress must be callable (or None), got %r" % (progress,))
-    raised = []
+    raised, interrupted = [], []
 
     def trampoline(info_ptr, _user):
-        if raised:
+        if raised or interrupted:
             return 1
         try:
+            if progress is None:
+                return 0
             return 1 if progress(info_type._from_c(info_ptr.contents)) else 0
         except BaseException as e:  # noqa: B902 - must not unwind through C
             raised.append(e)
             return 1
 
     cb = cfunc_type(trampoline)  # kept alive by this frame during the call
-    status = call(cb)
+    with _deferred_sigint(interrupted):
+        status = call(cb)
     if raised:
         raise raised[0]
+    if interrupted:
+        raise KeyboardInterrupt
     return status
 
 

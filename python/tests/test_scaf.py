@@ -310,6 +310,24 @@ class ParamTest(unittest.TestCase):
             p.run(1)
             self.assertEqual(p.iterations, 3)
 
+    def test_ctrl_c_stops_a_run(self):
+        import signal
+        import threading
+
+        V, F, _, _ = scaf.read_obj(gen("hemisphere", 30))
+        for progress in (None, lambda info: None):
+            with scaf.Param(tolerance=0.0, max_iterations=300) as p:
+                p.set_mesh(V, F)
+                timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+                timer.start()
+                with self.assertRaises(KeyboardInterrupt):
+                    p.run(progress=progress)
+                timer.join()
+                self.assertLess(p.iterations, 300)
+                self.assertIs(signal.getsignal(signal.SIGINT), signal.default_int_handler)
+                uv, ft = p.get_uv()  # the map of the last iteration
+                self.assertGreater(min(signed_areas(uv, ft)), 0.0)
+
     def test_handle_is_refused_inside_its_own_callback(self):
         with scaf.Param() as p:
             p.set_mesh(self.V, self.F)
