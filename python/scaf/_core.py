@@ -6,8 +6,12 @@ they are garbage collected. Every C status other than SCAF_OK becomes a
 scaf.Error subclass carrying the context's message. A progress callback
 is called after every iteration with a copy of the C iteration info; a
 true return value cancels the run (scaf.Cancelled); an exception raised
-inside it (KeyboardInterrupt included) cancels the run in C and is
-re-raised once the C call has returned, so nothing is lost or crashes.
+inside it cancels the run in C and is re-raised once the C call has
+returned, so nothing is lost or crashes. Ctrl-C during a run (main thread)
+cancels it after the current iteration and raises KeyboardInterrupt. A
+handle takes one call at a time (a call from inside its own callback is
+refused with UsageError); ctypes releases the GIL during each C call, so
+two handles can run in two threads.
 """
 
 import contextlib
