@@ -25,10 +25,11 @@ from ._errors import (Cancelled, Error, InputError, InternalError, MeshError, Nu
 from ._core import (Atlas, AtlasIterationInfo, AtlasResult, IterationInfo, Param, ParamResult,
                     __version__, atlas, default_atlas_options, default_options, library_path,
                     param)
+from . import _lib
 from .obj import read_obj
 
-ENERGIES = ("symmetric_dirichlet", "arap", "conformal")
-INITS = ("tutte", "harmonic")
+ENERGIES = tuple(_lib.ENERGIES)  # names accepted for energy= (or the C int)
+INITS = tuple(_lib.INITS)  # names accepted for init= (or the C int)
 
 __all__ = [
     "param", "atlas", "Param", "Atlas", "ParamResult", "AtlasResult", "IterationInfo",

@@ -551,6 +551,12 @@ class AtlasTest(unittest.TestCase):
         self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
         self.assertGreater(min_chart_gap(r.uv, r.ft, rows(r.chart)), 0.0)
 
+    def test_init_input_from_a_previous_result(self):
+        r = scaf.atlas(self.V, self.F, self.r.uv, self.r.ft, init_input=True, compact_iterations=3)
+        self.assertEqual(r.chart_count, 6)
+        self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
+        self.assertEqual(len(set(zip(rows(self.r.chart), rows(r.chart)))), 6)  # same partition
+
     def test_padding_arguments(self):
         with self.assertRaises(ValueError):
             scaf.atlas(self.V, self.F, self.UV, self.FT, padding=0.01, resolution=1024, padding_texels=4)
