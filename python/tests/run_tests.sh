@@ -8,7 +8,9 @@
 # sanitizer-instrumented (SCAF_SANITIZE=ON), the interpreter is not, so the
 # sanitizer runtimes the library links are preloaded (LD_PRELOAD) and leak
 # detection is off: the leaks LeakSanitizer would report are the
-# interpreter's own at exit (the C tests check the library's leaks). Exit 0
+# interpreter's own at exit (the C tests check the library's leaks). The
+# suite runs twice: as is (with numpy when installed), then with numpy
+# hidden (`import numpy` fails), which is the package's list-only mode. Exit 0
 # pass, 1 fail, 77 skip (no interpreter, or an instrumented library whose
 # runtimes cannot be preloaded, e.g. clang's static ASan runtime).
 #
@@ -21,4 +23,10 @@ scaf_python_sanitizer_env "$SCAF_LIBRARY" || exit 77
 export PYTHONPATH="$dir${PYTHONPATH:+:$PYTHONPATH}"
 export PYTHONDONTWRITEBYTECODE=1 OPENBLAS_NUM_THREADS=1
 mkdir -p "$SCAF_TEST_TMPDIR"
-exec "$py" -m unittest discover -s "$dir/tests" -p 'test_*.py' -v
+"$py" -m unittest discover -s "$dir/tests" -p 'test_*.py' -v
+echo "== again without numpy (lists in, lists out) =="
+exec "$py" -c "
+import sys
+sys.modules['numpy'] = None  # import numpy now raises ImportError
+import unittest
+unittest.main(module=None, argv=['unittest', 'discover', '-s', sys.argv[1], '-p', 'test_*.py'])" "$dir/tests"
