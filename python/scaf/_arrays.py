@@ -12,6 +12,7 @@ function is called. Outputs are numpy arrays with numpy, lists of lists
 import array
 import ctypes
 import math
+import numbers
 
 try:
     import numpy as np
@@ -72,14 +73,16 @@ def _list_matrix(x, name, cols, integer):
         if len(vals) != cols:
             raise ValueError("%s: row %d has %d values, expected %d" % (name, i, len(vals), cols))
         for v in vals:
-            if isinstance(v, bool) or not isinstance(v, (int, float)):
+            if isinstance(v, bool) or not isinstance(v, numbers.Real):
                 raise ValueError("%s: row %d: %r is not a number" % (name, i, v))
             if integer:
-                if isinstance(v, float) and not (math.isfinite(v) and v.is_integer()):
+                if not isinstance(v, numbers.Integral) and not (math.isfinite(v) and float(v).is_integer()):
                     raise ValueError("%s: row %d: %r is not an integer index" % (name, i, v))
                 v = int(v)
                 if not INT32_MIN <= v <= INT32_MAX:
                     raise ValueError("%s: row %d: index %d outside the 32-bit int range" % (name, i, v))
+            else:
+                v = float(v)
             buf.append(v)
     ctype = ctypes.c_int if integer else ctypes.c_double
     if ctypes.sizeof(ctype) != buf.itemsize:

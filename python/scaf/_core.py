@@ -17,10 +17,11 @@ two handles can run in two threads.
 import contextlib
 import ctypes
 import math
+import numbers
 import signal
 import threading
 from dataclasses import dataclass, field
-from typing import Any, Dict, Optional
+from typing import Any, Dict
 
 from . import _arrays, _lib
 from ._errors import BY_STATUS, Cancelled, Error, UsageError
@@ -51,9 +52,9 @@ def _enum_value(value, names, what):
             raise ValueError("%s: unknown name %r; known: %s (or the C enum's int value)"
                              % (what, value, ", ".join(sorted(names))))
         return names[key]
-    if isinstance(value, bool) or not isinstance(value, int):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise ValueError("%s: expected a name or an int, got %r" % (what, value))
-    return value
+    return int(value)
 
 
 def _enum_name(value, names):
@@ -77,12 +78,13 @@ def _fill(struct, options):
             value = 1 if value else 0
         ctype = dict(struct._fields_)[key]
         if ctype is ctypes.c_double:
-            if isinstance(value, bool) or not isinstance(value, (int, float)):
+            if isinstance(value, bool) or not isinstance(value, numbers.Real):
                 raise ValueError("option %s: expected a number, got %r" % (key, value))
             value = float(value)
         else:
-            if isinstance(value, bool) or not isinstance(value, int):
+            if isinstance(value, bool) or not isinstance(value, numbers.Integral):
                 raise ValueError("option %s: expected an int, got %r" % (key, value))
+            value = int(value)
             if not _arrays.INT32_MIN <= value <= _arrays.INT32_MAX:
                 raise ValueError("option %s: %d is outside the C int range" % (key, value))
         setattr(struct, key, value)
@@ -393,9 +395,9 @@ class Param(_Handle):
         max_iterations), stopping early at the tolerance. progress(info:
         IterationInfo) is called after each; a true return raises
         Cancelled (the map of the last iteration stays available)."""
-        if isinstance(iterations, bool) or not isinstance(iterations, int):
+        if isinstance(iterations, bool) or not isinstance(iterations, numbers.Integral):
             raise ValueError("iterations: expected an int, got %r" % (iterations,))
-        n = max(min(iterations, _arrays.INT32_MAX), -1)
+        n = max(min(int(iterations), _arrays.INT32_MAX), -1)
         with self._use() as h:
             status = _call_with_progress(_lib.PARAM_PROGRESS, IterationInfo, progress,
                                          lambda cb: lib.scaf_param_run(h, n, cb, None))
