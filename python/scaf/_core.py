@@ -368,8 +368,11 @@ class _Handle:
     def __del__(self):
         h = getattr(self, "_h", None)  # (None when __init__ failed early)
         if h:
-            getattr(lib, self._prefix + "destroy")(h)
             self._h = None
+            try:
+                getattr(lib, self._prefix + "destroy")(h)
+            except Exception:  # at interpreter exit `lib` may be gone already
+                pass
 
 
 class Param(_Handle):
