@@ -638,16 +638,37 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
         int win = a->opt.progress_window < 1 ? 1 : a->opt.progress_window > MAXWIN ? MAXWIN : a->opt.progress_window;
         double hist[MAXWIN];
         int zero_steps = 0;
+        /* The layout kept: the best packed one whose E is within the
+         * distortion tolerance (the start of the phase qualifies). An
+         * iteration may overshoot the tolerance or lose efficiency; the
+         * result then goes back to the best earlier layout, which was
+         * bijective and padded after its own iteration. */
+        size_t n2 = 2 * (size_t)a->nw;
+        double *best = malloc(sizeof(double) * n2);
+        if (!best) return err_nomem(err, "compaction");
+        memcpy(best, a->loop.uv, sizeof(double) * n2);
+        double best_eff = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
+        double e_max = (1.0 + a->opt.distortion_tolerance) * a->settled_energy;
         for (int k = 0; k < a->opt.compact_iterations; k++) {
             st = one_iteration(a, ATLAS_COMPACT, progress, user, &it, err);
             if (st != SCAF_OK) break;
             a->compact_done++;
-            if (it.info.energy > (1.0 + a->opt.distortion_tolerance) * a->settled_energy) break;
+            if (it.info.energy > e_max) break;
+            if (it.efficiency > best_eff) {
+                best_eff = it.efficiency;
+                memcpy(best, a->loop.uv, sizeof(double) * n2);
+            }
             zero_steps = it.info.step == 0.0 ? zero_steps + 1 : 0;
             if (zero_steps >= 3) break;
             if (k >= win && hist[k % win] - it.side < a->opt.progress_tolerance * hist[k % win]) break;
             hist[k % win] = it.side;
         }
+        /* (a cancelled or failed run keeps its last finished iteration) */
+        if (st == SCAF_OK && memcmp(best, a->loop.uv, sizeof(double) * n2) != 0) {
+            memcpy(a->loop.uv, best, sizeof(double) * n2);
+            a->compact_restored = 1;
+        }
+        free(best);
         a->loop.hooks.prepare = NULL;
         a->loop.opt = a->opt.base;
         if (st != SCAF_OK) return st;

@@ -141,6 +141,10 @@ typedef struct atlas {
     double gap_before, gap_after; /* normalized smallest gap, same times */
     double eff_packed;          /* after the raster re-placement (NAN: not done / rejected) */
     int settle_done, compact_done; /* iterations run in each phase */
+    int compact_restored;       /* 1: the result is an earlier compaction
+                                   layout (the last iterations overshot the
+                                   distortion tolerance or packed worse);
+                                   the scaffold is rebuilt at the next step */
     int stiffened;              /* scaffold triangles stiffened (last iteration) */
 } atlas;
 

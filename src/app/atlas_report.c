@@ -55,6 +55,7 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     json_write_number(o, r->total_seconds);
     fprintf(o, ",\n  \"settle_iterations_run\": %d,\n  \"compact_iterations_run\": %d,\n", a->settle_done,
             a->compact_done);
+    fprintf(o, "  \"compaction_kept_earlier_layout\": %s,\n", a->compact_restored ? "true" : "false");
     fputs("  \"settled_energy\": ", o);
     json_write_number(o, a->settled_energy);
     fputs(",\n  \"final_energy\": ", o);
