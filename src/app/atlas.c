@@ -591,6 +591,9 @@ static scaf_status one_iteration(atlas *a, atlas_phase ph, atlas_progress_fn pro
     memset(it, 0, sizeof *it);
     scaf_status st = scaf_loop_step(&a->loop, &it->info, err);
     if (st != SCAF_OK) return st;
+    /* counted before the callback: a cancel keeps this step */
+    if (ph == ATLAS_COMPACT) a->compact_done++;
+    else a->settle_done++;
     it->phase = ph;
     it->side = atlas_side(a);
     st = atlas_gap(a, &it->gap, err);
@@ -612,7 +615,6 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
     for (int k = 0; k < a->opt.settle_iterations; k++) {
         st = one_iteration(a, ATLAS_SETTLE, progress, user, &it, err);
         if (st != SCAF_OK) return st;
-        a->settle_done++;
         if (it.info.step == 0.0) break;
         double dec = (it.info.energy_before - it.info.energy) / it.info.energy_before;
         if (dec >= 0.0 && dec < a->opt.settle_tolerance) break;
@@ -652,7 +654,6 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
         for (int k = 0; k < a->opt.compact_iterations; k++) {
             st = one_iteration(a, ATLAS_COMPACT, progress, user, &it, err);
             if (st != SCAF_OK) break;
-            a->compact_done++;
             if (it.info.energy > e_max) break;
             if (it.efficiency > best_eff) {
                 best_eff = it.efficiency;

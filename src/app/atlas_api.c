@@ -217,9 +217,9 @@ static int on_iteration(const atlas *at, const atlas_iteration *it, void *user)
     scaf_atlas_iteration_info_t info;
     memset(&info, 0, sizeof info);
     info.phase = it->phase == ATLAS_COMPACT ? SCAF_ATLAS_COMPACT : SCAF_ATLAS_SETTLE;
-    /* the phase counters are raised after this call returns */
-    info.iteration = at->settle_done + at->compact_done + 1;
-    info.phase_iteration = (it->phase == ATLAS_COMPACT ? at->compact_done : at->settle_done) + 1;
+    /* the phase counters already include this iteration */
+    info.iteration = at->settle_done + at->compact_done;
+    info.phase_iteration = it->phase == ATLAS_COMPACT ? at->compact_done : at->settle_done;
     info.energy = it->info.energy;
     info.efficiency = it->efficiency;
     info.gap = it->gap;
