@@ -84,8 +84,11 @@ typedef enum scaf_energy {
 /* Initial embedding of each chart. */
 typedef enum scaf_init {
     SCAF_INIT_TUTTE = 0, /* uniform weights: always valid */
-    SCAF_INIT_HARMONIC   /* cotangent weights, falls back to Tutte if any
-                            triangle flips */
+    SCAF_INIT_HARMONIC,  /* cotangent weights; if any triangle flips, falls
+                            back to mean-value, then Tutte */
+    SCAF_INIT_MVC        /* mean-value coordinates (Floater 2003): positive
+                            weights from the 3D angles; falls back to Tutte
+                            if rounding flips a triangle */
 } scaf_init;
 
 /* Options. Always start from scaf_options_default() so that fields added
