@@ -41,7 +41,7 @@ static void usage(FILE *o)
             "  --tolerance T          stop when E decreases by less than T relatively in one\n"
             "                         iteration (default 1e-6; 0 = run all iterations)\n"
             "  --energy NAME          symmetric-dirichlet (default), arap, conformal\n"
-            "  --init NAME            tutte (default), harmonic, or mvc (mean-value)\n"
+            "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n"
             "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
             "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01)\n"
             "  --min-angle DEG        scaffold minimum angle (default 20)\n"

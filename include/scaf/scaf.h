@@ -96,7 +96,7 @@ typedef enum scaf_init {
 typedef struct scaf_options {
     scaf_energy energy;      /* mesh distortion energy
                                 (SCAF_ENERGY_SYMMETRIC_DIRICHLET) */
-    scaf_init init;          /* initial embedding (SCAF_INIT_TUTTE) */
+    scaf_init init;          /* initial embedding (SCAF_INIT_MVC) */
     int max_iterations;      /* iteration cap of scaf_param_run (50) */
     double tolerance;        /* stop when the relative decrease over one
                                 iteration of the reported energy E, or of
