@@ -12,7 +12,9 @@
  * mvc's or tutte's bit for bit, harmonic fell back on every chart
  * (column "fallback"). Data folder: SCAF_DATA_DIR (env) or the compiled
  * default; missing files are skipped. Iterations: 30 (10 above 60k faces,
- * 60 for plane_holes), or --iterations N for all.
+ * 60 for plane_holes), or --iterations N for all. A second table runs the
+ * whole default atlas pipeline on the seams meshes with each init: start
+ * E, settle and compact iterations, final E, packing efficiency, seconds.
  *
  *   OPENBLAS_NUM_THREADS=1 build/bench/bench_init > bench/RESULTS-init.md
  */
@@ -24,6 +26,7 @@
 #include <time.h>
 
 #include "mesh/mesh_io.h"
+#include "scaf/atlas.h"
 #include "scaf/scaf.h"
 
 #ifndef SCAF_DATA_DIR
@@ -121,6 +124,44 @@ static void bench_mesh(const char *dir, const char *rel, int with_uv, int iterat
     mesh_free(&m);
 }
 
+static void bench_atlas(const char *dir, const char *rel)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, rel);
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        printf("| %s | (missing) | | | | | | |\n", rel);
+        return;
+    }
+    fprintf(stderr, "atlas %s\n", rel);
+    mesh m;
+    scaf_error err;
+    if (mesh_read(path, &m, NULL, &err) != SCAF_OK) {
+        printf("| %s | read failed: %s | | | | | | |\n", rel, err.message);
+        return;
+    }
+    for (int k = 0; k < NINIT; k++) {
+        scaf_atlas_options_t o = scaf_atlas_options_default();
+        o.init = init_value[k];
+        scaf_atlas_t *a = scaf_atlas_new(&o);
+        if (!a) continue;
+        double t0 = now();
+        scaf_status s = scaf_atlas_set_mesh(a, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT);
+        double t1 = now(), e0 = s == SCAF_OK ? scaf_atlas_energy(a) : NAN;
+        if (s == SCAF_OK) s = scaf_atlas_run(a, NULL, NULL);
+        double t2 = now();
+        if (s != SCAF_OK)
+            printf("| %s | %s | failed: %s | | | | | |\n", rel, init_name[k], scaf_atlas_error(a));
+        else
+            printf("| %s | %s | %.4f | %.4g | %d | %d | %.4f | %.3f | %.2f |\n", rel, init_name[k], t1 - t0, e0,
+                   scaf_atlas_iterations(a, SCAF_ATLAS_SETTLE), scaf_atlas_iterations(a, SCAF_ATLAS_COMPACT),
+                   scaf_atlas_energy(a), scaf_atlas_packing_efficiency(a), t2 - t0);
+        fflush(stdout);
+        scaf_atlas_destroy(a);
+    }
+    mesh_free(&m);
+}
+
 int main(int argc, char **argv)
 {
     int iterations = 0;
@@ -144,5 +185,10 @@ int main(int argc, char **argv)
     printf("|---|---|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < sizeof meshes / sizeof meshes[0]; i++)
         bench_mesh(dir, meshes[i].rel, meshes[i].uv, iterations > 0 ? iterations : meshes[i].it);
+    printf("\nAtlas (default options, seams meshes):\n\n");
+    printf("| mesh | init | set_mesh s | E start | settle its | compact its | E final | efficiency | total s |\n");
+    printf("|---|---|---|---|---|---|---|---|---|\n");
+    for (size_t i = 0; i < sizeof meshes / sizeof meshes[0]; i++)
+        if (meshes[i].uv) bench_atlas(dir, meshes[i].rel);
     return 0;
 }

@@ -49,7 +49,7 @@ static void usage(FILE *o)
             "  --resolution R           texture size in texels; with --padding-texels K the\n"
             "                           padding is K / R\n"
             "  --padding-texels K       padding in texels (needs --resolution)\n"
-            "  --init NAME              mvc (mean-value, default), harmonic, tutte, or\n"
+            "  --init NAME              tutte (default), harmonic, mvc (mean-value), or\n"
             "                           input: start from the\n"
             "                           input UVs, only when the exact checker proves them\n"
             "                           bijective\n"

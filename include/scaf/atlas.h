@@ -50,7 +50,7 @@ typedef struct scaf_atlas_options {
                                     4 texels of a 1024 texture) */
     scaf_energy energy;          /* distortion energy
                                     (SCAF_ENERGY_SYMMETRIC_DIRICHLET) */
-    scaf_init init;              /* start of each chart (SCAF_INIT_MVC) */
+    scaf_init init;              /* start of each chart (SCAF_INIT_TUTTE) */
     int init_input;              /* 1: start from the UVs given to
                                     scaf_atlas_set_mesh instead, accepted
                                     only when the exact checker proves them
