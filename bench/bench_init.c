@@ -15,6 +15,8 @@
  * 60 for plane_holes), or --iterations N for all. A second table runs the
  * whole default atlas pipeline on the seams meshes with each init: start
  * E, settle and compact iterations, final E, packing efficiency, seconds.
+ * A third table times the embedding alone (opt_embed_chart, best of 5) on
+ * the one-chart meshes, with whether it fell back.
  *
  *   OPENBLAS_NUM_THREADS=1 build/bench/bench_init > bench/RESULTS-init.md
  */
@@ -26,6 +28,8 @@
 #include <time.h>
 
 #include "mesh/mesh_io.h"
+#include "mesh/topology.h"
+#include "opt/embed.h"
 #include "scaf/atlas.h"
 #include "scaf/scaf.h"
 
@@ -162,6 +166,52 @@ static void bench_atlas(const char *dir, const char *rel)
     mesh_free(&m);
 }
 
+static void bench_embed(const char *dir, const char *rel)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, rel);
+    struct stat st;
+    if (stat(path, &st) != 0) return;
+    mesh m;
+    mesh_topology t;
+    memset(&t, 0, sizeof t);
+    scaf_error err;
+    if (mesh_read(path, &m, NULL, &err) != SCAF_OK) return;
+    if (mesh_topology_compute(&m, &t, &err) != SCAF_OK || t.components != 1) {
+        mesh_free(&m);
+        mesh_topology_free(&t);
+        return;
+    }
+    int nl = t.cx.nloops;
+    int *verts = malloc(((size_t)t.cx.loop_start[nl] + 1) * sizeof *verts);
+    double *UV = malloc(2 * (size_t)m.nv * sizeof *UV);
+    if (verts && UV) {
+        for (int k = 0; k < t.cx.loop_start[nl]; k++) verts[k] = m.F[t.cx.loop_he[k]];
+        opt_chart_loops L = {nl, t.cx.loop_start, verts, -1};
+        static const opt_embed_method meth[NINIT] = {OPT_EMBED_TUTTE, OPT_EMBED_HARMONIC, OPT_EMBED_MVC};
+        printf("| %s | %d |", rel, m.nf);
+        for (int k = 0; k < NINIT; k++) {
+            double best = INFINITY;
+            int fb = 0;
+            scaf_status s = SCAF_OK;
+            for (int r = 0; r < 5 && s == SCAF_OK; r++) {
+                double t0 = now();
+                s = opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, meth[k], UV, &fb, &err);
+                double dt = now() - t0;
+                if (dt < best) best = dt;
+            }
+            if (s != SCAF_OK) printf(" failed |");
+            else printf(" %.4f%s |", best, fb ? " (fell back)" : "");
+        }
+        printf("\n");
+        fflush(stdout);
+    }
+    free(verts);
+    free(UV);
+    mesh_topology_free(&t);
+    mesh_free(&m);
+}
+
 int main(int argc, char **argv)
 {
     int iterations = 0;
@@ -185,6 +235,10 @@ int main(int argc, char **argv)
     printf("|---|---|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < sizeof meshes / sizeof meshes[0]; i++)
         bench_mesh(dir, meshes[i].rel, meshes[i].uv, iterations > 0 ? iterations : meshes[i].it);
+    printf("\nEmbedding alone (opt_embed_chart, seconds, best of 5):\n\n");
+    printf("| mesh | faces | tutte | harmonic | mvc |\n|---|---|---|---|---|\n");
+    for (size_t i = 0; i < sizeof meshes / sizeof meshes[0]; i++)
+        if (!meshes[i].uv) bench_embed(dir, meshes[i].rel);
     printf("\nAtlas (default options, seams meshes):\n\n");
     printf("| mesh | init | set_mesh s | E start | settle its | compact its | E final | efficiency | total s |\n");
     printf("|---|---|---|---|---|---|---|---|---|\n");
