@@ -64,7 +64,8 @@ SCAF_API const char *scaf_version(void);
  * with UVs (UV + FT) has one chart per piece of the mesh cut along its UV
  * seams (edges whose two sides use different UV indices). Every chart must
  * be a manifold, orientable disk, possibly with holes. Each chart starts
- * as a Tutte (or harmonic) embedding on a circle of the chart's 3D area;
+ * as a mean-value (or Tutte, or harmonic) embedding on a circle of the
+ * chart's 3D area;
  * several charts start on a grid of circles that do not touch. Then the
  * SCAF iteration runs inside a scaffold: the UV map is bijective (no
  * flipped triangle, no overlap) after every iteration.

@@ -3,7 +3,10 @@
  * Steps: validate, fill holes with fans, pin the outer loop to the circle,
  * assemble the weighted Laplacian of the free vertices (boundary columns
  * moved to the right side), solve for u and v together, drop the fill,
- * check every original triangle exactly. Loop direction is read from the
+ * check every original triangle exactly, and on a flip or a failed solve
+ * try the next method of the chain (harmonic -> mean-value -> Tutte; the
+ * mean-value system is assembled and solved in opt/mvc because it is not
+ * symmetric). Loop direction is read from the
  * faces: the face that owns boundary edge a -> b says which way is
  * counter-clockwise.
  */
