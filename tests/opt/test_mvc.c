@@ -25,6 +25,7 @@
 #include "opt/energy.h"
 #include "opt/mvc.h"
 #include "opt/simplices.h"
+#include "polar_disk.h"
 #include "support/support.h"
 
 /* Boundary loops of a one-component mesh as vertex lists (caller frees
@@ -212,6 +213,33 @@ static void mvc_singular_is_an_error(void **state)
     assert_true(strlen(e.message) > 0);
 }
 
+/* A flat fan whose every third vertex is pulled toward the center: the
+ * cotangent map folds, so harmonic falls back, and the chain's next step is
+ * mean-value: the result is the mean-value map bit for bit, and positive. */
+static void harmonic_falls_back_to_mvc(void **state)
+{
+    (void)state;
+    polar_disk m;
+    assert_int_equal(polar_disk_make(&m, 3, 60, 0.0, 0), 0);
+    for (int v = 0; v < m.nv; v++)
+        if (v % 3 == 0) m.V[3 * v] *= 0.2;
+    opt_chart_loops L = {m.nloops, m.start, m.loops, 0};
+    double *Uh = malloc(2 * (size_t)m.nv * sizeof *Uh), *Um = malloc(2 * (size_t)m.nv * sizeof *Um);
+    assert_non_null(Uh);
+    assert_non_null(Um);
+    int fbh = -1, fbm = -1;
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_HARMONIC, Uh, &fbh, NULL), SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, Um, &fbm, NULL), SCAF_OK);
+    assert_int_equal(fbh, 1);
+    assert_int_equal(fbm, 0);
+    assert_memory_equal(Uh, Um, 2 * (size_t)m.nv * sizeof *Uh);
+    for (int f = 0; f < m.nf; f++)
+        assert_true(orient2d(Um + 2 * m.F[3 * f], Um + 2 * m.F[3 * f + 1], Um + 2 * m.F[3 * f + 2]) > 0);
+    free(Uh);
+    free(Um);
+    polar_disk_free(&m);
+}
+
 /* The chart with 27 window holes: MVC must give a bijective start without
  * fallback, with a lower symmetric Dirichlet energy than Tutte's. */
 static void plane_holes_mvc_beats_tutte(void **state)
@@ -258,6 +286,7 @@ int main(void)
         cmocka_unit_test(weights_positive_on_bad_triangles),
         cmocka_unit_test(mvc_reproduces_flat_irregular_grid),
         cmocka_unit_test(mvc_singular_is_an_error),
+        cmocka_unit_test(harmonic_falls_back_to_mvc),
         cmocka_unit_test(plane_holes_mvc_beats_tutte),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
