@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Bounded fuzz smoke run of the mesh readers (libFuzzer, clang).
+# Bounded fuzz smoke run of every fuzz/fuzz_* target (libFuzzer, clang):
+# mesh readers, topology, CDT, and the optimizer on tiny binary meshes.
 #   FUZZ_SECONDS  total seconds over all fuzz targets (default 60)
 #   FUZZ_JOBS     cmake build parallelism (default 2)
 # Builds build-fuzz/ with -DSCAF_FUZZ=ON, runs every fuzz/fuzz_* target on a

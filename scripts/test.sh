@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it:
 #   1. AddressSanitizer + UndefinedBehaviorSanitizer build, all tests;
-#   2. bounded fuzz smoke run of the mesh readers (clang libFuzzer);
+#   2. bounded fuzz smoke run of every fuzz target (clang libFuzzer);
 #   3. Release build, all tests (its ctest summary closes the output).
 set -euo pipefail
 cd "$(dirname "$0")/.."

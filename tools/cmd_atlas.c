@@ -21,6 +21,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
+#include "cli_write_uv.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -213,9 +214,15 @@ int cmd_atlas(int argc, char **argv)
     mesh m;
     scaf_error err;
     err_clear(&err);
-    if (mesh_read(in, &m, NULL, &err) != SCAF_OK) {
+    mesh_read_info rinfo;
+    if (mesh_read(in, &m, &rinfo, &err) != SCAF_OK) {
         fprintf(stderr, "scaf atlas: %s\n", err.message);
         return err.code == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_INPUT;
+    }
+    {
+        char warn[512];
+        if (mesh_read_warnings(&rinfo, warn, sizeof warn) > 0 && !quiet)
+            fprintf(stderr, "scaf atlas: %s: warning: %s\n", in, warn);
     }
     int rc = EXIT_OK;
     atlas a;
@@ -257,7 +264,7 @@ int cmd_atlas(int argc, char **argv)
     }
     double gap = ao.gap, eff = ao.efficiency;
     mesh o = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
-    if (mesh_write_obj(out, &o, &err) != SCAF_OK) {
+    if (cli_write_uv("atlas", in, &rinfo, out, &o, &err) != SCAF_OK) {
         fprintf(stderr, "scaf atlas: %s\n", err.message);
         rc = EXIT_OUTPUT;
         goto done;

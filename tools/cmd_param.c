@@ -19,6 +19,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
+#include "cli_write_uv.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
@@ -199,9 +200,15 @@ int cmd_param(int argc, char **argv)
     mesh m;
     scaf_error err;
     err_clear(&err);
-    if (mesh_read(in, &m, NULL, &err) != SCAF_OK) {
+    mesh_read_info rinfo;
+    if (mesh_read(in, &m, &rinfo, &err) != SCAF_OK) {
         fprintf(stderr, "scaf param: %s\n", err.message);
         return err.code == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_INPUT;
+    }
+    {
+        char warn[512];
+        if (mesh_read_warnings(&rinfo, warn, sizeof warn) > 0 && !quiet)
+            fprintf(stderr, "scaf param: %s: warning: %s\n", in, warn);
     }
     int rc = EXIT_OK;
     scaf_param_t *p = scaf_param_new(&opt);
@@ -256,7 +263,7 @@ int cmd_param(int argc, char **argv)
     }
     scaf_param_get_uv(p, UV, FT);
     mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
-    if (mesh_write_obj(out, &o, &err) != SCAF_OK) {
+    if (cli_write_uv("param", in, &rinfo, out, &o, &err) != SCAF_OK) {
         fprintf(stderr, "scaf param: %s\n", err.message);
         rc = EXIT_OUTPUT;
         goto done;

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "app/atomic_file.h"
+#include "base/atomic_file.h"
 #include "base/json_write.h"
 
 scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_error *err)

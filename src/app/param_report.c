@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "app/atomic_file.h"
+#include "base/atomic_file.h"
 #include "base/json_write.h"
 
 static int cmp_double(const void *a, const void *b)

@@ -6,7 +6,7 @@
 #include <png.h>
 #include <string.h>
 
-#include "app/atomic_file.h"
+#include "base/atomic_file.h"
 
 scaf_status png_write_rgba(const char *path, int width, int height, const unsigned char *rgba, scaf_error *err)
 {

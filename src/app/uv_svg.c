@@ -9,7 +9,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "app/atomic_file.h"
+#include "base/atomic_file.h"
 
 unsigned uv_svg_colour(double energy)
 {

@@ -154,11 +154,11 @@ static scaf_status load_gzip(int fd, const char *path, size_t compressed, char *
     return SCAF_OK;
 }
 
-scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_error *err)
+scaf_status mesh_load_file(const char *path, char **data, size_t *size, scaf_error *err)
 {
-    memset(m, 0, sizeof *m);
-    if (info) memset(info, 0, sizeof *info);
-    if (!path) return err_set(err, SCAF_ERR_USAGE, "mesh_read: no path");
+    *data = NULL;
+    *size = 0;
+    if (!path) return err_set(err, SCAF_ERR_USAGE, "mesh_load_file: no path");
     int fd = open(path, O_RDONLY);
     if (fd < 0) return err_set(err, SCAF_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
     struct stat sb;
@@ -172,18 +172,27 @@ scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_erro
         return err_set(err, SCAF_ERR_IO, "%s: cannot read: %s", path,
                        S_ISDIR(sb.st_mode) ? "is a directory" : "not a regular file");
     }
-    size_t size = (size_t)sb.st_size;
+    size_t fsize = (size_t)sb.st_size;
     unsigned char magic[2] = {0, 0};
     ssize_t mr = pread(fd, magic, 2, 0);
-    char *data = NULL;
-    size_t n = 0;
     scaf_status st;
     if (mr == 2 && magic[0] == 0x1f && magic[1] == 0x8b) {
-        st = load_gzip(fd, path, size, &data, &n, err); /* closes fd */
+        st = load_gzip(fd, path, fsize, data, size, err); /* closes fd */
     } else {
-        st = load_plain(fd, path, size, &data, &n, err);
+        st = load_plain(fd, path, fsize, data, size, err);
         close(fd);
     }
+    return st;
+}
+
+scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_error *err)
+{
+    memset(m, 0, sizeof *m);
+    if (info) memset(info, 0, sizeof *info);
+    if (!path) return err_set(err, SCAF_ERR_USAGE, "mesh_read: no path");
+    char *data = NULL;
+    size_t n = 0;
+    scaf_status st = mesh_load_file(path, &data, &n, err);
     if (st != SCAF_OK) return st;
     st = mesh_parse(data, n, format_from_name(path), path, m, info, err);
     free(data);

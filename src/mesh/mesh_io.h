@@ -50,6 +50,10 @@ int mesh_read_warnings(const mesh_read_info *info, char *buf, size_t size);
  * decompressed). info may be NULL. On failure *m is left empty. */
 scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_error *err);
 
+/* The whole content of a file, gzip decompressed when it starts with the
+ * gzip magic bytes: *data (malloc'd, free it) of *size bytes. */
+scaf_status mesh_load_file(const char *path, char **data, size_t *size, scaf_error *err);
+
 /* Parse a whole file already in memory; `name` is used in messages. */
 scaf_status mesh_parse(const char *data, size_t size, mesh_format format, const char *name,
                        mesh *m, mesh_read_info *info, scaf_error *err);

@@ -1,4 +1,5 @@
-/* mesh/text_scan: the strtod slow path of the number scanner (see text_scan.h).
+/* mesh/text_scan: the strtod slow path of the number scanner, and the
+ * shortest round-trip printer (see text_scan.h).
  *
  * Tokens the fast path cannot round correctly (more than 19 significant
  * digits, large exponents) and non-decimal tokens (inf, nan, hex) are copied
@@ -9,6 +10,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -31,4 +33,16 @@ scan_result scan_double_slow(const char *p, const char *q, double *out)
     if (!isfinite(v) || overflow) return SCAN_NONFINITE;
     *out = v;
     return SCAN_OK;
+}
+
+int scan_format_double(char *buf, size_t size, double x)
+{
+    int n = 0;
+    for (int prec = 15; prec <= 17; prec++) {
+        n = snprintf(buf, size, "%.*g", prec, x);
+        const char *p = buf;
+        double y;
+        if (scan_double(&p, buf + n, &y) == SCAN_OK && memcmp(&x, &y, sizeof x) == 0) break;
+    }
+    return n;
 }

@@ -150,4 +150,9 @@ static inline scan_result scan_long(const char **pp, const char *end, char stop,
     return SCAN_OK;
 }
 
+/* Print x with the fewest of 15, 16 or 17 significant digits that
+ * scan_double reads back to the same double (so a write-read cycle is
+ * bitwise exact and short values stay short). Returns snprintf's count. */
+int scan_format_double(char *buf, size_t size, double x);
+
 #endif /* SCAF_MESH_TEXT_SCAN_H */

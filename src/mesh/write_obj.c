@@ -13,29 +13,13 @@
  * nothing is written) and SCAF_ERR_IO naming the path otherwise.
  */
 #include "mesh/mesh_io.h"
+#include "base/atomic_file.h"
 #include "mesh/text_scan.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-/* Shortest of %.15g/%.16g/%.17g that strtod maps back to x. */
-static int format_double(char *buf, size_t size, double x)
-{
-    int n = 0;
-    for (int prec = 15; prec <= 17; prec++) {
-        n = snprintf(buf, size, "%.*g", prec, x);
-        /* scan_double equals strtod (fast path when exact, strtod otherwise). */
-        const char *p = buf;
-        double y;
-        if (scan_double(&p, buf + n, &y) == SCAN_OK && memcmp(&x, &y, sizeof x) == 0) break;
-    }
-    return n;
-}
 
 static scaf_status check_mesh(const mesh *m, scaf_error *err)
 {
@@ -66,15 +50,15 @@ static int write_body(FILE *f, const mesh *m)
     if (fprintf(f, "# written by scaf %s\n", scaf_version()) < 0) return -1;
     for (int i = 0; i < m->nv; i++) {
         const double *v = m->V + 3 * (size_t)i;
-        format_double(a, sizeof a, v[0]);
-        format_double(b, sizeof b, v[1]);
-        format_double(c, sizeof c, v[2]);
+        scan_format_double(a, sizeof a, v[0]);
+        scan_format_double(b, sizeof b, v[1]);
+        scan_format_double(c, sizeof c, v[2]);
         if (fprintf(f, "v %s %s %s\n", a, b, c) < 0) return -1;
     }
     int uv = mesh_has_uv(m);
     for (int i = 0; uv && i < m->nuv; i++) {
-        format_double(a, sizeof a, m->UV[2 * (size_t)i]);
-        format_double(b, sizeof b, m->UV[2 * (size_t)i + 1]);
+        scan_format_double(a, sizeof a, m->UV[2 * (size_t)i]);
+        scan_format_double(b, sizeof b, m->UV[2 * (size_t)i + 1]);
         if (fprintf(f, "vt %s %s\n", a, b) < 0) return -1;
     }
     for (int i = 0; i < m->nf; i++) {
@@ -99,52 +83,18 @@ scaf_status mesh_write_obj(const char *path, const mesh *m, scaf_error *err)
         err_prefix(err, "%s: not written", path);
         return st;
     }
-
-    /* Temporary name in the same folder: "<dir>/.<base>.tmpXXXXXX". */
-    const char *slash = strrchr(path, '/');
-    size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
-    const char *base = path + dirlen;
-    size_t tlen = strlen(path) + 16;
-    char *tmp = malloc(tlen);
-    if (!tmp) return err_nomem(err, "temporary file name");
-    snprintf(tmp, tlen, "%.*s.%s.tmpXXXXXX", (int)dirlen, path, base);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        int e = errno;
-        free(tmp);
-        return err_set(err, SCAF_ERR_IO, "%s: cannot create a temporary file next to it: %s", path, strerror(e));
-    }
-    (void)fchmod(fd, 0644); /* mkstemp makes it 0600; an OBJ is not secret */
-    FILE *f = fdopen(fd, "w");
-    if (!f) {
-        int e = errno;
-        close(fd);
-        unlink(tmp);
-        free(tmp);
-        return err_set(err, SCAF_ERR_IO, "%s: cannot write: %s", path, strerror(e));
-    }
+    atomic_file af;
+    st = atomic_open(&af, path, err);
+    if (st) return st;
     static const size_t bufsize = 1 << 20;
     char *buf = malloc(bufsize);
-    if (buf) setvbuf(f, buf, _IOFBF, bufsize);
-    errno = 0;
-    int bad = write_body(f, m);
-    if (!bad && fflush(f) != 0) bad = -1;
-    if (!bad && fsync(fileno(f)) != 0) bad = -1;
-    int e = errno;
-    if (fclose(f) != 0 && !bad) {
-        bad = -1;
-        e = errno;
+    if (buf) setvbuf(af.f, buf, _IOFBF, bufsize);
+    if (write_body(af.f, m) != 0) {
+        atomic_abort(&af);
+        free(buf);
+        return err_set(err, SCAF_ERR_IO, "%s: cannot write (disk full?)", path);
     }
+    st = atomic_commit(&af, err);
     free(buf);
-    if (!bad && rename(tmp, path) != 0) {
-        bad = -1;
-        e = errno;
-    }
-    if (bad) {
-        unlink(tmp);
-        free(tmp);
-        return err_set(err, SCAF_ERR_IO, "%s: cannot write: %s", path, e ? strerror(e) : "write error");
-    }
-    free(tmp);
-    return SCAF_OK;
+    return st;
 }

@@ -338,7 +338,7 @@ static void write_failures_leave_nothing(void **state)
     err_clear(&err);
     assert_int_equal(png_write_rgba(path, 16, 16, px, &err), SCAF_ERR_IO);
     assert_non_null(strstr(err.message, path));
-    assert_false(tmp_has_prefix("png_target_is_dir.tmp"));
+    assert_false(tmp_has_prefix(".png_target_is_dir.tmp"));
     /* uv_png: the same through the whole picture path, and a bad size */
     unsigned col[4] = {1, 2, 3, 4};
     uv_png_options o = uv_png_options_default();

@@ -1,5 +1,5 @@
-/* app/atomic_file: temporary file + rename (see atomic_file.h). */
-#include "app/atomic_file.h"
+/* base/atomic_file: temporary file + rename (see atomic_file.h). */
+#include "base/atomic_file.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -10,17 +10,21 @@
 scaf_status atomic_open(atomic_file *a, const char *path, scaf_error *err)
 {
     memset(a, 0, sizeof *a);
+    if (!path || !*path) return err_set(err, SCAF_ERR_USAGE, "no output path");
     if (strlen(path) + 16 > sizeof a->tmp)
         return err_set(err, SCAF_ERR_IO, "%s: path too long", path);
     strcpy(a->path, path);
-    snprintf(a->tmp, sizeof a->tmp, "%s.tmpXXXXXX", path);
+    /* "<dir>/.<base>.tmpXXXXXX": hidden, in the target's folder */
+    const char *slash = strrchr(path, '/');
+    int dirlen = slash ? (int)(slash - path) + 1 : 0;
+    snprintf(a->tmp, sizeof a->tmp, "%.*s.%s.tmpXXXXXX", dirlen, path, path + dirlen);
     int fd = mkstemp(a->tmp);
     if (fd < 0) {
         int e = errno;
         a->tmp[0] = '\0';
         return err_set(err, SCAF_ERR_IO, "%s: cannot create the file: %s", path, strerror(e));
     }
-    (void)fchmod(fd, 0644); /* mkstemp makes it 0600; reports are not secret */
+    (void)fchmod(fd, 0644); /* mkstemp makes it 0600; our outputs are not secret */
     a->f = fdopen(fd, "w");
     if (!a->f) {
         int e = errno;
@@ -35,7 +39,7 @@ scaf_status atomic_open(atomic_file *a, const char *path, scaf_error *err)
 scaf_status atomic_commit(atomic_file *a, scaf_error *err)
 {
     if (!a->f) return err_set(err, SCAF_ERR_IO, "%s: not open", a->path);
-    int bad = ferror(a->f);
+    int bad = ferror(a->f) || fflush(a->f) != 0 || fsync(fileno(a->f)) != 0;
     if (fclose(a->f) != 0) bad = 1;
     a->f = NULL;
     if (bad) {
