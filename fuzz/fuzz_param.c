@@ -10,7 +10,8 @@
  *   then         per vertex 3 coordinates of 2 bytes (int16 / 256), per
  *                face 3 vertex bytes (mod vertex count), and with bit 4 per
  *                vertex one UV of 2 x 2 bytes, FT = F.
- * Missing bytes read as zero. Whatever the mesh, the library must return
+ * Missing bytes read as zero. Seeds: fuzz/corpus_param/ (a 3 x 3 grid as
+ * param, as atlas with UVs, as param with UVs). Whatever the mesh, the library must return
  * a status (never crash, hang or leak); when param or the atlas succeeds,
  * the result must be bijective by the exact checker (the atlas' output
  * also certified): anything else aborts.

@@ -32,7 +32,11 @@ for t in "${targets[@]}"; do
   work=build-fuzz/corpus-work/$name
   rm -rf "$work"
   mkdir -p "$work"
-  cp fuzz/corpus/* "$work"/ 2>/dev/null || true
+  # a target's own seeds (fuzz/corpus_NAME, e.g. binary meshes) or the
+  # shared mesh files
+  seeds=fuzz/corpus
+  [ -d "fuzz/corpus_${name#fuzz_}" ] && seeds="fuzz/corpus_${name#fuzz_}"
+  cp "$seeds"/* "$work"/ 2>/dev/null || true
   echo "fuzz_smoke: $name for ${per}s"
   if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
       "$t" -max_total_time="$per" -max_len=4096 -rss_limit_mb=2048 -timeout=10 \

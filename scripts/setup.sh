@@ -12,6 +12,7 @@ PACKAGES=(
   libcmocka-dev                                     # tests
   libgmp-dev                                        # tests: exact rational reference
   valgrind                                          # bench: instruction counts
+  python3 python3-numpy                             # the Python package and its tests
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -18,7 +18,10 @@
  * futex calls, aphrodite.obj). The loops only move data (no sums), so the
  * factor is bit-identical with any team size: the CHOLMOD calls run with
  * OpenMP's max-active-levels at 0 (every region gets one thread) and the
- * previous value is restored afterwards. The dense work stays in BLAS,
+ * previous value is restored afterwards. In libgomp (OpenMP 5) that value
+ * belongs to the calling thread's data environment, so threads factoring
+ * at once, or the user's own OpenMP code in other threads, are not
+ * affected (tests/opt/test_cholmod_solver.c: concurrent_factorizations). The dense work stays in BLAS,
  * whose threads OpenBLAS controls. libgomp is reached through weak
  * references (it is loaded by CHOLMOD), so nothing changes when it is
  * absent.

@@ -6,11 +6,16 @@
 # library, and static library with `pkg-config --static`), and runs them:
 # atlas_example on its own generated mesh and on a cubesphere OBJ written by
 # the installed `scaf gen`; its output is then proved bijective by the
-# installed `scaf check`. Exit 0 pass, 1 fail, 77 skip (no pkg-config).
+# installed `scaf check`. With PYTHON (an interpreter path, when it exists),
+# the installed Python package is imported from the prefix alone (PYTHONPATH,
+# no SCAF_LIBRARY), must load the installed libscaf.so, and runs
+# examples/atlas_example.py on the cubesphere; its output is checked too.
+# Exit 0 pass, 1 fail, 77 skip (no pkg-config).
 #
-# usage: test_install.sh BUILD_DIR SOURCE_DIR CC [EXTRA_CFLAGS]
+# usage: test_install.sh BUILD_DIR SOURCE_DIR CC [EXTRA_CFLAGS [PYTHON]]
+#        (PYTHON may also come from the environment variable SCAF_PYTHON)
 set -euo pipefail
-build="$1" src="$2" cc="$3" extra="${4:-}"
+build="$1" src="$2" cc="$3" extra="${4:-}" python="${5:-${SCAF_PYTHON:-}}"
 command -v pkg-config >/dev/null || { echo "pkg-config not found: skipped"; exit 77; }
 export OPENBLAS_NUM_THREADS=1
 mkdir -p "$build/test-tmp"
@@ -47,6 +52,27 @@ done
 "$tmp/atlas_example" "$tmp/cube.obj" "$tmp/cube_atlas.obj" >"$tmp/cube.txt"
 "$tmp/prefix/bin/scaf" check "$tmp/cube_atlas.obj" >"$tmp/check.txt"
 grep -q "6 charts" "$tmp/cube.txt"
+if [ -n "$python" ] && [ -x "$python" ]; then (
+  # an ASan build's library needs its runtime preloaded into python
+  source "$src/python/tests/sanitizer_env.sh"
+  scaf_python_sanitizer_env "$libdir/libscaf.so" || exit 0
+  # the installed package, found through PYTHONPATH only
+  pyinit="$(find "$tmp/prefix" -path '*/scaf/_install_paths.py' | head -1)"
+  [ -n "$pyinit" ] || { echo "the Python package was not installed"; exit 1; }
+  pydir="$(dirname "$(dirname "$pyinit")")"
+  env -u SCAF_LIBRARY PYTHONPATH="$pydir" PYTHONDONTWRITEBYTECODE=1 "$python" -c '
+import os, sys, scaf
+lib = os.path.realpath(scaf.library_path)
+prefix = os.path.realpath(sys.argv[1]) + os.sep
+assert lib.startswith(prefix), "loaded " + lib
+assert os.path.realpath(scaf.__file__).startswith(prefix), "imported " + scaf.__file__
+print("python: scaf", scaf.__version__, "from", scaf.__file__, "with", lib)' "$tmp/prefix"
+  env -u SCAF_LIBRARY PYTHONPATH="$pydir" PYTHONDONTWRITEBYTECODE=1 "$python" \
+      "$src/examples/atlas_example.py" "$tmp/cube.obj" "$tmp/cube_atlas_py.obj" >"$tmp/cube_py.txt"
+  grep -q "6 charts" "$tmp/cube_py.txt"
+  "$tmp/prefix/bin/scaf" check "$tmp/cube_atlas_py.obj" >/dev/null
+  tail -n 1 "$tmp/cube_py.txt"
+) fi
 tail -n 1 "$tmp/param.txt"
 tail -n 1 "$tmp/atlas.txt"
 tail -n 1 "$tmp/cube.txt"

@@ -1,6 +1,8 @@
 /* Tests for opt/cholmod_solver and opt/csc: Laplacian systems solved to
  * 1e-10 relative residual, analysis reused for an unchanged pattern and
- * redone for a new one, relaxed supernodes, clear errors. */
+ * redone for a new one, relaxed supernodes, clear errors; factorizations
+ * in two threads at once give the sequential answer and leave OpenMP's
+ * process-wide max-active-levels as it was. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -9,6 +11,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 
 #include "opt/cholmod_solver.h"
@@ -266,6 +269,67 @@ static void indefinite_is_an_error(void **state)
     opt_chol_destroy(c);
 }
 
+/* ---- two threads factoring at once ---------------------------------- */
+
+extern int omp_get_max_active_levels(void) __attribute__((weak));
+
+typedef struct factor_job {
+    const opt_csc *A;
+    const double *b;
+    double *x;
+    int rounds;
+    int ok;
+} factor_job;
+
+static void *factor_rounds(void *arg)
+{
+    factor_job *j = arg;
+    scaf_error e;
+    j->ok = 1;
+    for (int r = 0; r < j->rounds && j->ok; r++) {
+        opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+        if (!c || opt_chol_factor(c, j->A, &e) != SCAF_OK || opt_chol_solve(c, 1, j->b, j->x, &e) != SCAF_OK)
+            j->ok = 0;
+        opt_chol_destroy(c);
+    }
+    return NULL;
+}
+
+static void concurrent_factorizations(void **state)
+{
+    (void)state;
+    opt_csc A;
+    grid_laplacian(&A, 60, 0.1, 1);
+    int n = A.n;
+    double *b = malloc(n * sizeof *b), *x0 = malloc(n * sizeof *x0);
+    for (int i = 0; i < n; i++) b[i] = sin(0.1 * i);
+    /* the sequential answer */
+    factor_job seq = {&A, b, x0, 1, 0};
+    factor_rounds(&seq);
+    assert_true(seq.ok);
+    int before = omp_get_max_active_levels ? omp_get_max_active_levels() : -1;
+    enum { NT = 2 };
+    factor_job jobs[NT];
+    pthread_t t[NT];
+    double *x[NT];
+    for (int k = 0; k < NT; k++) {
+        x[k] = malloc(n * sizeof *x[k]);
+        jobs[k] = (factor_job){&A, b, x[k], 40, 0};
+        assert_int_equal(pthread_create(&t[k], NULL, factor_rounds, &jobs[k]), 0);
+    }
+    for (int k = 0; k < NT; k++) {
+        assert_int_equal(pthread_join(t[k], NULL), 0);
+        assert_true(jobs[k].ok);
+        assert_memory_equal(x[k], x0, n * sizeof *x0); /* bit for bit */
+        free(x[k]);
+    }
+    /* the level is the calling thread's (OpenMP 5): untouched here */
+    if (omp_get_max_active_levels) assert_int_equal(omp_get_max_active_levels(), before);
+    free(b);
+    free(x0);
+    opt_csc_free(&A);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -275,6 +339,7 @@ int main(void)
         cmocka_unit_test(block_ordering_solves),
         cmocka_unit_test(relaxed_supernodes_solve),
         cmocka_unit_test(indefinite_is_an_error),
+        cmocka_unit_test(concurrent_factorizations),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,223 @@
+"""scaf._lib: finds libscaf.so and declares the C API to ctypes.
+
+Nothing here computes anything: it loads the shared library, mirrors the
+structs of include/scaf/scaf.h and include/scaf/atlas.h field by field
+(same order, same C types; a test compares every ctypes.sizeof and field
+offset with the C compiler's), and declares argtypes/restype of every
+function the package calls.
+
+Where the library is looked for, first hit wins:
+  1. the environment variable SCAF_LIBRARY (a path to libscaf.so*);
+  2. the installed layout: the lib directory CMake recorded in
+     _install_paths.py when it installed this package next to libscaf;
+  3. the build tree of a source checkout: <checkout>/build/libscaf.so
+     (this package lives in <checkout>/python/scaf);
+  4. ctypes.util.find_library("scaf") (ldconfig, LD_LIBRARY_PATH).
+When none loads, ImportError lists every place tried and why it failed.
+"""
+
+import ctypes
+import ctypes.util
+import os
+
+# --- enums (C enums are int-sized here; values as in the headers) ---------
+
+STATUS_NAMES = {
+    0: "OK",
+    1: "USAGE",
+    2: "IO",
+    3: "PARSE",
+    4: "MESH",
+    5: "NUMERIC",
+    6: "NOMEM",
+    7: "CANCELLED",
+    8: "INTERNAL",
+}
+SCAF_OK = 0
+SCAF_ERR_CANCELLED = 7
+
+# Names accepted for the `energy` and `init` options. Any other int is
+# passed through to C, which validates it, so a value appended to the C
+# enum later (a new init, say) works before this table knows its name.
+ENERGIES = {"symmetric_dirichlet": 0, "arap": 1, "conformal": 2}
+INITS = {"tutte": 0, "harmonic": 1}
+PHASES = ("assembly", "analysis", "factorization", "solve", "line_search", "scaffold", "other")
+PHASE_COUNT = len(PHASES)  # SCAF_PHASE_COUNT
+ATLAS_PHASES = ("settle", "compact")  # SCAF_ATLAS_SETTLE, SCAF_ATLAS_COMPACT
+
+c_enum = ctypes.c_int
+
+
+class Options(ctypes.Structure):
+    """scaf_options_t"""
+
+    _fields_ = [
+        ("energy", c_enum),
+        ("init", c_enum),
+        ("max_iterations", ctypes.c_int),
+        ("tolerance", ctypes.c_double),
+        ("box_scale", ctypes.c_double),
+        ("box_square", ctypes.c_int),
+        ("box_points_per_side", ctypes.c_int),
+        ("lambda_ratio", ctypes.c_double),
+        ("min_angle_deg", ctypes.c_double),
+        ("step_fraction", ctypes.c_double),
+    ]
+
+
+class IterationInfo(ctypes.Structure):
+    """scaf_iteration_info_t"""
+
+    _fields_ = [
+        ("iteration", ctypes.c_int),
+        ("energy", ctypes.c_double),
+        ("energy_before", ctypes.c_double),
+        ("total_before", ctypes.c_double),
+        ("total_after", ctypes.c_double),
+        ("lambda_", ctypes.c_double),  # `lambda` in C
+        ("step", ctypes.c_double),
+        ("scaffold_triangles", ctypes.c_int),
+        ("scaffold_vertices", ctypes.c_int),
+        ("seconds", ctypes.c_double),
+        ("phase_seconds", ctypes.c_double * PHASE_COUNT),
+    ]
+
+
+class AtlasOptions(ctypes.Structure):
+    """scaf_atlas_options_t"""
+
+    _fields_ = [
+        ("padding", ctypes.c_double),
+        ("energy", c_enum),
+        ("init", c_enum),
+        ("init_input", ctypes.c_int),
+        ("settle_iterations", ctypes.c_int),
+        ("settle_tolerance", ctypes.c_double),
+        ("compact_iterations", ctypes.c_int),
+        ("distortion_tolerance", ctypes.c_double),
+        ("repack", ctypes.c_int),
+        ("pack_cells", ctypes.c_int),
+        ("box_scale", ctypes.c_double),
+        ("lambda_ratio", ctypes.c_double),
+        ("compact_lambda_ratio", ctypes.c_double),
+    ]
+
+
+class AtlasIterationInfo(ctypes.Structure):
+    """scaf_atlas_iteration_info_t"""
+
+    _fields_ = [
+        ("phase", c_enum),
+        ("iteration", ctypes.c_int),
+        ("phase_iteration", ctypes.c_int),
+        ("energy", ctypes.c_double),
+        ("efficiency", ctypes.c_double),
+        ("gap", ctypes.c_double),
+        ("seconds", ctypes.c_double),
+        ("loop", IterationInfo),
+    ]
+
+
+# The C names of the mirrored structs, for the layout test.
+STRUCTS = {
+    "scaf_options_t": Options,
+    "scaf_iteration_info_t": IterationInfo,
+    "scaf_atlas_options_t": AtlasOptions,
+    "scaf_atlas_iteration_info_t": AtlasIterationInfo,
+}
+
+PARAM_PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.POINTER(IterationInfo), ctypes.c_void_p)
+ATLAS_PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.POINTER(AtlasIterationInfo), ctypes.c_void_p)
+
+_P = ctypes.c_void_p  # opaque scaf_param_t * / scaf_atlas_t *
+_D = ctypes.POINTER(ctypes.c_double)
+_I = ctypes.POINTER(ctypes.c_int)
+_int = ctypes.c_int
+
+# name: (restype, argtypes)
+SIGNATURES = {
+    "scaf_status_name": (ctypes.c_char_p, [c_enum]),
+    "scaf_version": (ctypes.c_char_p, []),
+    "scaf_options_default": (Options, []),
+    "scaf_param_new": (_P, [ctypes.POINTER(Options)]),
+    "scaf_param_set_options": (c_enum, [_P, ctypes.POINTER(Options)]),
+    "scaf_param_set_mesh": (c_enum, [_P, _D, _int, _I, _int, _D, _int, _I]),
+    "scaf_param_run": (c_enum, [_P, _int, PARAM_PROGRESS, ctypes.c_void_p]),
+    "scaf_param_energy": (ctypes.c_double, [_P]),
+    "scaf_param_chart_count": (_int, [_P]),
+    "scaf_param_iterations": (_int, [_P]),
+    "scaf_param_uv_count": (_int, [_P]),
+    "scaf_param_get_uv": (c_enum, [_P, _D, _I]),
+    "scaf_param_error": (ctypes.c_char_p, [_P]),
+    "scaf_param_destroy": (None, [_P]),
+    "scaf_atlas_options_default": (AtlasOptions, []),
+    "scaf_atlas_new": (_P, [ctypes.POINTER(AtlasOptions)]),
+    "scaf_atlas_set_options": (c_enum, [_P, ctypes.POINTER(AtlasOptions)]),
+    "scaf_atlas_set_mesh": (c_enum, [_P, _D, _int, _I, _int, _D, _int, _I]),
+    "scaf_atlas_run": (c_enum, [_P, ATLAS_PROGRESS, ctypes.c_void_p]),
+    "scaf_atlas_chart_count": (_int, [_P]),
+    "scaf_atlas_uv_count": (_int, [_P]),
+    "scaf_atlas_iterations": (_int, [_P, c_enum]),
+    "scaf_atlas_get_uv": (c_enum, [_P, _D, _I, _I]),
+    "scaf_atlas_packing_efficiency": (ctypes.c_double, [_P]),
+    "scaf_atlas_min_chart_gap": (ctypes.c_double, [_P]),
+    "scaf_atlas_energy": (ctypes.c_double, [_P]),
+    "scaf_atlas_chart_distortion": (c_enum, [_P, _D]),
+    "scaf_atlas_error": (ctypes.c_char_p, [_P]),
+    "scaf_atlas_destroy": (None, [_P]),
+}
+
+
+def _candidates():
+    """(description, path or name) pairs in lookup order."""
+    out = []
+    env = os.environ.get("SCAF_LIBRARY")
+    if env:
+        out.append(("$SCAF_LIBRARY", env))
+    here = os.path.dirname(os.path.abspath(__file__))
+    try:
+        from . import _install_paths  # written by `cmake --install`
+    except ImportError:
+        _install_paths = None
+    if _install_paths is not None:
+        libdir = os.path.normpath(os.path.join(here, _install_paths.LIBDIR))
+        for name in ("libscaf.so." + _install_paths.SOVERSION, "libscaf.so"):
+            out.append(("installed next to the package", os.path.join(libdir, name)))
+    checkout = os.path.dirname(os.path.dirname(here))
+    out.append(("build tree of the checkout", os.path.join(checkout, "build", "libscaf.so")))
+    found = ctypes.util.find_library("scaf")
+    out.append(('ctypes.util.find_library("scaf")', found))
+    return out
+
+
+def _declare(lib):
+    for name, (restype, argtypes) in SIGNATURES.items():
+        fn = getattr(lib, name)
+        fn.restype = restype
+        fn.argtypes = argtypes
+    return lib
+
+
+def load():
+    """(CDLL with every signature declared, the path it was loaded from)."""
+    tried = []
+    for what, path in _candidates():
+        if not path:
+            tried.append("%s: nothing found" % what)
+        elif os.path.sep in path and not os.path.exists(path):
+            tried.append("%s: %s does not exist" % (what, path))
+        else:
+            try:
+                return _declare(ctypes.CDLL(path)), path
+            except OSError as e:
+                tried.append("%s: %s: %s" % (what, path, e))
+            except AttributeError as e:
+                tried.append("%s: %s is not a matching libscaf (%s)" % (what, path, e))
+        if what == "$SCAF_LIBRARY":
+            break  # an explicit choice that fails is not silently replaced
+    raise ImportError(
+        "scaf: cannot load the C library libscaf.so; tried, in order:\n  "
+        + "\n  ".join(tried)
+        + "\nSet SCAF_LIBRARY to the path of libscaf.so (build/libscaf.so after "
+        "`cmake --build build`, or <prefix>/lib/libscaf.so after `cmake --install`)."
+    )

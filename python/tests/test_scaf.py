@@ -1,0 +1,643 @@
+"""python/tests/test_scaf: the Python binding against the build's libscaf.so.
+
+Run by the ctest python/test_python (run_tests.sh) with SCAF_LIBRARY,
+SCAF_BINARY (the `scaf` program, used to generate meshes), SCAF_LAYOUT_PROGRAM
+(prints the C struct layouts) and SCAF_TEST_TMPDIR set. Every property of a
+result is recomputed here in Python from the arrays (signed UV areas, unit
+square, charts kept, packing efficiency, chart gap, per-chart distortion)
+rather than trusted from the library's own numbers.
+"""
+
+import ctypes
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import scaf
+from scaf import _arrays, _lib
+
+np = _arrays.np
+BINARY = os.environ.get("SCAF_BINARY")
+TMP = os.environ.get("SCAF_TEST_TMPDIR") or tempfile.gettempdir()
+
+
+def gen(name, size=None):
+    """Path of an OBJ written by `scaf gen NAME`."""
+    if not BINARY:
+        raise unittest.SkipTest("SCAF_BINARY not set")
+    d = tempfile.mkdtemp(prefix="py-", dir=TMP)
+    path = os.path.join(d, "%s.obj" % name)
+    cmd = [BINARY, "gen", name, "-o", path] + (["--size", str(size)] if size else [])
+    subprocess.run(cmd, check=True)
+    return path
+
+
+def rows(a):
+    return a.tolist() if hasattr(a, "tolist") else a
+
+
+def signed_areas(UV, FT):
+    UV, FT = rows(UV), rows(FT)
+    out = []
+    for a, b, c in FT:
+        (u0, v0), (u1, v1), (u2, v2) = UV[a], UV[b], UV[c]
+        out.append(0.5 * ((u1 - u0) * (v2 - v0) - (u2 - u0) * (v1 - v0)))
+    return out
+
+
+def dirichlet_parts(V, F, UV, FT, faces=None):
+    """(A, B) with A = sum_f A_f |J_f|^2 / sum_f A_f and B = sum_f A_f
+    |J_f^-1|^2 / sum_f A_f over `faces` (all: None), A_f the 3D area, J_f
+    the Jacobian of the UV map. Scaling the UVs by s gives s^2 A + B / s^2."""
+    V, F, UV, FT = rows(V), rows(F), rows(UV), rows(FT)
+    a_sum = b_sum = den = 0.0
+    for f in (range(len(F)) if faces is None else faces):
+        p0, p1, p2 = (V[i] for i in F[f])
+        e1 = [p1[k] - p0[k] for k in range(3)]
+        e2 = [p2[k] - p0[k] for k in range(3)]
+        l1 = math.sqrt(sum(x * x for x in e1))
+        x2 = sum(e1[k] * e2[k] for k in range(3)) / l1
+        y2 = math.sqrt(max(sum(x * x for x in e2) - x2 * x2, 0.0))
+        area = 0.5 * l1 * y2
+        (u0, v0), (u1, v1), (u2, v2) = (UV[i] for i in FT[f])
+        # J = [d1 d2] X^-1 with X = [[l1, x2], [0, y2]] the triangle in its plane
+        a, b, c, d = u1 - u0, u2 - u0, v1 - v0, v2 - v0
+        j11, j12 = a / l1, (b - a * x2 / l1) / y2
+        j21, j22 = c / l1, (d - c * x2 / l1) / y2
+        fro = j11 * j11 + j12 * j12 + j21 * j21 + j22 * j22
+        det = j11 * j22 - j12 * j21
+        a_sum += area * fro
+        b_sum += area * fro / (det * det)  # |J^-1|^2 of a 2 x 2 J
+        den += area
+    return a_sum / den, b_sum / den
+
+
+def symmetric_dirichlet(V, F, UV, FT, faces=None):
+    """sum_f A_f (|J|^2 + |J^-1|^2) / sum_f A_f: the energy E the library
+    reports, recomputed."""
+    a, b = dirichlet_parts(V, F, UV, FT, faces)
+    return a + b
+
+
+def input_charts(F, FT):
+    """Chart label per face of a mesh with UVs: faces sharing an edge with
+    the same UV indices on both sides are in one chart."""
+    F, FT = rows(F), rows(FT)
+    parent = list(range(len(F)))
+
+    def find(i):
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    seen = {}
+    for f, (tri, uvs) in enumerate(zip(F, FT)):
+        for k in range(3):
+            a, b = tri[k], tri[(k + 1) % 3]
+            ta, tb = uvs[k], uvs[(k + 1) % 3]
+            key = (min(a, b), max(a, b))
+            side = (ta, tb) if a < b else (tb, ta)
+            if key in seen:
+                g, gside = seen[key]
+                if gside == side:
+                    parent[find(f)] = find(g)
+            else:
+                seen[key] = (f, side)
+    return [find(f) for f in range(len(F))]
+
+
+def boundary_segments(FT, chart):
+    """{chart: [(uv index, uv index), ...]} boundary edges of each chart."""
+    count = {}
+    for f, t in enumerate(rows(FT)):
+        for k in range(3):
+            e = (min(t[k], t[(k + 1) % 3]), max(t[k], t[(k + 1) % 3]))
+            count[e] = count.get(e, (0, chart[f]))
+            count[e] = (count[e][0] + 1, chart[f])
+    out = {}
+    for e, (n, c) in count.items():
+        if n == 1:
+            out.setdefault(c, []).append(e)
+    return out
+
+
+def point_segment(p, a, b):
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    t = ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy)
+    t = min(1.0, max(0.0, t))
+    return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
+
+
+def min_chart_gap(UV, FT, chart):
+    """Smallest distance between boundary segments of two different charts
+    (segments of different charts never cross in a valid atlas, so the
+    distance is attained at an endpoint)."""
+    UV = rows(UV)
+    seg = boundary_segments(FT, rows(chart))
+    charts = sorted(seg)
+    best = math.inf
+    for i, ci in enumerate(charts):
+        for cj in charts[i + 1:]:
+            for a, b in seg[ci]:
+                for c, d in seg[cj]:
+                    pa, pb, pc, pd = UV[a], UV[b], UV[c], UV[d]
+                    best = min(best, point_segment(pa, pc, pd), point_segment(pb, pc, pd),
+                               point_segment(pc, pa, pb), point_segment(pd, pa, pb))
+    return best
+
+
+class LibraryTest(unittest.TestCase):
+    def test_struct_layout_matches_c(self):
+        prog = os.environ.get("SCAF_LAYOUT_PROGRAM")
+        if not prog:
+            self.skipTest("SCAF_LAYOUT_PROGRAM not set")
+        out = subprocess.run([prog], check=True, capture_output=True, text=True).stdout.split("\n")
+        sizes, fields, enums = {}, {}, {}
+        for line in filter(None, out):
+            t = line.split()
+            if t[0] == "enum":
+                enums[t[1]] = int(t[2])
+            elif t[1] == "sizeof":
+                sizes[t[0]] = int(t[2])
+            else:
+                fields.setdefault(t[0], []).append((t[1], int(t[2]), int(t[3])))
+        self.assertEqual(set(sizes), set(_lib.STRUCTS))
+        for cname, cls in _lib.STRUCTS.items():
+            self.assertEqual(ctypes.sizeof(cls), sizes[cname], cname)
+            mine = [(n.rstrip("_"), getattr(cls, n).offset, getattr(cls, n).size) for n, _ in cls._fields_]
+            self.assertEqual(mine, fields[cname], cname)
+        self.assertEqual(enums["SCAF_PHASE_COUNT"], _lib.PHASE_COUNT)
+        self.assertEqual(enums["SCAF_ERR_INTERNAL"], max(_lib.STATUS_NAMES))
+        self.assertEqual(enums["SCAF_ERR_CANCELLED"], _lib.SCAF_ERR_CANCELLED)
+        self.assertEqual(enums["SCAF_ENERGY_CONFORMAL"], _lib.ENERGIES["conformal"])
+        self.assertEqual(enums["SCAF_INIT_HARMONIC"], _lib.INITS["harmonic"])
+        self.assertEqual(enums["SCAF_ATLAS_COMPACT"], len(_lib.ATLAS_PHASES) - 1)
+        self.assertEqual(enums["sizeof"], ctypes.sizeof(_lib.c_enum))
+
+    def test_version_is_the_programs(self):
+        if not BINARY:
+            self.skipTest("SCAF_BINARY not set")
+        out = subprocess.run([BINARY, "--version"], check=True, capture_output=True, text=True).stdout
+        self.assertEqual(out.strip(), "scaf " + scaf.__version__)
+        self.assertTrue(os.path.samefile(scaf.library_path, os.environ["SCAF_LIBRARY"]))
+
+    def test_missing_library_is_a_clear_import_error(self):
+        env = dict(os.environ, SCAF_LIBRARY=os.path.join(TMP, "no-such-libscaf.so"))
+        p = subprocess.run([sys.executable, "-c", "import scaf"], env=env, capture_output=True, text=True)
+        self.assertNotEqual(p.returncode, 0)
+        self.assertIn("ImportError", p.stderr)
+        self.assertIn("SCAF_LIBRARY", p.stderr)
+        self.assertIn("no-such-libscaf.so does not exist", p.stderr)
+
+    def test_defaults_come_from_c(self):
+        d = scaf.default_options()
+        self.assertEqual(d["energy"], "symmetric_dirichlet")
+        self.assertGreater(d["max_iterations"], 0)
+        a = scaf.default_atlas_options()
+        self.assertAlmostEqual(a["padding"], 4 / 1024)
+        self.assertIs(a["repack"], True)
+
+
+class ParamTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.V, cls.F, cls.UV, cls.FT = scaf.read_obj(gen("hemisphere", 8))
+
+    def check_map(self, r, nf):
+        self.assertEqual(len(r.ft), nf)
+        self.assertTrue(all(len(t) == 3 for t in rows(r.ft)))
+        self.assertTrue(all(0 <= i < len(r.uv) for t in rows(r.ft) for i in t))
+        areas = signed_areas(r.uv, r.ft)
+        self.assertGreater(min(areas), 0.0, "a flipped or degenerate UV triangle")
+
+    def test_param_disk(self):
+        seen = []
+        r = scaf.param(self.V, self.F, iterations=8, progress=seen.append)
+        self.assertIsInstance(r, scaf.ParamResult)
+        self.check_map(r, len(self.F))
+        self.assertEqual(r.chart_count, 1)
+        self.assertTrue(1 <= r.iterations <= 8)
+        self.assertEqual([i.iteration for i in seen], list(range(1, r.iterations + 1)))
+        self.assertEqual(seen[-1].energy, r.energy)
+        self.assertTrue(all(i.total_after <= i.total_before for i in seen))
+        self.assertEqual(set(seen[0].phase_seconds), set(_lib.PHASES))
+        # the energy the library reports, recomputed from the arrays
+        self.assertAlmostEqual(symmetric_dirichlet(self.V, self.F, r.uv, r.ft), r.energy, delta=1e-9 * r.energy)
+        self.assertGreaterEqual(r.energy, 4.0)
+        if np is not None:
+            self.assertEqual(r.uv.dtype, np.float64)
+            self.assertEqual(r.ft.dtype, np.int32)
+            self.assertEqual(r.uv.shape[1], 2)
+
+    def test_lists_and_other_dtypes_give_the_same_map(self):
+        if np is None:
+            self.skipTest("numpy not available")
+        a = scaf.param(self.V, self.F, iterations=3)
+        b = scaf.param(self.V.tolist(), self.F.tolist(), iterations=3)
+        c = scaf.param(self.V.astype(np.float32).astype(np.float64), self.F.astype(np.uint64), iterations=3)
+        d = scaf.param(np.asfortranarray(self.V), self.F.astype(np.float64), iterations=3)
+        self.assertTrue(np.array_equal(a.uv, b.uv) and np.array_equal(a.ft, b.ft))
+        self.assertTrue(np.array_equal(a.uv, d.uv))
+        self.check_map(c, len(self.F))
+
+    def test_energies_and_inits(self):
+        for energy in ("conformal", "arap"):
+            r = scaf.param(self.V, self.F, energy=energy, iterations=3)
+            self.check_map(r, len(self.F))
+        r1 = scaf.param(self.V, self.F, init="harmonic", iterations=2)
+        r2 = scaf.param(self.V, self.F, init=_lib.INITS["harmonic"], iterations=2)
+        self.assertEqual(rows(r1.uv), rows(r2.uv))
+        # an int the C enum does not have is passed through and refused by C
+        with self.assertRaises(scaf.UsageError) as cm:
+            scaf.param(self.V, self.F, init=99)
+        self.assertIn("init", str(cm.exception))
+
+    def test_handle_and_context_manager(self):
+        with scaf.Param(max_iterations=4) as p:
+            self.assertEqual(p.chart_count, 0)
+            p.set_mesh(self.V, self.F)
+            p.run(2)
+            self.assertEqual(p.iterations, 2)
+            p.run()  # options' cap
+            self.assertTrue(2 < p.iterations <= 6)
+            uv, ft = p.get_uv()
+            self.assertEqual(len(uv), p.uv_count)
+            p.set_options(energy="conformal")
+            self.assertEqual(p.options["energy"], "conformal")
+        with self.assertRaises(scaf.UsageError):
+            p.run()
+        p.close()  # idempotent
+
+    def test_unknown_and_bad_options(self):
+        with self.assertRaises(TypeError):
+            scaf.param(self.V, self.F, no_such_option=1)
+        with self.assertRaises(ValueError):
+            scaf.param(self.V, self.F, energy="nope")
+        with self.assertRaises(scaf.UsageError) as cm:
+            scaf.param(self.V, self.F, step_fraction=2.0)
+        self.assertIn("step_fraction", str(cm.exception))
+        with self.assertRaises(ValueError):
+            scaf.Param(max_iterations="ten")
+
+    def test_cancel(self):
+        with self.assertRaises(scaf.Cancelled) as cm:
+            scaf.param(self.V, self.F, iterations=20, progress=lambda info: info.iteration >= 3)
+        e = cm.exception
+        self.assertEqual(e.status, 7)
+        self.assertEqual(e.result.iterations, 3)
+        self.check_map(e.result, len(self.F))
+
+    def test_exception_in_callback_cancels_and_is_reraised(self):
+        calls = []
+
+        def bad(info):
+            calls.append(info.iteration)
+            if info.iteration == 2:
+                raise ZeroDivisionError("from the callback")
+
+        with scaf.Param() as p:
+            p.set_mesh(self.V, self.F)
+            with self.assertRaises(ZeroDivisionError):
+                p.run(10, progress=bad)
+            self.assertEqual(calls, [1, 2])
+            self.assertEqual(p.iterations, 2)  # the run stopped there
+            uv, ft = p.get_uv()  # and its map is still there and valid
+            self.assertGreater(min(signed_areas(uv, ft)), 0.0)
+            p.run(1)
+            self.assertEqual(p.iterations, 3)
+
+    def test_ctrl_c_stops_a_run(self):
+        import signal
+        import threading
+
+        V, F, _, _ = scaf.read_obj(gen("hemisphere", 30))
+        for progress in (None, lambda info: None):
+            with scaf.Param(tolerance=0.0, max_iterations=300) as p:
+                p.set_mesh(V, F)
+                timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+                timer.start()
+                with self.assertRaises(KeyboardInterrupt):
+                    p.run(progress=progress)
+                timer.join()
+                self.assertLess(p.iterations, 300)
+                self.assertIs(signal.getsignal(signal.SIGINT), signal.default_int_handler)
+                uv, ft = p.get_uv()  # the map of the last iteration
+                self.assertGreater(min(signed_areas(uv, ft)), 0.0)
+
+    def test_handle_is_refused_inside_its_own_callback(self):
+        with scaf.Param() as p:
+            p.set_mesh(self.V, self.F)
+            with self.assertRaises(scaf.UsageError) as cm:
+                p.run(5, progress=lambda info: p.close())  # would free a running context
+            self.assertIn("busy", str(cm.exception))
+            self.assertEqual(p.iterations, 1)  # cancelled after the first call
+            p.run(1)  # still open and usable
+            self.assertEqual(p.iterations, 2)
+
+    def test_c_context_freed_deterministically(self):
+        from scaf import _core
+
+        real, destroyed = _core.lib, []
+
+        class Spy:
+            def __getattr__(self, name):
+                fn = getattr(real, name)
+                if name.endswith("_destroy"):
+                    return lambda h: (destroyed.append(name), fn(h))[1]
+                return fn
+
+        _core.lib = Spy()
+        try:
+            with scaf.Param() as p:
+                p.set_mesh(self.V, self.F)
+                self.assertEqual(destroyed, [])
+            self.assertEqual(destroyed, ["scaf_param_destroy"])
+            p.close()  # idempotent
+            self.assertEqual(len(destroyed), 1)
+            a = scaf.Atlas()
+            del a  # CPython frees at once
+            self.assertEqual(destroyed, ["scaf_param_destroy", "scaf_atlas_destroy"])
+            scaf.param(self.V, self.F, iterations=1)
+            with self.assertRaises(scaf.MeshError):
+                scaf.param([[0, 0, 0], [1, 0, 0], [2, 0, 0]], [[0, 1, 2]])  # degenerate
+            self.assertEqual(destroyed[2:], ["scaf_param_destroy"] * 2)
+        finally:
+            _core.lib = real
+
+    def test_two_threads_two_contexts(self):
+        import threading
+
+        ref = scaf.param(self.V, self.F, iterations=4)
+        out = [None, None]
+
+        def work(k):
+            out[k] = scaf.param(self.V, self.F, iterations=4)
+
+        threads = [threading.Thread(target=work, args=(k,)) for k in range(2)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        # Not bit for bit: concurrent runs may differ from a sequential one
+        # in the last digits (CHOLMOD's OpenMP regions are serialized through
+        # libgomp's process-wide max-active-levels, which the other thread
+        # may have restored meanwhile; see src/opt/cholmod_solver.c).
+        for r in out:
+            self.assertEqual(len(r.uv), len(ref.uv))
+            self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
+            self.assertAlmostEqual(r.energy, ref.energy, delta=1e-6 * ref.energy)
+
+
+class InputTest(unittest.TestCase):
+    V = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]]
+    F = [[0, 1, 2], [0, 2, 3]]
+
+    def calls_of(self, fn):
+        """Names of the C functions `fn` calls, and its exception."""
+        from scaf import _core
+
+        real, called = _core.lib, []
+
+        class Spy:
+            def __getattr__(self, name):
+                called.append(name)
+                return getattr(real, name)
+
+        _core.lib = Spy()
+        try:
+            fn()
+        except Exception as e:  # noqa: BLE001
+            return called, e
+        finally:
+            _core.lib = real
+        return called, None
+
+    def test_bad_shapes_and_dtypes_raise_value_error_before_c(self):
+        bad = [
+            ([[0, 0], [1, 0], [1, 1]], self.F),        # V not n x 3
+            (self.V, [[0, 1, 2, 3]]),                   # F not n x 3
+            (self.V, [[0, 1], [1, 2]]),
+            (self.V, [[0, 1.5, 2]]),                    # non-integer index
+            ([[0, 0, 0], [1, 0], [1, 1, 0]], self.F),  # ragged
+            (self.V, []),                               # no faces
+            ([["a", "b", "c"]] * 4, self.F),            # not numbers
+            (self.V, [[0, 1, 2 ** 40]]),                # outside int32
+            (42, self.F),
+        ]
+        if np is not None:
+            bad += [
+                (np.zeros((4, 3), dtype=complex), self.F),
+                (np.zeros((2, 4, 3)), self.F),
+                (self.V, np.array([[0, 1, 2]], dtype=bool)),
+                (np.array(self.V, dtype=object), self.F),
+            ]
+        for V, F in bad:
+            for fn in (lambda: scaf.param(V, F), lambda: scaf.atlas(V, F)):
+                called, e = self.calls_of(fn)
+                self.assertIsInstance(e, ValueError, (V, F))
+                self.assertNotIsInstance(e, scaf.Error, (V, F))
+                self.assertFalse([n for n in called if "set_mesh" in n or "_run" in n], called)
+
+    def test_uv_and_ft_go_together(self):
+        for UV, FT in (([[0, 0]], None), (None, [[0, 0, 0]])):
+            with self.assertRaises(ValueError):
+                scaf.atlas(self.V, self.F, UV, FT)
+        with self.assertRaises(ValueError):  # FT must have one row per face
+            scaf.atlas(self.V, self.F, [[0, 0], [1, 0], [1, 1], [0, 1]], [[0, 1, 2]])
+
+    def test_index_out_of_range_is_a_usage_error_naming_the_face(self):
+        with self.assertRaises(scaf.UsageError) as cm:
+            scaf.param(self.V, [[0, 1, 2], [0, 2, 7]])
+        self.assertIsInstance(cm.exception, ValueError)
+        self.assertIn("face 1", str(cm.exception))
+
+    def test_small_list_mesh(self):
+        r = scaf.param(self.V, self.F, iterations=2)
+        self.assertGreater(min(signed_areas(r.uv, r.ft)), 0)
+
+    def test_closed_chart_is_a_mesh_error_naming_the_chart(self):
+        V, F, _, _ = scaf.read_obj(gen("tetrahedron"))
+        for fn in (scaf.param, scaf.atlas):
+            with self.assertRaises(scaf.MeshError) as cm:
+                fn(V, F)
+            self.assertIn("chart 0", str(cm.exception))
+            self.assertIn("closed", str(cm.exception))
+            self.assertEqual(cm.exception.status, 4)
+        # a disk, then a closed tetrahedron far away: chart 1 is named
+        V2 = rows(self.V) + [[x + 10, y, z] for x, y, z in rows(V)]
+        F2 = rows(self.F) + [[a + 4, b + 4, c + 4] for a, b, c in rows(F)]
+        with self.assertRaises(scaf.MeshError) as cm:
+            scaf.atlas(V2, F2)
+        self.assertIn("chart 1", str(cm.exception))
+
+    def test_read_obj_errors(self):
+        d = tempfile.mkdtemp(prefix="py-", dir=TMP)
+        path = os.path.join(d, "bad.obj")
+        with open(path, "w") as fp:
+            fp.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")
+        with self.assertRaises(scaf.InputError) as cm:
+            scaf.read_obj(path)
+        self.assertIn("bad.obj:4", str(cm.exception))
+        with self.assertRaises(scaf.InputError):
+            scaf.read_obj(os.path.join(d, "missing.obj"))
+
+
+class AtlasTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.V, cls.F, cls.UV, cls.FT = scaf.read_obj(gen("cubesphere", 6))
+        cls.seen = []
+        cls.r = scaf.atlas(cls.V, cls.F, cls.UV, cls.FT, resolution=512, padding_texels=2,
+                           progress=cls.seen.append)
+
+    def test_cube_sphere_atlas(self):
+        r, nf = self.r, len(self.F)
+        self.assertIsInstance(r, scaf.AtlasResult)
+        self.assertEqual(r.chart_count, 6)
+        self.assertEqual(r.padding, 2 / 512)
+        uv = rows(r.uv)
+        self.assertTrue(all(0.0 <= x <= 1.0 for p in uv for x in p), "UV outside [0,1]^2")
+        self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
+        # every face keeps its chart: the input seams and the output charts
+        # are the same partition of the faces
+        chart = rows(r.chart)
+        self.assertEqual(len(chart), nf)
+        pairs = set(zip(input_charts(self.F, self.FT), chart))
+        self.assertEqual(len(pairs), 6)
+        self.assertEqual(len({a for a, _ in pairs}), 6)
+        self.assertEqual(len({b for _, b in pairs}), 6)
+        self.assertEqual(set(chart), set(range(6)))
+        # efficiency = total UV area / unit square, recomputed
+        self.assertAlmostEqual(sum(signed_areas(r.uv, r.ft)), r.efficiency, delta=1e-9)
+        self.assertGreater(r.efficiency, 0.3)
+        # the chart gap, recomputed by brute force over boundary segments
+        gap = min_chart_gap(r.uv, r.ft, chart)
+        self.assertAlmostEqual(gap, r.min_gap, delta=1e-12)
+        self.assertGreaterEqual(gap, r.padding * (1 - 1e-9))
+        # per-chart distortion and total energy, recomputed. The library
+        # measures them before the uniform scaling into the unit square, so
+        # one unknown factor s must explain all seven numbers: E(s) = s^2 A
+        # + B / s^2. Solve t = s^2 from the chart that determines it best,
+        # check every other number with it.
+        dist = rows(r.chart_distortion)
+        self.assertEqual(len(dist), 6)
+        parts = [dirichlet_parts(self.V, self.F, r.uv, r.ft, [f for f in range(nf) if chart[f] == c])
+                 for c in range(6)]
+        values = list(zip(parts, dist)) + [(dirichlet_parts(self.V, self.F, r.uv, r.ft), r.energy)]
+        (a, b), e = max(values, key=lambda v: (v[1] ** 2 - 4 * v[0][0] * v[0][1]) / v[1] ** 2)
+        disc = math.sqrt(max(e * e - 4 * a * b, 0.0))
+        fits = []
+        for t in ((e + disc) / (2 * a), (e - disc) / (2 * a)):
+            fits.append(max(abs(a_ * t + b_ / t - e_) / e_ for (a_, b_), e_ in values))
+        self.assertLess(min(fits), 1e-7, "no single scale explains the reported energies")
+        self.assertTrue(all(e_ >= 4.0 for e_ in dist))
+        # the progress calls: phases in order, counted as reported
+        its = r.iterations
+        self.assertEqual(len(self.seen), its["settle"] + its["compact"])
+        self.assertEqual([i.iteration for i in self.seen], list(range(1, len(self.seen) + 1)))
+        self.assertEqual([i.phase for i in self.seen], ["settle"] * its["settle"] + ["compact"] * its["compact"])
+
+    def test_lists_in_lists_out(self):
+        r = scaf.atlas(rows(self.V), rows(self.F), rows(self.UV), rows(self.FT), padding=2 / 512)
+        self.assertEqual(rows(r.uv), rows(self.r.uv))
+        self.assertEqual(rows(r.chart), rows(self.r.chart))
+
+    def test_components_without_uvs_are_charts(self):
+        V, F, _, _ = scaf.read_obj(gen("hemisphere", 4))
+        V2 = rows(V) + [[x + 5.0, y, z] for x, y, z in rows(V)]
+        F2 = rows(F) + [[a + len(V), b + len(V), c + len(V)] for a, b, c in rows(F)]
+        r = scaf.atlas(V2, F2, padding=0.0, compact_iterations=3)
+        self.assertEqual(r.chart_count, 2)
+        self.assertEqual(rows(r.chart), [0] * len(F) + [1] * len(F))
+        self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
+        self.assertGreater(min_chart_gap(r.uv, r.ft, rows(r.chart)), 0.0)
+
+    def test_init_input_from_a_previous_result(self):
+        r = scaf.atlas(self.V, self.F, self.r.uv, self.r.ft, init_input=True, compact_iterations=3)
+        self.assertEqual(r.chart_count, 6)
+        self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
+        self.assertEqual(len(set(zip(rows(self.r.chart), rows(r.chart)))), 6)  # same partition
+
+    def test_padding_arguments(self):
+        with self.assertRaises(ValueError):
+            scaf.atlas(self.V, self.F, self.UV, self.FT, padding=0.01, resolution=1024, padding_texels=4)
+        with self.assertRaises(ValueError):
+            scaf.atlas(self.V, self.F, self.UV, self.FT, padding_texels=4)
+        with self.assertRaises(scaf.UsageError) as cm:
+            scaf.atlas(self.V, self.F, self.UV, self.FT, padding=0.5)
+        self.assertIn("padding", str(cm.exception))
+
+    def test_cancel_keeps_a_certified_layout(self):
+        with self.assertRaises(scaf.Cancelled) as cm:
+            scaf.atlas(self.V, self.F, self.UV, self.FT, progress=lambda i: i.iteration == 2)
+        r = cm.exception.result
+        self.assertEqual(r.iterations["compact"], 0)
+        self.assertTrue(all(0.0 <= x <= 1.0 for p in rows(r.uv) for x in p))
+        self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
+        self.assertGreaterEqual(min_chart_gap(r.uv, r.ft, rows(r.chart)), r.padding * (1 - 1e-9))
+
+    def test_exception_in_callback(self):
+        calls = []
+
+        def bad(info):
+            calls.append(info)
+            raise RuntimeError("stop")
+
+        with scaf.Atlas() as a:
+            a.set_mesh(self.V, self.F, self.UV, self.FT)
+            with self.assertRaises(RuntimeError):
+                a.run(bad)
+            self.assertEqual(len(calls), 1)  # never called again after raising
+            uv, ft, chart = a.get_uv()
+            self.assertGreater(min(signed_areas(uv, ft)), 0.0)
+            with self.assertRaises(scaf.UsageError):  # once per set_mesh
+                a.run()
+
+    def test_handle_numbers_match_result(self):
+        with scaf.Atlas(padding=2 / 512, compact_iterations=5) as a:
+            a.set_mesh(self.V, self.F, self.UV, self.FT)
+            start = a.result()  # the starting layout is available (certified)
+            self.assertEqual(start.iterations, {"settle": 0, "compact": 0})
+            a.run()
+            r = a.result()
+            self.assertLessEqual(r.iterations["compact"], 5)
+            self.assertEqual(a.efficiency, r.efficiency)
+            self.assertEqual(a.min_gap, r.min_gap)
+        self.assertIn("6 chart", repr(r))
+
+
+@unittest.skipIf(np is None, "numpy absent: the whole suite already runs without it")
+class WithoutNumpyTest(unittest.TestCase):
+    """The package with numpy hidden: lists in, lists out."""
+
+    def test_lists_only(self):
+        path = gen("cubesphere", 4)
+        code = (
+            "import sys\n"
+            "sys.modules['numpy'] = None\n"  # makes `import numpy` fail
+            "import scaf\n"
+            "from scaf import _arrays\n"
+            "assert _arrays.np is None\n"
+            "V, F, UV, FT = scaf.read_obj(%r)\n"
+            "assert type(V) is list and type(UV) is list\n"
+            "r = scaf.atlas(V, F, UV, FT)\n"
+            "assert type(r.uv) is list and type(r.uv[0]) is list and type(r.chart) is list\n"
+            "assert r.chart_count == 6 and len(r.ft) == len(F)\n"
+            "p = scaf.param(V, F, UV, FT, iterations=3)\n"
+            "print(r.chart_count, repr(r.uv[0][0]), p.chart_count, len(p.uv))\n" % path
+        )
+        p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=os.environ)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        charts, u0, pcharts, nuv = p.stdout.split()
+        self.assertEqual((charts, pcharts), ("6", "6"))
+        V, F, UV, FT = scaf.read_obj(path)
+        r = scaf.atlas(V, F, UV, FT)
+        self.assertEqual(float(u0), float(r.uv[0][0]))
+
+
+if __name__ == "__main__":
+    unittest.main()
