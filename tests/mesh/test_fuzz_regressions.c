@@ -64,8 +64,6 @@ static int for_each_file(const char *rel, int must_parse)
     while ((ent = readdir(d)) != NULL) {
         size_t len = strlen(ent->d_name);
         if (ent->d_name[0] == '.' || (len > 3 && strcmp(ent->d_name + len - 3, ".md") == 0)) continue;
-        /* param_*: fuzz_param's binary seeds share the corpus folder; they are not mesh files */
-        if (must_parse && strncmp(ent->d_name, "param_", 6) == 0) continue;
         snprintf(path, sizeof path, "%s/%s", dir, ent->d_name);
         scaf_status s = check_input(path);
         if (must_parse && s != SCAF_OK) print_error("seed %s does not parse\n", path);
