@@ -1,7 +1,9 @@
 /* Tests of the mean-value (MVC) start, opt/mvc and OPT_EMBED_MVC: every
  * triangle of the generated meshes exactly positive without falling back,
  * positive finite weights on obtuse and degenerate triangles (with the
- * uniform row fallback only where a corner is degenerate), linear
+ * uniform row fallback only where a corner is degenerate), a bijective
+ * start on a chart with degenerate 3D triangles, harmonic falling back to
+ * exactly the mean-value map, a singular system reported, linear
  * reproduction on a flat irregular disk, and on bad/plane_holes (skipped
  * without ../shared/data) a bijective start with a lower energy than
  * Tutte's. */
@@ -151,6 +153,63 @@ static void weights_positive_on_bad_triangles(void **state)
     for (int k = 0; k < 6 * nf; k++) assert_true(isfinite(W2[k]) && W2[k] > 0);
 }
 
+/* A chart whose 3D surface has degenerate triangles (a zero-length edge,
+ * a vertex on its opposite edge) still gets a bijective mean-value start
+ * without falling back: the rows of those vertices are uniform, the others
+ * mean-value, all positive. */
+static void mvc_degenerate_3d_triangles(void **state)
+{
+    (void)state;
+    mesh m = {0};
+    scaf_error e;
+    assert_int_equal(mesh_sample_make("grid", 8, &m, &e), SCAF_OK);
+    double lo = INFINITY, hi = -INFINITY;
+    for (int v = 0; v < m.nv; v++) { lo = fmin(lo, m.V[3 * v]); hi = fmax(hi, m.V[3 * v]); }
+    /* faces with all three vertices strictly inside */
+    int picked[2] = {-1, -1}, np = 0;
+    for (int f = 0; f < m.nf && np < 2; f++) {
+        int inside = 1;
+        for (int k = 0; k < 3; k++) {
+            const double *p = m.V + 3 * m.F[3 * f + k];
+            inside &= p[0] > lo && p[0] < hi && p[1] > lo && p[1] < hi;
+        }
+        if (!inside) continue;
+        if (np == 1) { /* far from the first one: no shared vertex */
+            int shares = 0;
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) shares |= m.F[3 * f + a] == m.F[3 * picked[0] + b];
+            if (shares) continue;
+        }
+        picked[np++] = f;
+    }
+    assert_int_equal(np, 2);
+    int *F0 = m.F + 3 * picked[0], *F1 = m.F + 3 * picked[1];
+    memcpy(m.V + 3 * F0[1], m.V + 3 * F0[0], 3 * sizeof(double)); /* zero-length edge */
+    for (int r = 0; r < 3; r++) /* vertex 0 onto the midpoint of edge 1-2: angle pi */
+        m.V[3 * F1[0] + r] = 0.5 * (m.V[3 * F1[1] + r] + m.V[3 * F1[2] + r]);
+    double *W = malloc(6 * (size_t)m.nf * sizeof *W);
+    unsigned char *uni = malloc((size_t)m.nv);
+    assert_non_null(W);
+    assert_non_null(uni);
+    assert_true(opt_mvc_corner_weights(m.nv, m.V, m.nf, m.F, W, uni) >= 3);
+    for (int k = 0; k < 6 * m.nf; k++) assert_true(isfinite(W[k]) && W[k] > 0);
+    int *start, *verts;
+    opt_chart_loops L = loops_of(&m, &start, &verts);
+    double *UV = malloc(2 * (size_t)m.nv * sizeof *UV);
+    assert_non_null(UV);
+    int fb = -1;
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, UV, &fb, &e), SCAF_OK);
+    assert_int_equal(fb, 0);
+    assert_int_equal(count_nonpositive(&m, UV), 0);
+    assert_bijective(&m, UV);
+    free(W);
+    free(uni);
+    free(UV);
+    free(start);
+    free(verts);
+    mesh_free(&m);
+}
+
 /* Mean-value coordinates reproduce linear functions: a flat disk whose
  * boundary is fixed at its own positions maps to itself. Tutte does not on
  * an irregular mesh, so this tells the weights and the solve apart from
@@ -284,6 +343,7 @@ int main(void)
         cmocka_unit_test(mvc_hemisphere),
         cmocka_unit_test(mvc_holes),
         cmocka_unit_test(weights_positive_on_bad_triangles),
+        cmocka_unit_test(mvc_degenerate_3d_triangles),
         cmocka_unit_test(mvc_reproduces_flat_irregular_grid),
         cmocka_unit_test(mvc_singular_is_an_error),
         cmocka_unit_test(harmonic_falls_back_to_mvc),
