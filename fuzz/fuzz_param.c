@@ -5,7 +5,8 @@
  *   byte 0       vertex count 3 + b % 30
  *   byte 1       face count 1 + b % 48
  *   byte 2       flags: bit 0 harmonic start, bits 1-2 energy, bit 3 the
- *                atlas instead of param, bit 4 UVs from the data too
+ *                atlas instead of param, bit 4 UVs from the data too,
+ *                bit 5 mean-value start (when bit 0 is clear)
  *   then         per vertex 3 coordinates of 2 bytes (int16 / 256), per
  *                face 3 vertex bytes (mod vertex count), and with bit 4 per
  *                vertex one UV of 2 x 2 bytes, FT = F.
@@ -44,7 +45,7 @@ static void run_param(int nv, const double *V, int nf, const int *F, const doubl
                       unsigned flags)
 {
     scaf_options_t o = scaf_options_default();
-    o.init = flags & 1 ? SCAF_INIT_HARMONIC : SCAF_INIT_TUTTE;
+    o.init = flags & 1 ? SCAF_INIT_HARMONIC : flags & 32 ? SCAF_INIT_MVC : SCAF_INIT_TUTTE;
     o.energy = (scaf_energy)((flags >> 1) % 3);
     o.max_iterations = 3;
     scaf_param_t *p = scaf_param_new(&o);

@@ -6,7 +6,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 PACKAGES=(
   build-essential cmake pkg-config clang
-  libsuitesparse-dev libopenblas-dev libmetis-dev   # CHOLMOD sparse Cholesky
+  libsuitesparse-dev libopenblas-dev libmetis-dev   # CHOLMOD sparse Cholesky, UMFPACK sparse LU
   zlib1g-dev                                        # .gz input
   libpng-dev                                        # PNG pictures
   libcmocka-dev                                     # tests

@@ -50,7 +50,8 @@ static void usage(FILE *o)
             "  --resolution R           texture size in texels; with --padding-texels K the\n"
             "                           padding is K / R\n"
             "  --padding-texels K       padding in texels (needs --resolution)\n"
-            "  --init NAME              tutte (default), harmonic, or input: start from the\n"
+            "  --init NAME              tutte (default), harmonic, mvc (mean-value), or\n"
+            "                           input: start from the\n"
             "                           input UVs, only when the exact checker proves them\n"
             "                           bijective\n"
             "  --iterations N           cap of the settling iterations (default 30)\n"
@@ -143,6 +144,7 @@ int cmd_atlas(int argc, char **argv)
             NEED_VALUE();
             if (!strcmp(v, "tutte")) opt.base.init = SCAF_INIT_TUTTE;
             else if (!strcmp(v, "harmonic")) opt.base.init = SCAF_INIT_HARMONIC;
+            else if (!strcmp(v, "mvc")) opt.base.init = SCAF_INIT_MVC;
             else if (!strcmp(v, "input")) opt.init_input = 1;
             else BAD_VALUE();
         } else if (!strcmp(a, "--iterations")) {

@@ -42,7 +42,7 @@ static void usage(FILE *o)
             "  --tolerance T          stop when E decreases by less than T relatively in one\n"
             "                         iteration (default 1e-6; 0 = run all iterations)\n"
             "  --energy NAME          symmetric-dirichlet (default), arap, conformal\n"
-            "  --init NAME            tutte (default) or harmonic\n"
+            "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n"
             "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
             "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01)\n"
             "  --min-angle DEG        scaffold minimum angle (default 20)\n"
@@ -146,6 +146,7 @@ int cmd_param(int argc, char **argv)
             NEED_VALUE();
             if (!strcmp(v, "tutte")) opt.init = SCAF_INIT_TUTTE;
             else if (!strcmp(v, "harmonic")) opt.init = SCAF_INIT_HARMONIC;
+            else if (!strcmp(v, "mvc")) opt.init = SCAF_INIT_MVC;
             else BAD_VALUE();
         } else if (!strcmp(a, "--box-scale")) {
             NEED_VALUE();

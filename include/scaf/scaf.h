@@ -64,7 +64,8 @@ SCAF_API const char *scaf_version(void);
  * with UVs (UV + FT) has one chart per piece of the mesh cut along its UV
  * seams (edges whose two sides use different UV indices). Every chart must
  * be a manifold, orientable disk, possibly with holes. Each chart starts
- * as a Tutte (or harmonic) embedding on a circle of the chart's 3D area;
+ * as a mean-value (or Tutte, or harmonic) embedding on a circle of the
+ * chart's 3D area;
  * several charts start on a grid of circles that do not touch. Then the
  * SCAF iteration runs inside a scaffold: the UV map is bijective (no
  * flipped triangle, no overlap) after every iteration.
@@ -84,8 +85,11 @@ typedef enum scaf_energy {
 /* Initial embedding of each chart. */
 typedef enum scaf_init {
     SCAF_INIT_TUTTE = 0, /* uniform weights: always valid */
-    SCAF_INIT_HARMONIC   /* cotangent weights, falls back to Tutte if any
-                            triangle flips */
+    SCAF_INIT_HARMONIC,  /* cotangent weights; if any triangle flips, falls
+                            back to mean-value, then Tutte */
+    SCAF_INIT_MVC        /* mean-value coordinates (Floater 2003): positive
+                            weights from the 3D angles; falls back to Tutte
+                            if rounding flips a triangle */
 } scaf_init;
 
 /* Options. Always start from scaf_options_default() so that fields added
@@ -93,7 +97,7 @@ typedef enum scaf_init {
 typedef struct scaf_options {
     scaf_energy energy;      /* mesh distortion energy
                                 (SCAF_ENERGY_SYMMETRIC_DIRICHLET) */
-    scaf_init init;          /* initial embedding (SCAF_INIT_TUTTE) */
+    scaf_init init;          /* initial embedding (SCAF_INIT_MVC) */
     int max_iterations;      /* iteration cap of scaf_param_run (50) */
     double tolerance;        /* stop when the relative decrease over one
                                 iteration of the reported energy E, or of

@@ -380,7 +380,7 @@ class Param(_Handle):
     arguments named like the C fields (energy, init, max_iterations,
     tolerance, box_scale, box_square, box_points_per_side, lambda_ratio,
     min_angle_deg, step_fraction); energy and init take names
-    ("symmetric_dirichlet", "arap", "conformal"; "tutte", "harmonic") or
+    ("symmetric_dirichlet", "arap", "conformal"; "tutte", "harmonic", "mvc") or
     the C int values.
 
         with scaf.Param(energy="conformal") as p:
@@ -539,7 +539,7 @@ class Atlas(_Handle):
 
 # --- one-call functions ----------------------------------------------------------
 
-def param(V, F, UV=None, FT=None, *, energy="symmetric_dirichlet", init="tutte", iterations=None,
+def param(V, F, UV=None, FT=None, *, energy="symmetric_dirichlet", init="mvc", iterations=None,
           progress=None, **options):
     """Bijective parametrization of a mesh with SCAF (scaf_param_*).
 
@@ -547,7 +547,7 @@ def param(V, F, UV=None, FT=None, *, energy="symmetric_dirichlet", init="tutte",
     UV #UV x 2 and FT #F x 3 the charts are the pieces cut along the UV
     seams (the UV values are not used), else one chart per connected
     component. energy: "symmetric_dirichlet" | "arap" | "conformal";
-    init: "tutte" | "harmonic"; iterations: cap (default: the C default,
+    init: "mvc" | "tutte" | "harmonic"; iterations: cap (default: the C default,
     50); more options as keywords (see Param). progress(IterationInfo)
     after each iteration, true to cancel. Returns a ParamResult; raises
     ValueError (bad arrays), MeshError, UsageError, NumericError,

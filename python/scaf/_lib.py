@@ -40,7 +40,7 @@ SCAF_ERR_CANCELLED = 7
 # passed through to C, which validates it, so a value appended to the C
 # enum later (a new init, say) works before this table knows its name.
 ENERGIES = {"symmetric_dirichlet": 0, "arap": 1, "conformal": 2}
-INITS = {"tutte": 0, "harmonic": 1}
+INITS = {"tutte": 0, "harmonic": 1, "mvc": 2}
 PHASES = ("assembly", "analysis", "factorization", "solve", "line_search", "scaffold", "other")
 PHASE_COUNT = len(PHASES)  # SCAF_PHASE_COUNT
 ATLAS_PHASES = ("settle", "compact")  # SCAF_ATLAS_SETTLE, SCAF_ATLAS_COMPACT

@@ -75,6 +75,7 @@ int main(void)
     printf("enum SCAF_ERR_CANCELLED %d\n", (int)SCAF_ERR_CANCELLED);
     printf("enum SCAF_ENERGY_CONFORMAL %d\n", (int)SCAF_ENERGY_CONFORMAL);
     printf("enum SCAF_INIT_HARMONIC %d\n", (int)SCAF_INIT_HARMONIC);
+    printf("enum SCAF_INIT_MVC %d\n", (int)SCAF_INIT_MVC);
     printf("enum SCAF_ATLAS_COMPACT %d\n", (int)SCAF_ATLAS_COMPACT);
     printf("enum sizeof %zu\n", sizeof(scaf_init));
     return 0;

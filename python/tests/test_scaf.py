@@ -175,6 +175,7 @@ class LibraryTest(unittest.TestCase):
         self.assertEqual(enums["SCAF_ERR_CANCELLED"], _lib.SCAF_ERR_CANCELLED)
         self.assertEqual(enums["SCAF_ENERGY_CONFORMAL"], _lib.ENERGIES["conformal"])
         self.assertEqual(enums["SCAF_INIT_HARMONIC"], _lib.INITS["harmonic"])
+        self.assertEqual(enums["SCAF_INIT_MVC"], _lib.INITS["mvc"])
         self.assertEqual(enums["SCAF_ATLAS_COMPACT"], len(_lib.ATLAS_PHASES) - 1)
         self.assertEqual(enums["sizeof"], ctypes.sizeof(_lib.c_enum))
 
@@ -248,6 +249,8 @@ class ParamTest(unittest.TestCase):
         for energy in ("conformal", "arap"):
             r = scaf.param(self.V, self.F, energy=energy, iterations=3)
             self.check_map(r, len(self.F))
+        for init in ("tutte", "mvc"):
+            self.check_map(scaf.param(self.V, self.F, init=init, iterations=2), len(self.F))
         r1 = scaf.param(self.V, self.F, init="harmonic", iterations=2)
         r2 = scaf.param(self.V, self.F, init=_lib.INITS["harmonic"], iterations=2)
         self.assertEqual(rows(r1.uv), rows(r2.uv))

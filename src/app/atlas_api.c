@@ -86,7 +86,7 @@ static scaf_status options_check(const scaf_atlas_options_t *o, scaf_error *err)
     const char *bad = NULL;
     if (!(o->padding >= 0.0 && o->padding < 0.5)) bad = "padding must be in [0, 0.5)";
     else if ((int)o->energy < 0 || o->energy > SCAF_ENERGY_CONFORMAL) bad = "energy is not a known energy";
-    else if ((int)o->init < 0 || o->init > SCAF_INIT_HARMONIC) bad = "init is not tutte or harmonic";
+    else if ((int)o->init < 0 || o->init > SCAF_INIT_MVC) bad = "init is not tutte, harmonic or mvc";
     else if (o->init_input != 0 && o->init_input != 1) bad = "init_input must be 0 or 1";
     else if (o->settle_iterations < 0) bad = "settle_iterations must be >= 0";
     else if (!finite_at_least(o->settle_tolerance, 0.0)) bad = "settle_tolerance must be a finite number >= 0";

@@ -32,7 +32,7 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     fputs(", \"resolution\": ", o);
     json_write_number(o, r->resolution > 0 ? r->resolution : NAN);
     fprintf(o, ", \"init\": \"%s\", \"settle_iterations\": %d, \"settle_tolerance\": ",
-            op->init_input ? "input" : (op->base.init == SCAF_INIT_HARMONIC ? "harmonic" : "tutte"),
+            op->init_input ? "input" : (op->base.init == SCAF_INIT_HARMONIC ? "harmonic" : op->base.init == SCAF_INIT_MVC ? "mvc" : "tutte"),
             op->settle_iterations);
     json_write_number(o, op->settle_tolerance);
     fprintf(o, ", \"compact_iterations\": %d, \"compact_box_scale\": ", op->compact_iterations);

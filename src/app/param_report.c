@@ -51,7 +51,7 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
     json_write_string(o, r->status);
     if (op) {
         fprintf(o, ",\n  \"options\": {\"energy\": \"%s\", \"init\": \"%s\", \"max_iterations\": %d, \"tolerance\": ",
-                energy_name(op->energy), op->init == SCAF_INIT_HARMONIC ? "harmonic" : "tutte", op->max_iterations);
+                energy_name(op->energy), op->init == SCAF_INIT_HARMONIC ? "harmonic" : op->init == SCAF_INIT_MVC ? "mvc" : "tutte", op->max_iterations);
         json_write_number(o, op->tolerance);
         fputs(", \"box_scale\": ", o);
         json_write_number(o, op->box_scale);

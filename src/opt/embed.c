@@ -3,7 +3,10 @@
  * Steps: validate, fill holes with fans, pin the outer loop to the circle,
  * assemble the weighted Laplacian of the free vertices (boundary columns
  * moved to the right side), solve for u and v together, drop the fill,
- * check every original triangle exactly. Loop direction is read from the
+ * check every original triangle exactly, and on a flip or a failed solve
+ * try the next method of the chain (harmonic -> mean-value -> Tutte; the
+ * mean-value system is assembled and solved in opt/mvc because it is not
+ * symmetric). Loop direction is read from the
  * faces: the face that owns boundary edge a -> b says which way is
  * counter-clockwise.
  */
@@ -16,6 +19,7 @@
 #include "geom/predicates.h"
 #include "opt/cholmod_solver.h"
 #include "opt/csc.h"
+#include "opt/mvc.h"
 
 static const double SCAF_PI = 3.14159265358979323846;
 
@@ -251,19 +255,27 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
     for (int v = 0; v < nv2; v++)
         if (!used[v]) fixed[v] = 1; /* unreferenced: stays at the center */
     /* ---- solve, check, fall back ---- */
-    int cotan = method == OPT_EMBED_HARMONIC;
-    for (int attempt = 0; attempt < 2; attempt++) {
+    /* Chain of attempts: the requested method, then Tutte (always valid for
+     * a disk). Harmonic tries mean-value before Tutte: its weights are
+     * positive, so it is bijective whenever the solve is exact enough. */
+    opt_embed_method chain[3];
+    int nchain = 0;
+    chain[nchain++] = method;
+    if (method == OPT_EMBED_HARMONIC) chain[nchain++] = OPT_EMBED_MVC;
+    if (method != OPT_EMBED_TUTTE) chain[nchain++] = OPT_EMBED_TUTTE;
+    for (int attempt = 0; attempt < nchain; attempt++) {
+        opt_embed_method m = chain[attempt];
         scaf_error e2;
         err_clear(&e2);
-        st = solve_laplace(nv2, V2, nf2, F2, fixed, cotan, UV2, &e2);
+        if (m == OPT_EMBED_MVC) st = opt_mvc_solve(nv2, V2, nf2, F2, fixed, UV2, &e2);
+        else st = solve_laplace(nv2, V2, nf2, F2, fixed, m == OPT_EMBED_HARMONIC, UV2, &e2);
         int bad = -1;
         if (st == SCAF_OK)
             for (int f = 0; f < nf && bad < 0; f++)
                 if (!(orient2d(UV2 + 2 * (size_t)F[3 * f], UV2 + 2 * (size_t)F[3 * f + 1], UV2 + 2 * (size_t)F[3 * f + 2]) > 0))
                     bad = f;
         if (st == SCAF_OK && bad < 0) break;
-        if (cotan && st != SCAF_ERR_NOMEM) {
-            cotan = 0;
+        if (attempt + 1 < nchain && st != SCAF_ERR_NOMEM) {
             if (used_fallback) *used_fallback = 1;
             st = SCAF_OK;
             continue;

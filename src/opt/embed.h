@@ -7,7 +7,9 @@
  * solve with opt/cholmod_solver). Harmonic: the same with cotangent
  * weights of the 3D triangles; when any triangle comes out inverted or
  * degenerate (decided with exact orient2d), or the cotangent system is not
- * positive definite, it falls back to Tutte. A chart with holes (more than
+ * positive definite, it falls back to mean-value, then Tutte. Mean-value
+ * (opt/mvc): positive weights from the 3D angles, a non-symmetric solve;
+ * checked exactly the same way, Tutte fallback. A chart with holes (more than
  * one boundary loop): each hole is filled with a fan around a temporary
  * vertex (at the hole's 3D centroid), the filled disk is embedded, and the
  * fill is dropped — the map of the chart stays valid.
@@ -27,7 +29,8 @@
 
 typedef enum opt_embed_method {
     OPT_EMBED_TUTTE = 0, /* uniform weights: always valid for a disk */
-    OPT_EMBED_HARMONIC   /* cotangent weights, Tutte fallback */
+    OPT_EMBED_HARMONIC,  /* cotangent weights, mean-value then Tutte fallback */
+    OPT_EMBED_MVC        /* mean-value weights (opt/mvc), Tutte fallback */
 } opt_embed_method;
 
 typedef struct opt_chart_loops {
@@ -39,8 +42,9 @@ typedef struct opt_chart_loops {
 
 /* nv vertices V (#V by 3), nf faces F (#F by 3, consistently oriented),
  * loops: the chart's boundary loops (either direction). method: Tutte or
- * harmonic. UV: #V by 2 out. used_fallback (may be NULL): set to 1 when
- * harmonic fell back to Tutte, else 0. */
+ * harmonic or mean-value. UV: #V by 2 out. used_fallback (may be NULL):
+ * set to 1 when the requested method was not the one used (harmonic fell
+ * back to mean-value or Tutte, mean-value to Tutte), else 0. */
 scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
                             const opt_chart_loops *loops, opt_embed_method method, double *UV,
                             int *used_fallback, scaf_error *err);

@@ -263,7 +263,7 @@ static void defaults_are_documented_values(void **state)
     assert_true(o.lambda_ratio == 0.01);
     assert_true(o.min_angle_deg == 20.0);
     assert_int_equal(o.energy, SCAF_ENERGY_SYMMETRIC_DIRICHLET);
-    assert_int_equal(o.init, SCAF_INIT_TUTTE);
+    assert_int_equal(o.init, SCAF_INIT_MVC);
     for (int k = 0; k < SCAF_PHASE_COUNT; k++) assert_string_not_equal(scaf_phase_name((scaf_phase)k), "unknown");
 }
 

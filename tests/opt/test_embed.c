@@ -72,7 +72,7 @@ static void harmonic_annulus_hole_filled(void **state) { (void)state; check_embe
 
 /* Cotangent weights go negative on obtuse triangles: a harmonic map of a
  * flat fan whose every third vertex is pulled toward x = 0 folds, so the
- * embedding must fall back to Tutte and still be valid; a squashed but
+ * embedding must fall back (to mean-value, see test_mvc) and still be valid; a squashed but
  * well-shaped mesh keeps the harmonic map. */
 static void harmonic_falls_back_when_needed(void **state)
 {
