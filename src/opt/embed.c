@@ -20,6 +20,7 @@
 #include "opt/cholmod_solver.h"
 #include "opt/csc.h"
 #include "opt/mvc.h"
+#include "opt/simplices.h"
 
 static const double SCAF_PI = 3.14159265358979323846;
 
@@ -289,5 +290,104 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
     if (st == SCAF_OK) memcpy(UV, UV2, 2 * (size_t)nv * sizeof *UV);
 done:
     free(dir); free(V2); free(F2); free(UV2); free(fixed); free(used);
+    return st;
+}
+
+/* Symmetric Dirichlet energy of the map, area-weighted mean over the
+ * faces with a non-degenerate 3D rest shape: ||J||^2 + ||J^-1||^2, and
+ * for 2 by 2, ||J^-1|| = ||J|| / |det J|. */
+static double chart_energy(const double *V, int nf, const int *F, const double *UV)
+{
+    double sum = 0.0, wsum = 0.0;
+    for (int f = 0; f < nf; f++) {
+        const int *t = F + 3 * (size_t)f;
+        double q[6];
+        opt_flatten_triangle(V + 3 * (size_t)t[0], V + 3 * (size_t)t[1], V + 3 * (size_t)t[2], q);
+        double e00 = q[2] - q[0], e10 = q[3] - q[1], e01 = q[4] - q[0], e11 = q[5] - q[1];
+        double rdet = e00 * e11 - e01 * e10;
+        if (!(rdet > 0.0)) continue;
+        const double *u0 = UV + 2 * (size_t)t[0], *u1 = UV + 2 * (size_t)t[1], *u2 = UV + 2 * (size_t)t[2];
+        double d00 = u1[0] - u0[0], d10 = u1[1] - u0[1], d01 = u2[0] - u0[0], d11 = u2[1] - u0[1];
+        /* J = D E^-1 */
+        double i00 = e11 / rdet, i01 = -e01 / rdet, i10 = -e10 / rdet, i11 = e00 / rdet;
+        double j00 = d00 * i00 + d01 * i10, j01 = d00 * i01 + d01 * i11;
+        double j10 = d10 * i00 + d11 * i10, j11 = d10 * i01 + d11 * i11;
+        double n2 = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
+        double A = 0.5 * rdet;
+        sum += A * (n2 + n2 / (det * det));
+        wsum += A;
+    }
+    return wsum > 0.0 ? sum / wsum : INFINITY;
+}
+
+typedef struct loop_rank {
+    double length;
+    int loop;
+} loop_rank;
+
+static int cmp_loop_rank(const void *x, const void *y)
+{
+    const loop_rank *a = x, *b = y;
+    if (a->length != b->length) return a->length > b->length ? -1 : 1;
+    return a->loop - b->loop;
+}
+
+scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, const opt_chart_loops *loops,
+                                 opt_embed_method method, int max_tries, double *UV, int *used_fallback,
+                                 double *energy, scaf_error *err)
+{
+    scaf_error tmp;
+    if (!err) err = &tmp;
+    int nl = loops ? loops->nloops : 0;
+    if (nl <= 1 || max_tries <= 1) {
+        scaf_status st = opt_embed_chart(nv, V, nf, F, loops, method, UV, used_fallback, err);
+        if (st == SCAF_OK && energy) *energy = chart_energy(V, nf, F, UV);
+        return st;
+    }
+    /* candidates: the longest loops first (the longest is the default
+     * choice, so it wins ties) */
+    loop_rank *rank = malloc(sizeof *rank * (size_t)nl);
+    double *trial = malloc(sizeof(double) * 2 * (size_t)nv);
+    if (!rank || !trial) {
+        free(rank);
+        free(trial);
+        return err_nomem(err, "embedding");
+    }
+    for (int l = 0; l < nl; l++) {
+        const int *lv = loops->vertices + loops->start[l];
+        int len = loops->start[l + 1] - loops->start[l];
+        double L = 0.0;
+        for (int k = 0; k < len && len > 0; k++) L += dist3(V + 3 * (size_t)lv[k], V + 3 * (size_t)lv[(k + 1) % len]);
+        rank[l].length = L;
+        rank[l].loop = l;
+    }
+    qsort(rank, (size_t)nl, sizeof *rank, cmp_loop_rank);
+    int tries = nl < max_tries ? nl : max_tries;
+    double best = INFINITY;
+    int found = 0, fb = 0;
+    scaf_status st = SCAF_OK;
+    for (int i = 0; i < tries; i++) {
+        opt_chart_loops ol = *loops;
+        ol.outer = rank[i].loop;
+        int f = 0;
+        st = opt_embed_chart(nv, V, nf, F, &ol, method, trial, &f, err);
+        if (st == SCAF_ERR_NOMEM || (st != SCAF_OK && !found && i == tries - 1)) break;
+        if (st != SCAF_OK) continue; /* another outer loop may still work */
+        double e = chart_energy(V, nf, F, trial);
+        if (!found || e < best) {
+            best = e;
+            fb = f;
+            memcpy(UV, trial, sizeof(double) * 2 * (size_t)nv);
+        }
+        found = 1;
+    }
+    if (found) {
+        st = SCAF_OK;
+        err_clear(err);
+        if (used_fallback) *used_fallback = fb;
+        if (energy) *energy = best;
+    }
+    free(rank);
+    free(trial);
     return st;
 }

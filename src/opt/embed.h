@@ -49,4 +49,16 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
                             const opt_chart_loops *loops, opt_embed_method method, double *UV,
                             int *used_fallback, scaf_error *err);
 
+/* The same, choosing which boundary loop goes on the circle: for a chart
+ * with holes any loop can be the outer one, and the choice decides how
+ * far the start is from a good map (bad/plane_holes.obj, 27 loops: start
+ * energy 4.5e11 to 5.7e15 depending on the loop). Tries the max_tries
+ * longest loops (loops->outer is ignored when more than one is tried) and
+ * keeps the embedding of lowest symmetric Dirichlet energy (the longest
+ * loop on ties); a loop whose embedding fails is skipped, the error is
+ * returned only when every try failed. energy (may be NULL): that energy. */
+scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, const opt_chart_loops *loops,
+                                 opt_embed_method method, int max_tries, double *UV, int *used_fallback,
+                                 double *energy, scaf_error *err);
+
 #endif /* SCAF_OPT_EMBED_H */
