@@ -90,6 +90,28 @@ static void give_new_uvs(mesh *m, double **UV, int **FT)
     }
 }
 
+/* A mesh read from path, with new UVs (o: the mesh to write). */
+typedef struct with_uvs {
+    mesh m, o;
+    double *UV;
+    int *FT;
+} with_uvs;
+
+static void read_with_new_uvs(const char *path, with_uvs *w)
+{
+    scaf_error err;
+    assert_int_equal(mesh_read(path, &w->m, NULL, &err), SCAF_OK);
+    give_new_uvs(&w->m, &w->UV, &w->FT);
+    w->o = (mesh){w->m.nv, w->m.V, w->m.nf, w->m.F, 3 * w->m.nf, w->UV, w->FT};
+}
+
+static void free_with_uvs(with_uvs *w)
+{
+    free(w->UV);
+    free(w->FT);
+    mesh_free(&w->m);
+}
+
 /* Rewrite `text` (stored in in_name) to out_name and check everything. */
 static void rewrite_and_check(const char *in_name, const char *text, const char *out_name, int crlf)
 {
@@ -97,14 +119,13 @@ static void rewrite_and_check(const char *in_name, const char *text, const char 
     test_tmp_path(in_name, in, sizeof in);
     test_tmp_path(out_name, out, sizeof out);
     write_text(in, text);
-    mesh m;
+    with_uvs w;
+    read_with_new_uvs(in, &w);
+    const mesh m = w.m;
+    const double *UV = w.UV;
+    const int *FT = w.FT;
     scaf_error err;
-    assert_int_equal(mesh_read(in, &m, NULL, &err), SCAF_OK);
-    double *UV;
-    int *FT;
-    give_new_uvs(&m, &UV, &FT);
-    mesh o = {m.nv, m.V, m.nf, m.F, 3 * m.nf, UV, FT};
-    scaf_status st = obj_rewrite_uv(in, out, &o, &err);
+    scaf_status st = obj_rewrite_uv(in, out, &w.o, &err);
     if (st) print_error("%s\n", err.message);
     assert_int_equal(st, SCAF_OK);
 
@@ -145,9 +166,7 @@ static void rewrite_and_check(const char *in_name, const char *text, const char 
         for (const char *q = strchr(got, '\n'); q; q = strchr(q + 1, '\n')) assert_int_equal(q[-1], '\r');
     }
     free(got);
-    free(UV);
-    free(FT);
-    mesh_free(&m);
+    free_with_uvs(&w);
 }
 
 static void keeps_everything_but_uvs(void **state)
@@ -189,13 +208,11 @@ static void gzip_input_and_in_place(void **state)
     assert_non_null(g);
     assert_int_equal(gzwrite(g, sample_obj, (unsigned)strlen(sample_obj)), (int)strlen(sample_obj));
     assert_int_equal(gzclose(g), Z_OK);
-    mesh m;
+    with_uvs w;
+    read_with_new_uvs(gz, &w);
+    const mesh m = w.m, o = w.o;
+    const double *UV = w.UV;
     scaf_error err;
-    assert_int_equal(mesh_read(gz, &m, NULL, &err), SCAF_OK);
-    double *UV;
-    int *FT;
-    give_new_uvs(&m, &UV, &FT);
-    mesh o = {m.nv, m.V, m.nf, m.F, 3 * m.nf, UV, FT};
     test_tmp_path("rewrite_from_gz.obj", path, sizeof path);
     assert_int_equal(obj_rewrite_uv(gz, path, &o, &err), SCAF_OK);
     /* and in place: the output is its own input */
@@ -212,9 +229,7 @@ static void gzip_input_and_in_place(void **state)
     assert_int_equal(comments, 2);
     free(got);
     mesh_free(&b);
-    free(UV);
-    free(FT);
-    mesh_free(&m);
+    free_with_uvs(&w);
 }
 
 static void changed_file_is_refused(void **state)
@@ -225,13 +240,10 @@ static void changed_file_is_refused(void **state)
     test_tmp_path("rewrite_changed_out.obj", out, sizeof out);
     remove(out);
     write_text(in, sample_obj);
-    mesh m;
+    with_uvs w;
+    read_with_new_uvs(in, &w);
+    mesh m = w.m, o = w.o;
     scaf_error err;
-    assert_int_equal(mesh_read(in, &m, NULL, &err), SCAF_OK);
-    double *UV;
-    int *FT;
-    give_new_uvs(&m, &UV, &FT);
-    mesh o = {m.nv, m.V, m.nf, m.F, 3 * m.nf, UV, FT};
     /* a face of the mesh differs from the file */
     int keep = m.F[4];
     m.F[4] = (m.F[4] + 1) % m.nv;
@@ -255,9 +267,7 @@ static void changed_file_is_refused(void **state)
     assert_int_equal(obj_rewrite_uv(in, out, &o, &err), SCAF_ERR_IO);
     assert_false(test_exists(out));
     free(more);
-    free(UV);
-    free(FT);
-    mesh_free(&m);
+    free_with_uvs(&w);
 }
 
 /* `scaf param` and `scaf atlas` keep the input's normals and materials. */
