@@ -131,18 +131,7 @@ static int block_ordering(opt_chol *c, const opt_csc *A, int *perm)
             }
         }
         cp[nb] = out;
-        cholmod_sparse G;
-        memset(&G, 0, sizeof G);
-        G.nrow = G.ncol = (size_t)nb;
-        G.nzmax = (size_t)out;
-        G.p = cp;
-        G.i = ri;
-        G.stype = 1;
-        G.itype = CHOLMOD_INT;
-        G.xtype = CHOLMOD_PATTERN;
-        G.dtype = CHOLMOD_DOUBLE;
-        G.sorted = 1;
-        G.packed = 1;
+        cholmod_sparse G = opt_cholmod_pattern_view(nb, cp, ri, 1);
         ok = c->ordering == OPT_ORDER_METIS ? cholmod_metis(&G, NULL, 0, 1, pv, &c->cm)
                                             : cholmod_amd(&G, NULL, 0, pv, &c->cm);
         if (ok)
@@ -257,18 +246,7 @@ static cholmod_factor *analyze_given_fast(opt_chol *c, const opt_csc *A, const i
                 si[first[pc]++] = pr;
         }
     }
-    cholmod_sparse S;
-    memset(&S, 0, sizeof S);
-    S.nrow = S.ncol = n;
-    S.nzmax = (size_t)sp[n];
-    S.p = sp;
-    S.i = si;
-    S.stype = 1;
-    S.itype = CHOLMOD_INT;
-    S.xtype = CHOLMOD_PATTERN;
-    S.dtype = CHOLMOD_DOUBLE;
-    S.sorted = 0;
-    S.packed = 1;
+    cholmod_sparse S = opt_cholmod_pattern_view((int)n, sp, si, 0);
     F = cholmod_transpose(&S, 0, cm); /* tril(A(p,p)) by columns, sorted */
     if (!F) goto done;
     if (!cholmod_etree(&S, parent, cm)) goto done;

@@ -13,4 +13,9 @@
  * packed). CHOLMOD must never free it: it owns nothing. */
 cholmod_sparse opt_csc_cholmod_view(const opt_csc *A);
 
+/* A pattern-only header (no values) over n columns p (n+1 offsets) and
+ * row indices i, upper triangle (stype 1), int indices, packed; sorted
+ * says whether each column's rows are ascending. Owns nothing either. */
+cholmod_sparse opt_cholmod_pattern_view(int n, int *p, int *i, int sorted);
+
 #endif
