@@ -19,6 +19,7 @@
 #include "geom/predicates.h"
 #include "opt/cholmod_solver.h"
 #include "opt/csc.h"
+#include "opt/energy.h"
 #include "opt/mvc.h"
 #include "opt/simplices.h"
 
@@ -293,31 +294,12 @@ done:
     return st;
 }
 
-/* Symmetric Dirichlet energy of the map, area-weighted mean over the
- * faces with a non-degenerate 3D rest shape: ||J||^2 + ||J^-1||^2, and
- * for 2 by 2, ||J^-1|| = ||J|| / |det J|. */
-static double chart_energy(const double *V, int nf, const int *F, const double *UV)
+/* The reported energy E of a start: symmetric Dirichlet, area-weighted
+ * mean (opt/energy over the chart's 3D rest frames). */
+static double start_energy(const opt_simplices *S, const double *UV)
 {
-    double sum = 0.0, wsum = 0.0;
-    for (int f = 0; f < nf; f++) {
-        const int *t = F + 3 * (size_t)f;
-        double q[6];
-        opt_flatten_triangle(V + 3 * (size_t)t[0], V + 3 * (size_t)t[1], V + 3 * (size_t)t[2], q);
-        double e00 = q[2] - q[0], e10 = q[3] - q[1], e01 = q[4] - q[0], e11 = q[5] - q[1];
-        double rdet = e00 * e11 - e01 * e10;
-        if (!(rdet > 0.0)) continue;
-        const double *u0 = UV + 2 * (size_t)t[0], *u1 = UV + 2 * (size_t)t[1], *u2 = UV + 2 * (size_t)t[2];
-        double d00 = u1[0] - u0[0], d10 = u1[1] - u0[1], d01 = u2[0] - u0[0], d11 = u2[1] - u0[1];
-        /* J = D E^-1 */
-        double i00 = e11 / rdet, i01 = -e01 / rdet, i10 = -e10 / rdet, i11 = e00 / rdet;
-        double j00 = d00 * i00 + d01 * i10, j01 = d00 * i01 + d01 * i11;
-        double j10 = d10 * i00 + d11 * i10, j11 = d10 * i01 + d11 * i11;
-        double n2 = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
-        double A = 0.5 * rdet;
-        sum += A * (n2 + n2 / (det * det));
-        wsum += A;
-    }
-    return wsum > 0.0 ? sum / wsum : INFINITY;
+    opt_term t = {S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+    return opt_term_mean_energy(&t, UV);
 }
 
 typedef struct loop_rank {
@@ -339,9 +321,15 @@ scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, 
     scaf_error tmp;
     if (!err) err = &tmp;
     int nl = loops ? loops->nloops : 0;
-    if (nl <= 1 || max_tries <= 1) {
+    /* the rest frames; a chart with a degenerate 3D triangle has no
+     * energy to compare starts by, and gets the longest loop */
+    opt_simplices S = {0};
+    scaf_error serr;
+    int measurable = nf > 0 && opt_simplices_from_surface(&S, nv, V, nf, F, &serr) == SCAF_OK;
+    if (nl <= 1 || max_tries <= 1 || !measurable) {
         scaf_status st = opt_embed_chart(nv, V, nf, F, loops, method, UV, used_fallback, err);
-        if (st == SCAF_OK && energy) *energy = chart_energy(V, nf, F, UV);
+        if (energy) *energy = st == SCAF_OK && measurable ? start_energy(&S, UV) : NAN;
+        opt_simplices_free(&S);
         return st;
     }
     /* candidates: the longest loops first (the longest is the default
@@ -351,6 +339,7 @@ scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, 
     if (!rank || !trial) {
         free(rank);
         free(trial);
+        opt_simplices_free(&S);
         return err_nomem(err, "embedding");
     }
     for (int l = 0; l < nl; l++) {
@@ -373,7 +362,7 @@ scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, 
         st = opt_embed_chart(nv, V, nf, F, &ol, method, trial, &f, err);
         if (st == SCAF_ERR_NOMEM || (st != SCAF_OK && !found && i == tries - 1)) break;
         if (st != SCAF_OK) continue; /* another outer loop may still work */
-        double e = chart_energy(V, nf, F, trial);
+        double e = start_energy(&S, trial);
         if (!found || e < best) {
             best = e;
             fb = f;
@@ -389,5 +378,6 @@ scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, 
     }
     free(rank);
     free(trial);
+    opt_simplices_free(&S);
     return st;
 }

@@ -56,7 +56,9 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
  * longest loops (loops->outer is ignored when more than one is tried) and
  * keeps the embedding of lowest symmetric Dirichlet energy (the longest
  * loop on ties); a loop whose embedding fails is skipped, the error is
- * returned only when every try failed. energy (may be NULL): that energy. */
+ * returned only when every try failed. A chart with a degenerate 3D
+ * triangle (no energy to compare by) gets the longest loop. energy (may
+ * be NULL): the start's E (opt_term_mean_energy), NAN when unmeasurable. */
 scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, const opt_chart_loops *loops,
                                  opt_embed_method method, int max_tries, double *UV, int *used_fallback,
                                  double *energy, scaf_error *err);
