@@ -21,7 +21,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
-#include "cli_write_uv.h"
+#include "cli_mesh_io.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -214,15 +214,8 @@ int cmd_atlas(int argc, char **argv)
     scaf_error err;
     err_clear(&err);
     mesh_read_info rinfo;
-    if (mesh_read(in, &m, &rinfo, &err) != SCAF_OK) {
-        fprintf(stderr, "scaf atlas: %s\n", err.message);
-        return err.code == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_INPUT;
-    }
-    {
-        char warn[512];
-        if (mesh_read_warnings(&rinfo, warn, sizeof warn) > 0 && !quiet)
-            fprintf(stderr, "scaf atlas: %s: warning: %s\n", in, warn);
-    }
+    int read_rc = cli_read_mesh("atlas", in, quiet, &m, &rinfo);
+    if (read_rc != EXIT_OK) return read_rc;
     int rc = EXIT_OK;
     atlas a;
     progress_state ps = {0};

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_mesh_io.h"
 #include "commands.h"
 #include "base/json_write.h"
 #include "exit_codes.h"
@@ -212,15 +213,11 @@ int cmd_info(int argc, char **argv)
 
     mesh m;
     mesh_read_info ri;
+    int read_rc = cli_read_mesh("info", path, 0, &m, &ri);
+    if (read_rc != EXIT_OK) return read_rc;
     scaf_error err;
     err_clear(&err);
-    scaf_status st = mesh_read(path, &m, &ri, &err);
-    if (st) {
-        fprintf(stderr, "scaf info: %s\n", err.message);
-        return exit_code_for(st);
-    }
-    char warn[512];
-    if (mesh_read_warnings(&ri, warn, sizeof warn) > 0) fprintf(stderr, "scaf info: warning: %s: %s\n", path, warn);
+    scaf_status st;
 
     mesh_topology t;
     mesh_charts ch;

@@ -19,7 +19,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
-#include "cli_write_uv.h"
+#include "cli_mesh_io.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
@@ -201,15 +201,8 @@ int cmd_param(int argc, char **argv)
     scaf_error err;
     err_clear(&err);
     mesh_read_info rinfo;
-    if (mesh_read(in, &m, &rinfo, &err) != SCAF_OK) {
-        fprintf(stderr, "scaf param: %s\n", err.message);
-        return err.code == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_INPUT;
-    }
-    {
-        char warn[512];
-        if (mesh_read_warnings(&rinfo, warn, sizeof warn) > 0 && !quiet)
-            fprintf(stderr, "scaf param: %s: warning: %s\n", in, warn);
-    }
+    int read_rc = cli_read_mesh("param", in, quiet, &m, &rinfo);
+    if (read_rc != EXIT_OK) return read_rc;
     int rc = EXIT_OK;
     scaf_param_t *p = scaf_param_new(&opt);
     progress_state ps = {0};

@@ -316,6 +316,46 @@ static void cli_keeps_normals(void **state)
     }
 }
 
+/* A polygon is fanned, the commands say so (unless --quiet), and the
+ * rewritten file has the fan's triangles. */
+static void cli_reports_fanned_polygon(void **state)
+{
+    (void)state;
+    char in[512], out[512], log[512];
+    test_tmp_path("rewrite_quad_in.obj", in, sizeof in);
+    test_tmp_path("rewrite_quad_out.obj", out, sizeof out);
+    test_tmp_path("rewrite_quad.log", log, sizeof log);
+    write_text(in, "v 0 0 0\nv 1 0 0\nv 1 1 0.2\nv 0 1 0\nf 1 2 3 4\n");
+    const char *cmds[] = {"param", "atlas"};
+    for (int k = 0; k < 2; k++) {
+        remove(out);
+        assert_int_equal(test_run("%s %s %s -o %s 2> %s", SCAF_BINARY, cmds[k], in, out, log), 0);
+        char *text = test_slurp(log);
+        assert_non_null(text);
+        assert_non_null(strstr(text, "warning"));
+        assert_non_null(strstr(text, "1 polygon with more than 3 corners fan-triangulated"));
+        free(text);
+        assert_int_equal(test_run("%s %s %s -o %s --quiet 2> %s", SCAF_BINARY, cmds[k], in, out, log), 0);
+        text = test_slurp(log);
+        assert_non_null(text);
+        assert_null(strstr(text, "warning"));
+        free(text);
+        char *got = test_slurp(out);
+        assert_non_null(got);
+        /* the fan of the quad: (1 2 3), (1 3 4) by vertex */
+        const int want[2][3] = {{1, 2, 3}, {1, 3, 4}};
+        int faces = 0;
+        for (const char *q = got; (q = strstr(q, "\nf ")); q++, faces++) {
+            int v[3], t[3];
+            assert_true(faces < 2);
+            assert_int_equal(sscanf(q + 3, "%d/%d %d/%d %d/%d", &v[0], &t[0], &v[1], &t[1], &v[2], &t[2]), 6);
+            for (int j = 0; j < 3; j++) assert_int_equal(v[j], want[faces][j]);
+        }
+        assert_int_equal(faces, 2);
+        free(got);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -324,6 +364,7 @@ int main(void)
         cmocka_unit_test(gzip_input_and_in_place),
         cmocka_unit_test(changed_file_is_refused),
         cmocka_unit_test(cli_keeps_normals),
+        cmocka_unit_test(cli_reports_fanned_polygon),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

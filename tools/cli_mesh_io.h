@@ -1,0 +1,31 @@
+/* tools/cli_mesh_io: reading the input mesh and writing the result, the
+ * same way in every command.
+ *
+ * cli_read_mesh reads a mesh file (mesh/mesh_io), prints a failure as
+ * "scaf CMD: message" and returns its exit status (3 unreadable or
+ * malformed, 7 out of memory), and prints the read's warnings (polygons
+ * fanned, UVs dropped) unless quiet.
+ *
+ * cli_write_uv writes the result of `scaf param` / `scaf atlas`: when the
+ * input was an OBJ, the output is that file again with the new texture
+ * coordinates (mesh/obj_rewrite: normals, materials, groups and comments
+ * kept, `v` lines byte for byte); otherwise, or when the input file no
+ * longer matches the mesh read from it (a warning says so), a plain OBJ
+ * (mesh/write_obj). Both are written atomically. */
+#ifndef SCAF_TOOLS_CLI_MESH_IO_H
+#define SCAF_TOOLS_CLI_MESH_IO_H
+
+#include "base/error.h"
+#include "mesh/mesh.h"
+#include "mesh/mesh_io.h"
+
+/* 0 (EXIT_OK) with *m and *info filled, or the exit status after printing
+ * why (*m empty). */
+int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_read_info *info);
+
+/* cmd: command name for messages; in/info: the input path and what its
+ * read said; o: the mesh as read with the new UV and FT. */
+scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info, const char *out,
+                         const mesh *o, scaf_error *err);
+
+#endif
