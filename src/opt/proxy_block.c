@@ -15,6 +15,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+int opt_dof_numbering(int nv, const unsigned char *fixed, int *dof)
+{
+    int k = 0;
+    for (int v = 0; v < nv; v++) dof[v] = (fixed && fixed[v]) ? -1 : k++;
+    return k;
+}
+
 void opt_proxy_block_free(opt_proxy_block *b)
 {
     if (!b) return;

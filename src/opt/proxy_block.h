@@ -37,6 +37,11 @@ typedef struct opt_proxy_block {
     unsigned version; /* incremented each time the pattern is rebuilt */
 } opt_proxy_block;
 
+/* Number the free vertices: fixed[v] != 0 marks vertex v fixed (fixed may
+ * be NULL: none). dof gets nv entries, ascending from 0 over the free
+ * vertices, -1 for the fixed ones; returns the number of free ones. */
+int opt_dof_numbering(int nv, const unsigned char *fixed, int *dof);
+
 /* Free everything; safe on a zeroed block. */
 void opt_proxy_block_free(opt_proxy_block *b);
 

@@ -12,7 +12,7 @@
  * vertices; box vertices are fixed (dof -1), so mesh vertices keep dofs
  * 0..nv-1 in every iteration.
  *
- * The step is assembled here rather than with opt_slim_step because the
+ * The step assembles the system itself (no generic driver) because the
  * scaffold's proxy differs from its energy: a scaffold triangle starts each
  * iteration at its rest shape (J = R), where the SLIM weight of symmetric
  * Dirichlet tends to w = 2 (proxy curvature w^2 = 4); like the reference
@@ -31,7 +31,6 @@
 #include "base/timer.h"
 #include "geom/predicates.h"
 #include "opt/energy.h"
-#include "opt/slim.h"
 
 /* ---- setup ------------------------------------------------------------- */
 
