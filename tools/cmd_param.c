@@ -24,7 +24,6 @@
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
 #include "scaf/scaf.h"
-#include "scaffold/scaf_loop.h"
 
 static void usage(FILE *o)
 {
@@ -94,9 +93,10 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
     }
     s->it[s->n++] = *info;
     if (s->verify) {
-        const scaf_loop *L = param_loop(s->p);
+        param_map pm;
+        param_working_map(s->p, &pm);
         bij_report rep;
-        if (bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective) {
+        if (bij_check(pm.nuv, pm.uv, pm.nf, pm.FT, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective) {
             s->not_bijective = info->iteration;
             return 1;
         }
@@ -262,19 +262,22 @@ int cmd_param(int argc, char **argv)
         goto done;
     }
     if (svg) {
-        const scaf_loop *L = param_loop(p);
+        param_map pm;
+        param_working_map(p, &pm);
         double *E = malloc(sizeof(double) * (size_t)m.nf);
         uv_svg_scaffold ss = {0};
-        if (E) scaf_loop_face_energy(L, E);
-        if (svg_scaffold && L->sc.ntri > 0) {
-            ss.ntri = L->sc.ntri;
-            ss.T = L->sc.T;
-            ss.extra = L->sc.extra_uv;
+        if (E) param_face_energy(p, E);
+        scaffold_view sv;
+        param_last_scaffold(p, &sv);
+        if (svg_scaffold && sv.n > 0) {
+            ss.ntri = sv.n;
+            ss.T = sv.simplices;
+            ss.extra = sv.extra;
         }
         char title[256];
         snprintf(title, sizeof title, "%s: E = %.5f after %d iterations (4 = isometry)", in, e1, scaf_param_iterations(p));
         /* Working vertex ids are the UV ids: draw with the loop's faces. */
-        st = uv_svg_write(svg, L->nv, L->uv, L->nf, L->F, E, ss.ntri ? &ss : NULL, title, &err);
+        st = uv_svg_write(svg, pm.nuv, pm.uv, pm.nf, pm.FT, E, ss.ntri ? &ss : NULL, title, &err);
         free(E);
         if (st != SCAF_OK) {
             fprintf(stderr, "scaf param: %s\n", err.message);
@@ -283,14 +286,15 @@ int cmd_param(int argc, char **argv)
     }
     if (png.path) {
         /* same colours as the SVG; the loop's first nf faces are the mesh's, in order */
-        const scaf_loop *L = param_loop(p);
-        double *E = malloc(sizeof(double) * (size_t)(L->nf ? L->nf : 1));
-        unsigned *col = malloc(sizeof(unsigned) * (size_t)(L->nf ? L->nf : 1));
+        param_map pm;
+        param_working_map(p, &pm);
+        double *E = malloc(sizeof(double) * (size_t)(pm.nf ? pm.nf : 1));
+        unsigned *col = malloc(sizeof(unsigned) * (size_t)(pm.nf ? pm.nf : 1));
         st = E && col ? SCAF_OK : err_nomem(&err, "picture colours");
         if (st == SCAF_OK) {
-            scaf_loop_face_energy(L, E);
-            for (int f = 0; f < L->nf; f++) col[f] = uv_svg_colour(E[f]);
-            st = uv_png_write(png.path, L->nv, L->uv, L->nf, L->F, col, m.nv, m.V, m.F, &png.opt, &err);
+            param_face_energy(p, E);
+            for (int f = 0; f < pm.nf; f++) col[f] = uv_svg_colour(E[f]);
+            st = uv_png_write(png.path, pm.nuv, pm.uv, pm.nf, pm.FT, col, m.nv, m.V, m.F, &png.opt, &err);
         }
         free(E);
         free(col);

@@ -4,7 +4,7 @@
  * charts cut along seams, or components), checks each is a disk or a disk
  * with holes (naming the chart on failure), builds the working mesh (one
  * vertex per (chart, vertex-or-vt) pair), embeds every chart on a circle of
- * its 3D area (app/chart_init), places the circles on a grid so they do not
+ * its 3D area (opt/embed: opt_embed_chart_best), places the circles on a grid so they do not
  * touch, and sets up the SCAF loop. run: iterates with progress and the
  * stopping rules. Errors leave a message readable by scaf_param_error.
  */
@@ -52,6 +52,29 @@ scaf_options_t scaf_options_default(void)
     o.min_angle_deg = 20.0;
     o.step_fraction = 0.8;
     return o;
+}
+
+static opt_energy to_opt_energy(scaf_energy e)
+{
+    switch (e) {
+    case SCAF_ENERGY_ARAP: return OPT_ENERGY_ARAP;
+    case SCAF_ENERGY_CONFORMAL: return OPT_ENERGY_CONFORMAL;
+    case SCAF_ENERGY_SYMMETRIC_DIRICHLET: break;
+    }
+    return OPT_ENERGY_SYMMETRIC_DIRICHLET;
+}
+
+scaf_loop_options param_loop_options(const scaf_options_t *o)
+{
+    scaf_loop_options lo = scaf_loop_options_default();
+    lo.energy = to_opt_energy(o->energy);
+    lo.lambda_ratio = o->lambda_ratio;
+    lo.step_fraction = o->step_fraction;
+    lo.scaffold.box_scale = o->box_scale;
+    lo.scaffold.box_square = o->box_square;
+    lo.scaffold.box_points_per_side = o->box_points_per_side;
+    lo.scaffold.min_angle_deg = o->min_angle_deg;
+    return lo;
 }
 
 const char *scaf_phase_name(scaf_phase phase)
@@ -109,7 +132,7 @@ scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *option
     scaf_status st = param_options_check(options, p->err.message, sizeof p->err.message);
     if (st != SCAF_OK) return p->err.code = st;
     p->opt = *options;
-    if (p->has_mesh) p->loop.opt = *options;
+    if (p->has_mesh) p->loop.opt = param_loop_options(options);
     return SCAF_OK;
 }
 
@@ -132,6 +155,32 @@ void scaf_param_destroy(scaf_param_t *p)
 const char *scaf_param_error(const scaf_param_t *p) { return p ? p->err.message : "no context"; }
 
 const scaf_loop *param_loop(const scaf_param_t *p) { return p && p->has_mesh ? &p->loop : NULL; }
+
+int param_working_map(const scaf_param_t *p, param_map *m)
+{
+    memset(m, 0, sizeof *m);
+    if (!p || !p->has_mesh) return 0;
+    m->nuv = p->loop.nv;
+    m->uv = p->loop.uv;
+    m->nf = p->loop.nf;
+    m->FT = p->loop.F;
+    return 1;
+}
+
+int param_face_energy(const scaf_param_t *p, double *E)
+{
+    if (!p || !p->has_mesh) return 0;
+    scaf_loop_face_energy(&p->loop, E);
+    return 1;
+}
+
+int param_last_scaffold(const scaf_param_t *p, scaffold_view *v)
+{
+    memset(v, 0, sizeof *v);
+    if (!p || !p->has_mesh) return 0;
+    *v = *scaf_loop_scaffold_view(&p->loop);
+    return 1;
+}
 
 /* ---- set_mesh ------------------------------------------------------------ */
 
@@ -328,7 +377,8 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     p->nf = nf;
     p->nw = nw;
     p->ncharts = ch.ncharts;
-    st = scaf_loop_init(&p->loop, nw, W3, nf, p->Fw, uv, &p->opt, err);
+    scaf_loop_options lo = param_loop_options(&p->opt);
+    st = scaf_loop_init(&p->loop, nw, W3, nf, p->Fw, uv, &lo, err);
     if (st != SCAF_OK) goto fail;
     p->has_mesh = 1;
     goto done;
@@ -351,7 +401,7 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
     if (!p) return SCAF_ERR_USAGE;
     err_clear(&p->err);
     if (!p->has_mesh) return err_set(&p->err, SCAF_ERR_USAGE, "no mesh: call scaf_param_set_mesh first");
-    p->loop.opt = p->opt;
+    p->loop.opt = param_loop_options(&p->opt);
     int n = iterations > 0 ? iterations : p->opt.max_iterations;
     for (int it = 0; it < n; it++) {
         scaf_iteration_info_t info;
