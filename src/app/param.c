@@ -215,6 +215,171 @@ static double area3(const double *a, const double *b, const double *c)
     return 0.5 * sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
 }
 
+/* A chart touching itself at a UV vertex (several fans around one vt) is
+ * a disk all the same: give each fan its own UV index. m->FT then points
+ * to *FTs (nf by 3, freed by the caller) and m->nuv counts the new
+ * indices. Nothing to do without UVs. */
+static scaf_status split_fans(mesh *m, int **FTs, scaf_error *err)
+{
+    *FTs = NULL;
+    if (m->nuv <= 0) return SCAF_OK;
+    *FTs = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    if (!*FTs) return err_nomem(err, "UV indices");
+    scaf_status st = uv_split_fans(m->nf, m->FT, m->nuv, *FTs, &m->nuv, NULL, err);
+    if (st != SCAF_OK) return st;
+    m->FT = *FTs;
+    return SCAF_OK;
+}
+
+/* The charts of m, each checked to be a disk (possibly with holes) with
+ * no degenerate triangle; errors name the chart. */
+static scaf_status find_charts(const mesh *m, mesh_charts *ch, scaf_error *err)
+{
+    scaf_status st = mesh_charts_compute(m, ch, err);
+    if (st != SCAF_OK) return st;
+    for (int c = 0; c < ch->ncharts; c++) {
+        st = mesh_chart_check(ch, c, 1, err);
+        if (st != SCAF_OK) return st;
+    }
+    for (int f = 0; f < m->nf; f++) {
+        const int *t = m->F + 3 * f;
+        if (!(area3(m->V + 3 * (size_t)t[0], m->V + 3 * (size_t)t[1], m->V + 3 * (size_t)t[2]) > 0.0))
+            return err_set(err, SCAF_ERR_MESH, "chart %d: face %d is degenerate (zero 3D area)", ch->cx.face_group[f], f);
+    }
+    return SCAF_OK;
+}
+
+/* Working vertices: one per referenced index of IDX (vertex or UV index
+ * per corner; each index belongs to one chart: the chart check rejects
+ * indices shared by charts), numbered chart by chart so each chart's
+ * vertices are contiguous. Fw (nf by 3) gets the working vertex of each
+ * corner, widx (nidx) the working vertex of each index (-1: unused),
+ * *W3 (nw by 3, allocated) their 3D positions. */
+static scaf_status working_vertices(const mesh *m, const mesh_charts *ch, const int *IDX, int nidx, int *widx,
+                                    int *Fw, int *nw_out, double **W3, scaf_error *err)
+{
+    for (int i = 0; i < nidx; i++) widx[i] = -1;
+    int nw = 0;
+    for (int c = 0; c < ch->ncharts; c++)
+        for (int k = ch->cx.group_face_start[c]; k < ch->cx.group_face_start[c + 1]; k++) {
+            int f = ch->cx.group_faces[k];
+            for (int j = 0; j < 3; j++) {
+                int i = IDX[3 * f + j];
+                if (widx[i] < 0) widx[i] = nw++;
+                Fw[3 * f + j] = widx[i];
+            }
+        }
+    *nw_out = nw;
+    *W3 = malloc(sizeof(double) * 3 * (size_t)(nw ? nw : 1));
+    if (!*W3) return err_nomem(err, "working mesh");
+    for (int f = 0; f < m->nf; f++)
+        for (int j = 0; j < 3; j++)
+            memcpy(*W3 + 3 * (size_t)Fw[3 * f + j], m->V + 3 * (size_t)m->F[3 * f + j], sizeof(double) * 3);
+    return SCAF_OK;
+}
+
+/* Embed chart c on a circle of its 3D area (opt_embed_chart_best: with
+ * holes, the best of up to OUTER_TRIES loops on the circle) and store its
+ * UV in uv (working vertices) and the circle's radius in *radius. local
+ * (nw entries, all -1) is scratch, left all -1. */
+static scaf_status embed_chart(const mesh_charts *ch, int c, const int *IDX, const int *widx, const int *Fw,
+                               const double *W3, opt_embed_method method, int *local, double *uv, double *radius,
+                               scaf_error *err)
+{
+    int f0 = ch->cx.group_face_start[c], f1 = ch->cx.group_face_start[c + 1], mf = f1 - f0;
+    int l0 = ch->chart_loop_start[c], l1 = ch->chart_loop_start[c + 1];
+    int nlv = 0;
+    for (int l = l0; l < l1; l++) {
+        int lid = ch->chart_loops[l];
+        nlv += ch->cx.loop_start[lid + 1] - ch->cx.loop_start[lid];
+    }
+    int *cverts = malloc(sizeof(int) * 3 * (size_t)mf);
+    int *cfaces = malloc(sizeof(int) * 3 * (size_t)mf);
+    int *cloops = malloc(sizeof(int) * ((size_t)nlv + (size_t)(l1 - l0) + 1));
+    double *P = malloc(sizeof(double) * 9 * (size_t)mf);
+    double *cuv = malloc(sizeof(double) * 6 * (size_t)mf);
+    scaf_status st = SCAF_OK;
+    if (!cverts || !cfaces || !cloops || !P || !cuv) {
+        st = err_nomem(err, "chart embedding");
+        goto done;
+    }
+    /* the chart's own vertices, faces and boundary loops */
+    int n = 0;
+    for (int k = f0; k < f1; k++) {
+        int f = ch->cx.group_faces[k];
+        for (int j = 0; j < 3; j++) {
+            int w = Fw[3 * f + j];
+            if (local[w] < 0) {
+                local[w] = n;
+                cverts[n] = w;
+                memcpy(P + 3 * (size_t)n, W3 + 3 * (size_t)w, sizeof(double) * 3);
+                n++;
+            }
+            cfaces[3 * (k - f0) + j] = local[w];
+        }
+    }
+    int nl = l1 - l0;
+    int *lstart = cloops, *lv = cloops + nl + 1;
+    int pos = 0;
+    for (int l = 0; l < nl; l++) {
+        int lid = ch->chart_loops[l0 + l];
+        lstart[l] = pos;
+        for (int h = ch->cx.loop_start[lid]; h < ch->cx.loop_start[lid + 1]; h++) {
+            int idx = IDX[ch->cx.loop_he[h]];
+            lv[pos++] = local[widx[idx]];
+        }
+    }
+    lstart[nl] = pos;
+    opt_chart_loops ol = {nl, lstart, lv, 0};
+    st = opt_embed_chart_best(n, P, mf, cfaces, &ol, method, OUTER_TRIES, cuv, NULL, NULL, err);
+    if (st != SCAF_OK) {
+        err_prefix(err, "chart %d", c);
+        for (int i = 0; i < n; i++) local[cverts[i]] = -1;
+        goto done;
+    }
+    double r = 0.0;
+    for (int i = 0; i < n; i++) {
+        double d = hypot(cuv[2 * i], cuv[2 * i + 1]);
+        if (d > r) r = d;
+        memcpy(uv + 2 * (size_t)cverts[i], cuv + 2 * i, sizeof(double) * 2);
+        local[cverts[i]] = -1;
+    }
+    *radius = r;
+done:
+    free(cverts);
+    free(cfaces);
+    free(cloops);
+    free(P);
+    free(cuv);
+    return st;
+}
+
+/* Several charts: move chart c's circle (radius up to the largest) to
+ * cell c of a grid of 2.5 * rmax cells, so the circles do not touch.
+ * chart_of_w (nw) is scratch. */
+static void place_on_grid(const mesh_charts *ch, int nf, const int *Fw, int nw, const double *radius,
+                          int *chart_of_w, double *uv)
+{
+    if (ch->ncharts <= 1) return;
+    double rmax = 0.0;
+    for (int c = 0; c < ch->ncharts; c++)
+        if (radius[c] > rmax) rmax = radius[c];
+    double cell = 2.5 * rmax;
+    int cols = (int)ceil(sqrt((double)ch->ncharts));
+    for (int f = 0; f < nf; f++)
+        for (int j = 0; j < 3; j++) chart_of_w[Fw[3 * f + j]] = ch->cx.face_group[f];
+    for (int w = 0; w < nw; w++) {
+        int c = chart_of_w[w];
+        uv[2 * (size_t)w] += cell * (c % cols);
+        uv[2 * (size_t)w + 1] -= cell * (c / cols);
+    }
+}
+
+static opt_embed_method embed_method(scaf_init init)
+{
+    return init == SCAF_INIT_HARMONIC ? OPT_EMBED_HARMONIC : init == SCAF_INIT_MVC ? OPT_EMBED_MVC : OPT_EMBED_TUTTE;
+}
+
 scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F, int nf,
                                 const double *UV, int nuv, const int *FT)
 {
@@ -228,151 +393,35 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     mesh m = {nv, (double *)V, nf, (int *)F, nuv, (double *)UV, (int *)FT};
     mesh_charts ch;
     memset(&ch, 0, sizeof ch);
-    int *widx = NULL, *local = NULL, *cverts = NULL, *cfaces = NULL, *cloops = NULL, *FTs = NULL;
-    double *W3 = NULL, *uv = NULL, *P = NULL, *cuv = NULL, *radius = NULL;
-    if (nuv > 0) {
-        /* A chart touching itself at a UV vertex (several fans around one
-         * vt) is a disk all the same: give each fan its own UV index. */
-        FTs = malloc(sizeof(int) * 3 * (size_t)nf);
-        if (!FTs) {
-            st = err_nomem(err, "UV indices");
-            goto fail;
-        }
-        st = uv_split_fans(nf, FT, nuv, FTs, &m.nuv, NULL, err);
-        if (st != SCAF_OK) goto fail;
-        m.FT = FTs;
-        FT = FTs;
-        nuv = m.nuv;
-    }
-    st = mesh_charts_compute(&m, &ch, err);
+    int *FTs = NULL, *widx = NULL, *local = NULL, nw = 0;
+    double *W3 = NULL, *uv = NULL, *radius = NULL;
+    st = split_fans(&m, &FTs, err);
+    if (st == SCAF_OK) st = find_charts(&m, &ch, err);
     if (st != SCAF_OK) goto fail;
-    int nidx = ch.uses_uv ? nuv : nv;
-    const int *IDX = ch.uses_uv ? FT : F;
-    for (int c = 0; c < ch.ncharts; c++) {
-        st = mesh_chart_check(&ch, c, 1, err);
-        if (st != SCAF_OK) goto fail;
-    }
-    for (int f = 0; f < nf; f++) {
-        const int *t = F + 3 * f;
-        if (!(area3(V + 3 * (size_t)t[0], V + 3 * (size_t)t[1], V + 3 * (size_t)t[2]) > 0.0)) {
-            st = err_set(err, SCAF_ERR_MESH, "chart %d: face %d is degenerate (zero 3D area)", ch.cx.face_group[f], f);
-            goto fail;
-        }
-    }
+    int nidx = ch.uses_uv ? m.nuv : nv;
+    const int *IDX = ch.uses_uv ? m.FT : F;
 
-    /* ---- working vertices: one per referenced index (each index belongs
-     * to one chart: the chart check rejects indices shared by charts). ---- */
     widx = malloc(sizeof(int) * (size_t)nidx);
     p->Fw = malloc(sizeof(int) * 3 * (size_t)nf);
     if (!widx || !p->Fw) {
         st = err_nomem(err, "working mesh");
         goto fail;
     }
-    for (int i = 0; i < nidx; i++) widx[i] = -1;
-    int nw = 0;
-    /* Number chart by chart so each chart's vertices are contiguous. */
-    for (int c = 0; c < ch.ncharts; c++)
-        for (int k = ch.cx.group_face_start[c]; k < ch.cx.group_face_start[c + 1]; k++) {
-            int f = ch.cx.group_faces[k];
-            for (int j = 0; j < 3; j++) {
-                int i = IDX[3 * f + j];
-                if (widx[i] < 0) widx[i] = nw++;
-                p->Fw[3 * f + j] = widx[i];
-            }
-        }
-    W3 = malloc(sizeof(double) * 3 * (size_t)nw);
+    st = working_vertices(&m, &ch, IDX, nidx, widx, p->Fw, &nw, &W3, err);
+    if (st != SCAF_OK) goto fail;
     uv = malloc(sizeof(double) * 2 * (size_t)nw);
     local = malloc(sizeof(int) * (size_t)nw);
     radius = malloc(sizeof(double) * (size_t)ch.ncharts);
-    if (!W3 || !uv || !local || !radius) {
+    if (!uv || !local || !radius) {
         st = err_nomem(err, "working mesh");
         goto fail;
     }
-    for (int f = 0; f < nf; f++)
-        for (int j = 0; j < 3; j++) memcpy(W3 + 3 * (size_t)p->Fw[3 * f + j], V + 3 * (size_t)F[3 * f + j], sizeof(double) * 3);
-
-    /* ---- embed each chart ------------------------------------------------ */
     for (int i = 0; i < nw; i++) local[i] = -1;
     for (int c = 0; c < ch.ncharts; c++) {
-        int f0 = ch.cx.group_face_start[c], f1 = ch.cx.group_face_start[c + 1], mf = f1 - f0;
-        free(cverts); free(cfaces); free(cloops); free(P); free(cuv);
-        cverts = malloc(sizeof(int) * 3 * (size_t)mf);
-        cfaces = malloc(sizeof(int) * 3 * (size_t)mf);
-        int l0 = ch.chart_loop_start[c], l1 = ch.chart_loop_start[c + 1];
-        int nlv = 0;
-        for (int l = l0; l < l1; l++) {
-            int lid = ch.chart_loops[l];
-            nlv += ch.cx.loop_start[lid + 1] - ch.cx.loop_start[lid];
-        }
-        cloops = malloc(sizeof(int) * ((size_t)nlv + (size_t)(l1 - l0) + 1));
-        P = malloc(sizeof(double) * 9 * (size_t)mf);
-        cuv = malloc(sizeof(double) * 6 * (size_t)mf);
-        if (!cverts || !cfaces || !cloops || !P || !cuv) {
-            st = err_nomem(err, "chart embedding");
-            goto fail;
-        }
-        int n = 0;
-        for (int k = f0; k < f1; k++) {
-            int f = ch.cx.group_faces[k];
-            for (int j = 0; j < 3; j++) {
-                int w = p->Fw[3 * f + j];
-                if (local[w] < 0) {
-                    local[w] = n;
-                    cverts[n] = w;
-                    memcpy(P + 3 * (size_t)n, W3 + 3 * (size_t)w, sizeof(double) * 3);
-                    n++;
-                }
-                cfaces[3 * (k - f0) + j] = local[w];
-            }
-        }
-        int nl = l1 - l0;
-        int *lstart = cloops, *lv = cloops + nl + 1;
-        int pos = 0;
-        for (int l = 0; l < nl; l++) {
-            int lid = ch.chart_loops[l0 + l];
-            lstart[l] = pos;
-            for (int h = ch.cx.loop_start[lid]; h < ch.cx.loop_start[lid + 1]; h++) {
-                int idx = IDX[ch.cx.loop_he[h]];
-                lv[pos++] = local[widx[idx]];
-            }
-        }
-        lstart[nl] = pos;
-        opt_chart_loops ol = {nl, lstart, lv, 0};
-        /* a chart with holes: the best of up to OUTER_TRIES loops on the circle */
-        st = opt_embed_chart_best(n, P, mf, cfaces, &ol,
-                                  p->opt.init == SCAF_INIT_HARMONIC ? OPT_EMBED_HARMONIC
-                                  : p->opt.init == SCAF_INIT_MVC ? OPT_EMBED_MVC : OPT_EMBED_TUTTE,
-                                  OUTER_TRIES, cuv, NULL, NULL, err);
-        if (st != SCAF_OK) {
-            err_prefix(err, "chart %d", c);
-            goto fail;
-        }
-        double r = 0.0;
-        for (int i = 0; i < n; i++) {
-            double d = hypot(cuv[2 * i], cuv[2 * i + 1]);
-            if (d > r) r = d;
-            memcpy(uv + 2 * (size_t)cverts[i], cuv + 2 * i, sizeof(double) * 2);
-            local[cverts[i]] = -1;
-        }
-        radius[c] = r;
+        st = embed_chart(&ch, c, IDX, widx, p->Fw, W3, embed_method(p->opt.init), local, uv, &radius[c], err);
+        if (st != SCAF_OK) goto fail;
     }
-
-    /* ---- grid of non-touching circles ------------------------------------ */
-    if (ch.ncharts > 1) {
-        double rmax = 0.0;
-        for (int c = 0; c < ch.ncharts; c++)
-            if (radius[c] > rmax) rmax = radius[c];
-        double cell = 2.5 * rmax;
-        int cols = (int)ceil(sqrt((double)ch.ncharts));
-        int *chart_of_w = local; /* reuse */
-        for (int f = 0; f < nf; f++)
-            for (int j = 0; j < 3; j++) chart_of_w[p->Fw[3 * f + j]] = ch.cx.face_group[f];
-        for (int w = 0; w < nw; w++) {
-            int c = chart_of_w[w];
-            uv[2 * (size_t)w] += cell * (c % cols);
-            uv[2 * (size_t)w + 1] -= cell * (c / cols);
-        }
-    }
+    place_on_grid(&ch, nf, p->Fw, nw, radius, local, uv);
 
     p->nf = nf;
     p->nw = nw;
@@ -389,8 +438,12 @@ fail:
     if (err->code == SCAF_OK) err->code = st;
 done:
     mesh_charts_free(&ch);
-    free(widx); free(local); free(cverts); free(cfaces); free(cloops); free(FTs);
-    free(W3); free(uv); free(P); free(cuv); free(radius);
+    free(widx);
+    free(local);
+    free(FTs);
+    free(W3);
+    free(uv);
+    free(radius);
     return st;
 }
 
