@@ -209,6 +209,18 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
     return SCAF_OK;
 }
 
+scaf_status scaf_loop_set_scaffold_provider(scaf_loop *L, scaffold_provider *p, scaf_error *err)
+{
+    if (!p || p->d != L->d || p->nmesh != L->nv)
+        return err_set(err, SCAF_ERR_USAGE, "SCAF loop: a scaffold provider of dimension %d over %d mesh vertices is needed",
+                       L->d, L->nv);
+    scaf_loop_work *w = L->work;
+    scaffold_provider_destroy(w->scaffold);
+    w->scaffold = p;
+    memset(&w->view, 0, sizeof w->view);
+    return SCAF_OK;
+}
+
 scaf_status scaf_loop_add_term(scaf_loop *L, const opt_obj_term *t, scaf_error *err)
 {
     scaf_loop_work *w = L->work;

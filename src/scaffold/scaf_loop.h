@@ -114,6 +114,13 @@ typedef struct scaf_loop {
 scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const int *F,
                            const double *uv0, const scaf_loop_options *opt, scaf_error *err);
 
+/* Replace the scaffold provider (by default, for d = 2, the CDT scaffold
+ * of scaffold/scaffold_cdt around the mesh's boundary edges) by p, which
+ * must have the loop's dimension and nv mesh vertices (SCAF_ERR_USAGE
+ * otherwise; p is then not taken). The loop owns p from then on (destroyed
+ * by scaf_loop_free). */
+scaf_status scaf_loop_set_scaffold_provider(scaf_loop *L, scaffold_provider *p, scaf_error *err);
+
 /* Add a term to the objective (after the mesh and scaffold terms; at most
  * OPT_PROXY_MAX_BLOCKS terms in all, else SCAF_ERR_USAGE). The loop copies
  * *t and frees its block; t->self stays the caller's and must live as long

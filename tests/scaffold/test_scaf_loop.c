@@ -5,7 +5,8 @@
  *   - an extra term (a soft positional constraint written here against
  *     opt/objective) plugs in with scaf_loop_add_term: its energy, proxy
  *     block and per-vertex max step are all honoured by the loop;
- *   - the 2D scaffold provider (scaffold/scaffold_cdt) on its own;
+ *   - the 2D scaffold provider (scaffold/scaffold_cdt) on its own, and a
+ *     provider of the test's own replacing it in the loop;
  *   - a misoriented start fails with SCAF_ERR_INTERNAL (as documented);
  *   - the loop's own defaults are the public ones (app/param mapping).
  * Mesh: a generated curved disk (tests/opt/polar_disk.h), Tutte start. */
@@ -272,6 +273,66 @@ static void cdt_provider_builds_and_refreshes(void **state)
     scaffold_provider_destroy(p);
 }
 
+/* A provider of our own: the CDT one behind a wrapper that counts the
+ * refreshes and records the options it was given. */
+typedef struct counting {
+    scaffold_provider base;
+    scaffold_provider *inner;
+    int refreshes, destroyed;
+    double last_box_scale;
+} counting;
+
+static scaf_status counting_refresh(scaffold_provider *p, const double *X, const scaffold_options *o, scaf_error *err)
+{
+    counting *c = (counting *)p;
+    c->refreshes++;
+    c->last_box_scale = o->box_scale;
+    return c->inner->ops->refresh(c->inner, X, o, err);
+}
+
+static void counting_view(const scaffold_provider *p, scaffold_view *v)
+{
+    const counting *c = (const counting *)p;
+    c->inner->ops->view(c->inner, v);
+}
+
+static void counting_destroy(scaffold_provider *p)
+{
+    counting *c = (counting *)p;
+    scaffold_provider_destroy(c->inner);
+    c->destroyed++;
+}
+
+static const scaffold_provider_ops counting_ops = {counting_refresh, counting_view, counting_destroy};
+
+static void provider_plugs_in(void **state)
+{
+    (void)state;
+    disk k;
+    disk_make(&k);
+    scaf_loop L;
+    scaf_error err;
+    assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, k.m.nf, k.m.F, k.uv, NULL, &err), SCAF_OK);
+    counting c = {{&counting_ops, 2, L.nv}, NULL, 0, 0, 0.0};
+    c.inner = scaffold_cdt_create(L.nv, L.bedges, L.nbedges, &err);
+    assert_non_null(c.inner);
+    counting wrong = c;
+    wrong.base.nmesh = L.nv + 1;
+    assert_int_equal(scaf_loop_set_scaffold_provider(&L, &wrong.base, &err), SCAF_ERR_USAGE);
+    assert_int_equal(scaf_loop_set_scaffold_provider(&L, &c.base, &err), SCAF_OK);
+    L.opt.scaffold.box_scale = 4.0;
+    for (int it = 0; it < 3; it++) {
+        scaf_iteration_info_t info;
+        assert_int_equal(scaf_loop_step(&L, &info, &err), SCAF_OK);
+        assert_state_valid(&L);
+    }
+    assert_int_equal(c.refreshes, 3);
+    assert_true(c.last_box_scale == 4.0);
+    scaf_loop_free(&L);
+    assert_int_equal(c.destroyed, 1);
+    disk_free(&k);
+}
+
 static void loop_defaults_are_the_public_ones(void **state)
 {
     (void)state;
@@ -295,6 +356,7 @@ int main(void)
         cmocka_unit_test(add_term_checks),
         cmocka_unit_test(misoriented_start_is_internal),
         cmocka_unit_test(cdt_provider_builds_and_refreshes),
+        cmocka_unit_test(provider_plugs_in),
         cmocka_unit_test(loop_defaults_are_the_public_ones),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
