@@ -33,4 +33,13 @@ void opt_csc_symv(const opt_csc *A, const double *x, double *y);
 scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const int *Jc,
                                   const double *Val, scaf_error *err);
 
+/* Expand a vertex-level upper pattern to scalars, d unknowns per vertex
+ * interleaved (vertex v owns v*d + 0..d-1): nv columns vcolptr (nv+1) with
+ * ascending rows vrowidx, the diagonal last. Vertex entry (I, J) becomes
+ * the d by d block of rows I*d.., columns J*d.. (its upper part when
+ * I == J). Values zeroed. On failure A holds what was allocated (free it
+ * with opt_csc_free). */
+scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *vcolptr, const int *vrowidx,
+                                          scaf_error *err);
+
 #endif /* SCAF_OPT_CSC_H */

@@ -42,44 +42,14 @@ static int cmp_row_id(const void *pa, const void *pb)
     return (a->row > b->row) - (a->row < b->row);
 }
 
-/* Expand the vertex-level pattern (d, nfree, vcolptr, vrowidx) to the
- * scalar upper CSC, values zeroed; frees the block on failure. */
+/* The scalar upper CSC of the vertex-level pattern, values zeroed; frees
+ * the block on failure. */
 static scaf_status expand_scalar(opt_proxy_block *b, scaf_error *err)
 {
-    int d = b->d, nfree = b->nfree;
-    int n = nfree * d;
-    opt_csc *A = &b->A;
-    A->n = n;
-    A->colptr = malloc(((size_t)n + 1) * sizeof *A->colptr);
-    if (!A->colptr) {
+    scaf_status st = opt_csc_expand_vertex_pattern(&b->A, b->d, b->nfree, b->vcolptr, b->vrowidx, err);
+    if (st != SCAF_OK) {
         opt_proxy_block_free(b);
-        return err_nomem(err, "proxy system pattern");
-    }
-    A->colptr[0] = 0;
-    for (int c = 0; c < nfree; c++) {
-        int lo = b->vcolptr[c], hi = b->vcolptr[c + 1];
-        int diag = hi > lo && b->vrowidx[hi - 1] == c;
-        int off = hi - lo - diag;
-        for (int a = 0; a < d; a++)
-            A->colptr[c * d + a + 1] = A->colptr[c * d + a] + off * d + (diag ? a + 1 : 0);
-    }
-    A->nnz = A->colptr[n];
-    A->rowidx = malloc(((size_t)A->nnz + 1) * sizeof *A->rowidx);
-    A->val = calloc((size_t)A->nnz + 1, sizeof *A->val);
-    if (!A->rowidx || !A->val) {
-        opt_proxy_block_free(b);
-        return err_nomem(err, "proxy system matrix");
-    }
-    for (int c = 0; c < nfree; c++) {
-        int lo = b->vcolptr[c], hi = b->vcolptr[c + 1];
-        for (int a = 0; a < d; a++) {
-            int pos = A->colptr[c * d + a];
-            for (int k = lo; k < hi; k++) {
-                int r = b->vrowidx[k];
-                int top = r == c ? a : d - 1;
-                for (int q = 0; q <= top; q++) A->rowidx[pos++] = r * d + q;
-            }
-        }
+        return st;
     }
     b->version++;
     return SCAF_OK;
