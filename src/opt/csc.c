@@ -93,7 +93,7 @@ scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const
 }
 
 scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *vcolptr, const int *vrowidx,
-                                          scaf_error *err)
+                                          int zero_values, scaf_error *err)
 {
     int n = nv * d;
     A->n = n;
@@ -109,7 +109,7 @@ scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *
     }
     A->nnz = A->colptr[n];
     A->rowidx = malloc(((size_t)A->nnz + 1) * sizeof *A->rowidx);
-    A->val = calloc((size_t)A->nnz + 1, sizeof *A->val);
+    A->val = zero_values ? calloc((size_t)A->nnz + 1, sizeof *A->val) : malloc(((size_t)A->nnz + 1) * sizeof *A->val);
     if (!A->rowidx || !A->val) return err_nomem(err, "proxy system matrix");
     for (int c = 0; c < nv; c++) {
         int lo = vcolptr[c], hi = vcolptr[c + 1];

@@ -46,7 +46,7 @@ static int cmp_row_id(const void *pa, const void *pb)
  * the block on failure. */
 static scaf_status expand_scalar(opt_proxy_block *b, scaf_error *err)
 {
-    scaf_status st = opt_csc_expand_vertex_pattern(&b->A, b->d, b->nfree, b->vcolptr, b->vrowidx, err);
+    scaf_status st = opt_csc_expand_vertex_pattern(&b->A, b->d, b->nfree, b->vcolptr, b->vrowidx, 1, err);
     if (st != SCAF_OK) {
         opt_proxy_block_free(b);
         return st;

@@ -68,7 +68,7 @@ static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *con
     sys->vcolptr[nfree] = out;
     /* Scalar expansion, same rule as the blocks. */
     sys->owns = 1;
-    return opt_csc_expand_vertex_pattern(&sys->A, d, nfree, sys->vcolptr, sys->vrowidx, err);
+    return opt_csc_expand_vertex_pattern(&sys->A, d, nfree, sys->vcolptr, sys->vrowidx, 0, err); /* summed values overwrite */
 }
 
 scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *const *bl,

@@ -369,6 +369,16 @@ static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, co
     return st;
 }
 
+/* dir = the solution minus X for free vertices, 0 for fixed ones. */
+static inline void direction(int d, int nall, const int *dof, const double *sol, const double *X, double *dir)
+{
+    for (int v = 0; v < nall; v++)
+        for (int a = 0; a < d; a++) {
+            size_t i = (size_t)d * (size_t)v + a;
+            dir[i] = dof[v] >= 0 ? sol[(size_t)d * (size_t)dof[v] + a] - X[i] : 0.0;
+        }
+}
+
 /* Assembly of every term's proxy, ordering, factorization, solve and the
  * line search over all terms. X (nall by d) updated by the line search. */
 static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, double *X, slim_times *tm,
@@ -424,11 +434,10 @@ static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, 
     if (st != SCAF_OK) return st;
 
     double t4 = timer_now();
-    for (int v = 0; v < nall; v++)
-        for (int a = 0; a < d; a++) {
-            size_t i = (size_t)d * (size_t)v + a;
-            w->dir[i] = dof[v] >= 0 ? w->sol[(size_t)d * (size_t)dof[v] + a] - X[i] : 0.0;
-        }
+    if (d == 2)
+        direction(2, nall, dof, w->sol, X, w->dir); /* d known: the loop unrolls */
+    else
+        direction(d, nall, dof, w->sol, X, w->dir);
     opt_ls_options lo;
     opt_ls_options_default(&lo);
     lo.safety = L->opt.step_fraction;
@@ -489,6 +498,15 @@ static scaf_status feasible_backtrack(scaf_loop *L, int nall, const double *X0, 
 
 /* ---- one iteration ----------------------------------------------------- */
 
+/* Signed area of triangle t at X (nall by 2); the expression of
+ * opt_signed_volume, inline here where it runs once per scaffold triangle
+ * and iteration. */
+static inline double triangle_area(const double *X, const int *t)
+{
+    const double *a = X + 2 * (size_t)t[0], *b = X + 2 * (size_t)t[1], *c = X + 2 * (size_t)t[2];
+    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
+
 /* Rest shapes of the scaffold = current shapes (eps guard), energy weight
  * lambda, proxy weight lambda / 4 except on guarded simplices (banner). */
 static scaf_status scaffold_term(scaf_loop *L, int nall, const double *X, double lambda, scaf_error *err)
@@ -505,7 +523,7 @@ static scaf_status scaffold_term(scaf_loop *L, int nall, const double *X, double
     w->scaf_def.proxy_weight = w->scaf_pw;
     if (!w->scaf_pw) return err_nomem(err, "scaffold weights");
     for (int s = 0; s < w->scaf.n; s++) {
-        double vol = opt_signed_volume(&w->scaf, s, X);
+        double vol = L->d == 2 ? triangle_area(X, v->simplices + 3 * (size_t)s) : opt_signed_volume(&w->scaf, s, X);
         w->scaf.weight[s] = lambda;
         w->scaf_pw[s] = vol >= v->eps ? 0.25 * lambda : lambda;
     }
@@ -535,8 +553,8 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     t0 = t1;
 
     /* ---- scaffold around the current boundary ----------------------------- */
-    opt_simplices_free(&w->scaf);
     st = w->scaffold->ops->refresh(w->scaffold, L->uv, &L->opt.scaffold, err);
+    opt_simplices_free(&w->scaf);
     w->scaffold->ops->view(w->scaffold, &w->view);
     if (st != SCAF_OK) goto done;
     const scaffold_view *sc = &w->view;
