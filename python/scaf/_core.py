@@ -198,7 +198,9 @@ def _call_with_progress(cfunc_type, info_type, progress, call):
         try:
             if progress is None:
                 return 0
-            return 1 if progress(info_type._from_c(info_ptr.contents)) else 0
+            stop = progress(info_type._from_c(info_ptr.contents))
+            # a Ctrl-C during the callback stops the run now, not one iteration later
+            return 1 if stop or interrupted else 0
         except BaseException as e:  # noqa: B902 - must not unwind through C
             raised.append(e)
             return 1

@@ -314,22 +314,34 @@ class ParamTest(unittest.TestCase):
             self.assertEqual(p.iterations, 3)
 
     def test_ctrl_c_stops_a_run(self):
+        # Deterministic: the SIGINT is raised from inside the progress call of
+        # iteration 3 (signal.raise_signal runs Python's handler before it
+        # returns), never by a timer racing the run.
         import signal
-        import threading
 
         V, F, _, _ = scaf.read_obj(gen("hemisphere", 30))
-        for progress in (None, lambda info: None):
+
+        def ctrl_c_at(k, then=None):
+            def progress(info):
+                if info.iteration == k:
+                    signal.raise_signal(signal.SIGINT)
+                return then
+            return progress
+
+        for then in (None, False, 0):
             with scaf.Param(tolerance=0.0, max_iterations=300) as p:
                 p.set_mesh(V, F)
-                timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
-                timer.start()
                 with self.assertRaises(KeyboardInterrupt):
-                    p.run(progress=progress)
-                timer.join()
-                self.assertLess(p.iterations, 300)
+                    p.run(progress=ctrl_c_at(3, then))
+                self.assertEqual(p.iterations, 3)  # stopped after the interrupted iteration
                 self.assertIs(signal.getsignal(signal.SIGINT), signal.default_int_handler)
                 uv, ft = p.get_uv()  # the map of the last iteration
                 self.assertGreater(min(signed_areas(uv, ft)), 0.0)
+        with scaf.Atlas() as a:
+            a.set_mesh(V, F)
+            with self.assertRaises(KeyboardInterrupt):
+                a.run(progress=ctrl_c_at(2))
+            self.assertIs(signal.getsignal(signal.SIGINT), signal.default_int_handler)
 
     def test_handle_is_refused_inside_its_own_callback(self):
         with scaf.Param() as p:
