@@ -58,7 +58,8 @@ typedef struct scaf_atlas_options {
     int settle_iterations;       /* cap of the settle phase, >= 0 (30) */
     double settle_tolerance;     /* the settle phase ends below this
                                     relative decrease of E per iteration,
-                                    >= 0 (1e-3) */
+                                    >= 0; 0 disables this test (a zero
+                                    step still ends the phase) (1e-3) */
     int compact_iterations;      /* cap of the compact phase, >= 0; 0: no
                                     compaction (150) */
     double distortion_tolerance; /* the compact phase stops when E exceeds

@@ -102,7 +102,9 @@ typedef struct scaf_options {
     double tolerance;        /* stop when the relative decrease over one
                                 iteration of the reported energy E, or of
                                 the objective E_M + lambda E_S, is below
-                                this; 0 disables (1e-6) */
+                                this; 0 disables this test (a zero step
+                                still ends the run: see scaf_param_run)
+                                (1e-6) */
     double box_scale;        /* scaffold box = this times the current UV
                                 bounding box, same center; recomputed
                                 before each iteration and fixed during its

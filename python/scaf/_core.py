@@ -415,9 +415,11 @@ class Param(_Handle):
 
     def run(self, iterations=0, progress=None):
         """Run up to `iterations` SCAF iterations (<= 0: the option
-        max_iterations), stopping early at the tolerance. progress(info:
-        IterationInfo) is called after each; a true return raises
-        Cancelled (the map of the last iteration stays available)."""
+        max_iterations), stopping early at the tolerance or at a zero step
+        (no step lowers the energy: converged, also with tolerance 0);
+        stop_reason says which. progress(info: IterationInfo) is called
+        after each; a true return raises Cancelled (the map of the last
+        iteration stays available)."""
         if isinstance(iterations, bool) or not isinstance(iterations, numbers.Integral):
             raise ValueError("iterations: expected an int, got %r" % (iterations,))
         n = max(min(int(iterations), _arrays.INT32_MAX), -1)
