@@ -49,6 +49,14 @@ static void disk_free(disk *k)
     free(k->uv);
 }
 
+/* The loop with default options on a fresh disk. */
+static void loop_on_disk(disk *k, scaf_loop *L)
+{
+    disk_make(k);
+    scaf_error err;
+    assert_int_equal(scaf_loop_init(L, k->m.nv, k->m.V, k->m.nf, k->m.F, k->uv, NULL, &err), SCAF_OK);
+}
+
 static void assert_state_valid(const scaf_loop *L)
 {
     bij_report rep;
@@ -157,10 +165,9 @@ static const opt_obj_term_ops pin_ops = {pin_energy, pin_energy_slope, pin_patte
 static double run_pinned(pin *q, int v, const double target[2], int iterations, double *max_move)
 {
     disk k;
-    disk_make(&k);
     scaf_loop L;
     scaf_error err;
-    assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, k.m.nf, k.m.F, k.uv, NULL, &err), SCAF_OK);
+    loop_on_disk(&k, &L);
     if (q) {
         opt_obj_term t = {&pin_ops, q, {0}};
         assert_int_equal(scaf_loop_add_term(&L, &t, &err), SCAF_OK);
@@ -212,10 +219,9 @@ static void add_term_checks(void **state)
 {
     (void)state;
     disk k;
-    disk_make(&k);
     scaf_loop L;
     scaf_error err;
-    assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, k.m.nf, k.m.F, k.uv, NULL, &err), SCAF_OK);
+    loop_on_disk(&k, &L);
     opt_obj_term_ops no_fill = pin_ops;
     no_fill.fill = NULL;
     pin q = {0, {0, 0}, 1.0, INFINITY, 0, 0};
@@ -309,10 +315,9 @@ static void provider_plugs_in(void **state)
 {
     (void)state;
     disk k;
-    disk_make(&k);
     scaf_loop L;
     scaf_error err;
-    assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, k.m.nf, k.m.F, k.uv, NULL, &err), SCAF_OK);
+    loop_on_disk(&k, &L);
     counting c = {{&counting_ops, 2, L.nv}, NULL, 0, 0, 0.0};
     c.inner = scaffold_cdt_create(L.nv, L.bedges, L.nbedges, &err);
     assert_non_null(c.inner);
