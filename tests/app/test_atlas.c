@@ -341,29 +341,6 @@ static void init_input(void **state)
     mesh_free(&m);
 }
 
-/* Two triangles sharing only a vt (a pinch): split into two. */
-static void split_fans(void **state)
-{
-    (void)state;
-    int FT[6] = {0, 1, 2, 0, 3, 4};
-    int *FT2, *map, n2, ns;
-    scaf_error err;
-    assert_int_equal(atlas_split_fans(2, FT, 5, &FT2, &n2, &map, &ns, &err), SCAF_OK);
-    assert_int_equal(ns, 1);
-    assert_int_equal(n2, 6);
-    assert_int_not_equal(FT2[0], FT2[3]);
-    assert_int_equal(map[FT2[3]], 0);
-    free(FT2);
-    free(map);
-    /* two triangles sharing an edge: nothing split */
-    int G[6] = {0, 1, 2, 0, 2, 3};
-    assert_int_equal(atlas_split_fans(2, G, 4, &FT2, &n2, &map, &ns, &err), SCAF_OK);
-    assert_int_equal(ns, 0);
-    assert_memory_equal(FT2, G, sizeof G);
-    free(FT2);
-    free(map);
-}
-
 static void padding_too_large_is_refused(void **state)
 {
     (void)state;
@@ -443,7 +420,6 @@ int main(void)
         cmocka_unit_test(compaction_keeps_best_layout),
         cmocka_unit_test(closed_chart_is_refused),
         cmocka_unit_test(init_input),
-        cmocka_unit_test(split_fans),
         cmocka_unit_test(padding_too_large_is_refused),
         cmocka_unit_test(pack_keep_matches_full_ranking),
     };
