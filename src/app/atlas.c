@@ -281,6 +281,20 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
 
 /* ---- setup -------------------------------------------------------------------- */
 
+/* The compaction knobs are in range (NaN is not). */
+static int compaction_options_valid(const atlas_options *o)
+{
+    return o->compact_lambda_ratio > 0.0 && o->compact_rest_scale > 0.0 && o->compact_rest_scale <= 1.0 &&
+           o->compact_box_scale >= 1.0 && o->compact_fraction > 0.0 && o->compact_fraction < 1.0;
+}
+
+/* The raster packer's knobs are in range (NaN is not). */
+static int packing_options_valid(const atlas_options *o)
+{
+    return o->pack_gap_factor >= 1.0 && o->pack_cells >= 16 && o->pack_cells <= 8192 && o->pack_picks >= 1 &&
+           o->pack_picks <= 16;
+}
+
 scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_error *err)
 {
     memset(a, 0, sizeof *a);
@@ -289,9 +303,7 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     char msg[256];
     if (param_options_check(&a->opt.base, msg, sizeof msg) != SCAF_OK)
         return err_set(err, SCAF_ERR_USAGE, "%s", msg);
-    if (!(a->opt.pack_gap_factor >= 1.0) || !(a->opt.compact_lambda_ratio > 0.0) || !(a->opt.compact_rest_scale > 0.0) ||
-        !(a->opt.compact_rest_scale <= 1.0) || !(a->opt.compact_box_scale >= 1.0) || !(a->opt.compact_fraction > 0.0) ||
-        !(a->opt.compact_fraction < 1.0) || a->opt.pack_cells < 16 || a->opt.pack_cells > 8192 || a->opt.pack_picks < 1 || a->opt.pack_picks > 16)
+    if (!compaction_options_valid(&a->opt) || !packing_options_valid(&a->opt))
         return err_set(err, SCAF_ERR_USAGE, "invalid atlas option (pack_gap_factor >= 1, compact_lambda_ratio > 0, "
                                             "compact_rest_scale in (0, 1], compact_box_scale >= 1, "
                                             "compact_fraction in (0, 1), pack_cells in [16, 8192], pack_picks in [1, 16])");
