@@ -7,6 +7,7 @@
  */
 #include "app/uv_fans.h"
 
+#include <assert.h>
 #include <stdlib.h>
 
 #include "base/half_edges.h"
@@ -72,6 +73,7 @@ scaf_status uv_split_fans(int nf, const int *FT, int nuv, int *FT_out, int *nuv_
             }
         }
         FT_out[c] = assigned[r];
+        assert(FT_out[c] >= 0 && FT_out[c] < n && from[FT_out[c]] == FT[c]);
     }
     *nuv_out = n;
     free(parent);

@@ -8,6 +8,7 @@
 
 #include "base/half_edges.h"
 
+#include <assert.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -60,6 +61,7 @@ scaf_status mesh_edges_build(int n, int nf, const int *F, mesh_edges *e, scaf_er
     }
     e->edge_he_start[ne] = nvalid;
     e->ne = ne;
+    for (int k = 0; k < ne; k++) assert(e->ev[2 * k] < e->ev[2 * k + 1] && mesh_edge_valence(e, k) > 0);
     free(invalid);
     return SCAF_OK;
 

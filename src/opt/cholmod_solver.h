@@ -29,6 +29,9 @@ typedef enum opt_ordering {
 typedef struct opt_chol_stats {
     int analyses;          /* symbolic analyses done */
     int factorizations;    /* numerical factorizations done */
+    int not_posdef;        /* factorizations that found the matrix not
+                              positive definite (the caller's recovery,
+                              e.g. a regularized retry, follows them) */
     double t_analyze;      /* seconds in analysis, cumulative */
     double t_factor;       /* seconds in numerical factorization, cumulative */
     double t_solve;        /* seconds in triangular solves, cumulative */

@@ -7,6 +7,7 @@
  */
 #include "opt/line_search.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -127,5 +128,6 @@ scaf_status opt_line_search(const opt_term *terms, int nterms, int d, int nv, do
         break;
     }
     free(Y);
+    assert(res->step == 0.0 || opt_terms_oriented(terms, nterms, X, NULL, NULL));
     return SCAF_OK;
 }
