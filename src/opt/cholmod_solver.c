@@ -31,6 +31,7 @@
 #include "opt/cholmod_view.h"
 
 #include <assert.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -363,6 +364,10 @@ scaf_status opt_chol_compute_ordering(opt_chol *c, const opt_csc *A, int *perm, 
     return ok ? SCAF_OK : fail(c, "ordering", err);
 }
 
+static atomic_long not_posdef_total;
+
+long opt_chol_not_posdef_total(void) { return atomic_load(&not_posdef_total); }
+
 scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
 {
     if (!same_pattern(c, A)) {
@@ -380,6 +385,7 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
     if (!ok) return fail(c, "factorization", err);
     if (c->cm.status == CHOLMOD_NOT_POSDEF || c->L->minor < c->L->n) {
         c->st.not_posdef++;
+        atomic_fetch_add(&not_posdef_total, 1);
         return err_set(err, SCAF_ERR_NUMERIC,
                        "CHOLMOD factorization: matrix not positive definite (fails at column %d of "
                        "%d after reordering; a free vertex may be unconstrained or a weight "

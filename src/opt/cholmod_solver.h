@@ -92,4 +92,9 @@ const int *opt_chol_permutation(const opt_chol *c);
 /* Counters and timings. */
 opt_chol_stats opt_chol_get_stats(const opt_chol *c);
 
+/* not_posdef summed over every solver of the process (atomic): lets a test
+ * see that a recovery path ran without reaching the solver of the code
+ * under test. */
+long opt_chol_not_posdef_total(void);
+
 #endif /* SCAF_OPT_CHOLMOD_SOLVER_H */

@@ -284,8 +284,10 @@ static void indefinite_is_an_error(void **state)
     grid_laplacian(&A, 6, -8.0, 0); /* diagonal -4: negative definite */
     scaf_error e;
     opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+    long total = opt_chol_not_posdef_total();
     assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_ERR_NUMERIC);
     assert_non_null(strstr(e.message, "positive definite"));
+    assert_int_equal(opt_chol_not_posdef_total(), total + 1);
     /* counted apart from the successful factorizations */
     assert_int_equal(opt_chol_get_stats(c).not_posdef, 1);
     assert_int_equal(opt_chol_get_stats(c).factorizations, 0);
