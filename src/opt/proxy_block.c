@@ -11,7 +11,6 @@
  */
 #include "opt/proxy_block.h"
 
-#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -154,11 +153,6 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
             }
         }
     }
-    assert(opt_csc_is_upper_sorted(A));
-#ifndef NDEBUG
-    /* every simplex entry maps into the vertex pattern, or is fixed (-1) */
-    for (size_t id = 0; id < ne; id++) assert(b->map[id] >= -1 && b->map[id] < b->vcolptr[nfree]);
-#endif
     b->version++;
     return SCAF_OK;
 }

@@ -7,7 +7,6 @@
  */
 #include "opt/proxy_system.h"
 
-#include <assert.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -97,7 +96,6 @@ static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *con
             }
         }
     }
-    assert(opt_csc_is_upper_sorted(A));
     return SCAF_OK;
 }
 
