@@ -7,7 +7,6 @@
  */
 #include "opt/line_search.h"
 
-#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -128,6 +127,5 @@ scaf_status opt_line_search(const opt_term *terms, int nterms, int d, int nv, do
         break;
     }
     free(Y);
-    assert(res->step == 0.0 || opt_terms_oriented(terms, nterms, X, NULL, NULL));
     return SCAF_OK;
 }
