@@ -137,5 +137,6 @@ scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *
             }
         }
     }
+    assert(opt_csc_is_upper_sorted(A));
     return SCAF_OK;
 }

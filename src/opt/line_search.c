@@ -8,6 +8,7 @@
  */
 #include "opt/line_search.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -73,5 +74,6 @@ scaf_status opt_line_search(const opt_obj_term *terms, int nterms, int d, int nv
         break;
     }
     free(Y);
+    assert(res->step == 0.0 || opt_obj_valid(terms, nterms, X)); /* accepted: every term valid */
     return SCAF_OK;
 }

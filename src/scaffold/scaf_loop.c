@@ -32,6 +32,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/half_edges.h"
 #include "base/timer.h"
 #include "geom/predicates.h"
 #include "opt/line_search.h"
@@ -41,54 +42,34 @@
 
 /* ---- setup ------------------------------------------------------------- */
 
-typedef struct half_edge {
-    int lo, hi;   /* sorted endpoints */
-    int a, b;     /* as in the face */
-} half_edge;
-
-static int cmp_half_edge(const void *x, const void *y)
-{
-    const half_edge *p = x, *q = y;
-    if (p->lo != q->lo) return p->lo < q->lo ? -1 : 1;
-    if (p->hi != q->hi) return p->hi < q->hi ? -1 : 1;
-    if (p->a != q->a) return p->a < q->a ? -1 : 1;
-    return 0;
-}
-
 /* Edges used by exactly one face, oriented as in that face (chart on the
- * left). Chart topology was validated by the caller. */
-static scaf_status boundary_edges(int nf, const int *F, int **out, int *nout, scaf_error *err)
+ * left), in increasing (smaller end, larger end) order. Chart topology was
+ * validated by the caller. */
+static scaf_status boundary_edges(int nv, int nf, const int *F, int **out, int *nout, scaf_error *err)
 {
     size_t nh = nf > 0 ? 3 * (size_t)nf : 0;
-    half_edge *h = malloc(sizeof *h * (nh ? nh : 1));
+    int *order = malloc(sizeof(int) * (nh ? nh : 1));
     int *e = malloc(sizeof(int) * 2 * (nh ? nh : 1));
-    if (!h || !e) {
-        free(h);
+    int count = 0;
+    scaf_status st = order && e ? half_edges_sort(nv, nf, F, NULL, order, &count, err)
+                                : err_nomem(err, "boundary edges");
+    if (st != SCAF_OK) {
+        free(order);
         free(e);
-        return err_nomem(err, "boundary edges");
+        return st;
     }
-    for (int f = 0; f < nf; f++)
-        for (int j = 0; j < 3; j++) {
-            int a = F[3 * f + j], b = F[3 * f + (j + 1) % 3];
-            half_edge *x = &h[3 * (size_t)f + j];
-            x->a = a;
-            x->b = b;
-            x->lo = a < b ? a : b;
-            x->hi = a < b ? b : a;
-        }
-    qsort(h, nh, sizeof *h, cmp_half_edge);
     int n = 0;
-    for (size_t i = 0; i < nh;) {
-        size_t j = i + 1;
-        while (j < nh && h[j].lo == h[i].lo && h[j].hi == h[i].hi) j++;
+    for (int i = 0; i < count;) {
+        int j = i + 1;
+        while (j < count && half_edges_same_edge(F, order[i], order[j])) j++;
         if (j - i == 1) {
-            e[2 * n] = h[i].a;
-            e[2 * n + 1] = h[i].b;
+            e[2 * n] = F[order[i]];
+            e[2 * n + 1] = F[half_edge_next(order[i])];
             n++;
         }
         i = j;
     }
-    free(h);
+    free(order);
     *out = e;
     *nout = n;
     return SCAF_OK;
@@ -183,7 +164,7 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
             return err_set(err, SCAF_ERR_INTERNAL, "initial UV triangle %d is not positively oriented", f);
         }
     }
-    st = boundary_edges(nf, F, &L->bedges, &L->nbedges, err);
+    st = boundary_edges(nv, nf, F, &L->bedges, &L->nbedges, err);
     if (st != SCAF_OK) {
         scaf_loop_free(L);
         return st;
