@@ -57,11 +57,11 @@ static void print_json(const char *path, const bij_report *r, double gap, double
            r->mixed_charts, r->boundary_edges, r->boundary_loops, r->boundary_crossings,
            r->boundary_touchings, r->boundary_foldbacks, r->folded_edges, r->nonmanifold_edges, r->nested_loops,
            r->corner_overlaps, r->bijective ? "true" : "false");
-    if (isfinite(gap))
-        printf("\"min_chart_gap\": %.17g, ", gap);
-    else
-        printf("\"min_chart_gap\": null, ");
-    printf("\"packing_efficiency\": %.17g}\n", eff);
+    printf("\"min_chart_gap\": ");
+    json_write_number(stdout, gap);
+    printf(", \"packing_efficiency\": ");
+    json_write_number(stdout, eff);
+    printf("}\n");
 }
 
 static void print_text(const char *path, const bij_report *r, double gap, double eff)

@@ -1,0 +1,82 @@
+/* End-to-end tests of extreme but valid numbers (issue 9, section 4): the
+ * built `scaf` (SCAF_BINARY) on meshes whose coordinates are subnormal,
+ * tiny or near the largest double, and on option values at the edge of
+ * their range. JSON output is read back with Python's strict parser
+ * (NaN / Infinity tokens refused); finite inputs get finite answers or a
+ * usage error naming the allowed range, never an internal error. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "support/support.h"
+
+#ifndef SCAF_BINARY
+#define SCAF_BINARY "scaf"
+#endif
+
+/* Python: exit 0 when argv[1] is strict JSON whose keys argv[2:] all hold
+ * finite numbers; 3 on a NaN/Infinity token, 4 on a missing or non-number
+ * value, 1 on other parse errors. */
+#define STRICT_JSON_NUMBERS                                                                        \
+    "python3 -c 'import json,sys\n"                                                                \
+    "def bad(c): sys.exit(3)\n"                                                                    \
+    "d = json.load(open(sys.argv[1]), parse_constant=bad)\n"                                       \
+    "ok = all(isinstance(d.get(k), (int, float)) and not isinstance(d.get(k), bool) for k in sys.argv[2:])\n" \
+    "sys.exit(0 if ok else 4)'"
+
+/* One triangle with UVs (0,0) (s,0) (0,s), as text s. */
+static const char *write_triangle(const char *name, const char *s, char *path, size_t size)
+{
+    test_tmp_path(name, path, size);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fprintf(f, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt %s 0\nvt 0 %s\nf 1/1 2/2 3/3\n", s, s);
+    fclose(f);
+    return path;
+}
+
+static void check_json_is_strict_for_extreme_uvs(void **state)
+{
+    (void)state;
+    if (test_run("python3 -c 'import json' 2>/dev/null") != 0) skip();
+    const char *scales[] = {"1e-310", "1e155", "1e-200", "1e308", "4.9e-324"};
+    for (size_t i = 0; i < sizeof scales / sizeof *scales; i++) {
+        char obj[512], json[512];
+        write_triangle("extreme_tri.obj", scales[i], obj, sizeof obj);
+        test_tmp_path("extreme_tri.json", json, sizeof json);
+        assert_int_equal(test_run("%s check --json %s > %s", SCAF_BINARY, obj, json), 0);
+        /* one chart: min_chart_gap is null; the efficiency is a number */
+        assert_int_equal(test_run(STRICT_JSON_NUMBERS " %s packing_efficiency", json), 0);
+    }
+}
+
+static void check_gap_of_two_far_charts_is_a_number(void **state)
+{
+    (void)state;
+    if (test_run("python3 -c 'import json' 2>/dev/null") != 0) skip();
+    char obj[512], json[512];
+    test_tmp_path("extreme_two.obj", obj, sizeof obj);
+    FILE *f = fopen(obj, "w");
+    assert_non_null(f);
+    fprintf(f, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nv 2 1 0\n"
+               "vt 0 0\nvt 1e154 0\nvt 0 1e154\nvt 4e154 0\nvt 5e154 0\nvt 4e154 1e154\n"
+               "f 1/1 2/2 3/3\nf 4/4 5/5 6/6\n");
+    fclose(f);
+    test_tmp_path("extreme_two.json", json, sizeof json);
+    assert_int_equal(test_run("%s check --json %s > %s", SCAF_BINARY, obj, json), 0);
+    assert_int_equal(test_run(STRICT_JSON_NUMBERS " %s min_chart_gap packing_efficiency", json), 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(check_json_is_strict_for_extreme_uvs),
+        cmocka_unit_test(check_gap_of_two_far_charts_is_a_number),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
