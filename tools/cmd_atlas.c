@@ -132,7 +132,7 @@ int cmd_atlas(int argc, char **argv)
             out = v;
         } else if (!strcmp(a, "--padding")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &padding) || padding < 0 || padding >= 0.5) BAD_VALUE();
+            if (!cli_parse_double(v, &padding) || padding < 0) BAD_VALUE();
         } else if (!strcmp(a, "--resolution")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &resolution) || resolution < 1) BAD_VALUE();
@@ -199,15 +199,20 @@ int cmd_atlas(int argc, char **argv)
             return EXIT_USAGE;
         }
         padding = texels / resolution;
-        if (padding >= 0.5) {
-            fprintf(stderr, "scaf atlas: padding %g texels at %g is half the square or more\n", texels, resolution);
-            return EXIT_USAGE;
-        }
     }
     /* Default: 4 texels at 1024, so mip levels of a baked texture do not
      * bleed between charts; --padding 0 asks for none. */
     if (padding < 0.0) padding = 4.0 / 1024.0;
     opt.padding = padding;
+    /* every range, before any work (the library's own check) */
+    char msg[256];
+    if (atlas_options_check(&opt, msg, sizeof msg) != SCAF_OK) {
+        if (texels >= 0.0)
+            fprintf(stderr, "scaf atlas: %s (--padding-texels %g / --resolution %g)\n", msg, texels, resolution);
+        else
+            fprintf(stderr, "scaf atlas: %s\n", msg);
+        return EXIT_USAGE;
+    }
 
     double t_start = timer_now();
     mesh m;

@@ -10,6 +10,7 @@
 #include "app/atlas.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -360,22 +361,36 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
 
 /* ---- setup -------------------------------------------------------------------- */
 
+scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
+{
+    if (param_options_check(&o->base, msg, size) != SCAF_OK) return SCAF_ERR_USAGE;
+    const char *bad = NULL;
+    if (!(o->pack_gap_factor >= 1.0) || !(o->compact_lambda_ratio > 0.0) || !(o->compact_rest_scale > 0.0) ||
+        !(o->compact_rest_scale <= 1.0) || !(o->compact_box_scale >= 1.0) || !(o->compact_fraction > 0.0) ||
+        !(o->compact_fraction < 1.0) || o->pack_cells < 16 || o->pack_cells > 8192 || o->pack_picks < 1 || o->pack_picks > 16)
+        bad = "invalid atlas option (pack_gap_factor >= 1, compact_lambda_ratio > 0, "
+              "compact_rest_scale in (0, 1], compact_box_scale >= 1, "
+              "compact_fraction in (0, 1), pack_cells in [16, 8192], pack_picks in [1, 16])";
+    /* the output's padding is certified exactly (geom/chart_gap), which
+     * takes paddings of at least 2^-200 */
+    else if (!(o->padding == 0.0 || (o->padding >= CHART_GAP_EXACT_MIN && o->padding < 0.5))) {
+        if (msg && size)
+            snprintf(msg, size, "padding %g must be 0 or in [2^-200, 0.5) ([%.17g, 0.5))", o->padding,
+                     CHART_GAP_EXACT_MIN);
+        return SCAF_ERR_USAGE;
+    }
+    if (!bad) return SCAF_OK;
+    if (msg && size) snprintf(msg, size, "%s", bad);
+    return SCAF_ERR_USAGE;
+}
+
 scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_error *err)
 {
     memset(a, 0, sizeof *a);
     a->opt = o ? *o : atlas_options_default();
     scaf_status st = SCAF_OK;
     char msg[256];
-    if (param_options_check(&a->opt.base, msg, sizeof msg) != SCAF_OK)
-        return err_set(err, SCAF_ERR_USAGE, "%s", msg);
-    if (!(a->opt.pack_gap_factor >= 1.0) || !(a->opt.compact_lambda_ratio > 0.0) || !(a->opt.compact_rest_scale > 0.0) ||
-        !(a->opt.compact_rest_scale <= 1.0) || !(a->opt.compact_box_scale >= 1.0) || !(a->opt.compact_fraction > 0.0) ||
-        !(a->opt.compact_fraction < 1.0) || a->opt.pack_cells < 16 || a->opt.pack_cells > 8192 || a->opt.pack_picks < 1 || a->opt.pack_picks > 16)
-        return err_set(err, SCAF_ERR_USAGE, "invalid atlas option (pack_gap_factor >= 1, compact_lambda_ratio > 0, "
-                                            "compact_rest_scale in (0, 1], compact_box_scale >= 1, "
-                                            "compact_fraction in (0, 1), pack_cells in [16, 8192], pack_picks in [1, 16])");
-    if (!(a->opt.padding >= 0.0) || !(a->opt.padding < 0.5))
-        return err_set(err, SCAF_ERR_USAGE, "padding %g must be in [0, 0.5)", a->opt.padding);
+    if (atlas_options_check(&a->opt, msg, sizeof msg) != SCAF_OK) return err_set(err, SCAF_ERR_USAGE, "%s", msg);
     if (a->opt.init_input && !mesh_has_uv(m))
         return err_set(err, SCAF_ERR_USAGE, "--init input: the mesh has no UVs (vt) to start from");
     int *FT2 = NULL, *map = NULL, nuv2 = 0;

@@ -84,8 +84,7 @@ static int finite_at_least(double x, double lo) { return isfinite(x) && x >= lo;
 static scaf_status options_check(const scaf_atlas_options_t *o, scaf_error *err)
 {
     const char *bad = NULL;
-    if (!(o->padding >= 0.0 && o->padding < 0.5)) bad = "padding must be in [0, 0.5)";
-    else if ((int)o->energy < 0 || o->energy > SCAF_ENERGY_CONFORMAL) bad = "energy is not a known energy";
+    if ((int)o->energy < 0 || o->energy > SCAF_ENERGY_CONFORMAL) bad = "energy is not a known energy";
     else if ((int)o->init < 0 || o->init > SCAF_INIT_MVC) bad = "init is not tutte, harmonic or mvc";
     else if (o->init_input != 0 && o->init_input != 1) bad = "init_input must be 0 or 1";
     else if (o->settle_iterations < 0) bad = "settle_iterations must be >= 0";
@@ -100,10 +99,10 @@ static scaf_status options_check(const scaf_atlas_options_t *o, scaf_error *err)
     else if (!(o->compact_lambda_ratio > 0.0) || !isfinite(o->compact_lambda_ratio))
         bad = "compact_lambda_ratio must be a finite number > 0";
     if (bad) return err_set(err, SCAF_ERR_USAGE, "invalid atlas option: %s", bad);
-    /* the loop's own rules on the fields it shares */
+    /* the padding's range and the loop's own rules on the fields it shares */
     atlas_options in = to_internal(o);
     char msg[256];
-    if (param_options_check(&in.base, msg, sizeof msg) != SCAF_OK)
+    if (atlas_options_check(&in, msg, sizeof msg) != SCAF_OK)
         return err_set(err, SCAF_ERR_USAGE, "invalid atlas option: %s", msg);
     return SCAF_OK;
 }

@@ -509,7 +509,7 @@ scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double
 static int exact_range(double x)
 {
     double ax = fabs(x);
-    return ax == 0.0 || (ax >= 0x1p-200 && ax <= 0x1p200);
+    return ax == 0.0 || (ax >= CHART_GAP_EXACT_MIN && ax <= CHART_GAP_EXACT_MAX);
 }
 
 scaf_status chart_gap_certify(const double *UV, const int *seg, int n, double padding, int *ok, int pair[2],

@@ -73,6 +73,11 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int nseg, d
 scaf_status chart_gap_mark_close(const double *UV, const int *seg, int nseg, double radius, unsigned char *mark,
                                  long *npairs, scaf_error *err);
 
+/* The smallest nonzero padding (and coordinate magnitude) the exact
+ * certificate takes, and the largest: 2^-200 and 2^200. */
+#define CHART_GAP_EXACT_MIN 0x1p-200
+#define CHART_GAP_EXACT_MAX 0x1p200
+
 /* Exact certificate (definition above): *ok = 1 when every pair of
  * boundary segments of different charts is at distance >= padding, else 0
  * with pair (may be NULL) = two charts of a failing pair.

@@ -72,11 +72,46 @@ static void check_gap_of_two_far_charts_is_a_number(void **state)
     assert_int_equal(test_run(STRICT_JSON_NUMBERS " %s min_chart_gap packing_efficiency", json), 0);
 }
 
+/* Paddings below 2^-200 (the exact certificate's range), directly or as
+ * texels / resolution, are usage errors naming the range, found before the
+ * input is read (a missing input would be exit 3). */
+static void atlas_padding_range_checked_up_front(void **state)
+{
+    (void)state;
+    char out[512], err[512];
+    test_tmp_path("extreme_out.obj", out, sizeof out);
+    test_tmp_path("extreme_err.txt", err, sizeof err);
+    const char *opts[] = {"--padding 1e-61", "--resolution 1e300 --padding-texels 1", "--padding 0.5",
+                          "--padding-texels 512 --resolution 1024"};
+    for (size_t i = 0; i < sizeof opts / sizeof *opts; i++) {
+        assert_int_equal(test_run("%s atlas /nonexistent/in.obj -o %s %s 2> %s", SCAF_BINARY, out, opts[i], err), 2);
+        char *msg = test_slurp(err);
+        assert_non_null(msg);
+        assert_non_null(strstr(msg, "must be 0 or in [2^-200, 0.5)"));
+        free(msg);
+        assert_false(test_exists(out));
+    }
+}
+
+/* The smallest padding accepted runs to the end and is certified. */
+static void atlas_smallest_padding_runs(void **state)
+{
+    (void)state;
+    char in[512], out[512];
+    test_tmp_path("extreme_cs.obj", in, sizeof in);
+    test_tmp_path("extreme_cs_out.obj", out, sizeof out);
+    assert_int_equal(test_run("%s gen cubesphere --size 2 -o %s", SCAF_BINARY, in), 0);
+    assert_int_equal(test_run("%s atlas %s -o %s -q --padding 6.3e-61", SCAF_BINARY, in, out), 0);
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(check_json_is_strict_for_extreme_uvs),
         cmocka_unit_test(check_gap_of_two_far_charts_is_a_number),
+        cmocka_unit_test(atlas_padding_range_checked_up_front),
+        cmocka_unit_test(atlas_smallest_padding_runs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
