@@ -254,7 +254,12 @@ int cmd_param(int argc, char **argv)
         rc = EXIT_NOMEM;
         goto done;
     }
-    scaf_param_get_uv(p, UV, FT);
+    if (scaf_param_get_uv(p, UV, FT) != SCAF_OK) {
+        fprintf(stderr, "scaf param: %s: the UVs cannot be written exactly in the mesh's units "
+                        "(a coordinate would overflow or be subnormal); scale the mesh by a power of 2\n", in);
+        rc = EXIT_NUMERIC;
+        goto done;
+    }
     mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
     if (cli_write_uv("param", in, &rinfo, out, &o, &err) != SCAF_OK) {
         fprintf(stderr, "scaf param: %s\n", err.message);

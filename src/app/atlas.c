@@ -19,6 +19,7 @@
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
 #include "geom/predicates.h"
+#include "mesh/position_scale.h"
 #include "mesh/union_find.h"
 #include "opt/flip_free_step.h"
 
@@ -430,10 +431,17 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         st = err_nomem(err, "atlas");
         goto done;
     }
-    scaf_param_get_uv(p, uv0, a->Fw);
+    /* the start and the positions in param's units (mesh/position_scale):
+     * the atlas is normalized into the unit square, so these units never
+     * show, and the result does not depend on the input's units */
+    const scaf_loop *L = param_loop(p);
+    memcpy(uv0, L->uv, sizeof(double) * 2 * (size_t)a->nw);
+    memcpy(a->Fw, L->F, sizeof(int) * 3 * (size_t)a->nf);
+    int e = position_scale_exponent(m->V, m->nf, m->F);
     for (int f = 0; f < a->nf; f++)
         for (int j = 0; j < 3; j++)
-            memcpy(W3 + 3 * (size_t)a->Fw[3 * f + j], m->V + 3 * (size_t)m->F[3 * f + j], sizeof(double) * 3);
+            for (int k = 0; k < 3; k++)
+                W3[3 * (size_t)a->Fw[3 * f + j] + k] = ldexp(m->V[3 * (size_t)m->F[3 * f + j] + k], -e);
     int nc = 0;
     st = chart_gap_labels(a->nw, a->nf, a->Fw, a->chart, &nc, err);
     if (st != SCAF_OK) goto done;

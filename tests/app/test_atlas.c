@@ -21,6 +21,7 @@
 #include <cmocka.h>
 
 #include "app/atlas.h"
+#include "mesh/position_scale.h"
 #include "app/atlas_pack.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -322,20 +323,22 @@ static void init_input(void **state)
     for (int v = 16; v < m.nv; v++) m.UV[2 * v] += 5.0;
     err_clear(&err);
     assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
-    /* the start is the input up to one power-of-two scale (here the UVs
-     * are already at the surface's scale: factor 1) */
+    /* the start is the input up to one power-of-two scale: the surface's
+     * (positions / 2^e, mesh/position_scale) over the UVs' (here the UVs
+     * are at the surface's scale: factor 2^-e) */
+    int e = position_scale_exponent(m.V, m.nf, m.F);
     for (int c = 0; c < 3 * m.nf; c++) {
-        assert_true(a.loop.uv[2 * a.Fw[c]] == m.UV[2 * m.FT[c]]);
-        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == m.UV[2 * m.FT[c] + 1]);
+        assert_true(a.loop.uv[2 * a.Fw[c]] == ldexp(m.UV[2 * m.FT[c]], -e));
+        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == ldexp(m.UV[2 * m.FT[c] + 1], -e));
     }
     atlas_free(&a);
-    /* UVs 8 times too small: scaled back by exactly 8 */
+    /* UVs 8 times too small: the same start */
     for (int i = 0; i < 2 * m.nuv; i++) m.UV[i] /= 8.0;
     err_clear(&err);
     assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
     for (int c = 0; c < 3 * m.nf; c++) {
-        assert_true(a.loop.uv[2 * a.Fw[c]] == 8.0 * m.UV[2 * m.FT[c]]);
-        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == 8.0 * m.UV[2 * m.FT[c] + 1]);
+        assert_true(a.loop.uv[2 * a.Fw[c]] == ldexp(8.0 * m.UV[2 * m.FT[c]], -e));
+        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == ldexp(8.0 * m.UV[2 * m.FT[c] + 1], -e));
     }
     atlas_free(&a);
     mesh_free(&m);
