@@ -16,6 +16,7 @@
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
 #include "mesh/mesh_io.h"
+#include "mesh/uv_verdict.h"
 
 static void usage(FILE *out)
 {
@@ -130,7 +131,7 @@ int cmd_check(int argc, char **argv)
         return EXIT_MESH;
     }
     bij_report r;
-    s = bij_check(m.nuv, m.UV, m.nf, m.FT, NULL, NULL, &r, &err);
+    s = mesh_uv_verdict(&m, &r, &err); /* the verdict scaf atlas --init input quotes */
     double gap = INFINITY, eff = 0.0;
     if (s == SCAF_OK) s = chart_gap_min(m.nuv, m.UV, m.nf, m.FT, NULL, 0.0, &gap, NULL, &err);
     if (s == SCAF_OK) eff = chart_packing_efficiency(m.nuv, m.UV, m.nf, m.FT);

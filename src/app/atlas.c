@@ -21,6 +21,7 @@
 #include "geom/predicates.h"
 #include "mesh/position_scale.h"
 #include "mesh/union_find.h"
+#include "mesh/uv_verdict.h"
 #include "opt/flip_free_step.h"
 
 /* Margin on the padding so rounding in the final normalization cannot
@@ -394,6 +395,19 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     if (atlas_options_check(&a->opt, msg, sizeof msg) != SCAF_OK) return err_set(err, SCAF_ERR_USAGE, "%s", msg);
     if (a->opt.init_input && !mesh_has_uv(m))
         return err_set(err, SCAF_ERR_USAGE, "--init input: the mesh has no UVs (vt) to start from");
+    if (a->opt.init_input) {
+        /* the verdict of `scaf check` on the same data, with its counts */
+        bij_report r;
+        st = mesh_uv_verdict(m, &r, err);
+        if (st != SCAF_OK) return st;
+        if (!r.bijective) {
+            char defects[320];
+            bij_report_defects(&r, defects, sizeof defects);
+            return err_set(err, SCAF_ERR_MESH,
+                           "--init input: the input UVs are not bijective (as scaf check reports: %s); "
+                           "use the default start (Tutte on circles)", defects);
+        }
+    }
     int *FT2 = NULL, *map = NULL, nuv2 = 0;
     double *UV2 = NULL, *W3 = NULL, *uv0 = NULL;
     scaf_param_t *p = NULL;
@@ -460,16 +474,20 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         for (int f = 0; f < a->nf; f++)
             for (int j = 0; j < 3; j++)
                 memcpy(uv0 + 2 * (size_t)a->Fw[3 * f + j], UV2 + 2 * (size_t)FT2[3 * f + j], sizeof(double) * 2);
+        /* The input is bijective (checked above); split pinch points are
+         * distinct indices at one point now, which the scaffold cannot
+         * separate: say so rather than quote other counts. */
         bij_report r;
         st = bij_check(a->nw, uv0, a->nf, a->Fw, a->chart, NULL, &r, err);
         if (st != SCAF_OK) goto done;
         if (!r.bijective) {
+            char defects[320];
+            bij_report_defects(&r, defects, sizeof defects);
             st = err_set(err, SCAF_ERR_MESH,
-                         "--init input: the input UVs are not bijective (%d flipped, %d degenerate triangles, "
-                         "%d mirrored charts, %lld boundary crossings, %lld touchings, %d nested loops); "
-                         "use the default start (Tutte on circles)",
-                         r.flipped, r.degenerate, r.mirrored_charts, r.boundary_crossings, r.boundary_touchings,
-                         r.nested_loops);
+                         "--init input: the input UVs are bijective, but with its %d pinch point(s) (a vt where a "
+                         "chart touches itself) split into one UV per fan they are not (%s): the optimizer cannot "
+                         "start there; use the default start (Tutte on circles)",
+                         a->split_uvs, defects);
             goto done;
         }
         /* Bring the input to the surface's scale (distortion is measured
