@@ -13,6 +13,7 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "mesh/samples.h"
 #include "support/support.h"
 
 #ifndef SCAF_BINARY
@@ -105,6 +106,68 @@ static void atlas_smallest_padding_runs(void **state)
     assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
 }
 
+/* The hemisphere sample with every position times s, face 0 made
+ * degenerate (its third vertex moved onto its first) when
+ * degenerate is set; written as OBJ with round-trip precision. */
+static const char *write_scaled_hemisphere(const char *name, double s, int degenerate, char *path, size_t size)
+{
+    mesh m;
+    scaf_error err;
+    assert_int_equal(mesh_sample_make("hemisphere", 4, &m, &err), SCAF_OK);
+    if (degenerate) {
+        const double *a = m.V + 3 * m.F[0], *b = m.V + 3 * m.F[1];
+        double *c = m.V + 3 * m.F[2];
+        /* c = a: a repeated position, zero area at every scale */
+        (void)b;
+        for (int k = 0; k < 3; k++) c[k] = a[k];
+    }
+    test_tmp_path(name, path, size);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    for (int v = 0; v < m.nv; v++)
+        fprintf(f, "v %.17g %.17g %.17g\n", m.V[3 * v] * s, m.V[3 * v + 1] * s, m.V[3 * v + 2] * s);
+    for (int t = 0; t < m.nf; t++) fprintf(f, "f %d %d %d\n", m.F[3 * t] + 1, m.F[3 * t + 1] + 1, m.F[3 * t + 2] + 1);
+    fclose(f);
+    mesh_free(&m);
+    return path;
+}
+
+/* info, param and atlas agree on what is degenerate, at any scale; a
+ * mesh without degenerate faces is parametrized at 1e80 and 1e-80 (was
+ * "chart has 3D area inf" / "face 0 is degenerate (zero 3D area)"). */
+static void one_degeneracy_verdict_at_any_scale(void **state)
+{
+    (void)state;
+    const double scales[] = {1.0, 1e80, 1e-80, 1e300, 1e-300};
+    for (size_t i = 0; i < sizeof scales / sizeof *scales; i++)
+        for (int deg = 0; deg < 2; deg++) {
+            char obj[512], out[512], txt[512];
+            write_scaled_hemisphere("extreme_hemi.obj", scales[i], deg, obj, sizeof obj);
+            test_tmp_path("extreme_hemi_out.obj", out, sizeof out);
+            test_tmp_path("extreme_hemi.txt", txt, sizeof txt);
+            assert_int_equal(test_run("%s info --json %s > %s", SCAF_BINARY, obj, txt), 0);
+            char *info = test_slurp(txt);
+            assert_non_null(info);
+            /* faces 0 and 1 share the moved vertex: both degenerate */
+            assert_non_null(strstr(info, deg ? "\"degenerate_faces\": 2," : "\"degenerate_faces\": 0,"));
+            free(info);
+            const char *cmd[] = {"param", "atlas"};
+            for (int c = 0; c < 2; c++) {
+                int rc = test_run("%s %s %s -o %s -q 2> %s", SCAF_BINARY, cmd[c], obj, out, txt);
+                if (!deg) {
+                    assert_int_equal(rc, 0);
+                    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+                    continue;
+                }
+                assert_int_equal(rc, 4);
+                char *msg = test_slurp(txt);
+                assert_non_null(msg);
+                assert_non_null(strstr(msg, "face 0 is degenerate"));
+                free(msg);
+            }
+        }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -112,6 +175,7 @@ int main(void)
         cmocka_unit_test(check_gap_of_two_far_charts_is_a_number),
         cmocka_unit_test(atlas_padding_range_checked_up_front),
         cmocka_unit_test(atlas_smallest_padding_runs),
+        cmocka_unit_test(one_degeneracy_verdict_at_any_scale),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
