@@ -9,6 +9,7 @@
  */
 #include "app/atlas.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,8 +19,8 @@
 #include "app/param.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
+#include "geom/coord_scale.h"
 #include "geom/predicates.h"
-#include "mesh/position_scale.h"
 #include "mesh/union_find.h"
 #include "mesh/uv_verdict.h"
 #include "opt/flip_free_step.h"
@@ -363,6 +364,19 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
 
 /* ---- setup -------------------------------------------------------------------- */
 
+/* x[i] *= 2^s for all i; the first i where that rounds (leaves the normal
+ * range), or -1 when every product is exact. */
+static int scale_exactly(double *x, size_t n, int s)
+{
+    int bad = -1;
+    for (size_t i = 0; i < n; i++) {
+        double y = ldexp(x[i], s);
+        if (bad < 0 && ldexp(y, -s) != x[i]) bad = (int)(i > INT_MAX ? INT_MAX : i);
+        x[i] = y;
+    }
+    return bad;
+}
+
 scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
 {
     if (param_options_check(&o->base, msg, size) != SCAF_OK) return SCAF_ERR_USAGE;
@@ -445,13 +459,13 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         st = err_nomem(err, "atlas");
         goto done;
     }
-    /* the start and the positions in param's units (mesh/position_scale):
+    /* the start and the positions in param's units (geom/coord_scale):
      * the atlas is normalized into the unit square, so these units never
      * show, and the result does not depend on the input's units */
     const scaf_loop *L = param_loop(p);
     memcpy(uv0, L->uv, sizeof(double) * 2 * (size_t)a->nw);
     memcpy(a->Fw, L->F, sizeof(int) * 3 * (size_t)a->nf);
-    int e = position_scale_exponent(m->V, m->nf, m->F);
+    int e = coord_scale_exponent(m->V, 3, 3 * (size_t)m->nf, m->F);
     for (int f = 0; f < a->nf; f++)
         for (int j = 0; j < 3; j++)
             for (int k = 0; k < 3; k++)
@@ -491,11 +505,15 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
             goto done;
         }
         /* Bring the input to the surface's scale (distortion is measured
-         * against 3D lengths) with a power of two: exact in floating
-         * point, so every orientation and non-overlap the checker proved
-         * still holds. */
+         * against 3D lengths) with powers of two: first to its own unit
+         * scale (largest coordinate in [1, 2), geom/coord_scale), so its
+         * area neither overflows nor underflows whatever its units, then
+         * to the surface's area. Exact in floating point (checked), so
+         * every orientation and non-overlap the checker proved still
+         * holds. */
+        int eu = -coord_scale_exponent(uv0, 2, 3 * (size_t)a->nf, a->Fw), bad = scale_exactly(uv0, 2 * (size_t)a->nw, eu);
         double a3 = 0.0, a2 = 0.0;
-        for (int f = 0; f < a->nf; f++) {
+        for (int f = 0; f < a->nf && bad < 0; f++) {
             const int *t = a->Fw + 3 * f;
             const double *p0 = W3 + 3 * (size_t)t[0], *p1 = W3 + 3 * (size_t)t[1], *p2 = W3 + 3 * (size_t)t[2];
             double u[3], w[3];
@@ -508,11 +526,17 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
             const double *q0 = uv0 + 2 * (size_t)t[0], *q1 = uv0 + 2 * (size_t)t[1], *q2 = uv0 + 2 * (size_t)t[2];
             a2 += 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
         }
-        if (a3 > 0.0 && a2 > 0.0) {
-            int e = (int)lround(0.5 * log2(a3 / a2));
-            if (e > 200) e = 200;
-            if (e < -200) e = -200;
-            for (int i = 0; i < 2 * a->nw; i++) uv0[i] = ldexp(uv0[i], e);
+        if (bad < 0 && a3 > 0.0 && a2 > 0.0) {
+            int es = (int)lround(0.5 * log2(a3 / a2));
+            if (es > 200) es = 200;
+            if (es < -200) es = -200;
+            bad = scale_exactly(uv0, 2 * (size_t)a->nw, es);
+        }
+        if (bad >= 0) {
+            st = err_set(err, SCAF_ERR_MESH,
+                         "--init input: the input UVs span too many orders of magnitude to be brought to the "
+                         "surface's scale exactly (UV coordinate %d would round); use the default start", bad);
+            goto done;
         }
     }
 

@@ -19,7 +19,7 @@
 
 #include "mesh/degenerate.h"
 #include "mesh/mesh.h"
-#include "mesh/position_scale.h"
+#include "geom/coord_scale.h"
 #include "mesh/uv_charts.h"
 #include "opt/embed.h"
 
@@ -36,7 +36,7 @@ struct scaf_param {
     int ncharts;
     int nw;          /* working vertices */
     int *Fw;         /* nf by 3 working vertex per corner */
-    int pos_exp;     /* the loop works on positions / 2^pos_exp (mesh/position_scale) */
+    int pos_exp;     /* the loop works on positions / 2^pos_exp (geom/coord_scale) */
     scaf_loop loop;
 };
 
@@ -178,13 +178,13 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     scaf_error *err = &p->err;
     scaf_status st = param_check_arrays(V, nv, F, nf, UV, nuv, FT, err);
     if (st != SCAF_OK) return st;
-    /* Work at unit scale, exactly (mesh/position_scale): the result does
+    /* Work at unit scale, exactly (geom/coord_scale): the result does
      * not depend on the input's units; UVs go back to them in get_uv. */
-    p->pos_exp = position_scale_exponent(V, nf, F);
+    p->pos_exp = coord_scale_exponent(V, 3, 3 * (size_t)nf, F);
     const double *V_in = V;
     double *Vs = malloc(sizeof(double) * 3 * (size_t)nv);
     if (!Vs) return err_nomem(err, "scaled positions");
-    position_scale_apply(Vs, V, nv, nf, F, p->pos_exp);
+    coord_scale_apply(Vs, V, 3, nv, 3 * (size_t)nf, F, p->pos_exp);
     V = Vs;
 
     mesh m = {nv, (double *)V, nf, (int *)F, nuv, (double *)UV, (int *)FT};

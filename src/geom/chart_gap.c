@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "geom/bijectivity.h"
+#include "geom/coord_scale.h"
 #include "geom/expansion.h"
 
 static int find_root(int *p, int x)
@@ -159,24 +160,12 @@ int chart_segment_distance_at_least(const double p1[2], const double p2[2], cons
            point_segment_at_least(q1, p1, p2, lp, P2) && point_segment_at_least(q2, p1, p2, lp, P2);
 }
 
-/* The exponent k with max |coordinate| / 2^k in [1, 2) over the UV points of
- * the triangles (0 when all are 0): dividing by 2^k is exact, so results
- * computed on the scaled points neither overflow nor underflow and are the
- * results of the points as given, scaled. */
-static int uv_scale_exponent(const double *UV, int nf, const int *F)
-{
-    double m = 0.0;
-    for (size_t i = 0; i < 3 * (size_t)nf; i++)
-        for (int k = 0; k < 2; k++) m = fmax(m, fabs(UV[2 * (size_t)F[i] + k]));
-    return m > 0.0 && isfinite(m) ? ilogb(m) : 0;
-}
-
 double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F)
 {
     (void)nuv;
     /* scale-free: computed on the points divided by a power of two, so
      * subnormal and huge layouts get the same number as unit ones */
-    int e = uv_scale_exponent(UV, nf, F);
+    int e = coord_scale_exponent(UV, 2, 3 * (size_t)nf, F);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, area = 0.0;
     for (int f = 0; f < nf; f++) {
         double p[3][2];

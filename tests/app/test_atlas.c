@@ -21,7 +21,7 @@
 #include <cmocka.h>
 
 #include "app/atlas.h"
-#include "mesh/position_scale.h"
+#include "geom/coord_scale.h"
 #include "app/atlas_pack.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -324,9 +324,9 @@ static void init_input(void **state)
     err_clear(&err);
     assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
     /* the start is the input up to one power-of-two scale: the surface's
-     * (positions / 2^e, mesh/position_scale) over the UVs' (here the UVs
+     * (positions / 2^e, geom/coord_scale) over the UVs' (here the UVs
      * are at the surface's scale: factor 2^-e) */
-    int e = position_scale_exponent(m.V, m.nf, m.F);
+    int e = coord_scale_exponent(m.V, 3, 3 * (size_t)m.nf, m.F);
     for (int c = 0; c < 3 * m.nf; c++) {
         assert_true(a.loop.uv[2 * a.Fw[c]] == ldexp(m.UV[2 * m.FT[c]], -e));
         assert_true(a.loop.uv[2 * a.Fw[c] + 1] == ldexp(m.UV[2 * m.FT[c] + 1], -e));
@@ -341,6 +341,23 @@ static void init_input(void **state)
         assert_true(a.loop.uv[2 * a.Fw[c] + 1] == ldexp(8.0 * m.UV[2 * m.FT[c] + 1], -e));
     }
     atlas_free(&a);
+    /* UVs in any units, subnormal to huge: the same start (was clamped at
+     * 2^+-200 of rescaling, then failed in the scaffold) */
+    const int k[] = {-1000, 900, 1000};
+    for (size_t t = 0; t < sizeof k / sizeof *k; t++) {
+        mesh s = m;
+        s.UV = malloc(sizeof(double) * 2 * (size_t)m.nuv);
+        assert_non_null(s.UV);
+        for (int i = 0; i < 2 * m.nuv; i++) s.UV[i] = ldexp(8.0 * m.UV[i], k[t]);
+        err_clear(&err);
+        assert_int_equal(atlas_init(&a, &s, &o, &err), SCAF_OK);
+        for (int c = 0; c < 3 * m.nf; c++) {
+            assert_true(a.loop.uv[2 * a.Fw[c]] == ldexp(8.0 * m.UV[2 * m.FT[c]], -e));
+            assert_true(a.loop.uv[2 * a.Fw[c] + 1] == ldexp(8.0 * m.UV[2 * m.FT[c] + 1], -e));
+        }
+        atlas_free(&a);
+        free(s.UV);
+    }
     mesh_free(&m);
 }
 

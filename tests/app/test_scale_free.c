@@ -14,7 +14,7 @@
 #include <cmocka.h>
 
 #include "app/atlas.h"
-#include "mesh/position_scale.h"
+#include "geom/coord_scale.h"
 #include "mesh/samples.h"
 #include "mesh/topology.h"
 #include "scaf/scaf.h"
