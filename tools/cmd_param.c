@@ -135,7 +135,7 @@ int cmd_param(int argc, char **argv)
             if (!cli_parse_int(v, &opt.max_iterations)) BAD_VALUE();
         } else if (!strcmp(a, "--tolerance")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &opt.tolerance) || opt.tolerance < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.tolerance)) BAD_VALUE();
         } else if (!strcmp(a, "--energy")) {
             NEED_VALUE();
             if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd")) opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;

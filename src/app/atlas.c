@@ -377,16 +377,32 @@ static int scale_exactly(double *x, size_t n, int s)
     return bad;
 }
 
+static int finite_at_least(double x, double lo) { return isfinite(x) && x >= lo; }
+
 scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
 {
     if (param_options_check(&o->base, msg, size) != SCAF_OK) return SCAF_ERR_USAGE;
     const char *bad = NULL;
-    if (!(o->pack_gap_factor >= 1.0) || !(o->compact_lambda_ratio > 0.0) || !(o->compact_rest_scale > 0.0) ||
-        !(o->compact_rest_scale <= 1.0) || !(o->compact_box_scale >= 1.0) || !(o->compact_fraction > 0.0) ||
-        !(o->compact_fraction < 1.0) || o->pack_cells < 16 || o->pack_cells > 8192 || o->pack_picks < 1 || o->pack_picks > 16)
-        bad = "invalid atlas option (pack_gap_factor >= 1, compact_lambda_ratio > 0, "
-              "compact_rest_scale in (0, 1], compact_box_scale >= 1, "
-              "compact_fraction in (0, 1), pack_cells in [16, 8192], pack_picks in [1, 16])";
+    if (o->init_input != 0 && o->init_input != 1) bad = "init_input must be 0 or 1";
+    else if (o->settle_iterations < 0) bad = "settle_iterations must be >= 0";
+    else if (!finite_at_least(o->settle_tolerance, 0.0)) bad = "settle_tolerance must be a finite number >= 0";
+    else if (o->compact_iterations < 0) bad = "compact_iterations must be >= 0";
+    else if (!finite_at_least(o->distortion_tolerance, 0.0))
+        bad = "distortion_tolerance must be a finite number >= 0";
+    else if (o->repack != 0 && o->repack != 1) bad = "repack must be 0 or 1";
+    else if (o->pack_cells < 16 || o->pack_cells > 8192) bad = "pack_cells must be in [16, 8192]";
+    else if (!(o->compact_lambda_ratio > 0.0) || !isfinite(o->compact_lambda_ratio))
+        bad = "compact_lambda_ratio must be a finite number > 0";
+    else if (!(o->pack_gap_factor >= 1.0) || !isfinite(o->pack_gap_factor))
+        bad = "pack_gap_factor must be a finite number >= 1";
+    else if (!(o->compact_rest_scale > 0.0) || !(o->compact_rest_scale <= 1.0))
+        bad = "compact_rest_scale must be in (0, 1]";
+    else if (!(o->compact_box_scale >= 1.0) || !(o->compact_box_scale <= 1e6))
+        bad = "compact_box_scale must be in [1, 1e6]";
+    else if (!(o->compact_fraction > 0.0) || !(o->compact_fraction < 1.0)) bad = "compact_fraction must be in (0, 1)";
+    else if (o->pack_picks < 1 || o->pack_picks > 16) bad = "pack_picks must be in [1, 16]";
+    else if (!finite_at_least(o->progress_tolerance, 0.0)) bad = "progress_tolerance must be a finite number >= 0";
+    else if (o->progress_window < 1 || o->progress_window > 64) bad = "progress_window must be in [1, 64]";
     /* the output's padding is certified exactly (geom/chart_gap), which
      * takes paddings of at least 2^-200 */
     else if (!(o->padding == 0.0 || (o->padding >= CHART_GAP_EXACT_MIN && o->padding < 0.5))) {

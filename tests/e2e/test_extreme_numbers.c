@@ -168,6 +168,35 @@ static void one_degeneracy_verdict_at_any_scale(void **state)
         }
 }
 
+/* Every out-of-range option value is a usage error (2) that says the
+ * allowed range, before the input is read. */
+static void options_out_of_range_say_the_range(void **state)
+{
+    (void)state;
+    struct {
+        const char *cmd, *opts, *want;
+    } c[] = {
+        {"atlas", "--padding -1", "0 or in [2^-200, 0.5)"},
+        {"atlas", "--resolution 0.5", ">= 1"},
+        {"atlas", "--padding-texels -2 --resolution 10", ">= 0"},
+        {"atlas", "--distortion-tolerance -1", "distortion_tolerance must be a finite number >= 0"},
+        {"atlas", "--compact-lambda-ratio 0", "compact_lambda_ratio must be a finite number > 0"},
+        {"atlas", "--box-scale 1e300", "box_scale must be in [1, 1e6]"},
+        {"param", "--tolerance -1", "tolerance must be a finite number >= 0"},
+        {"param", "--min-angle 45", "min_angle_deg must be in [0, 30]"},
+    };
+    char out[512], err[512];
+    test_tmp_path("extreme_out.obj", out, sizeof out);
+    test_tmp_path("extreme_err.txt", err, sizeof err);
+    for (size_t i = 0; i < sizeof c / sizeof *c; i++) {
+        assert_int_equal(test_run("%s %s /nonexistent/in.obj -o %s %s 2> %s", SCAF_BINARY, c[i].cmd, out, c[i].opts, err), 2);
+        char *msg = test_slurp(err);
+        assert_non_null(msg);
+        if (!strstr(msg, c[i].want)) fail_msg("%s %s: '%s' does not say '%s'", c[i].cmd, c[i].opts, msg, c[i].want);
+        free(msg);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -175,6 +204,7 @@ int main(void)
         cmocka_unit_test(check_gap_of_two_far_charts_is_a_number),
         cmocka_unit_test(atlas_padding_range_checked_up_front),
         cmocka_unit_test(atlas_smallest_padding_runs),
+        cmocka_unit_test(options_out_of_range_say_the_range),
         cmocka_unit_test(one_degeneracy_verdict_at_any_scale),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
