@@ -82,7 +82,10 @@ static void print_text(const char *path, const bij_report *r, double gap, double
     printf("  non-manifold edges   %d\n", r->nonmanifold_edges);
     printf("  nested loops         %d\n", r->nested_loops);
     printf("  corner overlaps      %d\n", r->corner_overlaps);
-    printf("  min chart gap        %.6g\n", gap);
+    if (isfinite(gap))
+        printf("  min chart gap        %.6g\n", gap);
+    else
+        printf("  min chart gap        none (fewer than two charts)\n");
     printf("  packing efficiency   %.4f\n", eff);
 }
 
