@@ -11,6 +11,7 @@
 #include "app/param.h"
 #include "app/uv_fans.h"
 
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -222,9 +223,10 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
             goto fail;
         }
         double a = area3(V + 3 * (size_t)t[0], V + 3 * (size_t)t[1], V + 3 * (size_t)t[2]);
-        if (!(a > 0.0) || !isfinite(a)) {
-            st = err_set(err, SCAF_ERR_MESH, "chart %d: face %d is not degenerate, but its area relative to the "
-                         "mesh's size (%g) is below what double precision resolves", ch.cx.face_group[f], f, a);
+        if (!(a >= DBL_MIN) || !isfinite(a)) {
+            st = err_set(err, SCAF_ERR_MESH, "chart %d: face %d is not degenerate, but too small next to the "
+                         "mesh's largest coordinate (2^%d) for double precision: its area underflows",
+                         ch.cx.face_group[f], f, p->pos_exp);
             goto fail;
         }
     }
