@@ -103,10 +103,11 @@ static void grid_init(grid *g, double minx, double miny, double maxx, double max
     } else if (!(h > 0 && isfinite(h))) {
         nx = cells, ny = 1;
     } else {
-        double ax = sqrt((double)cells * w / h);
-        nx = (long)ceil(ax);
+        /* w / h overflows or underflows for extreme aspect ratios: clamp
+         * in double before converting */
+        double ax = ceil(sqrt((double)cells * w / h));
+        nx = ax < (double)cells ? (long)ax : cells;
         if (nx < 1) nx = 1;
-        if (nx > cells) nx = cells;
         ny = (cells + nx - 1) / nx;
     }
     g->minx = minx;

@@ -358,6 +358,28 @@ scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg
         }
         i = j;
     }
+    /* A chart without a boundary edge (a point: one UV index three times;
+     * faces covering each other twice) still has points: give it a
+     * zero-length segment at its first corner so its distance to the other
+     * charts counts. Room: its edges, all paired, took no row. */
+    int nch = 0;
+    for (int f = 0; f < nf; f++)
+        if (chart[f] + 1 > nch) nch = chart[f] + 1;
+    unsigned char *has = calloc((size_t)(nch ? nch : 1), 1);
+    if (!has) {
+        free(e);
+        free(seg);
+        return err_nomem(err, "chart boundary segments");
+    }
+    for (int s = 0; s < n; s++) has[seg[3 * s + 2]] = 1;
+    for (int f = 0; f < nf; f++)
+        if (!has[chart[f]]) {
+            has[chart[f]] = 1;
+            seg[3 * n] = seg[3 * n + 1] = F[3 * f];
+            seg[3 * n + 2] = chart[f];
+            n++;
+        }
+    free(has);
     free(e);
     *seg_out = seg;
     *nseg = n;

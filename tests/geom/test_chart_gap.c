@@ -281,6 +281,29 @@ static void extreme_coordinates(void **state)
     assert_non_null(strstr(err.message, "largest double"));
 }
 
+/* Charts without a boundary edge (a triangle with one UV index three
+ * times; two triangles covering each other) still have points: with
+ * another chart the gap is a number, never "fewer than two charts"
+ * (found by fuzz_uv_numbers). */
+static void charts_without_boundary(void **state)
+{
+    (void)state;
+    /* a point chart (UV 3 = (3, 4)) next to the triangle (0,0) (1,0) (0,1):
+     * nearest at (0, 1) */
+    double UV[12] = {0, 0, 1, 0, 0, 1, 3, 4, 0, 0, 0, 0};
+    scaf_error err;
+    double g;
+    int point[6] = {0, 1, 2, 3, 3, 3};
+    assert_int_equal(chart_gap_min(4, UV, 2, point, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    assert_true(fabs(g - sqrt(18.0)) < 1e-12);
+    /* a triangle (5,5) (6,5) (5,6) given twice: its edges pair up, no
+     * boundary; distance from its first corner (5, 5) to the hypotenuse */
+    double UV2[12] = {0, 0, 1, 0, 0, 1, 5, 5, 6, 5, 5, 6};
+    int doubled[9] = {0, 1, 2, 3, 4, 5, 3, 4, 5};
+    assert_int_equal(chart_gap_min(6, UV2, 3, doubled, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    assert_true(fabs(g - 4.5 * sqrt(2.0)) < 1e-12);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -294,6 +317,7 @@ int main(void)
         cmocka_unit_test(certified_agrees_with_distance),
         cmocka_unit_test(scale_free_results),
         cmocka_unit_test(extreme_coordinates),
+        cmocka_unit_test(charts_without_boundary),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
