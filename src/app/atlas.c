@@ -17,11 +17,11 @@
 
 #include "app/atlas_pack.h"
 #include "app/param.h"
+#include "app/uv_fans.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
 #include "geom/coord_scale.h"
 #include "geom/predicates.h"
-#include "mesh/union_find.h"
 #include "mesh/uv_verdict.h"
 #include "opt/flip_free_step.h"
 
@@ -69,80 +69,21 @@ void atlas_free(atlas *a)
 
 /* ---- fan splitting ---------------------------------------------------------- */
 
-typedef struct half {
-    int lo, hi, corner_lo, corner_hi;
-} half;
-
-static int cmp_half(const void *x, const void *y)
-{
-    const half *p = x, *q = y;
-    if (p->lo != q->lo) return p->lo < q->lo ? -1 : 1;
-    if (p->hi != q->hi) return p->hi < q->hi ? -1 : 1;
-    return 0;
-}
-
 scaf_status atlas_split_fans(int nf, const int *FT, int nuv, int **FT2, int *nuv2, int **map, int *nsplit,
                              scaf_error *err)
 {
-    size_t nc = 3 * (size_t)nf;
-    *FT2 = NULL;
+    /* the splitting app/param does (app/uv_fans), so both see the same
+     * charts; here with the map back to the input's indices */
     *map = NULL;
-    half *h = malloc(sizeof *h * (nc ? nc : 1));
-    int *par = malloc(sizeof(int) * (nc ? nc : 1));
-    int *first = malloc(sizeof(int) * (size_t)(nuv > 0 ? nuv : 1));
-    int *root_id = malloc(sizeof(int) * (nc ? nc : 1));
-    int *out = malloc(sizeof(int) * (nc ? nc : 1));
-    int *mp = malloc(sizeof(int) * ((size_t)nuv + nc + 1));
-    if (!h || !par || !first || !root_id || !out || !mp) {
-        free(h); free(par); free(first); free(root_id); free(out); free(mp);
-        return err_nomem(err, "splitting UV fans");
+    *FT2 = malloc(sizeof(int) * 3 * (size_t)(nf > 0 ? nf : 1));
+    if (!*FT2) return err_nomem(err, "splitting UV fans");
+    scaf_status st = uv_split_fans(nf, FT, nuv, *FT2, nuv2, map, err);
+    if (st != SCAF_OK) {
+        free(*FT2);
+        *FT2 = NULL;
+        return st;
     }
-    for (int f = 0; f < nf; f++)
-        for (int j = 0; j < 3; j++) {
-            int ca = 3 * f + j, cb = 3 * f + (j + 1) % 3;
-            int a = FT[ca], b = FT[cb];
-            half *x = &h[ca];
-            x->lo = a < b ? a : b;
-            x->hi = a < b ? b : a;
-            x->corner_lo = a < b ? ca : cb;
-            x->corner_hi = a < b ? cb : ca;
-        }
-    qsort(h, nc, sizeof *h, cmp_half);
-    uf_init(par, (int)nc);
-    for (size_t i = 0; i < nc;) {
-        size_t j = i + 1;
-        while (j < nc && h[j].lo == h[i].lo && h[j].hi == h[i].hi) j++;
-        for (size_t k = i + 1; k < j; k++) {
-            uf_union(par, h[i].corner_lo, h[k].corner_lo);
-            uf_union(par, h[i].corner_hi, h[k].corner_hi);
-        }
-        i = j;
-    }
-    for (int i = 0; i < nuv; i++) {
-        first[i] = -1;
-        mp[i] = i;
-    }
-    for (size_t c = 0; c < nc; c++) root_id[c] = -1;
-    int n = nuv, added = 0;
-    for (size_t c = 0; c < nc; c++) {
-        int r = uf_find(par, (int)c), v = FT[c];
-        if (root_id[r] < 0) {
-            if (first[v] < 0) {
-                first[v] = r;
-                root_id[r] = v;
-            } else {
-                root_id[r] = n;
-                mp[n++] = v;
-                added++;
-            }
-        }
-        out[c] = root_id[r];
-    }
-    free(h); free(par); free(first); free(root_id);
-    *FT2 = out;
-    *map = mp;
-    *nuv2 = n;
-    *nsplit = added;
+    *nsplit = *nuv2 - nuv;
     return SCAF_OK;
 }
 
