@@ -2,7 +2,8 @@
  * 4): param and atlas on one mesh at scale 1, 2^200, 2^-200 (bit for bit,
  * up to the scale), 1e80 and 1e-80 (same run, up to rounding of the
  * scaled input); and one verdict on degenerate faces: the exact test
- * `scaf info` counts (mesh_topology) is the one param and atlas refuse. */
+ * `scaf info` counts (mesh_topology) is the one param and atlas refuse;
+ * and the 3D checker of UV pictures, the same at any scale. */
 #include <math.h>
 #include <stdio.h>
 #include <setjmp.h>
@@ -14,10 +15,12 @@
 #include <cmocka.h>
 
 #include "app/atlas.h"
+#include "app/uv_png.h"
 #include "geom/coord_scale.h"
 #include "mesh/samples.h"
 #include "mesh/topology.h"
 #include "scaf/scaf.h"
+#include "support/support.h"
 
 /* param on m with its positions multiplied by s (ldexp by k when s == 0):
  * returns the status, *uv (malloc'd) the UVs, *E the energy. */
@@ -175,12 +178,70 @@ static void one_verdict_on_degenerate_faces(void **state)
     }
 }
 
+/* The whole file at path (malloc'd), its size in *n. */
+static unsigned char *read_all(const char *path, long *n)
+{
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    fseek(f, 0, SEEK_END);
+    *n = ftell(f);
+    rewind(f);
+    unsigned char *b = malloc((size_t)*n + 1);
+    assert_non_null(b);
+    assert_int_equal(fread(b, 1, (size_t)*n, f), (size_t)*n);
+    fclose(f);
+    return b;
+}
+
+/* The 3D checker of a UV picture at 2^900 and 2^-1000 is the same picture
+ * (its period overflowed to infinity above about 1e154: no checker). */
+static void checker_picture_is_scale_free(void **state)
+{
+    (void)state;
+    mesh m;
+    scaf_error err;
+    assert_int_equal(mesh_sample_make("hemisphere", 4, &m, &err), SCAF_OK);
+    /* UVs: the xy projection (a valid picture input, bijectivity aside) */
+    double *uv = malloc(sizeof(double) * 2 * (size_t)m.nv), *V = malloc(sizeof(double) * 3 * (size_t)m.nv);
+    unsigned *col = malloc(sizeof(unsigned) * (size_t)m.nf);
+    assert_true(uv && V && col);
+    for (int v = 0; v < m.nv; v++) uv[2 * v] = m.V[3 * v], uv[2 * v + 1] = m.V[3 * v + 1];
+    for (int f = 0; f < m.nf; f++) col[f] = 0xc0c0c0u;
+    uv_png_options o = uv_png_options_default();
+    o.size = 128;
+    o.checker = 8.0;
+    const int k[] = {0, 900, -1000};
+    unsigned char *ref = NULL;
+    long nref = 0;
+    for (size_t t = 0; t < sizeof k / sizeof *k; t++) {
+        for (int i = 0; i < 3 * m.nv; i++) V[i] = ldexp(m.V[i], k[t]);
+        char path[512];
+        test_tmp_path("scale_free_checker.png", path, sizeof path);
+        assert_int_equal(uv_png_write(path, m.nv, uv, m.nf, m.F, col, m.nv, V, m.F, &o, &err), SCAF_OK);
+        long n;
+        unsigned char *b = read_all(path, &n);
+        if (!ref) {
+            ref = b, nref = n;
+            continue;
+        }
+        assert_int_equal(n, nref);
+        assert_memory_equal(b, ref, (size_t)n);
+        free(b);
+    }
+    free(ref);
+    free(uv);
+    free(V);
+    free(col);
+    mesh_free(&m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(param_is_scale_free),
         cmocka_unit_test(atlas_is_scale_free),
         cmocka_unit_test(one_verdict_on_degenerate_faces),
+        cmocka_unit_test(checker_picture_is_scale_free),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
