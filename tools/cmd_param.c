@@ -255,8 +255,7 @@ int cmd_param(int argc, char **argv)
         goto done;
     }
     if (scaf_param_get_uv(p, UV, FT) != SCAF_OK) {
-        fprintf(stderr, "scaf param: %s: the UVs cannot be written exactly in the mesh's units "
-                        "(a coordinate would overflow or be subnormal); scale the mesh by a power of 2\n", in);
+        fprintf(stderr, "scaf param: %s: %s\n", in, scaf_param_error(p));
         rc = EXIT_NUMERIC;
         goto done;
     }

@@ -14,6 +14,7 @@
 #include <float.h>
 #include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -401,10 +402,16 @@ scaf_status scaf_param_get_uv(const scaf_param_t *p, double *UV, int *FT)
     /* back to the input's units: exact unless a coordinate would overflow
      * or fall into the subnormal range (then the map proved bijective
      * would not be the one given) */
+    size_t bad = SIZE_MAX;
     for (size_t i = 0; i < 2 * (size_t)p->nw; i++) {
         UV[i] = ldexp(p->loop.uv[i], p->pos_exp);
-        if (ldexp(UV[i], -p->pos_exp) != p->loop.uv[i]) return SCAF_ERR_NUMERIC;
+        if (bad == SIZE_MAX && ldexp(UV[i], -p->pos_exp) != p->loop.uv[i]) bad = i;
     }
     if (FT) memcpy(FT, p->Fw, sizeof(int) * 3 * (size_t)p->nf);
-    return SCAF_OK;
+    if (bad == SIZE_MAX) return SCAF_OK;
+    /* the context is the caller's heap object: its message may change even
+     * through this const pointer, so scaf_param_error says why */
+    return err_set(&((scaf_param_t *)p)->err, SCAF_ERR_NUMERIC,
+                   "UV %zu cannot be written exactly in the mesh's units (2^%d times %g would %s); scale the "
+                   "mesh by a power of 2", bad / 2, p->pos_exp, p->loop.uv[bad], p->pos_exp > 0 ? "overflow" : "be subnormal");
 }

@@ -82,6 +82,15 @@ static void param_is_scale_free(void **state)
         for (int i = 0; i < 2 * n; i++) assert_true(isfinite(uv[i] / s[t]));
         free(uv);
     }
+    /* at 2^-1060 the UVs in the mesh's units would be subnormal (rounded,
+     * no longer the map proved bijective): a specific error, not a
+     * silently different map */
+    double *uv, E;
+    int n = 0;
+    char msg[256];
+    assert_int_equal(param_scaled(&m, 0.0, -1060, 2, &uv, &n, &E, msg, sizeof msg), SCAF_ERR_NUMERIC);
+    assert_non_null(strstr(msg, "subnormal"));
+    free(uv);
     free(uv0);
     mesh_free(&m);
 }
