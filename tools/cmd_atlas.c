@@ -148,13 +148,16 @@ int cmd_atlas(int argc, char **argv)
             out = v;
         } else if (!strcmp(a, "--padding")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &padding) || padding < 0 || padding >= 0.5) BAD_VALUE();
+            if (!cli_parse_double(v, &padding)) BAD_VALUE();
+            if (padding < 0) CLI_OUT_OF_RANGE("atlas", "0 or in [2^-200, 0.5)");
         } else if (!strcmp(a, "--resolution")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &resolution) || resolution < 1) BAD_VALUE();
+            if (!cli_parse_double(v, &resolution)) BAD_VALUE();
+            if (!(resolution >= 1)) CLI_OUT_OF_RANGE("atlas", ">= 1 (texels)");
         } else if (!strcmp(a, "--padding-texels")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &texels) || texels < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &texels)) BAD_VALUE();
+            if (texels < 0) CLI_OUT_OF_RANGE("atlas", ">= 0");
         } else if (!strcmp(a, "--init")) {
             NEED_VALUE();
             if (!strcmp(v, "tutte")) opt.base.init = SCAF_INIT_TUTTE;
@@ -170,13 +173,13 @@ int cmd_atlas(int argc, char **argv)
             if (!cli_parse_int(v, &opt.compact_iterations)) BAD_VALUE();
         } else if (!strcmp(a, "--distortion-tolerance")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &opt.distortion_tolerance) || opt.distortion_tolerance < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.distortion_tolerance)) BAD_VALUE();
         } else if (!strcmp(a, "--box-scale")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.box_scale)) BAD_VALUE();
         } else if (!strcmp(a, "--compact-lambda-ratio")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &opt.compact_lambda_ratio) || !(opt.compact_lambda_ratio > 0)) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.compact_lambda_ratio)) BAD_VALUE();
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
@@ -217,12 +220,17 @@ int cmd_atlas(int argc, char **argv)
         if (!(resolution > 0.0)) resolution = DEFAULT_RESOLUTION;
         if (texels < 0.0) texels = DEFAULT_PADDING_TEXELS;
         padding = texels / resolution;
-        if (padding >= 0.5) {
-            fprintf(stderr, "scaf atlas: padding %g texels at %g is half the square or more\n", texels, resolution);
-            return EXIT_USAGE;
-        }
     }
     opt.padding = padding;
+    /* every range, before any work (the library's own check) */
+    char msg[256];
+    if (atlas_options_check(&opt, msg, sizeof msg) != SCAF_OK) {
+        if (texels >= 0.0)
+            fprintf(stderr, "scaf atlas: %s (--padding-texels %g / --resolution %g)\n", msg, texels, resolution);
+        else
+            fprintf(stderr, "scaf atlas: %s\n", msg);
+        return EXIT_USAGE;
+    }
 
     double t_start = timer_now();
     mesh m;

@@ -157,7 +157,7 @@ static int parse_args(int argc, char **argv, param_args *o)
             if (!cli_parse_int(v, &o->opt.max_iterations)) BAD_VALUE();
         } else if (!strcmp(a, "--tolerance")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &o->opt.tolerance) || o->opt.tolerance < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &o->opt.tolerance)) BAD_VALUE();
         } else if (!strcmp(a, "--energy")) {
             NEED_VALUE();
             if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd")) o->opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
@@ -291,7 +291,11 @@ int cmd_param(int argc, char **argv)
         rc = EXIT_NOMEM;
         goto done;
     }
-    scaf_param_get_uv(p, UV, FT);
+    if (scaf_param_get_uv(p, UV, FT) != SCAF_OK) {
+        fprintf(stderr, "scaf param: %s: %s\n", in, scaf_param_error(p));
+        rc = EXIT_NUMERIC;
+        goto done;
+    }
     mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
     if (cli_write_uv("param", in, &rinfo, out, &o, &err) != SCAF_OK) {
         fprintf(stderr, "scaf param: %s\n", err.message);
