@@ -20,6 +20,8 @@
 #include "cli_args.h"
 #include "cli_png.h"
 #include "cli_mesh_io.h"
+#include "cli_outputs.h"
+#include "cli_signal.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
@@ -93,6 +95,8 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
         s->size = size;
     }
     s->it[s->n++] = *info;
+    cli_signal_test_point(info->iteration);
+    if (cli_signal_caught()) return 1; /* SIGINT / SIGTERM: stop after this iteration */
     if (s->verify) {
         const scaf_loop *L = param_loop(s->p);
         bij_report rep;
@@ -109,7 +113,7 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
     return 0;
 }
 
-int cmd_param(int argc, char **argv)
+static int param_main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
     int quiet = 0, svg_scaffold = 0, verify = 0;
@@ -191,6 +195,15 @@ int cmd_param(int argc, char **argv)
         fprintf(stderr, "scaf param: %s\n", msg);
         return EXIT_USAGE;
     }
+    /* every output checked before any work; written all together at the end */
+    cli_outputs outs;
+    cli_outputs_init(&outs, "param", in);
+    int k_mesh = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
+    int k_svg = cli_outputs_add(&outs, "--svg", svg, CLI_OUTPUT_FILE);
+    int k_png = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
+    int k_report = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
+    int out_rc = cli_outputs_check(&outs);
+    if (out_rc != EXIT_OK) return out_rc;
 
     if (opt.energy == SCAF_ENERGY_ARAP && !quiet)
         fprintf(stderr, "scaf param: warning: ARAP is not a barrier energy: triangles pushed towards "
@@ -203,6 +216,10 @@ int cmd_param(int argc, char **argv)
     mesh_read_info rinfo;
     int read_rc = cli_read_mesh("param", in, quiet, &m, &rinfo);
     if (read_rc != EXIT_OK) return read_rc;
+    if (cli_signal_report("param")) {
+        mesh_free(&m);
+        return EXIT_CANCELLED;
+    }
     int rc = EXIT_OK;
     scaf_param_t *p = scaf_param_new(&opt);
     progress_state ps = {0};
@@ -228,8 +245,16 @@ int cmd_param(int argc, char **argv)
     ps.cap = opt.max_iterations;
     if (!quiet && !ps.live)
         fprintf(stderr, "scaf param: %s: %d faces, %d chart(s), initial E = %.6f\n", in, m.nf, scaf_param_chart_count(p), e0);
+    if (cli_signal_report("param")) {
+        rc = EXIT_CANCELLED;
+        goto done;
+    }
     st = scaf_param_run(p, opt.max_iterations, on_iteration, &ps);
     if (ps.live) fputc('\n', stderr);
+    if (cli_signal_report("param")) {
+        rc = EXIT_CANCELLED;
+        goto done;
+    }
     if (ps.not_bijective) {
         fprintf(stderr, "scaf param: %s: BUG: the map is not bijective after iteration %d (please report)\n", in,
                 ps.not_bijective);
@@ -256,11 +281,9 @@ int cmd_param(int argc, char **argv)
     }
     scaf_param_get_uv(p, UV, FT);
     mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
-    if (cli_write_uv("param", in, &rinfo, out, &o, &err) != SCAF_OK) {
-        fprintf(stderr, "scaf param: %s\n", err.message);
-        rc = EXIT_OUTPUT;
-        goto done;
-    }
+    const char *path = cli_outputs_begin(&outs, k_mesh, &err);
+    rc = cli_outputs_end(&outs, k_mesh, path ? cli_write_uv("param", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
+    if (rc != EXIT_OK) goto done;
     if (svg) {
         const scaf_loop *L = param_loop(p);
         double *E = malloc(sizeof(double) * (size_t)m.nf);
@@ -274,12 +297,10 @@ int cmd_param(int argc, char **argv)
         char title[256];
         snprintf(title, sizeof title, "%s: E = %.5f after %d iterations (4 = isometry)", in, e1, scaf_param_iterations(p));
         /* Working vertex ids are the UV ids: draw with the loop's faces. */
-        st = uv_svg_write(svg, L->nv, L->uv, L->nf, L->F, E, ss.ntri ? &ss : NULL, title, &err);
+        path = cli_outputs_begin(&outs, k_svg, &err);
+        st = path ? uv_svg_write(path, L->nv, L->uv, L->nf, L->F, E, ss.ntri ? &ss : NULL, title, &err) : SCAF_ERR_IO;
         free(E);
-        if (st != SCAF_OK) {
-            fprintf(stderr, "scaf param: %s\n", err.message);
-            rc = EXIT_OUTPUT;
-        }
+        if ((rc = cli_outputs_end(&outs, k_svg, st, &err)) != EXIT_OK) goto done;
     }
     if (png.path) {
         /* same colours as the SVG; the loop's first nf faces are the mesh's, in order */
@@ -290,27 +311,35 @@ int cmd_param(int argc, char **argv)
         if (st == SCAF_OK) {
             scaf_loop_face_energy(L, E);
             for (int f = 0; f < L->nf; f++) col[f] = uv_svg_colour(E[f]);
-            st = uv_png_write(png.path, L->nv, L->uv, L->nf, L->F, col, m.nv, m.V, m.F, &png.opt, &err);
+            path = cli_outputs_begin(&outs, k_png, &err);
+            st = path ? uv_png_write(path, L->nv, L->uv, L->nf, L->F, col, m.nv, m.V, m.F, &png.opt, &err)
+                      : SCAF_ERR_IO;
         }
         free(E);
         free(col);
-        if (st != SCAF_OK) {
-            fprintf(stderr, "scaf param: %s\n", err.message);
-            rc = st == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_OUTPUT;
-        }
+        if ((rc = cli_outputs_end(&outs, k_png, st, &err)) != EXIT_OK) goto done;
     }
     if (report) {
         param_report r = {in, out, &opt, m.nv, m.nf, scaf_param_chart_count(p), setup, e0, e1, "ok", ps.n, ps.it};
-        if (param_report_write(report, &r, &err) != SCAF_OK) {
-            fprintf(stderr, "scaf param: %s\n", err.message);
-            rc = EXIT_OUTPUT;
-        }
+        path = cli_outputs_begin(&outs, k_report, &err);
+        st = path ? param_report_write(path, &r, &err) : SCAF_ERR_IO;
+        if ((rc = cli_outputs_end(&outs, k_report, st, &err)) != EXIT_OK) goto done;
     }
+    rc = cli_outputs_commit(&outs);
 done:
+    cli_outputs_abort(&outs);
     free(UV);
     free(FT);
     free(ps.it);
     scaf_param_destroy(p);
     mesh_free(&m);
+    return rc;
+}
+
+int cmd_param(int argc, char **argv)
+{
+    cli_signal_install();
+    int rc = param_main(argc, argv);
+    cli_signal_restore();
     return rc;
 }
