@@ -30,6 +30,16 @@
 
 #define CLI_OUTPUTS_MAX 8
 
+/* The paragraph of the commands' --help that says the above. */
+#define CLI_OUTPUTS_HELP                                                                   \
+    "\n"                                                                                   \
+    "Output files: -o ends in .obj, or .obj.gz for a gzip-compressed OBJ (any output\n"    \
+    "ending in .gz is compressed). Every output is checked before the work starts\n"     \
+    "and all are written together at the end, or none is: a directory, FIFO or\n"        \
+    "device, a missing or read-only folder, or two of the input and the outputs\n"       \
+    "naming the same file are refused. A symbolic link is written through (the\n"       \
+    "file it points to is replaced).\n"
+
 typedef enum cli_output_kind {
     CLI_OUTPUT_MESH, /* the mesh with UVs: .obj or .obj.gz */
     CLI_OUTPUT_FILE  /* a report or picture: any name */

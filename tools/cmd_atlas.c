@@ -80,7 +80,9 @@ static void usage(FILE *o)
             "\n"
             "Exit status: 0 ok, 2 usage, 3 unreadable input, 4 invalid chart (named) or\n"
             "input UVs not bijective with --init input, 5 output not written, 6 numerical\n"
-            "failure.\n");
+            "failure, 7 out of memory, 8 interrupted (SIGINT/SIGTERM: nothing written),\n"
+            "70 internal error.\n"
+            CLI_OUTPUTS_HELP);
 }
 
 typedef struct progress_state {

@@ -67,7 +67,9 @@ static void usage(FILE *o)
             "The energy E reported is sum_f A_f (|J_f|^2 + |J_f^-1|^2) / sum_f A_f over the\n"
             "mesh triangles (A_f: 3D area); 4 at an isometry.\n"
             "Exit status: 0 ok, 2 usage, 3 unreadable input, 4 invalid mesh (closed,\n"
-            "genus, non-manifold chart...), 5 output not written, 6 numerical failure.\n");
+            "genus, non-manifold chart...), 5 output not written, 6 numerical failure,\n"
+            "7 out of memory, 8 interrupted (SIGINT/SIGTERM: nothing written), 70 internal error.\n"
+            CLI_OUTPUTS_HELP);
 }
 
 typedef struct progress_state {
