@@ -26,7 +26,8 @@
  * Whatever the input, the command must return a documented exit status
  * (never crash, hang or leak; not 8: no signal is sent), leave no
  * temporary file behind, and a mesh written with exit 0 must be bijective
- * by the exact checker. Anything else aborts.
+ * by the exact checker. Anything else aborts. FUZZ_CLI_PRINT=1 in the
+ * environment prints each command line (to triage an input).
  */
 #include <dirent.h>
 #include <stddef.h>
@@ -293,6 +294,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #undef PUSH
     argv[argc] = NULL;
 
+    if (getenv("FUZZ_CLI_PRINT")) { /* triage: show the command line of an input */
+        fprintf(stderr, "fuzz_cli: scaf");
+        for (int i = 0; i < argc; i++) fprintf(stderr, " '%s'", argv[i]);
+        fputc('\n', stderr);
+    }
     int rc = cmd == 0 ? cmd_param(argc, argv) : cmd == 1 ? cmd_atlas(argc, argv) : cmd_check(argc, argv);
     int documented = (rc >= EXIT_OK && rc <= EXIT_NOMEM) || rc == EXIT_INTERNAL;
     if (!documented || (rc == EXIT_NOT_BIJECTIVE && cmd != 2)) {

@@ -9,8 +9,8 @@
  *     any work (no progress line), the node unchanged;
  *   - the input, -o, --report, --svg, --png naming one file (directly or
  *     through a link): exit 2, the input unchanged, nothing written;
- *   - a missing output folder (for -o or --report): exit 5 before any
- *     work, no output at all;
+ *   - a missing or unwritable output folder (for -o, --report, --svg):
+ *     exit 5 before any work, no output at all;
  *   - .ply / unknown mesh extensions: exit 2; .obj.gz: gzip, readable;
  *   - a write failing in the middle (file size limit: the OBJ fits, the
  *     SVG does not): exit 5, the existing OBJ unchanged, no temporary file;
@@ -228,6 +228,13 @@ static void missing_folder_fails_before_any_work(void **state)
     assert_no_work(dir);
     snprintf(p, sizeof p, "%s/o.obj", dir);
     assert_false(test_exists(p)); /* the OBJ is not written either */
+    /* a folder where no file can be created (proc), found by trying */
+    struct stat st;
+    if (stat("/proc/self", &st) == 0) {
+        assert_int_equal(run_in(dir, NULL, "param in.obj -o o.obj --svg /proc/scaf_test.svg"), 5);
+        assert_no_work(dir);
+        assert_false(test_exists(p));
+    }
     assert_int_equal(hidden_files(dir), 0);
     remove_dir(dir);
 }
