@@ -141,6 +141,16 @@ int cli_outputs_check(cli_outputs *o)
     return rc;
 }
 
+int cli_outputs_uv(cli_outputs *o, const char *mesh, const char *svg, const char *png, const char *report,
+                   cli_uv_outputs *k)
+{
+    k->mesh = cli_outputs_add(o, "-o", mesh, CLI_OUTPUT_MESH);
+    k->svg = cli_outputs_add(o, "--svg", svg, CLI_OUTPUT_FILE);
+    k->png = cli_outputs_add(o, "--png", png, CLI_OUTPUT_FILE);
+    k->report = cli_outputs_add(o, "--report", report, CLI_OUTPUT_FILE);
+    return cli_outputs_check(o);
+}
+
 const char *cli_outputs_begin(cli_outputs *o, int k, scaf_error *err)
 {
     if (k < 0) return NULL;

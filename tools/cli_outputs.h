@@ -70,6 +70,17 @@ int cli_outputs_add(cli_outputs *o, const char *option, const char *path, cli_ou
 /* The checks above: 0, or the exit status after printing why. */
 int cli_outputs_check(cli_outputs *o);
 
+/* The outputs of `scaf param` and `scaf atlas`: their indices (-1: not
+ * asked for). */
+typedef struct cli_uv_outputs {
+    int mesh, svg, png, report;
+} cli_uv_outputs;
+
+/* Declare -o (the mesh), --svg, --png and --report (each may be NULL)
+ * and check them all: 0, or the exit status after printing why. */
+int cli_outputs_uv(cli_outputs *o, const char *mesh, const char *svg, const char *png, const char *report,
+                   cli_uv_outputs *k);
+
 /* The path output k's writer writes to (NULL after printing why; pass
  * its failure on to cli_outputs_end). */
 const char *cli_outputs_begin(cli_outputs *o, int k, scaf_error *err);

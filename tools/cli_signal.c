@@ -33,6 +33,14 @@ void cli_signal_restore(void)
     installed = 0;
 }
 
+int cli_signal_run(int (*body)(int argc, char **argv), int argc, char **argv)
+{
+    cli_signal_install();
+    int rc = body(argc, argv);
+    cli_signal_restore();
+    return rc;
+}
+
 int cli_signal_caught(void) { return caught; }
 
 int cli_signal_report(const char *cmd)

@@ -24,6 +24,10 @@ void cli_signal_install(void);
  * target run several commands in one process). */
 void cli_signal_restore(void);
 
+/* Run a command's body between cli_signal_install and cli_signal_restore;
+ * its exit status. */
+int cli_signal_run(int (*body)(int argc, char **argv), int argc, char **argv);
+
 /* The signal received since cli_signal_install, or 0. */
 int cli_signal_caught(void);
 

@@ -216,12 +216,9 @@ static int atlas_main(int argc, char **argv)
     opt.padding = padding;
     /* every output checked before any work; written all together at the end */
     cli_outputs outs;
+    cli_uv_outputs k;
     cli_outputs_init(&outs, "atlas", in);
-    int k_mesh = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
-    int k_svg = cli_outputs_add(&outs, "--svg", svg, CLI_OUTPUT_FILE);
-    int k_png = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
-    int k_report = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
-    int out_rc = cli_outputs_check(&outs);
+    int out_rc = cli_outputs_uv(&outs, out, svg, png.path, report, &k);
     if (out_rc != EXIT_OK) return out_rc;
 
     double t_start = timer_now();
@@ -283,34 +280,34 @@ static int atlas_main(int argc, char **argv)
     }
     double gap = ao.gap, eff = ao.efficiency;
     mesh o = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
-    const char *path = cli_outputs_begin(&outs, k_mesh, &err);
-    rc = cli_outputs_end(&outs, k_mesh, path ? cli_write_uv("atlas", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
+    const char *path = cli_outputs_begin(&outs, k.mesh, &err);
+    rc = cli_outputs_end(&outs, k.mesh, path ? cli_write_uv("atlas", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
     if (rc != EXIT_OK) goto done;
     if (svg) {
         char title[256];
         snprintf(title, sizeof title, "%s: %d charts, packing efficiency %.3f, min gap %.4f, E = %.4f", in,
                  a.ncharts, eff, gap, scaf_loop_energy(&a.loop));
-        path = cli_outputs_begin(&outs, k_svg, &err);
+        path = cli_outputs_begin(&outs, k.svg, &err);
         st = path ? atlas_svg_write(path, &a, UV, title, &err) : SCAF_ERR_IO;
-        if ((rc = cli_outputs_end(&outs, k_svg, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
     }
     if (png.path) {
         unsigned *col = malloc(sizeof(unsigned) * (size_t)(a.nf ? a.nf : 1));
         st = col ? SCAF_OK : err_nomem(&err, "picture colours");
         for (int f = 0; col && f < a.nf; f++) col[f] = atlas_chart_colour(a.chart[f]);
         if (st == SCAF_OK) {
-            path = cli_outputs_begin(&outs, k_png, &err);
+            path = cli_outputs_begin(&outs, k.png, &err);
             st = path ? uv_png_write(path, a.nw, UV, a.nf, a.Fw, col, m.nv, m.V, m.F, &png.opt, &err) : SCAF_ERR_IO;
         }
         free(col);
-        if ((rc = cli_outputs_end(&outs, k_png, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
     }
     double total = timer_now() - t_start;
     if (report) {
         atlas_report r = {in, out, &a, resolution, setup, total, gap, eff, ps.n, ps.it};
-        path = cli_outputs_begin(&outs, k_report, &err);
+        path = cli_outputs_begin(&outs, k.report, &err);
         st = path ? atlas_report_write(path, &r, &err) : SCAF_ERR_IO;
-        if ((rc = cli_outputs_end(&outs, k_report, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&outs, k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&outs);
     if (rc == EXIT_OK && !quiet)
@@ -327,10 +324,5 @@ done:
     return rc;
 }
 
-int cmd_atlas(int argc, char **argv)
-{
-    cli_signal_install();
-    int rc = atlas_main(argc, argv);
-    cli_signal_restore();
-    return rc;
-}
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_atlas(int argc, char **argv) { return cli_signal_run(atlas_main, argc, argv); }

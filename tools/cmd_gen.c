@@ -124,10 +124,5 @@ static int gen_main(int argc, char **argv)
     return rc;
 }
 
-int cmd_gen(int argc, char **argv)
-{
-    cli_signal_install();
-    int rc = gen_main(argc, argv);
-    cli_signal_restore();
-    return rc;
-}
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_gen(int argc, char **argv) { return cli_signal_run(gen_main, argc, argv); }

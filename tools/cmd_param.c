@@ -199,12 +199,9 @@ static int param_main(int argc, char **argv)
     }
     /* every output checked before any work; written all together at the end */
     cli_outputs outs;
+    cli_uv_outputs k;
     cli_outputs_init(&outs, "param", in);
-    int k_mesh = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
-    int k_svg = cli_outputs_add(&outs, "--svg", svg, CLI_OUTPUT_FILE);
-    int k_png = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
-    int k_report = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
-    int out_rc = cli_outputs_check(&outs);
+    int out_rc = cli_outputs_uv(&outs, out, svg, png.path, report, &k);
     if (out_rc != EXIT_OK) return out_rc;
 
     if (opt.energy == SCAF_ENERGY_ARAP && !quiet)
@@ -283,8 +280,8 @@ static int param_main(int argc, char **argv)
     }
     scaf_param_get_uv(p, UV, FT);
     mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
-    const char *path = cli_outputs_begin(&outs, k_mesh, &err);
-    rc = cli_outputs_end(&outs, k_mesh, path ? cli_write_uv("param", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
+    const char *path = cli_outputs_begin(&outs, k.mesh, &err);
+    rc = cli_outputs_end(&outs, k.mesh, path ? cli_write_uv("param", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
     if (rc != EXIT_OK) goto done;
     if (svg) {
         const scaf_loop *L = param_loop(p);
@@ -299,10 +296,10 @@ static int param_main(int argc, char **argv)
         char title[256];
         snprintf(title, sizeof title, "%s: E = %.5f after %d iterations (4 = isometry)", in, e1, scaf_param_iterations(p));
         /* Working vertex ids are the UV ids: draw with the loop's faces. */
-        path = cli_outputs_begin(&outs, k_svg, &err);
+        path = cli_outputs_begin(&outs, k.svg, &err);
         st = path ? uv_svg_write(path, L->nv, L->uv, L->nf, L->F, E, ss.ntri ? &ss : NULL, title, &err) : SCAF_ERR_IO;
         free(E);
-        if ((rc = cli_outputs_end(&outs, k_svg, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
     }
     if (png.path) {
         /* same colours as the SVG; the loop's first nf faces are the mesh's, in order */
@@ -313,19 +310,19 @@ static int param_main(int argc, char **argv)
         if (st == SCAF_OK) {
             scaf_loop_face_energy(L, E);
             for (int f = 0; f < L->nf; f++) col[f] = uv_svg_colour(E[f]);
-            path = cli_outputs_begin(&outs, k_png, &err);
+            path = cli_outputs_begin(&outs, k.png, &err);
             st = path ? uv_png_write(path, L->nv, L->uv, L->nf, L->F, col, m.nv, m.V, m.F, &png.opt, &err)
                       : SCAF_ERR_IO;
         }
         free(E);
         free(col);
-        if ((rc = cli_outputs_end(&outs, k_png, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
     }
     if (report) {
         param_report r = {in, out, &opt, m.nv, m.nf, scaf_param_chart_count(p), setup, e0, e1, "ok", ps.n, ps.it};
-        path = cli_outputs_begin(&outs, k_report, &err);
+        path = cli_outputs_begin(&outs, k.report, &err);
         st = path ? param_report_write(path, &r, &err) : SCAF_ERR_IO;
-        if ((rc = cli_outputs_end(&outs, k_report, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&outs, k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&outs);
 done:
@@ -338,10 +335,5 @@ done:
     return rc;
 }
 
-int cmd_param(int argc, char **argv)
-{
-    cli_signal_install();
-    int rc = param_main(argc, argv);
-    cli_signal_restore();
-    return rc;
-}
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_param(int argc, char **argv) { return cli_signal_run(param_main, argc, argv); }
