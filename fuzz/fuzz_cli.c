@@ -84,15 +84,16 @@ static const char *const check_names[] = {"--json", "-h", "--bogus", "--json"};
 /* options that take no value (the fuzzer's value byte is then skipped) */
 static const char *const flags[] = {"--quiet", "-q", "--svg-scaffold", "--verify", "-h", "--json", "--bogus"};
 
-/* Values; "@NAME" is the file NAME in the scratch folder. No valid PNG
- * size above 64 pixels: a run must stay small. */
+/* Values; "@NAME" is the file NAME in the scratch folder, "-" after an
+ * option naming a file is the standard output. No valid PNG size above 64
+ * pixels: a run must stay small. */
 static const char *const values[] = {
     "0", "1", "2", "3", "-1", "1e-61", "1e-300", "1e300", "1e308", "4.9e-324", "nan", "inf", "-inf", "", "abc",
     "100000000", "100000001", "2147483648", "0.5", "0.49", "0.4999999", "1e-5", "15", "16", "64", "16385", "20",
     "60", "89", "90", "179", "1e-320", "0x10", "1e", " 1", "1 ", "-0", "sd", "arap", "conformal", "mips",
     "symmetric-dirichlet", "tutte", "harmonic", "mvc", "input", "0.01", "10000", "10001", "1024",
     "@o.obj", "@o.obj.gz", "@o.ply", "@o.off", "@o", "@r.json", "@r.json.gz", "@s.svg", "@p.png", "@in.obj",
-    "@link.obj", "@fifo.obj", "@dir.obj", "@nodir/x.obj", "@", "@-", "@o.OBJ"};
+    "@link.obj", "@fifo.obj", "@dir.obj", "@nodir/x.obj", "@", "@-", "@o.OBJ", "-"};
 
 /* Options naming a file: their value is always a name in the scratch
  * folder (never the working directory). */
@@ -274,7 +275,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             continue; /* sometimes a stray value after a flag */
         const char *v = values[vb % (sizeof values / sizeof values[0])];
         int is_path = listed(o, path_options, sizeof path_options / sizeof path_options[0]);
-        if (v[0] == '@' || is_path) {
+        if (is_path && !strcmp(v, "-")) {
+            PUSH(v); /* standard output */
+        } else if (v[0] == '@' || is_path) {
             char p[512];
             path_of(p, sizeof p, v[0] == '@' ? v + 1 : v);
             PUSH(p);

@@ -45,7 +45,8 @@ static int ends_with(const char *path, const char *suffix)
 static int check_format(const cli_outputs *o, cli_output *c)
 {
     c->gz = ends_with(c->path, ".gz");
-    if (c->kind != CLI_OUTPUT_MESH || ends_with(c->path, ".obj") || ends_with(c->path, ".obj.gz")) return 0;
+    if (c->kind != CLI_OUTPUT_MESH || c->to_stdout || ends_with(c->path, ".obj") || ends_with(c->path, ".obj.gz"))
+        return 0;
     static const char *const no_uv[][2] = {{".ply", "PLY"}, {".off", "OFF"}, {".stl", "STL"},
                                            {".ply.gz", "PLY"}, {".off.gz", "OFF"}, {".stl.gz", "STL"}};
     for (size_t i = 0; i < sizeof no_uv / sizeof no_uv[0]; i++)
@@ -107,7 +108,12 @@ int cli_outputs_check(cli_outputs *o)
         free(real);
     }
     for (int k = 0; k < o->n && !rc; k++) {
-        if (atomic_resolve(o->out[k].path, ids[1 + k].path, sizeof ids[1 + k].path, NULL, &err) != SCAF_OK) {
+        o->out[k].to_stdout = !strcmp(o->out[k].path, "-");
+        if (o->out[k].to_stdout) {
+            strcpy(ids[1 + k].path, "-"); /* not a path: only another "-" is the same */
+            rc = check_format(o, &o->out[k]);
+        } else if (atomic_resolve(o->out[k].path, ids[1 + k].path, sizeof ids[1 + k].path, NULL, &err) !=
+                   SCAF_OK) {
             fprintf(stderr, "scaf %s: %s %s\n", o->cmd, o->out[k].option, err.message);
             rc = EXIT_OUTPUT;
         } else {
@@ -131,6 +137,7 @@ int cli_outputs_check(cli_outputs *o)
     free(ids);
     /* writable: create and remove the temporary file the write will use */
     for (int k = 0; k < o->n && !rc; k++) {
+        if (o->out[k].to_stdout) continue;
         atomic_file probe;
         if (atomic_open(&probe, o->out[k].path, &err) != SCAF_OK) {
             fprintf(stderr, "scaf %s: %s %s\n", o->cmd, o->out[k].option, err.message);
@@ -151,12 +158,53 @@ int cli_outputs_uv(cli_outputs *o, const char *mesh, const char *svg, const char
     return cli_outputs_check(o);
 }
 
+/* Standard output: the writer writes a temporary file in $TMPDIR, copied
+ * to stdout when the outputs are committed. */
+static const char *stage_for_stdout(cli_output *c, scaf_error *err)
+{
+    const char *tmp = getenv("TMPDIR");
+    atomic_file *a = &c->staged;
+    memset(a, 0, sizeof *a);
+    a->name = c->path;
+    snprintf(a->tmp, sizeof a->tmp, "%s/scaf-stdout-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    int fd = mkstemp(a->tmp);
+    if (fd < 0) {
+        a->tmp[0] = '\0';
+        err_set(err, SCAF_ERR_IO, "standard output: cannot create a temporary file in %s", tmp && *tmp ? tmp : "/tmp");
+        return NULL;
+    }
+    close(fd);
+    a->finished = 1;
+    return a->tmp;
+}
+
+/* Copy a staged file to stdout; the file is removed first (a reader that
+ * closes the pipe early ends the program by SIGPIPE, as usual for a
+ * filter, and nothing is left behind). */
+static scaf_status copy_to_stdout(atomic_file *staged, scaf_error *err)
+{
+    FILE *in = fopen(staged->tmp, "rb");
+    if (!in) return err_set(err, SCAF_ERR_IO, "standard output: cannot read the temporary file back");
+    remove(staged->tmp);
+    staged->tmp[0] = '\0';
+    char buf[1 << 16];
+    size_t n;
+    int bad = 0;
+    while (!bad && (n = fread(buf, 1, sizeof buf, in)) > 0)
+        if (fwrite(buf, 1, n, stdout) != n) bad = 1;
+    if (ferror(in)) bad = 1;
+    fclose(in);
+    if (fflush(stdout) != 0) bad = 1;
+    return bad ? err_set(err, SCAF_ERR_IO, "standard output: write failed") : SCAF_OK;
+}
+
 const char *cli_outputs_begin(cli_outputs *o, int k, scaf_error *err)
 {
     if (k < 0) return NULL;
     cli_output *c = &o->out[k];
     atomic_abort(&c->staged);
     c->written = 0;
+    if (c->to_stdout) return stage_for_stdout(c, err);
     /* an empty temporary file beside the target: the writer replaces it */
     if (atomic_open(&c->staged, c->path, err) != SCAF_OK || atomic_finish(&c->staged, err) != SCAF_OK) {
         atomic_abort(&c->staged);
@@ -245,10 +293,12 @@ int cli_outputs_commit(cli_outputs *o)
             cli_outputs_abort(o);
             return EXIT_INTERNAL;
         }
-    /* every file is complete and synced: only renames are left */
+    /* every file is complete and synced: only renames are left, then what
+     * goes to standard output */
+    scaf_error err;
+    err_clear(&err);
     for (int k = 0; k < o->n; k++) {
-        scaf_error err;
-        err_clear(&err);
+        if (o->out[k].to_stdout) continue;
         if (atomic_rename(&o->out[k].staged, &err) != SCAF_OK) {
             fprintf(stderr, "scaf %s: %s\n", o->cmd, err.message);
             cli_outputs_abort(o);
@@ -256,7 +306,14 @@ int cli_outputs_commit(cli_outputs *o)
         }
         o->out[k].written = 0;
     }
-    return EXIT_OK;
+    int rc = EXIT_OK;
+    for (int k = 0; k < o->n; k++)
+        if (o->out[k].to_stdout && rc == EXIT_OK && copy_to_stdout(&o->out[k].staged, &err) != SCAF_OK) {
+            fprintf(stderr, "scaf %s: %s\n", o->cmd, err.message);
+            rc = EXIT_OUTPUT;
+        }
+    cli_outputs_abort(o); /* the standard output's temporary files */
+    return rc;
 }
 
 void cli_outputs_abort(cli_outputs *o)

@@ -13,7 +13,8 @@
  *     files not there yet) (exit 2).
  * A symbolic link as output is written through: the file it points to is
  * replaced (base/atomic_file), the link stays. Any name ending in .gz is
- * written gzip-compressed.
+ * written gzip-compressed. "-" is the standard output (written last, once
+ * the files are committed; a mesh there is a plain OBJ).
  *
  * Writing: for each output, cli_outputs_begin gives the path the writer
  * writes to (a hidden temporary file beside the target), cli_outputs_end
@@ -38,7 +39,7 @@
     "and all are written together at the end, or none is: a directory, FIFO or\n"        \
     "device, a missing or read-only folder, or two of the input and the outputs\n"       \
     "naming the same file are refused. A symbolic link is written through (the\n"       \
-    "file it points to is replaced).\n"
+    "file it points to is replaced). \"-\" writes to the standard output.\n"
 
 typedef enum cli_output_kind {
     CLI_OUTPUT_MESH, /* the mesh with UVs: .obj or .obj.gz */
@@ -52,6 +53,7 @@ typedef struct cli_output {
     int gz;               /* name ends in .gz: compress */
     atomic_file staged;   /* the temporary file holding the result */
     int written;          /* staged holds the whole result */
+    int to_stdout;        /* the path is "-" */
 } cli_output;
 
 typedef struct cli_outputs {

@@ -12,6 +12,7 @@
  *   - a missing or unwritable output folder (for -o, --report, --svg):
  *     exit 5 before any work, no output at all;
  *   - .ply / unknown mesh extensions: exit 2; .obj.gz: gzip, readable;
+ *   - "-" is the standard output (never a file named "-"), at most once;
  *   - a write failing in the middle (file size limit: the OBJ fits, the
  *     SVG does not): exit 5, the existing OBJ unchanged, no temporary file;
  *   - SIGINT / SIGTERM raised by the test hook in the progress callback or
@@ -276,6 +277,28 @@ static void extension_decides_the_format(void **state)
     remove_dir(dir);
 }
 
+static void dash_is_standard_output(void **state)
+{
+    (void)state;
+    char dir[512], p[600];
+    make_dir(dir, sizeof dir, "dash");
+    assert_int_equal(test_run("mkdir '%s/tmp'", dir), 0);
+    assert_int_equal(run_in(dir, "TMPDIR=tmp", "param in.obj -o - -q --iterations 2 > piped.obj"), 0);
+    assert_int_equal(test_run("cd '%s' && %s check piped.obj > /dev/null", dir, SCAF_BINARY), 0);
+    assert_int_equal(run_in(dir, "TMPDIR=tmp", "atlas in.obj -o a.obj --report - -q --iterations 2 "
+                                               "--compact-iterations 2 > report.json"),
+                     0);
+    assert_int_equal(test_run("cd '%s' && grep -q '\"command\": \"atlas\"' report.json && test -s a.obj", dir), 0);
+    assert_int_equal(run_in(dir, NULL, "param in.obj -o - --report - > none.txt"), 2);
+    snprintf(p, sizeof p, "%s/none.txt", dir);
+    assert_file_is(p, "");
+    snprintf(p, sizeof p, "%s/-", dir);
+    assert_false(test_exists(p)); /* never a file named "-" */
+    assert_int_equal(test_run("test -z \"$(ls -A '%s/tmp')\"", dir), 0);
+    assert_int_equal(hidden_files(dir), 0);
+    remove_dir(dir);
+}
+
 static void failed_write_commits_nothing(void **state)
 {
     (void)state;
@@ -364,6 +387,7 @@ int main(void)
         cmocka_unit_test(same_file_twice_is_a_usage_error),
         cmocka_unit_test(missing_folder_fails_before_any_work),
         cmocka_unit_test(extension_decides_the_format),
+        cmocka_unit_test(dash_is_standard_output),
         cmocka_unit_test(failed_write_commits_nothing),
         cmocka_unit_test(signal_stops_cleanly_with_exit_8),
         cmocka_unit_test(help_lists_exit_8),
