@@ -103,8 +103,6 @@ static const char *const path_options[] = {"-o", "--output", "--report", "--svg"
  * run. */
 static const char *const fixed[] = {"in.obj", "fifo.obj", "dir.obj", "link.obj"};
 
-/* Mesh files a run may write (checked after a successful run). */
-static const char *const mesh_outputs[] = {"o.obj", "o.obj.gz", "o.OBJ"};
 
 typedef struct reader {
     const uint8_t *p;
@@ -224,27 +222,23 @@ static void remove_scratch(void)
     rmdir(dir);
 }
 
-/* A mesh written by a successful param / atlas is bijective. */
-static void assert_outputs_bijective(void)
+/* The mesh written by a successful param / atlas (-o p) is bijective. */
+static void assert_output_bijective(const char *p)
 {
-    for (size_t i = 0; i < sizeof mesh_outputs / sizeof mesh_outputs[0]; i++) {
-        char p[512];
-        path_of(p, sizeof p, mesh_outputs[i]);
-        mesh m;
-        scaf_error err;
-        if (access(p, F_OK) != 0) continue;
-        if (mesh_read(p, &m, NULL, &err) != SCAF_OK) {
-            fprintf(stderr, "fuzz_cli: %s written but unreadable: %s\n", p, err.message);
-            abort();
-        }
-        bij_report rep;
-        if (!mesh_has_uv(&m) || bij_check(m.nuv, m.UV, m.nf, m.FT, NULL, NULL, &rep, &err) != SCAF_OK ||
-            !rep.bijective) {
-            fprintf(stderr, "fuzz_cli: %s written but not bijective\n", p);
-            abort();
-        }
-        mesh_free(&m);
+    mesh m;
+    scaf_error err;
+    if (!strcmp(p, "-")) return;
+    if (mesh_read(p, &m, NULL, &err) != SCAF_OK) {
+        fprintf(stderr, "fuzz_cli: exit 0 but %s unreadable: %s\n", p, err.message);
+        abort();
     }
+    bij_report rep;
+    if (!mesh_has_uv(&m) || bij_check(m.nuv, m.UV, m.nf, m.FT, NULL, NULL, &rep, &err) != SCAF_OK ||
+        !rep.bijective) {
+        fprintf(stderr, "fuzz_cli: %s written but not bijective\n", p);
+        abort();
+    }
+    mesh_free(&m);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -263,7 +257,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     enum { MAX_ARGS = 40, ARG_LEN = 320 };
     static char store[MAX_ARGS][ARG_LEN];
     char *argv[MAX_ARGS + 1];
-    int argc = 0;
+    int argc = 0, mesh_out = -1, help = 0;
 #define PUSH(s) (snprintf(store[argc], ARG_LEN, "%s", (s)), argv[argc] = store[argc], argc++)
     PUSH(cmd == 0 ? "param" : cmd == 1 ? "atlas" : "check");
     PUSH(in);
@@ -271,6 +265,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         const char *o = opts[next_byte(&r) % nopts];
         unsigned vb = next_byte(&r);
         PUSH(o);
+        if (!strcmp(o, "-o") || !strcmp(o, "--output")) mesh_out = argc; /* its value comes next */
+        if (!strcmp(o, "-h")) help = 1;                                   /* exit 0, nothing written */
         if (listed(o, flags, sizeof flags / sizeof flags[0]) && vb < 240)
             continue; /* sometimes a stray value after a flag */
         const char *v = values[vb % (sizeof values / sizeof values[0])];
@@ -313,6 +309,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         abort();
     }
     assert_no_temporary();
-    if (rc == EXIT_OK && cmd != 2) assert_outputs_bijective();
+    if (rc == EXIT_OK && cmd != 2 && !help && mesh_out >= 0 && mesh_out < argc) assert_output_bijective(argv[mesh_out]);
     return 0;
 }
