@@ -40,14 +40,16 @@ static void usage(FILE *out)
             "has UVs). Deterministic: the same NAME and N give the same file.\n"
             "\n"
             "options:\n"
-            "  -o, --output FILE  where to write (required); nothing is left on failure\n"
+            "  -o, --output FILE  where to write: .obj, or .obj.gz gzip-compressed, or - for\n"
+            "                     the standard output (required); nothing is left on failure\n"
             "  -s, --size N       resolution (see the list; default per sample)\n"
             "  -l, --list         list the samples and their sizes\n"
             "  -h, --help         this help\n"
             "\n"
             "samples:\n");
     list_samples(out);
-    fprintf(out, "\nExit status: 0 written, 2 usage, 5 output not written, 7 out of memory.\n");
+    fprintf(out, "\nExit status: 0 written, 2 usage, 5 output not written, 7 out of memory,\n"
+                 "8 interrupted (nothing written).\n");
 }
 
 /* Strict decimal int in [1, INT_MAX]; -1 if not one. */
