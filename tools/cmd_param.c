@@ -125,17 +125,27 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
     return 0;
 }
 
-static int param_main(int argc, char **argv)
-{
-    const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
-    int quiet = 0, svg_scaffold = 0, verify = 0;
-    scaf_options_t opt = scaf_options_default();
+/* The command line of `scaf param`. */
+typedef struct param_args {
+    const char *in, *out, *report, *svg;
+    int quiet, svg_scaffold, verify;
+    scaf_options_t opt;
     cli_png png;
-    cli_png_init(&png, 0);
+} param_args;
+
+/* parse_args returns this to go on, or the exit status to end with. */
+enum { PARSED_RUN = -1 };
+
+/* Parse and check the arguments into *o (usage errors printed). */
+static int parse_args(int argc, char **argv, param_args *o)
+{
+    memset(o, 0, sizeof *o);
+    o->opt = scaf_options_default();
+    cli_png_init(&o->png, 0);
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int pr = cli_png_option("param", argc, argv, &i, &png);
+        int pr = cli_png_option("param", argc, argv, &i, &o->png);
         if (pr < 0) return EXIT_USAGE;
         if (pr > 0) continue;
 #define NEED_VALUE() CLI_NEED_VALUE("param")
@@ -145,68 +155,80 @@ static int param_main(int argc, char **argv)
             return EXIT_OK;
         } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
             NEED_VALUE();
-            out = v;
+            o->out = v;
         } else if (!strcmp(a, "--iterations")) {
             NEED_VALUE();
-            if (!cli_parse_int(v, &opt.max_iterations)) BAD_VALUE();
+            if (!cli_parse_int(v, &o->opt.max_iterations)) BAD_VALUE();
         } else if (!strcmp(a, "--tolerance")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &opt.tolerance) || opt.tolerance < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &o->opt.tolerance) || o->opt.tolerance < 0) BAD_VALUE();
         } else if (!strcmp(a, "--energy")) {
             NEED_VALUE();
-            if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd")) opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
-            else if (!strcmp(v, "arap")) opt.energy = SCAF_ENERGY_ARAP;
-            else if (!strcmp(v, "conformal") || !strcmp(v, "mips")) opt.energy = SCAF_ENERGY_CONFORMAL;
+            if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd")) o->opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
+            else if (!strcmp(v, "arap")) o->opt.energy = SCAF_ENERGY_ARAP;
+            else if (!strcmp(v, "conformal") || !strcmp(v, "mips")) o->opt.energy = SCAF_ENERGY_CONFORMAL;
             else BAD_VALUE();
         } else if (!strcmp(a, "--init")) {
             NEED_VALUE();
-            if (!strcmp(v, "tutte")) opt.init = SCAF_INIT_TUTTE;
-            else if (!strcmp(v, "harmonic")) opt.init = SCAF_INIT_HARMONIC;
-            else if (!strcmp(v, "mvc")) opt.init = SCAF_INIT_MVC;
+            if (!strcmp(v, "tutte")) o->opt.init = SCAF_INIT_TUTTE;
+            else if (!strcmp(v, "harmonic")) o->opt.init = SCAF_INIT_HARMONIC;
+            else if (!strcmp(v, "mvc")) o->opt.init = SCAF_INIT_MVC;
             else BAD_VALUE();
         } else if (!strcmp(a, "--box-scale")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &opt.box_scale)) BAD_VALUE();
+            if (!cli_parse_double(v, &o->opt.box_scale)) BAD_VALUE();
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &opt.lambda_ratio)) BAD_VALUE();
+            if (!cli_parse_double(v, &o->opt.lambda_ratio)) BAD_VALUE();
         } else if (!strcmp(a, "--min-angle")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &opt.min_angle_deg)) BAD_VALUE();
+            if (!cli_parse_double(v, &o->opt.min_angle_deg)) BAD_VALUE();
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
-            quiet = 1;
+            o->quiet = 1;
         } else if (!strcmp(a, "--report")) {
             NEED_VALUE();
-            report = v;
+            o->report = v;
         } else if (!strcmp(a, "--svg")) {
             NEED_VALUE();
-            svg = v;
+            o->svg = v;
         } else if (!strcmp(a, "--svg-scaffold")) {
-            svg_scaffold = 1;
+            o->svg_scaffold = 1;
         } else if (!strcmp(a, "--verify")) {
-            verify = 1;
+            o->verify = 1;
         } else if (a[0] == '-' && a[1]) {
             fprintf(stderr, "scaf param: unknown option '%s' (see --help)\n", a);
             return EXIT_USAGE;
-        } else if (!in) {
-            in = a;
+        } else if (!o->in) {
+            o->in = a;
         } else {
-            fprintf(stderr, "scaf param: more than one input ('%s', '%s')\n", in, a);
+            fprintf(stderr, "scaf param: more than one input ('%s', '%s')\n", o->in, a);
             return EXIT_USAGE;
         }
 #undef NEED_VALUE
 #undef BAD_VALUE
     }
-    if (!in || !out) {
-        fprintf(stderr, "scaf param: %s (see --help)\n", !in ? "no input file" : "no output file: use -o OUT.obj");
+    if (!o->in || !o->out) {
+        fprintf(stderr, "scaf param: %s (see --help)\n", !o->in ? "no input file" : "no output file: use -o OUT.obj");
         return EXIT_USAGE;
     }
-    if (cli_png_finish("param", &png) < 0) return EXIT_USAGE;
+    if (cli_png_finish("param", &o->png) < 0) return EXIT_USAGE;
     char msg[256];
-    if (param_options_check(&opt, msg, sizeof msg) != SCAF_OK) {
+    if (param_options_check(&o->opt, msg, sizeof msg) != SCAF_OK) {
         fprintf(stderr, "scaf param: %s\n", msg);
         return EXIT_USAGE;
     }
+    return PARSED_RUN;
+}
+
+static int param_main(int argc, char **argv)
+{
+    param_args args;
+    int parsed = parse_args(argc, argv, &args);
+    if (parsed != PARSED_RUN) return parsed;
+    const char *in = args.in, *out = args.out, *report = args.report, *svg = args.svg;
+    int quiet = args.quiet, svg_scaffold = args.svg_scaffold, verify = args.verify;
+    scaf_options_t opt = args.opt;
+    cli_png png = args.png;
     /* every output checked before any work; written all together at the end */
     cli_outputs outs;
     cli_uv_outputs k;

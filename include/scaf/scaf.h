@@ -24,8 +24,8 @@ extern "C" {
 #define SCAF_API
 #endif
 
-/* Status codes. The command-line program maps them to exit codes
- * (see scaf_status_exit_code). */
+/* Status codes. The `scaf` program maps each to its own exit status
+ * (README.md, "Exit status of `scaf`"; tools/exit_codes.h). */
 typedef enum scaf_status {
     SCAF_OK = 0,
     SCAF_ERR_USAGE,      /* invalid argument or option value */

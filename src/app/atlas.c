@@ -15,10 +15,10 @@
 
 #include "app/atlas_pack.h"
 #include "app/param.h"
+#include "app/uv_fans.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
 #include "geom/predicates.h"
-#include "mesh/union_find.h"
 #include "opt/flip_free_step.h"
 
 /* Margin on the padding so rounding in the final normalization cannot
@@ -61,85 +61,6 @@ void atlas_free(atlas *a)
     free(a->seg);
     scaf_loop_free(&a->loop);
     memset(a, 0, sizeof *a);
-}
-
-/* ---- fan splitting ---------------------------------------------------------- */
-
-typedef struct half {
-    int lo, hi, corner_lo, corner_hi;
-} half;
-
-static int cmp_half(const void *x, const void *y)
-{
-    const half *p = x, *q = y;
-    if (p->lo != q->lo) return p->lo < q->lo ? -1 : 1;
-    if (p->hi != q->hi) return p->hi < q->hi ? -1 : 1;
-    return 0;
-}
-
-scaf_status atlas_split_fans(int nf, const int *FT, int nuv, int **FT2, int *nuv2, int **map, int *nsplit,
-                             scaf_error *err)
-{
-    size_t nc = 3 * (size_t)nf;
-    *FT2 = NULL;
-    *map = NULL;
-    half *h = malloc(sizeof *h * (nc ? nc : 1));
-    int *par = malloc(sizeof(int) * (nc ? nc : 1));
-    int *first = malloc(sizeof(int) * (size_t)(nuv > 0 ? nuv : 1));
-    int *root_id = malloc(sizeof(int) * (nc ? nc : 1));
-    int *out = malloc(sizeof(int) * (nc ? nc : 1));
-    int *mp = malloc(sizeof(int) * ((size_t)nuv + nc + 1));
-    if (!h || !par || !first || !root_id || !out || !mp) {
-        free(h); free(par); free(first); free(root_id); free(out); free(mp);
-        return err_nomem(err, "splitting UV fans");
-    }
-    for (int f = 0; f < nf; f++)
-        for (int j = 0; j < 3; j++) {
-            int ca = 3 * f + j, cb = 3 * f + (j + 1) % 3;
-            int a = FT[ca], b = FT[cb];
-            half *x = &h[ca];
-            x->lo = a < b ? a : b;
-            x->hi = a < b ? b : a;
-            x->corner_lo = a < b ? ca : cb;
-            x->corner_hi = a < b ? cb : ca;
-        }
-    qsort(h, nc, sizeof *h, cmp_half);
-    uf_init(par, (int)nc);
-    for (size_t i = 0; i < nc;) {
-        size_t j = i + 1;
-        while (j < nc && h[j].lo == h[i].lo && h[j].hi == h[i].hi) j++;
-        for (size_t k = i + 1; k < j; k++) {
-            uf_union(par, h[i].corner_lo, h[k].corner_lo);
-            uf_union(par, h[i].corner_hi, h[k].corner_hi);
-        }
-        i = j;
-    }
-    for (int i = 0; i < nuv; i++) {
-        first[i] = -1;
-        mp[i] = i;
-    }
-    for (size_t c = 0; c < nc; c++) root_id[c] = -1;
-    int n = nuv, added = 0;
-    for (size_t c = 0; c < nc; c++) {
-        int r = uf_find(par, (int)c), v = FT[c];
-        if (root_id[r] < 0) {
-            if (first[v] < 0) {
-                first[v] = r;
-                root_id[r] = v;
-            } else {
-                root_id[r] = n;
-                mp[n++] = v;
-                added++;
-            }
-        }
-        out[c] = root_id[r];
-    }
-    free(h); free(par); free(first); free(root_id);
-    *FT2 = out;
-    *map = mp;
-    *nuv2 = n;
-    *nsplit = added;
-    return SCAF_OK;
 }
 
 /* ---- geometry of the layout ------------------------------------------------- */
@@ -360,6 +281,20 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
 
 /* ---- setup -------------------------------------------------------------------- */
 
+/* The compaction knobs are in range (NaN is not). */
+static int compaction_options_valid(const atlas_options *o)
+{
+    return o->compact_lambda_ratio > 0.0 && o->compact_rest_scale > 0.0 && o->compact_rest_scale <= 1.0 &&
+           o->compact_box_scale >= 1.0 && o->compact_fraction > 0.0 && o->compact_fraction < 1.0;
+}
+
+/* The raster packer's knobs are in range (NaN is not). */
+static int packing_options_valid(const atlas_options *o)
+{
+    return o->pack_gap_factor >= 1.0 && o->pack_cells >= 16 && o->pack_cells <= 8192 && o->pack_picks >= 1 &&
+           o->pack_picks <= 16;
+}
+
 scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_error *err)
 {
     memset(a, 0, sizeof *a);
@@ -368,9 +303,7 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     char msg[256];
     if (param_options_check(&a->opt.base, msg, sizeof msg) != SCAF_OK)
         return err_set(err, SCAF_ERR_USAGE, "%s", msg);
-    if (!(a->opt.pack_gap_factor >= 1.0) || !(a->opt.compact_lambda_ratio > 0.0) || !(a->opt.compact_rest_scale > 0.0) ||
-        !(a->opt.compact_rest_scale <= 1.0) || !(a->opt.compact_box_scale >= 1.0) || !(a->opt.compact_fraction > 0.0) ||
-        !(a->opt.compact_fraction < 1.0) || a->opt.pack_cells < 16 || a->opt.pack_cells > 8192 || a->opt.pack_picks < 1 || a->opt.pack_picks > 16)
+    if (!compaction_options_valid(&a->opt) || !packing_options_valid(&a->opt))
         return err_set(err, SCAF_ERR_USAGE, "invalid atlas option (pack_gap_factor >= 1, compact_lambda_ratio > 0, "
                                             "compact_rest_scale in (0, 1], compact_box_scale >= 1, "
                                             "compact_fraction in (0, 1), pack_cells in [16, 8192], pack_picks in [1, 16])");
@@ -382,8 +315,14 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     double *UV2 = NULL, *W3 = NULL, *uv0 = NULL;
     scaf_param_t *p = NULL;
     if (mesh_has_uv(m)) {
-        st = atlas_split_fans(m->nf, m->FT, m->nuv, &FT2, &nuv2, &map, &a->split_uvs, err);
+        FT2 = malloc(sizeof(int) * 3 * (size_t)m->nf);
+        if (!FT2) {
+            st = err_nomem(err, "atlas");
+            goto done;
+        }
+        st = uv_split_fans(m->nf, m->FT, m->nuv, FT2, &nuv2, &map, err);
         if (st != SCAF_OK) goto done;
+        a->split_uvs = nuv2 - m->nuv;
         UV2 = malloc(sizeof(double) * 2 * (size_t)nuv2);
         if (!UV2) {
             st = err_nomem(err, "atlas");

@@ -176,12 +176,4 @@ void atlas_chart_energy(const atlas *a, double *E);
 
 void atlas_free(atlas *a);
 
-/* Split vt indices whose corners form several fans (connected through
- * shared vt edges): FT2 (nf by 3) gets one index per fan, the first fan of
- * each vt keeps its index, the others get nuv, nuv+1, ...; *nuv2 the new
- * count, *map (nuv2) the original index of each. Returns the number of
- * added indices via *nsplit. */
-scaf_status atlas_split_fans(int nf, const int *FT, int nuv, int **FT2, int *nuv2, int **map, int *nsplit,
-                             scaf_error *err);
-
 #endif /* SCAF_APP_ATLAS_H */

@@ -296,6 +296,264 @@ int atlas_pack_strategies(int ncharts)
     return ncharts <= 32 ? 64 : 2;
 }
 
+/* ---- the packer ---------------------------------------------------------- */
+
+/* What the steps of one packing share. */
+typedef struct packer {
+    const double *uv;
+    const int *F, *chart;
+    int nf, ncharts;
+    int *start, *faces;  /* faces of chart c: faces[start[c] .. start[c+1]-1] */
+    chart_raster *R;     /* ncharts by NROT rasters */
+    int k;               /* dilation in cells */
+    int maxdim;          /* largest raster side in cells */
+    occ_grid grid;
+    order_item *ord;     /* placement order of the current strategy */
+    int *place;          /* ncharts by (x, y, rotation) of the current strategy */
+} packer;
+
+/* Group the faces by chart; *total gets the layout's UV area. */
+static scaf_status group_faces(packer *pk, double *total, scaf_error *err)
+{
+    *total = 0.0;
+    for (int f = 0; f < pk->nf; f++) {
+        const double *uv = pk->uv;
+        const int *F = pk->F;
+        pk->start[pk->chart[f] + 1]++;
+        const double *a = uv + 2 * (size_t)F[3 * f], *b = uv + 2 * (size_t)F[3 * f + 1], *d = uv + 2 * (size_t)F[3 * f + 2];
+        *total += 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
+    }
+    for (int c = 0; c < pk->ncharts; c++) pk->start[c + 1] += pk->start[c];
+    int *fill = malloc(sizeof(int) * (size_t)(pk->ncharts ? pk->ncharts : 1));
+    if (!fill) return err_nomem(err, "packing");
+    memcpy(fill, pk->start, sizeof(int) * (size_t)pk->ncharts);
+    for (int f = 0; f < pk->nf; f++) pk->faces[fill[pk->chart[f]]++] = f;
+    free(fill);
+    return SCAF_OK;
+}
+
+/* Cell size: the estimated square (area / 0.8) over `cells` cells; long
+ * thin charts get coarser cells, so no chart spans more than 2 * cells
+ * (the grid stays O(cells^2)). */
+static double cell_size(const packer *pk, double total, int cells)
+{
+    double h = sqrt(total / 0.8) / cells;
+    for (int c = 0; c < pk->ncharts; c++) {
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (int i = pk->start[c]; i < pk->start[c + 1]; i++)
+            for (int j = 0; j < 3; j++)
+                for (int q = 0; q < 2; q++) {
+                    double x = pk->uv[2 * (size_t)pk->F[3 * pk->faces[i] + j] + q];
+                    lo[q] = fmin(lo[q], x);
+                    hi[q] = fmax(hi[q], x);
+                }
+        double diam = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+        if (diam > 2.0 * cells * h) h = diam / (2.0 * cells);
+    }
+    return h;
+}
+
+/* Every chart rasterized in every rotation; sets maxdim. */
+static scaf_status raster_charts(packer *pk, const rotation *rots, double h, scaf_error *err)
+{
+    pk->maxdim = 0;
+    for (int c = 0; c < pk->ncharts; c++)
+        for (int r = 0; r < NROT; r++) {
+            chart_raster *cr = &pk->R[NROT * c + r];
+            scaf_status st = raster_chart(pk->uv, pk->F, pk->faces + pk->start[c], pk->start[c + 1] - pk->start[c],
+                                          &rots[r], h, pk->k, cr, err);
+            if (st != SCAF_OK) return st;
+            if (cr->w > pk->maxdim) pk->maxdim = cr->w;
+            if (cr->h > pk->maxdim) pk->maxdim = cr->h;
+        }
+    return SCAF_OK;
+}
+
+static int grid_alloc(occ_grid *g, int G)
+{
+    g->G = G;
+    g->occ = malloc((size_t)G * (size_t)G);
+    g->last = malloc((size_t)G * (size_t)G * sizeof(int));
+    g->nxt = malloc((size_t)G * (size_t)G * sizeof(int));
+    g->rowmax = malloc((size_t)G * sizeof(int));
+    return g->occ && g->last && g->nxt && g->rowmax;
+}
+
+static void grid_free(occ_grid *g)
+{
+    free(g->occ);
+    free(g->last);
+    free(g->nxt);
+    free(g->rowmax);
+}
+
+/* Mark the dilated cover of cr placed at (bx, by) and update the touched
+ * rows. */
+static void grid_mark(occ_grid *g, const chart_raster *cr, int bx, int by, int k)
+{
+    int G = g->G;
+    for (int yy = 0; yy < cr->dh; yy++) {
+        int gy = by - k + yy;
+        if (gy < 0 || gy >= G) continue;
+        for (int xx = 0; xx < cr->dw; xx++) {
+            int gx = bx - k + xx;
+            if (gx < 0 || gx >= G) continue;
+            if (cr->dil[(size_t)yy * cr->dw + xx]) g->occ[(size_t)gy * G + gx] = 1;
+        }
+        int x0 = bx - k < 0 ? 0 : bx - k, x1 = bx - k + cr->dw > G ? G : bx - k + cr->dw;
+        grid_row_update(g, gy, x0, x1);
+    }
+}
+
+/* The deterministic xorshift32 that perturbs chart orders. */
+static unsigned xorshift(unsigned *rng)
+{
+    *rng ^= *rng << 13;
+    *rng ^= *rng >> 17;
+    *rng ^= *rng << 5;
+    return *rng;
+}
+
+/* Strategies: chart order (area / longest side), rotations (multiples of
+ * 90 degrees only / all), tie rule (lowest bottom / lowest top); with many
+ * charts only the two cheapest (90-degree rotations). */
+typedef struct strategy_rule {
+    int by_dim, all_rot, top, perturbed;
+} strategy_rule;
+
+static strategy_rule strategy_rule_of(int strat, int ncharts)
+{
+    strategy_rule s = {0, 0, strat & 1, strat >= 8};
+    if (ncharts <= 32) {
+        s.by_dim = strat & 1;
+        s.all_rot = (strat >> 1) & 1;
+        s.top = (strat >> 2) & 1;
+    }
+    return s;
+}
+
+/* The placement order: largest area (or longest raster side) first;
+ * perturbed orders scale each key by a factor in [1, 1.6). */
+static void order_charts(packer *pk, const strategy_rule *s, unsigned *rng)
+{
+    order_item *ord = pk->ord;
+    for (int c = 0; c < pk->ncharts; c++) {
+        ord[c].chart = c;
+        ord[c].area = 0.0;
+        if (s->by_dim) {
+            const chart_raster *r0 = &pk->R[NROT * c];
+            ord[c].area = r0->w > r0->h ? r0->w : r0->h;
+        }
+    }
+    if (!s->by_dim)
+        for (int f = 0; f < pk->nf; f++) {
+            const double *uv = pk->uv;
+            const int *F = pk->F;
+            const double *p0 = uv + 2 * (size_t)F[3 * f], *p1 = uv + 2 * (size_t)F[3 * f + 1], *p2 = uv + 2 * (size_t)F[3 * f + 2];
+            ord[pk->chart[f]].area += (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+        }
+    if (s->perturbed)
+        for (int c = 0; c < pk->ncharts; c++) ord[c].area *= 1.0 + 0.6 * (xorshift(rng) % 1000) / 1000.0;
+    qsort(ord, (size_t)pk->ncharts, sizeof *ord, cmp_order);
+}
+
+/* Where chart c goes: the position and rotation that keep the occupied
+ * square (cur_x by cur_y so far) smallest; ties: the lowest key (bottom
+ * row, or top row with the top rule), then the lowest column. side < 0:
+ * nothing fits. */
+typedef struct placement {
+    long side;
+    int x, y, r, key;
+} placement;
+
+static placement best_position(packer *pk, int c, const strategy_rule *s, int cur_x, int cur_y)
+{
+    placement b = {-1, 0, 0, 0, 0};
+    int G = pk->grid.G;
+    for (int r = 0; r < NROT; r += s->all_rot ? 1 : NROT / 4) {
+        chart_raster *cr = &pk->R[NROT * c + r];
+        for (int y = 0; y + cr->h <= G; y++) {
+            long sy = cur_y > y + cr->h ? cur_y : y + cr->h;
+            if (b.side >= 0 && sy > b.side) break;
+            int key = s->top ? y + cr->h : y;
+            if (b.side >= 0 && sy == b.side && s->top && key > b.key + pk->maxdim) break;
+            for (int x = 0, nx; x + cr->w <= G; x = nx) {
+                long sz = cur_x > x + cr->w ? cur_x : x + cr->w;
+                if (sy > sz) sz = sy;
+                if (b.side >= 0 && (sz > b.side || (sz == b.side && (key > b.key || (key == b.key && x >= b.x)))))
+                    break;
+                nx = fit_next(cr, &pk->grid, x, y);
+                if (nx < 0) {
+                    b = (placement){sz, x, y, r, key};
+                    break;
+                }
+            }
+        }
+    }
+    return b;
+}
+
+/* Place every chart in order; place gets the result. Returns the side of
+ * the occupied square in cells, or G + 1 when a chart did not fit or the
+ * square grew beyond topk[keep - 1] (it cannot be among the keep best). */
+static long run_strategy(packer *pk, const strategy_rule *s, int keep, int ntop, const long *topk)
+{
+    int G = pk->grid.G, cur_x = 0, cur_y = 0;
+    grid_reset(&pk->grid);
+    for (int oi = 0; oi < pk->ncharts; oi++) {
+        int c = pk->ord[oi].chart;
+        placement b = best_position(pk, c, s, cur_x, cur_y);
+        if (b.side < 0) return G + 1;
+        chart_raster *cr = &pk->R[NROT * c + b.r];
+        /* slide left, then down, while it fits (closes the gaps the
+         * row scan leaves beside concave neighbours) */
+        for (int moved = 1; moved;) {
+            moved = 0;
+            while (fits(cr, &pk->grid, b.x - 1, b.y)) b.x--, moved = 1;
+            while (fits(cr, &pk->grid, b.x, b.y - 1)) b.y--, moved = 1;
+        }
+        pk->place[3 * c] = b.x;
+        pk->place[3 * c + 1] = b.y;
+        pk->place[3 * c + 2] = b.r;
+        if (b.x + cr->w > cur_x) cur_x = b.x + cr->w;
+        if (b.y + cr->h > cur_y) cur_y = b.y + cr->h;
+        if (keep > 0 && ntop == keep && (cur_x > cur_y ? cur_x : cur_y) > topk[keep - 1]) return G + 1;
+        grid_mark(&pk->grid, cr, b.x, b.y, pk->k);
+    }
+    return cur_x > cur_y ? cur_x : cur_y;
+}
+
+/* Insert side into the ascending list topk (*ntop of at most keep entries),
+ * dropping the largest when full. */
+static void topk_insert(long *topk, int *ntop, int keep, long side)
+{
+    int i = *ntop < keep ? (*ntop)++ : *ntop - 1;
+    while (i > 0 && topk[i - 1] > side) {
+        topk[i] = topk[i - 1];
+        i--;
+    }
+    topk[i] = side;
+}
+
+/* Move the charts rigidly to their places (vertices of no chart stay). */
+static void move_charts(const packer *pk, const rotation *rots, double h, int nw, const int *wchart, double *out)
+{
+    for (int v = 0; v < nw; v++) {
+        int c = wchart[v];
+        if (c < 0) {
+            out[2 * (size_t)v] = pk->uv[2 * (size_t)v];
+            out[2 * (size_t)v + 1] = pk->uv[2 * (size_t)v + 1];
+            continue;
+        }
+        const int *pl = pk->place + 3 * c;
+        const chart_raster *cr = &pk->R[NROT * c + pl[2]];
+        double q[2];
+        rot(&rots[pl[2]], pk->uv + 2 * (size_t)v, q);
+        out[2 * (size_t)v] = (q[0] - cr->m[0]) + pl[0] * h;
+        out[2 * (size_t)v + 1] = (q[1] - cr->m[1]) + pl[1] * h;
+    }
+}
+
 scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
                        int ncharts, int cells, double gap, int strategy, int keep, int *chosen, long *strat_side, double *out,
                        scaf_error *err)
@@ -303,244 +561,76 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
     scaf_status st = SCAF_OK;
     rotation rots[NROT];
     for (int r = 0; r < NROT; r++) rots[r] = rotation_of(r);
-    int *start = calloc((size_t)ncharts + 1, sizeof(int));
-    int *faces = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
-    order_item *ord = malloc(sizeof *ord * (size_t)(ncharts ? ncharts : 1));
-    chart_raster *R = calloc((size_t)ncharts * NROT, sizeof *R);
-    int *place = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
-    occ_grid grid = {0};
-    int *best = NULL;
-    if (!start || !faces || !ord || !R || !place) {
+    packer pk = {uv, F, chart, nf, ncharts, NULL, NULL, NULL, 0, 0, {0}, NULL, NULL};
+    pk.start = calloc((size_t)ncharts + 1, sizeof(int));
+    pk.faces = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
+    pk.ord = malloc(sizeof *pk.ord * (size_t)(ncharts ? ncharts : 1));
+    pk.R = calloc((size_t)ncharts * NROT, sizeof *pk.R);
+    pk.place = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
+    int *best = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
+    if (!pk.start || !pk.faces || !pk.ord || !pk.R || !pk.place || !best) {
         st = err_nomem(err, "packing");
         goto done;
     }
-    /* ---- charts' faces and areas ------------------------------------------ */
-    double total = 0.0;
-    for (int c = 0; c < ncharts; c++) {
-        ord[c].area = 0.0;
-        ord[c].chart = c;
-    }
-    for (int f = 0; f < nf; f++) {
-        start[chart[f] + 1]++;
-        const double *a = uv + 2 * (size_t)F[3 * f], *b = uv + 2 * (size_t)F[3 * f + 1], *d = uv + 2 * (size_t)F[3 * f + 2];
-        double A = 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
-        ord[chart[f]].area += A;
-        total += A;
-    }
-    for (int c = 0; c < ncharts; c++) start[c + 1] += start[c];
-    {
-        int *fill = malloc(sizeof(int) * (size_t)(ncharts ? ncharts : 1));
-        if (!fill) {
-            st = err_nomem(err, "packing");
-            goto done;
-        }
-        memcpy(fill, start, sizeof(int) * (size_t)ncharts);
-        for (int f = 0; f < nf; f++) faces[fill[chart[f]]++] = f;
-        free(fill);
-    }
+    double total;
+    st = group_faces(&pk, &total, err);
+    if (st != SCAF_OK) goto done;
     if (!(total > 0.0) || !isfinite(total)) {
         st = err_set(err, SCAF_ERR_NUMERIC, "packing: the layout has no positive area");
         goto done;
     }
     if (cells < 16) cells = 16;
-    double h = sqrt(total / 0.8) / cells;
-    /* long thin charts: coarser cells, so no chart spans more than
-     * 2 * cells (the grid stays O(cells^2)) */
-    for (int c = 0; c < ncharts; c++) {
-        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-        for (int i = start[c]; i < start[c + 1]; i++)
-            for (int j = 0; j < 3; j++)
-                for (int q = 0; q < 2; q++) {
-                    double x = uv[2 * (size_t)F[3 * faces[i] + j] + q];
-                    lo[q] = fmin(lo[q], x);
-                    hi[q] = fmax(hi[q], x);
-                }
-        double diam = hypot(hi[0] - lo[0], hi[1] - lo[1]);
-        if (diam > 2.0 * cells * h) h = diam / (2.0 * cells);
-    }
-    int k = (int)ceil(gap / h) + 1;
-    int maxdim = 0;
-    for (int c = 0; c < ncharts; c++)
-        for (int r = 0; r < NROT; r++) {
-            st = raster_chart(uv, F, faces + start[c], start[c + 1] - start[c], &rots[r], h, k, &R[NROT * c + r], err);
-            if (st != SCAF_OK) goto done;
-            if (R[NROT * c + r].w > maxdim) maxdim = R[NROT * c + r].w;
-            if (R[NROT * c + r].h > maxdim) maxdim = R[NROT * c + r].h;
-        }
-    /* ---- grid ---------------------------------------------------------------- */
-    int G = 2 * cells + maxdim + 2 * k + 2;
-    grid.G = G;
-    grid.occ = malloc((size_t)G * (size_t)G);
-    grid.last = malloc((size_t)G * (size_t)G * sizeof(int));
-    grid.nxt = malloc((size_t)G * (size_t)G * sizeof(int));
-    grid.rowmax = malloc((size_t)G * sizeof(int));
-    best = malloc(sizeof(int) * 3 * (size_t)(ncharts ? ncharts : 1));
-    if (!grid.occ || !grid.last || !grid.nxt || !grid.rowmax || !best) {
+    double h = cell_size(&pk, total, cells);
+    pk.k = (int)ceil(gap / h) + 1;
+    st = raster_charts(&pk, rots, h, err);
+    if (st != SCAF_OK) goto done;
+    int G = 2 * cells + pk.maxdim + 2 * pk.k + 2;
+    if (!grid_alloc(&pk.grid, G)) {
         st = err_nomem(err, "packing grid");
         goto done;
     }
-    long bestSide = -1;
+    long best_side = -1;
     /* the keep smallest completed sides, ascending (branch and bound) */
     long topk[16];
     int ntop = 0;
     if (strategy >= 0 || keep < 0) keep = 0;
     if (keep > 16) keep = 16;
-    /* Strategies: chart order (area / longest side), rotations (multiples
-     * of 90 degrees only / all), tie rule (lowest bottom / lowest top). */
-    /* (many charts: the two cheapest, 90-degree rotations only) */
     int nstrat = atlas_pack_strategies(ncharts);
     unsigned rng = 2463534242u;
     for (int strat = 0; strat < nstrat; strat++) {
         if (strat_side) strat_side[strat] = -1;
+        strategy_rule s = strategy_rule_of(strat, ncharts);
         if (strategy >= 0 && strat != strategy) {
             /* keep the perturbation sequence identical to a full run */
-            if (strat >= 8)
-                for (int c = 0; c < ncharts; c++) {
-                    rng ^= rng << 13;
-                    rng ^= rng >> 17;
-                    rng ^= rng << 5;
-                }
+            if (s.perturbed)
+                for (int c = 0; c < ncharts; c++) xorshift(&rng);
             continue;
         }
-        int by_dim = 0, all_rot = 0, top = strat & 1;
-        if (ncharts <= 32) {
-            by_dim = strat & 1;
-            all_rot = (strat >> 1) & 1;
-            top = (strat >> 2) & 1;
-        }
-        for (int c = 0; c < ncharts; c++) {
-            ord[c].chart = c;
-            ord[c].area = 0.0;
-            if (by_dim) {
-                const chart_raster *r0 = &R[NROT * c];
-                ord[c].area = r0->w > r0->h ? r0->w : r0->h;
-            }
-        }
-        if (!by_dim)
-            for (int f = 0; f < nf; f++) {
-                const double *p0 = uv + 2 * (size_t)F[3 * f], *p1 = uv + 2 * (size_t)F[3 * f + 1], *p2 = uv + 2 * (size_t)F[3 * f + 2];
-                ord[chart[f]].area += (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
-            }
-        if (strat >= 8) /* perturbed orders (deterministic xorshift) */
-            for (int c = 0; c < ncharts; c++) {
-                rng ^= rng << 13;
-                rng ^= rng >> 17;
-                rng ^= rng << 5;
-                ord[c].area *= 1.0 + 0.6 * (rng % 1000) / 1000.0;
-            }
-        qsort(ord, (size_t)ncharts, sizeof *ord, cmp_order);
-        grid_reset(&grid);
-        int curX = 0, curY = 0;
-        for (int oi = 0; oi < ncharts; oi++) {
-            int c = ord[oi].chart;
-            long bestS = -1;
-            int bx = 0, by = 0, br = 0, bkey = 0;
-            for (int r = 0; r < NROT; r += all_rot ? 1 : NROT / 4) {
-                chart_raster *cr = &R[NROT * c + r];
-                for (int y = 0; y + cr->h <= G; y++) {
-                    long sy = curY > y + cr->h ? curY : y + cr->h;
-                    if (bestS >= 0 && sy > bestS) break;
-                    int key = top ? y + cr->h : y;
-                    if (bestS >= 0 && sy == bestS && top && key > bkey + maxdim) break;
-                    for (int x = 0, nx; x + cr->w <= G; x = nx) {
-                        long sz = curX > x + cr->w ? curX : x + cr->w;
-                        if (sy > sz) sz = sy;
-                        if (bestS >= 0 && (sz > bestS || (sz == bestS && (key > bkey || (key == bkey && x >= bx)))))
-                            break;
-                        nx = fit_next(cr, &grid, x, y);
-                        if (nx < 0) {
-                            bestS = sz;
-                            bx = x;
-                            by = y;
-                            br = r;
-                            bkey = key;
-                            break;
-                        }
-                    }
-                }
-            }
-            if (bestS < 0) {
-                curX = curY = G + 1; /* this strategy failed */
-                break;
-            }
-            chart_raster *cr = &R[NROT * c + br];
-            /* slide left, then down, while it fits (closes the gaps the
-             * row scan leaves beside concave neighbours) */
-            for (int moved = 1; moved;) {
-                moved = 0;
-                while (fits(cr, &grid, bx - 1, by)) bx--, moved = 1;
-                while (fits(cr, &grid, bx, by - 1)) by--, moved = 1;
-            }
-            place[3 * c] = bx;
-            place[3 * c + 1] = by;
-            place[3 * c + 2] = br;
-            if (bx + cr->w > curX) curX = bx + cr->w;
-            if (by + cr->h > curY) curY = by + cr->h;
-            if (keep > 0 && ntop == keep && (curX > curY ? curX : curY) > topk[keep - 1]) {
-                curX = curY = G + 1; /* cannot be among the keep best */
-                break;
-            }
-            /* mark the dilated cover, update the touched rows */
-            for (int yy = 0; yy < cr->dh; yy++) {
-                int gy = by - k + yy;
-                if (gy < 0 || gy >= G) continue;
-                for (int xx = 0; xx < cr->dw; xx++) {
-                    int gx = bx - k + xx;
-                    if (gx < 0 || gx >= G) continue;
-                    if (cr->dil[(size_t)yy * cr->dw + xx]) grid.occ[(size_t)gy * G + gx] = 1;
-                }
-                int x0 = bx - k < 0 ? 0 : bx - k, x1 = bx - k + cr->dw > G ? G : bx - k + cr->dw;
-                grid_row_update(&grid, gy, x0, x1);
-            }
-        }
-        long side = curX > curY ? curX : curY;
+        order_charts(&pk, &s, &rng);
+        long side = run_strategy(&pk, &s, keep, ntop, topk);
         if (strat_side) strat_side[strat] = side <= G ? side : -1;
-        if (keep > 0 && side <= G && (ntop < keep || side < topk[ntop - 1])) {
-            /* insert into the sorted list, dropping the largest when full */
-            int i = ntop < keep ? ntop++ : ntop - 1;
-            while (i > 0 && topk[i - 1] > side) {
-                topk[i] = topk[i - 1];
-                i--;
-            }
-            topk[i] = side;
-        }
-        if (side <= G && (bestSide < 0 || side < bestSide)) {
-            bestSide = side;
+        if (keep > 0 && side <= G && (ntop < keep || side < topk[ntop - 1])) topk_insert(topk, &ntop, keep, side);
+        if (side <= G && (best_side < 0 || side < best_side)) {
+            best_side = side;
             if (chosen) *chosen = strat;
-            memcpy(best, place, sizeof(int) * 3 * (size_t)ncharts);
+            memcpy(best, pk.place, sizeof(int) * 3 * (size_t)ncharts);
         }
     }
-    if (bestSide < 0) {
+    if (best_side < 0) {
         st = err_set(err, SCAF_ERR_NUMERIC, "packing: the charts do not fit the grid");
         goto done;
     }
-    memcpy(place, best, sizeof(int) * 3 * (size_t)ncharts);
-    /* ---- move the charts ---------------------------------------------------- */
-    for (int v = 0; v < nw; v++) {
-        int c = wchart[v];
-        if (c < 0) {
-            out[2 * (size_t)v] = uv[2 * (size_t)v];
-            out[2 * (size_t)v + 1] = uv[2 * (size_t)v + 1];
-            continue;
-        }
-        const chart_raster *cr = &R[NROT * c + place[3 * c + 2]];
-        double q[2];
-        rot(&rots[place[3 * c + 2]], uv + 2 * (size_t)v, q);
-        out[2 * (size_t)v] = (q[0] - cr->m[0]) + place[3 * c] * h;
-        out[2 * (size_t)v + 1] = (q[1] - cr->m[1]) + place[3 * c + 1] * h;
-    }
+    memcpy(pk.place, best, sizeof(int) * 3 * (size_t)ncharts);
+    move_charts(&pk, rots, h, nw, wchart, out);
 done:
-    if (R)
-        for (int i = 0; i < NROT * ncharts; i++) raster_free(&R[i]);
-    free(R);
-    free(start);
-    free(faces);
-    free(ord);
-    free(place);
-    free(grid.occ);
-    free(grid.last);
-    free(grid.nxt);
-    free(grid.rowmax);
+    if (pk.R)
+        for (int i = 0; i < NROT * ncharts; i++) raster_free(&pk.R[i]);
+    free(pk.R);
+    free(pk.start);
+    free(pk.faces);
+    free(pk.ord);
+    free(pk.place);
+    grid_free(&pk.grid);
     free(best);
     return st;
 }

@@ -20,6 +20,7 @@
 #include "mesh/mesh.h"
 #include "mesh/uv_charts.h"
 #include "opt/embed.h"
+#include "scaffold/scaffold_defaults.h"
 
 /* Boundary loops tried as the outer one of a chart with holes (the
  * longest first; see opt_embed_chart_best): on bad/plane_holes.obj (27
@@ -46,11 +47,11 @@ scaf_options_t scaf_options_default(void)
     o.init = SCAF_INIT_MVC; /* fewest iterations on every measured mesh: bench/RESULTS-init.md */
     o.max_iterations = 50;
     o.tolerance = 1e-6;
-    o.box_scale = 3.0;
+    o.box_scale = SCAFFOLD_DEFAULT_BOX_SCALE;
     o.box_square = 0;
-    o.box_points_per_side = 5;
+    o.box_points_per_side = SCAFFOLD_DEFAULT_BOX_POINTS_PER_SIDE;
     o.lambda_ratio = 0.01;
-    o.min_angle_deg = 20.0;
+    o.min_angle_deg = SCAFFOLD_DEFAULT_MIN_ANGLE_DEG;
     o.step_fraction = 0.8;
     return o;
 }

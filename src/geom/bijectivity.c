@@ -1,7 +1,7 @@
 /* geom/bijectivity: exact checker of UV maps (see bijectivity.h).
  *
  * Steps: validate; orient every triangle; group the 3F half-edges by their
- * undirected UV edge (bucket by smaller index, then sort each bucket) to
+ * undirected UV edge (base/half_edges) to
  * find boundary, folded and non-manifold edges and to join triangles into
  * charts; join boundary edges into loops; test boundary segment pairs
  * found through a uniform grid (each pair tested once, in the first grid
@@ -17,6 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/half_edges.h"
+#include "base/union_find.h"
 #include "geom/predicates.h"
 
 static int sgn(double x) { return (x > 0) - (x < 0); }
@@ -56,29 +58,6 @@ static int adjacent_overlap(const double *s, const double *p, const double *q)
     int qx = sgn(q[0] - s[0]), qy = sgn(q[1] - s[1]);
     if ((px == 0 && py == 0) || (qx == 0 && qy == 0)) return 0; /* zero length */
     return px == qx && py == qy;
-}
-
-/* ---- union-find ---- */
-
-static int uf_find(int *parent, int x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
-static void uf_union(int *parent, int a, int b)
-{
-    a = uf_find(parent, a);
-    b = uf_find(parent, b);
-    if (a != b) {
-        if (a < b)
-            parent[b] = a;
-        else
-            parent[a] = b;
-    }
 }
 
 /* ---- uniform grid over a box ---- */
@@ -133,37 +112,6 @@ static int cell_y(const grid *g, double y)
     return (int)v;
 }
 
-/* ---- half-edge grouping ---- */
-
-typedef struct hedge {
-    int hi; /* larger UV index of the edge */
-    int he; /* 3 * triangle + corner; edge from corner to corner + 1 */
-} hedge;
-
-static int hedge_cmp(const void *a, const void *b)
-{
-    const hedge *x = a, *y = b;
-    if (x->hi != y->hi) return x->hi < y->hi ? -1 : 1;
-    return (x->he > y->he) - (x->he < y->he);
-}
-
-static void sort_bucket(hedge *h, int n)
-{
-    if (n > 24) {
-        qsort(h, (size_t)n, sizeof *h, hedge_cmp);
-        return;
-    }
-    for (int i = 1; i < n; i++) {
-        hedge t = h[i];
-        int j = i - 1;
-        while (j >= 0 && hedge_cmp(&h[j], &t) > 0) {
-            h[j + 1] = h[j];
-            j--;
-        }
-        h[j + 1] = t;
-    }
-}
-
 static int cmp_int(const void *a, const void *b)
 {
     int x = *(const int *)a, y = *(const int *)b;
@@ -182,9 +130,8 @@ typedef struct work {
     signed char *ori;
     unsigned char *tri_bnd; /* bit k: edge k of the triangle is boundary */
     unsigned char *bvert;   /* UV point is on a boundary edge */
-    int *start, *parent, *vparent, *chart_of, *bdeg, *loop_of;
+    int *hedges, *parent, *vparent, *chart_of, *bdeg, *loop_of;
     unsigned char *loop_nested;
-    hedge *hedges;
     seg *segs;
     int *cell_start, *cell_items;
     int *chart_ccw, *chart_cw, *ids;
@@ -195,7 +142,6 @@ static void work_free(work *w)
     free(w->ori);
     free(w->tri_bnd);
     free(w->bvert);
-    free(w->start);
     free(w->parent);
     free(w->vparent);
     free(w->chart_of);
@@ -530,64 +476,44 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
     }
 
     /* ---- group half-edges by undirected UV edge ---- */
-    w.start = calloc((size_t)nuv + 2, sizeof *w.start);
     w.hedges = malloc(3 * (size_t)nf * sizeof *w.hedges + 1);
     w.tri_bnd = calloc((size_t)nf + 1, 1);
     w.bvert = calloc((size_t)nuv + 1, 1);
     w.parent = malloc(((size_t)nf + 1) * sizeof *w.parent);
-    if (!w.start || !w.hedges || !w.tri_bnd || !w.bvert || !w.parent)
+    if (!w.hedges || !w.tri_bnd || !w.bvert || !w.parent)
         return nomem(&w, err, "edge table");
-    for (int t = 0; t < nf; t++) w.parent[t] = t;
-    for (size_t h = 0; h < 3 * (size_t)nf; h++) {
-        int a = F[h], b = F[h - h % 3 + (h % 3 + 1) % 3];
-        if (a != b) w.start[(a < b ? a : b) + 1]++;
-    }
-    for (int i = 0; i < nuv; i++) w.start[i + 1] += w.start[i];
-    {
-        int *pos = malloc(((size_t)nuv + 1) * sizeof *pos);
-        if (!pos) return nomem(&w, err, "edge table");
-        memcpy(pos, w.start, ((size_t)nuv + 1) * sizeof *pos);
-        for (size_t h = 0; h < 3 * (size_t)nf; h++) {
-            int a = F[h], b = F[h - h % 3 + (h % 3 + 1) % 3];
-            if (a == b) continue;
-            int lo = a < b ? a : b;
-            hedge e = {a < b ? b : a, (int)h};
-            w.hedges[pos[lo]++] = e;
-        }
-        free(pos);
-    }
+    uf_init(w.parent, nf);
+    int nhe = 0;
+    if (half_edges_sort(nuv, nf, F, NULL, w.hedges, &nhe, err) != SCAF_OK) return nomem(&w, err, "edge table");
     int nseg = 0, segcap = 0;
-    for (int v = 0; v < nuv; v++) {
-        int b = w.start[v], e = w.start[v + 1];
-        sort_bucket(w.hedges + b, e - b);
-        for (int i = b; i < e;) {
-            int j = i + 1;
-            while (j < e && w.hedges[j].hi == w.hedges[i].hi) j++;
-            int n = j - i;
-            if (n == 1) {
-                int h = w.hedges[i].he, t = h / 3, k = h % 3;
-                if (nseg == segcap) {
-                    segcap = segcap ? 2 * segcap : 1024;
-                    seg *ns = realloc(w.segs, (size_t)segcap * sizeof *ns);
-                    if (!ns) return nomem(&w, err, "boundary segments");
-                    w.segs = ns;
-                }
-                seg *s = &w.segs[nseg++];
-                s->a = F[3 * (size_t)t + k];
-                s->b = F[3 * (size_t)t + (k + 1) % 3];
-                w.tri_bnd[t] |= (unsigned char)(1u << k);
-                w.bvert[s->a] = w.bvert[s->b] = 1;
-            } else {
-                if (n == 2) {
-                    if (F[w.hedges[i].he] == F[w.hedges[i + 1].he]) rep->folded_edges++;
-                } else {
-                    rep->nonmanifold_edges++;
-                }
-                for (int q = i + 1; q < j; q++)
-                    uf_union(w.parent, w.hedges[i].he / 3, w.hedges[q].he / 3);
+    for (int i = 0; i < nhe;) {
+        int j = i + 1;
+        while (j < nhe && half_edges_same_edge(F, w.hedges[j], w.hedges[i])) j++;
+        int n = j - i;
+        if (half_edge_lo(F, w.hedges[i]) == half_edge_hi(F, w.hedges[i])) {
+            /* a side with both ends at one UV point joins nothing */
+        } else if (n == 1) {
+            int h = w.hedges[i], t = h / 3, k = h % 3;
+            if (nseg == segcap) {
+                segcap = segcap ? 2 * segcap : 1024;
+                seg *ns = realloc(w.segs, (size_t)segcap * sizeof *ns);
+                if (!ns) return nomem(&w, err, "boundary segments");
+                w.segs = ns;
             }
-            i = j;
+            seg *s = &w.segs[nseg++];
+            s->a = F[3 * (size_t)t + k];
+            s->b = F[3 * (size_t)t + (k + 1) % 3];
+            w.tri_bnd[t] |= (unsigned char)(1u << k);
+            w.bvert[s->a] = w.bvert[s->b] = 1;
+        } else {
+            if (n == 2) {
+                if (F[w.hedges[i]] == F[w.hedges[i + 1]]) rep->folded_edges++;
+            } else {
+                rep->nonmanifold_edges++;
+            }
+            for (int q = i + 1; q < j; q++) uf_union(w.parent, w.hedges[i] / 3, w.hedges[q] / 3);
         }
+        i = j;
     }
     rep->boundary_edges = nseg;
     free(w.hedges);
@@ -636,7 +562,7 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
     w.bdeg = calloc((size_t)nuv + 1, sizeof *w.bdeg); /* boundary segments at each point */
     if (!w.vparent || !w.loop_of || !w.bdeg) return nomem(&w, err, "boundary loops");
     int *bdeg = w.bdeg;
-    for (int v = 0; v < nuv; v++) w.vparent[v] = v;
+    uf_init(w.vparent, nuv);
     for (int i = 0; i < nseg; i++) {
         uf_union(w.vparent, w.segs[i].a, w.segs[i].b);
         bdeg[w.segs[i].a]++;

@@ -19,6 +19,7 @@
  */
 #include "geom/cdt.h"
 
+#include <assert.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -26,6 +27,7 @@
 
 #include "geom/cdt_mesh.h"
 #include "geom/cdt_refine.h"
+#include "geom/predicates.h"
 
 cdt_options cdt_default_options(void)
 {
@@ -467,6 +469,18 @@ static scaf_status write_output(const cdt_mesh *m, const cdt_input *in, cdt_outp
     }
 #undef OUTV
     free(map);
+#ifndef NDEBUG
+    /* every output triangle counter-clockwise (exactly), neighbours mutual */
+    for (int t = 0; t < nt; t++) {
+        const int *v = out->triangles + 3 * t;
+        assert(orient2d(out->points + 2 * v[0], out->points + 2 * v[1], out->points + 2 * v[2]) > 0.0);
+        for (int k = 0; k < 3; k++) {
+            int nb = out->neighbors[3 * t + k];
+            assert(nb < 0 || out->neighbors[3 * nb] == t || out->neighbors[3 * nb + 1] == t ||
+                   out->neighbors[3 * nb + 2] == t);
+        }
+    }
+#endif
     return SCAF_OK;
 }
 

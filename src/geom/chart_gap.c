@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/half_edges.h"
 #include "geom/bijectivity.h"
 #include "geom/expansion.h"
 
@@ -179,18 +180,6 @@ double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F)
 
 /* ---- boundary segments ---------------------------------------------------- */
 
-typedef struct bedge {
-    int lo, hi, chart;
-} bedge;
-
-static int cmp_bedge(const void *x, const void *y)
-{
-    const bedge *p = x, *q = y;
-    if (p->lo != q->lo) return p->lo < q->lo ? -1 : 1;
-    if (p->hi != q->hi) return p->hi < q->hi ? -1 : 1;
-    return 0;
-}
-
 /* One search with radius r over segments seg (n by {a, b, chart}). */
 static scaf_status grid_search(const double *UV, const int *seg, int n, double r, const double lo[2], double extent,
                                double *best, int pair[2], unsigned char *mark, long *npairs, double cert,
@@ -304,35 +293,29 @@ scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg
     *seg_out = NULL;
     *nseg = 0;
     size_t nh = 3 * (size_t)nf;
-    bedge *e = malloc(sizeof *e * (nh ? nh : 1));
+    int *order = malloc(sizeof(int) * (nh ? nh : 1));
     int *seg = malloc(sizeof(int) * 3 * (nh ? nh : 1));
-    if (!e || !seg) {
-        free(e);
+    int nhe = 0;
+    scaf_status st = order && seg ? half_edges_sort(half_edges_index_count(nf, F), nf, F, NULL, order, &nhe, err)
+                                  : SCAF_ERR_NOMEM;
+    if (st != SCAF_OK) {
+        free(order);
         free(seg);
         return err_nomem(err, "chart boundary segments");
     }
-    for (int f = 0; f < nf; f++)
-        for (int j = 0; j < 3; j++) {
-            int a = F[3 * f + j], b = F[3 * f + (j + 1) % 3];
-            bedge *x = &e[3 * (size_t)f + j];
-            x->lo = a < b ? a : b;
-            x->hi = a < b ? b : a;
-            x->chart = chart[f];
-        }
-    qsort(e, nh, sizeof *e, cmp_bedge);
     int n = 0;
-    for (size_t i = 0; i < nh;) {
-        size_t j = i + 1;
-        while (j < nh && e[j].lo == e[i].lo && e[j].hi == e[i].hi) j++;
+    for (int i = 0; i < nhe;) {
+        int j = i + 1;
+        while (j < nhe && half_edges_same_edge(F, order[j], order[i])) j++;
         if (j - i == 1) {
-            seg[3 * n] = e[i].lo;
-            seg[3 * n + 1] = e[i].hi;
-            seg[3 * n + 2] = e[i].chart;
+            seg[3 * n] = half_edge_lo(F, order[i]);
+            seg[3 * n + 1] = half_edge_hi(F, order[i]);
+            seg[3 * n + 2] = chart[order[i] / 3];
             n++;
         }
         i = j;
     }
-    free(e);
+    free(order);
     *seg_out = seg;
     *nseg = n;
     return SCAF_OK;

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mesh/union_find.h"
+#include "base/union_find.h"
 
 void tri_complex_free(tri_complex *c)
 {

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/sort_u64.h"
 #include "mesh/degenerate.h"
 #include "mesh/uv_charts.h"
 
@@ -20,12 +21,6 @@ void mesh_topology_free(mesh_topology *t)
     if (!t) return;
     tri_complex_free(&t->cx);
     memset(t, 0, sizeof *t);
-}
-
-static int cmp_u64(const void *a, const void *b)
-{
-    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-    return (x > y) - (x < y);
 }
 
 /* Faces whose vertex set equals that of an earlier face: bucket by the
@@ -58,21 +53,8 @@ static int count_duplicates(const mesh *m, scaf_error *err)
     int dup = 0, s = 0;
     for (int v = 0; v < nv; v++) {
         int t = start[v];
-        if (t - s > 32) {
-            qsort(keys + s, (size_t)(t - s), sizeof *keys, cmp_u64);
-            for (int i = s + 1; i < t; i++) dup += keys[i] == keys[i - 1];
-        } else if (t - s > 1) {
-            for (int i = s + 1; i < t; i++) {
-                uint64_t x = keys[i];
-                int j = i - 1;
-                while (j >= s && keys[j] > x) {
-                    keys[j + 1] = keys[j];
-                    j--;
-                }
-                keys[j + 1] = x;
-            }
-            for (int i = s + 1; i < t; i++) dup += keys[i] == keys[i - 1];
-        }
+        sort_u64(keys + s, t - s);
+        for (int i = s + 1; i < t; i++) dup += keys[i] == keys[i - 1];
         s = t;
     }
     free(start);

@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "mesh/edges.h"
-#include "mesh/union_find.h"
+#include "base/union_find.h"
 
 void mesh_charts_free(mesh_charts *c)
 {

@@ -30,6 +30,8 @@
 
 #include "opt/cholmod_view.h"
 
+#include <assert.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -301,6 +303,8 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
                                    scaf_error *err)
 {
     if (A->n < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD: empty system (no free unknowns)");
+    /* CHOLMOD is told the columns are sorted upper ones (no copy, no check) */
+    assert(opt_csc_is_upper_sorted(A));
     double t0 = timer_now();
     if (c->L) cholmod_free_factor(&c->L, &c->cm);
     c->factored = 0;
@@ -360,12 +364,17 @@ scaf_status opt_chol_compute_ordering(opt_chol *c, const opt_csc *A, int *perm, 
     return ok ? SCAF_OK : fail(c, "ordering", err);
 }
 
+static atomic_long not_posdef_total;
+
+long opt_chol_not_posdef_total(void) { return atomic_load(&not_posdef_total); }
+
 scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
 {
     if (!same_pattern(c, A)) {
         scaf_status st = opt_chol_analyze_given(c, A, NULL, err);
         if (st != SCAF_OK) return st;
     }
+    assert(opt_csc_is_upper_sorted(A));
     double t0 = timer_now();
     cholmod_sparse S = opt_csc_cholmod_view(A);
     c->factored = 0;
@@ -374,12 +383,15 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
     omp_serial_end(lv);
     c->st.t_factor += timer_now() - t0;
     if (!ok) return fail(c, "factorization", err);
-    if (c->cm.status == CHOLMOD_NOT_POSDEF || c->L->minor < c->L->n)
+    if (c->cm.status == CHOLMOD_NOT_POSDEF || c->L->minor < c->L->n) {
+        c->st.not_posdef++;
+        atomic_fetch_add(&not_posdef_total, 1);
         return err_set(err, SCAF_ERR_NUMERIC,
                        "CHOLMOD factorization: matrix not positive definite (fails at column %d of "
                        "%d after reordering; a free vertex may be unconstrained or a weight "
                        "negative)",
                        (int)c->L->minor, (int)c->L->n);
+    }
     c->factored = 1;
     c->st.factorizations++;
     c->st.nnz_L = c->cm.lnz;

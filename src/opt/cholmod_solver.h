@@ -29,6 +29,9 @@ typedef enum opt_ordering {
 typedef struct opt_chol_stats {
     int analyses;          /* symbolic analyses done */
     int factorizations;    /* numerical factorizations done */
+    int not_posdef;        /* factorizations that found the matrix not
+                              positive definite (the caller's recovery,
+                              e.g. a regularized retry, follows them) */
     double t_analyze;      /* seconds in analysis, cumulative */
     double t_factor;       /* seconds in numerical factorization, cumulative */
     double t_solve;        /* seconds in triangular solves, cumulative */
@@ -88,5 +91,10 @@ const int *opt_chol_permutation(const opt_chol *c);
 
 /* Counters and timings. */
 opt_chol_stats opt_chol_get_stats(const opt_chol *c);
+
+/* not_posdef summed over every solver of the process (atomic): lets a test
+ * see that a recovery path ran without reaching the solver of the code
+ * under test. */
+long opt_chol_not_posdef_total(void);
 
 #endif /* SCAF_OPT_CHOLMOD_SOLVER_H */

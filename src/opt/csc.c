@@ -6,6 +6,7 @@
  */
 #include "opt/csc.h"
 
+#include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,6 +28,19 @@ void opt_csc_symv(const opt_csc *A, const double *x, double *y)
             y[r] += A->val[k] * x[c];
             if (r != c) y[c] += A->val[k] * x[r];
         }
+}
+
+int opt_csc_is_upper_sorted(const opt_csc *A)
+{
+    if (A->n < 0 || !A->colptr || A->colptr[0] != 0 || A->colptr[A->n] != A->nnz) return 0;
+    for (int c = 0; c < A->n; c++) {
+        if (A->colptr[c + 1] < A->colptr[c]) return 0;
+        for (int k = A->colptr[c]; k < A->colptr[c + 1]; k++) {
+            int r = A->rowidx[k];
+            if (r < 0 || r > c || (k > A->colptr[c] && r <= A->rowidx[k - 1])) return 0;
+        }
+    }
+    return 1;
 }
 
 scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const int *Jc,
@@ -89,5 +103,6 @@ scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const
     A->colptr = next;
     A->rowidx = rows;
     A->val = vals;
+    assert(opt_csc_is_upper_sorted(A));
     return SCAF_OK;
 }

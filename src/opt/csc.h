@@ -28,6 +28,11 @@ void opt_csc_free(opt_csc *A);
 /* y = A x for the symmetric matrix whose upper part A stores. x, y: n. */
 void opt_csc_symv(const opt_csc *A, const double *x, double *y);
 
+/* Whether A has the layout above: colptr from 0 to nnz, non-decreasing;
+ * in each column rows strictly ascending, in [0, column]. For assert()s of
+ * the code that builds systems and of the solver that wraps them. */
+int opt_csc_is_upper_sorted(const opt_csc *A);
+
 /* Build the upper part from nt triplets (rows I, columns Jc, values Val),
  * either triangle, duplicates summed. */
 scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const int *Jc,

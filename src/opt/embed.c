@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/half_edges.h"
 #include "geom/predicates.h"
 #include "opt/cholmod_solver.h"
 #include "opt/csc.h"
@@ -25,30 +26,22 @@
 
 static const double SCAF_PI = 3.14159265358979323846;
 
-/* Face half-edges keyed by undirected edge, sorted: key = lo * nv + hi,
- * fwd = whether the face walks lo -> hi. */
-typedef struct half_edge { long long key; int fwd; } half_edge;
-
-static int cmp_half_edge(const void *pa, const void *pb)
+/* Number of faces with edge {a, b} among the half-edges he (n of them,
+ * sorted by base/half_edges); *a_to_b gets whether (one of) them walks
+ * a -> b. */
+static int edge_uses(const int *he, int n, const int *F, int a, int b, int *a_to_b)
 {
-    const half_edge *a = pa, *b = pb;
-    return (a->key > b->key) - (a->key < b->key);
-}
-
-/* Number of faces with edge {a, b}; *a_to_b gets whether (one of) them
- * walks a -> b. */
-static int edge_uses(const half_edge *he, size_t n, int nv, int a, int b, int *a_to_b)
-{
-    long long lo = a < b ? a : b, hi = a < b ? b : a, key = lo * nv + hi;
-    size_t l = 0, r = n;
+    int lo = a < b ? a : b, hi = a < b ? b : a;
+    int l = 0, r = n;
     while (l < r) {
-        size_t m = l + (r - l) / 2;
-        if (he[m].key < key) l = m + 1; else r = m;
+        int m = l + (r - l) / 2, mlo = half_edge_lo(F, he[m]), mhi = half_edge_hi(F, he[m]);
+        if (mlo < lo || (mlo == lo && mhi < hi)) l = m + 1;
+        else r = m;
     }
     int cnt = 0;
-    for (size_t k = l; k < n && he[k].key == key; k++) {
+    for (int k = l; k < n && half_edge_lo(F, he[k]) == lo && half_edge_hi(F, he[k]) == hi; k++) {
         cnt++;
-        *a_to_b = he[k].fwd == (a < b);
+        *a_to_b = F[he[k]] == a;
     }
     return cnt;
 }
@@ -167,17 +160,14 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
     if (!(area > 0) || !isfinite(area)) return err_set(err, SCAF_ERR_MESH, "chart has 3D area %g", area);
     /* Loop lengths, outer choice, directions (every loop edge must be a
      * boundary edge, walked the same way by the loop). */
-    size_t nhe = 3 * (size_t)nf;
-    half_edge *he = malloc(nhe * sizeof *he);
+    int nhe = 0;
+    int *he = malloc(3 * (size_t)nf * sizeof *he);
     int *dir = malloc((size_t)nl * sizeof *dir);
-    if (!he || !dir) { free(he); free(dir); return err_nomem(err, "embedding"); }
-    for (int f = 0; f < nf; f++)
-        for (int k = 0; k < 3; k++) {
-            int p = F[3 * f + k], q = F[3 * f + (k + 1) % 3];
-            he[3 * (size_t)f + k].key = (long long)(p < q ? p : q) * nv + (p < q ? q : p);
-            he[3 * (size_t)f + k].fwd = p < q;
-        }
-    qsort(he, nhe, sizeof *he, cmp_half_edge);
+    if (!he || !dir || half_edges_sort(nv, nf, F, NULL, he, &nhe, err) != SCAF_OK) {
+        free(he);
+        free(dir);
+        return err_nomem(err, "embedding");
+    }
     int outer = loops->outer;
     double best = -1;
     for (int l = 0; l < nl; l++) {
@@ -186,7 +176,7 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
         double L = 0;
         for (int k = 0; k < len; k++) {
             int a = lv[k], b = lv[(k + 1) % len], fwd = 0;
-            int uses = edge_uses(he, nhe, nv, a, b, &fwd);
+            int uses = edge_uses(he, nhe, F, a, b, &fwd);
             if (uses != 1 || (k > 0 && fwd != dir[l])) {
                 free(he); free(dir);
                 return err_set(err, SCAF_ERR_MESH,

@@ -15,14 +15,15 @@
 #include <string.h>
 
 #include "geom/cdt.h"
+#include "scaffold/scaffold_defaults.h"
 
 scaffold_options scaffold_default_options(void)
 {
     scaffold_options o;
-    o.box_scale = 3.0;
+    o.box_scale = SCAFFOLD_DEFAULT_BOX_SCALE;
     o.box_square = 0;
-    o.box_points_per_side = 5;
-    o.min_angle_deg = 20.0;
+    o.box_points_per_side = SCAFFOLD_DEFAULT_BOX_POINTS_PER_SIDE;
+    o.min_angle_deg = SCAFFOLD_DEFAULT_MIN_ANGLE_DEG;
     o.box_splittable = 0;
     return o;
 }

@@ -50,6 +50,23 @@ static void shared_edge_keeps_indices(void **state)
     assert_memory_equal(out, FT, sizeof FT);
 }
 
+/* A side with both ends at one vt (a face with a repeated vt) joins no
+ * faces: two such faces around vt 0 are two fans. */
+static void degenerate_side_joins_nothing(void **state)
+{
+    (void)state;
+    int FT[] = {0, 0, 1, 0, 0, 2};
+    int out[6], nuv, *orig;
+    assert_int_equal(uv_split_fans(2, FT, 3, out, &nuv, &orig, NULL), SCAF_OK);
+    assert_int_equal(nuv, 4);
+    assert_memory_equal(out, FT, 3 * sizeof(int));
+    assert_int_equal(out[3], 3);
+    assert_int_equal(out[4], 3);
+    assert_int_equal(out[5], 2);
+    assert_int_equal(orig[3], 0);
+    free(orig);
+}
+
 static void svg_colours_grow_with_energy(void **state)
 {
     (void)state;
@@ -135,6 +152,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(bowtie_vertex_is_split),
         cmocka_unit_test(shared_edge_keeps_indices),
+        cmocka_unit_test(degenerate_side_joins_nothing),
         cmocka_unit_test(svg_colours_grow_with_energy),
         cmocka_unit_test(svg_file_has_every_triangle),
         cmocka_unit_test(report_is_json_with_phases),

@@ -341,29 +341,6 @@ static void init_input(void **state)
     mesh_free(&m);
 }
 
-/* Two triangles sharing only a vt (a pinch): split into two. */
-static void split_fans(void **state)
-{
-    (void)state;
-    int FT[6] = {0, 1, 2, 0, 3, 4};
-    int *FT2, *map, n2, ns;
-    scaf_error err;
-    assert_int_equal(atlas_split_fans(2, FT, 5, &FT2, &n2, &map, &ns, &err), SCAF_OK);
-    assert_int_equal(ns, 1);
-    assert_int_equal(n2, 6);
-    assert_int_not_equal(FT2[0], FT2[3]);
-    assert_int_equal(map[FT2[3]], 0);
-    free(FT2);
-    free(map);
-    /* two triangles sharing an edge: nothing split */
-    int G[6] = {0, 1, 2, 0, 2, 3};
-    assert_int_equal(atlas_split_fans(2, G, 4, &FT2, &n2, &map, &ns, &err), SCAF_OK);
-    assert_int_equal(ns, 0);
-    assert_memory_equal(FT2, G, sizeof G);
-    free(FT2);
-    free(map);
-}
-
 static void padding_too_large_is_refused(void **state)
 {
     (void)state;
@@ -376,6 +353,55 @@ static void padding_too_large_is_refused(void **state)
     err_clear(&err);
     assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_ERR_USAGE);
     assert_non_null(strstr(err.message, "padding"));
+    mesh_free(&m);
+}
+
+/* Every compaction and packing knob out of range (NaN included) is
+ * refused before any work; the defaults and the bounds themselves pass. */
+static void out_of_range_options_are_refused(void **state)
+{
+    (void)state;
+    mesh m;
+    patches(&m, 30, 2, 0);
+    enum { NBAD = 17 };
+    for (int i = 0; i < NBAD; i++) {
+        atlas_options o = atlas_options_default();
+        switch (i) {
+        case 0: o.pack_gap_factor = 0.99; break;
+        case 1: o.pack_gap_factor = NAN; break;
+        case 2: o.compact_lambda_ratio = 0.0; break;
+        case 3: o.compact_lambda_ratio = NAN; break;
+        case 4: o.compact_rest_scale = 0.0; break;
+        case 5: o.compact_rest_scale = 1.01; break;
+        case 6: o.compact_rest_scale = NAN; break;
+        case 7: o.compact_box_scale = 0.99; break;
+        case 8: o.compact_box_scale = NAN; break;
+        case 9: o.compact_fraction = 0.0; break;
+        case 10: o.compact_fraction = 1.0; break;
+        case 11: o.compact_fraction = NAN; break;
+        case 12: o.pack_cells = 15; break;
+        case 13: o.pack_cells = 8193; break;
+        case 14: o.pack_picks = 0; break;
+        case 15: o.pack_picks = 17; break;
+        default: o.compact_rest_scale = -1.0; break;
+        }
+        atlas a;
+        scaf_error err;
+        err_clear(&err);
+        assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_ERR_USAGE);
+        assert_non_null(strstr(err.message, "invalid atlas option"));
+    }
+    atlas_options o = atlas_options_default();
+    o.pack_gap_factor = 1.0;
+    o.compact_rest_scale = 1.0;
+    o.compact_box_scale = 1.0;
+    o.pack_cells = 8192;
+    o.pack_picks = 16;
+    atlas a;
+    scaf_error err;
+    err_clear(&err);
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    atlas_free(&a);
     mesh_free(&m);
 }
 
@@ -443,8 +469,8 @@ int main(void)
         cmocka_unit_test(compaction_keeps_best_layout),
         cmocka_unit_test(closed_chart_is_refused),
         cmocka_unit_test(init_input),
-        cmocka_unit_test(split_fans),
         cmocka_unit_test(padding_too_large_is_refused),
+        cmocka_unit_test(out_of_range_options_are_refused),
         cmocka_unit_test(pack_keep_matches_full_ranking),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -250,6 +250,33 @@ static void relaxed_supernodes_solve(void **state)
     opt_csc_free(&A);
 }
 
+/* The layout check the assert()s use: built matrices pass, a column with
+ * rows out of order or a row below the diagonal does not. */
+static void upper_sorted_layout(void **state)
+{
+    (void)state;
+    opt_csc A;
+    grid_laplacian(&A, 4, 0.0, 1);
+    assert_true(opt_csc_is_upper_sorted(&A));
+    int c = 5, lo = A.colptr[c], hi = A.colptr[c + 1];
+    assert_true(hi - lo >= 2);
+    int t = A.rowidx[lo];
+    A.rowidx[lo] = A.rowidx[lo + 1];
+    A.rowidx[lo + 1] = t;
+    assert_false(opt_csc_is_upper_sorted(&A));
+    A.rowidx[lo + 1] = A.rowidx[lo];
+    A.rowidx[lo] = t;
+    assert_true(opt_csc_is_upper_sorted(&A));
+    int keep = A.rowidx[hi - 1];
+    A.rowidx[hi - 1] = c + 1; /* below the diagonal */
+    assert_false(opt_csc_is_upper_sorted(&A));
+    A.rowidx[hi - 1] = keep;
+    A.colptr[A.n] = A.nnz + 1;
+    assert_false(opt_csc_is_upper_sorted(&A));
+    A.colptr[A.n] = A.nnz;
+    opt_csc_free(&A);
+}
+
 static void indefinite_is_an_error(void **state)
 {
     (void)state;
@@ -257,10 +284,21 @@ static void indefinite_is_an_error(void **state)
     grid_laplacian(&A, 6, -8.0, 0); /* diagonal -4: negative definite */
     scaf_error e;
     opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+    long total = opt_chol_not_posdef_total();
     assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_ERR_NUMERIC);
     assert_non_null(strstr(e.message, "positive definite"));
+    assert_int_equal(opt_chol_not_posdef_total(), total + 1);
+    /* counted apart from the successful factorizations */
+    assert_int_equal(opt_chol_get_stats(c).not_posdef, 1);
+    assert_int_equal(opt_chol_get_stats(c).factorizations, 0);
     double b[36] = {0}, x[36];
     assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_ERR_USAGE);
+    /* the same pattern made definite again factors, and is not counted */
+    opt_csc_free(&A);
+    grid_laplacian(&A, 6, 0.0, 0);
+    assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+    assert_int_equal(opt_chol_get_stats(c).not_posdef, 1);
+    assert_int_equal(opt_chol_get_stats(c).factorizations, 1);
     opt_chol_destroy(c);
     opt_csc_free(&A);
     opt_csc empty = {0};
@@ -338,6 +376,7 @@ int main(void)
         cmocka_unit_test(given_random_permutation),
         cmocka_unit_test(block_ordering_solves),
         cmocka_unit_test(relaxed_supernodes_solve),
+        cmocka_unit_test(upper_sorted_layout),
         cmocka_unit_test(indefinite_is_an_error),
         cmocka_unit_test(concurrent_factorizations),
     };

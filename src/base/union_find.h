@@ -1,12 +1,12 @@
-/* mesh/union_find: disjoint sets over 0..n-1 (components, fans, loops).
+/* base/union_find: disjoint sets over 0..n-1 (components, fans, loops).
  *
  * Union by linking the larger root under the smaller one, so a set's root
  * is always its smallest member: labels derived from roots are then
  * deterministic and independent of the union order. Path halving keeps
  * finds near constant time. Plain int arrays: no allocation inside.
  */
-#ifndef SCAF_MESH_UNION_FIND_H
-#define SCAF_MESH_UNION_FIND_H
+#ifndef SCAF_BASE_UNION_FIND_H
+#define SCAF_BASE_UNION_FIND_H
 
 /* parent: n ints; afterwards every element is its own set. */
 static inline void uf_init(int *parent, int n)
@@ -35,4 +35,4 @@ static inline int uf_union(int *parent, int a, int b)
     return 1;
 }
 
-#endif /* SCAF_MESH_UNION_FIND_H */
+#endif /* SCAF_BASE_UNION_FIND_H */
