@@ -17,11 +17,16 @@
  * the files are committed; a mesh there is a plain OBJ).
  *
  * Writing: for each output, cli_outputs_begin gives the path the writer
- * writes to (a hidden temporary file beside the target), cli_outputs_end
- * takes the writer's status. cli_outputs_commit then renames every
- * temporary file over its target, or, when one write failed or SIGINT /
- * SIGTERM arrived (tools/cli_signal), removes them all and leaves every
- * existing file as it was: all outputs are committed or none is.
+ * writes to (a hidden temporary file beside the target, which the path
+ * writers of src/ replace atomically in their turn), cli_outputs_end takes
+ * the writer's status (its message, which names that temporary path, is
+ * printed with the output's own name) and gzips when asked.
+ * cli_outputs_commit then renames every temporary file over its target,
+ * or, when one write failed or SIGINT / SIGTERM arrived (tools/cli_signal),
+ * removes them all and leaves every existing file as it was: all outputs
+ * are committed or none is. The renames start only once every file is
+ * complete and synced; one can still fail if the folder changes under the
+ * run (reported, exit 5).
  */
 #ifndef SCAF_TOOLS_CLI_OUTPUTS_H
 #define SCAF_TOOLS_CLI_OUTPUTS_H
