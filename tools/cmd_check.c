@@ -3,7 +3,9 @@
  * Reads a mesh with UVs (OBJ `vt` + `f v/vt`) and reports, decided with
  * exact predicates (geom/bijectivity): flipped / degenerate UV triangles,
  * mirrored charts, crossing and touching UV boundary segment pairs, folds
- * and nested charts. Exit status: 0 bijective, 1 not bijective,
+ * and nested charts. A closed surface without UVs, or any surface with
+ * --3d, gets the 3D self-intersection check instead (tools/check_surface).
+ * Exit status: 0 bijective, 1 not bijective,
  * 3 unreadable or malformed file, 4 readable but without UVs, 2 usage.
  */
 #include <math.h>
