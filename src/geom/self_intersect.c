@@ -15,6 +15,12 @@
 
 static const double *pt(const double *V, int i) { return V + 3 * (size_t)i; }
 
+static int orient_sign(const double *const t[3], const double *p)
+{
+    double o = orient3d(t[0], t[1], t[2], p);
+    return (o > 0) - (o < 0);
+}
+
 si_pair_kind si_classify_pair(const double *V, const int fa[3], const int fb[3])
 {
     /* ia[k] = position in fb of fa[k], or -1 */
@@ -34,6 +40,12 @@ si_pair_kind si_classify_pair(const double *V, const int fa[3], const int fb[3])
          * plane) in segments starting at v; they overlap beyond v iff the
          * far end of one, on its edge opposite v, lies in the other face. */
         int k = ia[0] >= 0 ? 0 : ia[1] >= 0 ? 1 : 2, l = ia[k];
+        /* quick exit: the other two corners of one face strictly on one
+         * side of the other's plane, so that face meets the plane only at v */
+        int s1 = orient_sign(a, b[(l + 1) % 3]), s2 = orient_sign(a, b[(l + 2) % 3]);
+        if (s1 != 0 && s1 == s2) return SI_PAIR_NONE;
+        s1 = orient_sign(b, a[(k + 1) % 3]), s2 = orient_sign(b, a[(k + 2) % 3]);
+        if (s1 != 0 && s1 == s2) return SI_PAIR_NONE;
         return seg_tri_intersect(a[(k + 1) % 3], a[(k + 2) % 3], b[0], b[1], b[2]) ||
                        seg_tri_intersect(b[(l + 1) % 3], b[(l + 2) % 3], a[0], a[1], a[2])
                    ? SI_PAIR_VERTEX

@@ -88,32 +88,52 @@ static int seg_tri_coplanar(const double p[3], const double q[3], const double a
            seg_seg_2d(p2, q2, a2, b2) || seg_seg_2d(p2, q2, b2, c2) || seg_seg_2d(p2, q2, c2, a2);
 }
 
+/* Segment pq meeting the plane of triangle t in exactly one point: that
+ * point is in t iff the line pq passes every directed edge on one side. */
+static int line_meets_tri(const double p[3], const double q[3], const double *const t[3])
+{
+    int o1 = sgn(orient3d(p, q, t[0], t[1])), o2 = sgn(orient3d(p, q, t[1], t[2])), o3 = sgn(orient3d(p, q, t[2], t[0]));
+    int has_pos = o1 > 0 || o2 > 0 || o3 > 0, has_neg = o1 < 0 || o2 < 0 || o3 < 0;
+    return !(has_pos && has_neg);
+}
+
 int seg_tri_intersect(const double p[3], const double q[3], const double a[3], const double b[3],
                       const double c[3])
 {
     int sp = sgn(orient3d(a, b, c, p)), sq = sgn(orient3d(a, b, c, q));
     if (sp * sq > 0) return 0;
     if (sp == 0 && sq == 0) return seg_tri_coplanar(p, q, a, b, c);
-    /* pq meets the plane in exactly one point, on the segment. */
-    int o1 = sgn(orient3d(p, q, a, b)), o2 = sgn(orient3d(p, q, b, c)), o3 = sgn(orient3d(p, q, c, a));
-    int has_pos = o1 > 0 || o2 > 0 || o3 > 0, has_neg = o1 < 0 || o2 < 0 || o3 < 0;
-    return !(has_pos && has_neg);
+    const double *const t[3] = {a, b, c};
+    return line_meets_tri(p, q, t);
 }
 
-/* All three vertices of t strictly on one side of the plane of s. */
-static int strictly_one_side(const double *const s[3], const double *const t[3])
+/* Signs of orient3d(s, t[k]) for the three vertices of t; 1 when all are
+ * nonzero and equal (t strictly on one side of the plane of s). */
+static int plane_signs(const double *const s[3], const double *const t[3], int sg[3])
 {
-    int o0 = sgn(orient3d(s[0], s[1], s[2], t[0]));
-    if (o0 == 0) return 0;
-    return sgn(orient3d(s[0], s[1], s[2], t[1])) == o0 && sgn(orient3d(s[0], s[1], s[2], t[2])) == o0;
+    for (int k = 0; k < 3; k++) sg[k] = sgn(orient3d(s[0], s[1], s[2], t[k]));
+    return sg[0] != 0 && sg[0] == sg[1] && sg[1] == sg[2];
+}
+
+/* Edges of t that reach the plane of s (endpoint signs sg) against s;
+ * an edge strictly on one side cannot meet s. */
+static int edges_meet(const double *const t[3], const int sg[3], const double *const s[3])
+{
+    for (int i = 0; i < 3; i++) {
+        int j = (i + 1) % 3;
+        if (sg[i] * sg[j] > 0) continue;
+        if (sg[i] == 0 && sg[j] == 0) {
+            if (seg_tri_coplanar(t[i], t[j], s[0], s[1], s[2])) return 1;
+        } else if (line_meets_tri(t[i], t[j], s)) {
+            return 1;
+        }
+    }
+    return 0;
 }
 
 int tri_tri_intersect(const double *const a[3], const double *const b[3])
 {
-    if (strictly_one_side(a, b) || strictly_one_side(b, a)) return 0;
-    for (int i = 0; i < 3; i++)
-        if (seg_tri_intersect(a[i], a[(i + 1) % 3], b[0], b[1], b[2]) ||
-            seg_tri_intersect(b[i], b[(i + 1) % 3], a[0], a[1], a[2]))
-            return 1;
-    return 0;
+    int sb[3], sa[3];
+    if (plane_signs(a, b, sb) || plane_signs(b, a, sa)) return 0;
+    return edges_meet(b, sb, a) || edges_meet(a, sa, b);
 }

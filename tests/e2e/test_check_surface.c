@@ -125,6 +125,18 @@ static void shared_closed_meshes(void **state)
     assert_int_equal(r.status, 1);
     assert_int_equal(field(&r, "crossing_pairs"), 237); /* MANIFEST.md */
     assert_int_equal(field(&r, "intersecting_pairs"), 239);
+    /* MANIFEST.md's self-isect pairs (pairs sharing no vertex position) */
+    if (test_data_path("bad/cow.obj", path, sizeof path)) {
+        run("--json", path, &r);
+        assert_int_equal(r.status, 1);
+        assert_int_equal(field(&r, "crossing_pairs"), 71);
+        assert_int_equal(field(&r, "manifold"), 0);
+    }
+    if (test_data_path("disk/camelhead.off", path, sizeof path)) {
+        run("--json --3d", path, &r);
+        assert_int_equal(r.status, 1);
+        assert_int_equal(field(&r, "crossing_pairs"), 3);
+    }
     if (test_data_path("closed/leg-flow6.off", path, sizeof path)) {
         run("--json", path, &r);
         assert_int_equal(r.status, 0);
