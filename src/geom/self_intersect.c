@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "geom/predicates.h"
+#include "geom/simplex_arrays.h"
 #include "geom/tri_intersect.h"
 
 /* ---- pair classification ---- */
@@ -143,29 +144,12 @@ static void record(si_report *r, si_pair_kind kind, int i, int j)
 
 /* ---- the check ---- */
 
-static scaf_status validate(int nv, const double *V, int nf, const int *F, scaf_error *err)
-{
-    if (nv < 0 || nf < 0 || (nv > 0 && !V) || (nf > 0 && !F))
-        return err_set(err, SCAF_ERR_USAGE, "si_check: bad arguments (nv %d, nf %d)", nv, nf);
-    for (int i = 0; i < nv; i++)
-        for (int k = 0; k < 3; k++)
-            if (!isfinite(V[3 * (size_t)i + k]))
-                return err_set(err, SCAF_ERR_MESH, "vertex %d is not finite (%g, %g, %g)", i, V[3 * (size_t)i],
-                               V[3 * (size_t)i + 1], V[3 * (size_t)i + 2]);
-    for (int f = 0; f < nf; f++)
-        for (int k = 0; k < 3; k++)
-            if (F[3 * (size_t)f + k] < 0 || F[3 * (size_t)f + k] >= nv)
-                return err_set(err, SCAF_ERR_MESH, "face %d references vertex %d but there are %d vertices", f,
-                               F[3 * (size_t)f + k], nv);
-    return SCAF_OK;
-}
-
 scaf_status si_check(int nv, const double *V, int nf, const int *F, si_report *r, scaf_error *err)
 {
     memset(r, 0, sizeof *r);
     r->faces = nf;
     r->first_degenerate = -1;
-    scaf_status s = validate(nv, V, nf, F, err);
+    scaf_status s = simplex_arrays_check(nv, V, nf, F, 3, "face", err);
     if (s) return s;
 
     /* boxes of the non-degenerate faces, the global box, the mean extent */

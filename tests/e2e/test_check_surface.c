@@ -11,8 +11,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 
+#include "support/cli_capture.h"
 #include "support/support.h"
 
 typedef struct result {
@@ -22,27 +22,16 @@ typedef struct result {
 
 static void run(const char *opts, const char *path, result *r)
 {
-    char cmd[2048];
-    snprintf(cmd, sizeof cmd, "'%s' check %s '%s' 2>/dev/null", SCAF_BINARY, opts, path);
-    FILE *p = popen(cmd, "r");
-    assert_non_null(p);
-    size_t n = fread(r->out, 1, sizeof r->out - 1, p);
-    r->out[n] = '\0';
-    int st = pclose(p);
-    assert_true(WIFEXITED(st));
-    r->status = WEXITSTATUS(st);
+    r->status = test_capture(r->out, sizeof r->out, "'%s' check %s '%s' 2>/dev/null", SCAF_BINARY, opts, path);
+    assert_true(r->status >= 0);
 }
 
 static long long field(const result *r, const char *key)
 {
-    char pat[128];
-    snprintf(pat, sizeof pat, "\"%s\": ", key);
-    const char *s = strstr(r->out, pat);
-    if (!s) fail_msg("key %s missing in: %s", key, r->out);
-    s += strlen(pat);
-    if (!strncmp(s, "true", 4)) return 1;
-    if (!strncmp(s, "false", 5)) return 0;
-    return strtoll(s, NULL, 10);
+    int found;
+    long long v = test_json_int(r->out, key, &found);
+    if (!found) fail_msg("key %s missing in: %s", key, r->out);
+    return v;
 }
 
 static void write_file(const char *path, const char *text)
