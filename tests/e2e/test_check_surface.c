@@ -26,13 +26,7 @@ static void run(const char *opts, const char *path, result *r)
     assert_true(r->status >= 0);
 }
 
-static long long field(const result *r, const char *key)
-{
-    int found;
-    long long v = test_json_int(r->out, key, &found);
-    if (!found) fail_msg("key %s missing in: %s", key, r->out);
-    return v;
-}
+static long long field(const result *r, const char *key) { return test_json_field(r->out, key); }
 
 static void write_file(const char *path, const char *text)
 {

@@ -1,7 +1,12 @@
 /* tests/support/cli_capture: see cli_capture.h. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
 #include "support/cli_capture.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,13 +28,12 @@ int test_capture(char *out, size_t size, const char *fmt, ...)
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
-long long test_json_int(const char *json, const char *key, int *found)
+long long test_json_field(const char *json, const char *key)
 {
     char pat[128];
     snprintf(pat, sizeof pat, "\"%s\": ", key);
     const char *s = strstr(json, pat);
-    *found = s != NULL;
-    if (!s) return 0;
+    if (!s) fail_msg("key %s missing in: %s", key, json);
     s += strlen(pat);
     if (!strncmp(s, "true", 4)) return 1;
     if (!strncmp(s, "false", 5)) return 0;

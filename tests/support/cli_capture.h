@@ -11,7 +11,7 @@
 int test_capture(char *out, size_t size, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
 /* The integer value of "key" in a JSON text (true/false read as 1/0);
- * *found is set to whether the key is there. */
-long long test_json_int(const char *json, const char *key, int *found);
+ * fails the running cmocka test, naming the key, when it is missing. */
+long long test_json_field(const char *json, const char *key);
 
 #endif
