@@ -4,7 +4,8 @@
  * exact predicates (geom/bijectivity): flipped / degenerate UV triangles,
  * mirrored charts, crossing and touching UV boundary segment pairs, folds
  * and nested charts. A closed surface without UVs, or any surface with
- * --3d, gets the 3D self-intersection check instead (tools/check_surface).
+ * --3d, gets the 3D self-intersection check instead (tools/check_surface);
+ * a Medit .mesh the tet orientation check (tools/check_tets).
  * Exit status: 0 bijective, 1 not bijective,
  * 3 unreadable or malformed file, 4 readable but without UVs, 2 usage.
  */
@@ -13,6 +14,7 @@
 #include <string.h>
 
 #include "check_surface.h"
+#include "check_tets.h"
 #include "commands.h"
 #include "base/json_write.h"
 #include "exit_codes.h"
@@ -24,6 +26,7 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: scaf check [--json] [--3d] FILE\n"
+            "       scaf check [--json] FILE.mesh\n"
             "\n"
             "Checks whether the UV map of FILE (.obj with vt, optionally .gz) is bijective,\n"
             "with exact arithmetic: every UV triangle counter-clockwise with nonzero area,\n"
@@ -42,6 +45,9 @@ static void usage(FILE *out)
             "           manifold, degenerate_faces, intersecting_pairs, crossing_pairs,\n"
             "           vertex_pairs, edge_pairs, duplicate_pairs, first_pairs,\n"
             "           intersection_free\n"
+            "  FILE.mesh  a tetrahedral mesh (Medit): every tet must be positively\n"
+            "           oriented (exact orient3d); exit 1 when one is inverted or flat.\n"
+            "           JSON keys: tets, positive, inverted, degenerate, first_bad, valid\n"
             "  --help   this text\n"
             "\n"
             "min_chart_gap: the smallest distance between two different charts (triangles\n"
@@ -122,6 +128,8 @@ int cmd_check(int argc, char **argv)
         usage(stderr);
         return EXIT_USAGE;
     }
+
+    if (check_tets_applies(path)) return check_tets_run(path, json);
 
     mesh m;
     mesh_read_info info;

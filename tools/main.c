@@ -17,6 +17,7 @@ int cmd_gen(int argc, char **argv);
 int cmd_info(int argc, char **argv);
 int cmd_param(int argc, char **argv);
 int cmd_atlas(int argc, char **argv);
+int cmd_tet(int argc, char **argv);
 
 const command scaf_commands[] = {
     {"check", "verify that a mesh's UV map is bijective (exact)", cmd_check},
@@ -24,6 +25,7 @@ const command scaf_commands[] = {
     {"info", "print the topology of a mesh (components, loops, genus, defects, charts)", cmd_info},
     {"param", "bijective UV parametrization with SCAF (writes OBJ with vt)", cmd_param},
     {"atlas", "multi-chart texture atlas: joint bijective optimization, compaction, padding", cmd_atlas},
+    {"tet", "tetrahedralize a box around a closed surface (TetGen, surface kept, checked exactly)", cmd_tet},
     {NULL, NULL, NULL}
 };
 
