@@ -141,6 +141,7 @@ static scaf_status build_box(int nv, const double lo[3], const double hi[3], int
 typedef struct face_ref {
     int v[3]; /* sorted */
     int tet;
+    int side; /* the face of tet opposite its corner `side` */
 } face_ref;
 
 static int cmp_face(const void *pa, const void *pb)
@@ -164,7 +165,7 @@ static void sorted3(const int *f, int out[3])
 static int find_face(const face_ref *fr, int n, const int key[3], int *count)
 {
     int lo = 0, hi = n;
-    face_ref probe = {{key[0], key[1], key[2]}, -1};
+    face_ref probe = {{key[0], key[1], key[2]}, -1, 0};
     while (lo < hi) {
         int mid = lo + (hi - lo) / 2;
         if (cmp_face(&fr[mid], &probe) < 0)
@@ -178,11 +179,12 @@ static int find_face(const face_ref *fr, int n, const int key[3], int *count)
     return lo;
 }
 
-static scaf_status check_faces(const tet_box_mesh *m, int nf, const int *F, scaf_error *err)
+/* Faces of all tets, sorted by vertex triple (NULL when out of memory). */
+static face_ref *sorted_faces(const tet_box_mesh *m)
 {
     size_t nref = 4 * (size_t)m->nt;
     face_ref *fr = malloc(sizeof *fr * (nref > 0 ? nref : 1));
-    if (!fr) return err_nomem(err, "tet faces");
+    if (!fr) return NULL;
     for (int t = 0; t < m->nt; t++)
         for (int k = 0; k < 4; k++) {
             int f[3], o = 0;
@@ -190,10 +192,51 @@ static scaf_status check_faces(const tet_box_mesh *m, int nf, const int *F, scaf
                 if (l != k) f[o++] = m->T[4 * (size_t)t + l];
             sorted3(f, fr[4 * (size_t)t + k].v);
             fr[4 * (size_t)t + k].tet = t;
+            fr[4 * (size_t)t + k].side = k;
         }
     qsort(fr, nref, sizeof *fr, cmp_face);
+    return fr;
+}
+
+/* Face structure and labels. nb[4t + k]: the tet across face k of tet t
+ * (-1 on the hull); cross[4t + k]: that face is a surface triangle. The
+ * labels come from a walk from the hull tets (outside, 0) flipping at
+ * every surface triangle, so nested shells label right (a cavity is
+ * outside); the walk fails if the surface does not separate consistently.
+ * TetGen's region attribute is a cross-check: its seeded outer region
+ * must be labelled outside. */
+static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const double *attribute, scaf_error *err)
+{
+    size_t nref = 4 * (size_t)m->nt;
+    face_ref *fr = sorted_faces(m);
+    int *nb = malloc(sizeof(int) * (nref > 0 ? nref : 1));
+    int *queue = malloc(sizeof(int) * (size_t)(m->nt > 0 ? m->nt : 1));
+    signed char *cross = calloc(nref > 0 ? nref : 1, 1);
+    m->inside = malloc((size_t)(m->nt > 0 ? m->nt : 1));
+    if (!fr || !nb || !queue || !cross || !m->inside) {
+        free(fr);
+        free(nb);
+        free(queue);
+        free(cross);
+        return err_nomem(err, "tet faces");
+    }
     scaf_status s = SCAF_OK;
-    /* every input triangle: two tets, one on each side */
+    int hull = 0;
+    for (size_t i = 0, j; i < nref && s == SCAF_OK; i = j) {
+        for (j = i + 1; j < nref && !memcmp(fr[j].v, fr[i].v, sizeof fr[0].v); j++) {}
+        size_t a = 4 * (size_t)fr[i].tet + fr[i].side;
+        if (j - i == 1) {
+            hull++;
+            nb[a] = -1;
+        } else if (j - i == 2) {
+            nb[a] = fr[i + 1].tet;
+            nb[4 * (size_t)fr[i + 1].tet + fr[i + 1].side] = fr[i].tet;
+        } else {
+            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen face (%d, %d, %d) bounds %d tets", fr[i].v[0], fr[i].v[1],
+                        fr[i].v[2], (int)(j - i));
+        }
+    }
+    /* every input triangle: a face of two tets; every box triangle: of one */
     for (int f = 0; f < nf && s == SCAF_OK; f++) {
         int key[3], c;
         sorted3(F + 3 * (size_t)f, key);
@@ -201,42 +244,52 @@ static scaf_status check_faces(const tet_box_mesh *m, int nf, const int *F, scaf
         if (c != 2)
             s = err_set(err, SCAF_ERR_INTERNAL, "TetGen lost surface face %d (%d, %d, %d): it bounds %d tets, not 2",
                         f, F[3 * (size_t)f], F[3 * (size_t)f + 1], F[3 * (size_t)f + 2], c);
-        else if (m->inside[fr[at].tet] == m->inside[fr[at + 1].tet])
-            s = err_set(err, SCAF_ERR_INTERNAL, "surface face %d has tets %d and %d on the same side (%s)", f,
-                        fr[at].tet, fr[at + 1].tet, m->inside[fr[at].tet] ? "inside" : "outside");
+        else
+            for (int e = 0; e < 2; e++) cross[4 * (size_t)fr[at + e].tet + fr[at + e].side] = 1;
     }
     for (int f = 0; f < m->nbox_faces && s == SCAF_OK; f++) {
         int key[3], c;
         sorted3(m->box_F + 3 * (size_t)f, key);
         find_face(fr, (int)nref, key, &c);
-        if (c != 1)
-            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen lost box face %d: it bounds %d tets, not 1", f, c);
-    }
-    /* the hull is the box; labels agree across non-surface faces */
-    int hull = 0;
-    for (size_t i = 0, j; i < nref && s == SCAF_OK; i = j) {
-        for (j = i + 1; j < nref && !memcmp(fr[j].v, fr[i].v, sizeof fr[0].v); j++) {}
-        if (j - i == 1) {
-            hull++;
-        } else if (j - i > 2) {
-            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen face (%d, %d, %d) bounds %d tets", fr[i].v[0], fr[i].v[1],
-                        fr[i].v[2], (int)(j - i));
-        }
+        if (c != 1) s = err_set(err, SCAF_ERR_INTERNAL, "TetGen lost box face %d: it bounds %d tets, not 1", f, c);
     }
     if (s == SCAF_OK && hull != m->nbox_faces)
         s = err_set(err, SCAF_ERR_INTERNAL, "the TetGen mesh has %d hull faces, the box %d", hull, m->nbox_faces);
-    if (s == SCAF_OK) {
-        /* faces whose two tets differ in label must all be input triangles:
-         * there are exactly nf of them */
-        int label_changes = 0;
-        for (size_t i = 0; i + 1 < nref; i++)
-            if (!memcmp(fr[i + 1].v, fr[i].v, sizeof fr[0].v) && m->inside[fr[i].tet] != m->inside[fr[i + 1].tet])
-                label_changes++;
-        if (label_changes != nf)
-            s = err_set(err, SCAF_ERR_INTERNAL,
-                        "inside/outside labels change across %d faces, but the surface has %d", label_changes, nf);
+    /* the walk */
+    int head = 0, tail = 0;
+    for (int t = 0; t < m->nt; t++) {
+        m->inside[t] = -1;
+        for (int k = 0; k < 4 && s == SCAF_OK; k++)
+            if (nb[4 * (size_t)t + k] < 0 && m->inside[t] < 0) {
+                m->inside[t] = 0;
+                queue[tail++] = t;
+            }
+    }
+    while (head < tail && s == SCAF_OK) {
+        int t = queue[head++];
+        for (int k = 0; k < 4 && s == SCAF_OK; k++) {
+            int u = nb[4 * (size_t)t + k];
+            if (u < 0) continue;
+            signed char want = (signed char)(m->inside[t] ^ cross[4 * (size_t)t + k]);
+            if (m->inside[u] < 0) {
+                m->inside[u] = want;
+                queue[tail++] = u;
+            } else if (m->inside[u] != want) {
+                s = err_set(err, SCAF_ERR_INTERNAL, "the surface does not separate inside from outside at tet %d", u);
+            }
+        }
+    }
+    if (s == SCAF_OK && tail != m->nt)
+        s = err_set(err, SCAF_ERR_INTERNAL, "%d tets are not connected to the box", m->nt - tail);
+    for (int t = 0; t < m->nt && s == SCAF_OK; t++) {
+        if (attribute[t] == OUTSIDE_ATTRIBUTE && m->inside[t])
+            s = err_set(err, SCAF_ERR_INTERNAL, "tet %d is in TetGen's outer region but inside the surface", t);
+        m->ninside += m->inside[t];
     }
     free(fr);
+    free(nb);
+    free(queue);
+    free(cross);
     return s;
 }
 
@@ -261,6 +314,7 @@ scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, co
     }
     memcpy(P, V, sizeof(double) * 3 * (size_t)nv);
     out->nsurface = nv;
+    double *attribute = NULL;
     s = build_box(nv, lo, hi, n, out, P, err);
     if (s == SCAF_OK) {
         memcpy(all_F, F, sizeof(int) * 3 * (size_t)nf);
@@ -272,19 +326,14 @@ scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, co
         double seed[4] = {lo[0] * 0.5 + blo[0] * 0.5, lo[1] * 0.5 + blo[1] * 0.5, lo[2] * 0.5 + blo[2] * 0.5,
                           OUTSIDE_ATTRIBUTE};
         tetgen_result tr;
+        memset(&tr, 0, sizeof tr);
         s = tetgen_call(nv + out->nbox, P, nf + out->nbox_faces, all_F, 1, seed, &tr, err);
         if (s == SCAF_OK) {
             out->nv = tr.np;
             out->V = tr.P;
             out->nt = tr.nt;
             out->T = tr.T;
-            out->inside = malloc((size_t)(tr.nt > 0 ? tr.nt : 1));
-            if (!out->inside) s = err_nomem(err, "tet labels");
-            for (int t = 0; s == SCAF_OK && t < tr.nt; t++) {
-                out->inside[t] = tr.attribute[t] != OUTSIDE_ATTRIBUTE;
-                out->ninside += out->inside[t];
-            }
-            free(tr.attribute);
+            attribute = tr.attribute;
             if (s == SCAF_OK && (out->nv < nv + out->nbox ||
                                  memcmp(out->V, P, sizeof(double) * 3 * (size_t)(nv + out->nbox))))
                 s = err_set(err, SCAF_ERR_INTERNAL, "TetGen changed or dropped input points");
@@ -299,7 +348,8 @@ scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, co
             s = err_set(err, SCAF_ERR_INTERNAL, "TetGen produced %d inverted and %d flat tets (the first: tet %d)",
                         r.inverted, r.degenerate, r.first_bad);
     }
-    if (s == SCAF_OK) s = check_faces(out, nf, F, err);
+    if (s == SCAF_OK) s = label_and_check(out, nf, F, attribute, err);
+    free(attribute);
     if (s != SCAF_OK) tet_box_mesh_free(out);
     return s;
 }

@@ -16,9 +16,11 @@
  *   - every input triangle is a face of exactly two tets, one inside the
  *     surface and one outside; every box triangle a face of one tet; no
  *     other face lies on the hull and no face has three or more tets;
- *   - inside/outside labels (TetGen's region attribute, seeded between
- *     the box and the surface's bounding box) agree across every face
- *     that is not an input triangle.
+ *   - inside/outside labels: a walk over the tets from the box (outside)
+ *     flips the label at every surface triangle and must never meet a
+ *     contradiction, so nested shells are labelled right (the cavity of a
+ *     hollow ball is outside); TetGen's region attribute, seeded between
+ *     the box and the surface's bounding box, must agree on its region.
  */
 #ifndef SCAF_GEOM_TET_BOX_MESH_H
 #define SCAF_GEOM_TET_BOX_MESH_H

@@ -106,6 +106,37 @@ static void closed_samples(void **state)
     sample_in_box("cubesphere", 4, 2, 8);
 }
 
+/* A hollow ball: the unit icosphere and one of radius 0.5 facing inward.
+ * The cavity is outside, so the inside volume is the shell's. */
+static void nested_shells(void **state)
+{
+    (void)state;
+    mesh m;
+    scaf_error e;
+    assert_int_equal(mesh_sample_make("icosphere", 3, &m, &e), SCAF_OK);
+    int nv = 2 * m.nv, nf = 2 * m.nf;
+    double *V = malloc(sizeof(double) * 3 * (size_t)nv);
+    int *F = malloc(sizeof(int) * 3 * (size_t)nf);
+    memcpy(V, m.V, sizeof(double) * 3 * (size_t)m.nv);
+    memcpy(F, m.F, sizeof(int) * 3 * (size_t)m.nf);
+    for (int i = 0; i < 3 * m.nv; i++) V[3 * m.nv + i] = 0.5 * m.V[i];
+    for (int f = 0; f < m.nf; f++) {
+        F[3 * (m.nf + f)] = m.nv + m.F[3 * f];
+        F[3 * (m.nf + f) + 1] = m.nv + m.F[3 * f + 2];
+        F[3 * (m.nf + f) + 2] = m.nv + m.F[3 * f + 1];
+    }
+    double lo[3], hi[3];
+    tet_box_around(nv, V, 3, lo, hi);
+    tet_box_mesh tm;
+    assert_int_equal(tet_box_mesh_build(nv, V, nf, F, lo, hi, 4, &tm, &e), SCAF_OK);
+    check_mesh(&tm, nv, V, nf, F, lo, hi);
+    assert_true(enclosed_volume(nf, F, V) < 0.9 * enclosed_volume(m.nf, m.F, m.V));
+    tet_box_mesh_free(&tm);
+    free(V);
+    free(F);
+    mesh_free(&m);
+}
+
 static void refusals(void **state)
 {
     (void)state;
@@ -199,6 +230,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(closed_samples),
+        cmocka_unit_test(nested_shells),
         cmocka_unit_test(refusals),
         cmocka_unit_test(tetgen_throw_is_an_error),
         cmocka_unit_test(shared_closed_meshes),
