@@ -188,7 +188,7 @@ scaf_status si_check(int nv, const double *V, int nf, const int *F, si_report *r
 
     /* about one cell per face; coarser while the faces would cover more
      * than 16 cells each on average */
-    double max_cells = 2.0 * nlive + 1;
+    double max_cells = fmin(2.0 * nlive + 1, (double)(1 << 28)); /* also keeps n[k] an int */
     size_t entries = 0, budget = 16 * (size_t)nlive + 1024;
     grid_size(&g, mean_extent, max_cells);
     for (;;) {
