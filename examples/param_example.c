@@ -65,7 +65,8 @@ int main(void)
         }
     }
     double e1 = scaf_param_energy(p);
-    printf("param: %d UVs, %d iterations, E %.6f -> %.6f\n", nuv, scaf_param_iterations(p), e0, e1);
+    printf("param: %d UVs, %d iterations (stop reason: %s), E %.6f -> %.6f\n", nuv, scaf_param_iterations(p),
+           scaf_stop_reason_name(scaf_param_stop_reason(p)), e0, e1);
     rc = e1 < e0 ? 0 : 1;
 done:
     scaf_param_destroy(p);

@@ -18,6 +18,7 @@
 #include "app/atlas.h"
 #include "app/atlas_output.h"
 #include "app/atlas_report.h"
+#include "app/stop_reason.h"
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
@@ -26,6 +27,10 @@
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
 #include "mesh/mesh_io.h"
+
+/* The default padding: 4 texels of a 1024 texture (0.00390625). */
+#define DEFAULT_RESOLUTION 1024.0
+#define DEFAULT_PADDING_TEXELS 4.0
 
 static void usage(FILE *o)
 {
@@ -42,14 +47,18 @@ static void usage(FILE *o)
             "before the file is written.\n"
             "Each chart must be a disk, possibly with holes.\n"
             "\n"
+            "IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
+            "gzip-compressed (.gz); an unknown extension is recognized by the content.\n"
+            "Polygons are fan-triangulated. UVs (vt) are read from OBJ only.\n"
+            "\n"
             "options:\n"
             "  -o, --output FILE        output OBJ (required)\n"
             "  --padding P              minimum distance between two charts, in units of the\n"
-            "                           unit square (default 4 texels at 1024: 0.00390625;\n"
-            "                           --padding 0: charts only never overlap)\n"
-            "  --resolution R           texture size in texels; with --padding-texels K the\n"
-            "                           padding is K / R\n"
-            "  --padding-texels K       padding in texels (needs --resolution)\n"
+            "                           unit square (default K / R below: 4 / 1024 =\n"
+            "                           0.00390625; --padding 0: charts only never overlap)\n"
+            "  --resolution R           texture size in texels (default 1024); the padding is\n"
+            "                           K / R unless --padding is given\n"
+            "  --padding-texels K       padding in texels of that texture (default 4)\n"
             "  --init NAME              tutte (default), harmonic, mvc (mean-value), or\n"
             "                           input: start from the input UVs, only when the\n"
             "                           exact checker proves them bijective\n"
@@ -57,7 +66,7 @@ static void usage(FILE *o)
             "  --compact-iterations N   cap of the compaction iterations (default 150;\n"
             "                           0 = no compaction)\n"
             "  --distortion-tolerance T stop compacting when E exceeds (1+T) times the settled\n"
-            "                           E (default 0.05)\n"
+            "                           E (default 0.05); the last layout within it is kept\n"
             "  --box-scale S            scaffold box while settling (default 3)\n"
             "  --lambda-ratio R         scaffold weight ratio (default 0.01)\n"
             "  --compact-lambda-ratio R scaffold weight ratio while compacting (default 1:\n"
@@ -76,9 +85,16 @@ static void usage(FILE *o)
             "                           sheared squares show the distortion\n"
             "  -h, --help               this text\n"
             "\n"
-            "Exit status: 0 ok, 2 usage, 3 unreadable input, 4 invalid chart (named) or\n"
-            "input UVs not bijective with --init input, 5 output not written, 6 numerical\n"
-            "failure.\n");
+            "Stopping: settling ends at the first of: --iterations done (iteration_limit);\n"
+            "E decreased by less than 1e-3 relatively in one iteration (tolerance); no\n"
+            "step lowers the energy (zero_step). Compaction (only with two or more charts)\n"
+            "ends at the first of: --compact-iterations done (iteration_limit); E above\n"
+            "the distortion tolerance (distortion_limit); the layout's side shrank by\n"
+            "less than 0.15%% over 4 iterations (packing_stalled); three iterations in a\n"
+            "row without a step (zero_step). The reason is printed at the end (stop\n"
+            "reason) and in the report (stop_reason, phase_stop_reasons).\n"
+            "\n");
+    exit_codes_print(o);
 }
 
 typedef struct progress_state {
@@ -189,24 +205,23 @@ int cmd_atlas(int argc, char **argv)
         return EXIT_USAGE;
     }
     if (cli_png_finish("atlas", &png) < 0) return EXIT_USAGE;
-    if (texels >= 0.0) {
-        if (!(resolution > 0.0)) {
-            fprintf(stderr, "scaf atlas: --padding-texels needs --resolution\n");
-            return EXIT_USAGE;
-        }
-        if (padding >= 0.0) {
-            fprintf(stderr, "scaf atlas: give either --padding or --padding-texels, not both\n");
-            return EXIT_USAGE;
-        }
+    /* The padding is --padding P, or K texels of an R-texel texture:
+     * --padding-texels K (default 4) at --resolution R (default 1024), so
+     * mip levels of a baked texture do not bleed between charts;
+     * --padding 0 asks for none. */
+    if (texels >= 0.0 && padding >= 0.0) {
+        fprintf(stderr, "scaf atlas: give either --padding or --padding-texels, not both\n");
+        return EXIT_USAGE;
+    }
+    if (padding < 0.0) {
+        if (!(resolution > 0.0)) resolution = DEFAULT_RESOLUTION;
+        if (texels < 0.0) texels = DEFAULT_PADDING_TEXELS;
         padding = texels / resolution;
         if (padding >= 0.5) {
             fprintf(stderr, "scaf atlas: padding %g texels at %g is half the square or more\n", texels, resolution);
             return EXIT_USAGE;
         }
     }
-    /* Default: 4 texels at 1024, so mip levels of a baked texture do not
-     * bleed between charts; --padding 0 asks for none. */
-    if (padding < 0.0) padding = 4.0 / 1024.0;
     opt.padding = padding;
 
     double t_start = timer_now();
@@ -262,11 +277,16 @@ int cmd_atlas(int argc, char **argv)
         goto done;
     }
     double total = timer_now() - t_start;
-    if (!quiet)
+    if (!quiet) {
         fprintf(stderr,
                 "scaf atlas: %d charts, %d+%d iterations, E %.5f, packing efficiency %.3f -> %.3f, "
                 "min chart gap %.5f, %.2f s\n",
                 a.ncharts, a.settle_done, a.compact_done, scaf_loop_energy(&a.loop), a.eff_before, eff, gap, total);
+        scaf_stop_reason why = atlas_stop_reason(&a);
+        fprintf(stderr, "scaf atlas: stop reason: %s (%s; settle: %s, compact: %s)\n", scaf_stop_reason_name(why),
+                stop_reason_explained(why), scaf_stop_reason_name(a.settle_stop),
+                scaf_stop_reason_name(a.compact_stop));
+    }
     if (svg) {
         char title[256];
         snprintf(title, sizeof title, "%s: %d charts, packing efficiency %.3f, min gap %.4f, E = %.4f", in,

@@ -56,8 +56,8 @@ static void usage(FILE *out)
             "bounding box)^2, the fraction of the square the layout fills.\n"
             "A chart whose triangles are all clockwise is reported as mirrored; it counts\n"
             "as flipped (the map does not preserve orientation), so it is not bijective.\n"
-            "Exit status: 0 bijective, 1 not bijective, 2 usage, 3 unreadable or\n"
-            "malformed file, 4 file without UVs.\n");
+            "\n");
+    exit_codes_print(out);
 }
 
 static void print_json(const char *path, const bij_report *r, double gap, double eff)

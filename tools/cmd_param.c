@@ -15,6 +15,7 @@
 
 #include "app/param.h"
 #include "app/param_report.h"
+#include "app/stop_reason.h"
 #include "app/uv_svg.h"
 #include "base/timer.h"
 #include "cli_args.h"
@@ -36,11 +37,16 @@ static void usage(FILE *o)
             "kept). Charts: the connected components of a mesh without UVs, or the pieces of\n"
             "the mesh cut along its UV seams; each must be a disk, possibly with holes.\n"
             "\n"
+            "IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
+            "gzip-compressed (.gz); an unknown extension is recognized by the content.\n"
+            "Polygons are fan-triangulated. UVs (vt) are read from OBJ only.\n"
+            "\n"
             "options:\n"
             "  -o, --output FILE      output OBJ (required)\n"
             "  --iterations N         iteration cap (default 50)\n"
-            "  --tolerance T          stop when E decreases by less than T relatively in one\n"
-            "                         iteration (default 1e-6; 0 = run all iterations)\n"
+            "  --tolerance T          stop when E, or the objective E_M + lambda E_S,\n"
+            "                         decreases by less than T relatively in one iteration\n"
+            "                         (default 1e-6; 0 = no tolerance test, see Stopping)\n"
             "  --energy NAME          symmetric-dirichlet (default), arap, conformal\n"
             "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n"
             "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
@@ -64,8 +70,14 @@ static void usage(FILE *o)
             "\n"
             "The energy E reported is sum_f A_f (|J_f|^2 + |J_f^-1|^2) / sum_f A_f over the\n"
             "mesh triangles (A_f: 3D area); 4 at an isometry.\n"
-            "Exit status: 0 ok, 2 usage, 3 unreadable input, 4 invalid mesh (closed,\n"
-            "genus, non-manifold chart...), 5 output not written, 6 numerical failure.\n");
+            "\n"
+            "Stopping: the run ends at the first of: --iterations done (iteration_limit);\n"
+            "the tolerance test above (tolerance); no step lowers the energy any more,\n"
+            "also with --tolerance 0 (zero_step: converged to floating-point precision,\n"
+            "more iterations would not change the map). The reason is printed at the end\n"
+            "(stop reason) and in the report (stop_reason).\n"
+            "\n");
+    exit_codes_print(o);
 }
 
 typedef struct progress_state {
@@ -242,9 +254,12 @@ int cmd_param(int argc, char **argv)
         goto done;
     }
     double e1 = scaf_param_energy(p);
-    if (!quiet)
+    if (!quiet) {
         fprintf(stderr, "scaf param: %d iterations, E %.6f -> %.6f, %.3f s%s\n", scaf_param_iterations(p), e0, e1,
                 timer_now() - t_start, verify ? " (bijective after every iteration: verified)" : "");
+        scaf_stop_reason why = scaf_param_stop_reason(p);
+        fprintf(stderr, "scaf param: stop reason: %s (%s)\n", scaf_stop_reason_name(why), stop_reason_explained(why));
+    }
 
     int nuv = scaf_param_uv_count(p);
     UV = malloc(sizeof(double) * 2 * (size_t)nuv);
@@ -300,7 +315,8 @@ int cmd_param(int argc, char **argv)
         }
     }
     if (report) {
-        param_report r = {in, out, &opt, m.nv, m.nf, scaf_param_chart_count(p), setup, e0, e1, "ok", ps.n, ps.it};
+        param_report r = {in, out, &opt, m.nv, m.nf, scaf_param_chart_count(p), setup, e0, e1, "ok",
+                          scaf_param_stop_reason(p), ps.n, ps.it};
         if (param_report_write(report, &r, &err) != SCAF_OK) {
             fprintf(stderr, "scaf param: %s\n", err.message);
             rc = EXIT_OUTPUT;

@@ -3,6 +3,8 @@
 #ifndef SCAF_TOOLS_EXIT_CODES_H
 #define SCAF_TOOLS_EXIT_CODES_H
 
+#include <stdio.h>
+
 #include "scaf/scaf.h"
 
 enum {
@@ -17,6 +19,50 @@ enum {
     EXIT_CANCELLED = 8,     /* interrupted */
     EXIT_INTERNAL = 70      /* a bug in scaf */
 };
+
+/* Every exit status and what it means, in one table: the help texts print
+ * it (exit_codes_print), so a code added to the enum above and here shows
+ * up in every help at once (tests/docs/test_help.py compares the enum, this
+ * list and README.md's table). */
+typedef struct exit_code_meaning {
+    int code;
+    const char *meaning;
+} exit_code_meaning;
+
+static inline const exit_code_meaning *exit_code_meanings(int *count)
+{
+    static const exit_code_meaning table[] = {
+        {EXIT_OK, "success (`scaf check`: the map is bijective)"},
+        {EXIT_NOT_BIJECTIVE, "`scaf check`: the map is not bijective"},
+        {EXIT_USAGE, "bad command line (unknown option, value out of range, missing file)"},
+        {EXIT_INPUT, "input file missing, unreadable or malformed"},
+        {EXIT_MESH, "input readable but invalid for the command (a chart that is not a disk,\n"
+                    "a degenerate face, input UVs not bijective with --init input; check: no UVs)"},
+        {EXIT_OUTPUT, "output could not be written (nothing partial is left behind)"},
+        {EXIT_NUMERIC, "numerical failure"},
+        {EXIT_NOMEM, "out of memory"},
+        {EXIT_CANCELLED, "interrupted (SIGINT, SIGTERM): nothing partial is left behind"},
+        {EXIT_INTERNAL, "internal error (a bug: please report it)"},
+    };
+    *count = (int)(sizeof table / sizeof table[0]);
+    return table;
+}
+
+/* "Exit status:" and one line per code (continuation lines indented). */
+static inline void exit_codes_print(FILE *o)
+{
+    int n;
+    const exit_code_meaning *t = exit_code_meanings(&n);
+    fputs("Exit status:\n", o);
+    for (int i = 0; i < n; i++) {
+        fprintf(o, "  %-3d ", t[i].code);
+        for (const char *c = t[i].meaning; *c; c++) {
+            fputc(*c, o);
+            if (*c == '\n') fputs("      ", o);
+        }
+        fputc('\n', o);
+    }
+}
 
 /* Map a library status to the program's exit status. Output-side I/O
  * failures are told apart by the caller (EXIT_OUTPUT). */

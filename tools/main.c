@@ -42,11 +42,10 @@ static void print_help(FILE *out)
     fprintf(out,
             "\n"
             "`scaf COMMAND --help` describes a command. `scaf --version` prints the version.\n"
-            "Exit status: 0 ok, 1 not bijective (check), 2 usage, 3 unreadable or malformed\n"
-            "input, 4 mesh invalid for the command, 5 output not written, 6 numerical\n"
-            "failure, 7 out of memory, 8 interrupted, 70 internal error.\n"
             "The sparse solver uses one BLAS thread (same results on every machine);\n"
-            "set OPENBLAS_NUM_THREADS=N to use N.\n");
+            "set OPENBLAS_NUM_THREADS=N to use N.\n"
+            "\n");
+    exit_codes_print(out);
 }
 
 /* The solver frees and reallocates its factor (hundreds of MB on big

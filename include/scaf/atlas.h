@@ -58,7 +58,8 @@ typedef struct scaf_atlas_options {
     int settle_iterations;       /* cap of the settle phase, >= 0 (30) */
     double settle_tolerance;     /* the settle phase ends below this
                                     relative decrease of E per iteration,
-                                    >= 0 (1e-3) */
+                                    >= 0; 0 disables this test (a zero
+                                    step still ends the phase) (1e-3) */
     int compact_iterations;      /* cap of the compact phase, >= 0; 0: no
                                     compaction (150) */
     double distortion_tolerance; /* the compact phase stops when E exceeds
@@ -154,6 +155,20 @@ SCAF_API scaf_status scaf_atlas_run(scaf_atlas_t *a, scaf_atlas_progress_fn prog
 SCAF_API int scaf_atlas_chart_count(const scaf_atlas_t *a);
 SCAF_API int scaf_atlas_uv_count(const scaf_atlas_t *a);
 SCAF_API int scaf_atlas_iterations(const scaf_atlas_t *a, scaf_atlas_phase phase);
+
+/* Why a phase of the last scaf_atlas_run stopped (SCAF_STOP_NONE before
+ * the run, or for a phase that did not take place: compaction with one
+ * chart or compact_iterations 0, or after a cancel or failure in the
+ * settle phase).
+ *   settle:  SCAF_STOP_ITERATIONS (settle_iterations done),
+ *            SCAF_STOP_TOLERANCE (E decreased by less than
+ *            settle_tolerance relatively in one iteration),
+ *            SCAF_STOP_ZERO_STEP, SCAF_STOP_CANCELLED, SCAF_STOP_ERROR;
+ *   compact: SCAF_STOP_ITERATIONS (compact_iterations done),
+ *            SCAF_STOP_DISTORTION, SCAF_STOP_PACKING_STALLED,
+ *            SCAF_STOP_ZERO_STEP (three iterations in a row without a
+ *            step), SCAF_STOP_CANCELLED, SCAF_STOP_ERROR. */
+SCAF_API scaf_stop_reason scaf_atlas_stop_reason(const scaf_atlas_t *a, scaf_atlas_phase phase);
 
 /* Copy the current layout out, normalized into [0,1]^2 (one scale for all
  * charts) and certified: bijective by the exact checker and every two

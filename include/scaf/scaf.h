@@ -102,7 +102,9 @@ typedef struct scaf_options {
     double tolerance;        /* stop when the relative decrease over one
                                 iteration of the reported energy E, or of
                                 the objective E_M + lambda E_S, is below
-                                this; 0 disables (1e-6) */
+                                this; 0 disables this test (a zero step
+                                still ends the run: see scaf_param_run)
+                                (1e-6) */
     double box_scale;        /* scaffold box = this times the current UV
                                 bounding box, same center; recomputed
                                 before each iteration and fixed during its
@@ -156,6 +158,32 @@ typedef struct scaf_iteration_info {
     double phase_seconds[SCAF_PHASE_COUNT]; /* split of `seconds` */
 } scaf_iteration_info_t;
 
+/* Why a run (or a phase of the atlas) stopped. Values never change
+ * meaning; new ones are only appended. */
+typedef enum scaf_stop_reason {
+    SCAF_STOP_NONE = 0,       /* not run (yet): no iteration was asked for
+                                 or the phase did not take place */
+    SCAF_STOP_ITERATIONS,     /* the iteration cap was reached */
+    SCAF_STOP_TOLERANCE,      /* the relative decrease of the energy over
+                                 one iteration fell below the tolerance */
+    SCAF_STOP_ZERO_STEP,      /* no step lowers the energy any more (the
+                                 line search accepted none): converged to
+                                 floating-point precision */
+    SCAF_STOP_CANCELLED,      /* the progress callback returned nonzero */
+    SCAF_STOP_ERROR,          /* an iteration failed (see its status) */
+    SCAF_STOP_DISTORTION,     /* atlas compaction: E exceeded (1 +
+                                 distortion_tolerance) times the settled E */
+    SCAF_STOP_PACKING_STALLED /* atlas compaction: the layout's side shrank
+                                 by less than 0.15% over the last 4
+                                 iterations */
+} scaf_stop_reason;
+
+/* A short, static name of a stop reason, one word in snake case
+ * ("iteration_limit", "tolerance", "zero_step", "cancelled", "error",
+ * "distortion_limit", "packing_stalled", "not_run"), as in the JSON
+ * reports of `scaf param` / `scaf atlas`; "unknown" for other values. */
+SCAF_API const char *scaf_stop_reason_name(scaf_stop_reason reason);
+
 /* Progress callback: called after every iteration. Return nonzero to stop
  * the run (scaf_param_run then returns SCAF_ERR_CANCELLED; the UV map of
  * the last finished iteration stays available and bijective). */
@@ -190,10 +218,25 @@ SCAF_API scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_
 SCAF_API scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F, int nf,
                                          const double *UV, int nuv, const int *FT);
 
-/* Run up to `iterations` SCAF iterations (<= 0: options.max_iterations),
- * stopping early at the tolerance. progress may be NULL. */
+/* Run up to `iterations` SCAF iterations (<= 0: options.max_iterations).
+ * It stops at the first of (scaf_param_stop_reason tells which):
+ *   - the cap: `iterations` done (SCAF_STOP_ITERATIONS);
+ *   - the tolerance (when > 0): the relative decrease over one iteration
+ *     of E, or of the objective E_M + lambda E_S, is below it
+ *     (SCAF_STOP_TOLERANCE);
+ *   - a zero step, whatever the tolerance (also 0): the line search found
+ *     no step that lowers the objective and keeps every triangle
+ *     positive; the map is a minimum to floating-point precision and
+ *     further iterations would not change it (SCAF_STOP_ZERO_STEP);
+ *   - the progress callback returns nonzero (SCAF_STOP_CANCELLED);
+ *   - an iteration fails (SCAF_STOP_ERROR, with its status).
+ * progress may be NULL. */
 SCAF_API scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_fn progress,
                                     void *user);
+
+/* Why the last scaf_param_run stopped (SCAF_STOP_NONE before any run or
+ * after scaf_param_set_mesh). */
+SCAF_API scaf_stop_reason scaf_param_stop_reason(const scaf_param_t *p);
 
 /* The current reported energy E (see scaf_iteration_info_t). */
 SCAF_API double scaf_param_energy(const scaf_param_t *p);

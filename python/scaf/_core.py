@@ -35,6 +35,12 @@ def _status_name(status):
     return s.decode() if s else "status %d" % status
 
 
+def _stop_reason_name(reason):
+    """"iteration_limit", "tolerance", "zero_step", "cancelled", ... (C's
+    scaf_stop_reason_name, so a reason added in C is named at once)."""
+    return lib.scaf_stop_reason_name(reason).decode()
+
+
 def _raise(status, message):
     cls = BY_STATUS.get(status, Error)
     raise cls(message or _status_name(status), status, _status_name(status))
@@ -226,17 +232,21 @@ class ParamResult:
     """What scaf.param returns. uv: #UV x 2 float64; ft: #F x 3 int32 (UV
     index of each corner of each input face); energy: the reported E (4 at
     an isometry with the symmetric Dirichlet energy); iterations: finished
-    iterations; chart_count: number of charts."""
+    iterations; chart_count: number of charts; stop_reason: why the run
+    stopped, "iteration_limit", "tolerance", "zero_step" (no step lowers
+    the energy any more: converged, also with tolerance 0), "cancelled",
+    "error", or "not_run" before a run."""
 
     uv: Any
     ft: Any
     energy: float
     iterations: int
     chart_count: int
+    stop_reason: str = "not_run"
 
     def __repr__(self):
-        return "<scaf.ParamResult uv %s, %d chart(s), energy %.6g after %d iteration(s)>" % (
-            _shape(self.uv), self.chart_count, self.energy, self.iterations)
+        return "<scaf.ParamResult uv %s, %d chart(s), energy %.6g after %d iteration(s), stop reason %s>" % (
+            _shape(self.uv), self.chart_count, self.energy, self.iterations, self.stop_reason)
 
 
 @dataclass(repr=False)
@@ -247,7 +257,11 @@ class AtlasResult:
     E of each chart; energy: E of all charts; efficiency: total chart UV
     area / area of the unit square; min_gap: smallest distance between two
     charts (inf with one chart); iterations: finished iterations per phase
-    {"settle": n, "compact": m}."""
+    {"settle": n, "compact": m}; stop_reasons: why each phase stopped
+    {"settle": ..., "compact": ...} ("iteration_limit", "tolerance",
+    "zero_step", "distortion_limit", "packing_stalled", "cancelled",
+    "error", "not_run" for a phase that did not take place); stop_reason:
+    the reason of the last phase that ran."""
 
     uv: Any
     ft: Any
@@ -259,11 +273,17 @@ class AtlasResult:
     min_gap: float
     padding: float
     iterations: Dict[str, int] = field(default_factory=dict)
+    stop_reasons: Dict[str, str] = field(default_factory=dict)
+
+    @property
+    def stop_reason(self):
+        compact = self.stop_reasons.get("compact", "not_run")
+        return compact if compact != "not_run" else self.stop_reasons.get("settle", "not_run")
 
     def __repr__(self):
         return ("<scaf.AtlasResult uv %s, %d chart(s), efficiency %.4f, min gap %.6g, energy %.6g, "
-                "iterations %s>" % (_shape(self.uv), self.chart_count, self.efficiency, self.min_gap,
-                                    self.energy, self.iterations))
+                "iterations %s, stop reason %s>" % (_shape(self.uv), self.chart_count, self.efficiency,
+                                                   self.min_gap, self.energy, self.iterations, self.stop_reason))
 
 
 # --- handles -------------------------------------------------------------------
@@ -397,9 +417,11 @@ class Param(_Handle):
 
     def run(self, iterations=0, progress=None):
         """Run up to `iterations` SCAF iterations (<= 0: the option
-        max_iterations), stopping early at the tolerance. progress(info:
-        IterationInfo) is called after each; a true return raises
-        Cancelled (the map of the last iteration stays available)."""
+        max_iterations), stopping early at the tolerance or at a zero step
+        (no step lowers the energy: converged, also with tolerance 0);
+        stop_reason says which. progress(info: IterationInfo) is called
+        after each; a true return raises Cancelled (the map of the last
+        iteration stays available)."""
         if isinstance(iterations, bool) or not isinstance(iterations, numbers.Integral):
             raise ValueError("iterations: expected an int, got %r" % (iterations,))
         n = max(min(int(iterations), _arrays.INT32_MAX), -1)
@@ -424,6 +446,12 @@ class Param(_Handle):
             return lib.scaf_param_iterations(h)
 
     @property
+    def stop_reason(self):
+        """Why the last run stopped (see ParamResult.stop_reason)."""
+        with self._use() as h:
+            return _stop_reason_name(lib.scaf_param_stop_reason(h))
+
+    @property
     def uv_count(self):
         with self._use() as h:
             return lib.scaf_param_uv_count(h)
@@ -441,7 +469,7 @@ class Param(_Handle):
     def result(self):
         """The current map and its numbers as a ParamResult."""
         uv, ft = self.get_uv()
-        return ParamResult(uv, ft, self.energy, self.iterations, self.chart_count)
+        return ParamResult(uv, ft, self.energy, self.iterations, self.chart_count, self.stop_reason)
 
 
 class Atlas(_Handle):
@@ -486,6 +514,14 @@ class Atlas(_Handle):
         """Finished iterations per phase: {"settle": n, "compact": m}."""
         with self._use() as h:
             return {name: lib.scaf_atlas_iterations(h, i) for i, name in enumerate(_lib.ATLAS_PHASES)}
+
+    @property
+    def stop_reasons(self):
+        """Why each phase of the run stopped: {"settle": ..., "compact": ...}
+        (see AtlasResult)."""
+        with self._use() as h:
+            return {name: _stop_reason_name(lib.scaf_atlas_stop_reason(h, i))
+                    for i, name in enumerate(_lib.ATLAS_PHASES)}
 
     @property
     def energy(self):
@@ -536,7 +572,8 @@ class Atlas(_Handle):
         """The current layout and its numbers as an AtlasResult."""
         uv, ft, chart = self.get_uv()
         return AtlasResult(uv, ft, chart, self.chart_count, self.chart_distortion(), self.energy,
-                           self.efficiency, self.min_gap, self._mesh_opts.padding, self.iterations)
+                           self.efficiency, self.min_gap, self._mesh_opts.padding, self.iterations,
+                           self.stop_reasons)
 
 
 # --- one-call functions ----------------------------------------------------------

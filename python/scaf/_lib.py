@@ -138,6 +138,7 @@ _int = ctypes.c_int
 SIGNATURES = {
     "scaf_status_name": (ctypes.c_char_p, [c_enum]),
     "scaf_version": (ctypes.c_char_p, []),
+    "scaf_stop_reason_name": (ctypes.c_char_p, [c_enum]),
     "scaf_options_default": (Options, []),
     "scaf_param_new": (_P, [ctypes.POINTER(Options)]),
     "scaf_param_set_options": (c_enum, [_P, ctypes.POINTER(Options)]),
@@ -146,6 +147,7 @@ SIGNATURES = {
     "scaf_param_energy": (ctypes.c_double, [_P]),
     "scaf_param_chart_count": (_int, [_P]),
     "scaf_param_iterations": (_int, [_P]),
+    "scaf_param_stop_reason": (c_enum, [_P]),
     "scaf_param_uv_count": (_int, [_P]),
     "scaf_param_get_uv": (c_enum, [_P, _D, _I]),
     "scaf_param_error": (ctypes.c_char_p, [_P]),
@@ -158,6 +160,7 @@ SIGNATURES = {
     "scaf_atlas_chart_count": (_int, [_P]),
     "scaf_atlas_uv_count": (_int, [_P]),
     "scaf_atlas_iterations": (_int, [_P, c_enum]),
+    "scaf_atlas_stop_reason": (c_enum, [_P, c_enum]),
     "scaf_atlas_get_uv": (c_enum, [_P, _D, _I, _I]),
     "scaf_atlas_packing_efficiency": (ctypes.c_double, [_P]),
     "scaf_atlas_min_chart_gap": (ctypes.c_double, [_P]),

@@ -294,6 +294,27 @@ class ParamTest(unittest.TestCase):
         self.assertEqual(e.result.iterations, 3)
         self.check_map(e.result, len(self.F))
 
+    def test_stop_reason(self):
+        V, F, _, _ = scaf.read_obj(gen("hemisphere", 4))
+        self.assertEqual(scaf.param(V, F, iterations=2).stop_reason, "iteration_limit")
+        self.assertEqual(scaf.param(V, F, iterations=100, tolerance=1e-2).stop_reason, "tolerance")
+        # tolerance 0 does not mean "all iterations": a converged map ends
+        # the run with a zero step, and the result says so
+        seen = []
+        r = scaf.param(V, F, iterations=1000, tolerance=0.0, progress=seen.append)
+        self.assertEqual(r.stop_reason, "zero_step")
+        self.assertLess(r.iterations, 1000)
+        self.assertEqual(seen[-1].step, 0.0)
+        self.assertIn("zero_step", repr(r))
+        with self.assertRaises(scaf.Cancelled) as cm:
+            scaf.param(V, F, iterations=10, progress=lambda info: info.iteration == 2)
+        self.assertEqual(cm.exception.result.stop_reason, "cancelled")
+        with scaf.Param() as p:
+            p.set_mesh(V, F)
+            self.assertEqual(p.stop_reason, "not_run")
+            p.run(1)
+            self.assertEqual(p.stop_reason, "iteration_limit")
+
     def test_exception_in_callback_cancels_and_is_reraised(self):
         calls = []
 
@@ -586,11 +607,22 @@ class AtlasTest(unittest.TestCase):
             scaf.atlas(self.V, self.F, self.UV, self.FT, padding=0.5)
         self.assertIn("padding", str(cm.exception))
 
+    def test_stop_reasons(self):
+        known = {"iteration_limit", "tolerance", "zero_step", "distortion_limit", "packing_stalled"}
+        self.assertEqual(set(self.r.stop_reasons), {"settle", "compact"})
+        self.assertIn(self.r.stop_reasons["settle"], known)
+        self.assertIn(self.r.stop_reasons["compact"], known)
+        self.assertEqual(self.r.stop_reason, self.r.stop_reasons["compact"])
+        r = scaf.atlas(self.V, self.F, self.UV, self.FT, settle_iterations=1, compact_iterations=0)
+        self.assertEqual(r.stop_reasons, {"settle": "iteration_limit", "compact": "not_run"})
+        self.assertEqual(r.stop_reason, "iteration_limit")
+
     def test_cancel_keeps_a_certified_layout(self):
         with self.assertRaises(scaf.Cancelled) as cm:
             scaf.atlas(self.V, self.F, self.UV, self.FT, progress=lambda i: i.iteration == 2)
         r = cm.exception.result
         self.assertEqual(r.iterations["compact"], 0)
+        self.assertEqual(r.stop_reasons, {"settle": "cancelled", "compact": "not_run"})
         self.assertTrue(all(0.0 <= x <= 1.0 for p in rows(r.uv) for x in p))
         self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
         self.assertGreaterEqual(min_chart_gap(r.uv, r.ft, rows(r.chart)), r.padding * (1 - 1e-9))

@@ -608,6 +608,11 @@ static scaf_status one_iteration(atlas *a, atlas_phase ph, atlas_progress_fn pro
     return SCAF_OK;
 }
 
+scaf_stop_reason atlas_stop_reason(const atlas *a)
+{
+    return a->compact_stop != SCAF_STOP_NONE ? a->compact_stop : a->settle_stop;
+}
+
 scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_error *err)
 {
     scaf_status st = SCAF_OK;
@@ -615,12 +620,23 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
     /* ---- phase 1: settle the distortion -------------------------------- */
     a->loop.opt = a->opt.base;
     a->loop.hooks.prepare = NULL;
+    a->settle_stop = a->opt.settle_iterations > 0 ? SCAF_STOP_ITERATIONS : SCAF_STOP_NONE;
+    a->compact_stop = SCAF_STOP_NONE;
     for (int k = 0; k < a->opt.settle_iterations; k++) {
         st = one_iteration(a, ATLAS_SETTLE, progress, user, &it, err);
-        if (st != SCAF_OK) return st;
-        if (it.info.step == 0.0) break;
+        if (st != SCAF_OK) {
+            a->settle_stop = st == SCAF_ERR_CANCELLED ? SCAF_STOP_CANCELLED : SCAF_STOP_ERROR;
+            return st;
+        }
+        if (it.info.step == 0.0) {
+            a->settle_stop = SCAF_STOP_ZERO_STEP;
+            break;
+        }
         double dec = (it.info.energy_before - it.info.energy) / it.info.energy_before;
-        if (dec >= 0.0 && dec < a->opt.settle_tolerance) break;
+        if (dec >= 0.0 && dec < a->opt.settle_tolerance) {
+            a->settle_stop = SCAF_STOP_TOLERANCE;
+            break;
+        }
     }
     a->settled_energy = scaf_loop_energy(&a->loop);
     a->eff_before = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
@@ -654,17 +670,30 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
         memcpy(best, a->loop.uv, sizeof(double) * n2);
         double best_eff = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
         double e_max = (1.0 + a->opt.distortion_tolerance) * a->settled_energy;
+        a->compact_stop = SCAF_STOP_ITERATIONS;
         for (int k = 0; k < a->opt.compact_iterations; k++) {
             st = one_iteration(a, ATLAS_COMPACT, progress, user, &it, err);
-            if (st != SCAF_OK) break;
-            if (it.info.energy > e_max) break;
+            if (st != SCAF_OK) {
+                a->compact_stop = st == SCAF_ERR_CANCELLED ? SCAF_STOP_CANCELLED : SCAF_STOP_ERROR;
+                break;
+            }
+            if (it.info.energy > e_max) {
+                a->compact_stop = SCAF_STOP_DISTORTION;
+                break;
+            }
             if (it.efficiency > best_eff) {
                 best_eff = it.efficiency;
                 memcpy(best, a->loop.uv, sizeof(double) * n2);
             }
             zero_steps = it.info.step == 0.0 ? zero_steps + 1 : 0;
-            if (zero_steps >= 3) break;
-            if (k >= win && hist[k % win] - it.side < a->opt.progress_tolerance * hist[k % win]) break;
+            if (zero_steps >= 3) {
+                a->compact_stop = SCAF_STOP_ZERO_STEP;
+                break;
+            }
+            if (k >= win && hist[k % win] - it.side < a->opt.progress_tolerance * hist[k % win]) {
+                a->compact_stop = SCAF_STOP_PACKING_STALLED;
+                break;
+            }
             hist[k % win] = it.side;
         }
         /* (a cancelled or failed run keeps its last finished iteration) */

@@ -146,6 +146,8 @@ typedef struct atlas {
                                    distortion tolerance or packed worse);
                                    the scaffold is rebuilt at the next step */
     int stiffened;              /* scaffold triangles stiffened (last iteration) */
+    scaf_stop_reason settle_stop, compact_stop; /* why each phase stopped
+                                   (SCAF_STOP_NONE: not run) */
 } atlas;
 
 typedef int (*atlas_progress_fn)(const atlas *a, const atlas_iteration *it, void *user);
@@ -157,6 +159,10 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
 /* Run both phases; progress (may be NULL) after every iteration; a
  * nonzero return stops (SCAF_ERR_CANCELLED). */
 scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_error *err);
+
+/* Why the run stopped: the compaction's reason when it ran, else the
+ * settle phase's. */
+scaf_stop_reason atlas_stop_reason(const atlas *a);
 
 /* Normalized output: UV (nw by 2) = (uv - lo) / side, in [0, 1]^2. */
 void atlas_normalized_uv(const atlas *a, double *UV);

@@ -261,6 +261,14 @@ int scaf_atlas_iterations(const scaf_atlas_t *a, scaf_atlas_phase phase)
     return 0;
 }
 
+scaf_stop_reason scaf_atlas_stop_reason(const scaf_atlas_t *a, scaf_atlas_phase phase)
+{
+    if (!a || !a->has_mesh) return SCAF_STOP_NONE;
+    if (phase == SCAF_ATLAS_SETTLE) return a->at.settle_stop;
+    if (phase == SCAF_ATLAS_COMPACT) return a->at.compact_stop;
+    return SCAF_STOP_NONE;
+}
+
 double scaf_atlas_energy(const scaf_atlas_t *a) { return a && a->has_mesh ? scaf_loop_energy(&a->at.loop) : NAN; }
 
 scaf_status scaf_atlas_get_uv(scaf_atlas_t *a, double *UV, int *FT, int *chart)

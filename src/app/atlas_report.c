@@ -56,6 +56,9 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     fprintf(o, ",\n  \"settle_iterations_run\": %d,\n  \"compact_iterations_run\": %d,\n", a->settle_done,
             a->compact_done);
     fprintf(o, "  \"compaction_kept_earlier_layout\": %s,\n", a->compact_restored ? "true" : "false");
+    fprintf(o, "  \"stop_reason\": \"%s\",\n  \"phase_stop_reasons\": {\"settle\": \"%s\", \"compact\": \"%s\"},\n",
+            scaf_stop_reason_name(atlas_stop_reason(a)), scaf_stop_reason_name(a->settle_stop),
+            scaf_stop_reason_name(a->compact_stop));
     fputs("  \"settled_energy\": ", o);
     json_write_number(o, a->settled_energy);
     fputs(",\n  \"final_energy\": ", o);

@@ -1,7 +1,8 @@
 /* app/atlas_report: the JSON report and the SVG picture of an atlas run.
  *
  * Report: one JSON object with the input/output names, options, chart
- * count, split UVs, every iteration (phase, E, total energy before/after
+ * count, split UVs, why the run stopped (stop_reason: the last phase's
+ * reason, phase_stop_reasons: each phase's), every iteration (phase, E, total energy before/after
  * the step, step, seconds, side, normalized smallest chart gap, packing
  * efficiency), packing efficiency and min_chart_gap before and after
  * compaction, the final ones of the output, and per-chart distortion.

@@ -35,6 +35,7 @@ struct scaf_param {
     int nw;          /* working vertices */
     int *Fw;         /* nf by 3 working vertex per corner */
     scaf_loop loop;
+    scaf_stop_reason stop; /* why the last run stopped */
 };
 
 scaf_options_t scaf_options_default(void)
@@ -120,6 +121,7 @@ static void drop_mesh(scaf_param_t *p)
     p->Fw = NULL;
     p->has_mesh = 0;
     p->nf = p->nw = p->ncharts = 0;
+    p->stop = SCAF_STOP_NONE;
 }
 
 void scaf_param_destroy(scaf_param_t *p)
@@ -353,19 +355,31 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
     if (!p->has_mesh) return err_set(&p->err, SCAF_ERR_USAGE, "no mesh: call scaf_param_set_mesh first");
     p->loop.opt = p->opt;
     int n = iterations > 0 ? iterations : p->opt.max_iterations;
+    p->stop = n > 0 ? SCAF_STOP_ITERATIONS : SCAF_STOP_NONE; /* unless a rule below stops it first */
     for (int it = 0; it < n; it++) {
         scaf_iteration_info_t info;
         scaf_status st = scaf_loop_step(&p->loop, &info, &p->err);
-        if (st != SCAF_OK) return st;
-        if (progress && progress(&info, user))
+        if (st != SCAF_OK) {
+            p->stop = SCAF_STOP_ERROR;
+            return st;
+        }
+        if (progress && progress(&info, user)) {
+            p->stop = SCAF_STOP_CANCELLED;
             return err_set(&p->err, SCAF_ERR_CANCELLED, "stopped by the progress callback after iteration %d",
                            info.iteration);
-        if (info.step == 0.0) break; /* no descent left */
+        }
+        if (info.step == 0.0) { /* no descent left */
+            p->stop = SCAF_STOP_ZERO_STEP;
+            break;
+        }
         /* Converged when the objective (mesh + scaffold, the energy being
          * minimized) or the reported E stops decreasing noticeably. */
         double dec = (info.energy_before - info.energy) / info.energy_before;
         double tdec = (info.total_before - info.total_after) / info.total_before;
-        if (p->opt.tolerance > 0.0 && ((dec >= 0.0 && dec < p->opt.tolerance) || tdec < p->opt.tolerance)) break;
+        if (p->opt.tolerance > 0.0 && ((dec >= 0.0 && dec < p->opt.tolerance) || tdec < p->opt.tolerance)) {
+            p->stop = SCAF_STOP_TOLERANCE;
+            break;
+        }
     }
     return SCAF_OK;
 }
@@ -373,6 +387,7 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
 double scaf_param_energy(const scaf_param_t *p) { return p && p->has_mesh ? scaf_loop_energy(&p->loop) : NAN; }
 int scaf_param_chart_count(const scaf_param_t *p) { return p ? p->ncharts : 0; }
 int scaf_param_iterations(const scaf_param_t *p) { return p && p->has_mesh ? p->loop.iterations : 0; }
+scaf_stop_reason scaf_param_stop_reason(const scaf_param_t *p) { return p ? p->stop : SCAF_STOP_NONE; }
 int scaf_param_uv_count(const scaf_param_t *p) { return p ? p->nw : 0; }
 
 scaf_status scaf_param_get_uv(const scaf_param_t *p, double *UV, int *FT)

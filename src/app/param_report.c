@@ -49,6 +49,8 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
     json_write_string(o, r->output);
     fputs(",\n  \"status\": ", o);
     json_write_string(o, r->status);
+    fputs(",\n  \"stop_reason\": ", o);
+    json_write_string(o, scaf_stop_reason_name(r->stop_reason));
     if (op) {
         fprintf(o, ",\n  \"options\": {\"energy\": \"%s\", \"init\": \"%s\", \"max_iterations\": %d, \"tolerance\": ",
                 energy_name(op->energy), op->init == SCAF_INIT_HARMONIC ? "harmonic" : op->init == SCAF_INIT_MVC ? "mvc" : "tutte", op->max_iterations);

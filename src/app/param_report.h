@@ -1,6 +1,7 @@
 /* app/param_report: the JSON report of a parametrization run.
  *
- * One JSON object: input/output names, the options, mesh sizes, initial and
+ * One JSON object: input/output names, status, why the run stopped
+ * (stop_reason: scaf_stop_reason_name), the options, mesh sizes, initial and
  * final energy, every iteration (energy, total energy before/after the
  * step, lambda, step, scaffold size, seconds and phase split), the summed
  * phase split with fractions, and the median seconds per iteration.
@@ -20,6 +21,7 @@ typedef struct param_report {
     double initial_energy;
     double final_energy;
     const char *status;                /* "ok", "cancelled", ... */
+    scaf_stop_reason stop_reason;      /* why the run stopped */
     int niterations;
     const scaf_iteration_info_t *iterations; /* niterations entries */
 } param_report;

@@ -110,7 +110,7 @@ static void report_is_json_with_phases(void **state)
     }
     it[1].lambda = NAN; /* non-finite numbers become null */
     scaf_options_t o = scaf_options_default();
-    param_report r = {"in \"quoted\".obj", "out.obj", &o, 10, 12, 1, 0.5, 7.0, 3.0, "ok", 3, it};
+    param_report r = {"in \"quoted\".obj", "out.obj", &o, 10, 12, 1, 0.5, 7.0, 3.0, "ok", SCAF_STOP_TOLERANCE, 3, it};
     char path[512];
     test_tmp_path("parts.json", path, sizeof path);
     assert_int_equal(param_report_write(path, &r, NULL), SCAF_OK);
@@ -123,6 +123,7 @@ static void report_is_json_with_phases(void **state)
     assert_non_null(strstr(s, "\"median_seconds_per_iteration\": 0.20000000000000001"));
     assert_int_equal(count(s, "\"iteration\":"), 3);
     assert_non_null(strstr(s, "\"phase_fraction\""));
+    assert_non_null(strstr(s, "\"stop_reason\": \"tolerance\""));
     assert_null(strstr(s, "nan"));
     free(s);
     assert_true(fabs(param_report_median_seconds(it, 2) - 0.15) < 1e-15);

@@ -117,7 +117,9 @@ static void cli_atlas_errors(void **state)
     assert_false(test_exists(out));
     assert_int_equal(test_run("%s atlas %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY, SCAF_TEST_TMPDIR, out), 3);
     assert_int_equal(test_run("%s atlas %s 2> /dev/null", SCAF_BINARY, in), 2);
-    assert_int_equal(test_run("%s atlas %s -o %s --padding-texels 4 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(test_run("%s atlas %s -o %s --padding 0.01 --padding-texels 4 2> /dev/null", SCAF_BINARY, in, out), 2);
+    /* 512 texels of the default resolution 1024 is half the square */
+    assert_int_equal(test_run("%s atlas %s -o %s --padding-texels 512 2> /dev/null", SCAF_BINARY, in, out), 2);
     assert_int_equal(test_run("%s atlas %s -o %s --padding 0.7 2> /dev/null", SCAF_BINARY, in, out), 2);
     assert_int_equal(test_run("%s atlas %s -o %s --init nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
     assert_int_equal(test_run("%s atlas --help > /dev/null", SCAF_BINARY), 0);
