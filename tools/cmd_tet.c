@@ -36,10 +36,8 @@ static void usage(FILE *out)
             "                     (default 3, > 1)\n"
             "  --box-cells N      squares per box side edge, 1..64 (default 8)\n"
             "  -q, --quiet        no summary on stderr\n"
-            "\n"
-            "Exit status: 0 written, 2 usage, 3 unreadable input, 4 the surface cannot\n"
-            "be meshed (open, non-manifold, self-intersecting), 5 output not written,\n"
-            "7 out of memory, 70 internal error.\n");
+            "\n");
+    exit_codes_print(out);
 }
 
 int cmd_tet(int argc, char **argv)
