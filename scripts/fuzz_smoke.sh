@@ -20,7 +20,7 @@ if ! command -v clang >/dev/null 2>&1; then
   echo "fuzz_smoke: clang not found (install clang, see scripts/setup.sh)" >&2
   exit 1
 fi
-CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSCAF_FUZZ=ON -DSCAF_TESTS=OFF \
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSCAF_FUZZ=ON -DSCAF_TESTS=OFF \
   -DSCAF_BENCH=OFF >/dev/null
 cmake --build build-fuzz -j"$jobs" >/dev/null
 targets=(build-fuzz/fuzz/fuzz_*)

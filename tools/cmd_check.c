@@ -3,13 +3,18 @@
  * Reads a mesh with UVs (OBJ `vt` + `f v/vt`) and reports, decided with
  * exact predicates (geom/bijectivity): flipped / degenerate UV triangles,
  * mirrored charts, crossing and touching UV boundary segment pairs, folds
- * and nested charts. Exit status: 0 bijective, 1 not bijective,
+ * and nested charts. A closed surface without UVs, or any surface with
+ * --3d, gets the 3D self-intersection check instead (tools/check_surface);
+ * a Medit .mesh the tet orientation check (tools/check_tets).
+ * Exit status: 0 bijective, 1 not bijective,
  * 3 unreadable or malformed file, 4 readable but without UVs, 2 usage.
  */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "check_surface.h"
+#include "check_tets.h"
 #include "commands.h"
 #include "base/json_write.h"
 #include "exit_codes.h"
@@ -21,7 +26,8 @@
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: scaf check [--json] FILE\n"
+            "usage: scaf check [--json] [--3d] FILE\n"
+            "       scaf check [--json] FILE.mesh\n"
             "\n"
             "Checks whether the UV map of FILE (.obj with vt, optionally .gz) is bijective,\n"
             "with exact arithmetic: every UV triangle counter-clockwise with nonzero area,\n"
@@ -33,6 +39,16 @@ static void usage(FILE *out)
             "           boundary_loops, boundary_crossings, boundary_touchings,\n"
             "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops,\n"
             "           corner_overlaps, bijective, min_chart_gap, packing_efficiency)\n"
+            "  --3d     check the 3D surface for self-intersections instead (exact\n"
+            "           triangle-triangle tests; the default for a closed surface without\n"
+            "           vt); exit 1 when two faces meet in more than the vertices or edge\n"
+            "           they share, or a face has zero area. JSON keys: faces, closed,\n"
+            "           manifold, degenerate_faces, intersecting_pairs, crossing_pairs,\n"
+            "           vertex_pairs, edge_pairs, duplicate_pairs, first_pairs,\n"
+            "           intersection_free\n"
+            "  FILE.mesh  a tetrahedral mesh (Medit): every tet must be positively\n"
+            "           oriented (exact orient3d); exit 1 when one is inverted or flat.\n"
+            "           JSON keys: tets, positive, inverted, degenerate, first_bad, valid\n"
             "  --help   this text\n"
             "\n"
             "min_chart_gap: the smallest distance between two different charts (triangles\n"
@@ -91,7 +107,7 @@ static void print_text(const char *path, const bij_report *r, double gap, double
 
 int cmd_check(int argc, char **argv)
 {
-    int json = 0;
+    int json = 0, surface3d = 0;
     const char *path = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -99,6 +115,8 @@ int cmd_check(int argc, char **argv)
             return EXIT_OK;
         } else if (!strcmp(argv[i], "--json")) {
             json = 1;
+        } else if (!strcmp(argv[i], "--3d") || !strcmp(argv[i], "--self-intersections")) {
+            surface3d = 1;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             fprintf(stderr, "scaf check: unknown option '%s'\n", argv[i]);
             usage(stderr);
@@ -115,6 +133,8 @@ int cmd_check(int argc, char **argv)
         return EXIT_USAGE;
     }
 
+    if (check_tets_applies(path)) return check_tets_run(path, json);
+
     mesh m;
     mesh_read_info info;
     scaf_error err;
@@ -123,6 +143,11 @@ int cmd_check(int argc, char **argv)
     if (s != SCAF_OK) {
         fprintf(stderr, "scaf check: %s\n", err.message);
         return exit_code_for(s);
+    }
+    if (surface3d || (!mesh_has_uv(&m) && check_surface_is_closed(&m))) {
+        int status = check_surface_run(path, &m, json);
+        mesh_free(&m);
+        return status;
     }
     if (!mesh_has_uv(&m)) {
         if (info.faces_without_uv > 0)
