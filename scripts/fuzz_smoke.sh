@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Bounded fuzz smoke run of every fuzz/fuzz_* target (libFuzzer, clang):
-# mesh readers, topology, CDT, and the optimizer on tiny binary meshes.
-#   FUZZ_SECONDS  total seconds over all fuzz targets (default 60)
-#   FUZZ_JOBS     cmake build parallelism (default 2)
+# mesh readers, topology, CDT, the optimizer on tiny binary meshes, and
+# the `scaf` commands' option values on meshes with extreme coordinates.
+#   FUZZ_SECONDS      total seconds over the library fuzz targets (default 60)
+#   FUZZ_CLI_SECONDS  seconds of fuzz_cli, the commands (default 15)
+#   FUZZ_JOBS         cmake build parallelism (default 2)
 # Builds build-fuzz/ with -DSCAF_FUZZ=ON, runs every fuzz/fuzz_* target on a
 # scratch copy of fuzz/corpus (so the seed corpus in git is not modified),
 # and exits non-zero if any target crashes, leaks, times out or hits an
@@ -12,16 +14,19 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${FUZZ_SECONDS:-60}"
+cli_seconds="${FUZZ_CLI_SECONDS:-15}"
 jobs="${FUZZ_JOBS:-2}"
 if ! command -v clang >/dev/null 2>&1; then
   echo "fuzz_smoke: clang not found (install clang, see scripts/setup.sh)" >&2
   exit 1
 fi
-CC=clang cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSCAF_FUZZ=ON -DSCAF_TESTS=OFF \
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSCAF_FUZZ=ON -DSCAF_TESTS=OFF \
   -DSCAF_BENCH=OFF >/dev/null
 cmake --build build-fuzz -j"$jobs" >/dev/null
 targets=(build-fuzz/fuzz/fuzz_*)
 n=${#targets[@]}
+[ -x build-fuzz/fuzz/fuzz_cli ] && n=$(( n - 1 )) # on its own budget
+[ "$n" -ge 1 ] || n=1
 per=$(( seconds / n ))
 [ "$per" -ge 1 ] || per=1
 art=build-fuzz/fuzz-artifacts
@@ -37,9 +42,17 @@ for t in "${targets[@]}"; do
   seeds=fuzz/corpus
   [ -d "fuzz/corpus_${name#fuzz_}" ] && seeds="fuzz/corpus_${name#fuzz_}"
   cp "$seeds"/* "$work"/ 2>/dev/null || true
-  echo "fuzz_smoke: $name for ${per}s"
+  time_s=$per
+  extra=()
+  if [ "$name" = fuzz_cli ]; then
+    # the commands print their messages (and --help) on stdout/stderr:
+    # closed for the target; libFuzzer and the sanitizers keep their output
+    time_s=$cli_seconds
+    extra=(-close_fd_mask=3)
+  fi
+  echo "fuzz_smoke: $name for ${time_s}s"
   if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      "$t" -max_total_time="$per" -max_len=4096 -rss_limit_mb=2048 -timeout=10 \
+      "$t" ${extra[@]+"${extra[@]}"} -max_total_time="$time_s" -max_len=4096 -rss_limit_mb=2048 -timeout=10 \
       -artifact_prefix="$art/$name-" -print_final_stats=1 -dict=fuzz/mesh.dict "$work" fuzz/regressions \
       2>build-fuzz/"$name".log; then
     echo "fuzz_smoke: $name FAILED; log: build-fuzz/$name.log, inputs in $art/" >&2

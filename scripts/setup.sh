@@ -11,6 +11,8 @@ PACKAGES=(
   libpng-dev                                        # PNG pictures
   libcmocka-dev                                     # tests
   libgmp-dev                                        # tests: exact rational reference
+  libtet1.5-dev g++                                 # TetGen (AGPL-3.0+): the initial 3D scaffold
+  tetgen                                            # tests/checks: `tetgen -d`, an independent self-intersection check
   valgrind                                          # bench: instruction counts
   python3 python3-numpy                             # the Python package and its tests
 )

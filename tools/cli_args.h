@@ -29,4 +29,14 @@ int cli_parse_double(const char *s, double *out);
         return EXIT_USAGE;                                                                     \
     } while (0)
 
+/* A value that parsed but lies outside RANGE (text such as ">= 1"): a
+ * usage error that says the allowed range. Ranges the library checks
+ * (param_options_check, atlas_options_check) are left to it, so each
+ * range is written once; this is for options only the program has. */
+#define CLI_OUT_OF_RANGE(cmd, range)                                                           \
+    do {                                                                                       \
+        fprintf(stderr, "scaf %s: %s %s is out of range: it must be %s\n", (cmd), a, v, (range)); \
+        return EXIT_USAGE;                                                                     \
+    } while (0)
+
 #endif

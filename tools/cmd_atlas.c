@@ -23,6 +23,8 @@
 #include "cli_args.h"
 #include "cli_png.h"
 #include "cli_mesh_io.h"
+#include "cli_outputs.h"
+#include "cli_signal.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -92,8 +94,8 @@ static void usage(FILE *o)
             "the distortion tolerance (distortion_limit); the layout's side shrank by\n"
             "less than 0.15%% over 4 iterations (packing_stalled); three iterations in a\n"
             "row without a step (zero_step). The reason is printed at the end (stop\n"
-            "reason) and in the report (stop_reason, phase_stop_reasons).\n"
-            "\n");
+            "reason) and in the report (stop_reason, phase_stop_reasons).\n");
+    fputs(CLI_OUTPUTS_HELP "\n", o);
     exit_codes_print(o);
 }
 
@@ -115,6 +117,8 @@ static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
         s->size = size;
     }
     s->it[s->n++] = *it;
+    cli_signal_test_point(s->n);
+    if (cli_signal_caught()) return 1; /* SIGINT / SIGTERM: stop after this iteration */
     if (s->live) {
         fprintf(stderr, "\rscaf atlas: %s %d  E = %.5f  efficiency %.3f  gap %.5f  %.3f s   ",
                 it->phase == ATLAS_COMPACT ? "compact" : "settle", it->info.iteration, it->info.energy, it->efficiency,
@@ -124,7 +128,7 @@ static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
     return 0;
 }
 
-int cmd_atlas(int argc, char **argv)
+static int atlas_main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
     int quiet = 0;
@@ -148,13 +152,16 @@ int cmd_atlas(int argc, char **argv)
             out = v;
         } else if (!strcmp(a, "--padding")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &padding) || padding < 0 || padding >= 0.5) BAD_VALUE();
+            if (!cli_parse_double(v, &padding)) BAD_VALUE();
+            if (padding < 0) CLI_OUT_OF_RANGE("atlas", "0 or in [2^-200, 0.5)");
         } else if (!strcmp(a, "--resolution")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &resolution) || resolution < 1) BAD_VALUE();
+            if (!cli_parse_double(v, &resolution)) BAD_VALUE();
+            if (!(resolution >= 1)) CLI_OUT_OF_RANGE("atlas", ">= 1 (texels)");
         } else if (!strcmp(a, "--padding-texels")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &texels) || texels < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &texels)) BAD_VALUE();
+            if (texels < 0) CLI_OUT_OF_RANGE("atlas", ">= 0");
         } else if (!strcmp(a, "--init")) {
             NEED_VALUE();
             if (!strcmp(v, "tutte")) opt.base.init = SCAF_INIT_TUTTE;
@@ -170,13 +177,13 @@ int cmd_atlas(int argc, char **argv)
             if (!cli_parse_int(v, &opt.compact_iterations)) BAD_VALUE();
         } else if (!strcmp(a, "--distortion-tolerance")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &opt.distortion_tolerance) || opt.distortion_tolerance < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.distortion_tolerance)) BAD_VALUE();
         } else if (!strcmp(a, "--box-scale")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.box_scale)) BAD_VALUE();
         } else if (!strcmp(a, "--compact-lambda-ratio")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &opt.compact_lambda_ratio) || !(opt.compact_lambda_ratio > 0)) BAD_VALUE();
+            if (!cli_parse_double(v, &opt.compact_lambda_ratio)) BAD_VALUE();
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
@@ -217,12 +224,23 @@ int cmd_atlas(int argc, char **argv)
         if (!(resolution > 0.0)) resolution = DEFAULT_RESOLUTION;
         if (texels < 0.0) texels = DEFAULT_PADDING_TEXELS;
         padding = texels / resolution;
-        if (padding >= 0.5) {
-            fprintf(stderr, "scaf atlas: padding %g texels at %g is half the square or more\n", texels, resolution);
-            return EXIT_USAGE;
-        }
     }
     opt.padding = padding;
+    /* every range, before any work (the library's own check) */
+    char msg[256];
+    if (atlas_options_check(&opt, msg, sizeof msg) != SCAF_OK) {
+        if (texels >= 0.0)
+            fprintf(stderr, "scaf atlas: %s (--padding-texels %g / --resolution %g)\n", msg, texels, resolution);
+        else
+            fprintf(stderr, "scaf atlas: %s\n", msg);
+        return EXIT_USAGE;
+    }
+    /* every output checked before any work; written all together at the end */
+    cli_outputs outs;
+    cli_uv_outputs k;
+    cli_outputs_init(&outs, "atlas", in);
+    int out_rc = cli_outputs_uv(&outs, out, svg, png.path, report, &k);
+    if (out_rc != EXIT_OK) return out_rc;
 
     double t_start = timer_now();
     mesh m;
@@ -231,6 +249,10 @@ int cmd_atlas(int argc, char **argv)
     mesh_read_info rinfo;
     int read_rc = cli_read_mesh("atlas", in, quiet, &m, &rinfo);
     if (read_rc != EXIT_OK) return read_rc;
+    if (cli_signal_report("atlas")) {
+        mesh_free(&m);
+        return EXIT_CANCELLED;
+    }
     int rc = EXIT_OK;
     atlas a;
     progress_state ps = {0};
@@ -246,8 +268,16 @@ int cmd_atlas(int argc, char **argv)
     if (!quiet && !ps.live)
         fprintf(stderr, "scaf atlas: %s: %d faces, %d chart(s)%s, padding %g\n", in, m.nf, a.ncharts,
                 a.split_uvs ? " (pinched vt split)" : "", opt.padding);
+    if (cli_signal_report("atlas")) {
+        rc = EXIT_CANCELLED;
+        goto done;
+    }
     st = atlas_run(&a, on_iteration, &ps, &err);
     if (ps.live) fputc('\n', stderr);
+    if (cli_signal_report("atlas")) {
+        rc = EXIT_CANCELLED;
+        goto done;
+    }
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf atlas: %s: %s\n", in, err.message);
         rc = exit_code_for(st);
@@ -271,13 +301,37 @@ int cmd_atlas(int argc, char **argv)
     }
     double gap = ao.gap, eff = ao.efficiency;
     mesh o = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
-    if (cli_write_uv("atlas", in, &rinfo, out, &o, &err) != SCAF_OK) {
-        fprintf(stderr, "scaf atlas: %s\n", err.message);
-        rc = EXIT_OUTPUT;
-        goto done;
+    const char *path = cli_outputs_begin(&outs, k.mesh, &err);
+    rc = cli_outputs_end(&outs, k.mesh, path ? cli_write_uv("atlas", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
+    if (rc != EXIT_OK) goto done;
+    if (svg) {
+        char title[256];
+        snprintf(title, sizeof title, "%s: %d charts, packing efficiency %.3f, min gap %.4f, E = %.4f", in,
+                 a.ncharts, eff, gap, scaf_loop_energy(&a.loop));
+        path = cli_outputs_begin(&outs, k.svg, &err);
+        st = path ? atlas_svg_write(path, &a, UV, title, &err) : SCAF_ERR_IO;
+        if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
+    }
+    if (png.path) {
+        unsigned *col = malloc(sizeof(unsigned) * (size_t)(a.nf ? a.nf : 1));
+        st = col ? SCAF_OK : err_nomem(&err, "picture colours");
+        for (int f = 0; col && f < a.nf; f++) col[f] = atlas_chart_colour(a.chart[f]);
+        if (st == SCAF_OK) {
+            path = cli_outputs_begin(&outs, k.png, &err);
+            st = path ? uv_png_write(path, a.nw, UV, a.nf, a.Fw, col, m.nv, m.V, m.F, &png.opt, &err) : SCAF_ERR_IO;
+        }
+        free(col);
+        if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
     }
     double total = timer_now() - t_start;
-    if (!quiet) {
+    if (report) {
+        atlas_report r = {in, out, &a, resolution, setup, total, gap, eff, ps.n, ps.it};
+        path = cli_outputs_begin(&outs, k.report, &err);
+        st = path ? atlas_report_write(path, &r, &err) : SCAF_ERR_IO;
+        if ((rc = cli_outputs_end(&outs, k.report, st, &err)) != EXIT_OK) goto done;
+    }
+    rc = cli_outputs_commit(&outs);
+    if (rc == EXIT_OK && !quiet) {
         fprintf(stderr,
                 "scaf atlas: %d charts, %d+%d iterations, E %.5f, packing efficiency %.3f -> %.3f, "
                 "min chart gap %.5f, %.2f s\n",
@@ -287,37 +341,14 @@ int cmd_atlas(int argc, char **argv)
                 stop_reason_explained(why), scaf_stop_reason_name(a.settle_stop),
                 scaf_stop_reason_name(a.compact_stop));
     }
-    if (svg) {
-        char title[256];
-        snprintf(title, sizeof title, "%s: %d charts, packing efficiency %.3f, min gap %.4f, E = %.4f", in,
-                 a.ncharts, eff, gap, scaf_loop_energy(&a.loop));
-        if (atlas_svg_write(svg, &a, UV, title, &err) != SCAF_OK) {
-            fprintf(stderr, "scaf atlas: %s\n", err.message);
-            rc = EXIT_OUTPUT;
-        }
-    }
-    if (png.path) {
-        unsigned *col = malloc(sizeof(unsigned) * (size_t)(a.nf ? a.nf : 1));
-        st = col ? SCAF_OK : err_nomem(&err, "picture colours");
-        for (int f = 0; col && f < a.nf; f++) col[f] = atlas_chart_colour(a.chart[f]);
-        if (st == SCAF_OK) st = uv_png_write(png.path, a.nw, UV, a.nf, a.Fw, col, m.nv, m.V, m.F, &png.opt, &err);
-        free(col);
-        if (st != SCAF_OK) {
-            fprintf(stderr, "scaf atlas: %s\n", err.message);
-            rc = st == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_OUTPUT;
-        }
-    }
-    if (report) {
-        atlas_report r = {in, out, &a, resolution, setup, total, gap, eff, ps.n, ps.it};
-        if (atlas_report_write(report, &r, &err) != SCAF_OK) {
-            fprintf(stderr, "scaf atlas: %s\n", err.message);
-            rc = EXIT_OUTPUT;
-        }
-    }
 done:
+    cli_outputs_abort(&outs);
     free(UV);
     free(ps.it);
     atlas_free(&a);
     mesh_free(&m);
     return rc;
 }
+
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_atlas(int argc, char **argv) { return cli_signal_run(atlas_main, argc, argv); }

@@ -3,24 +3,31 @@
  * Reads a mesh with UVs (OBJ `vt` + `f v/vt`) and reports, decided with
  * exact predicates (geom/bijectivity): flipped / degenerate UV triangles,
  * mirrored charts, crossing and touching UV boundary segment pairs, folds
- * and nested charts. Exit status: 0 bijective, 1 not bijective,
+ * and nested charts. A closed surface without UVs, or any surface with
+ * --3d, gets the 3D self-intersection check instead (tools/check_surface);
+ * a Medit .mesh the tet orientation check (tools/check_tets).
+ * Exit status: 0 bijective, 1 not bijective,
  * 3 unreadable or malformed file, 4 readable but without UVs, 2 usage.
  */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "check_surface.h"
+#include "check_tets.h"
 #include "commands.h"
 #include "base/json_write.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
 #include "mesh/mesh_io.h"
+#include "mesh/uv_verdict.h"
 
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: scaf check [--json] FILE\n"
+            "usage: scaf check [--json] [--3d] FILE\n"
+            "       scaf check [--json] FILE.mesh\n"
             "\n"
             "Checks whether the UV map of FILE (.obj with vt, optionally .gz) is bijective,\n"
             "with exact arithmetic: every UV triangle counter-clockwise with nonzero area,\n"
@@ -32,6 +39,16 @@ static void usage(FILE *out)
             "           boundary_loops, boundary_crossings, boundary_touchings,\n"
             "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops,\n"
             "           corner_overlaps, bijective, min_chart_gap, packing_efficiency)\n"
+            "  --3d     check the 3D surface for self-intersections instead (exact\n"
+            "           triangle-triangle tests; the default for a closed surface without\n"
+            "           vt); exit 1 when two faces meet in more than the vertices or edge\n"
+            "           they share, or a face has zero area. JSON keys: faces, closed,\n"
+            "           manifold, degenerate_faces, intersecting_pairs, crossing_pairs,\n"
+            "           vertex_pairs, edge_pairs, duplicate_pairs, first_pairs,\n"
+            "           intersection_free\n"
+            "  FILE.mesh  a tetrahedral mesh (Medit): every tet must be positively\n"
+            "           oriented (exact orient3d); exit 1 when one is inverted or flat.\n"
+            "           JSON keys: tets, positive, inverted, degenerate, first_bad, valid\n"
             "  --help   this text\n"
             "\n"
             "min_chart_gap: the smallest distance between two different charts (triangles\n"
@@ -57,11 +74,11 @@ static void print_json(const char *path, const bij_report *r, double gap, double
            r->mixed_charts, r->boundary_edges, r->boundary_loops, r->boundary_crossings,
            r->boundary_touchings, r->boundary_foldbacks, r->folded_edges, r->nonmanifold_edges, r->nested_loops,
            r->corner_overlaps, r->bijective ? "true" : "false");
-    if (isfinite(gap))
-        printf("\"min_chart_gap\": %.17g, ", gap);
-    else
-        printf("\"min_chart_gap\": null, ");
-    printf("\"packing_efficiency\": %.17g}\n", eff);
+    printf("\"min_chart_gap\": ");
+    json_write_number(stdout, gap);
+    printf(", \"packing_efficiency\": ");
+    json_write_number(stdout, eff);
+    printf("}\n");
 }
 
 static void print_text(const char *path, const bij_report *r, double gap, double eff)
@@ -81,13 +98,16 @@ static void print_text(const char *path, const bij_report *r, double gap, double
     printf("  non-manifold edges   %d\n", r->nonmanifold_edges);
     printf("  nested loops         %d\n", r->nested_loops);
     printf("  corner overlaps      %d\n", r->corner_overlaps);
-    printf("  min chart gap        %.6g\n", gap);
+    if (isfinite(gap))
+        printf("  min chart gap        %.6g\n", gap);
+    else
+        printf("  min chart gap        none (fewer than two charts)\n");
     printf("  packing efficiency   %.4f\n", eff);
 }
 
 int cmd_check(int argc, char **argv)
 {
-    int json = 0;
+    int json = 0, surface3d = 0;
     const char *path = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -95,6 +115,8 @@ int cmd_check(int argc, char **argv)
             return EXIT_OK;
         } else if (!strcmp(argv[i], "--json")) {
             json = 1;
+        } else if (!strcmp(argv[i], "--3d") || !strcmp(argv[i], "--self-intersections")) {
+            surface3d = 1;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             fprintf(stderr, "scaf check: unknown option '%s'\n", argv[i]);
             usage(stderr);
@@ -111,6 +133,8 @@ int cmd_check(int argc, char **argv)
         return EXIT_USAGE;
     }
 
+    if (check_tets_applies(path)) return check_tets_run(path, json);
+
     mesh m;
     mesh_read_info info;
     scaf_error err;
@@ -119,6 +143,11 @@ int cmd_check(int argc, char **argv)
     if (s != SCAF_OK) {
         fprintf(stderr, "scaf check: %s\n", err.message);
         return exit_code_for(s);
+    }
+    if (surface3d || (!mesh_has_uv(&m) && check_surface_is_closed(&m))) {
+        int status = check_surface_run(path, &m, json);
+        mesh_free(&m);
+        return status;
     }
     if (!mesh_has_uv(&m)) {
         if (info.faces_without_uv > 0)
@@ -130,7 +159,7 @@ int cmd_check(int argc, char **argv)
         return EXIT_MESH;
     }
     bij_report r;
-    s = bij_check(m.nuv, m.UV, m.nf, m.FT, NULL, NULL, &r, &err);
+    s = mesh_uv_verdict(&m, &r, &err); /* the verdict scaf atlas --init input quotes */
     double gap = INFINITY, eff = 0.0;
     if (s == SCAF_OK) s = chart_gap_min(m.nuv, m.UV, m.nf, m.FT, NULL, 0.0, &gap, NULL, &err);
     if (s == SCAF_OK) eff = chart_packing_efficiency(m.nuv, m.UV, m.nf, m.FT);

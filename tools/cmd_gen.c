@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli_outputs.h"
+#include "cli_signal.h"
 #include "commands.h"
 #include "exit_codes.h"
 #include "mesh/mesh_io.h"
@@ -38,14 +40,16 @@ static void usage(FILE *out)
             "has UVs). Deterministic: the same NAME and N give the same file.\n"
             "\n"
             "options:\n"
-            "  -o, --output FILE  where to write (required); nothing is left on failure\n"
+            "  -o, --output FILE  where to write: .obj, or .obj.gz gzip-compressed, or - for\n"
+            "                     the standard output (required); nothing is left on failure\n"
             "  -s, --size N       resolution (see the list; default per sample)\n"
             "  -l, --list         list the samples and their sizes\n"
             "  -h, --help         this help\n"
             "\n"
             "samples:\n");
     list_samples(out);
-    fprintf(out, "\nExit status: 0 written, 2 usage, 5 output not written, 7 out of memory.\n");
+    fprintf(out, "\nExit status: 0 written, 2 usage, 5 output not written, 7 out of memory,\n"
+                 "8 interrupted (nothing written).\n");
 }
 
 /* Strict decimal int in [1, INT_MAX]; -1 if not one. */
@@ -58,7 +62,7 @@ static int parse_size(const char *s)
     return (int)v;
 }
 
-int cmd_gen(int argc, char **argv)
+static int gen_main(int argc, char **argv)
 {
     const char *name = NULL, *out = NULL;
     int size = 0;
@@ -101,6 +105,11 @@ int cmd_gen(int argc, char **argv)
         return EXIT_USAGE;
     }
 
+    cli_outputs outs;
+    cli_outputs_init(&outs, "gen", NULL);
+    int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
+    int rc = cli_outputs_check(&outs);
+    if (rc != EXIT_OK) return rc;
     mesh m;
     scaf_error err;
     err_clear(&err);
@@ -109,11 +118,13 @@ int cmd_gen(int argc, char **argv)
         fprintf(stderr, "scaf gen: %s\n", err.message);
         return exit_code_for(st);
     }
-    st = mesh_write_obj(out, &m, &err);
+    const char *path = cli_outputs_begin(&outs, k, &err);
+    rc = cli_outputs_end(&outs, k, path ? mesh_write_obj(path, &m, &err) : SCAF_ERR_IO, &err);
     mesh_free(&m);
-    if (st) {
-        fprintf(stderr, "scaf gen: %s\n", err.message);
-        return st == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_OUTPUT;
-    }
-    return EXIT_OK;
+    if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
+    cli_outputs_abort(&outs);
+    return rc;
 }
+
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_gen(int argc, char **argv) { return cli_signal_run(gen_main, argc, argv); }

@@ -21,6 +21,8 @@
 #include "cli_args.h"
 #include "cli_png.h"
 #include "cli_mesh_io.h"
+#include "cli_outputs.h"
+#include "cli_signal.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
@@ -74,8 +76,8 @@ static void usage(FILE *o)
             "the tolerance test above (tolerance); no step lowers the energy any more,\n"
             "also with --tolerance 0 (zero_step: converged to floating-point precision,\n"
             "more iterations would not change the map). The reason is printed at the end\n"
-            "(stop reason) and in the report (stop_reason).\n"
-            "\n");
+            "(stop reason) and in the report (stop_reason).\n");
+    fputs(CLI_OUTPUTS_HELP "\n", o);
     exit_codes_print(o);
 }
 
@@ -104,6 +106,8 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
         s->size = size;
     }
     s->it[s->n++] = *info;
+    cli_signal_test_point(info->iteration);
+    if (cli_signal_caught()) return 1; /* SIGINT / SIGTERM: stop after this iteration */
     if (s->verify) {
         param_map pm;
         param_working_map(s->p, &pm);
@@ -157,7 +161,7 @@ static int parse_args(int argc, char **argv, param_args *o)
             if (!cli_parse_int(v, &o->opt.max_iterations)) BAD_VALUE();
         } else if (!strcmp(a, "--tolerance")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &o->opt.tolerance) || o->opt.tolerance < 0) BAD_VALUE();
+            if (!cli_parse_double(v, &o->opt.tolerance)) BAD_VALUE();
         } else if (!strcmp(a, "--energy")) {
             NEED_VALUE();
             if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd")) o->opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
@@ -216,7 +220,7 @@ static int parse_args(int argc, char **argv, param_args *o)
     return PARSED_RUN;
 }
 
-int cmd_param(int argc, char **argv)
+static int param_main(int argc, char **argv)
 {
     param_args args;
     int parsed = parse_args(argc, argv, &args);
@@ -225,6 +229,12 @@ int cmd_param(int argc, char **argv)
     int quiet = args.quiet, svg_scaffold = args.svg_scaffold, verify = args.verify;
     scaf_options_t opt = args.opt;
     cli_png png = args.png;
+    /* every output checked before any work; written all together at the end */
+    cli_outputs outs;
+    cli_uv_outputs k;
+    cli_outputs_init(&outs, "param", in);
+    int out_rc = cli_outputs_uv(&outs, out, svg, png.path, report, &k);
+    if (out_rc != EXIT_OK) return out_rc;
 
     if (opt.energy == SCAF_ENERGY_ARAP && !quiet)
         fprintf(stderr, "scaf param: warning: ARAP is not a barrier energy: triangles pushed towards "
@@ -237,6 +247,10 @@ int cmd_param(int argc, char **argv)
     mesh_read_info rinfo;
     int read_rc = cli_read_mesh("param", in, quiet, &m, &rinfo);
     if (read_rc != EXIT_OK) return read_rc;
+    if (cli_signal_report("param")) {
+        mesh_free(&m);
+        return EXIT_CANCELLED;
+    }
     int rc = EXIT_OK;
     scaf_param_t *p = scaf_param_new(&opt);
     progress_state ps = {0};
@@ -262,8 +276,16 @@ int cmd_param(int argc, char **argv)
     ps.cap = opt.max_iterations;
     if (!quiet && !ps.live)
         fprintf(stderr, "scaf param: %s: %d faces, %d chart(s), initial E = %.6f\n", in, m.nf, scaf_param_chart_count(p), e0);
+    if (cli_signal_report("param")) {
+        rc = EXIT_CANCELLED;
+        goto done;
+    }
     st = scaf_param_run(p, opt.max_iterations, on_iteration, &ps);
     if (ps.live) fputc('\n', stderr);
+    if (cli_signal_report("param")) {
+        rc = EXIT_CANCELLED;
+        goto done;
+    }
     if (ps.not_bijective) {
         fprintf(stderr, "scaf param: %s: BUG: the map is not bijective after iteration %d (please report)\n", in,
                 ps.not_bijective);
@@ -291,13 +313,15 @@ int cmd_param(int argc, char **argv)
         rc = EXIT_NOMEM;
         goto done;
     }
-    scaf_param_get_uv(p, UV, FT);
-    mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
-    if (cli_write_uv("param", in, &rinfo, out, &o, &err) != SCAF_OK) {
-        fprintf(stderr, "scaf param: %s\n", err.message);
-        rc = EXIT_OUTPUT;
+    if (scaf_param_get_uv(p, UV, FT) != SCAF_OK) {
+        fprintf(stderr, "scaf param: %s: %s\n", in, scaf_param_error(p));
+        rc = EXIT_NUMERIC;
         goto done;
     }
+    mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
+    const char *path = cli_outputs_begin(&outs, k.mesh, &err);
+    rc = cli_outputs_end(&outs, k.mesh, path ? cli_write_uv("param", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
+    if (rc != EXIT_OK) goto done;
     if (svg) {
         param_map pm;
         param_working_map(p, &pm);
@@ -314,12 +338,10 @@ int cmd_param(int argc, char **argv)
         char title[256];
         snprintf(title, sizeof title, "%s: E = %.5f after %d iterations (4 = isometry)", in, e1, scaf_param_iterations(p));
         /* Working vertex ids are the UV ids: draw with the loop's faces. */
-        st = uv_svg_write(svg, pm.nuv, pm.uv, pm.nf, pm.FT, E, ss.ntri ? &ss : NULL, title, &err);
+        path = cli_outputs_begin(&outs, k.svg, &err);
+        st = path ? uv_svg_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, E, ss.ntri ? &ss : NULL, title, &err) : SCAF_ERR_IO;
         free(E);
-        if (st != SCAF_OK) {
-            fprintf(stderr, "scaf param: %s\n", err.message);
-            rc = EXIT_OUTPUT;
-        }
+        if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
     }
     if (png.path) {
         /* same colours as the SVG; the loop's first nf faces are the mesh's, in order */
@@ -331,24 +353,24 @@ int cmd_param(int argc, char **argv)
         if (st == SCAF_OK) {
             param_face_energy(p, E);
             for (int f = 0; f < pm.nf; f++) col[f] = uv_svg_colour(E[f]);
-            st = uv_png_write(png.path, pm.nuv, pm.uv, pm.nf, pm.FT, col, m.nv, m.V, m.F, &png.opt, &err);
+            path = cli_outputs_begin(&outs, k.png, &err);
+            st = path ? uv_png_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, col, m.nv, m.V, m.F, &png.opt, &err)
+                      : SCAF_ERR_IO;
         }
         free(E);
         free(col);
-        if (st != SCAF_OK) {
-            fprintf(stderr, "scaf param: %s\n", err.message);
-            rc = st == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_OUTPUT;
-        }
+        if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
     }
     if (report) {
         param_report r = {in, out, &opt, m.nv, m.nf, scaf_param_chart_count(p), setup, e0, e1, "ok",
                           scaf_param_stop_reason(p), ps.n, ps.it};
-        if (param_report_write(report, &r, &err) != SCAF_OK) {
-            fprintf(stderr, "scaf param: %s\n", err.message);
-            rc = EXIT_OUTPUT;
-        }
+        path = cli_outputs_begin(&outs, k.report, &err);
+        st = path ? param_report_write(path, &r, &err) : SCAF_ERR_IO;
+        if ((rc = cli_outputs_end(&outs, k.report, st, &err)) != EXIT_OK) goto done;
     }
+    rc = cli_outputs_commit(&outs);
 done:
+    cli_outputs_abort(&outs);
     free(UV);
     free(FT);
     free(ps.it);
@@ -356,3 +378,6 @@ done:
     mesh_free(&m);
     return rc;
 }
+
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_param(int argc, char **argv) { return cli_signal_run(param_main, argc, argv); }

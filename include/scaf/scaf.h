@@ -214,7 +214,8 @@ SCAF_API scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_
  *       touching itself at a vertex), each fan gets its own output UV. 
  * Fails with SCAF_ERR_MESH naming the chart and the reason when a chart is
  * closed, has genus, is non-manifold or non-orientable, or has a
- * degenerate triangle; SCAF_ERR_USAGE on out-of-range indices. */
+ * degenerate triangle (exactly zero area, the test `scaf info` counts);
+ * SCAF_ERR_USAGE on out-of-range indices. */
 SCAF_API scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F, int nf,
                                          const double *UV, int nuv, const int *FT);
 
@@ -249,8 +250,13 @@ SCAF_API int scaf_param_iterations(const scaf_param_t *p);
 SCAF_API int scaf_param_uv_count(const scaf_param_t *p);
 
 /* Copy the current map out:
- *   UV  #UV by 2 (#UV = scaf_param_uv_count)
- *   FT  #F by 3 UV index per corner of each input triangle (may be NULL) */
+ *   UV  #UV by 2 (#UV = scaf_param_uv_count), in the units of V: the
+ *       optimizer works on V divided by a power of two (exact), so V scaled
+ *       by 2^k gives these UVs scaled by exactly 2^k
+ *   FT  #F by 3 UV index per corner of each input triangle (may be NULL)
+ * SCAF_ERR_NUMERIC (UV still filled) when a coordinate cannot be written
+ * exactly in V's units (it would overflow or fall into the subnormal
+ * range: meshes near 1e300 or 1e-300). */
 SCAF_API scaf_status scaf_param_get_uv(const scaf_param_t *p, double *UV, int *FT);
 
 /* The message of the last failure ("" when none). Valid until the next

@@ -9,7 +9,9 @@
  */
 #include "app/atlas.h"
 
+#include <limits.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -18,7 +20,9 @@
 #include "app/uv_fans.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
+#include "geom/coord_scale.h"
 #include "geom/predicates.h"
+#include "mesh/uv_verdict.h"
 #include "opt/flip_free_step.h"
 
 /* Margin on the padding so rounding in the final normalization cannot
@@ -285,18 +289,56 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
 
 /* ---- setup -------------------------------------------------------------------- */
 
-/* The compaction knobs are in range (NaN is not). */
-static int compaction_options_valid(const atlas_options *o)
+/* x[i] *= 2^s for all i; the first i where that rounds (leaves the normal
+ * range), or -1 when every product is exact. */
+static int scale_exactly(double *x, size_t n, int s)
 {
-    return o->compact_lambda_ratio > 0.0 && o->compact_rest_scale > 0.0 && o->compact_rest_scale <= 1.0 &&
-           o->compact_box_scale >= 1.0 && o->compact_fraction > 0.0 && o->compact_fraction < 1.0;
+    int bad = -1;
+    for (size_t i = 0; i < n; i++) {
+        double y = ldexp(x[i], s);
+        if (bad < 0 && ldexp(y, -s) != x[i]) bad = (int)(i > INT_MAX ? INT_MAX : i);
+        x[i] = y;
+    }
+    return bad;
 }
 
-/* The raster packer's knobs are in range (NaN is not). */
-static int packing_options_valid(const atlas_options *o)
+static int finite_at_least(double x, double lo) { return isfinite(x) && x >= lo; }
+
+scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
 {
-    return o->pack_gap_factor >= 1.0 && o->pack_cells >= 16 && o->pack_cells <= 8192 && o->pack_picks >= 1 &&
-           o->pack_picks <= 16;
+    if (param_options_check(&o->base, msg, size) != SCAF_OK) return SCAF_ERR_USAGE;
+    const char *bad = NULL;
+    if (o->init_input != 0 && o->init_input != 1) bad = "init_input must be 0 or 1";
+    else if (o->settle_iterations < 0) bad = "settle_iterations must be >= 0";
+    else if (!finite_at_least(o->settle_tolerance, 0.0)) bad = "settle_tolerance must be a finite number >= 0";
+    else if (o->compact_iterations < 0) bad = "compact_iterations must be >= 0";
+    else if (!finite_at_least(o->distortion_tolerance, 0.0))
+        bad = "distortion_tolerance must be a finite number >= 0";
+    else if (o->repack != 0 && o->repack != 1) bad = "repack must be 0 or 1";
+    else if (o->pack_cells < 16 || o->pack_cells > 8192) bad = "pack_cells must be in [16, 8192]";
+    else if (!(o->compact_lambda_ratio > 0.0) || !isfinite(o->compact_lambda_ratio))
+        bad = "compact_lambda_ratio must be a finite number > 0";
+    else if (!(o->pack_gap_factor >= 1.0) || !isfinite(o->pack_gap_factor))
+        bad = "pack_gap_factor must be a finite number >= 1";
+    else if (!(o->compact_rest_scale > 0.0) || !(o->compact_rest_scale <= 1.0))
+        bad = "compact_rest_scale must be in (0, 1]";
+    else if (!(o->compact_box_scale >= 1.0) || !(o->compact_box_scale <= 1e6))
+        bad = "compact_box_scale must be in [1, 1e6]";
+    else if (!(o->compact_fraction > 0.0) || !(o->compact_fraction < 1.0)) bad = "compact_fraction must be in (0, 1)";
+    else if (o->pack_picks < 1 || o->pack_picks > 16) bad = "pack_picks must be in [1, 16]";
+    else if (!finite_at_least(o->progress_tolerance, 0.0)) bad = "progress_tolerance must be a finite number >= 0";
+    else if (o->progress_window < 1 || o->progress_window > 64) bad = "progress_window must be in [1, 64]";
+    /* the output's padding is certified exactly (geom/chart_gap), which
+     * takes paddings of at least 2^-200 */
+    else if (!(o->padding == 0.0 || (o->padding >= CHART_GAP_EXACT_MIN && o->padding < 0.5))) {
+        if (msg && size)
+            snprintf(msg, size, "padding %g must be 0 or in [2^-200, 0.5) ([%.17g, 0.5))", o->padding,
+                     CHART_GAP_EXACT_MIN);
+        return SCAF_ERR_USAGE;
+    }
+    if (!bad) return SCAF_OK;
+    if (msg && size) snprintf(msg, size, "%s", bad);
+    return SCAF_ERR_USAGE;
 }
 
 scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_error *err)
@@ -305,16 +347,22 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     a->opt = o ? *o : atlas_options_default();
     scaf_status st = SCAF_OK;
     char msg[256];
-    if (param_options_check(&a->opt.base, msg, sizeof msg) != SCAF_OK)
-        return err_set(err, SCAF_ERR_USAGE, "%s", msg);
-    if (!compaction_options_valid(&a->opt) || !packing_options_valid(&a->opt))
-        return err_set(err, SCAF_ERR_USAGE, "invalid atlas option (pack_gap_factor >= 1, compact_lambda_ratio > 0, "
-                                            "compact_rest_scale in (0, 1], compact_box_scale >= 1, "
-                                            "compact_fraction in (0, 1), pack_cells in [16, 8192], pack_picks in [1, 16])");
-    if (!(a->opt.padding >= 0.0) || !(a->opt.padding < 0.5))
-        return err_set(err, SCAF_ERR_USAGE, "padding %g must be in [0, 0.5)", a->opt.padding);
+    if (atlas_options_check(&a->opt, msg, sizeof msg) != SCAF_OK) return err_set(err, SCAF_ERR_USAGE, "%s", msg);
     if (a->opt.init_input && !mesh_has_uv(m))
         return err_set(err, SCAF_ERR_USAGE, "--init input: the mesh has no UVs (vt) to start from");
+    if (a->opt.init_input) {
+        /* the verdict of `scaf check` on the same data, with its counts */
+        bij_report r;
+        st = mesh_uv_verdict(m, &r, err);
+        if (st != SCAF_OK) return st;
+        if (!r.bijective) {
+            char defects[320];
+            bij_report_defects(&r, defects, sizeof defects);
+            return err_set(err, SCAF_ERR_MESH,
+                           "--init input: the input UVs are not bijective (as scaf check reports: %s); "
+                           "use the default start (Tutte on circles)", defects);
+        }
+    }
     int *FT2 = NULL, *map = NULL, nuv2 = 0;
     double *UV2 = NULL, *W3 = NULL, *uv0 = NULL;
     scaf_param_t *p = NULL;
@@ -358,10 +406,17 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         st = err_nomem(err, "atlas");
         goto done;
     }
-    scaf_param_get_uv(p, uv0, a->Fw);
+    /* the start and the positions in param's units (geom/coord_scale):
+     * the atlas is normalized into the unit square, so these units never
+     * show, and the result does not depend on the input's units */
+    const scaf_loop *L = param_loop(p);
+    memcpy(uv0, L->uv, sizeof(double) * 2 * (size_t)a->nw);
+    memcpy(a->Fw, L->F, sizeof(int) * 3 * (size_t)a->nf);
+    int e = coord_scale_exponent(m->V, 3, 3 * (size_t)m->nf, m->F);
     for (int f = 0; f < a->nf; f++)
         for (int j = 0; j < 3; j++)
-            memcpy(W3 + 3 * (size_t)a->Fw[3 * f + j], m->V + 3 * (size_t)m->F[3 * f + j], sizeof(double) * 3);
+            for (int k = 0; k < 3; k++)
+                W3[3 * (size_t)a->Fw[3 * f + j] + k] = ldexp(m->V[3 * (size_t)m->F[3 * f + j] + k], -e);
     int nc = 0;
     st = chart_gap_labels(a->nw, a->nf, a->Fw, a->chart, &nc, err);
     if (st != SCAF_OK) goto done;
@@ -380,24 +435,32 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         for (int f = 0; f < a->nf; f++)
             for (int j = 0; j < 3; j++)
                 memcpy(uv0 + 2 * (size_t)a->Fw[3 * f + j], UV2 + 2 * (size_t)FT2[3 * f + j], sizeof(double) * 2);
+        /* The input is bijective (checked above); split pinch points are
+         * distinct indices at one point now, which the scaffold cannot
+         * separate: say so rather than quote other counts. */
         bij_report r;
         st = bij_check(a->nw, uv0, a->nf, a->Fw, a->chart, NULL, &r, err);
         if (st != SCAF_OK) goto done;
         if (!r.bijective) {
+            char defects[320];
+            bij_report_defects(&r, defects, sizeof defects);
             st = err_set(err, SCAF_ERR_MESH,
-                         "--init input: the input UVs are not bijective (%d flipped, %d degenerate triangles, "
-                         "%d mirrored charts, %lld boundary crossings, %lld touchings, %d nested loops); "
-                         "use the default start (Tutte on circles)",
-                         r.flipped, r.degenerate, r.mirrored_charts, r.boundary_crossings, r.boundary_touchings,
-                         r.nested_loops);
+                         "--init input: the input UVs are bijective, but with its %d pinch point(s) (a vt where a "
+                         "chart touches itself) split into one UV per fan they are not (%s): the optimizer cannot "
+                         "start there; use the default start (Tutte on circles)",
+                         a->split_uvs, defects);
             goto done;
         }
         /* Bring the input to the surface's scale (distortion is measured
-         * against 3D lengths) with a power of two: exact in floating
-         * point, so every orientation and non-overlap the checker proved
-         * still holds. */
+         * against 3D lengths) with powers of two: first to its own unit
+         * scale (largest coordinate in [1, 2), geom/coord_scale), so its
+         * area neither overflows nor underflows whatever its units, then
+         * to the surface's area. Exact in floating point (checked), so
+         * every orientation and non-overlap the checker proved still
+         * holds. */
+        int eu = -coord_scale_exponent(uv0, 2, 3 * (size_t)a->nf, a->Fw), bad = scale_exactly(uv0, 2 * (size_t)a->nw, eu);
         double a3 = 0.0, a2 = 0.0;
-        for (int f = 0; f < a->nf; f++) {
+        for (int f = 0; f < a->nf && bad < 0; f++) {
             const int *t = a->Fw + 3 * f;
             const double *p0 = W3 + 3 * (size_t)t[0], *p1 = W3 + 3 * (size_t)t[1], *p2 = W3 + 3 * (size_t)t[2];
             double u[3], w[3];
@@ -410,11 +473,17 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
             const double *q0 = uv0 + 2 * (size_t)t[0], *q1 = uv0 + 2 * (size_t)t[1], *q2 = uv0 + 2 * (size_t)t[2];
             a2 += 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
         }
-        if (a3 > 0.0 && a2 > 0.0) {
-            int e = (int)lround(0.5 * log2(a3 / a2));
-            if (e > 200) e = 200;
-            if (e < -200) e = -200;
-            for (int i = 0; i < 2 * a->nw; i++) uv0[i] = ldexp(uv0[i], e);
+        if (bad < 0 && a3 > 0.0 && a2 > 0.0) {
+            int es = (int)lround(0.5 * log2(a3 / a2));
+            if (es > 200) es = 200;
+            if (es < -200) es = -200;
+            bad = scale_exactly(uv0, 2 * (size_t)a->nw, es);
+        }
+        if (bad >= 0) {
+            st = err_set(err, SCAF_ERR_MESH,
+                         "--init input: the input UVs span too many orders of magnitude to be brought to the "
+                         "surface's scale exactly (UV coordinate %d would round); use the default start", bad);
+            goto done;
         }
     }
 

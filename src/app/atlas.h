@@ -152,6 +152,13 @@ typedef struct atlas {
 
 typedef int (*atlas_progress_fn)(const atlas *a, const atlas_iteration *it, void *user);
 
+/* SCAF_OK, or SCAF_ERR_USAGE with msg (size bytes, may be NULL) saying
+ * which option is out of which range: the loop options (app/param's
+ * check), the atlas knobs, and the padding (0 or in [2^-200, 0.5), the
+ * range the exact certificate of the output takes). atlas_init runs it;
+ * callers run it before reading a mesh to refuse bad options up front. */
+scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size);
+
 /* Set up from a mesh (UVs used for the charts' seams, and as the start
  * with init_input). On failure *a is empty and err says why. */
 scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_error *err);

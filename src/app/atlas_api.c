@@ -78,32 +78,13 @@ static atlas_options to_internal(const scaf_atlas_options_t *o)
     return in;
 }
 
-static int finite_at_least(double x, double lo) { return isfinite(x) && x >= lo; }
-
-/* SCAF_OK, or SCAF_ERR_USAGE naming the first invalid field. */
+/* SCAF_OK, or SCAF_ERR_USAGE naming the first invalid field (the internal
+ * check, app/atlas: one set of ranges for the API and the program). */
 static scaf_status options_check(const scaf_atlas_options_t *o, scaf_error *err)
 {
-    const char *bad = NULL;
-    if (!(o->padding >= 0.0 && o->padding < 0.5)) bad = "padding must be in [0, 0.5)";
-    else if ((int)o->energy < 0 || o->energy > SCAF_ENERGY_CONFORMAL) bad = "energy is not a known energy";
-    else if ((int)o->init < 0 || o->init > SCAF_INIT_MVC) bad = "init is not tutte, harmonic or mvc";
-    else if (o->init_input != 0 && o->init_input != 1) bad = "init_input must be 0 or 1";
-    else if (o->settle_iterations < 0) bad = "settle_iterations must be >= 0";
-    else if (!finite_at_least(o->settle_tolerance, 0.0)) bad = "settle_tolerance must be a finite number >= 0";
-    else if (o->compact_iterations < 0) bad = "compact_iterations must be >= 0";
-    else if (!finite_at_least(o->distortion_tolerance, 0.0))
-        bad = "distortion_tolerance must be a finite number >= 0";
-    else if (o->repack != 0 && o->repack != 1) bad = "repack must be 0 or 1";
-    else if (o->pack_cells < 16 || o->pack_cells > 8192) bad = "pack_cells must be in [16, 8192]";
-    else if (!(o->box_scale >= 1.0 && o->box_scale <= 1e6)) bad = "box_scale must be in [1, 1e6]";
-    else if (!(o->lambda_ratio > 0.0) || !isfinite(o->lambda_ratio)) bad = "lambda_ratio must be a finite number > 0";
-    else if (!(o->compact_lambda_ratio > 0.0) || !isfinite(o->compact_lambda_ratio))
-        bad = "compact_lambda_ratio must be a finite number > 0";
-    if (bad) return err_set(err, SCAF_ERR_USAGE, "invalid atlas option: %s", bad);
-    /* the loop's own rules on the fields it shares */
     atlas_options in = to_internal(o);
     char msg[256];
-    if (param_options_check(&in.base, msg, sizeof msg) != SCAF_OK)
+    if (atlas_options_check(&in, msg, sizeof msg) != SCAF_OK)
         return err_set(err, SCAF_ERR_USAGE, "invalid atlas option: %s", msg);
     return SCAF_OK;
 }

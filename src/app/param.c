@@ -11,13 +11,17 @@
 #include "app/param.h"
 #include "app/uv_fans.h"
 
+#include <float.h>
 #include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "mesh/degenerate.h"
 #include "mesh/mesh.h"
+#include "geom/coord_scale.h"
 #include "mesh/uv_charts.h"
 #include "opt/embed.h"
 #include "scaffold/scaffold_defaults.h"
@@ -35,6 +39,7 @@ struct scaf_param {
     int ncharts;
     int nw;          /* working vertices */
     int *Fw;         /* nf by 3 working vertex per corner */
+    int pos_exp;     /* the loop works on positions / 2^pos_exp (geom/coord_scale) */
     scaf_loop loop;
     scaf_stop_reason stop; /* why the last run stopped */
 };
@@ -234,9 +239,10 @@ static scaf_status split_fans(mesh *m, int **FTs, scaf_error *err)
     return SCAF_OK;
 }
 
-/* The charts of m, each checked to be a disk (possibly with holes) with
- * no degenerate triangle; errors name the chart. */
-static scaf_status find_charts(const mesh *m, mesh_charts *ch, scaf_error *err)
+/* The charts of m (positions at unit scale, 2^-pos_exp times V_in, the
+ * caller's), each checked to be a disk (possibly with holes) with no
+ * degenerate triangle; errors name the chart. */
+static scaf_status find_charts(const mesh *m, const double *V_in, int pos_exp, mesh_charts *ch, scaf_error *err)
 {
     scaf_status st = mesh_charts_compute(m, ch, err);
     if (st != SCAF_OK) return st;
@@ -244,10 +250,17 @@ static scaf_status find_charts(const mesh *m, mesh_charts *ch, scaf_error *err)
         st = mesh_chart_check(ch, c, 1, err);
         if (st != SCAF_OK) return st;
     }
+    const double *V = m->V;
     for (int f = 0; f < m->nf; f++) {
         const int *t = m->F + 3 * f;
-        if (!(area3(m->V + 3 * (size_t)t[0], m->V + 3 * (size_t)t[1], m->V + 3 * (size_t)t[2]) > 0.0))
+        /* degenerate: the one exact definition `scaf info` counts too */
+        if (tri3_is_degenerate(V_in + 3 * (size_t)t[0], V_in + 3 * (size_t)t[1], V_in + 3 * (size_t)t[2]))
             return err_set(err, SCAF_ERR_MESH, "chart %d: face %d is degenerate (zero 3D area)", ch->cx.face_group[f], f);
+        double a = area3(V + 3 * (size_t)t[0], V + 3 * (size_t)t[1], V + 3 * (size_t)t[2]);
+        if (!(a >= DBL_MIN) || !isfinite(a))
+            return err_set(err, SCAF_ERR_MESH, "chart %d: face %d is not degenerate, but too small next to the "
+                           "mesh's largest coordinate (2^%d) for double precision: its area underflows",
+                           ch->cx.face_group[f], f, pos_exp);
     }
     return SCAF_OK;
 }
@@ -392,6 +405,14 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     scaf_error *err = &p->err;
     scaf_status st = param_check_arrays(V, nv, F, nf, UV, nuv, FT, err);
     if (st != SCAF_OK) return st;
+    /* Work at unit scale, exactly (geom/coord_scale): the result does
+     * not depend on the input's units; UVs go back to them in get_uv. */
+    p->pos_exp = coord_scale_exponent(V, 3, 3 * (size_t)nf, F);
+    const double *V_in = V;
+    double *Vs = malloc(sizeof(double) * 3 * (size_t)nv);
+    if (!Vs) return err_nomem(err, "scaled positions");
+    coord_scale_apply(Vs, V, 3, nv, 3 * (size_t)nf, F, p->pos_exp);
+    V = Vs;
 
     mesh m = {nv, (double *)V, nf, (int *)F, nuv, (double *)UV, (int *)FT};
     mesh_charts ch;
@@ -399,7 +420,7 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     int *FTs = NULL, *widx = NULL, *local = NULL, nw = 0;
     double *W3 = NULL, *uv = NULL, *radius = NULL;
     st = split_fans(&m, &FTs, err);
-    if (st == SCAF_OK) st = find_charts(&m, &ch, err);
+    if (st == SCAF_OK) st = find_charts(&m, V_in, p->pos_exp, &ch, err);
     if (st != SCAF_OK) goto fail;
     int nidx = ch.uses_uv ? m.nuv : nv;
     const int *IDX = ch.uses_uv ? m.FT : F;
@@ -447,6 +468,7 @@ done:
     free(W3);
     free(uv);
     free(radius);
+    free(Vs);
     return st;
 }
 
@@ -497,7 +519,19 @@ int scaf_param_uv_count(const scaf_param_t *p) { return p ? p->nw : 0; }
 scaf_status scaf_param_get_uv(const scaf_param_t *p, double *UV, int *FT)
 {
     if (!p || !p->has_mesh || !UV) return SCAF_ERR_USAGE;
-    memcpy(UV, p->loop.uv, sizeof(double) * 2 * (size_t)p->nw);
+    /* back to the input's units: exact unless a coordinate would overflow
+     * or fall into the subnormal range (then the map proved bijective
+     * would not be the one given) */
+    size_t bad = SIZE_MAX;
+    for (size_t i = 0; i < 2 * (size_t)p->nw; i++) {
+        UV[i] = ldexp(p->loop.uv[i], p->pos_exp);
+        if (bad == SIZE_MAX && ldexp(UV[i], -p->pos_exp) != p->loop.uv[i]) bad = i;
+    }
     if (FT) memcpy(FT, p->Fw, sizeof(int) * 3 * (size_t)p->nf);
-    return SCAF_OK;
+    if (bad == SIZE_MAX) return SCAF_OK;
+    /* the context is the caller's heap object: its message may change even
+     * through this const pointer, so scaf_param_error says why */
+    return err_set(&((scaf_param_t *)p)->err, SCAF_ERR_NUMERIC,
+                   "UV %zu cannot be written exactly in the mesh's units (2^%d times %g would %s); scale the "
+                   "mesh by a power of 2", bad / 2, p->pos_exp, p->loop.uv[bad], p->pos_exp > 0 ? "overflow" : "be subnormal");
 }

@@ -13,6 +13,7 @@
 #include "app/png_write.h"
 #include "app/uv_raster.h"
 #include "base/sort_u64.h"
+#include "geom/coord_scale.h"
 
 uv_png_options uv_png_options_default(void)
 {
@@ -79,17 +80,24 @@ scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, co
     int W, H;
     uv_raster_frame fr = uv_raster_fit(lo, hi, o->size, margin, &W, &H);
     uv_raster_mesh m = {nf, uv, F, colour, NULL, NULL, 0.0};
+    double *Vs = NULL;
     if (o->checker > 0.0) {
+        /* at unit scale (geom/coord_scale, exact): the pattern does not
+         * depend on the mesh's units, and its period cannot overflow */
+        Vs = malloc(sizeof(double) * 3 * (size_t)nv);
+        if (!Vs) return err_nomem(err, "checker positions");
+        coord_scale_apply(Vs, V, 3, nv, 3 * (size_t)nf, F3, coord_scale_exponent(V, 3, 3 * (size_t)nf, F3));
         double blo[3] = {INFINITY, INFINITY, INFINITY}, bhi[3] = {-INFINITY, -INFINITY, -INFINITY};
-        for (int v = 0; v < nv; v++)
+        for (size_t i = 0; i < 3 * (size_t)nf; i++)
             for (int c = 0; c < 3; c++) {
-                if (V[3 * (size_t)v + c] < blo[c]) blo[c] = V[3 * (size_t)v + c];
-                if (V[3 * (size_t)v + c] > bhi[c]) bhi[c] = V[3 * (size_t)v + c];
+                double x = Vs[3 * (size_t)F3[i] + c];
+                if (x < blo[c]) blo[c] = x;
+                if (x > bhi[c]) bhi[c] = x;
             }
         double diag = sqrt((bhi[0] - blo[0]) * (bhi[0] - blo[0]) + (bhi[1] - blo[1]) * (bhi[1] - blo[1]) +
                            (bhi[2] - blo[2]) * (bhi[2] - blo[2]));
         if (diag > 0.0 && isfinite(diag)) {
-            m.xyz = V;
+            m.xyz = Vs;
             m.F3 = F3;
             m.checker = diag / o->checker;
         }
@@ -97,10 +105,12 @@ scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, co
     uv_raster r;
     scaf_status st = uv_raster_new(&r, W, H, err);
     if (st != SCAF_OK) {
+        free(Vs);
         err_prefix(err, "%s", path);
         return st;
     }
     uv_raster_fill(&r, &fr, &m);
+    free(Vs);
     if (o->outline && (st = outline(&r, &fr, uv, nf, F, err)) != SCAF_OK) {
         err_prefix(err, "%s", path);
         uv_raster_free(&r);

@@ -14,6 +14,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -81,10 +82,11 @@ static void grid_init(grid *g, double minx, double miny, double maxx, double max
     } else if (!(h > 0 && isfinite(h))) {
         nx = cells, ny = 1;
     } else {
-        double ax = sqrt((double)cells * w / h);
-        nx = (long)ceil(ax);
+        /* w / h overflows or underflows for extreme aspect ratios: clamp
+         * in double before converting */
+        double ax = ceil(sqrt((double)cells * w / h));
+        nx = ax < (double)cells ? (long)ax : cells;
         if (nx < 1) nx = 1;
-        if (nx > cells) nx = cells;
         ny = (cells + nx - 1) / nx;
     }
     g->minx = minx;
@@ -608,4 +610,33 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
                      rep->nonmanifold_edges == 0 && rep->nested_loops == 0;
     work_free(&w);
     return SCAF_OK;
+}
+
+void bij_report_defects(const bij_report *rep, char *buf, size_t size)
+{
+    const struct {
+        const char *name;
+        long long n;
+    } d[] = {
+        {"flipped", rep->flipped},
+        {"degenerate", rep->degenerate},
+        {"mirrored_charts", rep->mirrored_charts},
+        {"boundary_crossings", rep->boundary_crossings},
+        {"boundary_touchings", rep->boundary_touchings},
+        {"boundary_foldbacks", rep->boundary_foldbacks},
+        {"folded_edges", rep->folded_edges},
+        {"nonmanifold_edges", rep->nonmanifold_edges},
+        {"nested_loops", rep->nested_loops},
+        {"corner_overlaps", rep->corner_overlaps},
+    };
+    if (!buf || !size) return;
+    size_t at = 0;
+    buf[0] = '\0';
+    for (size_t i = 0; i < sizeof d / sizeof *d; i++) {
+        if (d[i].n == 0) continue;
+        int w = snprintf(buf + at, size - at, "%s%s %lld", at ? ", " : "", d[i].name, d[i].n);
+        if (w < 0 || (size_t)w >= size - at) return; /* truncated */
+        at += (size_t)w;
+    }
+    if (at == 0) snprintf(buf, size, "none");
 }

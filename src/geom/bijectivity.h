@@ -38,6 +38,8 @@
 #ifndef SCAF_GEOM_BIJECTIVITY_H
 #define SCAF_GEOM_BIJECTIVITY_H
 
+#include <stddef.h>
+
 #include "base/error.h"
 
 typedef struct bij_report {
@@ -97,5 +99,11 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
  * overlap, coincident endpoints). */
 int bij_segments_meet(const double p1[2], const double p2[2], const double q1[2],
                       const double q2[2]);
+
+/* The defects of a report as text, "flipped 177, mirrored_charts 1,
+ * nested_loops 1" (every nonzero defect count, named as the keys of
+ * `scaf check --json`), or "none"; truncated to size bytes. So every
+ * message about a map's bijectivity quotes the same counts. */
+void bij_report_defects(const bij_report *rep, char *buf, size_t size);
 
 #endif /* SCAF_GEOM_BIJECTIVITY_H */

@@ -12,12 +12,14 @@
  */
 #include "geom/chart_gap.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/half_edges.h"
 #include "geom/bijectivity.h"
+#include "geom/coord_scale.h"
 #include "geom/expansion.h"
 
 static int find_root(int *p, int x)
@@ -161,24 +163,46 @@ int chart_segment_distance_at_least(const double p1[2], const double p2[2], cons
 
 double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F)
 {
+    (void)nuv;
+    /* scale-free: computed on the points divided by a power of two, so
+     * subnormal and huge layouts get the same number as unit ones */
+    int e = coord_scale_exponent(UV, 2, 3 * (size_t)nf, F);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, area = 0.0;
     for (int f = 0; f < nf; f++) {
-        const double *a = UV + 2 * (size_t)F[3 * f], *b = UV + 2 * (size_t)F[3 * f + 1], *c = UV + 2 * (size_t)F[3 * f + 2];
-        area += fabs(0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])));
+        double p[3][2];
         for (int j = 0; j < 3; j++)
             for (int k = 0; k < 2; k++) {
-                double x = UV[2 * (size_t)F[3 * f + j] + k];
-                if (x < lo[k]) lo[k] = x;
-                if (x > hi[k]) hi[k] = x;
+                double x = ldexp(UV[2 * (size_t)F[3 * f + j] + k], -e);
+                p[j][k] = x;
+                lo[k] = fmin(lo[k], x);
+                hi[k] = fmax(hi[k], x);
             }
+        area += fabs(0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])));
     }
-    (void)nuv;
     double side = fmax(hi[0] - lo[0], hi[1] - lo[1]);
-    if (!(side > 0.0) || !isfinite(side)) return 0.0;
+    if (!(side > 0.0) || !isfinite(side) || !isfinite(area)) return 0.0;
     return area / (side * side);
 }
 
 /* ---- boundary segments ---------------------------------------------------- */
+
+/* Cells per side for a span of x cells: in [1, 2^15], NaN and infinity
+ * included (2^30 cells at most; the caller's cell size keeps it near
+ * sqrt(#segments)). */
+static int cell_count(double x)
+{
+    if (!(x >= 1.0)) return 1;
+    return x < (double)(1 << 15) ? (int)x : 1 << 15;
+}
+
+/* Grid cell (1-based: cell 0 holds what lies left of lo) of the offset t
+ * cells from lo, clamped to [0, n - 1] whatever t is. */
+static int cell_index(double t, int n)
+{
+    double c = floor(t) + 1.0;
+    if (!(c > 0.0)) return 0;
+    return c < (double)(n - 1) ? (int)c : n - 1;
+}
 
 /* One search with radius r over segments seg (n by {a, b, chart}). */
 static scaf_status grid_search(const double *UV, const int *seg, int n, double r, const double lo[2], double extent,
@@ -187,10 +211,11 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
 {
     double cell = extent / sqrt((double)n + 1.0);
     if (r > cell) cell = r;
-    if (!(cell > 0.0)) cell = 1.0;
+    if (!(cell > 0.0) || !isfinite(cell)) cell = extent > 0.0 && isfinite(extent) ? extent : 1.0;
     double h = 0.5 * r;
-    int nx = (int)((extent + 2 * h) / cell) + 2, ny = nx;
-    if (nx > 1 << 15) nx = ny = 1 << 15;
+    /* sizes and indices are clamped in double before any conversion to int,
+     * so no extent, radius or coordinate can overflow them */
+    int nx = cell_count((extent + 2 * h) / cell + 2.0), ny = nx;
     /* count, then fill (CSR). */
     size_t ncell = (size_t)nx * (size_t)ny;
     int *start = calloc(ncell + 1, sizeof(int));
@@ -203,19 +228,20 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
     size_t total = 0;
     for (int s = 0; s < n; s++) {
         const double *a = UV + 2 * (size_t)seg[3 * s], *b = UV + 2 * (size_t)seg[3 * s + 1];
-        int i0 = (int)floor((fmin(a[0], b[0]) - h - lo[0]) / cell) + 1, i1 = (int)floor((fmax(a[0], b[0]) + h - lo[0]) / cell) + 1;
-        int j0 = (int)floor((fmin(a[1], b[1]) - h - lo[1]) / cell) + 1, j1 = (int)floor((fmax(a[1], b[1]) + h - lo[1]) / cell) + 1;
-        if (i0 < 0) i0 = 0;
-        if (j0 < 0) j0 = 0;
-        if (i1 > nx - 1) i1 = nx - 1;
-        if (j1 > ny - 1) j1 = ny - 1;
+        int i0 = cell_index((fmin(a[0], b[0]) - h - lo[0]) / cell, nx), i1 = cell_index((fmax(a[0], b[0]) + h - lo[0]) / cell, nx);
+        int j0 = cell_index((fmin(a[1], b[1]) - h - lo[1]) / cell, ny), j1 = cell_index((fmax(a[1], b[1]) + h - lo[1]) / cell, ny);
         box[s][0] = i0;
         box[s][1] = j0;
         box[s][2] = i1;
         box[s][3] = j1;
+        total += (size_t)(i1 - i0 + 1) * (size_t)(j1 - j0 + 1);
+        if (total > INT_MAX) { /* cell offsets are ints */
+            free(start);
+            free(box);
+            return err_set(err, SCAF_ERR_NOMEM, "chart gap grid: more than %d segment-cell entries", INT_MAX);
+        }
         for (int j = j0; j <= j1; j++)
             for (int i = i0; i <= i1; i++) start[(size_t)j * nx + i + 1]++;
-        total += (size_t)(i1 - i0 + 1) * (size_t)(j1 - j0 + 1);
     }
     for (size_t c = 0; c < ncell; c++) start[c + 1] += start[c];
     int *items = malloc(sizeof(int) * (total ? total : 1));
@@ -315,10 +341,81 @@ scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg
         }
         i = j;
     }
+    /* A chart without a boundary edge (a point: one UV index three times;
+     * faces covering each other twice) still has points: give it a
+     * zero-length segment at its first corner so its distance to the other
+     * charts counts. Room: its edges, all paired, took no row. */
+    int nch = 0;
+    for (int f = 0; f < nf; f++)
+        if (chart[f] + 1 > nch) nch = chart[f] + 1;
+    unsigned char *has = calloc((size_t)(nch ? nch : 1), 1);
+    if (!has) {
+        free(order);
+        free(seg);
+        return err_nomem(err, "chart boundary segments");
+    }
+    for (int s = 0; s < n; s++) has[seg[3 * s + 2]] = 1;
+    for (int f = 0; f < nf; f++)
+        if (!has[chart[f]]) {
+            has[chart[f]] = 1;
+            seg[3 * n] = seg[3 * n + 1] = F[3 * f];
+            seg[3 * n + 2] = chart[f];
+            n++;
+        }
+    free(has);
     free(order);
     *seg_out = seg;
     *nseg = n;
     return SCAF_OK;
+}
+
+/* The segments' end points divided by 2^*e (max |coordinate| of the result
+ * in [1, 2)): *xy (2 points per segment) and *seg2 (rows {2s, 2s + 1,
+ * chart}), both malloc'd. Exact, and grid searches on them cannot overflow
+ * (the extent is at most 4) whatever the units of the layout. */
+static scaf_status scaled_segments(const double *UV, const int *seg, int n, double **xy, int **seg2, int *e,
+                                   scaf_error *err)
+{
+    *xy = malloc(sizeof(double) * 4 * (size_t)n);
+    *seg2 = malloc(sizeof(int) * 3 * (size_t)n);
+    if (!*xy || !*seg2) {
+        free(*xy);
+        free(*seg2);
+        *xy = NULL;
+        *seg2 = NULL;
+        return err_nomem(err, "chart gap segments");
+    }
+    for (int s = 0; s < n; s++) {
+        (*seg2)[3 * s] = 2 * s;
+        (*seg2)[3 * s + 1] = 2 * s + 1;
+        (*seg2)[3 * s + 2] = seg[3 * s + 2];
+    }
+    double m = 0.0;
+    for (int s = 0; s < n; s++)
+        for (int k = 0; k < 2; k++)
+            for (int c = 0; c < 2; c++) m = fmax(m, fabs(UV[2 * (size_t)seg[3 * s + k] + c]));
+    *e = m > 0.0 && isfinite(m) ? ilogb(m) : 0;
+    for (int s = 0; s < n; s++)
+        for (int k = 0; k < 2; k++)
+            for (int c = 0; c < 2; c++) (*xy)[4 * (size_t)s + 2 * k + c] = ldexp(UV[2 * (size_t)seg[3 * s + k] + c], -*e);
+    return SCAF_OK;
+}
+
+/* lo and the extent (longest side, 1 when flat) of the points of seg. */
+static double segment_extent(const double *UV, const int *seg, int n, double lo[2])
+{
+    double hi[2] = {-INFINITY, -INFINITY};
+    lo[0] = lo[1] = INFINITY;
+    for (int s = 0; s < n; s++)
+        for (int k = 0; k < 2; k++) {
+            const double *a = UV + 2 * (size_t)seg[3 * s + k];
+            for (int c = 0; c < 2; c++) {
+                lo[c] = fmin(lo[c], a[c]);
+                hi[c] = fmax(hi[c], a[c]);
+            }
+        }
+    double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+    return extent > 0.0 && isfinite(extent) ? extent : 1.0;
 }
 
 scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, double radius, double *gap, int pair[2],
@@ -327,26 +424,32 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, doub
     *gap = INFINITY;
     if (pair) pair[0] = pair[1] = -1;
     if (n < 2) return SCAF_OK;
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY}, len = 0.0;
-    for (int s = 0; s < n; s++) {
-        const double *a = UV + 2 * (size_t)seg[3 * s], *b = UV + 2 * (size_t)seg[3 * s + 1];
-        for (int c = 0; c < 2; c++) {
-            lo[c] = fmin(lo[c], fmin(a[c], b[c]));
-            hi[c] = fmax(hi[c], fmax(a[c], b[c]));
+    double *xy;
+    int *sg, e;
+    scaf_status st = scaled_segments(UV, seg, n, &xy, &sg, &e, err);
+    if (st != SCAF_OK) return st;
+    double lo[2], len = 0.0, g = INFINITY;
+    double extent = segment_extent(xy, sg, n, lo);
+    for (int s = 0; s < n; s++) len += hypot(xy[4 * (size_t)s] - xy[4 * (size_t)s + 2], xy[4 * (size_t)s + 1] - xy[4 * (size_t)s + 3]);
+    if (radius > 0.0 && isfinite(radius)) {
+        /* a radius below 2^-1074 after scaling finds touching pairs only */
+        st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, pair, NULL, NULL, 0.0, NULL, err);
+    } else {
+        double r = len / n;
+        if (!(r > 0.0)) r = extent / n;
+        for (;;) {
+            st = grid_search(xy, sg, n, r, lo, extent, &g, pair, NULL, NULL, 0.0, NULL, err);
+            if (st != SCAF_OK || isfinite(g) || r > 4.0 * extent) break;
+            r *= 2.0;
         }
-        len += hypot(a[0] - b[0], a[1] - b[1]);
     }
-    double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]);
-    if (!(extent > 0.0)) extent = 1.0;
-    if (radius > 0.0 && isfinite(radius))
-        return grid_search(UV, seg, n, radius, lo, extent, gap, pair, NULL, NULL, 0.0, NULL, err);
-    double r = len / n;
-    if (!(r > 0.0)) r = extent / n;
-    for (;;) {
-        scaf_status st = grid_search(UV, seg, n, r, lo, extent, gap, pair, NULL, NULL, 0.0, NULL, err);
-        if (st != SCAF_OK || isfinite(*gap) || r > 4.0 * extent) return st;
-        r *= 2.0;
-    }
+    free(xy);
+    free(sg);
+    if (st != SCAF_OK) return st;
+    *gap = ldexp(g, e);
+    if (isfinite(g) && !isfinite(*gap))
+        return err_set(err, SCAF_ERR_NUMERIC, "the smallest chart gap (%g * 2^%d) exceeds the largest double", g, e);
+    return SCAF_OK;
 }
 
 scaf_status chart_gap_min(int nuv, const double *UV, int nf, const int *F, const int *chart, double radius,
@@ -382,18 +485,16 @@ scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double
 {
     *npairs = 0;
     if (n < 2 || !(radius > 0.0)) return SCAF_OK;
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int s = 0; s < n; s++)
-        for (int k = 0; k < 2; k++) {
-            const double *a = UV + 2 * (size_t)seg[3 * s + k];
-            for (int c = 0; c < 2; c++) {
-                lo[c] = fmin(lo[c], a[c]);
-                hi[c] = fmax(hi[c], a[c]);
-            }
-        }
-    double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]), g = INFINITY;
-    if (!(extent > 0.0)) extent = 1.0;
-    return grid_search(UV, seg, n, radius, lo, extent, &g, NULL, mark, npairs, 0.0, NULL, err);
+    double *xy;
+    int *sg, e;
+    scaf_status st = scaled_segments(UV, seg, n, &xy, &sg, &e, err);
+    if (st != SCAF_OK) return st;
+    double lo[2], g = INFINITY;
+    double extent = segment_extent(xy, sg, n, lo);
+    st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, NULL, mark, npairs, 0.0, NULL, err);
+    free(xy);
+    free(sg);
+    return st;
 }
 
 /* Coordinates the exact test can take: 0 or magnitude in [2^-200, 2^200]
@@ -402,7 +503,7 @@ scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double
 static int exact_range(double x)
 {
     double ax = fabs(x);
-    return ax == 0.0 || (ax >= 0x1p-200 && ax <= 0x1p200);
+    return ax == 0.0 || (ax >= CHART_GAP_EXACT_MIN && ax <= CHART_GAP_EXACT_MAX);
 }
 
 scaf_status chart_gap_certify(const double *UV, const int *seg, int n, double padding, int *ok, int pair[2],
@@ -413,22 +514,17 @@ scaf_status chart_gap_certify(const double *UV, const int *seg, int n, double pa
     if (!(padding >= 0.0) || !exact_range(padding))
         return err_set(err, SCAF_ERR_NUMERIC, "chart gap certificate: padding %g outside [2^-200, 2^200]", padding);
     if (n < 2 || padding == 0.0) return SCAF_OK;
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (int s = 0; s < n; s++)
         for (int k = 0; k < 2; k++) {
             int v = seg[3 * s + k];
-            const double *a = UV + 2 * (size_t)v;
-            for (int c = 0; c < 2; c++) {
-                if (!exact_range(a[c]))
+            for (int c = 0; c < 2; c++)
+                if (!exact_range(UV[2 * (size_t)v + c]))
                     return err_set(err, SCAF_ERR_NUMERIC,
                                    "chart gap certificate: UV %d coordinate %g is not 0 and outside [2^-200, 2^200]",
-                                   v, a[c]);
-                lo[c] = fmin(lo[c], a[c]);
-                hi[c] = fmax(hi[c], a[c]);
-            }
+                                   v, UV[2 * (size_t)v + c]);
         }
-    double extent = fmax(hi[0] - lo[0], hi[1] - lo[1]), g = INFINITY;
-    if (!(extent > 0.0)) extent = 1.0;
+    double lo[2], g = INFINITY;
+    double extent = segment_extent(UV, seg, n, lo);
     int bad = 0;
     /* search radius 2 * padding: boxes widened by a whole padding on each
      * side, so every pair closer than the padding shares a cell with a

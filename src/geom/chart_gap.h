@@ -34,8 +34,17 @@
  * (max(width, height))^2 of the UV bounding box: the fraction of the unit
  * square a layout normalized by one uniform scale into it covers.
  *
+ * Units: distances and efficiency are computed on the layout divided by
+ * a power of two that brings its largest coordinate into [1, 2)
+ * (geom/coord_scale; exact), so any finite layout, subnormal to near the
+ * largest double, gets a finite answer, and a layout scaled by 2^k gets
+ * the gap scaled by exactly 2^k and the same efficiency. A chart without
+ * a boundary edge (a point, a doubly covered piece) counts by one of its
+ * points. The grids size themselves with overflow-safe arithmetic.
+ *
  * Fails only on invalid arguments (SCAF_ERR_MESH: index out of range,
- * non-finite coordinate) or out of memory.
+ * non-finite coordinate), a smallest gap beyond the largest double
+ * (SCAF_ERR_NUMERIC) or out of memory.
  */
 #ifndef SCAF_GEOM_CHART_GAP_H
 #define SCAF_GEOM_CHART_GAP_H
@@ -72,6 +81,11 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int nseg, d
  * Returns the number of such pairs found (pairs, not charts). */
 scaf_status chart_gap_mark_close(const double *UV, const int *seg, int nseg, double radius, unsigned char *mark,
                                  long *npairs, scaf_error *err);
+
+/* The smallest nonzero padding (and coordinate magnitude) the exact
+ * certificate takes, and the largest: 2^-200 and 2^200. */
+#define CHART_GAP_EXACT_MIN 0x1p-200
+#define CHART_GAP_EXACT_MAX 0x1p200
 
 /* Exact certificate (definition above): *ok = 1 when every pair of
  * boundary segments of different charts is at distance >= padding, else 0

@@ -20,6 +20,7 @@ static const mesh_sample_info SAMPLES[] = {
     {"holes", "curved plate with 6 circular holes, n points per cell side (genus 0, 7 loops)", 8, 2, 1000},
     {"cubesphere", "closed bumpy sphere, 6 UV charts (cube faces of n x n cells), 12n seam edges", 8, 1, 256},
     {"tetrahedron", "a closed tetrahedron (size ignored)", 1, 1, 1},
+    {"icosphere", "closed unit geodesic sphere, each icosahedron face cut n x n: 20n^2 faces, no UVs", 4, 1, 200},
 };
 
 int mesh_sample_count(void) { return (int)(sizeof SAMPLES / sizeof SAMPLES[0]); }
@@ -300,6 +301,76 @@ static scaf_status make_cubesphere(int n, mesh *m, scaf_error *err)
     return SCAF_OK;
 }
 
+/* ---- icosphere: each icosahedron face an n-frequency triangle lattice,
+ * projected onto the unit sphere. Shared corners and edge points get one
+ * index: corners 0..11, then n - 1 points per edge (numbered from the
+ * edge's lower corner), then the face interiors. ---- */
+static const int ICO_F[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+
+/* Global index of lattice point (i, j) of face f (weights n-i-j, i, j on
+ * its corners a, b, c); edge[a][b] is the edge number of corners a, b. */
+static int ico_point(int n, int f, int i, int j, int edge[12][12])
+{
+    const int *c = ICO_F[f];
+    if (i == 0 && j == 0) return c[0];
+    if (i == n) return c[1];
+    if (j == n) return c[2];
+    int from = -1, to = -1, t = 0;
+    if (j == 0) from = c[0], to = c[1], t = i;
+    else if (i == 0) from = c[0], to = c[2], t = j;
+    else if (i + j == n) from = c[1], to = c[2], t = j;
+    if (from >= 0) {
+        if (from > to) t = n - t;
+        return 12 + edge[from][to] * (n - 1) + t - 1;
+    }
+    /* interior: rows i = 1..n-2, j = 1..n-1-i */
+    int before = 0;
+    for (int r = 1; r < i; r++) before += n - 1 - r;
+    return 12 + 30 * (n - 1) + f * (n - 1) * (n - 2) / 2 + before + j - 1;
+}
+
+static scaf_status make_icosphere(int n, mesh *m, scaf_error *err)
+{
+    const double g = (1 + sqrt(5.0)) / 2;
+    const double C[12][3] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                             {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    int edge[12][12], ne = 0;
+    for (int a = 0; a < 12; a++)
+        for (int b = 0; b < 12; b++) edge[a][b] = -1;
+    for (int f = 0; f < 20; f++)
+        for (int k = 0; k < 3; k++) {
+            int a = ICO_F[f][k], b = ICO_F[f][(k + 1) % 3];
+            if (edge[a][b] < 0) edge[a][b] = edge[b][a] = ne++;
+        }
+    scaf_status st = mesh_alloc(m, 10 * n * n + 2, 20 * n * n, 0, err);
+    if (st) return st;
+    int nt = 0;
+    for (int f = 0; f < 20; f++) {
+        const int *c = ICO_F[f];
+        for (int i = 0; i <= n; i++)
+            for (int j = 0; i + j <= n; j++) {
+                double *p = m->V + 3 * (size_t)ico_point(n, f, i, j, edge), len = 0;
+                for (int k = 0; k < 3; k++) {
+                    p[k] = (C[c[0]][k] * (n - i - j) + C[c[1]][k] * i + C[c[2]][k] * j) / n;
+                    len += p[k] * p[k];
+                }
+                for (int k = 0; k < 3; k++) p[k] /= sqrt(len);
+            }
+        for (int i = 0; i < n; i++)
+            for (int j = 0; i + j < n; j++) {
+                set3(m->F + 3 * (size_t)nt++, ico_point(n, f, i, j, edge), ico_point(n, f, i + 1, j, edge),
+                     ico_point(n, f, i, j + 1, edge));
+                if (i + j < n - 1)
+                    set3(m->F + 3 * (size_t)nt++, ico_point(n, f, i + 1, j, edge),
+                         ico_point(n, f, i + 1, j + 1, edge), ico_point(n, f, i, j + 1, edge));
+            }
+    }
+    return SCAF_OK;
+}
+
 scaf_status mesh_sample_make(const char *name, int size, mesh *m, scaf_error *err)
 {
     memset(m, 0, sizeof *m);
@@ -322,5 +393,6 @@ scaf_status mesh_sample_make(const char *name, int size, mesh *m, scaf_error *er
     if (!strcmp(info->name, "hemisphere")) return make_hemisphere(size, m, err);
     if (!strcmp(info->name, "holes")) return make_holes(size, m, err);
     if (!strcmp(info->name, "cubesphere")) return make_cubesphere(size, m, err);
+    if (!strcmp(info->name, "icosphere")) return make_icosphere(size, m, err);
     return err_set(err, SCAF_ERR_INTERNAL, "sample '%s' has no generator", info->name);
 }

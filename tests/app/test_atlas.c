@@ -21,6 +21,7 @@
 #include <cmocka.h>
 
 #include "app/atlas.h"
+#include "geom/coord_scale.h"
 #include "app/atlas_pack.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -322,22 +323,41 @@ static void init_input(void **state)
     for (int v = 16; v < m.nv; v++) m.UV[2 * v] += 5.0;
     err_clear(&err);
     assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
-    /* the start is the input up to one power-of-two scale (here the UVs
-     * are already at the surface's scale: factor 1) */
+    /* the start is the input up to one power-of-two scale: the surface's
+     * (positions / 2^e, geom/coord_scale) over the UVs' (here the UVs
+     * are at the surface's scale: factor 2^-e) */
+    int e = coord_scale_exponent(m.V, 3, 3 * (size_t)m.nf, m.F);
     for (int c = 0; c < 3 * m.nf; c++) {
-        assert_true(a.loop.uv[2 * a.Fw[c]] == m.UV[2 * m.FT[c]]);
-        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == m.UV[2 * m.FT[c] + 1]);
+        assert_true(a.loop.uv[2 * a.Fw[c]] == ldexp(m.UV[2 * m.FT[c]], -e));
+        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == ldexp(m.UV[2 * m.FT[c] + 1], -e));
     }
     atlas_free(&a);
-    /* UVs 8 times too small: scaled back by exactly 8 */
+    /* UVs 8 times too small: the same start */
     for (int i = 0; i < 2 * m.nuv; i++) m.UV[i] /= 8.0;
     err_clear(&err);
     assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
     for (int c = 0; c < 3 * m.nf; c++) {
-        assert_true(a.loop.uv[2 * a.Fw[c]] == 8.0 * m.UV[2 * m.FT[c]]);
-        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == 8.0 * m.UV[2 * m.FT[c] + 1]);
+        assert_true(a.loop.uv[2 * a.Fw[c]] == ldexp(8.0 * m.UV[2 * m.FT[c]], -e));
+        assert_true(a.loop.uv[2 * a.Fw[c] + 1] == ldexp(8.0 * m.UV[2 * m.FT[c] + 1], -e));
     }
     atlas_free(&a);
+    /* UVs in any units, subnormal to huge: the same start (was clamped at
+     * 2^+-200 of rescaling, then failed in the scaffold) */
+    const int k[] = {-1000, 900, 1000};
+    for (size_t t = 0; t < sizeof k / sizeof *k; t++) {
+        mesh s = m;
+        s.UV = malloc(sizeof(double) * 2 * (size_t)m.nuv);
+        assert_non_null(s.UV);
+        for (int i = 0; i < 2 * m.nuv; i++) s.UV[i] = ldexp(8.0 * m.UV[i], k[t]);
+        err_clear(&err);
+        assert_int_equal(atlas_init(&a, &s, &o, &err), SCAF_OK);
+        for (int c = 0; c < 3 * m.nf; c++) {
+            assert_true(a.loop.uv[2 * a.Fw[c]] == ldexp(8.0 * m.UV[2 * m.FT[c]], -e));
+            assert_true(a.loop.uv[2 * a.Fw[c] + 1] == ldexp(8.0 * m.UV[2 * m.FT[c] + 1], -e));
+        }
+        atlas_free(&a);
+        free(s.UV);
+    }
     mesh_free(&m);
 }
 
@@ -389,7 +409,13 @@ static void out_of_range_options_are_refused(void **state)
         scaf_error err;
         err_clear(&err);
         assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_ERR_USAGE);
-        assert_non_null(strstr(err.message, "invalid atlas option"));
+        static const char *const knob[NBAD] = {
+            "pack_gap_factor", "pack_gap_factor", "compact_lambda_ratio", "compact_lambda_ratio",
+            "compact_rest_scale", "compact_rest_scale", "compact_rest_scale", "compact_box_scale",
+            "compact_box_scale", "compact_fraction", "compact_fraction", "compact_fraction",
+            "pack_cells", "pack_cells", "pack_picks", "pack_picks", "compact_rest_scale"};
+        assert_non_null(strstr(err.message, knob[i])); /* names the option and its range */
+        assert_non_null(strstr(err.message, "must be"));
     }
     atlas_options o = atlas_options_default();
     o.pack_gap_factor = 1.0;

@@ -593,7 +593,7 @@ static void option_validation(void **state)
     EXPECT(scaf_atlas_set_options(a, NULL), SCAF_ERR_USAGE);
     assert_int_equal(scaf_atlas_set_options(a, &d), SCAF_OK);
 
-    enum { NBAD = 19 };
+    enum { NBAD = 20 };
     for (int k = 0; k < NBAD; k++) {
         scaf_atlas_options_t o = d;
         switch (k) {
@@ -616,6 +616,7 @@ static void option_validation(void **state)
         case 16: o.lambda_ratio = INFINITY; break;
         case 17: o.compact_lambda_ratio = -1.0; break;
         case 18: o.box_scale = NAN; break;
+        case 19: o.padding = 1e-61; break; /* below the exact certificate's 2^-200 */
         }
         EXPECT(scaf_atlas_set_options(a, &o), SCAF_ERR_USAGE);
         assert_non_null(strstr(scaf_atlas_error(a), "option"));

@@ -22,6 +22,7 @@
 #include <string.h>
 #include <sys/wait.h>
 
+#include "support/cli_capture.h"
 #include "support/support.h"
 
 typedef struct result {
@@ -31,29 +32,12 @@ typedef struct result {
 
 static void run_check(const char *path, result *r)
 {
-    char cmd[2048];
-    snprintf(cmd, sizeof cmd, "'%s' check --json '%s' 2>/dev/null", SCAF_BINARY, path);
-    FILE *p = popen(cmd, "r");
-    assert_non_null(p);
-    size_t n = fread(r->out, 1, sizeof r->out - 1, p);
-    r->out[n] = '\0';
-    int st = pclose(p);
-    assert_true(WIFEXITED(st));
-    r->status = WEXITSTATUS(st);
+    r->status = test_capture(r->out, sizeof r->out, "'%s' check --json '%s' 2>/dev/null", SCAF_BINARY, path);
+    assert_true(r->status >= 0);
 }
 
 /* The integer (or bool as 0/1) value of "key" in the JSON line. */
-static long long field(const result *r, const char *key)
-{
-    char pat[128];
-    snprintf(pat, sizeof pat, "\"%s\": ", key);
-    const char *s = strstr(r->out, pat);
-    if (!s) fail_msg("key %s missing in: %s", key, r->out);
-    s += strlen(pat);
-    if (!strncmp(s, "true", 4)) return 1;
-    if (!strncmp(s, "false", 5)) return 0;
-    return strtoll(s, NULL, 10);
-}
+static long long field(const result *r, const char *key) { return test_json_field(r->out, key); }
 
 static int have(const char *rel, char *buf, size_t n) { return test_data_path(rel, buf, n) != NULL; }
 

@@ -632,6 +632,22 @@ static void verdict_matches_brute_force_oracle(void **state)
     assert_true(agree_no > 300);
 }
 
+/* A layout whose bounding box has an aspect ratio beyond the largest
+ * double (1.5e34 wide, 1.25e-321 high): the grid size is clamped before
+ * any conversion (was undefined behaviour, found by fuzz_uv_numbers). */
+static void extreme_aspect_ratio(void **state)
+{
+    (void)state;
+    int F[3] = {2, 1, 0};
+    bij_report r;
+    scaf_error err;
+    for (int k = -16; k <= 16; k++) {
+        double UV[6] = {ldexp(1.4920950996161134e+34, k), ldexp(1.25e-321, k < 0 ? 0 : k), 0, 0, 0, 0};
+        assert_int_equal(bij_check(3, UV, 1, F, NULL, NULL, &r, &err), SCAF_OK);
+        assert_int_equal(r.triangles, 1);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -653,6 +669,7 @@ int main(void)
         cmocka_unit_test(large_grid_layouts),
         cmocka_unit_test(pair_counts_match_brute_force),
         cmocka_unit_test(verdict_matches_brute_force_oracle),
+        cmocka_unit_test(extreme_aspect_ratio),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

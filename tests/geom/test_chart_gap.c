@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 #include <cmocka.h>
 
 #include "geom/chart_gap.h"
@@ -213,6 +214,96 @@ static void certified_agrees_with_distance(void **state)
     assert_true(agree > n / 2);
 }
 
+/* Gap and efficiency do not depend on the units of the layout: the same
+ * squares scaled by 2^k (subnormal to near the largest double) give the
+ * gap scaled by exactly 2^k and the same efficiency, bit for bit. */
+static void scale_free_results(void **state)
+{
+    (void)state;
+    double ox[3] = {0, 1.25, 0.5}, oy[3] = {0, 0.5, 2.0}, UV0[24], UV[24];
+    int F[18];
+    squares(3, ox, oy, UV0, F);
+    scaf_error err;
+    double g0, g;
+    int pair0[2], pair[2];
+    assert_int_equal(chart_gap_min(12, UV0, 6, F, NULL, 0.0, &g0, pair0, &err), SCAF_OK);
+    double eff0 = chart_packing_efficiency(12, UV0, 6, F);
+    assert_true(isfinite(g0) && g0 > 0.0);
+    assert_true(eff0 > 0.0 && eff0 <= 1.0);
+    const int k[] = {1, -1, 200, -200, 510, 1020, -600, -1020, -1060};
+    for (size_t t = 0; t < sizeof k / sizeof *k; t++) {
+        for (int i = 0; i < 24; i++) UV[i] = ldexp(UV0[i], k[t]);
+        assert_int_equal(chart_gap_min(12, UV, 6, F, NULL, 0.0, &g, pair, &err), SCAF_OK);
+        assert_true(g == ldexp(g0, k[t]));
+        assert_int_equal(pair[0], pair0[0]);
+        assert_int_equal(pair[1], pair0[1]);
+        assert_true(chart_packing_efficiency(12, UV, 6, F) == eff0);
+        /* a radius in the same units finds the same pair */
+        assert_int_equal(chart_gap_min(12, UV, 6, F, NULL, ldexp(2.0 * g0, k[t]), &g, NULL, &err), SCAF_OK);
+        assert_true(g == ldexp(g0, k[t]));
+        unsigned char mark[3] = {0, 0, 0};
+        int *seg, nseg, chart[6], nc;
+        long np;
+        assert_int_equal(chart_gap_labels(12, 6, F, chart, &nc, &err), SCAF_OK);
+        assert_int_equal(chart_gap_segments(6, F, chart, &seg, &nseg, &err), SCAF_OK);
+        assert_int_equal(chart_gap_mark_close(UV, seg, nseg, ldexp(1.01 * g0, k[t]), mark, &np, &err), SCAF_OK);
+        free(seg);
+        assert_true(np > 0);
+        assert_true(mark[pair0[0]] && mark[pair0[1]]);
+    }
+}
+
+/* Extreme but finite coordinates: finite answers, never an overflowing
+ * grid (a single triangle up to 1e308 used to ask for 2^64 bytes). */
+static void extreme_coordinates(void **state)
+{
+    (void)state;
+    scaf_error err;
+    double g;
+    int F1[3] = {0, 1, 2};
+    const double big[] = {1e308, 1e155, 1e-200, 1e-310, 4.9e-324};
+    for (size_t t = 0; t < sizeof big / sizeof *big; t++) {
+        double UV[6] = {0, 0, big[t], 0, 0, big[t]};
+        assert_int_equal(chart_gap_min(3, UV, 1, F1, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+        assert_true(isinf(g)); /* one chart */
+        assert_true(chart_packing_efficiency(3, UV, 1, F1) == 0.5);
+        double UV2[6] = {-big[t], -big[t], big[t], -big[t], -big[t], big[t]};
+        assert_true(chart_packing_efficiency(3, UV2, 1, F1) == 0.5);
+    }
+    /* two charts 3e154 apart: finite (the squared distance overflows) */
+    double UV[12] = {0, 0, 1e154, 0, 0, 1e154, 4e154, 0, 5e154, 0, 4e154, 1e154};
+    int F2[6] = {0, 1, 2, 3, 4, 5};
+    assert_int_equal(chart_gap_min(6, UV, 2, F2, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    assert_true(fabs(g - 3e154) <= 1e139);
+    /* a gap beyond the largest double: a specific error, not infinity */
+    double far[12] = {-1.7e308, 0, -1.6e308, 0, -1.7e308, 1, 1.6e308, 0, 1.7e308, 0, 1.6e308, 1};
+    assert_int_equal(chart_gap_min(6, far, 2, F2, NULL, 0.0, &g, NULL, &err), SCAF_ERR_NUMERIC);
+    assert_non_null(strstr(err.message, "largest double"));
+}
+
+/* Charts without a boundary edge (a triangle with one UV index three
+ * times; two triangles covering each other) still have points: with
+ * another chart the gap is a number, never "fewer than two charts"
+ * (found by fuzz_uv_numbers). */
+static void charts_without_boundary(void **state)
+{
+    (void)state;
+    /* a point chart (UV 3 = (3, 4)) next to the triangle (0,0) (1,0) (0,1):
+     * nearest at (0, 1) */
+    double UV[12] = {0, 0, 1, 0, 0, 1, 3, 4, 0, 0, 0, 0};
+    scaf_error err;
+    double g;
+    int point[6] = {0, 1, 2, 3, 3, 3};
+    assert_int_equal(chart_gap_min(4, UV, 2, point, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    assert_true(fabs(g - sqrt(18.0)) < 1e-12);
+    /* a triangle (5,5) (6,5) (5,6) given twice: its edges pair up, no
+     * boundary; distance from its first corner (5, 5) to the hypotenuse */
+    double UV2[12] = {0, 0, 1, 0, 0, 1, 5, 5, 6, 5, 5, 6};
+    int doubled[9] = {0, 1, 2, 3, 4, 5, 3, 4, 5};
+    assert_int_equal(chart_gap_min(6, UV2, 3, doubled, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    assert_true(fabs(g - 4.5 * sqrt(2.0)) < 1e-12);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -224,6 +315,9 @@ int main(void)
         cmocka_unit_test(certified_exact_boundary),
         cmocka_unit_test(certified_layouts),
         cmocka_unit_test(certified_agrees_with_distance),
+        cmocka_unit_test(scale_free_results),
+        cmocka_unit_test(extreme_coordinates),
+        cmocka_unit_test(charts_without_boundary),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -5,6 +5,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <math.h>
 #include <string.h>
 #include <cmocka.h>
 
@@ -208,6 +209,31 @@ static void cubesphere(void **state)
     }
 }
 
+static void icosphere(void **state)
+{
+    (void)state;
+    for (int n = 1; n <= 9; n += 4) {
+        mesh m;
+        mesh_topology t;
+        mesh_charts c;
+        open_sample("icosphere", n, &m, &t, &c);
+        assert_int_equal(t.vertices, 10 * n * n + 2);
+        assert_int_equal(t.faces, 20 * n * n);
+        assert_int_equal(t.boundary_loops, 0);
+        assert_int_equal(t.euler_characteristic, 2);
+        assert_int_equal(t.genus_sum, 0);
+        assert_false(t.has_uv);
+        /* outward, on the unit sphere, inscribed: volume below 4/3 pi */
+        double vol = volume(&m);
+        assert_true(vol > 0 && vol < 4.0 / 3.0 * 3.14159265358979323846);
+        for (int i = 0; i < m.nv; i++) {
+            const double *p = m.V + 3 * i;
+            assert_true(fabs(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] - 1) < 1e-12);
+        }
+        close_sample(&m, &t, &c);
+    }
+}
+
 static void deterministic(void **state)
 {
     (void)state;
@@ -248,6 +274,7 @@ int main(void)
         cmocka_unit_test(hemisphere),
         cmocka_unit_test(holes),
         cmocka_unit_test(cubesphere),
+        cmocka_unit_test(icosphere),
         cmocka_unit_test(deterministic),
         cmocka_unit_test(bad_names_and_sizes),
     };

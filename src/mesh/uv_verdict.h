@@ -1,0 +1,21 @@
+/* mesh/uv_verdict: the one bijectivity verdict on a mesh's UV map.
+ *
+ * `scaf check` and `scaf atlas --init input` (and anything else judging
+ * the UVs a file brings) ask the same question about the same data: the
+ * UVs and UV indices exactly as read, charts by shared UV edges (no fan
+ * splitting, no relabelling), decided by the exact checker
+ * (geom/bijectivity). Going through this one function keeps their counts
+ * equal.
+ */
+#ifndef SCAF_MESH_UV_VERDICT_H
+#define SCAF_MESH_UV_VERDICT_H
+
+#include "base/error.h"
+#include "geom/bijectivity.h"
+#include "mesh/mesh.h"
+
+/* bij_check on m's UVs as given (m must have UVs: mesh_has_uv). Errors as
+ * bij_check's (SCAF_ERR_MESH for a non-finite UV, SCAF_ERR_NOMEM). */
+scaf_status mesh_uv_verdict(const mesh *m, bij_report *rep, scaf_error *err);
+
+#endif /* SCAF_MESH_UV_VERDICT_H */
