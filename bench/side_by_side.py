@@ -22,8 +22,9 @@ compute this quantity independently); the start energies E0 must agree.
 
 Prints Markdown (paste into bench/RESULTS-param.md): the load (/proc/loadavg)
 before and after every mesh, the CPU share of each run (process CPU time /
-wall time: below ~0.9 the run waited for a core), the summary table, and
-scaf's phase split of the median iteration (iterations 2..N).
+wall time: below ~0.95 the run waited for a core), the ratio per round and
+over the rounds where both runs had a core, the summary table, and scaf's
+phase split (mean of iterations 2..N of its median run).
 
     bench/side_by_side.py [--reference BIN] [--scaf BIN] [--data DIR]
                           [--rounds N] [MESH[:ITERATIONS] ...]
@@ -49,6 +50,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 DEFAULT_MESHES = ["disk/camel_b.obj:50", "disk/camelhead.off:50", "disk/aphrodite.obj:10"]
 PHASES = ["factorization", "analysis", "solve", "assembly", "line_search", "scaffold", "other"]
+# A run whose process had a core for at least this share of its wall time
+# was not kept waiting by the other jobs of the machine.
+CLEAN_CPU_SHARE = 0.95
 # Energies printed by the harness have 6 decimals; relative agreement of the
 # start energies beyond that means the start differs.
 START_RTOL = 1e-6
@@ -158,6 +162,7 @@ def bench_mesh(args, rel, iterations, env, tmp):
             res["cpu_share"] = (child_cpu() - c0) / wall if wall > 0 else 0.0
             if len(res["secs"]) != iterations:
                 raise RunFailed("%s ran %d of %d iterations on %s" % (who, len(res["secs"]), iterations, rel))
+            res["cpu_share"] = min(res["cpu_share"], 1.0)  # rusage ticks can round above the wall time
             runs[who].append(res)
             print("side_by_side: %s round %d %s: median(2..N) %.5f s/it, E_N %.6f, CPU share %.2f"
                   % (rel, rnd + 1, who, per_iteration(res["secs"])[0], res["E"][-1], res["cpu_share"]),
@@ -181,16 +186,23 @@ def summarize(rel, iterations, runs, load_before, load_after, loads):
             "deterministic": all(r["E"] == runs[who][0]["E"] for r in runs[who]),
             "cpu_share": (min(r["cpu_share"] for r in runs[who]), max(r["cpu_share"] for r in runs[who])),
         }
+    # rounds pair the two programs in the same minute: the median of the
+    # per-round ratios is the figure least moved by a load change between rounds
+    s["round_ratios"] = [a / b for a, b in zip(s["libigl"]["med_runs"], s["scaf"]["med_runs"])]
+    s["ratio"] = statistics.median(s["round_ratios"])
+    # rounds in which both runs had a core nearly all their wall time
+    s["clean_ratios"] = [q for q, a, b in zip(s["round_ratios"], runs["libigl"], runs["scaf"])
+                         if min(a["cpu_share"], b["cpu_share"]) >= CLEAN_CPU_SHARE]
     s["flipped"] = max(r["flipped"] for r in runs["libigl"])
     s["same_start"] = abs(s["scaf"]["E0"] - s["libigl"]["E0"]) <= START_RTOL * abs(s["libigl"]["E0"]) + 5e-7
     # scaf's phase split of the run whose median(2..N) is the median run
     runs_sorted = sorted(runs["scaf"], key=lambda r: per_iteration(r["secs"])[0])
     mid = runs_sorted[(len(runs_sorted) - 1) // 2]
     tail = range(1, len(mid["secs"])) if len(mid["secs"]) > 1 else range(len(mid["secs"]))
-    s["phases"] = {k: statistics.median(mid["phases"][i].get(k, 0.0) for i in tail) for k in PHASES}
-    s["phase_it"] = statistics.median(mid["secs"][i] for i in tail)
-    s["phase_unaccounted"] = statistics.median(
-        mid["secs"][i] - sum(mid["phases"][i].values()) for i in tail)
+    # means, not medians: the phases of a mean iteration add up to it
+    s["phases"] = {k: statistics.mean(mid["phases"][i].get(k, 0.0) for i in tail) for k in PHASES}
+    s["phase_it"] = statistics.mean(mid["secs"][i] for i in tail)
+    s["phase_unaccounted"] = statistics.mean(mid["secs"][i] - sum(mid["phases"][i].values()) for i in tail)
     s["first_it"] = {"secs": mid["secs"][0], "analysis": mid["phases"][0].get("analysis", 0.0)}
     return s
 
@@ -208,6 +220,10 @@ def print_mesh(s):
           % (n, fmt_s(L["mean"]), fmt_s(S["mean"]), L["mean"] / S["mean"]))
     print("| per-round median s/it | %s | %s | |"
           % (" ".join(fmt_s(x) for x in L["med_runs"]), " ".join(fmt_s(x) for x in S["med_runs"])))
+    print("| per-round ratio libigl / scaf (median %.2f) | | | %s |"
+          % (s["ratio"], " ".join("%.2f" % x for x in s["round_ratios"])))
+    print("| ratio in the rounds where both runs had CPU share >= %.2f | | | %s |"
+          % (CLEAN_CPU_SHARE, clean_text(s)))
     print("| CPU share of the runs | %.2f-%.2f | %.2f-%.2f | |" % (L["cpu_share"] + S["cpu_share"]))
     print("| E0 (start) | %.6f | %.6f | %s |" % (L["E0"], S["E0"], "same start" if s["same_start"] else "DIFFERENT START"))
     for k in sorted({1, max(1, n // 2), n}):
@@ -222,24 +238,32 @@ def print_mesh(s):
         print("\nNote: " + "; ".join(notes) + ".")
     ph, it = s["phases"], s["phase_it"]
     split = ", ".join("%s %.4f (%.0f%%)" % (k, ph[k], 100 * ph[k] / it) for k in PHASES)
-    print("\nscaf, median over iterations 2..%d of the median run: iteration %.4f s = %s, untimed %.4f (%.0f%%); "
+    print("\nscaf, mean over iterations 2..%d of the run with the median s/it: iteration %.4f s = %s, untimed %.4f (%.0f%%); "
           "iteration / factorization %.2f. Iteration 1: %.4f s, analysis (with the ordering) %.4f s.\n"
           % (n, it, split, s["phase_unaccounted"], 100 * s["phase_unaccounted"] / it,
              it / ph["factorization"] if ph["factorization"] > 0 else 0.0, s["first_it"]["secs"],
              s["first_it"]["analysis"]))
 
 
+def clean_text(s):
+    c = s["clean_ratios"]
+    return "%.2f (%d of %d)" % (statistics.median(c), len(c), s["rounds"]) if c else "none of %d" % s["rounds"]
+
+
 def print_summary(results):
     print("### Summary\n")
-    print("| mesh | faces | its | libigl s/it | scaf s/it | ratio | E libigl | E scaf | load before / after |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| mesh | faces | its | libigl s/it | scaf s/it | ratio | ratio per round: median (range) | clean rounds: median ratio | E libigl | E scaf | load before / after |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for s in results:
-        print("| %s | %d | %d | %s | %s | %.2f | %.5f | %.5f | %s / %s |"
+        print("| %s | %d | %d | %s | %s | %.2f | %.2f (%.2f-%.2f) | %s | %.5f | %.5f | %s / %s |"
               % (s["rel"], s["faces"], s["N"], fmt_s(s["libigl"]["med"]), fmt_s(s["scaf"]["med"]),
-                 s["libigl"]["med"] / s["scaf"]["med"], s["libigl"]["EN"], s["scaf"]["EN"],
+                 s["libigl"]["med"] / s["scaf"]["med"], s["ratio"], min(s["round_ratios"]),
+                 max(s["round_ratios"]), clean_text(s), s["libigl"]["EN"], s["scaf"]["EN"],
                  s["load"][0].split()[0], s["load"][1].split()[0]))
-    print("\ns/it: median over iterations 2..N of each run, median over the rounds; ratio = libigl / scaf; "
-          "E after N iterations.")
+    print("\ns/it: median over iterations 2..N of each run, median over the rounds; ratio = libigl / scaf "
+          "of those; ratio per round: the two runs of one round divided, median and range over the rounds; "
+          "clean rounds: those where both runs had a core >= %.0f%% of their wall time (their count); "
+          "E after N iterations; load: 1-minute load average." % (100 * CLEAN_CPU_SHARE))
 
 
 def git_head():
