@@ -27,7 +27,12 @@ over the rounds where both runs had a core, the summary table, and scaf's
 phase split (mean of iterations 2..N of its median run).
 
     bench/side_by_side.py [--reference BIN] [--scaf BIN] [--data DIR]
-                          [--rounds N] [MESH[:ITERATIONS] ...]
+                          [--rounds N] [--cpu] [MESH[:ITERATIONS] ...]
+
+--cpu adds CPU seconds per iteration (2..N): each program is run once more
+per round, stopped after iteration 1, and the difference of the two
+processes' CPU times is divided by N - 1; unlike the wall time it does not
+count the time a run waited for a core on a loaded machine.
 
 BIN defaults to $SCAF_REFERENCE; without a reference binary the script says
 so and exits 0 (skipped). --scaf defaults to build/scaf next to this folder,
@@ -144,6 +149,9 @@ def bench_mesh(args, rel, iterations, env, tmp):
     report = os.path.join(tmp, "report.json")
     scaf_cmd = [args.scaf, "param", path, "-o", os.path.join(tmp, "out.obj"), "--init", "harmonic",
                 "--iterations", str(iterations), "--tolerance", "0", "--quiet", "--report", report]
+    ref_cmd_1 = ref_cmd[:2] + ["1"] + ref_cmd[3:]
+    scaf_cmd_1 = [a if a != str(iterations) or scaf_cmd[i - 1] != "--iterations" else "1"
+                  for i, a in enumerate(scaf_cmd)]
     runs = {"libigl": [], "scaf": []}
     load_before = loadavg()
     loads = []
@@ -159,9 +167,16 @@ def bench_mesh(args, rel, iterations, env, tmp):
             else:
                 _, wall = run_timed(scaf_cmd, env)
                 res = parse_scaf_report(report)
-            res["cpu_share"] = (child_cpu() - c0) / wall if wall > 0 else 0.0
+            cpu = child_cpu() - c0
+            res["cpu_share"] = cpu / wall if wall > 0 else 0.0
             if len(res["secs"]) != iterations:
                 raise RunFailed("%s ran %d of %d iterations on %s" % (who, len(res["secs"]), iterations, rel))
+            if args.cpu:
+                # the same run stopped after iteration 1: the difference of
+                # the process CPU times is iterations 2..N, waiting excluded
+                c1 = child_cpu()
+                run_timed((ref_cmd_1 if who == "libigl" else scaf_cmd_1), env)
+                res["cpu_it"] = (cpu - (child_cpu() - c1)) / (iterations - 1)
             res["cpu_share"] = min(res["cpu_share"], 1.0)  # rusage ticks can round above the wall time
             runs[who].append(res)
             print("side_by_side: %s round %d %s: median(2..N) %.5f s/it, E_N %.6f, CPU share %.2f"
@@ -193,6 +208,9 @@ def summarize(rel, iterations, runs, load_before, load_after, loads):
     # rounds in which both runs had a core nearly all their wall time
     s["clean_ratios"] = [q for q, a, b in zip(s["round_ratios"], runs["libigl"], runs["scaf"])
                          if min(a["cpu_share"], b["cpu_share"]) >= CLEAN_CPU_SHARE]
+    if all("cpu_it" in r for who in runs for r in runs[who]):
+        s["cpu"] = {who: statistics.median(r["cpu_it"] for r in runs[who]) for who in runs}
+        s["cpu_ratio"] = statistics.median(a["cpu_it"] / b["cpu_it"] for a, b in zip(runs["libigl"], runs["scaf"]))
     s["flipped"] = max(r["flipped"] for r in runs["libigl"])
     s["same_start"] = abs(s["scaf"]["E0"] - s["libigl"]["E0"]) <= START_RTOL * abs(s["libigl"]["E0"]) + 5e-7
     # scaf's phase split of the run whose median(2..N) is the median run
@@ -218,6 +236,9 @@ def print_mesh(s):
           % (n, fmt_s(L["med"]), fmt_s(S["med"]), L["med"] / S["med"]))
     print("| mean s/it, its 1..%d (median of rounds) | %s | %s | %.2f |"
           % (n, fmt_s(L["mean"]), fmt_s(S["mean"]), L["mean"] / S["mean"]))
+    if "cpu" in s:
+        print("| CPU s/it, its 2..%d: CPU of the run minus CPU of a 1-iteration run (median; ratio: median per round) "
+              "| %s | %s | %.2f |" % (n, fmt_s(s["cpu"]["libigl"]), fmt_s(s["cpu"]["scaf"]), s["cpu_ratio"]))
     print("| per-round median s/it | %s | %s | |"
           % (" ".join(fmt_s(x) for x in L["med_runs"]), " ".join(fmt_s(x) for x in S["med_runs"])))
     print("| per-round ratio libigl / scaf (median %.2f) | | | %s |"
@@ -252,17 +273,21 @@ def clean_text(s):
 
 def print_summary(results):
     print("### Summary\n")
-    print("| mesh | faces | its | libigl s/it | scaf s/it | ratio | ratio per round: median (range) | clean rounds: median ratio | E libigl | E scaf | load before / after |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| mesh | faces | its | libigl s/it | scaf s/it | ratio | ratio per round: median (range) | clean rounds: median ratio | CPU s/it libigl / scaf (ratio) | E libigl | E scaf | load before / after |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for s in results:
-        print("| %s | %d | %d | %s | %s | %.2f | %.2f (%.2f-%.2f) | %s | %.5f | %.5f | %s / %s |"
+        cpu = ("%s / %s (%.2f)" % (fmt_s(s["cpu"]["libigl"]), fmt_s(s["cpu"]["scaf"]), s["cpu_ratio"])
+               if "cpu" in s else "-")
+        print("| %s | %d | %d | %s | %s | %.2f | %.2f (%.2f-%.2f) | %s | %s | %.5f | %.5f | %s / %s |"
               % (s["rel"], s["faces"], s["N"], fmt_s(s["libigl"]["med"]), fmt_s(s["scaf"]["med"]),
                  s["libigl"]["med"] / s["scaf"]["med"], s["ratio"], min(s["round_ratios"]),
-                 max(s["round_ratios"]), clean_text(s), s["libigl"]["EN"], s["scaf"]["EN"],
+                 max(s["round_ratios"]), clean_text(s), cpu, s["libigl"]["EN"], s["scaf"]["EN"],
                  s["load"][0].split()[0], s["load"][1].split()[0]))
     print("\ns/it: median over iterations 2..N of each run, median over the rounds; ratio = libigl / scaf "
           "of those; ratio per round: the two runs of one round divided, median and range over the rounds; "
           "clean rounds: those where both runs had a core >= %.0f%% of their wall time (their count); "
+          "CPU s/it (--cpu): process CPU seconds of the N-iteration run minus those of a 1-iteration run, "
+          "over N - 1 (waiting for a core excluded; contention for caches and memory is not); "
           "E after N iterations; load: 1-minute load average." % (100 * CLEAN_CPU_SHARE))
 
 
@@ -292,6 +317,8 @@ def main():
     ap.add_argument("--data", default=os.environ.get("SCAF_DATA_DIR") or
                     os.path.join(os.path.dirname(REPO), "shared", "data"), help="mesh folder")
     ap.add_argument("--rounds", type=int, default=5, help="interleaved rounds per mesh (default 5)")
+    ap.add_argument("--cpu", action="store_true",
+                    help="also measure CPU seconds per iteration (one more 1-iteration run of each program per round)")
     ap.add_argument("--scale", type=float, default=1.0,
                     help="reference only: scale the mesh (libigl's SCAF is not scale-invariant; E is)")
     args = ap.parse_args()
@@ -308,9 +335,9 @@ def main():
     meshes = args.meshes or [parse_mesh_arg(m) for m in DEFAULT_MESHES]
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
     print("## Side by side: scaf vs libigl SCAF, %s\n" % time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()))
-    print("`bench/side_by_side.py --rounds %d %s` (scaf %s, %s; reference %s; %d CPUs; "
+    print("`bench/side_by_side.py --rounds %d%s %s` (scaf %s, %s; reference %s; %d CPUs; "
           "OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1)\n"
-          % (args.rounds, " ".join("%s:%d" % m for m in meshes), git_head(), os.path.relpath(args.scaf, REPO),
+          % (args.rounds, " --cpu" if args.cpu else "", " ".join("%s:%d" % m for m in meshes), git_head(), os.path.relpath(args.scaf, REPO),
              args.reference, os.cpu_count() or 0))
     results = []
     tmp = tempfile.mkdtemp(prefix="side_by_side.")
