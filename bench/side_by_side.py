@@ -100,7 +100,7 @@ def parse_reference(text):
         w = line.split()
         if line.startswith("# mesh") and "area" in w:
             area = float(w[w.index("area") + 1])
-        if len(w) >= 7 and w[0] == "it" and w[2] == "sec" and w[4] == "E" and w[6] == "flipped":
+        if len(w) >= 8 and w[0] == "it" and w[2] == "sec" and w[4] == "E" and w[6] == "flipped":
             k, s, e, fl = int(w[1]), float(w[3]), float(w[5]), int(w[7])
             flipped = max(flipped, fl)
             if k == 0:
@@ -143,15 +143,14 @@ def bench_mesh(args, rel, iterations, env, tmp):
     if not os.path.exists(path):
         print("### %s: missing (%s), skipped\n" % (rel, path))
         return None
-    ref_cmd = [args.reference, path, str(iterations), "-"]
-    if args.scale != 1.0:
-        ref_cmd.append(repr(args.scale))
     report = os.path.join(tmp, "report.json")
-    scaf_cmd = [args.scaf, "param", path, "-o", os.path.join(tmp, "out.obj"), "--init", "harmonic",
-                "--iterations", str(iterations), "--tolerance", "0", "--quiet", "--report", report]
-    ref_cmd_1 = ref_cmd[:2] + ["1"] + ref_cmd[3:]
-    scaf_cmd_1 = [a if a != str(iterations) or scaf_cmd[i - 1] != "--iterations" else "1"
-                  for i, a in enumerate(scaf_cmd)]
+
+    def ref_cmd(n):
+        return [args.reference, path, str(n), "-"] + ([repr(args.scale)] if args.scale != 1.0 else [])
+
+    def scaf_cmd(n):
+        return [args.scaf, "param", path, "-o", os.path.join(tmp, "out.obj"), "--init", "harmonic",
+                "--iterations", str(n), "--tolerance", "0", "--quiet", "--report", report]
     runs = {"libigl": [], "scaf": []}
     load_before = loadavg()
     loads = []
@@ -162,10 +161,10 @@ def bench_mesh(args, rel, iterations, env, tmp):
             loads.append(float(la.split()[0]) if la != "n/a" else 0.0)
             c0 = child_cpu()
             if who == "libigl":
-                out, wall = run_timed(ref_cmd, env)
+                out, wall = run_timed(ref_cmd(iterations), env)
                 res = parse_reference(out)
             else:
-                _, wall = run_timed(scaf_cmd, env)
+                _, wall = run_timed(scaf_cmd(iterations), env)
                 res = parse_scaf_report(report)
             cpu = child_cpu() - c0
             res["cpu_share"] = cpu / wall if wall > 0 else 0.0
@@ -175,7 +174,7 @@ def bench_mesh(args, rel, iterations, env, tmp):
                 # the same run stopped after iteration 1: the difference of
                 # the process CPU times is iterations 2..N, waiting excluded
                 c1 = child_cpu()
-                run_timed((ref_cmd_1 if who == "libigl" else scaf_cmd_1), env)
+                run_timed((ref_cmd if who == "libigl" else scaf_cmd)(1), env)
                 res["cpu_it"] = (cpu - (child_cpu() - c1)) / (iterations - 1)
             res["cpu_share"] = min(res["cpu_share"], 1.0)  # rusage ticks can round above the wall time
             runs[who].append(res)
