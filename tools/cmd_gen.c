@@ -18,6 +18,8 @@
 #include "exit_codes.h"
 #include "mesh/mesh_io.h"
 #include "mesh/samples.h"
+#include "mesh/spiral_strip.h"
+#include "deform_targets.h"
 
 static void list_samples(FILE *out)
 {
@@ -37,7 +39,8 @@ static void usage(FILE *out)
             "       scaf gen --list\n"
             "\n"
             "Write a built-in procedural sample mesh as OBJ (with vt where the sample\n"
-            "has UVs). Deterministic: the same NAME and N give the same file.\n"
+            "has UVs). Deterministic: the same NAME and N give the same file. `spiral`\n"
+            "also writes the targets for `scaf deform` beside FILE: S.obj -> S.targets.json.\n"
             "\n"
             "options:\n"
             "  -o, --output FILE  where to write: .obj, or .obj.gz gzip-compressed, or - for\n"
@@ -105,9 +108,22 @@ static int gen_main(int argc, char **argv)
         return EXIT_USAGE;
     }
 
+    /* spiral: its targets beside it, S.obj -> S.targets.json */
+    char targets[4096] = "";
+    if (!strcmp(name, "spiral")) {
+        size_t len = strlen(out);
+        size_t stem = len >= 7 && !strcmp(out + len - 7, ".obj.gz") ? len - 7 : len >= 4 && !strcmp(out + len - 4, ".obj") ? len - 4 : len;
+        if (!strcmp(out, "-") || stem + 14 > sizeof targets) {
+            fprintf(stderr, "scaf gen: spiral writes its targets beside -o FILE: give a file name\n");
+            return EXIT_USAGE;
+        }
+        memcpy(targets, out, stem);
+        strcpy(targets + stem, ".targets.json");
+    }
     cli_outputs outs;
     cli_outputs_init(&outs, "gen", NULL);
     int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
+    int kt = cli_outputs_add(&outs, "targets", targets[0] ? targets : NULL, CLI_OUTPUT_FILE);
     int rc = cli_outputs_check(&outs);
     if (rc != EXIT_OK) return rc;
     mesh m;
@@ -120,6 +136,22 @@ static int gen_main(int argc, char **argv)
     }
     const char *path = cli_outputs_begin(&outs, k, &err);
     rc = cli_outputs_end(&outs, k, path ? mesh_write_obj(path, &m, &err) : SCAF_ERR_IO, &err);
+    if (rc == EXIT_OK && kt >= 0) {
+        /* the drag: frames 1 .. FRAMES-1 as the path, then the spiral */
+        int nseg = (m.nv - 2) / 2, nfr = SPIRAL_STRIP_FRAMES - 1;
+        double *T = malloc(sizeof(double) * 2 * (size_t)m.nv * SPIRAL_STRIP_FRAMES);
+        path = cli_outputs_begin(&outs, kt, &err);
+        if (T) {
+            for (int f = 0; f < nfr; f++)
+                spiral_strip_curl(nseg, (f + 1.0) / SPIRAL_STRIP_FRAMES, T + 2 * (size_t)m.nv * (size_t)(f + 1));
+            spiral_strip_curl(nseg, 1.0, T);
+        }
+        st = !T ? err_nomem(&err, "spiral targets")
+             : path ? deform_targets_write(path, m.nv, T, nfr, T + 2 * (size_t)m.nv, &err)
+                    : SCAF_ERR_IO;
+        free(T);
+        rc = cli_outputs_end(&outs, kt, st, &err);
+    }
     mesh_free(&m);
     if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     cli_outputs_abort(&outs);

@@ -6,6 +6,7 @@
  * unknown name, a size out of range, or allocation.
  */
 #include "mesh/samples.h"
+#include "mesh/spiral_strip.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -20,6 +21,7 @@ static const mesh_sample_info SAMPLES[] = {
     {"holes", "curved plate with 6 circular holes, n points per cell side (genus 0, 7 loops)", 8, 2, 1000},
     {"cubesphere", "closed bumpy sphere, 6 UV charts (cube faces of n x n cells), 12n seam edges", 8, 1, 256},
     {"tetrahedron", "a closed tetrahedron (size ignored)", 1, 1, 1},
+    {"spiral", "thin open strip along a circle, n segments (Figure 4 of the SCAF paper; gen also writes targets)", 26, 3, 1000},
     {"icosphere", "closed unit geodesic sphere, each icosahedron face cut n x n: 20n^2 faces, no UVs", 4, 1, 200},
 };
 
@@ -393,6 +395,7 @@ scaf_status mesh_sample_make(const char *name, int size, mesh *m, scaf_error *er
     if (!strcmp(info->name, "hemisphere")) return make_hemisphere(size, m, err);
     if (!strcmp(info->name, "holes")) return make_holes(size, m, err);
     if (!strcmp(info->name, "cubesphere")) return make_cubesphere(size, m, err);
+    if (!strcmp(info->name, "spiral")) return spiral_strip_make(size, m, err);
     if (!strcmp(info->name, "icosphere")) return make_icosphere(size, m, err);
     return err_set(err, SCAF_ERR_INTERNAL, "sample '%s' has no generator", info->name);
 }

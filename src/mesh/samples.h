@@ -12,6 +12,8 @@
  *               n x n grid and its own UV chart (3 x 2 atlas, all CCW, no
  *               overlap): genus 0, 6 charts, 12n seam edges
  *   tetrahedron closed tetrahedron, 4 faces                 (size ignored)
+ *   spiral      thin open strip along a circle, n segments, 2n faces: the
+ *               stress test of the paper's Figure 4 (mesh/spiral_strip)
  *   icosphere   closed unit geodesic sphere: each icosahedron face cut
  *               into n x n triangles, 20n^2 faces, 10n^2 + 2 vertices, no UVs
  */

@@ -1,0 +1,370 @@
+/* tools/cmd_deform: `scaf deform IN.obj --targets T.json -o OUT.obj`:
+ * planar deformation with soft handles, bijective at every iteration.
+ *
+ * A thin layer over app/deform: reads the planar mesh (z = 0, or its `vt`
+ * when present) and the handle file (tools/deform_targets), runs the SCAF
+ * loop with the handles as soft constraints, and writes the deformed mesh
+ * as OBJ with the positions both as `v` (z = 0) and `vt`, so `scaf check`
+ * verifies it; optionally a JSON report and SVG / PNG pictures. Bad input
+ * gives a message and the exit status of tools/exit_codes.h, and no file.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/deform.h"
+#include "app/stop_reason.h"
+#include "app/uv_svg.h"
+#include "base/json_write.h"
+#include "cli_args.h"
+#include "cli_mesh_io.h"
+#include "cli_outputs.h"
+#include "cli_png.h"
+#include "cli_signal.h"
+#include "deform_targets.h"
+#include "exit_codes.h"
+#include "geom/bijectivity.h"
+#include "mesh/mesh_io.h"
+#include "opt/handle_term.h"
+
+static void usage(FILE *o)
+{
+    fprintf(o,
+            "usage: scaf deform IN.obj --targets T.json -o OUT.obj [options]\n"
+            "\n"
+            "Deforms a planar triangle mesh so that chosen vertices (handles) move towards\n"
+            "target positions, with low distortion, inside a box of scaffold triangles that\n"
+            "SCAF re-meshes every iteration: no triangle ever flips and the shape never\n"
+            "overlaps itself, whatever the targets (handles get as close as that allows).\n"
+            "\n"
+            "IN: a planar mesh: its `vt` when it has UVs (handle vertices are then `vt`\n"
+            "indices), else its `v` with z = 0. Every triangle counter-clockwise; the rest\n"
+            "shape (zero distortion) is the input.\n"
+            "T.json: {\"handles\": [{\"vertex\": 0, \"target\": [x, y]}, ...], \"weight\": W}\n"
+            "with 0-based vertex indices; \"weight\" is optional (see --weight). A handle\n"
+            "may have \"path\": [[x, y], ...], waypoints visited before its target (a drag:\n"
+            "--frame-iterations each; every handle's path has the same length).\n"
+            "OUT: OBJ with the deformed positions as `v` (z = 0) and as `vt`.\n"
+            "\n"
+            "options:\n"
+            "  -o, --output FILE      output OBJ (required)\n"
+            "  --targets FILE         the handle file (required)\n"
+            "  --iterations N         iteration cap (default 100)\n"
+            "  --frame-iterations N   iterations per waypoint of a drag (default 4)\n"
+            "  --weight R             handle weight ratio, dimensionless (default 10000; the\n"
+            "                         file's \"weight\" when given): w = R / #handles per\n"
+            "                         squared distance, against the distortion energy\n"
+            "                         (an area): scale-free\n"
+            "  --no-remesh            keep the first scaffold's connectivity (the paper's\n"
+            "                         Figure 4 baseline: the deformation locks)\n"
+            "  --verify               check bijectivity exactly after every iteration\n"
+            "  --quiet                no summary on stderr\n"
+            "  --report FILE.json     energy, max_handle_error, iterations, stop_reason and\n"
+            "                         per-iteration history\n"
+            "  --svg FILE             picture of the deformed mesh\n"
+            "  --png FILE             the same as PNG\n"
+            "  -h, --help             this help\n"
+            CLI_OUTPUTS_HELP
+            "\n");
+    exit_codes_print(o);
+}
+
+typedef struct deform_args {
+    const char *in, *out, *targets, *report, *svg;
+    int iterations, frame_iterations, no_remesh, verify, quiet;
+    double weight;
+    int weight_given;
+    cli_png png;
+} deform_args;
+
+static int parse_args(int argc, char **argv, deform_args *o)
+{
+    memset(o, 0, sizeof *o);
+    o->iterations = 100;
+    o->frame_iterations = 4;
+    cli_png_init(&o->png, 0);
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int pr = cli_png_option("deform", argc, argv, &i, &o->png);
+        if (pr < 0) return EXIT_USAGE;
+        if (pr > 0) continue;
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            usage(stdout);
+            return -1;
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            CLI_NEED_VALUE("deform");
+            o->out = v;
+        } else if (!strcmp(a, "--targets")) {
+            CLI_NEED_VALUE("deform");
+            o->targets = v;
+        } else if (!strcmp(a, "--report")) {
+            CLI_NEED_VALUE("deform");
+            o->report = v;
+        } else if (!strcmp(a, "--svg")) {
+            CLI_NEED_VALUE("deform");
+            o->svg = v;
+        } else if (!strcmp(a, "--iterations")) {
+            CLI_NEED_VALUE("deform");
+            if (!cli_parse_int(v, &o->iterations)) CLI_BAD_VALUE("deform");
+        } else if (!strcmp(a, "--frame-iterations")) {
+            CLI_NEED_VALUE("deform");
+            if (!cli_parse_int(v, &o->frame_iterations)) CLI_BAD_VALUE("deform");
+            if (o->frame_iterations < 1) CLI_OUT_OF_RANGE("deform", ">= 1");
+        } else if (!strcmp(a, "--weight")) {
+            CLI_NEED_VALUE("deform");
+            if (!cli_parse_double(v, &o->weight)) CLI_BAD_VALUE("deform");
+            if (o->weight < 0) CLI_OUT_OF_RANGE("deform", ">= 0");
+            o->weight_given = 1;
+        } else if (!strcmp(a, "--no-remesh")) {
+            o->no_remesh = 1;
+        } else if (!strcmp(a, "--verify")) {
+            o->verify = 1;
+        } else if (!strcmp(a, "--quiet")) {
+            o->quiet = 1;
+        } else if (a[0] == '-' && a[1]) {
+            fprintf(stderr, "scaf deform: unknown option '%s' (see --help)\n", a);
+            return EXIT_USAGE;
+        } else if (o->in) {
+            fprintf(stderr, "scaf deform: one input only ('%s' and '%s' given)\n", o->in, a);
+            return EXIT_USAGE;
+        } else {
+            o->in = a;
+        }
+    }
+    if (!o->in || !o->out || !o->targets) {
+        fprintf(stderr, "scaf deform: %s (see --help)\n",
+                !o->in ? "missing input mesh" : !o->out ? "missing -o OUT.obj" : "missing --targets FILE");
+        return EXIT_USAGE;
+    }
+    if (cli_png_finish("deform", &o->png) < 0) return EXIT_USAGE;
+    return EXIT_OK;
+}
+
+/* One iteration's record for the report. */
+typedef struct step_record {
+    int iteration;
+    double energy, max_handle_error, step;
+} step_record;
+
+typedef struct progress_state {
+    deform_options *opt;
+    opt_handle_term *h; /* for the handle error only */
+    int nv, nf;
+    const int *F;
+    int verify, not_bijective;
+    step_record *rec;
+    int n;
+} progress_state;
+
+static int on_iteration(const scaf_iteration_info_t *info, void *user)
+{
+    progress_state *s = user;
+    if (s->n < s->opt->iterations) {
+        step_record r = {info->iteration, info->energy, opt_handle_term_max_error(s->h, s->opt->current), info->step};
+        s->rec[s->n++] = r;
+    }
+    cli_signal_test_point(info->iteration);
+    if (cli_signal_caught()) return 1;
+    if (s->verify) {
+        bij_report rep;
+        if (bij_check(s->nv, s->opt->current, s->nf, s->F, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective) {
+            s->not_bijective = info->iteration;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static scaf_status write_report(const char *path, const deform_args *a, int nh, const deform_result *r,
+                                const progress_state *s, scaf_error *err)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f) return err_set(err, SCAF_ERR_IO, "cannot write '%s'", path);
+    fputs("{\n  \"input\": ", f);
+    json_write_string(f, a->in);
+    fputs(",\n  \"targets\": ", f);
+    json_write_string(f, a->targets);
+    fprintf(f, ",\n  \"handles\": %d,\n  \"remesh\": %s,\n  \"energy\": ", nh, a->no_remesh ? "false" : "true");
+    json_write_number(f, r->energy);
+    fputs(",\n  \"max_handle_error\": ", f);
+    json_write_number(f, r->max_handle_error);
+    fprintf(f, ",\n  \"iterations\": %d,\n  \"stop_reason\": ", r->iterations);
+    json_write_string(f, scaf_stop_reason_name(r->stop));
+    fputs(",\n  \"history\": [", f);
+    for (int i = 0; i < s->n; i++) {
+        fprintf(f, "%s\n    {\"iteration\": %d, \"energy\": ", i ? "," : "", s->rec[i].iteration);
+        json_write_number(f, s->rec[i].energy);
+        fputs(", \"max_handle_error\": ", f);
+        json_write_number(f, s->rec[i].max_handle_error);
+        fputs(", \"step\": ", f);
+        json_write_number(f, s->rec[i].step);
+        fputc('}', f);
+    }
+    fputs("\n  ]\n}\n", f);
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) return err_set(err, SCAF_ERR_IO, "cannot write '%s'", path);
+    return SCAF_OK;
+}
+
+/* The planar rest positions (nv by 2) and faces of m: its vt when it has
+ * them, else its v (which must have z = 0). Exit status. */
+static int planar_mesh(const mesh *m, const char *in, int *nv, double **P, const int **F)
+{
+    if (mesh_has_uv(m)) {
+        *nv = m->nuv;
+        *F = m->FT;
+        *P = malloc(sizeof(double) * 2 * (size_t)(m->nuv > 0 ? m->nuv : 1));
+        if (!*P) return EXIT_NOMEM;
+        memcpy(*P, m->UV, sizeof(double) * 2 * (size_t)m->nuv);
+        return EXIT_OK;
+    }
+    for (int v = 0; v < m->nv; v++)
+        if (m->V[3 * v + 2] != 0.0) {
+            fprintf(stderr, "scaf deform: %s: vertex %d has z = %g: give a planar mesh (z = 0) or one with vt\n", in,
+                    v + 1, m->V[3 * v + 2]);
+            return EXIT_MESH;
+        }
+    *nv = m->nv;
+    *F = m->F;
+    *P = malloc(sizeof(double) * 2 * (size_t)(m->nv > 0 ? m->nv : 1));
+    if (!*P) return EXIT_NOMEM;
+    for (int v = 0; v < m->nv; v++) (*P)[2 * v] = m->V[3 * v], (*P)[2 * v + 1] = m->V[3 * v + 1];
+    return EXIT_OK;
+}
+
+static int deform_main(int argc, char **argv)
+{
+    deform_args a;
+    int rc = parse_args(argc, argv, &a);
+    if (rc < 0) return EXIT_OK;
+    if (rc != EXIT_OK) return rc;
+
+    cli_outputs outs;
+    cli_outputs_init(&outs, "deform", a.in);
+    cli_uv_outputs k;
+    rc = cli_outputs_uv(&outs, a.out, a.svg, a.png.path, a.report, &k);
+    if (rc != EXIT_OK) return rc;
+
+    scaf_error err;
+    err_clear(&err);
+    mesh m = {0};
+    mesh_read_info rinfo;
+    deform_targets t = {0};
+    double *P = NULL, *X = NULL, *V3 = NULL;
+    step_record *rec = NULL;
+    opt_handle_term h;
+    opt_handle_term_init(&h, 2, 0);
+    if ((rc = cli_read_mesh("deform", a.in, a.quiet, &m, &rinfo)) != EXIT_OK) return rc;
+    scaf_status st = deform_targets_read(a.targets, &t, &err);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf deform: %s\n", err.message);
+        rc = exit_code_for(st);
+        goto done;
+    }
+    int nv;
+    const int *F;
+    if ((rc = planar_mesh(&m, a.in, &nv, &P, &F)) != EXIT_OK) goto done;
+    for (int i = 0; i < t.n; i++)
+        if (t.vertex[i] >= nv) {
+            fprintf(stderr, "scaf deform: %s: handle %d: vertex %d is not one of the mesh's %d (0-based)\n", a.targets,
+                    i + 1, t.vertex[i], nv);
+            rc = EXIT_MESH;
+            goto done;
+        }
+    X = malloc(sizeof(double) * 2 * (size_t)(nv > 0 ? nv : 1));
+    rec = malloc(sizeof *rec * (size_t)(a.iterations > 0 ? a.iterations : 1));
+    if (!X || !rec) {
+        fprintf(stderr, "scaf deform: out of memory\n");
+        rc = EXIT_NOMEM;
+        goto done;
+    }
+    h.nverts = nv;
+    if ((st = opt_handle_term_set(&h, t.n, t.vertex, t.target, 1.0, &err)) != SCAF_OK) {
+        fprintf(stderr, "scaf deform: %s: %s\n", a.targets, err.message);
+        rc = exit_code_for(st);
+        goto done;
+    }
+
+    deform_options o = deform_options_default();
+    o.iterations = a.iterations;
+    o.no_remesh = a.no_remesh;
+    o.frame_iterations = a.frame_iterations;
+    if (t.has_weight) o.weight_ratio = t.weight;
+    if (a.weight_given) o.weight_ratio = a.weight;
+    progress_state ps = {&o, &h, nv, m.nf, F, a.verify, 0, rec, 0};
+    o.progress = on_iteration;
+    o.user = &ps;
+    deform_result r;
+    st = deform_run(nv, P, m.nf, F, t.n, t.vertex, t.target, t.nframes, t.frames, &o, X, &r, &err);
+    if (cli_signal_report("deform")) {
+        rc = EXIT_CANCELLED;
+        goto done;
+    }
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf deform: %s: %s\n", a.in, err.message);
+        rc = exit_code_for(st);
+        goto done;
+    }
+    if (ps.not_bijective) {
+        fprintf(stderr, "scaf deform: %s: BUG: not bijective after iteration %d (please report)\n", a.in,
+                ps.not_bijective);
+        rc = EXIT_INTERNAL;
+        goto done;
+    }
+    if (!a.quiet) {
+        fprintf(stderr, "scaf deform: %d iterations, E %.6f, max handle error %.3g%s\n", r.iterations, r.energy,
+                r.max_handle_error, a.verify ? " (bijective after every iteration: verified)" : "");
+        fprintf(stderr, "scaf deform: stop reason: %s (%s)\n", scaf_stop_reason_name(r.stop),
+                stop_reason_explained(r.stop));
+    }
+
+    V3 = malloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
+    if (!V3) {
+        rc = EXIT_NOMEM;
+        goto done;
+    }
+    for (int v = 0; v < nv; v++) V3[3 * v] = X[2 * v], V3[3 * v + 1] = X[2 * v + 1], V3[3 * v + 2] = 0.0;
+    mesh out = {nv, V3, m.nf, (int *)F, nv, X, (int *)F};
+    const char *path = cli_outputs_begin(&outs, k.mesh, &err);
+    if ((rc = cli_outputs_end(&outs, k.mesh, path ? mesh_write_obj(path, &out, &err) : SCAF_ERR_IO, &err)) != EXIT_OK)
+        goto done;
+    if (a.svg) {
+        char title[256];
+        snprintf(title, sizeof title, "%s: max handle error %.3g after %d iterations", a.in, r.max_handle_error,
+                 r.iterations);
+        path = cli_outputs_begin(&outs, k.svg, &err);
+        st = path ? uv_svg_write(path, nv, X, m.nf, F, NULL, NULL, title, &err) : SCAF_ERR_IO;
+        if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
+    }
+    if (a.png.path) {
+        unsigned *col = malloc(sizeof(unsigned) * (size_t)(m.nf > 0 ? m.nf : 1));
+        st = col ? SCAF_OK : err_nomem(&err, "picture colours");
+        if (st == SCAF_OK) {
+            for (int f = 0; f < m.nf; f++) col[f] = uv_svg_colour(4.0);
+            path = cli_outputs_begin(&outs, k.png, &err);
+            st = path ? uv_png_write(path, nv, X, m.nf, F, col, nv, V3, F, &a.png.opt, &err) : SCAF_ERR_IO;
+        }
+        free(col);
+        if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
+    }
+    if (a.report) {
+        path = cli_outputs_begin(&outs, k.report, &err);
+        st = path ? write_report(path, &a, t.n, &r, &ps, &err) : SCAF_ERR_IO;
+        if ((rc = cli_outputs_end(&outs, k.report, st, &err)) != EXIT_OK) goto done;
+    }
+    rc = cli_outputs_commit(&outs);
+done:
+    cli_outputs_abort(&outs);
+    opt_handle_term_free(&h);
+    deform_targets_free(&t);
+    mesh_free(&m);
+    free(P);
+    free(X);
+    free(V3);
+    free(rec);
+    return rc;
+}
+
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_deform(int argc, char **argv) { return cli_signal_run(deform_main, argc, argv); }

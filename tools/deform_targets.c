@@ -1,0 +1,257 @@
+/* tools/deform_targets: the handle file of `scaf deform` (see deform_targets.h). */
+#include "deform_targets.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Paths are read per handle, then laid out frame-major at the end. */
+typedef struct reader {
+    const char *s, *path;
+    int line;
+    int cap;
+    double *paths;   /* cap by path_len by 2, handle-major */
+    int path_len;    /* -1 until the first handle */
+    deform_targets *t;
+    scaf_error *err;
+} reader;
+
+static scaf_status fail(reader *r, const char *what)
+{
+    return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s", r->path, r->line, what);
+}
+
+static void skip_ws(reader *r)
+{
+    for (; *r->s == ' ' || *r->s == '\t' || *r->s == '\r' || *r->s == '\n'; r->s++)
+        if (*r->s == '\n') r->line++;
+}
+
+static int eat(reader *r, char c)
+{
+    skip_ws(r);
+    if (*r->s != c) return 0;
+    r->s++;
+    return 1;
+}
+
+/* A key: only plain ASCII names are expected. */
+static scaf_status key(reader *r, char *out, size_t size)
+{
+    if (!eat(r, '"')) return fail(r, "expected a key in double quotes");
+    size_t n = 0;
+    for (; *r->s && *r->s != '"'; r->s++) {
+        if (*r->s == '\\' || *r->s == '\n' || n + 1 >= size) return fail(r, "unexpected key");
+        out[n++] = *r->s;
+    }
+    out[n] = '\0';
+    if (*r->s != '"') return fail(r, "unterminated key");
+    r->s++;
+    if (!eat(r, ':')) return fail(r, "expected ':' after a key");
+    return SCAF_OK;
+}
+
+static scaf_status number(reader *r, double *v, const char *what)
+{
+    skip_ws(r);
+    const char *p = r->s;
+    if (*p == '-') p++;
+    if (!isdigit((unsigned char)*p)) return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s: expected a number", r->path, r->line, what);
+    char *end;
+    errno = 0;
+    *v = strtod(r->s, &end);
+    if (errno == ERANGE || !isfinite(*v))
+        return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s: number out of range", r->path, r->line, what);
+    r->s = end;
+    return SCAF_OK;
+}
+
+/* "path": [[x, y], ...] of the handle being read (index t->n) into
+ * r->paths; the first handle's path sets the length every other must have. */
+static scaf_status path(reader *r, int *len)
+{
+    if (!eat(r, '[')) return fail(r, "\"path\" must be an array of [x, y]");
+    if (eat(r, ']')) return SCAF_OK;
+    do {
+        if (r->path_len >= 0 && *len >= r->path_len)
+            return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: handle %d has a longer path than the first handle (%d points)",
+                           r->path, r->line, r->t->n + 1, r->path_len);
+        if (r->path_len < 0) { /* the first handle: grow as we go */
+            double *pp = realloc(r->paths, sizeof(double) * 2 * ((size_t)*len + 1) * (size_t)r->cap);
+            if (!pp) return err_nomem(r->err, "handle paths");
+            r->paths = pp;
+        }
+        size_t stride = r->path_len >= 0 ? (size_t)r->path_len : (size_t)*len + 1;
+        double *q = r->paths + 2 * (stride * (size_t)r->t->n + (size_t)*len);
+        scaf_status st;
+        if (!eat(r, '[')) return fail(r, "a \"path\" point must be [x, y]");
+        if ((st = number(r, &q[0], "\"path\" x"))) return st;
+        if (!eat(r, ',')) return fail(r, "a \"path\" point must have two numbers");
+        if ((st = number(r, &q[1], "\"path\" y"))) return st;
+        if (!eat(r, ']')) return fail(r, "a \"path\" point must have exactly two numbers");
+        (*len)++;
+    } while (eat(r, ','));
+    if (!eat(r, ']')) return fail(r, "expected ',' or ']' in \"path\"");
+    return SCAF_OK;
+}
+
+static scaf_status handle(reader *r)
+{
+    deform_targets *t = r->t;
+    if (t->n == r->cap) {
+        int cap = r->cap ? 2 * r->cap : 16;
+        int *v = realloc(t->vertex, sizeof(int) * (size_t)cap);
+        if (v) t->vertex = v;
+        double *x = realloc(t->target, sizeof(double) * 2 * (size_t)cap);
+        if (x) t->target = x;
+        double *pp = r->path_len > 0 ? realloc(r->paths, sizeof(double) * 2 * (size_t)r->path_len * (size_t)cap) : r->paths;
+        if (pp) r->paths = pp;
+        if (!v || !x || (r->path_len > 0 && !pp)) return err_nomem(r->err, "handles");
+        r->cap = cap;
+    }
+    if (!eat(r, '{')) return fail(r, "a handle must be an object {\"vertex\": i, \"target\": [x, y]}");
+    int seen_v = 0, seen_t = 0, len = 0;
+    char k[32];
+    do {
+        scaf_status st = key(r, k, sizeof k);
+        if (st) return st;
+        if (!strcmp(k, "vertex") && !seen_v) {
+            double v;
+            if ((st = number(r, &v, "\"vertex\""))) return st;
+            if (v != floor(v) || v < 0 || v > 2147483647.0) return fail(r, "\"vertex\" must be an integer >= 0");
+            t->vertex[t->n] = (int)v;
+            seen_v = 1;
+        } else if (!strcmp(k, "target") && !seen_t) {
+            if (!eat(r, '[')) return fail(r, "\"target\" must be an array [x, y]");
+            if ((st = number(r, &t->target[2 * t->n], "\"target\" x"))) return st;
+            if (!eat(r, ',')) return fail(r, "\"target\" must have two numbers");
+            if ((st = number(r, &t->target[2 * t->n + 1], "\"target\" y"))) return st;
+            if (!eat(r, ']')) return fail(r, "\"target\" must have exactly two numbers");
+            seen_t = 1;
+        } else if (!strcmp(k, "path") && len == 0) {
+            if ((st = path(r, &len))) return st;
+        } else {
+            return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: unknown or repeated key \"%s\" in a handle", r->path,
+                           r->line, k);
+        }
+    } while (eat(r, ','));
+    if (!eat(r, '}')) return fail(r, "expected ',' or '}' in a handle");
+    if (!seen_v || !seen_t) return fail(r, "a handle needs both \"vertex\" and \"target\"");
+    if (r->path_len < 0) r->path_len = len;
+    if (len != r->path_len)
+        return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: handle %d has a path of %d points, the first handle %d", r->path,
+                       r->line, t->n + 1, len, r->path_len);
+    t->n++;
+    return SCAF_OK;
+}
+
+static scaf_status document(reader *r)
+{
+    if (!eat(r, '{')) return fail(r, "expected '{' (the file is one JSON object)");
+    int seen_h = 0;
+    char k[32];
+    do {
+        scaf_status st = key(r, k, sizeof k);
+        if (st) return st;
+        if (!strcmp(k, "handles") && !seen_h) {
+            if (!eat(r, '[')) return fail(r, "\"handles\" must be an array");
+            if (!eat(r, ']')) {
+                do {
+                    if ((st = handle(r))) return st;
+                } while (eat(r, ','));
+                if (!eat(r, ']')) return fail(r, "expected ',' or ']' in \"handles\"");
+            }
+            seen_h = 1;
+        } else if (!strcmp(k, "weight") && !r->t->has_weight) {
+            if ((st = number(r, &r->t->weight, "\"weight\""))) return st;
+            if (r->t->weight < 0) return fail(r, "\"weight\" must be >= 0");
+            r->t->has_weight = 1;
+        } else {
+            return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: unknown or repeated key \"%s\"", r->path, r->line, k);
+        }
+    } while (eat(r, ','));
+    if (!eat(r, '}')) return fail(r, "expected ',' or '}'");
+    skip_ws(r);
+    if (*r->s) return fail(r, "unexpected text after the object");
+    if (!seen_h) return err_set(r->err, SCAF_ERR_PARSE, "%s: no \"handles\" array", r->path);
+    return SCAF_OK;
+}
+
+scaf_status deform_targets_read(const char *path, deform_targets *t, scaf_error *err)
+{
+    memset(t, 0, sizeof *t);
+    FILE *f = fopen(path, "rb");
+    if (!f) return err_set(err, SCAF_ERR_IO, "cannot open '%s': %s", path, strerror(errno));
+    size_t cap = 4096, n = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        n += fread(buf + n, 1, cap - n - 1, f);
+        if (n < cap - 1) break;
+        char *b = cap < ((size_t)1 << 30) ? realloc(buf, 2 * cap) : NULL;
+        if (!b) free(buf);
+        buf = b;
+        cap *= 2;
+    }
+    int bad = ferror(f);
+    fclose(f);
+    if (!buf) return err_nomem(err, "reading the targets");
+    if (bad) {
+        free(buf);
+        return err_set(err, SCAF_ERR_IO, "cannot read '%s'", path);
+    }
+    buf[n] = '\0';
+    if (strlen(buf) != n) {
+        free(buf);
+        return err_set(err, SCAF_ERR_PARSE, "%s: contains a NUL byte (not a JSON text)", path);
+    }
+    reader r = {buf, path, 1, 0, NULL, -1, t, err};
+    scaf_status st = document(&r);
+    free(buf);
+    if (st == SCAF_OK && r.path_len > 0) { /* handle-major -> frame-major */
+        t->frames = malloc(sizeof(double) * 2 * (size_t)r.path_len * (size_t)t->n);
+        if (!t->frames) st = err_nomem(err, "handle paths");
+        for (int i = 0; st == SCAF_OK && i < t->n; i++)
+            for (int f = 0; f < r.path_len; f++)
+                for (int a = 0; a < 2; a++)
+                    t->frames[2 * ((size_t)f * t->n + i) + a] = r.paths[2 * ((size_t)i * r.path_len + f) + a];
+        t->nframes = r.path_len;
+    }
+    free(r.paths);
+    if (st != SCAF_OK) deform_targets_free(t);
+    return st;
+}
+
+scaf_status deform_targets_write(const char *path, int n, const double *T, int nframes, const double *frames,
+                                 scaf_error *err)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f) return err_set(err, SCAF_ERR_IO, "cannot write '%s': %s", path, strerror(errno));
+    fputs("{\"handles\": [\n", f);
+    for (int i = 0; i < n; i++) {
+        fprintf(f, "  {\"vertex\": %d, \"target\": [%.17g, %.17g]", i, T[2 * i], T[2 * i + 1]);
+        if (nframes > 0) {
+            fputs(", \"path\": [", f);
+            for (int k = 0; k < nframes; k++) {
+                const double *q = frames + 2 * ((size_t)k * n + i);
+                fprintf(f, "%s[%.17g, %.17g]", k ? ", " : "", q[0], q[1]);
+            }
+            fputc(']', f);
+        }
+        fprintf(f, "}%s\n", i + 1 < n ? "," : "");
+    }
+    fputs("]}\n", f);
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) return err_set(err, SCAF_ERR_IO, "cannot write '%s'", path);
+    return SCAF_OK;
+}
+
+void deform_targets_free(deform_targets *t)
+{
+    free(t->vertex);
+    free(t->target);
+    free(t->frames);
+    memset(t, 0, sizeof *t);
+}

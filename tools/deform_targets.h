@@ -1,0 +1,43 @@
+/* tools/deform_targets: the handle file of `scaf deform`.
+ *
+ *   {"handles": [{"vertex": 0, "target": [1.5, 2]}, ...], "weight": 1000}
+ *
+ * A handle may also carry "path": [[x, y], ...], waypoints it visits in
+ * order before its target (a drag: `scaf deform` spends a few iterations
+ * on each); every handle then has a path of the same length.
+ *
+ * A strict reader for exactly this: one object with "handles" (required,
+ * an array of objects each with an integer "vertex", 0-based, and a
+ * "target" of two numbers) and "weight" (optional, a number >= 0: the
+ * handle weight ratio of opt/handle_term). Any other key, a duplicate key,
+ * a trailing comma or anything after the object is an error that names the
+ * line and what is wrong (SCAF_ERR_PARSE, exit 3). Vertex ranges are
+ * checked by the caller against the mesh. Writing: the same format, one
+ * handle per line. */
+#ifndef SCAF_TOOLS_DEFORM_TARGETS_H
+#define SCAF_TOOLS_DEFORM_TARGETS_H
+
+#include "base/error.h"
+
+typedef struct deform_targets {
+    int n;
+    int *vertex;     /* n */
+    double *target;  /* n by 2 */
+    int nframes;     /* waypoints per handle (0: none) */
+    double *frames;  /* nframes by n by 2: frame f of handle i at (f n + i) 2 */
+    int has_weight;
+    double weight;
+} deform_targets;
+
+/* Read path into *t (free with deform_targets_free); SCAF_ERR_IO when it
+ * cannot be read, SCAF_ERR_PARSE on bad content, SCAF_ERR_NOMEM. */
+scaf_status deform_targets_read(const char *path, deform_targets *t, scaf_error *err);
+
+/* Write n handles (vertex i -> T[2i..2i+1] for i < n), each with the
+ * path of nframes waypoints (frames as in deform_targets; NULL when 0). */
+scaf_status deform_targets_write(const char *path, int n, const double *T, int nframes, const double *frames,
+                                 scaf_error *err);
+
+void deform_targets_free(deform_targets *t);
+
+#endif /* SCAF_TOOLS_DEFORM_TARGETS_H */
