@@ -1,0 +1,146 @@
+/* Tests for opt/handle_term, the soft positional constraints:
+ *   - energy and slope: the closed form, the slope against a central
+ *     difference (exact for a quadratic up to rounding);
+ *   - its proxy is itself: solving its block alone puts every handle on
+ *     its target (the block is w I, the right-hand side w t);
+ *   - moving targets or the weight keeps the pattern (block version),
+ *     other vertices or dofs rebuild it; fixed handles add nothing;
+ *   - the weight is scale-free (w = ratio / n, whatever the area) and bad
+ *     input is refused with h unchanged. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "opt/handle_term.h"
+
+static void energy_and_slope(void **state)
+{
+    (void)state;
+    double X[8] = {0, 0, 1, 0, 1, 1, 0, 1}, D[8] = {0.3, -0.2, 0, 0, 1, 2, -1, 0.5};
+    int hv[3] = {0, 2, 2};
+    double ht[6] = {1, 1, 2, 1, 1, 3};
+    opt_handle_term h;
+    opt_handle_term_init(&h, 2, 4);
+    assert_int_equal(opt_handle_term_set(&h, 3, hv, ht, 0.5, NULL), SCAF_OK);
+    opt_obj_term t = opt_handle_term_make(&h);
+    double want = 0.5 * ((1 + 1) + (1 + 0) + (0 + 4));
+    assert_true(fabs(t.ops->energy(&t, X) - want) < 1e-15);
+    double e = 1.0, slope = 2.0;
+    t.ops->energy_slope(&t, X, D, &e, &slope);
+    assert_true(fabs(e - 1.0 - want) < 1e-15);
+    const double eps = 1e-4;
+    double Xp[8], Xm[8];
+    for (int i = 0; i < 8; i++) Xp[i] = X[i] + eps * D[i], Xm[i] = X[i] - eps * D[i];
+    double fd = (t.ops->energy(&t, Xp) - t.ops->energy(&t, Xm)) / (2 * eps);
+    assert_true(fabs(slope - 2.0 - fd) < 1e-9);
+    assert_true(fabs(opt_handle_term_max_error(&h, X) - 2.0) < 1e-15); /* vertex 2 to (1, 3) */
+    assert_null(t.ops->max_step);
+    assert_null(t.ops->valid);
+    opt_obj_term_free(&t);
+    opt_handle_term_free(&h);
+}
+
+/* Block and right-hand side of the term alone; dof: identity except -1s. */
+static void proxy_solves_to_targets(void **state)
+{
+    (void)state;
+    int dof[4] = {0, 1, -1, 2};
+    double X[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    int hv[3] = {3, 0, 2};
+    double ht[6] = {5, 6, -1, 2, 9, 9};
+    opt_handle_term h;
+    opt_handle_term_init(&h, 2, 4);
+    assert_int_equal(opt_handle_term_set(&h, 3, hv, ht, 2.0, NULL), SCAF_OK);
+    opt_obj_term t = opt_handle_term_make(&h);
+    assert_int_equal(t.ops->pattern(&t, dof, 3, NULL), SCAF_OK);
+    double rhs[6] = {0};
+    t.ops->fill(&t, dof, X, rhs);
+    /* diagonal: w on the handles' unknowns (dofs 0 and 2), nothing on dof 1;
+     * vertex 2 is fixed: skipped */
+    const opt_csc *A = &t.blk.A;
+    assert_int_equal(A->n, 6);
+    double diag[6] = {0};
+    for (int c = 0; c < A->n; c++)
+        for (int k = A->colptr[c]; k < A->colptr[c + 1]; k++) {
+            if (A->rowidx[k] == c) diag[c] += A->val[k];
+            else assert_true(A->val[k] == 0.0); /* w I: nothing off the diagonal */
+        }
+    assert_true(diag[0] == 2 && diag[1] == 2 && diag[4] == 2 && diag[5] == 2);
+    assert_true(diag[2] == 0 && diag[3] == 0);
+    /* x = b / w: the targets */
+    assert_true(rhs[0] / diag[0] == -1 && rhs[1] / diag[1] == 2);
+    assert_true(rhs[4] / diag[4] == 5 && rhs[5] / diag[5] == 6);
+    opt_obj_term_free(&t);
+    opt_handle_term_free(&h);
+}
+
+static void pattern_kept_while_vertices_stay(void **state)
+{
+    (void)state;
+    int dof[4] = {0, 1, 2, 3};
+    double X[8] = {0};
+    int hv[2] = {1, 3}, hv2[2] = {1, 2};
+    double ht[4] = {1, 1, 2, 2}, ht2[4] = {-1, 0, 7, 7};
+    opt_handle_term h;
+    opt_handle_term_init(&h, 2, 4);
+    assert_int_equal(opt_handle_term_set(&h, 2, hv, ht, 1.0, NULL), SCAF_OK);
+    opt_obj_term t = opt_handle_term_make(&h);
+    assert_int_equal(t.ops->pattern(&t, dof, 4, NULL), SCAF_OK);
+    unsigned v0 = t.blk.version;
+    /* new targets and weight, more free dofs (the scaffold's): kept */
+    assert_int_equal(opt_handle_term_set(&h, 2, hv, ht2, 3.0, NULL), SCAF_OK);
+    assert_int_equal(t.ops->pattern(&t, dof, 9, NULL), SCAF_OK);
+    assert_int_equal(t.blk.version, v0);
+    double rhs[8] = {0};
+    t.ops->fill(&t, dof, X, rhs);
+    assert_true(rhs[2] == -3 && rhs[6] == 21);
+    /* another vertex: rebuilt */
+    assert_int_equal(opt_handle_term_set(&h, 2, hv2, ht2, 3.0, NULL), SCAF_OK);
+    assert_int_equal(t.ops->pattern(&t, dof, 4, NULL), SCAF_OK);
+    assert_true(t.blk.version != v0);
+    unsigned v1 = t.blk.version;
+    /* another numbering: rebuilt */
+    int dof2[4] = {3, 2, 1, 0};
+    assert_int_equal(t.ops->pattern(&t, dof2, 4, NULL), SCAF_OK);
+    assert_true(t.blk.version != v1);
+    opt_obj_term_free(&t);
+    opt_handle_term_free(&h);
+}
+
+static void weight_and_errors(void **state)
+{
+    (void)state;
+    /* scale-free: the ratio per handle, whatever the area */
+    assert_true(opt_handle_weight(1e4, 1.0, 10) == 1e3);
+    assert_true(fabs(opt_handle_weight(1e4, 1e-6, 10) - 1e3) < 1e-9);
+    assert_true(opt_handle_weight(1e4, 1.0, 0) == 0.0);
+    opt_handle_term h;
+    opt_handle_term_init(&h, 2, 3);
+    int ok[1] = {2}, bad[1] = {3};
+    double t[2] = {1, 2}, nan_t[2] = {NAN, 0};
+    assert_int_equal(opt_handle_term_set(&h, 1, ok, t, 1.0, NULL), SCAF_OK);
+    scaf_error err;
+    assert_int_equal(opt_handle_term_set(&h, 1, bad, t, 1.0, &err), SCAF_ERR_USAGE);
+    assert_non_null(strstr(err.message, "vertex 3"));
+    assert_int_equal(opt_handle_term_set(&h, 1, ok, nan_t, 1.0, &err), SCAF_ERR_USAGE);
+    assert_int_equal(opt_handle_term_set(&h, 1, ok, t, -1.0, &err), SCAF_ERR_USAGE);
+    assert_int_equal(opt_handle_term_set(&h, 1, ok, t, INFINITY, &err), SCAF_ERR_USAGE);
+    assert_true(h.n == 1 && h.vertex[0] == 2 && h.target[1] == 2 && h.w == 1.0); /* unchanged */
+    opt_handle_term_free(&h);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(energy_and_slope),
+        cmocka_unit_test(proxy_solves_to_targets),
+        cmocka_unit_test(pattern_kept_while_vertices_stay),
+        cmocka_unit_test(weight_and_errors),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
