@@ -27,6 +27,7 @@
 #include "opt/proxy_system.h"
 #include "scaffold/scaf_loop.h"
 #include "scaffold/scaffold_cdt.h"
+#include "scaffold/scaffold_frozen.h"
 
 typedef struct disk {
     polar_disk m;
@@ -338,6 +339,50 @@ static void provider_plugs_in(void **state)
     disk_free(&k);
 }
 
+/* The frozen scaffold (scaffold/scaffold_frozen): the first iteration's
+ * triangles and box stay for every later iteration (only positions move),
+ * while the CDT provider alone re-meshes; a frozen scaffold that a caller
+ * inverted behind the loop's back is refused. */
+static void frozen_provider_keeps_connectivity(void **state)
+{
+    (void)state;
+    disk k;
+    scaf_loop L;
+    scaf_error err;
+    loop_on_disk(&k, &L);
+    scaffold_provider *p = scaffold_frozen_create(scaffold_cdt_create(L.nv, L.bedges, L.nbedges, &err), &err);
+    assert_non_null(p);
+    assert_int_equal(scaf_loop_set_scaffold_provider(&L, p, &err), SCAF_OK);
+    scaf_iteration_info_t info;
+    assert_int_equal(scaf_loop_step(&L, &info, &err), SCAF_OK);
+    const scaffold_view *v = scaf_loop_scaffold_view(&L);
+    int n = v->n;
+    int *T = malloc(sizeof(int) * 3 * (size_t)n);
+    assert_non_null(T);
+    memcpy(T, v->simplices, sizeof(int) * 3 * (size_t)n);
+    double lo = v->box_lo[0], hi = v->box_hi[1];
+    L.opt.scaffold.box_scale = 6.0; /* ignored once frozen */
+    int moved = 0;
+    for (int it = 0; it < 4; it++) {
+        double before = L.uv[0];
+        assert_int_equal(scaf_loop_step(&L, &info, &err), SCAF_OK);
+        assert_state_valid(&L);
+        v = scaf_loop_scaffold_view(&L);
+        assert_int_equal(v->n, n);
+        assert_memory_equal(v->simplices, T, sizeof(int) * 3 * (size_t)n);
+        assert_true(v->box_lo[0] == lo && v->box_hi[1] == hi);
+        moved += L.uv[0] != before;
+    }
+    assert_true(moved > 0);
+    /* mirror the map: every frozen triangle is now inverted */
+    for (int i = 0; i < L.nv; i++) L.uv[2 * i] = -L.uv[2 * i];
+    assert_int_equal(scaf_loop_step(&L, &info, &err), SCAF_ERR_INTERNAL);
+    assert_non_null(strstr(err.message, "frozen scaffold"));
+    free(T);
+    scaf_loop_free(&L);
+    disk_free(&k);
+}
+
 static void loop_defaults_are_the_public_ones(void **state)
 {
     (void)state;
@@ -362,6 +407,7 @@ int main(void)
         cmocka_unit_test(misoriented_start_is_internal),
         cmocka_unit_test(cdt_provider_builds_and_refreshes),
         cmocka_unit_test(provider_plugs_in),
+        cmocka_unit_test(frozen_provider_keeps_connectivity),
         cmocka_unit_test(loop_defaults_are_the_public_ones),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

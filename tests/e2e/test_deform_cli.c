@@ -1,0 +1,130 @@
+/* `scaf deform` end to end: the spiral sample (`scaf gen spiral` writes
+ * S.obj and S.targets.json) deforms to its targets, checked bijective
+ * after every iteration (--verify) and by `scaf check` on the output (its
+ * `vt`), the report has what the issue asks; --no-remesh stalls far from
+ * them. Bad input gets its exit code and a message naming what and where,
+ * and no output file. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "support/support.h"
+
+static double report_number(const char *json, const char *key)
+{
+    char k[64];
+    snprintf(k, sizeof k, "\"%s\": ", key);
+    const char *p = strstr(json, k);
+    assert_non_null(p);
+    return strtod(p + strlen(k), NULL);
+}
+
+static void spiral_end_to_end(void **state)
+{
+    (void)state;
+    char s[512], t[512], out[512], rep[512];
+    test_tmp_path("e2e_deform_S.obj", s, sizeof s);
+    test_tmp_path("e2e_deform_S.targets.json", t, sizeof t);
+    test_tmp_path("e2e_deform_out.obj", out, sizeof out);
+    test_tmp_path("e2e_deform_report.json", rep, sizeof rep);
+    assert_int_equal(test_run("%s gen spiral -o %s", SCAF_BINARY, s), 0);
+    assert_true(test_exists(t));
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s --report %s --verify --quiet", SCAF_BINARY, s, t, out, rep),
+                     0);
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    char *r = test_slurp(rep);
+    assert_non_null(r);
+    assert_true(report_number(r, "max_handle_error") < 1e-3);
+    assert_true(report_number(r, "energy") < 4.1);
+    assert_true(report_number(r, "iterations") > 92); /* the drag: 23 waypoints x 4 */
+    assert_non_null(strstr(r, "\"stop_reason\": \"tolerance\""));
+    free(r);
+    /* v and vt agree, z = 0 */
+    char *o = test_slurp(out);
+    assert_non_null(o);
+    double x, y, z, u, w;
+    const char *v = strstr(o, "\nv ");
+    const char *vt = strstr(o, "\nvt ");
+    assert_true(v && vt);
+    assert_int_equal(sscanf(v, " v %lf %lf %lf", &x, &y, &z), 3);
+    assert_int_equal(sscanf(vt, " vt %lf %lf", &u, &w), 2);
+    assert_true(x == u && y == w && z == 0.0);
+    free(o);
+    /* frozen scaffold: locks */
+    assert_int_equal(
+        test_run("%s deform %s --targets %s -o %s --report %s --no-remesh --quiet", SCAF_BINARY, s, t, out, rep), 0);
+    r = test_slurp(rep);
+    assert_non_null(r);
+    assert_true(report_number(r, "max_handle_error") > 0.1);
+    free(r);
+}
+
+/* A targets file with TEXT: exit status and a stderr that names WHAT. */
+static void bad_targets(const char *mesh_path, const char *text, int code, const char *what)
+{
+    char t[512], out[512], log[512];
+    test_tmp_path("e2e_deform_bad.json", t, sizeof t);
+    test_tmp_path("e2e_deform_bad_out.obj", out, sizeof out);
+    test_tmp_path("e2e_deform_bad.txt", log, sizeof log);
+    FILE *f = fopen(t, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+    remove(out);
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s 2> %s", SCAF_BINARY, mesh_path, t, out, log), code);
+    assert_int_equal(test_exists(out), code == 0);
+    char *e = test_slurp(log);
+    assert_non_null(e);
+    if (!strstr(e, what)) print_error("stderr lacks '%s':\n%s\n", what, e);
+    assert_non_null(strstr(e, what));
+    free(e);
+}
+
+static void bad_input(void **state)
+{
+    (void)state;
+    char g[512], hs[512], out[512];
+    test_tmp_path("e2e_deform_grid.obj", g, sizeof g);
+    test_tmp_path("e2e_deform_hemi.obj", hs, sizeof hs);
+    test_tmp_path("e2e_deform_any.obj", out, sizeof out);
+    assert_int_equal(test_run("%s gen grid --size 4 -o %s", SCAF_BINARY, g), 0);
+    bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [1, 2]}]}", 0, "");
+    bad_targets(g, "{\"handles\": [\n{\"vertex\": 0, \"target\": [1, 2]},\n{\"vertex\": 1.5, \"target\": [0, 0]}]}", 3,
+                ":3: \"vertex\" must be an integer");
+    bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [1]}]}", 3, "two numbers");
+    bad_targets(g, "{\"handles\": [], \"wieght\": 3}", 3, "unknown or repeated key \"wieght\"");
+    bad_targets(g, "{\"handles\": []} x", 3, "unexpected text after the object");
+    bad_targets(g, "{\"weight\": 1}", 3, "no \"handles\"");
+    bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [1, 2], \"path\": [[0, 0]]},\n"
+                   "{\"vertex\": 1, \"target\": [1, 2]}]}", 3, "handle 2 has a path of 0 points");
+    bad_targets(g, "{\"handles\": [{\"vertex\": 25, \"target\": [1, 2]}]}", 4, "vertex 25 is not one of the mesh's 25");
+    /* not planar, missing targets file, usage */
+    assert_int_equal(test_run("%s gen hemisphere --size 2 -o %s", SCAF_BINARY, hs), 0);
+    char t[512];
+    test_tmp_path("e2e_deform_ok.json", t, sizeof t);
+    FILE *f = fopen(t, "w");
+    assert_non_null(f);
+    fputs("{\"handles\": []}", f);
+    fclose(f);
+    remove(out);
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s 2> /dev/null", SCAF_BINARY, hs, t, out), 4);
+    assert_int_equal(test_run("%s deform %s --targets %s.missing -o %s 2> /dev/null", SCAF_BINARY, g, t, out), 3);
+    assert_int_equal(test_run("%s deform %s -o %s 2> /dev/null", SCAF_BINARY, g, out), 2);
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s --iterations x 2> /dev/null", SCAF_BINARY, g, t, out), 2);
+    assert_int_equal(test_run("%s gen spiral -o - > /dev/null 2>&1", SCAF_BINARY), 2);
+    assert_false(test_exists(out));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(spiral_end_to_end),
+        cmocka_unit_test(bad_input),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
