@@ -235,6 +235,24 @@ SCAF_API scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int n
 SCAF_API scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_fn progress,
                                     void *user);
 
+/* Soft positional constraints for interactive or deformation-like use:
+ * from the next scaf_param_run on, the objective also has
+ *   w * sum_i ||uv[idx[i]] - targets[i]||^2,  w = weight_ratio / n
+ * (idx: n output UV indices, 0 <= idx[i] < scaf_param_uv_count; targets:
+ * n by 2 in the units of the UVs of scaf_param_get_uv). weight_ratio is
+ * dimensionless: the distortion energy is an area and a mean squared
+ * handle error of A (A the total 3D area) costs weight_ratio * A, so the
+ * result does not depend on the mesh's scale; SCAF_HANDLE_WEIGHT_DEFAULT
+ * (1e4) makes the handles dominate (what `scaf deform` uses). The map
+ * stays bijective whatever the targets: handles get as close as that
+ * allows. Call again to move handles or change them (n = 0: none);
+ * nothing but the handles' own share of the system is rebuilt. Dropped by
+ * scaf_param_set_mesh. SCAF_ERR_USAGE without a mesh, on an index out of
+ * range, a target that is not finite or a weight ratio < 0. */
+#define SCAF_HANDLE_WEIGHT_DEFAULT 1e4
+SCAF_API scaf_status scaf_param_set_handles(scaf_param_t *p, int n, const int *idx, const double *targets,
+                                            double weight_ratio);
+
 /* Why the last scaf_param_run stopped (SCAF_STOP_NONE before any run or
  * after scaf_param_set_mesh). */
 SCAF_API scaf_stop_reason scaf_param_stop_reason(const scaf_param_t *p);

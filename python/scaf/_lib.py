@@ -150,6 +150,7 @@ SIGNATURES = {
     "scaf_param_stop_reason": (c_enum, [_P]),
     "scaf_param_uv_count": (_int, [_P]),
     "scaf_param_get_uv": (c_enum, [_P, _D, _I]),
+    "scaf_param_set_handles": (c_enum, [_P, _int, _I, _D, ctypes.c_double]),
     "scaf_param_error": (ctypes.c_char_p, [_P]),
     "scaf_param_destroy": (None, [_P]),
     "scaf_atlas_options_default": (AtlasOptions, []),

@@ -24,6 +24,7 @@
 #include "geom/coord_scale.h"
 #include "mesh/uv_charts.h"
 #include "opt/embed.h"
+#include "opt/handle_term.h"
 #include "scaffold/scaffold_defaults.h"
 
 /* Boundary loops tried as the outer one of a chart with holes (the
@@ -42,6 +43,8 @@ struct scaf_param {
     int pos_exp;     /* the loop works on positions / 2^pos_exp (geom/coord_scale) */
     scaf_loop loop;
     scaf_stop_reason stop; /* why the last run stopped */
+    opt_handle_term handles; /* soft positional constraints (scaf_param_set_handles) */
+    int handles_added;       /* the term is in the loop */
 };
 
 scaf_options_t scaf_options_default(void)
@@ -146,6 +149,8 @@ scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *option
 static void drop_mesh(scaf_param_t *p)
 {
     scaf_loop_free(&p->loop);
+    opt_handle_term_free(&p->handles);
+    p->handles_added = 0;
     free(p->Fw);
     p->Fw = NULL;
     p->has_mesh = 0;
@@ -508,6 +513,32 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
         }
     }
     return SCAF_OK;
+}
+
+scaf_status scaf_param_set_handles(scaf_param_t *p, int n, const int *idx, const double *targets,
+                                   double weight_ratio)
+{
+    if (!p) return SCAF_ERR_USAGE;
+    err_clear(&p->err);
+    if (!p->has_mesh) return err_set(&p->err, SCAF_ERR_USAGE, "no mesh: call scaf_param_set_mesh first");
+    if (n < 0 || (n > 0 && (!idx || !targets)))
+        return err_set(&p->err, SCAF_ERR_USAGE, "handles: n >= 0 and, when n > 0, idx and targets are needed");
+    if (!(weight_ratio >= 0.0) || !isfinite(weight_ratio))
+        return err_set(&p->err, SCAF_ERR_USAGE, "handles: the weight ratio must be a finite number >= 0");
+    /* targets in the loop's units (positions / 2^pos_exp, see set_mesh) */
+    double *t = malloc(sizeof(double) * 2 * (size_t)(n > 0 ? n : 1));
+    if (!t) return err_nomem(&p->err, "handles");
+    for (size_t i = 0; i < 2 * (size_t)n; i++) t[i] = ldexp(targets[i], -p->pos_exp);
+    if (!p->handles_added) opt_handle_term_init(&p->handles, 2, p->nw);
+    scaf_status st =
+        opt_handle_term_set(&p->handles, n, idx, t, opt_handle_weight(weight_ratio, p->loop.total_area, n), &p->err);
+    free(t);
+    if (st != SCAF_OK || p->handles_added) return st;
+    opt_obj_term term = opt_handle_term_make(&p->handles);
+    st = scaf_loop_add_term(&p->loop, &term, &p->err);
+    p->handles_added = st == SCAF_OK;
+    if (st != SCAF_OK) opt_handle_term_free(&p->handles);
+    return st;
 }
 
 double scaf_param_energy(const scaf_param_t *p) { return p && p->has_mesh ? scaf_loop_energy(&p->loop) : NAN; }
