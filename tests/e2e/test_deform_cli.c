@@ -55,6 +55,12 @@ static void spiral_end_to_end(void **state)
     assert_int_equal(sscanf(vt, " vt %lf %lf", &u, &w), 2);
     assert_true(x == u && y == w && z == 0.0);
     free(o);
+    /* interrupted during the run: exit 8, nothing written */
+    remove(out);
+    assert_int_equal(test_run("SCAF_TEST_RAISE_SIGNAL_AT=2 %s deform %s --targets %s -o %s 2> /dev/null", SCAF_BINARY, s,
+                              t, out),
+                     8);
+    assert_false(test_exists(out));
     /* frozen scaffold: locks */
     assert_int_equal(
         test_run("%s deform %s --targets %s -o %s --report %s --no-remesh --quiet", SCAF_BINARY, s, t, out, rep), 0);
