@@ -71,7 +71,7 @@ static scaf_status number(reader *r, double *v, const char *what)
 
 /* "path": [[x, y], ...] of the handle being read (index t->n) into
  * r->paths; the first handle's path sets the length every other must have. */
-static scaf_status path(reader *r, int *len)
+static scaf_status read_path(reader *r, int *len)
 {
     if (!eat(r, '[')) return fail(r, "\"path\" must be an array of [x, y]");
     if (eat(r, ']')) return SCAF_OK;
@@ -132,7 +132,7 @@ static scaf_status handle(reader *r)
             if (!eat(r, ']')) return fail(r, "\"target\" must have exactly two numbers");
             seen_t = 1;
         } else if (!strcmp(k, "path") && len == 0) {
-            if ((st = path(r, &len))) return st;
+            if ((st = read_path(r, &len))) return st;
         } else {
             return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: unknown or repeated key \"%s\" in a handle", r->path,
                            r->line, k);
