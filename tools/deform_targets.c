@@ -214,9 +214,9 @@ scaf_status deform_targets_read(const char *path, deform_targets *t, scaf_error 
         t->frames = malloc(sizeof(double) * 2 * (size_t)r.path_len * (size_t)t->n);
         if (!t->frames) st = err_nomem(err, "handle paths");
         for (int i = 0; st == SCAF_OK && i < t->n; i++)
-            for (int f = 0; f < r.path_len; f++)
+            for (int k = 0; k < r.path_len; k++)
                 for (int a = 0; a < 2; a++)
-                    t->frames[2 * ((size_t)f * t->n + i) + a] = r.paths[2 * ((size_t)i * r.path_len + f) + a];
+                    t->frames[2 * ((size_t)k * t->n + i) + a] = r.paths[2 * ((size_t)i * r.path_len + k) + a];
         t->nframes = r.path_len;
     }
     free(r.paths);
