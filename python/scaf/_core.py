@@ -30,6 +30,10 @@ lib, library_path = _lib.load()
 __version__ = lib.scaf_version().decode()
 
 
+# scaf_param_set_handles' default weight ratio (SCAF_HANDLE_WEIGHT_DEFAULT)
+HANDLE_WEIGHT_DEFAULT = 1e4
+
+
 def _status_name(status):
     s = lib.scaf_status_name(status)
     return s.decode() if s else "status %d" % status
@@ -455,6 +459,21 @@ class Param(_Handle):
     def uv_count(self):
         with self._use() as h:
             return lib.scaf_param_uv_count(h)
+
+    def set_handles(self, idx, targets, weight=HANDLE_WEIGHT_DEFAULT):
+        """Soft positional constraints from the next run on: UV index
+        idx[i] pulled towards targets[i] (n x 2, the units of get_uv's UV),
+        weight: the dimensionless ratio of scaf_param_set_handles (default
+        1e4: the handles dominate). The map stays bijective whatever the
+        targets. An empty idx removes them; set_mesh drops them."""
+        n = len(idx)
+        i = _arrays.matrix([[int(k)] for k in idx], "idx", 1, True) if n else None
+        t = _arrays.matrix(targets, "targets", 2, False) if n else None
+        if n and t.rows != n:
+            raise ValueError("targets has %d rows, idx has %d: one target per handle" % (t.rows, n))
+        with self._use() as h:
+            self._check(lib.scaf_param_set_handles(h, n, i.ptr if n else None, t.ptr if n else None,
+                                                   float(weight)))
 
     def get_uv(self):
         """(UV #UV x 2, FT #F x 3) of the current map."""

@@ -234,6 +234,22 @@ class ParamTest(unittest.TestCase):
             self.assertEqual(r.ft.dtype, np.int32)
             self.assertEqual(r.uv.shape[1], 2)
 
+    def test_handles_pull_a_vertex_bijectively(self):
+        with scaf.Param() as p:
+            p.set_mesh(self.V, self.F)
+            uv0, _ = p.get_uv()
+            target = [float(uv0[0][0]) + 0.5, float(uv0[0][1]) + 0.25]
+            p.set_handles([0], [target])
+            p.run(10)
+            uv, ft = p.get_uv()
+            self.check_map(p.result(), len(self.F))
+            self.assertLess(math.hypot(uv[0][0] - target[0], uv[0][1] - target[1]), 0.05)
+            p.set_handles([], [])
+            with self.assertRaises(scaf.UsageError):
+                p.set_handles([10 ** 6], [target])
+            with self.assertRaises(ValueError):
+                p.set_handles([0, 1], [target])
+
     def test_lists_and_other_dtypes_give_the_same_map(self):
         if np is None:
             self.skipTest("numpy not available")
