@@ -88,6 +88,14 @@ typedef struct atlas_options {
                                     packer (app/atlas_pack), kept only when
                                     the exact checks pass and it packs
                                     better (1) */
+    int rotate;                  /* 1: turn charts beyond multiples of 45
+                                    degrees: the packer starts from each
+                                    chart's least-area bounding rectangle,
+                                    and the layout is turned to its
+                                    smallest bounding square after the
+                                    re-placement and after compaction
+                                    (app/atlas_align; each turn checked
+                                    exactly, kept only when valid) (1) */
     int pack_cells;              /* raster cells along the square (1024) */
     int pack_picks;              /* strategies ranked on a grid of
                                     pack_cells / 2 whose best this many are
@@ -145,6 +153,7 @@ typedef struct atlas {
                                    layout (the last iterations overshot the
                                    distortion tolerance or packed worse);
                                    the scaffold is rebuilt at the next step */
+    int turns;                  /* layout turns kept (rotate) */
     int stiffened;              /* scaffold triangles stiffened (last iteration) */
     scaf_stop_reason settle_stop, compact_stop; /* why each phase stopped
                                    (SCAF_STOP_NONE: not run) */
