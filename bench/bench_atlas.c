@@ -10,7 +10,9 @@
  * >= the padding exactly), E settled / final, seconds (total, setup,
  * settling iterations, repack and per-iteration measures, compaction
  * iterations, median per iteration), or the error for meshes whose charts
- * are refused. Usage: bench_atlas [MESH...] (default: the seam meshes).
+ * are refused. Usage: bench_atlas [--no-rotate] [MESH...] (default: the
+ * seam meshes and the 500 patches; --no-rotate: charts turned by multiples
+ * of 45 degrees only, no layout turn).
  */
 #include <math.h>
 #include <stdio.h>
@@ -51,6 +53,29 @@ static int cmp(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* One long strip, 8 x 1, nx x ny cells, gently bent in z. */
+static void long_strip(mesh *m, int nx, int ny)
+{
+    memset(m, 0, sizeof *m);
+    m->nv = (nx + 1) * (ny + 1);
+    m->nf = 2 * nx * ny;
+    m->V = malloc(sizeof(double) * 3 * (size_t)m->nv);
+    m->F = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    for (int j = 0; j <= ny; j++)
+        for (int i = 0; i <= nx; i++) {
+            double *v = m->V + 3 * (size_t)(j * (nx + 1) + i), x = 8.0 * i / nx, y = 1.0 * j / ny;
+            v[0] = x;
+            v[1] = y;
+            v[2] = 0.3 * sin(0.8 * x) * cos(0.5 * y);
+        }
+    for (int j = 0, f = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++, f += 2) {
+            int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
+            int *t = m->F + 3 * (size_t)f;
+            t[0] = a, t[1] = b, t[2] = d, t[3] = a, t[4] = d, t[5] = c;
+        }
+}
+
 static void many_patches(mesh *m, int n)
 {
     int r = 2, nvp = 9, nfp = 8;
@@ -81,10 +106,13 @@ static void many_patches(mesh *m, int n)
     }
 }
 
+static int no_rotate; /* --no-rotate: atlas option rotate = 0 */
+
 static void bench(const char *name, mesh *m)
 {
     atlas_options o = atlas_options_default();
     o.padding = 4.0 / 1024.0;
+    if (no_rotate) o.rotate = 0;
     atlas a;
     scaf_error err;
     err_clear(&err);
@@ -129,6 +157,12 @@ static void bench(const char *name, mesh *m)
 
 int main(int argc, char **argv)
 {
+    if (argc > 1 && !strcmp(argv[1], "--no-rotate")) {
+        no_rotate = 1;
+        argv[1] = argv[0];
+        argv++;
+        argc--;
+    }
     const char *seams[] = {"seams/spot.obj", "seams/blub.obj", "seams/human_neutral.obj",
                            "seams/myles_knot1_seamed.obj", "seams/myles_eight_seamed.obj"};
     printf("| mesh | charts | split vt | iterations | eff. settled (grid) | eff. re-placed | eff. final | "
@@ -155,6 +189,9 @@ int main(int argc, char **argv)
         mesh m;
         many_patches(&m, 500);
         bench("generated: 500 patches", &m);
+        mesh_free(&m);
+        long_strip(&m, 96, 12);
+        bench("generated: 8 x 1 strip", &m);
         mesh_free(&m);
     }
     return 0;

@@ -16,14 +16,20 @@
  *   1. settle: plain SCAF iterations until the relative decrease of E is
  *      below settle_tolerance;
  *   1b. re-placement (repack): the settled charts are moved rigidly (a
- *      translation and a multiple of 45 degrees) by a raster packer
+ *      translation and a multiple of 45 degrees, from their settled
+ *      orientation and, with rotate, also from each chart turned to its
+ *      least-area bounding rectangle, app/atlas_align) by a raster packer
  *      (app/atlas_pack: several placement strategies ranked on a coarse
  *      grid, the best pack_picks placed on the full grid) into a square, with
  *      pack_gap_factor times the padding between charts; the new layout
  *      is used only when every triangle keeps its exact orientation, the
  *      exact checker proves it bijective, the padding holds and it packs
  *      better;
- *   2. compaction: SCAF iterations with a tight box (compact_box_scale),
+ *   1c. with rotate: the whole layout turned to its smallest bounding
+ *      square (kept when every triangle stays exactly positive, the
+ *      padding holds and the exact checker proves it bijective);
+ *   2. compaction (also for a single chart: the box shrinks its long
+ *      axis, within the distortion tolerance): SCAF iterations with a tight box (compact_box_scale),
  *      a stronger scaffold (compact_lambda_ratio) and, before each solve
  *      (the loop's prepare hook, after the rest shapes are taken): the
  *      box vertices moved toward its center by a fraction of their
@@ -36,6 +42,8 @@
  *      lowers its own total energy. It stops when the layout's side stops
  *      shrinking, when E rises above (1 + distortion_tolerance) times the
  *      settled E, after three iterations without a step, or at the cap.
+ *   3. with rotate: the layout turned again to its smallest bounding
+ *      square (same checks), before the normalization.
  * Padding: the loop's feasibility hook rejects any step after which two
  * different charts are closer than padding * side (side = the longest
  * side of the charts' UV bounding box); the loop then first retries the
