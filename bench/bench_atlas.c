@@ -53,25 +53,25 @@ static int cmp(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
-/* One long strip, 8 x 1, nx x ny cells, gently bent in z. */
-static void long_strip(mesh *m, int nx, int ny)
+/* Append an nx x ny grid patch of size sx x sy at x offset ox, bent in z
+ * by `bend`, to m (arrays grown). */
+static void add_patch(mesh *m, double sx, double sy, int nx, int ny, double ox, double bend)
 {
-    memset(m, 0, sizeof *m);
-    m->nv = (nx + 1) * (ny + 1);
-    m->nf = 2 * nx * ny;
-    m->V = malloc(sizeof(double) * 3 * (size_t)m->nv);
-    m->F = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    int v0 = m->nv;
+    m->V = realloc(m->V, sizeof(double) * 3 * (size_t)(m->nv + (nx + 1) * (ny + 1)));
+    m->F = realloc(m->F, sizeof(int) * 3 * (size_t)(m->nf + 2 * nx * ny));
+    if (!m->V || !m->F) abort();
     for (int j = 0; j <= ny; j++)
         for (int i = 0; i <= nx; i++) {
-            double *v = m->V + 3 * (size_t)(j * (nx + 1) + i), x = 8.0 * i / nx, y = 1.0 * j / ny;
-            v[0] = x;
+            double *v = m->V + 3 * (size_t)(m->nv++), x = sx * i / nx, y = sy * j / ny;
+            v[0] = x + ox;
             v[1] = y;
-            v[2] = 0.3 * sin(0.8 * x) * cos(0.5 * y);
+            v[2] = bend * sin(0.8 * x) * cos(0.5 * y);
         }
-    for (int j = 0, f = 0; j < ny; j++)
-        for (int i = 0; i < nx; i++, f += 2) {
-            int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
-            int *t = m->F + 3 * (size_t)f;
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++, m->nf += 2) {
+            int a = v0 + j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
+            int *t = m->F + 3 * (size_t)m->nf;
             t[0] = a, t[1] = b, t[2] = d, t[3] = a, t[4] = d, t[5] = c;
         }
 }
@@ -190,8 +190,16 @@ int main(int argc, char **argv)
         many_patches(&m, 500);
         bench("generated: 500 patches", &m);
         mesh_free(&m);
-        long_strip(&m, 96, 12);
+        memset(&m, 0, sizeof m);
+        add_patch(&m, 8.0, 1.0, 96, 12, 0.0, 0.3);
         bench("generated: 8 x 1 strip", &m);
+        mesh_free(&m);
+        /* one large square (settles at 45 degrees from its Tutte circle)
+         * and 50 small ones */
+        memset(&m, 0, sizeof m);
+        add_patch(&m, 10.0, 10.0, 10, 10, 0.0, 0.0);
+        for (int p = 0; p < 50; p++) add_patch(&m, 0.6 + 0.05 * (p % 5), 0.6, 2, 2, 20.0 + 3.0 * p, 0.05);
+        bench("generated: 1 large + 50 small squares", &m);
         mesh_free(&m);
     }
     return 0;
