@@ -1,0 +1,220 @@
+/* tools/cmd_flow: `scaf flow IN -o OUT --steps N`, conformalized mean
+ * curvature flow of a closed surface (opt/cmcf).
+ *
+ * The surface is normalized (area-weighted centroid at the origin, unit
+ * area: --delta then means the same for every input) and flowed N steps;
+ * with --until-free the run stops at the first step whose surface the
+ * exact checker (geom/self_intersect) proves free of self-intersections,
+ * and fails (exit 6, nothing written) when none of the N steps is. The
+ * output is an OBJ with the input's vertices and faces at the flowed,
+ * normalized positions. Exit status: 0 written, 2 usage, 3 input
+ * unreadable, 4 not a closed manifold surface without zero-area faces,
+ * 5 output not written, 6 the flow failed or did not free the surface,
+ * 7 out of memory, 8 interrupted.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "base/timer.h"
+#include "cli_args.h"
+#include "cli_mesh_io.h"
+#include "cli_outputs.h"
+#include "cli_signal.h"
+#include "exit_codes.h"
+#include "geom/self_intersect.h"
+#include "mesh/mesh_io.h"
+#include "mesh/topology.h"
+#include "opt/cmcf.h"
+
+#define FLOW_MAX_STEPS 100000
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: scaf flow IN -o OUT.obj --steps N [--delta D] [--until-free] [--quiet]\n"
+            "\n"
+            "Conformalized mean curvature flow (Kazhdan, Solomon, Ben-Chen 2012) of the\n"
+            "closed surface IN: it becomes rounder at every step and, after a few, free of\n"
+            "self-intersections. The surface is first moved and scaled to unit area\n"
+            "(area-weighted centroid at the origin); every step solves\n"
+            "(M - D L) U' = M U (L: cotangent Laplacian of IN, M: barycentric mass of the\n"
+            "current shape) and normalizes again. Writes the input's vertices and faces at\n"
+            "the flowed positions, in that normalized frame.\n"
+            "\n"
+            "  -o, --output FILE  the OBJ to write (nothing is left on failure)\n"
+            "  -n, --steps N      steps to run, 1..%d (with --until-free: at most N)\n"
+            "  --delta D          time step, > 0 (default 1e-3)\n"
+            "  --until-free       stop at the first step whose surface is free of\n"
+            "                     self-intersections (exact check after every step);\n"
+            "                     fail (exit 6) if none of the N steps is\n"
+            "  -q, --quiet        no per-step lines on stderr (step, seconds, and with\n"
+            "                     --until-free the intersecting face pairs)\n"
+            CLI_OUTPUTS_HELP
+            "\n",
+            FLOW_MAX_STEPS);
+    exit_codes_print(out);
+}
+
+/* 0 when m is a closed manifold surface the flow can run on, else the
+ * exit status after printing why. */
+static int check_closed_manifold(const char *in, const mesh *m)
+{
+    mesh_topology t;
+    scaf_error err;
+    err_clear(&err);
+    scaf_status st = mesh_topology_compute(m, &t, &err);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf flow: %s: %s\n", in, err.message);
+        return exit_code_for(st);
+    }
+    char why[256] = "";
+    if (t.faces == 0)
+        snprintf(why, sizeof why, "it has no face");
+    else if (t.boundary_edges > 0)
+        snprintf(why, sizeof why, "the surface is open: %d boundary edges in %d loops", t.boundary_edges,
+                 t.boundary_loops);
+    else if (!t.manifold)
+        snprintf(why, sizeof why, "the surface is not manifold: %d non-manifold edges, %d non-manifold vertices",
+                 t.non_manifold_edges, t.non_manifold_vertices);
+    else if (t.degenerate_faces > 0)
+        snprintf(why, sizeof why, "%d faces have zero area (no cotangent weights)", t.degenerate_faces);
+    else if (t.unreferenced_vertices > 0)
+        snprintf(why, sizeof why, "%d vertices belong to no face", t.unreferenced_vertices);
+    mesh_topology_free(&t);
+    if (!why[0]) return EXIT_OK;
+    fprintf(stderr, "scaf flow: %s: %s; the flow needs a closed manifold triangle surface\n", in, why);
+    return EXIT_MESH;
+}
+
+/* The exact check of the current surface: its intersecting pairs (0 =
+ * free), or -1 after printing why it could not run. */
+static long long intersecting_pairs(const mesh *m, int *status)
+{
+    si_report r;
+    scaf_error err;
+    err_clear(&err);
+    scaf_status st = si_check(m->nv, m->V, m->nf, m->F, &r, &err);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf flow: self-intersection check: %s\n", err.message);
+        *status = exit_code_for(st);
+        return -1;
+    }
+    return r.intersection_free ? 0 : (r.pairs > 0 ? r.pairs : 1);
+}
+
+/* Flow m->V in place. 0, or the exit status after printing why. */
+static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet)
+{
+    scaf_error err;
+    err_clear(&err);
+    cmcf f;
+    scaf_status st = cmcf_init(&f, m->nv, m->V, m->nf, m->F, delta, &err);
+    if (st == SCAF_OK) st = cmcf_normalize(m->nv, m->V, m->nf, m->F, &err);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf flow: %s\n", err.message);
+        cmcf_free(&f);
+        return exit_code_for(st);
+    }
+    int rc = EXIT_OK;
+    long long pairs = -1;
+    if (until_free) {
+        pairs = intersecting_pairs(m, &rc);
+        if (pairs == 0 && !quiet) fprintf(stderr, "scaf flow: the input is already free of self-intersections\n");
+        else if (pairs > 0 && !quiet) fprintf(stderr, "scaf flow: input: %lld intersecting face pairs\n", pairs);
+    }
+    for (int s = 1; s <= steps && pairs != 0 && rc == EXIT_OK; s++) {
+        double t0 = timer_now();
+        st = cmcf_step(&f, m->V, &err);
+        if (st != SCAF_OK) {
+            fprintf(stderr, "scaf flow: %s\n", err.message);
+            rc = exit_code_for(st);
+            break;
+        }
+        double t_step = timer_now() - t0;
+        if (until_free && (pairs = intersecting_pairs(m, &rc)) < 0) break;
+        if (!quiet) {
+            if (until_free)
+                fprintf(stderr, "scaf flow: step %d: %.3f s, check %.3f s, %lld intersecting face pairs\n", s,
+                        t_step, timer_now() - t0 - t_step, pairs);
+            else
+                fprintf(stderr, "scaf flow: step %d: %.3f s\n", s, t_step);
+        }
+        cli_signal_test_point(s);
+        if (cli_signal_caught()) break;
+    }
+    int done = f.steps;
+    cmcf_free(&f);
+    if (rc == EXIT_OK && until_free && pairs == 0 && done > 0 && !quiet)
+        fprintf(stderr, "scaf flow: free of self-intersections after %d step%s\n", done, done > 1 ? "s" : "");
+    if (rc == EXIT_OK && until_free && pairs != 0 && !cli_signal_caught()) {
+        fprintf(stderr, "scaf flow: the surface still intersects itself after %d steps (%lld face pairs); nothing written\n",
+                steps, pairs);
+        rc = EXIT_NUMERIC;
+    }
+    return rc;
+}
+
+static int flow_main(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL;
+    double delta = 1e-3;
+    int steps = 0, until_free = 0, quiet = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            usage(stdout);
+            return EXIT_OK;
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            CLI_NEED_VALUE("flow");
+            out = v;
+        } else if (!strcmp(a, "-n") || !strcmp(a, "--steps")) {
+            CLI_NEED_VALUE("flow");
+            if (!cli_parse_int(v, &steps)) CLI_BAD_VALUE("flow");
+            if (steps < 1 || steps > FLOW_MAX_STEPS) CLI_OUT_OF_RANGE("flow", "in 1..100000");
+        } else if (!strcmp(a, "--delta")) {
+            CLI_NEED_VALUE("flow");
+            if (!cli_parse_double(v, &delta)) CLI_BAD_VALUE("flow");
+            if (!(delta > 0) || delta > 1e6) CLI_OUT_OF_RANGE("flow", "> 0 and <= 1e6");
+        } else if (!strcmp(a, "--until-free")) {
+            until_free = 1;
+        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
+            quiet = 1;
+        } else if (a[0] == '-' && a[1] != '\0') {
+            fprintf(stderr, "scaf flow: unknown option '%s' (see --help)\n", a);
+            return EXIT_USAGE;
+        } else if (in) {
+            fprintf(stderr, "scaf flow: one input only ('%s' and '%s')\n", in, a);
+            return EXIT_USAGE;
+        } else {
+            in = a;
+        }
+    }
+    if (!in || !out || !steps) {
+        fprintf(stderr, "scaf flow: %s (see --help)\n",
+                !in ? "missing the input surface" : !out ? "missing -o OUT.obj" : "missing --steps N");
+        return EXIT_USAGE;
+    }
+    cli_outputs outs;
+    cli_outputs_init(&outs, "flow", in);
+    int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
+    int rc = cli_outputs_check(&outs);
+    if (rc != EXIT_OK) return rc;
+    mesh m;
+    mesh_read_info info;
+    if ((rc = cli_read_mesh("flow", in, quiet, &m, &info)) != EXIT_OK) return rc;
+    if ((rc = check_closed_manifold(in, &m)) == EXIT_OK) rc = run_flow(&m, steps, delta, until_free, quiet);
+    if (rc == EXIT_OK && cli_signal_report("flow")) rc = EXIT_CANCELLED;
+    if (rc == EXIT_OK) {
+        scaf_error err;
+        err_clear(&err);
+        const char *path = cli_outputs_begin(&outs, k, &err);
+        rc = cli_outputs_end(&outs, k, path ? mesh_write_obj(path, &m, &err) : SCAF_ERR_IO, &err);
+        if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
+    }
+    cli_outputs_abort(&outs);
+    mesh_free(&m);
+    return rc;
+}
+
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_flow(int argc, char **argv) { return cli_signal_run(flow_main, argc, argv); }
