@@ -10,11 +10,14 @@
  * normalized positions. Exit status: 0 written, 2 usage, 3 input
  * unreadable, 4 not a closed manifold surface without zero-area faces,
  * 5 output not written, 6 the flow failed or did not free the surface,
- * 7 out of memory, 8 interrupted.
+ * 7 out of memory, 8 interrupted. --report writes a JSON of the steps.
  */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "base/atomic_file.h"
+#include "base/json_write.h"
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_mesh_io.h"
@@ -31,7 +34,8 @@
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: scaf flow IN -o OUT.obj --steps N [--delta D] [--until-free] [--quiet]\n"
+            "usage: scaf flow IN -o OUT.obj --steps N [--delta D] [--until-free] [--report R.json]\n"
+            "                 [--quiet]\n"
             "\n"
             "Conformalized mean curvature flow (Kazhdan, Solomon, Ben-Chen 2012) of the\n"
             "closed surface IN: it becomes rounder at every step and, after a few, free of\n"
@@ -47,6 +51,8 @@ static void usage(FILE *out)
             "  --until-free       stop at the first step whose surface is free of\n"
             "                     self-intersections (exact check after every step);\n"
             "                     fail (exit 6) if none of the N steps is\n"
+            "  --report FILE      a JSON report: delta, steps done, whether the result is\n"
+            "                     free, and per step its seconds (and intersecting pairs)\n"
             "  -q, --quiet        no per-step lines on stderr (step, seconds, and with\n"
             "                     --until-free the intersecting face pairs)\n"
             CLI_OUTPUTS_HELP
@@ -102,8 +108,42 @@ static long long intersecting_pairs(const mesh *m, int *status)
     return r.intersection_free ? 0 : (r.pairs > 0 ? r.pairs : 1);
 }
 
+/* What the run did, for --report. */
+typedef struct flow_log {
+    int steps;           /* steps done */
+    double *seconds;     /* per step (steps entries; room for the maximum) */
+    long long *pairs;    /* per step with --until-free, -1 otherwise */
+    long long input_pairs; /* -1 without --until-free */
+} flow_log;
+
+static scaf_status write_report(const char *path, const char *in, double delta, int until_free, const flow_log *g,
+                                scaf_error *err)
+{
+    atomic_file a;
+    scaf_status st = atomic_open(&a, path, err);
+    if (st != SCAF_OK) return st;
+    FILE *o = a.f;
+    fputs("{\n  \"input\": ", o);
+    json_write_string(o, in);
+    fputs(",\n  \"delta\": ", o);
+    json_write_number(o, delta);
+    fprintf(o, ",\n  \"until_free\": %s,\n  \"steps\": %d", until_free ? "true" : "false", g->steps);
+    if (until_free)
+        fprintf(o, ",\n  \"input_pairs\": %lld,\n  \"intersection_free\": %s", g->input_pairs,
+                (g->steps ? g->pairs[g->steps - 1] : g->input_pairs) == 0 ? "true" : "false");
+    fputs(",\n  \"per_step\": [", o);
+    for (int s = 0; s < g->steps; s++) {
+        fprintf(o, "%s\n    {\"step\": %d, \"seconds\": ", s ? "," : "", s + 1);
+        json_write_number(o, g->seconds[s]);
+        if (until_free) fprintf(o, ", \"pairs\": %lld", g->pairs[s]);
+        fputc('}', o);
+    }
+    fputs("\n  ]\n}\n", o);
+    return atomic_commit(&a, err);
+}
+
 /* Flow m->V in place. 0, or the exit status after printing why. */
-static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet)
+static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet, flow_log *g)
 {
     scaf_error err;
     err_clear(&err);
@@ -118,7 +158,7 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet)
     int rc = EXIT_OK;
     long long pairs = -1;
     if (until_free) {
-        pairs = intersecting_pairs(m, &rc);
+        g->input_pairs = pairs = intersecting_pairs(m, &rc);
         if (pairs == 0 && !quiet) fprintf(stderr, "scaf flow: the input is already free of self-intersections\n");
         else if (pairs > 0 && !quiet) fprintf(stderr, "scaf flow: input: %lld intersecting face pairs\n", pairs);
     }
@@ -132,6 +172,8 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet)
         }
         double t_step = timer_now() - t0;
         if (until_free && (pairs = intersecting_pairs(m, &rc)) < 0) break;
+        g->seconds[g->steps] = t_step;
+        g->pairs[g->steps++] = pairs;
         if (!quiet) {
             if (until_free)
                 fprintf(stderr, "scaf flow: step %d: %.3f s, check %.3f s, %lld intersecting face pairs\n", s,
@@ -156,7 +198,7 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet)
 
 static int flow_main(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL;
+    const char *in = NULL, *out = NULL, *report = NULL;
     double delta = 1e-3;
     int steps = 0, until_free = 0, quiet = 0;
     for (int i = 1; i < argc; i++) {
@@ -175,6 +217,9 @@ static int flow_main(int argc, char **argv)
             CLI_NEED_VALUE("flow");
             if (!cli_parse_double(v, &delta)) CLI_BAD_VALUE("flow");
             if (!(delta > 0) || delta > 1e6) CLI_OUT_OF_RANGE("flow", "> 0 and <= 1e6");
+        } else if (!strcmp(a, "--report")) {
+            CLI_NEED_VALUE("flow");
+            report = v;
         } else if (!strcmp(a, "--until-free")) {
             until_free = 1;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
@@ -197,21 +242,35 @@ static int flow_main(int argc, char **argv)
     cli_outputs outs;
     cli_outputs_init(&outs, "flow", in);
     int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
+    int kr = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
     int rc = cli_outputs_check(&outs);
     if (rc != EXIT_OK) return rc;
     mesh m;
     mesh_read_info info;
     if ((rc = cli_read_mesh("flow", in, quiet, &m, &info)) != EXIT_OK) return rc;
-    if ((rc = check_closed_manifold(in, &m)) == EXIT_OK) rc = run_flow(&m, steps, delta, until_free, quiet);
+    flow_log g = {0, malloc(sizeof(double) * (size_t)steps), malloc(sizeof(long long) * (size_t)steps), -1};
+    if (!g.seconds || !g.pairs) {
+        fprintf(stderr, "scaf flow: out of memory\n");
+        rc = EXIT_NOMEM;
+    } else if ((rc = check_closed_manifold(in, &m)) == EXIT_OK) {
+        rc = run_flow(&m, steps, delta, until_free, quiet, &g);
+    }
     if (rc == EXIT_OK && cli_signal_report("flow")) rc = EXIT_CANCELLED;
     if (rc == EXIT_OK) {
         scaf_error err;
         err_clear(&err);
         const char *path = cli_outputs_begin(&outs, k, &err);
         rc = cli_outputs_end(&outs, k, path ? mesh_write_obj(path, &m, &err) : SCAF_ERR_IO, &err);
+        if (rc == EXIT_OK && kr >= 0) {
+            path = cli_outputs_begin(&outs, kr, &err);
+            rc = cli_outputs_end(&outs, kr, path ? write_report(path, in, delta, until_free, &g, &err) : SCAF_ERR_IO,
+                                 &err);
+        }
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }
     cli_outputs_abort(&outs);
+    free(g.seconds);
+    free(g.pairs);
     mesh_free(&m);
     return rc;
 }

@@ -47,16 +47,25 @@ static int count_lines_with(const char *text, const char *what)
 static void until_free(void **state)
 {
     (void)state;
-    char in[1024], res[1024];
+    char in[1024], res[1024], rep[1024];
+    test_tmp_path("flow_cli_pushed.json", rep, sizeof rep);
     test_tmp_path("flow_cli_pushed.obj", in, sizeof in);
     test_tmp_path("flow_cli_pushed_free.obj", res, sizeof res);
     remove(res);
     mesh m;
     write_pushed_sphere(in, &m);
     assert_int_equal(test_run("'%s' check '%s' >/dev/null", SCAF_BINARY, in), 1);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 30 --until-free 2>&1", SCAF_BINARY,
-                                  in, res),
+    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 30 --until-free --report '%s' 2>&1",
+                                  SCAF_BINARY, in, res, rep),
                      0);
+    char *json = test_slurp(rep);
+    assert_non_null(json);
+    long long steps = test_json_field(json, "steps");
+    assert_true(steps > 1 && steps <= 30);
+    assert_true(test_json_field(json, "input_pairs") > 0);
+    assert_int_equal(test_json_field(json, "intersection_free"), 1);
+    assert_int_equal(count_lines_with(json, "\"seconds\""), (int)steps);
+    free(json);
     assert_non_null(strstr(out, "free of self-intersections after"));
     assert_non_null(strstr(out, "step 1:"));
     assert_int_equal(test_run("'%s' check '%s' >/dev/null", SCAF_BINARY, res), 0);
@@ -72,9 +81,11 @@ static void until_free(void **state)
     mesh_free(&m);
     /* too few steps: fails, nothing written */
     remove(res);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 2 --until-free 2>&1", SCAF_BINARY,
-                                  in, res),
+    remove(rep);
+    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 2 --until-free --report '%s' 2>&1",
+                                  SCAF_BINARY, in, res, rep),
                      6);
+    assert_false(test_exists(rep));
     assert_non_null(strstr(out, "still intersects itself after 2 steps"));
     assert_false(test_exists(res));
 }
