@@ -11,7 +11,6 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +19,7 @@
 #include "mesh/samples.h"
 #include "support/cli_capture.h"
 #include "support/support.h"
+#include "support/vertex_diff.h"
 
 static char out[16384];
 
@@ -171,16 +171,7 @@ static void leg_data(void **state)
     assert_int_equal(mesh_read(res, &a, &info, &e), SCAF_OK);
     assert_int_equal(mesh_read(pref, &b, &info, &e), SCAF_OK);
     assert_int_equal(a.nv, b.nv);
-    double lo[3], hi[3], mx = 0;
-    for (int d = 0; d < 3; d++) lo[d] = hi[d] = b.V[d];
-    for (int k = 0; k < 3 * b.nv; k++) {
-        lo[k % 3] = fmin(lo[k % 3], b.V[k]);
-        hi[k % 3] = fmax(hi[k % 3], b.V[k]);
-        mx = fmax(mx, fabs(a.V[k] - b.V[k]));
-    }
-    double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                       (hi[2] - lo[2]) * (hi[2] - lo[2]));
-    assert_true(mx < 1e-9 * diag);
+    assert_true(test_max_vertex_diff_rel(a.nv, a.V, b.V) < 1e-9);
     mesh_free(&a);
     mesh_free(&b);
     assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 20 --until-free 2>&1", SCAF_BINARY,

@@ -20,6 +20,7 @@
 #include "opt/cmcf.h"
 #include "opt/cotan_laplacian.h"
 #include "support/support.h"
+#include "support/vertex_diff.h"
 
 static long long pairs_of(const mesh *m)
 {
@@ -116,22 +117,6 @@ static void bad_parameters_refused(void **state)
     mesh_free(&m);
 }
 
-/* Max vertex distance between two same-size vertex arrays, relative to
- * b's bounding-box diagonal. */
-static double max_rel_diff(int nv, const double *a, const double *b)
-{
-    double lo[3], hi[3], mx = 0;
-    for (int d = 0; d < 3; d++) lo[d] = hi[d] = b[d];
-    for (int v = 0; v < nv; v++)
-        for (int d = 0; d < 3; d++) {
-            lo[d] = fmin(lo[d], b[3 * v + d]);
-            hi[d] = fmax(hi[d], b[3 * v + d]);
-            mx = fmax(mx, fabs(a[3 * v + d] - b[3 * v + d]));
-        }
-    return mx / sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                     (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 /* Six steps with delta 1e-3 of leg-intersect.off give leg-flow6.off. The
  * file as read (already normalized by the authors, 7 digits): to 1e-13;
  * normalized again first (what scaf flow does): to 1e-9 (the input's area
@@ -167,7 +152,7 @@ static void leg_data(void **state)
                 assert_true(s == 4 ? p > 0 : p == 0);
             }
         }
-        double rel = max_rel_diff(a.nv, U, b.V);
+        double rel = test_max_vertex_diff_rel(a.nv, U, b.V);
         print_message("leg: %s: max vertex difference %.3g of the bounding-box diagonal\n",
                       normalize_first ? "normalized first" : "as read", rel);
         assert_true(rel < (normalize_first ? 1e-9 : 1e-13));
