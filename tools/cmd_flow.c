@@ -52,7 +52,8 @@ static void usage(FILE *out)
             "                     self-intersections (exact check after every step);\n"
             "                     fail (exit 6) if none of the N steps is\n"
             "  --report FILE      a JSON report: delta, steps done, whether the result is\n"
-            "                     free, and per step its seconds (and intersecting pairs)\n"
+            "                     free, and per step its seconds (with --until-free its\n"
+            "                     defects: intersecting face pairs + zero-area faces)\n"
             "  -q, --quiet        no per-step lines on stderr (step, seconds, and with\n"
             "                     --until-free the intersecting face pairs)\n"
             CLI_OUTPUTS_HELP
@@ -92,9 +93,10 @@ static int check_closed_manifold(const char *in, const mesh *m)
     return EXIT_MESH;
 }
 
-/* The exact check of the current surface: its intersecting pairs (0 =
- * free), or -1 after printing why it could not run. */
-static long long intersecting_pairs(const mesh *m, int *status)
+/* The exact check of the current surface: its defects (intersecting face
+ * pairs + zero-area faces; 0 = free), or -1 after printing why it could
+ * not run. The text for the step line goes into what. */
+static long long surface_defects(const mesh *m, char *what, size_t size, int *status)
 {
     si_report r;
     scaf_error err;
@@ -105,15 +107,19 @@ static long long intersecting_pairs(const mesh *m, int *status)
         *status = exit_code_for(st);
         return -1;
     }
-    return r.intersection_free ? 0 : (r.pairs > 0 ? r.pairs : 1);
+    if (r.degenerate_faces > 0)
+        snprintf(what, size, "%lld intersecting face pairs, %d zero-area faces", r.pairs, r.degenerate_faces);
+    else
+        snprintf(what, size, "%lld intersecting face pairs", r.pairs);
+    return r.pairs + r.degenerate_faces;
 }
 
 /* What the run did, for --report. */
 typedef struct flow_log {
     int steps;           /* steps done */
     double *seconds;     /* per step (steps entries; room for the maximum) */
-    long long *pairs;    /* per step with --until-free, -1 otherwise */
-    long long input_pairs; /* -1 without --until-free */
+    long long *defects;  /* per step with --until-free: intersecting pairs + zero-area faces */
+    long long input_defects; /* -1 without --until-free */
 } flow_log;
 
 static scaf_status write_report(const char *path, const char *in, double delta, int until_free, const flow_log *g,
@@ -129,13 +135,13 @@ static scaf_status write_report(const char *path, const char *in, double delta, 
     json_write_number(o, delta);
     fprintf(o, ",\n  \"until_free\": %s,\n  \"steps\": %d", until_free ? "true" : "false", g->steps);
     if (until_free)
-        fprintf(o, ",\n  \"input_pairs\": %lld,\n  \"intersection_free\": %s", g->input_pairs,
-                (g->steps ? g->pairs[g->steps - 1] : g->input_pairs) == 0 ? "true" : "false");
+        fprintf(o, ",\n  \"input_defects\": %lld,\n  \"intersection_free\": %s", g->input_defects,
+                (g->steps ? g->defects[g->steps - 1] : g->input_defects) == 0 ? "true" : "false");
     fputs(",\n  \"per_step\": [", o);
     for (int s = 0; s < g->steps; s++) {
         fprintf(o, "%s\n    {\"step\": %d, \"seconds\": ", s ? "," : "", s + 1);
         json_write_number(o, g->seconds[s]);
-        if (until_free) fprintf(o, ", \"pairs\": %lld", g->pairs[s]);
+        if (until_free) fprintf(o, ", \"defects\": %lld", g->defects[s]);
         fputc('}', o);
     }
     fputs("\n  ]\n}\n", o);
@@ -156,13 +162,14 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet,
         return exit_code_for(st);
     }
     int rc = EXIT_OK;
-    long long pairs = -1;
+    long long defects = -1;
+    char what[128] = "";
     if (until_free) {
-        g->input_pairs = pairs = intersecting_pairs(m, &rc);
-        if (pairs == 0 && !quiet) fprintf(stderr, "scaf flow: the input is already free of self-intersections\n");
-        else if (pairs > 0 && !quiet) fprintf(stderr, "scaf flow: input: %lld intersecting face pairs\n", pairs);
+        g->input_defects = defects = surface_defects(m, what, sizeof what, &rc);
+        if (defects == 0 && !quiet) fprintf(stderr, "scaf flow: the input is already free of self-intersections\n");
+        else if (defects > 0 && !quiet) fprintf(stderr, "scaf flow: input: %s\n", what);
     }
-    for (int s = 1; s <= steps && pairs != 0 && rc == EXIT_OK; s++) {
+    for (int s = 1; s <= steps && defects != 0 && rc == EXIT_OK; s++) {
         double t0 = timer_now();
         st = cmcf_step(&f, m->V, &err);
         if (st != SCAF_OK) {
@@ -171,13 +178,13 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet,
             break;
         }
         double t_step = timer_now() - t0;
-        if (until_free && (pairs = intersecting_pairs(m, &rc)) < 0) break;
+        if (until_free && (defects = surface_defects(m, what, sizeof what, &rc)) < 0) break;
         g->seconds[g->steps] = t_step;
-        g->pairs[g->steps++] = pairs;
+        g->defects[g->steps++] = defects;
         if (!quiet) {
             if (until_free)
-                fprintf(stderr, "scaf flow: step %d: %.3f s, check %.3f s, %lld intersecting face pairs\n", s,
-                        t_step, timer_now() - t0 - t_step, pairs);
+                fprintf(stderr, "scaf flow: step %d: %.3f s, check %.3f s, %s\n", s, t_step,
+                        timer_now() - t0 - t_step, what);
             else
                 fprintf(stderr, "scaf flow: step %d: %.3f s\n", s, t_step);
         }
@@ -186,11 +193,11 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet,
     }
     int done = f.steps;
     cmcf_free(&f);
-    if (rc == EXIT_OK && until_free && pairs == 0 && done > 0 && !quiet)
+    if (rc == EXIT_OK && until_free && defects == 0 && done > 0 && !quiet)
         fprintf(stderr, "scaf flow: free of self-intersections after %d step%s\n", done, done > 1 ? "s" : "");
-    if (rc == EXIT_OK && until_free && pairs != 0 && !cli_signal_caught()) {
-        fprintf(stderr, "scaf flow: the surface still intersects itself after %d steps (%lld face pairs); nothing written\n",
-                steps, pairs);
+    if (rc == EXIT_OK && until_free && defects != 0 && !cli_signal_caught()) {
+        fprintf(stderr, "scaf flow: the surface still intersects itself after %d steps (%s); nothing written\n", steps,
+                what);
         rc = EXIT_NUMERIC;
     }
     return rc;
@@ -249,7 +256,7 @@ static int flow_main(int argc, char **argv)
     mesh_read_info info;
     if ((rc = cli_read_mesh("flow", in, quiet, &m, &info)) != EXIT_OK) return rc;
     flow_log g = {0, malloc(sizeof(double) * (size_t)steps), malloc(sizeof(long long) * (size_t)steps), -1};
-    if (!g.seconds || !g.pairs) {
+    if (!g.seconds || !g.defects) {
         fprintf(stderr, "scaf flow: out of memory\n");
         rc = EXIT_NOMEM;
     } else if ((rc = check_closed_manifold(in, &m)) == EXIT_OK) {
@@ -270,7 +277,7 @@ static int flow_main(int argc, char **argv)
     }
     cli_outputs_abort(&outs);
     free(g.seconds);
-    free(g.pairs);
+    free(g.defects);
     mesh_free(&m);
     return rc;
 }

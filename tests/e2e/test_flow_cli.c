@@ -62,7 +62,7 @@ static void until_free(void **state)
     assert_non_null(json);
     long long steps = test_json_field(json, "steps");
     assert_true(steps > 1 && steps <= 30);
-    assert_true(test_json_field(json, "input_pairs") > 0);
+    assert_true(test_json_field(json, "input_defects") > 0);
     assert_int_equal(test_json_field(json, "intersection_free"), 1);
     assert_int_equal(count_lines_with(json, "\"seconds\""), (int)steps);
     free(json);
@@ -123,6 +123,18 @@ static void refusals(void **state)
     assert_int_equal(test_run("'%s' gen hemisphere -s 3 -o '%s'", SCAF_BINARY, in), 0);
     assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 2 2>&1", SCAF_BINARY, in, res), 4);
     assert_non_null(strstr(out, "the surface is open"));
+    assert_false(test_exists(res));
+    /* closed but not manifold: two tetrahedra sharing vertex 3 */
+    char nm[1024];
+    test_tmp_path("flow_cli_bowtie.off", nm, sizeof nm);
+    FILE *f = fopen(nm, "w");
+    assert_non_null(f);
+    fputs("OFF\n7 8 0\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n2 1 1\n1 2 1\n2 2 2\n"
+          "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n3 3 5 4\n3 3 4 6\n3 4 5 6\n3 5 3 6\n",
+          f);
+    fclose(f);
+    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 2 2>&1", SCAF_BINARY, nm, res), 4);
+    assert_non_null(strstr(out, "not manifold"));
     assert_false(test_exists(res));
     /* usage */
     const char *bad[] = {"",  "--steps 0", "--steps 2 --delta 0", "--steps 2 --delta x", "--steps x",

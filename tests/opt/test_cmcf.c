@@ -68,6 +68,10 @@ static void icosahedron_stays_a_sphere(void **state)
         }
     }
     assert_int_equal(f.steps, 10);
+    /* one symbolic analysis, a numerical factorization per step */
+    opt_chol_stats cs = opt_chol_get_stats(f.chol);
+    assert_int_equal(cs.analyses, 1);
+    assert_int_equal(cs.factorizations, 10);
     cmcf_free(&f);
     mesh_free(&m);
 }
