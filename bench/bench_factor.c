@@ -148,8 +148,7 @@ int main(int argc, char **argv)
         return 1;
     }
     scaf_loop L;
-    scaf_options_t o = scaf_options_default();
-    if (scaf_loop_init(&L, m.nv, m.V, m.nf, m.F, uv, &o, &err) != SCAF_OK) {
+    if (scaf_loop_init(&L, m.nv, m.V, m.nf, m.F, uv, NULL, &err) != SCAF_OK) {
         fprintf(stderr, "loop: %s\n", err.message);
         return 1;
     }
@@ -167,7 +166,7 @@ int main(int argc, char **argv)
     double it_med = K > 1 ? median(it + 1, K - 1) : it[0]; /* the first has METIS */
 
     /* The last system and the loop's permutation. */
-    opt_csc *A = &L.sys.A;
+    const opt_csc *A = scaf_loop_last_system(&L);
     cholmod_sparse S = opt_csc_cholmod_view(A);
     size_t nm = 2 * (size_t)L.nv;
     int *perm = malloc(sizeof(int) * (size_t)A->n);
@@ -177,7 +176,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "out of memory\n");
         return 1;
     }
-    memcpy(perm, L.mesh_perm, nm * sizeof(int));
+    memcpy(perm, scaf_loop_mesh_ordering(&L), nm * sizeof(int));
     for (size_t k = nm; k < (size_t)A->n; k++) perm[k] = (int)k;
 
     /* Variant ordering: scaffold vertices not adjacent to the chart
@@ -192,7 +191,7 @@ int main(int argc, char **argv)
         }
         for (int J = L.nv; J < nvs; J++)
             if (!ring[J]) { perm2[np2++] = 2 * J; perm2[np2++] = 2 * J + 1; }
-        memcpy(perm2 + np2, L.mesh_perm, nm * sizeof(int));
+        memcpy(perm2 + np2, scaf_loop_mesh_ordering(&L), nm * sizeof(int));
         np2 += (int)nm;
         for (int J = L.nv; J < nvs; J++)
             if (ring[J]) { perm2[np2++] = 2 * J; perm2[np2++] = 2 * J + 1; nring++; }

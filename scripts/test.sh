@@ -2,10 +2,10 @@
 # The whole test suite, as CI runs it:
 #   1. AddressSanitizer + UndefinedBehaviorSanitizer build, all tests;
 #   2. bounded fuzz smoke run of every fuzz target (clang libFuzzer);
-#   3. Release build, all tests;
-#   4. the layering check (scripts/check_layers.sh) on the Release objects:
-#      no include or call goes up base -> geom -> mesh -> opt -> scaffold ->
-#      app -> tools.
+#   3. Release build; the layering check (scripts/check_layers.sh) on its
+#      objects: no include or call goes up base -> geom -> mesh -> opt ->
+#      scaffold -> app -> tools; then all tests (ctest's summary closes the
+#      output).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs="$(nproc)"
@@ -25,7 +25,7 @@ fi
 echo "== release build =="
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$jobs"
-ctest --test-dir build --output-on-failure -j"$jobs"
-
 echo "== layering =="
 bash scripts/check_layers.sh --build build
+ctest --test-dir build --output-on-failure -j"$jobs"
+

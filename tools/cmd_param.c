@@ -27,7 +27,6 @@
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
 #include "scaf/scaf.h"
-#include "scaffold/scaf_loop.h"
 
 static void usage(FILE *o)
 {
@@ -110,9 +109,10 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
     cli_signal_test_point(info->iteration);
     if (cli_signal_caught()) return 1; /* SIGINT / SIGTERM: stop after this iteration */
     if (s->verify) {
-        const scaf_loop *L = param_loop(s->p);
+        param_map pm;
+        param_working_map(s->p, &pm);
         bij_report rep;
-        if (bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective) {
+        if (bij_check(pm.nuv, pm.uv, pm.nf, pm.FT, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective) {
             s->not_bijective = info->iteration;
             return 1;
         }
@@ -323,34 +323,38 @@ static int param_main(int argc, char **argv)
     rc = cli_outputs_end(&outs, k.mesh, path ? cli_write_uv("param", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
     if (rc != EXIT_OK) goto done;
     if (svg) {
-        const scaf_loop *L = param_loop(p);
+        param_map pm;
+        param_working_map(p, &pm);
         double *E = malloc(sizeof(double) * (size_t)m.nf);
         uv_svg_scaffold ss = {0};
-        if (E) scaf_loop_face_energy(L, E);
-        if (svg_scaffold && L->sc.ntri > 0) {
-            ss.ntri = L->sc.ntri;
-            ss.T = L->sc.T;
-            ss.extra = L->sc.extra_uv;
+        if (E) param_face_energy(p, E);
+        scaffold_view sv;
+        param_last_scaffold(p, &sv);
+        if (svg_scaffold && sv.n > 0) {
+            ss.ntri = sv.n;
+            ss.T = sv.simplices;
+            ss.extra = sv.extra;
         }
         char title[256];
         snprintf(title, sizeof title, "%s: E = %.5f after %d iterations (4 = isometry)", in, e1, scaf_param_iterations(p));
         /* Working vertex ids are the UV ids: draw with the loop's faces. */
         path = cli_outputs_begin(&outs, k.svg, &err);
-        st = path ? uv_svg_write(path, L->nv, L->uv, L->nf, L->F, E, ss.ntri ? &ss : NULL, title, &err) : SCAF_ERR_IO;
+        st = path ? uv_svg_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, E, ss.ntri ? &ss : NULL, title, &err) : SCAF_ERR_IO;
         free(E);
         if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
     }
     if (png.path) {
         /* same colours as the SVG; the loop's first nf faces are the mesh's, in order */
-        const scaf_loop *L = param_loop(p);
-        double *E = malloc(sizeof(double) * (size_t)(L->nf ? L->nf : 1));
-        unsigned *col = malloc(sizeof(unsigned) * (size_t)(L->nf ? L->nf : 1));
+        param_map pm;
+        param_working_map(p, &pm);
+        double *E = malloc(sizeof(double) * (size_t)(pm.nf ? pm.nf : 1));
+        unsigned *col = malloc(sizeof(unsigned) * (size_t)(pm.nf ? pm.nf : 1));
         st = E && col ? SCAF_OK : err_nomem(&err, "picture colours");
         if (st == SCAF_OK) {
-            scaf_loop_face_energy(L, E);
-            for (int f = 0; f < L->nf; f++) col[f] = uv_svg_colour(E[f]);
+            param_face_energy(p, E);
+            for (int f = 0; f < pm.nf; f++) col[f] = uv_svg_colour(E[f]);
             path = cli_outputs_begin(&outs, k.png, &err);
-            st = path ? uv_png_write(path, L->nv, L->uv, L->nf, L->F, col, m.nv, m.V, m.F, &png.opt, &err)
+            st = path ? uv_png_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, col, m.nv, m.V, m.F, &png.opt, &err)
                       : SCAF_ERR_IO;
         }
         free(E);

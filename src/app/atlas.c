@@ -169,8 +169,9 @@ static int freeze_close(void *user, const scaf_loop *L, const double *X, double 
             }
         /* scaffold-only corners of triangles touching a frozen chart stay
          * too, so the thin triangles there cannot collapse */
-        for (int s = 0; s < L->sc.ntri; s++) {
-            const int *t = L->sc.T + 3 * s;
+        const scaffold_view *sc = scaf_loop_scaffold_view(L);
+        for (int s = 0; s < sc->n; s++) {
+            const int *t = sc->simplices + 3 * s;
             int touch = 0;
             for (int i = 0; i < 3; i++)
                 if (t[i] < L->nv && mark[a->wchart[t[i]]]) touch = 1;
@@ -186,8 +187,9 @@ static int freeze_close(void *user, const scaf_loop *L, const double *X, double 
 /* Every scaffold triangle strictly positive at X, decided exactly. */
 static int scaffold_positive(const scaf_loop *L, const double *X)
 {
-    for (int s = 0; s < L->sc.ntri; s++) {
-        const int *t = L->sc.T + 3 * s;
+    const scaffold_view *sc = scaf_loop_scaffold_view(L);
+    for (int s = 0; s < sc->n; s++) {
+        const int *t = sc->simplices + 3 * s;
         if (!(orient2d(X + 2 * (size_t)t[0], X + 2 * (size_t)t[1], X + 2 * (size_t)t[2]) > 0.0)) return 0;
     }
     return 1;
@@ -200,15 +202,17 @@ enum { ASPECT_POWER = 32 };
 static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall, scaf_error *err)
 {
     atlas *a = user;
-    const scaffold *sc = &L->sc;
+    const scaffold_view *sc = scaf_loop_scaffold_view(L);
+    opt_simplices *rest = scaf_loop_scaffold_rest(L);
+    double *proxy_weight = scaf_loop_scaffold_proxy_weights(L);
     /* ---- stiffen scaffold triangles bridging two close charts ---------- */
     double side = side_of(X, L->nv);
     double near = 3.0 * a->opt.padding * side;
     if (near <= 0.0) near = 0.01 * side;
     a->stiffened = 0;
     double sigma = a->opt.compact_rest_scale;
-    for (int s = 0; s < sc->ntri; s++) {
-        const int *t = sc->T + 3 * s;
+    for (int s = 0; s < sc->n; s++) {
+        const int *t = sc->simplices + 3 * s;
         int bridge = 0, boxed = 0;
         double dmin = INFINITY;
         for (int i = 0; i < 3; i++)
@@ -224,19 +228,19 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
             }
         if (bridge) {
             /* a close pair: stiff, and pushed apart when nearly at the padding */
-            L->scaf.weight[s] *= 100.0;
-            L->scaf_pw[s] *= 100.0;
+            rest->weight[s] *= 100.0;
+            proxy_weight[s] *= 100.0;
             a->stiffened++;
             double pad = a->opt.padding * side;
-            if (dmin < 2.0 * pad && L->scaf.vol[s] > sc->eps) {
+            if (dmin < 2.0 * pad && rest->vol[s] > sc->eps) {
                 double grow = fmin(2.0 * pad / dmin, 2.0);
-                for (int i = 0; i < 6; i++) L->scaf.grad[6 * (size_t)s + i] /= grow;
-                L->scaf.vol[s] *= grow * grow;
+                for (int i = 0; i < 6; i++) rest->grad[6 * (size_t)s + i] /= grow;
+                rest->vol[s] *= grow * grow;
             }
-        } else if (!boxed && sigma < 1.0 && L->scaf.vol[s] > sc->eps) {
+        } else if (!boxed && sigma < 1.0 && rest->vol[s] > sc->eps) {
             /* rest shape shrunk by sigma: the free space wants to contract */
-            for (int i = 0; i < 6; i++) L->scaf.grad[6 * (size_t)s + i] /= sigma;
-            L->scaf.vol[s] *= sigma * sigma;
+            for (int i = 0; i < 6; i++) rest->grad[6 * (size_t)s + i] /= sigma;
+            rest->vol[s] *= sigma * sigma;
         }
     }
     /* ---- move the box inward ------------------------------------------- */
@@ -248,7 +252,7 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
         return err_nomem(err, "compaction");
     }
     memcpy(X0, X, sizeof(double) * 2 * (size_t)nall);
-    double cx = 0.5 * (sc->box[0] + sc->box[2]), cy = 0.5 * (sc->box[1] + sc->box[3]);
+    double cx = 0.5 * (sc->box_lo[0] + sc->box_hi[0]), cy = 0.5 * (sc->box_lo[1] + sc->box_hi[1]);
     /* Only the longest side of the layout counts (it is scaled into the
      * unit square): contract the long axis, the short one only as the
      * layout nears a square, so the charts spread along the short axis. */
@@ -265,7 +269,7 @@ static scaf_status compact_prepare(void *user, scaf_loop *L, double *X, int nall
             D[2 * v] = ax * (cx - X[2 * v]);
             D[2 * v + 1] = ay * (cy - X[2 * v + 1]);
         }
-    double t = opt_max_step(&L->scaf, X, D);
+    double t = opt_max_step(rest, X, D);
     if (t > 1.0) t = 1.0;
     t *= a->opt.compact_fraction;
     for (int k = 0; k < 60 && t > 0.0; k++) {
@@ -499,7 +503,8 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
             goto done;
         }
     }
-    st = scaf_loop_init(&a->loop, a->nw, W3, a->nf, a->Fw, uv0, &a->opt.base, err);
+    scaf_loop_options lo = param_loop_options(&a->opt.base);
+    st = scaf_loop_init(&a->loop, a->nw, W3, a->nf, a->Fw, uv0, &lo, err);
     if (st != SCAF_OK) goto done;
     a->loop.hooks.user = a;
     a->loop.hooks.feasible = feasible_gap;
@@ -678,7 +683,7 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
     scaf_status st = SCAF_OK;
     atlas_iteration it;
     /* ---- phase 1: settle the distortion -------------------------------- */
-    a->loop.opt = a->opt.base;
+    a->loop.opt = param_loop_options(&a->opt.base);
     a->loop.hooks.prepare = NULL;
     a->settle_stop = a->opt.settle_iterations > 0 ? SCAF_STOP_ITERATIONS : SCAF_STOP_NONE;
     a->compact_stop = SCAF_STOP_NONE;
@@ -718,9 +723,9 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
     /* (one chart too: the box shrinks around it, its aspect nears the
      * square's within the distortion tolerance) */
     if (a->opt.compact_iterations > 0) {
-        a->loop.opt.box_scale = a->opt.compact_box_scale;
+        a->loop.opt.scaffold.box_scale = a->opt.compact_box_scale;
         a->loop.opt.lambda_ratio = a->opt.compact_lambda_ratio;
-        a->loop.opt.box_square = 0;
+        a->loop.opt.scaffold.box_square = 0;
         a->loop.hooks.prepare = compact_prepare;
         enum { MAXWIN = 64 };
         int win = a->opt.progress_window < 1 ? 1 : a->opt.progress_window > MAXWIN ? MAXWIN : a->opt.progress_window;
@@ -770,7 +775,7 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
         }
         free(best);
         a->loop.hooks.prepare = NULL;
-        a->loop.opt = a->opt.base;
+        a->loop.opt = param_loop_options(&a->opt.base);
         if (st != SCAF_OK) return st;
     }
     if (a->opt.rotate) {

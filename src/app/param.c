@@ -4,7 +4,7 @@
  * charts cut along seams, or components), checks each is a disk or a disk
  * with holes (naming the chart on failure), builds the working mesh (one
  * vertex per (chart, vertex-or-vt) pair), embeds every chart on a circle of
- * its 3D area (app/chart_init), places the circles on a grid so they do not
+ * its 3D area (opt/embed: opt_embed_chart_best), places the circles on a grid so they do not
  * touch, and sets up the SCAF loop. run: iterates with progress and the
  * stopping rules. Errors leave a message readable by scaf_param_error.
  */
@@ -59,6 +59,29 @@ scaf_options_t scaf_options_default(void)
     o.min_angle_deg = SCAFFOLD_DEFAULT_MIN_ANGLE_DEG;
     o.step_fraction = 0.8;
     return o;
+}
+
+static opt_energy to_opt_energy(scaf_energy e)
+{
+    switch (e) {
+    case SCAF_ENERGY_ARAP: return OPT_ENERGY_ARAP;
+    case SCAF_ENERGY_CONFORMAL: return OPT_ENERGY_CONFORMAL;
+    case SCAF_ENERGY_SYMMETRIC_DIRICHLET: break;
+    }
+    return OPT_ENERGY_SYMMETRIC_DIRICHLET;
+}
+
+scaf_loop_options param_loop_options(const scaf_options_t *o)
+{
+    scaf_loop_options lo = scaf_loop_options_default();
+    lo.energy = to_opt_energy(o->energy);
+    lo.lambda_ratio = o->lambda_ratio;
+    lo.step_fraction = o->step_fraction;
+    lo.scaffold.box_scale = o->box_scale;
+    lo.scaffold.box_square = o->box_square;
+    lo.scaffold.box_points_per_side = o->box_points_per_side;
+    lo.scaffold.min_angle_deg = o->min_angle_deg;
+    return lo;
 }
 
 const char *scaf_phase_name(scaf_phase phase)
@@ -116,7 +139,7 @@ scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *option
     scaf_status st = param_options_check(options, p->err.message, sizeof p->err.message);
     if (st != SCAF_OK) return p->err.code = st;
     p->opt = *options;
-    if (p->has_mesh) p->loop.opt = *options;
+    if (p->has_mesh) p->loop.opt = param_loop_options(options);
     return SCAF_OK;
 }
 
@@ -140,6 +163,32 @@ void scaf_param_destroy(scaf_param_t *p)
 const char *scaf_param_error(const scaf_param_t *p) { return p ? p->err.message : "no context"; }
 
 const scaf_loop *param_loop(const scaf_param_t *p) { return p && p->has_mesh ? &p->loop : NULL; }
+
+int param_working_map(const scaf_param_t *p, param_map *m)
+{
+    memset(m, 0, sizeof *m);
+    if (!p || !p->has_mesh) return 0;
+    m->nuv = p->loop.nv;
+    m->uv = p->loop.uv;
+    m->nf = p->loop.nf;
+    m->FT = p->loop.F;
+    return 1;
+}
+
+int param_face_energy(const scaf_param_t *p, double *E)
+{
+    if (!p || !p->has_mesh) return 0;
+    scaf_loop_face_energy(&p->loop, E);
+    return 1;
+}
+
+int param_last_scaffold(const scaf_param_t *p, scaffold_view *v)
+{
+    memset(v, 0, sizeof *v);
+    if (!p || !p->has_mesh) return 0;
+    *v = *scaf_loop_scaffold_view(&p->loop);
+    return 1;
+}
 
 /* ---- set_mesh ------------------------------------------------------------ */
 
@@ -174,6 +223,179 @@ static double area3(const double *a, const double *b, const double *c)
     return 0.5 * sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
 }
 
+/* A chart touching itself at a UV vertex (several fans around one vt) is
+ * a disk all the same: give each fan its own UV index. m->FT then points
+ * to *FTs (nf by 3, freed by the caller) and m->nuv counts the new
+ * indices. Nothing to do without UVs. */
+static scaf_status split_fans(mesh *m, int **FTs, scaf_error *err)
+{
+    *FTs = NULL;
+    if (m->nuv <= 0) return SCAF_OK;
+    *FTs = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    if (!*FTs) return err_nomem(err, "UV indices");
+    scaf_status st = uv_split_fans(m->nf, m->FT, m->nuv, *FTs, &m->nuv, NULL, err);
+    if (st != SCAF_OK) return st;
+    m->FT = *FTs;
+    return SCAF_OK;
+}
+
+/* The charts of m (positions at unit scale, 2^-pos_exp times V_in, the
+ * caller's), each checked to be a disk (possibly with holes) with no
+ * degenerate triangle; errors name the chart. */
+static scaf_status find_charts(const mesh *m, const double *V_in, int pos_exp, mesh_charts *ch, scaf_error *err)
+{
+    scaf_status st = mesh_charts_compute(m, ch, err);
+    if (st != SCAF_OK) return st;
+    for (int c = 0; c < ch->ncharts; c++) {
+        st = mesh_chart_check(ch, c, 1, err);
+        if (st != SCAF_OK) return st;
+    }
+    const double *V = m->V;
+    for (int f = 0; f < m->nf; f++) {
+        const int *t = m->F + 3 * f;
+        /* degenerate: the one exact definition `scaf info` counts too */
+        if (tri3_is_degenerate(V_in + 3 * (size_t)t[0], V_in + 3 * (size_t)t[1], V_in + 3 * (size_t)t[2]))
+            return err_set(err, SCAF_ERR_MESH, "chart %d: face %d is degenerate (zero 3D area)", ch->cx.face_group[f], f);
+        double a = area3(V + 3 * (size_t)t[0], V + 3 * (size_t)t[1], V + 3 * (size_t)t[2]);
+        if (!(a >= DBL_MIN) || !isfinite(a))
+            return err_set(err, SCAF_ERR_MESH, "chart %d: face %d is not degenerate, but too small next to the "
+                           "mesh's largest coordinate (2^%d) for double precision: its area underflows",
+                           ch->cx.face_group[f], f, pos_exp);
+    }
+    return SCAF_OK;
+}
+
+/* Working vertices: one per referenced index of IDX (vertex or UV index
+ * per corner; each index belongs to one chart: the chart check rejects
+ * indices shared by charts), numbered chart by chart so each chart's
+ * vertices are contiguous. Fw (nf by 3) gets the working vertex of each
+ * corner, widx (nidx) the working vertex of each index (-1: unused),
+ * *W3 (nw by 3, allocated) their 3D positions. */
+static scaf_status working_vertices(const mesh *m, const mesh_charts *ch, const int *IDX, int nidx, int *widx,
+                                    int *Fw, int *nw_out, double **W3, scaf_error *err)
+{
+    for (int i = 0; i < nidx; i++) widx[i] = -1;
+    int nw = 0;
+    for (int c = 0; c < ch->ncharts; c++)
+        for (int k = ch->cx.group_face_start[c]; k < ch->cx.group_face_start[c + 1]; k++) {
+            int f = ch->cx.group_faces[k];
+            for (int j = 0; j < 3; j++) {
+                int i = IDX[3 * f + j];
+                if (widx[i] < 0) widx[i] = nw++;
+                Fw[3 * f + j] = widx[i];
+            }
+        }
+    *nw_out = nw;
+    *W3 = malloc(sizeof(double) * 3 * (size_t)(nw ? nw : 1));
+    if (!*W3) return err_nomem(err, "working mesh");
+    for (int f = 0; f < m->nf; f++)
+        for (int j = 0; j < 3; j++)
+            memcpy(*W3 + 3 * (size_t)Fw[3 * f + j], m->V + 3 * (size_t)m->F[3 * f + j], sizeof(double) * 3);
+    return SCAF_OK;
+}
+
+/* Embed chart c on a circle of its 3D area (opt_embed_chart_best: with
+ * holes, the best of up to OUTER_TRIES loops on the circle) and store its
+ * UV in uv (working vertices) and the circle's radius in *radius. local
+ * (nw entries, all -1) is scratch, left all -1. */
+static scaf_status embed_chart(const mesh_charts *ch, int c, const int *IDX, const int *widx, const int *Fw,
+                               const double *W3, opt_embed_method method, int *local, double *uv, double *radius,
+                               scaf_error *err)
+{
+    int f0 = ch->cx.group_face_start[c], f1 = ch->cx.group_face_start[c + 1], mf = f1 - f0;
+    int l0 = ch->chart_loop_start[c], l1 = ch->chart_loop_start[c + 1];
+    int nlv = 0;
+    for (int l = l0; l < l1; l++) {
+        int lid = ch->chart_loops[l];
+        nlv += ch->cx.loop_start[lid + 1] - ch->cx.loop_start[lid];
+    }
+    int *cverts = malloc(sizeof(int) * 3 * (size_t)mf);
+    int *cfaces = malloc(sizeof(int) * 3 * (size_t)mf);
+    int *cloops = malloc(sizeof(int) * ((size_t)nlv + (size_t)(l1 - l0) + 1));
+    double *P = malloc(sizeof(double) * 9 * (size_t)mf);
+    double *cuv = malloc(sizeof(double) * 6 * (size_t)mf);
+    scaf_status st = SCAF_OK;
+    if (!cverts || !cfaces || !cloops || !P || !cuv) {
+        st = err_nomem(err, "chart embedding");
+        goto done;
+    }
+    /* the chart's own vertices, faces and boundary loops */
+    int n = 0;
+    for (int k = f0; k < f1; k++) {
+        int f = ch->cx.group_faces[k];
+        for (int j = 0; j < 3; j++) {
+            int w = Fw[3 * f + j];
+            if (local[w] < 0) {
+                local[w] = n;
+                cverts[n] = w;
+                memcpy(P + 3 * (size_t)n, W3 + 3 * (size_t)w, sizeof(double) * 3);
+                n++;
+            }
+            cfaces[3 * (k - f0) + j] = local[w];
+        }
+    }
+    int nl = l1 - l0;
+    int *lstart = cloops, *lv = cloops + nl + 1;
+    int pos = 0;
+    for (int l = 0; l < nl; l++) {
+        int lid = ch->chart_loops[l0 + l];
+        lstart[l] = pos;
+        for (int h = ch->cx.loop_start[lid]; h < ch->cx.loop_start[lid + 1]; h++) {
+            int idx = IDX[ch->cx.loop_he[h]];
+            lv[pos++] = local[widx[idx]];
+        }
+    }
+    lstart[nl] = pos;
+    opt_chart_loops ol = {nl, lstart, lv, 0};
+    st = opt_embed_chart_best(n, P, mf, cfaces, &ol, method, OUTER_TRIES, cuv, NULL, NULL, err);
+    if (st != SCAF_OK) {
+        err_prefix(err, "chart %d", c);
+        for (int i = 0; i < n; i++) local[cverts[i]] = -1;
+        goto done;
+    }
+    double r = 0.0;
+    for (int i = 0; i < n; i++) {
+        double d = hypot(cuv[2 * i], cuv[2 * i + 1]);
+        if (d > r) r = d;
+        memcpy(uv + 2 * (size_t)cverts[i], cuv + 2 * i, sizeof(double) * 2);
+        local[cverts[i]] = -1;
+    }
+    *radius = r;
+done:
+    free(cverts);
+    free(cfaces);
+    free(cloops);
+    free(P);
+    free(cuv);
+    return st;
+}
+
+/* Several charts: move chart c's circle (radius up to the largest) to
+ * cell c of a grid of 2.5 * rmax cells, so the circles do not touch.
+ * chart_of_w (nw) is scratch. */
+static void place_on_grid(const mesh_charts *ch, int nf, const int *Fw, int nw, const double *radius,
+                          int *chart_of_w, double *uv)
+{
+    if (ch->ncharts <= 1) return;
+    double rmax = 0.0;
+    for (int c = 0; c < ch->ncharts; c++)
+        if (radius[c] > rmax) rmax = radius[c];
+    double cell = 2.5 * rmax;
+    int cols = (int)ceil(sqrt((double)ch->ncharts));
+    for (int f = 0; f < nf; f++)
+        for (int j = 0; j < 3; j++) chart_of_w[Fw[3 * f + j]] = ch->cx.face_group[f];
+    for (int w = 0; w < nw; w++) {
+        int c = chart_of_w[w];
+        uv[2 * (size_t)w] += cell * (c % cols);
+        uv[2 * (size_t)w + 1] -= cell * (c / cols);
+    }
+}
+
+static opt_embed_method embed_method(scaf_init init)
+{
+    return init == SCAF_INIT_HARMONIC ? OPT_EMBED_HARMONIC : init == SCAF_INIT_MVC ? OPT_EMBED_MVC : OPT_EMBED_TUTTE;
+}
+
 scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F, int nf,
                                 const double *UV, int nuv, const int *FT)
 {
@@ -195,164 +417,41 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     mesh m = {nv, (double *)V, nf, (int *)F, nuv, (double *)UV, (int *)FT};
     mesh_charts ch;
     memset(&ch, 0, sizeof ch);
-    int *widx = NULL, *local = NULL, *cverts = NULL, *cfaces = NULL, *cloops = NULL, *FTs = NULL;
-    double *W3 = NULL, *uv = NULL, *P = NULL, *cuv = NULL, *radius = NULL;
-    if (nuv > 0) {
-        /* A chart touching itself at a UV vertex (several fans around one
-         * vt) is a disk all the same: give each fan its own UV index. */
-        FTs = malloc(sizeof(int) * 3 * (size_t)nf);
-        if (!FTs) {
-            st = err_nomem(err, "UV indices");
-            goto fail;
-        }
-        st = uv_split_fans(nf, FT, nuv, FTs, &m.nuv, NULL, err);
-        if (st != SCAF_OK) goto fail;
-        m.FT = FTs;
-        FT = FTs;
-        nuv = m.nuv;
-    }
-    st = mesh_charts_compute(&m, &ch, err);
+    int *FTs = NULL, *widx = NULL, *local = NULL, nw = 0;
+    double *W3 = NULL, *uv = NULL, *radius = NULL;
+    st = split_fans(&m, &FTs, err);
+    if (st == SCAF_OK) st = find_charts(&m, V_in, p->pos_exp, &ch, err);
     if (st != SCAF_OK) goto fail;
-    int nidx = ch.uses_uv ? nuv : nv;
-    const int *IDX = ch.uses_uv ? FT : F;
-    for (int c = 0; c < ch.ncharts; c++) {
-        st = mesh_chart_check(&ch, c, 1, err);
-        if (st != SCAF_OK) goto fail;
-    }
-    for (int f = 0; f < nf; f++) {
-        const int *t = F + 3 * f;
-        /* degenerate: the one exact definition `scaf info` counts too */
-        if (tri3_is_degenerate(V_in + 3 * (size_t)t[0], V_in + 3 * (size_t)t[1], V_in + 3 * (size_t)t[2])) {
-            st = err_set(err, SCAF_ERR_MESH, "chart %d: face %d is degenerate (zero 3D area)", ch.cx.face_group[f], f);
-            goto fail;
-        }
-        double a = area3(V + 3 * (size_t)t[0], V + 3 * (size_t)t[1], V + 3 * (size_t)t[2]);
-        if (!(a >= DBL_MIN) || !isfinite(a)) {
-            st = err_set(err, SCAF_ERR_MESH, "chart %d: face %d is not degenerate, but too small next to the "
-                         "mesh's largest coordinate (2^%d) for double precision: its area underflows",
-                         ch.cx.face_group[f], f, p->pos_exp);
-            goto fail;
-        }
-    }
+    int nidx = ch.uses_uv ? m.nuv : nv;
+    const int *IDX = ch.uses_uv ? m.FT : F;
 
-    /* ---- working vertices: one per referenced index (each index belongs
-     * to one chart: the chart check rejects indices shared by charts). ---- */
     widx = malloc(sizeof(int) * (size_t)nidx);
     p->Fw = malloc(sizeof(int) * 3 * (size_t)nf);
     if (!widx || !p->Fw) {
         st = err_nomem(err, "working mesh");
         goto fail;
     }
-    for (int i = 0; i < nidx; i++) widx[i] = -1;
-    int nw = 0;
-    /* Number chart by chart so each chart's vertices are contiguous. */
-    for (int c = 0; c < ch.ncharts; c++)
-        for (int k = ch.cx.group_face_start[c]; k < ch.cx.group_face_start[c + 1]; k++) {
-            int f = ch.cx.group_faces[k];
-            for (int j = 0; j < 3; j++) {
-                int i = IDX[3 * f + j];
-                if (widx[i] < 0) widx[i] = nw++;
-                p->Fw[3 * f + j] = widx[i];
-            }
-        }
-    W3 = malloc(sizeof(double) * 3 * (size_t)nw);
+    st = working_vertices(&m, &ch, IDX, nidx, widx, p->Fw, &nw, &W3, err);
+    if (st != SCAF_OK) goto fail;
     uv = malloc(sizeof(double) * 2 * (size_t)nw);
     local = malloc(sizeof(int) * (size_t)nw);
     radius = malloc(sizeof(double) * (size_t)ch.ncharts);
-    if (!W3 || !uv || !local || !radius) {
+    if (!uv || !local || !radius) {
         st = err_nomem(err, "working mesh");
         goto fail;
     }
-    for (int f = 0; f < nf; f++)
-        for (int j = 0; j < 3; j++) memcpy(W3 + 3 * (size_t)p->Fw[3 * f + j], V + 3 * (size_t)F[3 * f + j], sizeof(double) * 3);
-
-    /* ---- embed each chart ------------------------------------------------ */
     for (int i = 0; i < nw; i++) local[i] = -1;
     for (int c = 0; c < ch.ncharts; c++) {
-        int f0 = ch.cx.group_face_start[c], f1 = ch.cx.group_face_start[c + 1], mf = f1 - f0;
-        free(cverts); free(cfaces); free(cloops); free(P); free(cuv);
-        cverts = malloc(sizeof(int) * 3 * (size_t)mf);
-        cfaces = malloc(sizeof(int) * 3 * (size_t)mf);
-        int l0 = ch.chart_loop_start[c], l1 = ch.chart_loop_start[c + 1];
-        int nlv = 0;
-        for (int l = l0; l < l1; l++) {
-            int lid = ch.chart_loops[l];
-            nlv += ch.cx.loop_start[lid + 1] - ch.cx.loop_start[lid];
-        }
-        cloops = malloc(sizeof(int) * ((size_t)nlv + (size_t)(l1 - l0) + 1));
-        P = malloc(sizeof(double) * 9 * (size_t)mf);
-        cuv = malloc(sizeof(double) * 6 * (size_t)mf);
-        if (!cverts || !cfaces || !cloops || !P || !cuv) {
-            st = err_nomem(err, "chart embedding");
-            goto fail;
-        }
-        int n = 0;
-        for (int k = f0; k < f1; k++) {
-            int f = ch.cx.group_faces[k];
-            for (int j = 0; j < 3; j++) {
-                int w = p->Fw[3 * f + j];
-                if (local[w] < 0) {
-                    local[w] = n;
-                    cverts[n] = w;
-                    memcpy(P + 3 * (size_t)n, W3 + 3 * (size_t)w, sizeof(double) * 3);
-                    n++;
-                }
-                cfaces[3 * (k - f0) + j] = local[w];
-            }
-        }
-        int nl = l1 - l0;
-        int *lstart = cloops, *lv = cloops + nl + 1;
-        int pos = 0;
-        for (int l = 0; l < nl; l++) {
-            int lid = ch.chart_loops[l0 + l];
-            lstart[l] = pos;
-            for (int h = ch.cx.loop_start[lid]; h < ch.cx.loop_start[lid + 1]; h++) {
-                int idx = IDX[ch.cx.loop_he[h]];
-                lv[pos++] = local[widx[idx]];
-            }
-        }
-        lstart[nl] = pos;
-        opt_chart_loops ol = {nl, lstart, lv, 0};
-        /* a chart with holes: the best of up to OUTER_TRIES loops on the circle */
-        st = opt_embed_chart_best(n, P, mf, cfaces, &ol,
-                                  p->opt.init == SCAF_INIT_HARMONIC ? OPT_EMBED_HARMONIC
-                                  : p->opt.init == SCAF_INIT_MVC ? OPT_EMBED_MVC : OPT_EMBED_TUTTE,
-                                  OUTER_TRIES, cuv, NULL, NULL, err);
-        if (st != SCAF_OK) {
-            err_prefix(err, "chart %d", c);
-            goto fail;
-        }
-        double r = 0.0;
-        for (int i = 0; i < n; i++) {
-            double d = hypot(cuv[2 * i], cuv[2 * i + 1]);
-            if (d > r) r = d;
-            memcpy(uv + 2 * (size_t)cverts[i], cuv + 2 * i, sizeof(double) * 2);
-            local[cverts[i]] = -1;
-        }
-        radius[c] = r;
+        st = embed_chart(&ch, c, IDX, widx, p->Fw, W3, embed_method(p->opt.init), local, uv, &radius[c], err);
+        if (st != SCAF_OK) goto fail;
     }
-
-    /* ---- grid of non-touching circles ------------------------------------ */
-    if (ch.ncharts > 1) {
-        double rmax = 0.0;
-        for (int c = 0; c < ch.ncharts; c++)
-            if (radius[c] > rmax) rmax = radius[c];
-        double cell = 2.5 * rmax;
-        int cols = (int)ceil(sqrt((double)ch.ncharts));
-        int *chart_of_w = local; /* reuse */
-        for (int f = 0; f < nf; f++)
-            for (int j = 0; j < 3; j++) chart_of_w[p->Fw[3 * f + j]] = ch.cx.face_group[f];
-        for (int w = 0; w < nw; w++) {
-            int c = chart_of_w[w];
-            uv[2 * (size_t)w] += cell * (c % cols);
-            uv[2 * (size_t)w + 1] -= cell * (c / cols);
-        }
-    }
+    place_on_grid(&ch, nf, p->Fw, nw, radius, local, uv);
 
     p->nf = nf;
     p->nw = nw;
     p->ncharts = ch.ncharts;
-    st = scaf_loop_init(&p->loop, nw, W3, nf, p->Fw, uv, &p->opt, err);
+    scaf_loop_options lo = param_loop_options(&p->opt);
+    st = scaf_loop_init(&p->loop, nw, W3, nf, p->Fw, uv, &lo, err);
     if (st != SCAF_OK) goto fail;
     p->has_mesh = 1;
     goto done;
@@ -363,8 +462,13 @@ fail:
     if (err->code == SCAF_OK) err->code = st;
 done:
     mesh_charts_free(&ch);
-    free(widx); free(local); free(cverts); free(cfaces); free(cloops); free(FTs);
-    free(W3); free(uv); free(P); free(cuv); free(radius); free(Vs);
+    free(widx);
+    free(local);
+    free(FTs);
+    free(W3);
+    free(uv);
+    free(radius);
+    free(Vs);
     return st;
 }
 
@@ -375,7 +479,7 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
     if (!p) return SCAF_ERR_USAGE;
     err_clear(&p->err);
     if (!p->has_mesh) return err_set(&p->err, SCAF_ERR_USAGE, "no mesh: call scaf_param_set_mesh first");
-    p->loop.opt = p->opt;
+    p->loop.opt = param_loop_options(&p->opt);
     int n = iterations > 0 ? iterations : p->opt.max_iterations;
     p->stop = n > 0 ? SCAF_STOP_ITERATIONS : SCAF_STOP_NONE; /* unless a rule below stops it first */
     for (int it = 0; it < n; it++) {

@@ -1,9 +1,9 @@
 /* app/param: internals of the scaf_param_* API shared with the program.
  *
  * The public API is in include/scaf/scaf.h. This header gives the
- * command-line program and the tests read access to the working state:
- * the SCAF loop (working mesh, current UV, last scaffold) and the map from
- * input corners to working vertices.
+ * command-line program read access to the working state (current map,
+ * per-face energy, last scaffold), the mapping of the public options onto
+ * the loop's, and the tests a look at the loop itself.
  */
 #ifndef SCAF_APP_PARAM_H
 #define SCAF_APP_PARAM_H
@@ -14,8 +14,32 @@
 #include "scaf/scaf.h"
 #include "scaffold/scaf_loop.h"
 
-/* The loop of a context whose mesh is set (NULL otherwise). */
+/* The loop of a context whose mesh is set (NULL otherwise): for tests
+ * that look inside; programs use the functions below. */
 const scaf_loop *param_loop(const scaf_param_t *p);
+
+/* The loop's options for the public options (the energy, the scaffold's
+ * weight, box and quality, the line search's first step). */
+scaf_loop_options param_loop_options(const scaf_options_t *o);
+
+/* The current map as the context holds it: nuv UV positions (nuv by 2)
+ * and nf faces (nf by 3 UV indices, the mesh's faces in order: the FT of
+ * scaf_param_get_uv). Pointers valid until the next call that changes p.
+ * Returns 0 (m zeroed) when no mesh is set. */
+typedef struct param_map {
+    int nuv, nf;
+    const double *uv;
+    const int *FT;
+} param_map;
+int param_working_map(const scaf_param_t *p, param_map *m);
+
+/* Symmetric Dirichlet energy of each face of the current map (nf values).
+ * Returns 0 when no mesh is set. */
+int param_face_energy(const scaf_param_t *p, double *E);
+
+/* The scaffold of the last iteration (n = 0 before the first), for
+ * pictures; valid until the next run. Returns 0 when no mesh is set. */
+int param_last_scaffold(const scaf_param_t *p, scaffold_view *v);
 
 /* Validate options: SCAF_OK or SCAF_ERR_USAGE with a message. */
 scaf_status param_options_check(const scaf_options_t *o, char *msg, size_t size);

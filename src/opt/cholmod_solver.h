@@ -79,7 +79,7 @@ int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A);
 
 /* Compute the solver's fill-reducing permutation of A (n entries, block-
  * aware as set by opt_chol_set_block) without analysing: for building
- * orderings of related systems (opt/ordering_reuse). */
+ * orderings of related systems (scaffold/scaf_loop keeps the mesh's). */
 scaf_status opt_chol_compute_ordering(opt_chol *c, const opt_csc *A, int *perm, scaf_error *err);
 
 /* Solve A X = B for nrhs right-hand sides. B, X: n by nrhs, column-major

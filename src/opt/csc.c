@@ -106,3 +106,37 @@ scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const
     assert(opt_csc_is_upper_sorted(A));
     return SCAF_OK;
 }
+
+scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *vcolptr, const int *vrowidx,
+                                          int zero_values, scaf_error *err)
+{
+    int n = nv * d;
+    A->n = n;
+    A->colptr = malloc(((size_t)n + 1) * sizeof *A->colptr);
+    if (!A->colptr) return err_nomem(err, "proxy system matrix");
+    A->colptr[0] = 0;
+    for (int c = 0; c < nv; c++) {
+        int lo = vcolptr[c], hi = vcolptr[c + 1];
+        int diag = hi > lo && vrowidx[hi - 1] == c;
+        int off = hi - lo - diag;
+        for (int a = 0; a < d; a++)
+            A->colptr[c * d + a + 1] = A->colptr[c * d + a] + off * d + (diag ? a + 1 : 0);
+    }
+    A->nnz = A->colptr[n];
+    A->rowidx = malloc(((size_t)A->nnz + 1) * sizeof *A->rowidx);
+    A->val = zero_values ? calloc((size_t)A->nnz + 1, sizeof *A->val) : malloc(((size_t)A->nnz + 1) * sizeof *A->val);
+    if (!A->rowidx || !A->val) return err_nomem(err, "proxy system matrix");
+    for (int c = 0; c < nv; c++) {
+        int lo = vcolptr[c], hi = vcolptr[c + 1];
+        for (int a = 0; a < d; a++) {
+            int pos = A->colptr[c * d + a];
+            for (int k = lo; k < hi; k++) {
+                int r = vrowidx[k];
+                int top = r == c ? a : d - 1;
+                for (int q = 0; q <= top; q++) A->rowidx[pos++] = r * d + q;
+            }
+        }
+    }
+    assert(opt_csc_is_upper_sorted(A));
+    return SCAF_OK;
+}

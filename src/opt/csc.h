@@ -38,4 +38,14 @@ int opt_csc_is_upper_sorted(const opt_csc *A);
 scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const int *Jc,
                                   const double *Val, scaf_error *err);
 
+/* Expand a vertex-level upper pattern to scalars, d unknowns per vertex
+ * interleaved (vertex v owns v*d + 0..d-1): nv columns vcolptr (nv+1) with
+ * ascending rows vrowidx, the diagonal last. Vertex entry (I, J) becomes
+ * the d by d block of rows I*d.., columns J*d.. (its upper part when
+ * I == J). Values zeroed when zero_values, else left unset (for a caller
+ * that overwrites them all). On failure A holds what was allocated (free
+ * it with opt_csc_free). */
+scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *vcolptr, const int *vrowidx,
+                                          int zero_values, scaf_error *err);
+
 #endif /* SCAF_OPT_CSC_H */

@@ -1,12 +1,13 @@
 /* opt/line_search: a step along a direction that never inverts a simplex.
  *
  * Given positions X (all simplices positively oriented) and a direction D,
- * the search: (1) takes the largest flip-free step over every simplex of
- * every term (mesh and scaffold), t_max = min over simplices; (2) starts at
+ * the search: (1) takes the largest allowed step of every term (for
+ * simplices: the flip-free step, min over simplices), t_max = min over
+ * terms; (2) starts at
  * t = min(cap, safety * t_max); (3) backtracks (t *= shrink) until the
  * total energy satisfies Armijo, E(t) <= E(0) + c1 t E'(0); (4) confirms
- * the orientation of EVERY simplex at the exact trial positions with the
- * exact predicates orient2d / orient3d, halving t when any check fails.
+ * every term's exact validity test at the trial positions (simplices:
+ * orient2d / orient3d of EVERY simplex), halving t when any check fails.
  * On success X holds the accepted positions. If no step is acceptable
  * (direction not a descent direction, or the energy cannot decrease within
  * max_backtracks) X is unchanged and result.step = 0: the caller treats
@@ -17,7 +18,7 @@
 #ifndef SCAF_OPT_LINE_SEARCH_H
 #define SCAF_OPT_LINE_SEARCH_H
 
-#include "opt/energy.h"
+#include "opt/objective.h"
 
 typedef struct opt_ls_options {
     double safety;      /* fraction of the flip-free step taken first (0.8) */
@@ -39,19 +40,10 @@ typedef struct opt_ls_result {
 
 void opt_ls_options_default(opt_ls_options *o);
 
-/* Total energy of the terms at X (#X by d). */
-double opt_terms_energy(const opt_term *terms, int nterms, const double *X);
-
-/* Whether every simplex of every term is strictly positively oriented at X,
- * decided exactly. Returns 1 if so, else 0 and *bad_term / *bad_simplex
- * (may be NULL) name the first offender. */
-int opt_terms_oriented(const opt_term *terms, int nterms, const double *X, int *bad_term,
-                       int *bad_simplex);
-
-/* terms: nterms parts of the objective, all of dimension d over the same
- * nv vertices. X: #X by d positions, in/out. D: #X by d direction (zero
+/* terms: nterms terms of the objective (opt/objective), all over the same
+ * nv vertices of dimension d. X: #X by d positions, in/out. D: #X by d direction (zero
  * rows for fixed vertices). o: options (NULL for defaults). res: out. */
-scaf_status opt_line_search(const opt_term *terms, int nterms, int d, int nv, double *X,
+scaf_status opt_line_search(const opt_obj_term *terms, int nterms, int d, int nv, double *X,
                             const double *D, const opt_ls_options *o, opt_ls_result *res,
                             scaf_error *err);
 

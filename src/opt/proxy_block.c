@@ -15,6 +15,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+int opt_dof_numbering(int nv, const unsigned char *fixed, int *dof)
+{
+    int k = 0;
+    for (int v = 0; v < nv; v++) dof[v] = (fixed && fixed[v]) ? -1 : k++;
+    return k;
+}
+
 void opt_proxy_block_free(opt_proxy_block *b)
 {
     if (!b) return;
@@ -33,6 +40,19 @@ static int cmp_row_id(const void *pa, const void *pb)
 {
     const row_id *a = pa, *b = pb;
     return (a->row > b->row) - (a->row < b->row);
+}
+
+/* The scalar upper CSC of the vertex-level pattern, values zeroed; frees
+ * the block on failure. */
+static scaf_status expand_scalar(opt_proxy_block *b, scaf_error *err)
+{
+    scaf_status st = opt_csc_expand_vertex_pattern(&b->A, b->d, b->nfree, b->vcolptr, b->vrowidx, 1, err);
+    if (st != SCAF_OK) {
+        opt_proxy_block_free(b);
+        return st;
+    }
+    b->version++;
+    return SCAF_OK;
 }
 
 scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, const int *dof,
@@ -118,43 +138,39 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
     }
     for (int k = 0; k < out; k++) b->vrowidx[k] = ent[k].row;
     free(ent);
-    /* Expand to the scalar upper CSC. */
-    int n = nfree * d;
-    opt_csc *A = &b->A;
-    A->n = n;
-    A->colptr = malloc(((size_t)n + 1) * sizeof *A->colptr);
-    if (!A->colptr) {
+    return expand_scalar(b, err);
+}
+
+scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, const int *verts, const int *dof,
+                                             int nfree, scaf_error *err)
+{
+    opt_proxy_block_free(b);
+    int top = -1;
+    for (int i = 0; i < n; i++) {
+        int v = dof[verts[i]];
+        if (v >= nfree) return err_set(err, SCAF_ERR_INTERNAL, "vertex %d: dof %d outside [0, %d)", verts[i], v, nfree);
+        if (v > top) top = v;
+    }
+    b->d = d;
+    b->nfree = top + 1;
+    b->vcolptr = calloc((size_t)b->nfree + 1, sizeof *b->vcolptr);
+    b->vrowidx = malloc(((size_t)n + 1) * sizeof *b->vrowidx);
+    if (!b->vcolptr || !b->vrowidx) {
         opt_proxy_block_free(b);
         return err_nomem(err, "proxy system pattern");
     }
-    A->colptr[0] = 0;
-    for (int c = 0; c < nfree; c++) {
-        int lo = b->vcolptr[c], hi = b->vcolptr[c + 1];
-        int diag = hi > lo && b->vrowidx[hi - 1] == c;
-        int off = hi - lo - diag;
-        for (int a = 0; a < d; a++)
-            A->colptr[c * d + a + 1] = A->colptr[c * d + a] + off * d + (diag ? a + 1 : 0);
+    for (int i = 0; i < n; i++)
+        if (dof[verts[i]] >= 0) b->vcolptr[dof[verts[i]] + 1] = 1; /* once per vertex */
+    for (int c = 0; c < b->nfree; c++) {
+        if (b->vcolptr[c + 1]) b->vrowidx[b->vcolptr[c]] = c;
+        b->vcolptr[c + 1] += b->vcolptr[c];
     }
-    A->nnz = A->colptr[n];
-    A->rowidx = malloc(((size_t)A->nnz + 1) * sizeof *A->rowidx);
-    A->val = calloc((size_t)A->nnz + 1, sizeof *A->val);
-    if (!A->rowidx || !A->val) {
-        opt_proxy_block_free(b);
-        return err_nomem(err, "proxy system matrix");
-    }
-    for (int c = 0; c < nfree; c++) {
-        int lo = b->vcolptr[c], hi = b->vcolptr[c + 1];
-        for (int a = 0; a < d; a++) {
-            int pos = A->colptr[c * d + a];
-            for (int k = lo; k < hi; k++) {
-                int r = b->vrowidx[k];
-                int top = r == c ? a : d - 1;
-                for (int q = 0; q <= top; q++) A->rowidx[pos++] = r * d + q;
-            }
-        }
-    }
-    b->version++;
-    return SCAF_OK;
+    return expand_scalar(b, err);
+}
+
+void opt_proxy_block_add_diagonal(opt_proxy_block *b, int k, double w)
+{
+    for (int a = 0; a < b->d; a++) b->A.val[b->A.colptr[k * b->d + a + 1] - 1] += w;
 }
 
 /* Accumulate one simplex: coefficient matrix M (d by d, symmetric) and

@@ -37,6 +37,11 @@ typedef struct opt_proxy_block {
     unsigned version; /* incremented each time the pattern is rebuilt */
 } opt_proxy_block;
 
+/* Number the free vertices: fixed[v] != 0 marks vertex v fixed (fixed may
+ * be NULL: none). dof gets nv entries, ascending from 0 over the free
+ * vertices, -1 for the fixed ones; returns the number of free ones. */
+int opt_dof_numbering(int nv, const unsigned char *fixed, int *dof);
+
 /* Free everything; safe on a zeroed block. */
 void opt_proxy_block_free(opt_proxy_block *b);
 
@@ -47,6 +52,19 @@ void opt_proxy_block_free(opt_proxy_block *b);
  * scaffold, whose vertex count changes every iteration. */
 scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, const int *dof,
                                     int nfree, scaf_error *err);
+
+/* A block of per-vertex terms (soft positional constraints and the
+ * like): its pattern holds the d by d diagonal block of each free vertex
+ * of verts (n entries, repeats allowed, fixed ones skipped) and nothing
+ * else. Values are zeroed; add them with opt_proxy_block_add_diagonal. */
+scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, const int *verts, const int *dof,
+                                             int nfree, scaf_error *err);
+
+/* Add w * I (d by d) to the diagonal block of the free vertex with dof k,
+ * which must be in the pattern (any block: the diagonal sorts last in its
+ * column). Values accumulate: a term refilling a kept pattern zeroes
+ * A.val (A.nnz entries) first. */
+void opt_proxy_block_add_diagonal(opt_proxy_block *b, int k, double w);
 
 /* Fill values with the SLIM proxy of term t at positions X (#X by d):
  * per simplex the signed SVD of J, weights W and targets T

@@ -67,36 +67,8 @@ static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *con
     }
     sys->vcolptr[nfree] = out;
     /* Scalar expansion, same rule as the blocks. */
-    opt_csc *A = &sys->A;
-    int n = nfree * d;
     sys->owns = 1;
-    A->n = n;
-    A->colptr = malloc(((size_t)n + 1) * sizeof *A->colptr);
-    if (!A->colptr) return err_nomem(err, "proxy system matrix");
-    A->colptr[0] = 0;
-    for (int c = 0; c < nfree; c++) {
-        int lo = sys->vcolptr[c], hi = sys->vcolptr[c + 1];
-        int diag = hi > lo && sys->vrowidx[hi - 1] == c;
-        int off = hi - lo - diag;
-        for (int a = 0; a < d; a++)
-            A->colptr[c * d + a + 1] = A->colptr[c * d + a] + off * d + (diag ? a + 1 : 0);
-    }
-    A->nnz = A->colptr[n];
-    A->rowidx = malloc(((size_t)A->nnz + 1) * sizeof *A->rowidx);
-    A->val = malloc(((size_t)A->nnz + 1) * sizeof *A->val);
-    if (!A->rowidx || !A->val) return err_nomem(err, "proxy system matrix");
-    for (int c = 0; c < nfree; c++) {
-        int lo = sys->vcolptr[c], hi = sys->vcolptr[c + 1];
-        for (int a = 0; a < d; a++) {
-            int pos = A->colptr[c * d + a];
-            for (int k = lo; k < hi; k++) {
-                int r = sys->vrowidx[k];
-                int top = r == c ? a : d - 1;
-                for (int q = 0; q <= top; q++) A->rowidx[pos++] = r * d + q;
-            }
-        }
-    }
-    return SCAF_OK;
+    return opt_csc_expand_vertex_pattern(&sys->A, d, nfree, sys->vcolptr, sys->vrowidx, 0, err); /* summed values overwrite */
 }
 
 scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *const *bl,

@@ -1,26 +1,30 @@
 /* scaffold/scaf_loop: the SCAF iteration (see scaf_loop.h).
  *
- * The numerics are opt's pieces: the chart term (rest frames of the 3D
- * triangles, weight = 3D area) is built once; each iteration builds the
- * scaffold (scaffold/scaffold_build) and its term (rest = current shape
- * with the eps guard, weight = lambda), fills the SLIM proxy blocks
- * (opt/proxy_block, the chart's element map kept), sums them
- * (opt/proxy_system), orders and factors with CHOLMOD (opt/cholmod_solver,
- * see order_and_factor for the ordering policy), solves, and runs opt's
- * flip-free Armijo line search with exact orientation checks over mesh AND
- * scaffold. Vertex array X = the mesh vertices, then the scaffold
- * vertices; box vertices are fixed (dof -1), so mesh vertices keep dofs
- * 0..nv-1 in every iteration.
+ * The numerics are opt's pieces: the mesh term (rest frames of the 3D
+ * triangles, weight = 3D area) is built once; each iteration the scaffold
+ * provider refreshes the scaffold and the loop builds its term (rest =
+ * current shape with the eps guard, weight = lambda); every term fills its
+ * SLIM proxy block (opt/objective; the mesh term keeps its pattern), the
+ * blocks are summed (opt/proxy_system), ordered and factored with CHOLMOD
+ * (opt/cholmod_solver, see order_and_factor for the ordering policy),
+ * solved, and opt's line search runs over all terms (flip-free bound,
+ * Armijo, exact orientation checks over mesh AND scaffold). Vertex array
+ * X = the mesh vertices, then the scaffold vertices; box vertices are
+ * fixed (dof -1), so mesh vertices keep dofs 0..nv-1 in every iteration.
  *
- * The step is assembled here rather than with opt_slim_step because the
- * scaffold's proxy differs from its energy: a scaffold triangle starts each
- * iteration at its rest shape (J = R), where the SLIM weight of symmetric
- * Dirichlet tends to w = 2 (proxy curvature w^2 = 4); like the reference
- * implementation (libigl's scaf) we use w = 1 there, a 4x softer scaffold
- * in the proxy only, which lets the charts move further per iteration
- * (camel_b: E after 30 iterations about 4.124 instead of 4.125-4.126).
- * Guarded (degenerate) scaffold triangles keep the true weights. The line
- * search always uses the true energy.
+ * The scaffold's proxy differs from its energy: a scaffold triangle starts
+ * each iteration at its rest shape (J = R), where the SLIM weight of
+ * symmetric Dirichlet tends to w = 2 (proxy curvature w^2 = 4); like the
+ * reference implementation (libigl's scaf) we use w = 1 there, a 4x softer
+ * scaffold in the proxy only, which lets the charts move further per
+ * iteration (camel_b: E after 30 iterations about 4.124 instead of
+ * 4.125-4.126). Guarded (degenerate) scaffold triangles keep the true
+ * weights. The line search always uses the true energy.
+ *
+ * When a factorization fails (the proxy numerically indefinite), the
+ * system is regularized with mu diag(A) for growing mu (see
+ * regularized_factor); when the energy is not finite at the start of the
+ * line search, the iteration reports a zero step (see slim_step).
  */
 #include "scaffold/scaf_loop.h"
 
@@ -28,64 +32,80 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/half_edges.h"
 #include "base/timer.h"
 #include "geom/predicates.h"
-#include "opt/energy.h"
-#include "opt/slim.h"
+#include "opt/line_search.h"
+#include "opt/proxy_system.h"
+#include "opt/cholmod_solver.h"
+#include "scaffold/scaffold_cdt.h"
 
 /* ---- setup ------------------------------------------------------------- */
 
-typedef struct half_edge {
-    int lo, hi;   /* sorted endpoints */
-    int a, b;     /* as in the face */
-} half_edge;
-
-static int cmp_half_edge(const void *x, const void *y)
-{
-    const half_edge *p = x, *q = y;
-    if (p->lo != q->lo) return p->lo < q->lo ? -1 : 1;
-    if (p->hi != q->hi) return p->hi < q->hi ? -1 : 1;
-    if (p->a != q->a) return p->a < q->a ? -1 : 1;
-    return 0;
-}
-
 /* Edges used by exactly one face, oriented as in that face (chart on the
- * left). Chart topology was validated by the caller. */
-static scaf_status boundary_edges(int nf, const int *F, int **out, int *nout, scaf_error *err)
+ * left), in increasing (smaller end, larger end) order. Chart topology was
+ * validated by the caller. */
+static scaf_status boundary_edges(int nv, int nf, const int *F, int **out, int *nout, scaf_error *err)
 {
     size_t nh = nf > 0 ? 3 * (size_t)nf : 0;
-    half_edge *h = malloc(sizeof *h * (nh ? nh : 1));
+    int *order = malloc(sizeof(int) * (nh ? nh : 1));
     int *e = malloc(sizeof(int) * 2 * (nh ? nh : 1));
-    if (!h || !e) {
-        free(h);
+    int count = 0;
+    scaf_status st = order && e ? half_edges_sort(nv, nf, F, NULL, order, &count, err)
+                                : err_nomem(err, "boundary edges");
+    if (st != SCAF_OK) {
+        free(order);
         free(e);
-        return err_nomem(err, "boundary edges");
+        return st;
     }
-    for (int f = 0; f < nf; f++)
-        for (int j = 0; j < 3; j++) {
-            int a = F[3 * f + j], b = F[3 * f + (j + 1) % 3];
-            half_edge *x = &h[3 * (size_t)f + j];
-            x->a = a;
-            x->b = b;
-            x->lo = a < b ? a : b;
-            x->hi = a < b ? b : a;
-        }
-    qsort(h, nh, sizeof *h, cmp_half_edge);
     int n = 0;
-    for (size_t i = 0; i < nh;) {
-        size_t j = i + 1;
-        while (j < nh && h[j].lo == h[i].lo && h[j].hi == h[i].hi) j++;
+    for (int i = 0; i < count;) {
+        int j = i + 1;
+        while (j < count && half_edges_same_edge(F, order[i], order[j])) j++;
         if (j - i == 1) {
-            e[2 * n] = h[i].a;
-            e[2 * n + 1] = h[i].b;
+            e[2 * n] = F[order[i]];
+            e[2 * n + 1] = F[half_edge_next(order[i])];
             n++;
         }
         i = j;
     }
-    free(h);
+    free(order);
     *out = e;
     *nout = n;
     return SCAF_OK;
+}
+
+/* ---- the loop's own state --------------------------------------------- */
+
+enum { MESH_TERM = 0, SCAFFOLD_TERM = 1 };
+
+struct scaf_loop_work {
+    scaffold_provider *scaffold; /* refreshed every iteration */
+    scaffold_view view;          /* its current scaffold */
+    opt_simplices scaf;          /* its rest frames (current shape), weight = lambda */
+    double *scaf_pw;             /* |S| proxy weights of the scaffold (see the banner) */
+    opt_simplex_term mesh_def, scaf_def;
+    opt_obj_term terms[OPT_PROXY_MAX_BLOCKS]; /* mesh, scaffold, extra terms */
+    int nterms;
+    opt_proxy_system sys;        /* the sum of the terms' blocks */
+    opt_chol *chol;              /* CHOLMOD, analysis reused while the pattern stays */
+    int *mesh_perm;              /* d nv: fill-reducing order of the mesh unknowns,
+                                    from the first (METIS) analysis; reused */
+    int *perm;                   /* scratch: full permutation */
+    size_t cap_perm;
+    double *rhs, *sol, *dir;
+    size_t cap_n, cap_x;
+};
+
+scaf_loop_options scaf_loop_options_default(void)
+{
+    scaf_loop_options o;
+    memset(&o, 0, sizeof o);
+    o.energy = OPT_ENERGY_SYMMETRIC_DIRICHLET;
+    o.lambda_ratio = 0.01;
+    o.step_fraction = 0.8;
+    o.scaffold = scaffold_default_options();
+    return o;
 }
 
 void scaf_loop_free(scaf_loop *L)
@@ -95,31 +115,36 @@ void scaf_loop_free(scaf_loop *L)
     free(L->uv);
     free(L->bedges);
     opt_simplices_free(&L->chart);
-    opt_simplices_free(&L->scaf);
-    free(L->scaf_pw);
-    scaffold_free(&L->sc);
-    opt_proxy_block_free(&L->blk_chart);
-    opt_proxy_block_free(&L->blk_scaf);
-    opt_proxy_system_free(&L->sys);
-    opt_chol_destroy(L->chol);
-    free(L->mesh_perm);
-    free(L->perm);
-    free(L->rhs);
-    free(L->sol);
-    free(L->dir);
+    scaf_loop_work *w = L->work;
+    if (w) {
+        scaffold_provider_destroy(w->scaffold);
+        opt_simplices_free(&w->scaf);
+        free(w->scaf_pw);
+        for (int k = 0; k < w->nterms; k++) opt_obj_term_free(&w->terms[k]);
+        opt_proxy_system_free(&w->sys);
+        opt_chol_destroy(w->chol);
+        free(w->mesh_perm);
+        free(w->perm);
+        free(w->rhs);
+        free(w->sol);
+        free(w->dir);
+        free(w);
+    }
     memset(L, 0, sizeof *L);
 }
 
 scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const int *F,
-                           const double *uv0, const scaf_options_t *opt, scaf_error *err)
+                           const double *uv0, const scaf_loop_options *opt, scaf_error *err)
 {
     memset(L, 0, sizeof *L);
+    L->d = 2;
     L->nv = nv;
     L->nf = nf;
-    L->opt = opt ? *opt : scaf_options_default();
+    L->opt = opt ? *opt : scaf_loop_options_default();
     L->F = malloc(sizeof(int) * 3 * (size_t)(nf ? nf : 1));
     L->uv = malloc(sizeof(double) * 2 * (size_t)(nv ? nv : 1));
-    if (!L->F || !L->uv) {
+    L->work = calloc(1, sizeof *L->work);
+    if (!L->F || !L->uv || !L->work) {
         scaf_loop_free(L);
         return err_nomem(err, "SCAF loop");
     }
@@ -139,7 +164,7 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
             return err_set(err, SCAF_ERR_INTERNAL, "initial UV triangle %d is not positively oriented", f);
         }
     }
-    st = boundary_edges(nf, F, &L->bedges, &L->nbedges, err);
+    st = boundary_edges(nv, nf, F, &L->bedges, &L->nbedges, err);
     if (st != SCAF_OK) {
         scaf_loop_free(L);
         return st;
@@ -148,15 +173,53 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
         scaf_loop_free(L);
         return err_set(err, SCAF_ERR_MESH, "the mesh has no boundary (closed surface)");
     }
-    L->chol = opt_chol_create(OPT_ORDER_AMD, err);
-    if (!L->chol) {
+    scaf_loop_work *w = L->work;
+    w->scaffold = scaffold_cdt_create(nv, L->bedges, L->nbedges, err);
+    w->chol = w->scaffold ? opt_chol_create(OPT_ORDER_AMD, err) : NULL;
+    if (!w->chol) {
         scaf_loop_free(L);
         return err && err->code ? err->code : SCAF_ERR_NOMEM;
     }
-    opt_chol_set_block(L->chol, 2);
-    opt_chol_set_relax(L->chol, 4); /* bigger supernodes: faster (bench_factor) */
+    opt_chol_set_block(w->chol, L->d);
+    opt_chol_set_relax(w->chol, 4); /* bigger supernodes: faster (bench_factor) */
+    w->mesh_def = (opt_simplex_term){&L->chart, L->opt.energy, NULL, 1};
+    w->scaf_def = (opt_simplex_term){&w->scaf, OPT_ENERGY_SYMMETRIC_DIRICHLET, NULL, 0};
+    w->terms[MESH_TERM] = opt_simplex_term_make(&w->mesh_def);
+    w->terms[SCAFFOLD_TERM] = opt_simplex_term_make(&w->scaf_def);
+    w->nterms = 2;
     return SCAF_OK;
 }
+
+scaf_status scaf_loop_set_scaffold_provider(scaf_loop *L, scaffold_provider *p, scaf_error *err)
+{
+    if (!p || p->d != L->d || p->nmesh != L->nv)
+        return err_set(err, SCAF_ERR_USAGE, "SCAF loop: a scaffold provider of dimension %d over %d mesh vertices is needed",
+                       L->d, L->nv);
+    scaf_loop_work *w = L->work;
+    scaffold_provider_destroy(w->scaffold);
+    w->scaffold = p;
+    memset(&w->view, 0, sizeof w->view);
+    return SCAF_OK;
+}
+
+scaf_status scaf_loop_add_term(scaf_loop *L, const opt_obj_term *t, scaf_error *err)
+{
+    scaf_loop_work *w = L->work;
+    if (!t || !t->ops || !t->ops->energy || !t->ops->energy_slope || !t->ops->pattern != !t->ops->fill)
+        return err_set(err, SCAF_ERR_USAGE, "SCAF loop: a term needs energy and energy_slope, and pattern with fill");
+    if (w->nterms >= OPT_PROXY_MAX_BLOCKS)
+        return err_set(err, SCAF_ERR_USAGE, "SCAF loop: at most %d terms", OPT_PROXY_MAX_BLOCKS);
+    w->terms[w->nterms] = *t;
+    memset(&w->terms[w->nterms].blk, 0, sizeof w->terms[w->nterms].blk);
+    w->nterms++;
+    return SCAF_OK;
+}
+
+const scaffold_view *scaf_loop_scaffold_view(const scaf_loop *L) { return &L->work->view; }
+opt_simplices *scaf_loop_scaffold_rest(scaf_loop *L) { return &L->work->scaf; }
+double *scaf_loop_scaffold_proxy_weights(scaf_loop *L) { return L->work->scaf_pw; }
+const opt_csc *scaf_loop_last_system(const scaf_loop *L) { return &L->work->sys.A; }
+const int *scaf_loop_mesh_ordering(const scaf_loop *L) { return L->work->mesh_perm; }
 
 /* ---- energies ---------------------------------------------------------- */
 
@@ -169,32 +232,10 @@ double scaf_loop_energy(const scaf_loop *L)
 void scaf_loop_face_energy(const scaf_loop *L, double *E)
 {
     for (int f = 0; f < L->nf; f++) {
-        double J[4];
+        double J[9];
         opt_jacobian(&L->chart, f, L->uv, J);
-        E[f] = opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J);
+        E[f] = opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, L->d, J);
     }
-}
-
-scaf_status scaf_loop_scaffold(const scaf_loop *L, scaffold *sc, scaf_error *err)
-{
-    scaffold_options so = scaffold_default_options();
-    so.box_scale = L->opt.box_scale;
-    so.box_square = L->opt.box_square;
-    so.box_points_per_side = L->opt.box_points_per_side;
-    so.min_angle_deg = L->opt.min_angle_deg;
-    double box[4];
-    scaffold_box(L->uv, L->nv, so.box_scale, so.box_square, box);
-    return scaffold_build(L->uv, L->nv, L->bedges, L->nbedges, box, &so, sc, err);
-}
-
-static opt_energy to_opt_energy(scaf_energy e)
-{
-    switch (e) {
-    case SCAF_ENERGY_ARAP: return OPT_ENERGY_ARAP;
-    case SCAF_ENERGY_CONFORMAL: return OPT_ENERGY_CONFORMAL;
-    case SCAF_ENERGY_SYMMETRIC_DIRICHLET: break;
-    }
-    return OPT_ENERGY_SYMMETRIC_DIRICHLET;
 }
 
 /* ---- the SLIM step ----------------------------------------------------- */
@@ -220,51 +261,52 @@ static scaf_status grow(double **p, size_t n, scaf_error *err)
  * system afresh instead. */
 static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, scaf_error *err)
 {
+    scaf_loop_work *w = L->work;
     scaf_status st;
-    size_t nm = 2 * (size_t)L->nv, nsc = n - nm;
+    size_t nm = (size_t)L->d * (size_t)L->nv, nsc = n - nm;
     const int *given = NULL;
-    if (!L->mesh_perm) {
+    if (!w->mesh_perm) {
         double t0 = timer_now();
         opt_chol *m = opt_chol_create(OPT_ORDER_METIS, err);
         if (!m) return err && err->code ? err->code : SCAF_ERR_NOMEM;
-        opt_chol_set_block(m, 2); /* order vertices, not scalars */
-        st = opt_chol_analyze_given(m, &L->sys.A, NULL, err);
+        opt_chol_set_block(m, L->d); /* order vertices, not scalars */
+        st = opt_chol_analyze_given(m, &w->sys.A, NULL, err);
         const int *p = opt_chol_permutation(m);
-        L->mesh_perm = malloc(nm * sizeof *L->mesh_perm);
-        int *q = realloc(L->perm, n * sizeof *q);
+        w->mesh_perm = malloc(nm * sizeof *w->mesh_perm);
+        int *q = realloc(w->perm, n * sizeof *q);
         if (q) {
-            L->perm = q;
-            L->cap_perm = n;
+            w->perm = q;
+            w->cap_perm = n;
         }
-        if (st == SCAF_OK && (!p || !L->mesh_perm || !q)) st = err_nomem(err, "ordering");
+        if (st == SCAF_OK && (!p || !w->mesh_perm || !q)) st = err_nomem(err, "ordering");
         if (st == SCAF_OK) {
             size_t k = 0;
             for (size_t i = 0; i < n; i++)
-                if ((size_t)p[i] < nm) L->mesh_perm[k++] = p[i];
-            memcpy(L->perm, p, n * sizeof *L->perm);
-            given = L->perm;
+                if ((size_t)p[i] < nm) w->mesh_perm[k++] = p[i];
+            memcpy(w->perm, p, n * sizeof *w->perm);
+            given = w->perm;
         }
         opt_chol_destroy(m);
         *t_metis = timer_now() - t0;
         if (st != SCAF_OK) return st;
     } else if (nsc <= 256 || nsc * 50 <= n) {
-        if (n > L->cap_perm) {
-            int *q = realloc(L->perm, n * sizeof *q);
+        if (n > w->cap_perm) {
+            int *q = realloc(w->perm, n * sizeof *q);
             if (!q) return err_nomem(err, "ordering");
-            L->perm = q;
-            L->cap_perm = n;
+            w->perm = q;
+            w->cap_perm = n;
         }
-        memcpy(L->perm, L->mesh_perm, nm * sizeof *L->perm);
-        for (size_t k = nm; k < n; k++) L->perm[k] = (int)k;
-        given = L->perm;
+        memcpy(w->perm, w->mesh_perm, nm * sizeof *w->perm);
+        for (size_t k = nm; k < n; k++) w->perm[k] = (int)k;
+        given = w->perm;
     }
     /* A scaffold identical to the last one (late iterations, the boundary
      * barely moving) gives the same pattern: keep that analysis. */
-    if (!opt_chol_pattern_matches(L->chol, &L->sys.A)) {
-        st = opt_chol_analyze_given(L->chol, &L->sys.A, given, err);
+    if (!opt_chol_pattern_matches(w->chol, &w->sys.A)) {
+        st = opt_chol_analyze_given(w->chol, &w->sys.A, given, err);
         if (st != SCAF_OK) return st;
     }
-    return opt_chol_factor(L->chol, &L->sys.A, err);
+    return opt_chol_factor(w->chol, &w->sys.A, err);
 }
 
 /* Factor A + mu diag(A) with rhs + mu diag(A) x for growing mu, after a
@@ -272,7 +314,9 @@ static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, sca
 static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, const double *X, size_t n,
                                       scaf_error *err)
 {
-    opt_csc *A = &L->sys.A;
+    scaf_loop_work *w = L->work;
+    int d = L->d;
+    opt_csc *A = &w->sys.A;
     double *d0 = malloc(n * sizeof *d0), *r0 = malloc(n * sizeof *r0);
     int *pos = malloc(n * sizeof *pos);
     if (!d0 || !r0 || !pos) {
@@ -286,19 +330,19 @@ static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, co
         pos[c] = (e >= A->colptr[c] && A->rowidx[e] == (int)c) ? e : -1;
         d0[c] = pos[c] >= 0 ? A->val[e] : 0.0;
     }
-    memcpy(r0, L->rhs, n * sizeof *r0);
+    memcpy(r0, w->rhs, n * sizeof *r0);
     scaf_status st = SCAF_ERR_NUMERIC;
     for (double mu = 1e-10; st == SCAF_ERR_NUMERIC && mu < 10.0; mu *= 1000.0) {
         for (size_t c = 0; c < n; c++)
             if (pos[c] >= 0) A->val[pos[c]] = d0[c] * (1.0 + mu);
         for (int v = 0; v < nall; v++)
             if (dof[v] >= 0)
-                for (int a = 0; a < 2; a++) {
-                    size_t c = 2 * (size_t)dof[v] + a;
-                    L->rhs[c] = r0[c] + mu * d0[c] * X[2 * (size_t)v + a];
+                for (int a = 0; a < d; a++) {
+                    size_t c = (size_t)d * (size_t)dof[v] + a;
+                    w->rhs[c] = r0[c] + mu * d0[c] * X[(size_t)d * (size_t)v + a];
                 }
         err_clear(err);
-        st = opt_chol_factor(L->chol, A, err);
+        st = opt_chol_factor(w->chol, A, err);
     }
     free(d0);
     free(r0);
@@ -306,65 +350,79 @@ static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, co
     return st;
 }
 
-/* terms[0] chart, terms[1] scaffold (true energy); the scaffold's proxy
- * uses the weights L->scaf_pw. X (nall by 2) updated by the line search. */
-static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, const int *dof, int nfree,
-                             double *X, slim_times *tm, opt_ls_result *ls, scaf_error *err)
+/* dir = the solution minus X for free vertices, 0 for fixed ones. */
+static inline void direction(int d, int nall, const int *dof, const double *sol, const double *X, double *dir)
 {
+    for (int v = 0; v < nall; v++)
+        for (int a = 0; a < d; a++) {
+            size_t i = (size_t)d * (size_t)v + a;
+            dir[i] = dof[v] >= 0 ? sol[(size_t)d * (size_t)dof[v] + a] - X[i] : 0.0;
+        }
+}
+
+/* Assembly of every term's proxy, ordering, factorization, solve and the
+ * line search over all terms. X (nall by d) updated by the line search. */
+static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, double *X, slim_times *tm,
+                             opt_ls_result *ls, scaf_error *err)
+{
+    scaf_loop_work *w = L->work;
+    int d = L->d;
     memset(tm, 0, sizeof *tm);
     memset(ls, 0, sizeof *ls);
     if (nfree < 1) return err_set(err, SCAF_ERR_INTERNAL, "SCAF: no free vertex");
-    size_t n = 2 * (size_t)nfree, nx = 2 * (size_t)nall;
+    size_t n = (size_t)d * (size_t)nfree, nx = (size_t)d * (size_t)nall;
     scaf_status st;
-    if (n > L->cap_n) {
-        if ((st = grow(&L->rhs, n, err)) || (st = grow(&L->sol, n, err))) return st;
-        L->cap_n = n;
+    if (n > w->cap_n) {
+        if ((st = grow(&w->rhs, n, err)) || (st = grow(&w->sol, n, err))) return st;
+        w->cap_n = n;
     }
-    if (nx > L->cap_x) {
-        if ((st = grow(&L->dir, nx, err))) return st;
-        L->cap_x = nx;
+    if (nx > w->cap_x) {
+        if ((st = grow(&w->dir, nx, err))) return st;
+        w->cap_x = nx;
     }
 
     double t0 = timer_now();
-    /* The chart's pattern never changes: mesh vertices keep dofs
-     * 0..nv-1 in every iteration and a block only spans the unknowns its
-     * simplices touch (the system sum pads it to the full count). */
-    if (!L->blk_chart.A.colptr || L->blk_chart.nfree > nfree) {
-        st = opt_proxy_block_pattern(&L->blk_chart, terms[0].s, dof, nfree, err);
+    /* A block only spans the unknowns its term touches (the system sum
+     * pads it to the full count); the mesh term keeps its pattern. */
+    const opt_proxy_block *bl[OPT_PROXY_MAX_BLOCKS];
+    int nb = 0;
+    for (int k = 0; k < w->nterms; k++) {
+        opt_obj_term *t = &w->terms[k];
+        if (!t->ops->pattern) continue;
+        st = t->ops->pattern(t, dof, nfree, err);
         if (st != SCAF_OK) return st;
     }
-    st = opt_proxy_block_pattern(&L->blk_scaf, terms[1].s, dof, nfree, err);
-    if (st != SCAF_OK) return st;
-    opt_simplices proxy = *terms[1].s;
-    proxy.weight = L->scaf_pw;
-    opt_term pterm = {&proxy, terms[1].energy};
-    memset(L->rhs, 0, n * sizeof *L->rhs);
-    opt_proxy_block_fill(&L->blk_chart, &terms[0], dof, X, L->rhs);
-    opt_proxy_block_fill(&L->blk_scaf, &pterm, dof, X, L->rhs);
-    const opt_proxy_block *bl[2] = {&L->blk_chart, &L->blk_scaf};
-    st = opt_proxy_system_sum(&L->sys, bl, 2, err);
+    memset(w->rhs, 0, n * sizeof *w->rhs);
+    for (int k = 0; k < w->nterms; k++) {
+        opt_obj_term *t = &w->terms[k];
+        if (!t->ops->fill) continue;
+        t->ops->fill(t, dof, X, w->rhs);
+        bl[nb++] = &t->blk;
+    }
+    st = opt_proxy_system_sum(&w->sys, bl, nb, err);
     if (st != SCAF_OK) return st;
     tm->assembly = timer_now() - t0;
 
-    opt_chol_stats c0 = opt_chol_get_stats(L->chol);
+    opt_chol_stats c0 = opt_chol_get_stats(w->chol);
     double t_metis = 0.0;
     st = order_and_factor(L, n, &t_metis, err);
     if (st == SCAF_ERR_NUMERIC) st = regularized_factor(L, nall, dof, X, n, err);
-    if (st == SCAF_OK) st = opt_chol_solve(L->chol, 1, L->rhs, L->sol, err);
-    opt_chol_stats c1 = opt_chol_get_stats(L->chol);
+    if (st == SCAF_OK) st = opt_chol_solve(w->chol, 1, w->rhs, w->sol, err);
+    opt_chol_stats c1 = opt_chol_get_stats(w->chol);
     tm->analysis = c1.t_analyze - c0.t_analyze + t_metis;
     tm->factor = c1.t_factor - c0.t_factor;
     tm->solve = c1.t_solve - c0.t_solve;
     if (st != SCAF_OK) return st;
 
     double t4 = timer_now();
-    for (int v = 0; v < nall; v++)
-        for (int a = 0; a < 2; a++)
-            L->dir[2 * (size_t)v + a] = dof[v] >= 0 ? L->sol[2 * (size_t)dof[v] + a] - X[2 * (size_t)v + a] : 0.0;
+    if (d == 2)
+        direction(2, nall, dof, w->sol, X, w->dir); /* d known: the loop unrolls */
+    else
+        direction(d, nall, dof, w->sol, X, w->dir);
     opt_ls_options lo;
     opt_ls_options_default(&lo);
     lo.safety = L->opt.step_fraction;
-    st = opt_line_search(terms, 2, 2, nall, X, L->dir, &lo, ls, err);
+    st = opt_line_search(w->terms, w->nterms, d, nall, X, w->dir, &lo, ls, err);
     if (st == SCAF_ERR_NUMERIC) {
         /* The energy is not finite in floating point at the current map (a
          * triangle exactly positive but too thin for its determinant to
@@ -383,20 +441,20 @@ static scaf_status slim_step(scaf_loop *L, const opt_term *terms, int nall, cons
 /* ---- the feasibility hook: shorten a step it rejects -------------------- */
 
 /* X holds the line search's result X0 + step * dir; halve the step until
- * the hook accepts, every simplex is exactly positive and the total energy
+ * the hook accepts, every term accepts X (exactly) and the total energy
  * is below its value at X0; otherwise restore X0 (step 0). */
-static scaf_status feasible_backtrack(scaf_loop *L, const opt_term *terms, int nall, const double *X0,
-                                      double *X, opt_ls_result *ls)
+static scaf_status feasible_backtrack(scaf_loop *L, int nall, const double *X0, double *X, opt_ls_result *ls)
 {
+    scaf_loop_work *w = L->work;
     if (!L->hooks.feasible || ls->step <= 0.0 || L->hooks.feasible(L->hooks.user, L, X, nall))
         return SCAF_OK;
-    size_t nx = 2 * (size_t)nall;
+    size_t nx = (size_t)L->d * (size_t)nall;
     double t = ls->step;
     for (int round = 0; round < 16 && L->hooks.restrict_dir; round++) {
-        if (!L->hooks.restrict_dir(L->hooks.user, L, X, L->dir, nall)) break;
-        for (size_t i = 0; i < nx; i++) X[i] = X0[i] + t * L->dir[i];
-        double e = opt_terms_energy(terms, 2, X);
-        if (!(e < ls->energy_before) || !opt_terms_oriented(terms, 2, X, NULL, NULL)) break;
+        if (!L->hooks.restrict_dir(L->hooks.user, L, X, w->dir, nall)) break;
+        for (size_t i = 0; i < nx; i++) X[i] = X0[i] + t * w->dir[i];
+        double e = opt_obj_energy(w->terms, w->nterms, X);
+        if (!(e < ls->energy_before) || !opt_obj_valid(w->terms, w->nterms, X)) break;
         if (L->hooks.feasible(L->hooks.user, L, X, nall)) {
             ls->energy_after = e;
             return SCAF_OK;
@@ -404,9 +462,9 @@ static scaf_status feasible_backtrack(scaf_loop *L, const opt_term *terms, int n
     }
     for (int k = 0; k < 40; k++) {
         t *= 0.5;
-        for (size_t i = 0; i < nx; i++) X[i] = X0[i] + t * L->dir[i];
-        double e = opt_terms_energy(terms, 2, X);
-        if (e < ls->energy_before && opt_terms_oriented(terms, 2, X, NULL, NULL) &&
+        for (size_t i = 0; i < nx; i++) X[i] = X0[i] + t * w->dir[i];
+        double e = opt_obj_energy(w->terms, w->nterms, X);
+        if (e < ls->energy_before && opt_obj_valid(w->terms, w->nterms, X) &&
             L->hooks.feasible(L->hooks.user, L, X, nall)) {
             ls->step = t;
             ls->energy_after = e;
@@ -421,8 +479,42 @@ static scaf_status feasible_backtrack(scaf_loop *L, const opt_term *terms, int n
 
 /* ---- one iteration ----------------------------------------------------- */
 
+/* Signed area of triangle t at X (nall by 2); the expression of
+ * opt_signed_volume, inline here where it runs once per scaffold triangle
+ * and iteration. */
+static inline double triangle_area(const double *X, const int *t)
+{
+    const double *a = X + 2 * (size_t)t[0], *b = X + 2 * (size_t)t[1], *c = X + 2 * (size_t)t[2];
+    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
+
+/* Rest shapes of the scaffold = current shapes (eps guard), energy weight
+ * lambda, proxy weight lambda / 4 except on guarded simplices (banner). */
+static scaf_status scaffold_term(scaf_loop *L, int nall, const double *X, double lambda, scaf_error *err)
+{
+    scaf_loop_work *w = L->work;
+    const scaffold_view *v = &w->view;
+    scaf_status st = opt_simplices_from_current(&w->scaf, L->d, nall, X, v->n, v->simplices, v->eps, err);
+    if (st != SCAF_OK) {
+        err_prefix(err, "scaffold rest shapes");
+        return st;
+    }
+    free(w->scaf_pw);
+    w->scaf_pw = malloc(sizeof(double) * (size_t)(v->n ? v->n : 1));
+    w->scaf_def.proxy_weight = w->scaf_pw;
+    if (!w->scaf_pw) return err_nomem(err, "scaffold weights");
+    for (int s = 0; s < w->scaf.n; s++) {
+        double vol = L->d == 2 ? triangle_area(X, v->simplices + 3 * (size_t)s) : opt_signed_volume(&w->scaf, s, X);
+        w->scaf.weight[s] = lambda;
+        w->scaf_pw[s] = vol >= v->eps ? 0.25 * lambda : lambda;
+    }
+    return SCAF_OK;
+}
+
 scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error *err)
 {
+    scaf_loop_work *w = L->work;
+    int d = L->d;
     scaf_iteration_info_t I;
     memset(&I, 0, sizeof I);
     double t_start = timer_now(), t0 = t_start, t1;
@@ -431,80 +523,64 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     int *dof = NULL;
     unsigned char *fixed = NULL;
 
-    opt_term mesh_term = {&L->chart, to_opt_energy(L->opt.energy)};
-    double EM = opt_term_energy(&mesh_term, L->uv);
+    w->mesh_def.energy = L->opt.energy;
+    const opt_obj_term *mesh_term = &w->terms[MESH_TERM];
+    double EM = mesh_term->ops->energy(mesh_term, L->uv);
     /* The reported E is symmetric Dirichlet: reuse EM when that is the
      * optimized energy too. */
-    I.energy_before = mesh_term.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET ? EM / L->total_area
-                                                                         : scaf_loop_energy(L);
+    I.energy_before = L->opt.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET ? EM / L->total_area : scaf_loop_energy(L);
     t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_OTHER] += t1 - t0;
     t0 = t1;
 
     /* ---- scaffold around the current boundary ----------------------------- */
-    scaffold_free(&L->sc);
-    opt_simplices_free(&L->scaf);
-    st = scaf_loop_scaffold(L, &L->sc, err);
+    st = w->scaffold->ops->refresh(w->scaffold, L->uv, &L->opt.scaffold, err);
+    opt_simplices_free(&w->scaf);
+    w->scaffold->ops->view(w->scaffold, &w->view);
     if (st != SCAF_OK) goto done;
-    scaffold *sc = &L->sc;
+    const scaffold_view *sc = &w->view;
     int nall = L->nv + sc->nextra;
+    size_t nx = (size_t)d * (size_t)nall;
     t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_SCAFFOLD] += t1 - t0;
     t0 = t1;
 
     /* ---- positions, dofs, scaffold term ----------------------------------- */
-    X = malloc(sizeof(double) * 2 * (size_t)nall);
+    X = malloc(sizeof(double) * nx);
     dof = malloc(sizeof(int) * (size_t)nall);
     fixed = calloc((size_t)nall, 1);
     if (!X || !dof || !fixed) {
         st = err_nomem(err, "SCAF iteration");
         goto done;
     }
-    memcpy(X, L->uv, sizeof(double) * 2 * (size_t)L->nv);
-    memcpy(X + 2 * (size_t)L->nv, sc->extra_uv, sizeof(double) * 2 * (size_t)sc->nextra);
+    memcpy(X, L->uv, sizeof(double) * d * (size_t)L->nv);
+    memcpy(X + (size_t)d * L->nv, sc->extra, sizeof(double) * d * (size_t)sc->nextra);
     memcpy(fixed + L->nv, sc->extra_fixed, (size_t)sc->nextra);
     int nfree = opt_dof_numbering(nall, fixed, dof);
-    st = opt_simplices_from_current(&L->scaf, 2, nall, X, sc->ntri, sc->T, sc->eps, err);
-    if (st != SCAF_OK) {
-        err_prefix(err, "scaffold rest shapes");
-        goto done;
-    }
-    double lambda = L->opt.lambda_ratio * EM / (sc->ntri > 0 ? sc->ntri : 1);
-    free(L->scaf_pw);
-    L->scaf_pw = malloc(sizeof(double) * (size_t)(sc->ntri ? sc->ntri : 1));
-    if (!L->scaf_pw) {
-        st = err_nomem(err, "scaffold weights");
-        goto done;
-    }
-    for (int s = 0; s < L->scaf.n; s++) {
-        const int *t = sc->T + 3 * s;
-        const double *a = X + 2 * (size_t)t[0], *b = X + 2 * (size_t)t[1], *c = X + 2 * (size_t)t[2];
-        double area = 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-        L->scaf.weight[s] = lambda;
-        L->scaf_pw[s] = area >= sc->eps ? 0.25 * lambda : lambda; /* see the banner */
-    }
+    double lambda = L->opt.lambda_ratio * EM / (sc->n > 0 ? sc->n : 1);
+    st = scaffold_term(L, nall, X, lambda, err);
+    if (st != SCAF_OK) goto done;
     if (L->hooks.prepare) {
         st = L->hooks.prepare(L->hooks.user, L, X, nall, err);
         if (st != SCAF_OK) goto done;
     }
     if (L->hooks.feasible) {
-        X0 = malloc(sizeof(double) * 2 * (size_t)nall);
+        X0 = malloc(sizeof(double) * nx);
         if (!X0) {
             st = err_nomem(err, "SCAF iteration");
             goto done;
         }
-        memcpy(X0, X, sizeof(double) * 2 * (size_t)nall);
+        memcpy(X0, X, sizeof(double) * nx);
     }
     t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_ASSEMBLY] += t1 - t0;
     t0 = t1;
 
     /* ---- SLIM: assembly, CHOLMOD, line search ----------------------------- */
-    opt_term terms[2] = {mesh_term, {&L->scaf, OPT_ENERGY_SYMMETRIC_DIRICHLET}};
     slim_times tm;
     opt_ls_result ls;
-    st = slim_step(L, terms, nall, dof, nfree, X, &tm, &ls, err);
-    if (st == SCAF_OK && X0) st = feasible_backtrack(L, terms, nall, X0, X, &ls);
+    st = slim_step(L, nall, dof, nfree, X, &tm, &ls, err);
+    if (st == SCAF_OK && X0) st = feasible_backtrack(L, nall, X0, X, &ls);
     if (st != SCAF_OK) goto done;
     I.phase_seconds[SCAF_PHASE_ASSEMBLY] += tm.assembly;
     I.phase_seconds[SCAF_PHASE_ANALYSIS] += tm.analysis;
@@ -514,8 +590,8 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     t1 = timer_now();
     t0 = t1;
 
-    memcpy(L->uv, X, sizeof(double) * 2 * (size_t)L->nv);
-    memcpy(sc->extra_uv, X + 2 * (size_t)L->nv, sizeof(double) * 2 * (size_t)sc->nextra);
+    memcpy(L->uv, X, sizeof(double) * d * (size_t)L->nv);
+    memcpy(sc->extra, X + (size_t)d * L->nv, sizeof(double) * d * (size_t)sc->nextra);
     L->iterations++;
     I.iteration = L->iterations;
     I.energy = scaf_loop_energy(L);
@@ -523,7 +599,7 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     I.total_after = ls.step > 0 ? ls.energy_after : ls.energy_before;
     I.lambda = lambda;
     I.step = ls.step;
-    I.scaffold_triangles = sc->ntri;
+    I.scaffold_triangles = sc->n;
     I.scaffold_vertices = sc->nextra;
 
 done:

@@ -1,52 +1,77 @@
-/* scaffold/scaf_loop: the SCAF iteration on a set of UV charts.
+/* scaffold/scaf_loop: the SCAF iteration on a set of charts.
  *
  * Works on a "working mesh": all charts side by side (vertices are chart
  * vertices; a 3D vertex on a seam appears once per chart), 3D positions
- * for the rest shapes and the current UV positions, which must form a
- * bijective map (positively oriented triangles, no overlaps) on entry.
- * One iteration (scaf_loop_step):
- *   1. build the scaffold around the current chart boundaries inside a box
- *      box_scale times the UV bounding box (fixed during this solve);
- *   2. scaffold rest shapes = their current shapes (guard: rest area below
- *      eps = l^2/4 -> equilateral of area eps), lambda = lambda_ratio *
- *      E_M / |S|;
- *   3. one SLIM proxy solve of E_M + lambda E_S with the box fixed
- *      (opt's proxy blocks and CHOLMOD wrapper, supernodal);
- *   4. line search: largest flip-free step over mesh and scaffold, a
- *      fraction of it, Armijo backtracking on the total energy, and an
- *      exact orient2d confirmation of every triangle before accepting.
- * Each accepted step lowers the total energy; every triangle stays
+ * for the rest shapes and the current positions (UV for d = 2), which must
+ * form a bijective map (positively oriented simplices, no overlaps) on
+ * entry. One iteration (scaf_loop_step), over X = the mesh vertices, then
+ * the scaffold-only vertices (nall = nv + nextra rows of d):
+ *   1. the scaffold provider (scaffold/scaffold_provider; d = 2: the CDT
+ *      scaffold, scaffold/scaffold_cdt) refreshes the scaffold around the
+ *      current positions inside a box opt.scaffold.box_scale times their
+ *      bounding box; its box vertices are fixed during this solve;
+ *   2. scaffold rest shapes = their current shapes (guard: rest volume
+ *      below the provider's eps -> regular simplex of volume eps), energy
+ *      weight lambda = lambda_ratio * E_M / |S|;
+ *   3. the terms of the objective (opt/objective) — the mesh term (rest
+ *      frames of the 3D triangles, weight = 3D area, energy opt.energy),
+ *      the scaffold term (symmetric Dirichlet) and any extra terms
+ *      (scaf_loop_add_term) — each fill their block of one SLIM proxy
+ *      system, solved with CHOLMOD (supernodal);
+ *   4. line search over all terms (opt/line_search): the largest allowed
+ *      step (flip-free over mesh and scaffold), a fraction of it, Armijo
+ *      backtracking on the total energy, and every term's exact validity
+ *      check (orientation of every simplex) before accepting.
+ * Each accepted step lowers the total energy; every simplex stays
  * positively oriented, so the map stays bijective.
- * Fails with SCAF_ERR_NUMERIC (factorization), SCAF_ERR_NOMEM, or passes on
- * the scaffold mesher's error; on failure the UV positions are unchanged.
+ *
+ * What is what in struct scaf_loop: `opt` and `hooks` are the caller's to
+ * set between iterations; nv, nf, F, chart, total_area, bedges are the
+ * problem (fixed by scaf_loop_init); uv is the state (the caller may
+ * replace it between iterations by another bijective map of the same
+ * mesh); `iterations` counts finished ones (each reports through
+ * scaf_loop_step's info); `work` is the loop's own (scaffold, terms,
+ * system, solver, buffers) and is reached only through the functions below.
+ * Fails with SCAF_ERR_NUMERIC (factorization), SCAF_ERR_NOMEM, or passes
+ * on the scaffold provider's error; on failure the positions are unchanged.
  */
 #ifndef SCAF_SCAFFOLD_SCAF_LOOP_H
 #define SCAF_SCAFFOLD_SCAF_LOOP_H
 
 #include "base/error.h"
-#include "opt/cholmod_solver.h"
-#include "opt/line_search.h"
-#include "opt/proxy_block.h"
-#include "opt/proxy_system.h"
-#include "opt/simplices.h"
-#include "scaffold/scaffold_build.h"
+#include "opt/objective.h"
+#include "scaffold/scaffold_provider.h"
 
 struct scaf_loop;
 
+/* What the caller sets; scaf_loop_options_default gives the paper's and
+ * the project's measured defaults. */
+typedef struct scaf_loop_options {
+    opt_energy energy;         /* the mesh term's energy (symmetric Dirichlet) */
+    double lambda_ratio;       /* scaffold weight lambda = ratio * E_M / |S| (0.01) */
+    double step_fraction;      /* first trial step: this fraction of the
+                                  largest allowed step (0.8) */
+    scaffold_options scaffold; /* box and quality (scaffold_default_options) */
+} scaf_loop_options;
+
+scaf_loop_options scaf_loop_options_default(void);
+
 /* Optional hooks of one iteration (all NULL by default), used by the atlas
  * (app/atlas) for compaction and the padding constraint:
- *   prepare   after the scaffold is built and its rest shapes and weights
- *             set (rest = current shape), before the solve: may move FIXED
- *             (box) vertices in X (nall by 2) and change scaffold weights
- *             (L->scaf.weight, L->scaf_pw). Every triangle must stay
- *             positively oriented at X (the hook checks exactly); the
- *             iteration then lowers the total energy from that state.
- *   feasible  an extra constraint on a trial state X (nall by 2): 1 = ok.
+ *   prepare   after the scaffold is refreshed and its rest shapes and
+ *             weights set (rest = current shape), before the solve: may
+ *             move FIXED (box) vertices in X (nall by d) and change the
+ *             scaffold term (scaf_loop_scaffold_rest: rest shapes and
+ *             energy weights; scaf_loop_scaffold_proxy_weights). Every
+ *             simplex must stay positively oriented at X (the hook checks
+ *             exactly); the iteration then lowers the total energy from
+ *             that state.
+ *   feasible  an extra constraint on a trial state X (nall by d): 1 = ok.
  *             A line-search step it rejects is halved (exact orientation
  *             and total-energy decrease re-checked) until accepted, or no
  *             step is taken. Must hold at the state the iteration starts.
  *   restrict  optional: called with a trial state X the feasibility hook
- *             rejected; may zero rows of the direction dir (nall by 2) so
+ *             rejected; may zero rows of the direction dir (nall by d) so
  *             the offending parts stay put, returning 1 when it changed
  *             dir (the same step is then tried again, with the same exact
  *             orientation, energy and feasibility checks), 0 otherwise.
@@ -58,38 +83,50 @@ typedef struct scaf_loop_hooks {
     void *user;
 } scaf_loop_hooks;
 
+typedef struct scaf_loop_work scaf_loop_work;
+
 typedef struct scaf_loop {
+    /* set by the caller */
+    scaf_loop_options opt;
+    scaf_loop_hooks hooks;  /* zero = none (see above) */
+    /* the problem (read only) */
+    int d;                  /* vertex dimension of the map (2) */
     int nv, nf;
-    int *F;              /* nf by 3 working faces */
-    double *uv;          /* nv by 2 current UV positions (updated) */
-    opt_simplices chart; /* rest frames of the mesh triangles, weight = 3D area */
+    int *F;                 /* nf by 3 working faces */
+    opt_simplices chart;    /* rest frames of the mesh triangles, weight = 3D area */
     double total_area;
     int nbedges;
-    int *bedges;         /* nbedges by 2 chart boundary edges, chart on the left */
-    scaf_options_t opt;
-    scaffold sc;         /* the scaffold of the last iteration (moved with the step) */
-    opt_simplices scaf;  /* its rest frames (current shape), weight = lambda */
-    double *scaf_pw;     /* |S| proxy weights of the scaffold (see scaf_loop.c) */
-    opt_proxy_block blk_chart, blk_scaf; /* SLIM proxy patterns: chart (kept
-                                            while the unknown count stays) and scaffold */
-    opt_proxy_system sys;/* their sum */
-    opt_chol *chol;      /* CHOLMOD, analysis reused while the pattern stays */
-    int *mesh_perm;      /* 2 nv: fill-reducing order of the mesh unknowns,
-                            from the first (METIS) analysis; reused */
-    int *perm;           /* scratch: full permutation */
-    size_t cap_perm;
-    double *rhs, *sol, *dir;
-    size_t cap_n, cap_x;
-    int iterations;
-    scaf_loop_hooks hooks; /* zero = none (see above) */
+    int *bedges;            /* nbedges by 2 chart boundary edges, chart on the left */
+    /* the state */
+    double *uv;             /* nv by d current positions (updated) */
+    /* the report */
+    int iterations;         /* finished iterations */
+    /* the loop's own */
+    scaf_loop_work *work;
 } scaf_loop;
 
 /* Set up. V3 nv by 3 rest positions, F nf by 3 faces (counter-clockwise
- * in UV), uv0 nv by 2 initial bijective UV map. Copies everything.
- * Fails with SCAF_ERR_MESH on a triangle of zero 3D area or a triangle
- * not positively oriented in uv0. */
+ * in UV), uv0 nv by 2 initial bijective UV map, opt NULL for
+ * scaf_loop_options_default. Copies everything. Fails with SCAF_ERR_MESH
+ * on a triangle of zero 3D area or a mesh without boundary, and with
+ * SCAF_ERR_INTERNAL on a triangle not positively oriented in uv0 (the
+ * callers' starts are bijective by construction). */
 scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const int *F,
-                           const double *uv0, const scaf_options_t *opt, scaf_error *err);
+                           const double *uv0, const scaf_loop_options *opt, scaf_error *err);
+
+/* Replace the scaffold provider (by default, for d = 2, the CDT scaffold
+ * of scaffold/scaffold_cdt around the mesh's boundary edges) by p, which
+ * must have the loop's dimension and nv mesh vertices (SCAF_ERR_USAGE
+ * otherwise; p is then not taken). The loop owns p from then on (destroyed
+ * by scaf_loop_free). */
+scaf_status scaf_loop_set_scaffold_provider(scaf_loop *L, scaffold_provider *p, scaf_error *err);
+
+/* Add a term to the objective (after the mesh and scaffold terms; at most
+ * OPT_PROXY_MAX_BLOCKS terms in all, else SCAF_ERR_USAGE). The loop copies
+ * *t and frees its block; t->self stays the caller's and must live as long
+ * as L. The term sees X with the dofs of the iteration (mesh vertices
+ * first, indices 0..nv-1). */
+scaf_status scaf_loop_add_term(scaf_loop *L, const opt_obj_term *t, scaf_error *err);
 
 /* One iteration; fills info (may be NULL). */
 scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error *err);
@@ -100,9 +137,22 @@ double scaf_loop_energy(const scaf_loop *L);
 /* Per-triangle symmetric Dirichlet energy of the current map (nf values). */
 void scaf_loop_face_energy(const scaf_loop *L, double *E);
 
-/* Build a scaffold around the current map (for pictures); sc freed by the
- * caller with scaffold_free. */
-scaf_status scaf_loop_scaffold(const scaf_loop *L, scaffold *sc, scaf_error *err);
+/* The scaffold of the last iteration (moved with its accepted step; n = 0
+ * before the first iteration or after a failed one). Valid until the next
+ * step. */
+const scaffold_view *scaf_loop_scaffold_view(const scaf_loop *L);
+
+/* For the prepare hook: the scaffold term of the iteration — rest shapes
+ * (grad, vol) and energy weights, and the weights its proxy uses. */
+opt_simplices *scaf_loop_scaffold_rest(scaf_loop *L);
+double *scaf_loop_scaffold_proxy_weights(scaf_loop *L);
+
+/* For measurements (bench/bench_factor): the system of the last iteration
+ * (upper CSC, d unknowns per free vertex, mesh vertices first) and the
+ * fill-reducing order of its mesh part (d nv entries; NULL before the
+ * first iteration). Valid until the next step. */
+const opt_csc *scaf_loop_last_system(const scaf_loop *L);
+const int *scaf_loop_mesh_ordering(const scaf_loop *L);
 
 void scaf_loop_free(scaf_loop *L);
 

@@ -211,16 +211,18 @@ static void line_search_never_flips(void **state)
     R[0] = 0.5; R[1] = 0.2;
     assert_int_equal(opt_simplices_from_current(&S, 2, 13, R, seg, F, 0.0, NULL), SCAF_OK);
     opt_term t = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+    opt_simplex_term st = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET, NULL, 0};
+    opt_obj_term ot = opt_simplex_term_make(&st);
     D[0] = 5; D[1] = 1; /* far past the boundary */
     opt_ls_result res;
-    double e0 = opt_terms_energy(&t, 1, X);
-    assert_int_equal(opt_line_search(&t, 1, 2, 13, X, D, NULL, &res, NULL), SCAF_OK);
+    double e0 = opt_obj_energy(&ot, 1, X);
+    assert_int_equal(opt_line_search(&ot, 1, 2, 13, X, D, NULL, &res, NULL), SCAF_OK);
     assert_true(res.step > 0);
     assert_true(res.max_flip_free < 1);
     assert_true(res.step <= 0.8 * res.max_flip_free);
-    assert_true(opt_terms_oriented(&t, 1, X, NULL, NULL));
+    assert_true(opt_obj_valid(&ot, 1, X));
     assert_true(res.energy_after < e0);
-    assert_true(fabs(opt_terms_energy(&t, 1, X) - res.energy_after) < 1e-12 * e0);
+    assert_true(fabs(opt_obj_energy(&ot, 1, X) - res.energy_after) < 1e-12 * e0);
     /* Ascent direction: no step, X unchanged. */
     double keep[26];
     memcpy(keep, X, sizeof keep);
@@ -228,15 +230,15 @@ static void line_search_never_flips(void **state)
     double g[26] = {0};
     opt_term_gradient(&t, X, g);
     for (int k = 0; k < 26; k++) D[k] = g[k];
-    assert_int_equal(opt_line_search(&t, 1, 2, 13, X, D, NULL, &res, NULL), SCAF_OK);
+    assert_int_equal(opt_line_search(&ot, 1, 2, 13, X, D, NULL, &res, NULL), SCAF_OK);
     assert_true(res.step == 0);
     assert_memory_equal(keep, X, sizeof keep);
     /* Invalid start: an inverted triangle is reported. */
     X[0] = 3;
     scaf_error e;
     for (int k = 0; k < 26; k++) D[k] = 0;
-    assert_int_equal(opt_line_search(&t, 1, 2, 13, X, D, NULL, &res, &e), SCAF_ERR_NUMERIC);
-    assert_false(opt_terms_oriented(&t, 1, X, NULL, NULL));
+    assert_int_equal(opt_line_search(&ot, 1, 2, 13, X, D, NULL, &res, &e), SCAF_ERR_NUMERIC);
+    assert_false(opt_obj_valid(&ot, 1, X));
     opt_simplices_free(&S);
 }
 

@@ -1,9 +1,9 @@
-/* End-to-end tests of the optimizer pieces on the shared meshes (skipped
- * when ../shared/data is absent): read, boundary loops from the topology
- * module, harmonic start (Tutte fallback), then fixed-boundary SLIM
- * iterations; after the start and after every iteration the kernel's
- * checker must find the map bijective, and the energy must not rise.
- * Includes a chart with 27 holes (fan-filled for the start). */
+/* The starting embedding on the shared meshes (skipped when ../shared/data
+ * is absent): read, boundary loops from the topology module, harmonic start
+ * (Tutte fallback); the kernel's checker must find the map bijective and
+ * its energy finite. Includes a chart with 27 holes (fan-filled for the
+ * start). The SCAF iterations from such starts are tested through the
+ * shipped loop (e2e/test_param, e2e/test_param_disks). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -11,6 +11,7 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -18,7 +19,7 @@
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
 #include "opt/embed.h"
-#include "opt/slim.h"
+#include "opt/energy.h"
 #include "support/support.h"
 
 static void assert_bijective(const mesh *m, const double *UV)
@@ -32,7 +33,7 @@ static void assert_bijective(const mesh *m, const double *UV)
     assert_true(rep.bijective);
 }
 
-static void run_file(const char *rel, int iterations)
+static void run_file(const char *rel)
 {
     char path[4096];
     if (!test_data_path(rel, path, sizeof path)) skip();
@@ -56,50 +57,22 @@ static void run_file(const char *rel, int iterations)
     int fb = 0;
     assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_HARMONIC, X, &fb, &e), SCAF_OK);
     assert_bijective(&m, X);
-    /* Fixed: the outer loop (the longest) and unreferenced vertices. The
-     * holes' loops stay free: without a scaffold nothing stops a hole from
-     * closing, but the line search keeps every triangle positive, and the
-     * checker decides. */
-    unsigned char *fixed = calloc(m.nv, 1), *used = calloc(m.nv, 1);
-    for (int k = 0; k < 3 * m.nf; k++) used[m.F[k]] = 1;
-    for (int v = 0; v < m.nv; v++) fixed[v] = !used[v];
-    int outer = 0, best = -1;
-    for (int l = 0; l < nl; l++)
-        if (start[l + 1] - start[l] > best) { best = start[l + 1] - start[l]; outer = l; }
-    for (int l = 0; l < nl; l++)
-        if (l == outer || nl > 1)
-            for (int k = start[l]; k < start[l + 1]; k++) fixed[verts[k]] = 1;
-    int *dof = malloc(m.nv * sizeof *dof);
-    int nfree = opt_dof_numbering(m.nv, fixed, dof);
     opt_simplices S;
     assert_int_equal(opt_simplices_from_surface(&S, m.nv, m.V, m.nf, m.F, &e), SCAF_OK);
     opt_term term = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
-    opt_slim *sl = opt_slim_create(NULL, &e);
-    double E0 = opt_term_mean_energy(&term, X), Eprev = E0;
-    for (int it = 0; it < iterations; it++) {
-        opt_slim_stats st;
-        scaf_status s = opt_slim_step(sl, &term, 1, NULL, m.nv, dof, nfree, X, &st, &e);
-        if (s != SCAF_OK) print_error("%s\n", e.message);
-        assert_int_equal(s, SCAF_OK);
-        double E = opt_term_mean_energy(&term, X);
-        assert_true(E <= Eprev);
-        Eprev = E;
-        assert_bijective(&m, X);
-    }
-    print_message("%s: %s start E = %.4f, after %d fixed-boundary SLIM iterations E = %.4f\n", rel,
-                  fb ? "Tutte (harmonic fell back)" : "harmonic", E0, iterations, Eprev);
-    assert_true(Eprev < E0);
-    opt_slim_destroy(sl);
+    double E0 = opt_term_mean_energy(&term, X);
+    print_message("%s: %s start E = %.4f\n", rel, fb ? "Tutte (harmonic fell back)" : "harmonic", E0);
+    assert_true(isfinite(E0));
     opt_simplices_free(&S);
-    free(dof); free(fixed); free(used); free(X); free(start); free(verts);
+    free(X); free(start); free(verts);
     mesh_topology_free(&t);
     mesh_free(&m);
 }
 
-static void hand(void **state) { (void)state; run_file("disk/hand_lowres.obj", 5); }
-static void camel_b(void **state) { (void)state; run_file("disk/camel_b.obj", 5); }
-static void camelhead(void **state) { (void)state; run_file("disk/camelhead.off", 3); }
-static void plane_with_27_holes(void **state) { (void)state; run_file("bad/plane_holes.obj", 3); }
+static void hand(void **state) { (void)state; run_file("disk/hand_lowres.obj"); }
+static void camel_b(void **state) { (void)state; run_file("disk/camel_b.obj"); }
+static void camelhead(void **state) { (void)state; run_file("disk/camelhead.off"); }
+static void plane_with_27_holes(void **state) { (void)state; run_file("bad/plane_holes.obj"); }
 
 int main(void)
 {

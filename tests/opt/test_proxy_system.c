@@ -15,7 +15,7 @@
 #include <stdlib.h>
 
 #include "opt/proxy_system.h"
-#include "opt/slim.h"
+#include "opt/proxy_block.h"
 #include "polar_disk.h"
 #include "rng.h"
 #include "tet_grid.h"

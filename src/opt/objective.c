@@ -1,0 +1,116 @@
+/* opt/objective: the term interface and its simplex implementation (see
+ * objective.h). The simplex term's energy sums and slope follow the loops
+ * the line search had when it knew only simplices, in the same order, so
+ * results are bit for bit those of before.
+ */
+#include "opt/objective.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "geom/predicates.h"
+#include "opt/flip_free_step.h"
+
+void opt_obj_term_free(opt_obj_term *t)
+{
+    if (t) opt_proxy_block_free(&t->blk);
+}
+
+double opt_obj_energy(const opt_obj_term *terms, int nterms, const double *X)
+{
+    double e = 0;
+    for (int k = 0; k < nterms; k++) e += terms[k].ops->energy(&terms[k], X);
+    return e;
+}
+
+int opt_obj_valid(const opt_obj_term *terms, int nterms, const double *X)
+{
+    for (int k = 0; k < nterms; k++)
+        if (terms[k].ops->valid && !terms[k].ops->valid(&terms[k], X)) return 0;
+    return 1;
+}
+
+/* ---- simplices with a distortion energy ----------------------------------- */
+
+static double simplex_energy(const opt_obj_term *t, const double *X)
+{
+    const opt_simplex_term *st = t->self;
+    opt_term term = {st->S, st->energy};
+    return opt_term_energy(&term, X);
+}
+
+/* sum weight * density and sum weight * <dE/dJ, J(D)> (J is linear in
+ * positions), added to the running sums. */
+static void simplex_energy_slope(const opt_obj_term *t, const double *X, const double *D, double *energy,
+                                 double *slope)
+{
+    const opt_simplex_term *st = t->self;
+    const opt_simplices *S = st->S;
+    int d = S->d;
+    double acc = *slope, e = *energy, J[9], G[9], JD[9];
+    for (int s = 0; s < S->n; s++) {
+        opt_jacobian(S, s, X, J);
+        opt_jacobian(S, s, D, JD);
+        double v = opt_density_grad(st->energy, d, J, G);
+        double dot = 0;
+        for (int q = 0; q < d * d; q++) dot += G[q] * JD[q];
+        acc += S->weight[s] * dot;
+        e += S->weight[s] * v;
+    }
+    *energy = e;
+    *slope = acc;
+}
+
+static scaf_status simplex_pattern(opt_obj_term *t, const int *dof, int nfree, scaf_error *err)
+{
+    const opt_simplex_term *st = t->self;
+    if (st->keep_pattern && t->blk.A.colptr && t->blk.nfree <= nfree) return SCAF_OK;
+    return opt_proxy_block_pattern(&t->blk, st->S, dof, nfree, err);
+}
+
+static void simplex_fill(opt_obj_term *t, const int *dof, const double *X, double *rhs)
+{
+    const opt_simplex_term *st = t->self;
+    opt_simplices proxy = *st->S;
+    if (st->proxy_weight) proxy.weight = (double *)st->proxy_weight; /* read only */
+    opt_term term = {&proxy, st->energy};
+    opt_proxy_block_fill(&t->blk, &term, dof, X, rhs);
+}
+
+static double simplex_max_step(const opt_obj_term *t, const double *X, const double *D)
+{
+    const opt_simplex_term *st = t->self;
+    return opt_max_step(st->S, X, D);
+}
+
+/* Every simplex strictly positively oriented at X, decided exactly. */
+static int simplex_valid(const opt_obj_term *t, const double *X)
+{
+    const opt_simplex_term *st = t->self;
+    const opt_simplices *S = st->S;
+    int d = S->d;
+    for (int s = 0; s < S->n; s++) {
+        const int *ix = S->idx + (size_t)s * (d + 1);
+        int ok;
+        if (d == 2)
+            ok = orient2d(X + 2 * (size_t)ix[0], X + 2 * (size_t)ix[1], X + 2 * (size_t)ix[2]) > 0;
+        else /* Shewchuk's orient3d is positive for a negatively oriented tet. */
+            ok = orient3d(X + 3 * (size_t)ix[0], X + 3 * (size_t)ix[1], X + 3 * (size_t)ix[2],
+                          X + 3 * (size_t)ix[3]) < 0;
+        if (!ok) return 0;
+    }
+    return 1;
+}
+
+static const opt_obj_term_ops simplex_ops = {
+    simplex_energy, simplex_energy_slope, simplex_pattern, simplex_fill, simplex_max_step, simplex_valid,
+};
+
+opt_obj_term opt_simplex_term_make(opt_simplex_term *st)
+{
+    opt_obj_term t;
+    memset(&t, 0, sizeof t);
+    t.ops = &simplex_ops;
+    t.self = st;
+    return t;
+}
