@@ -10,7 +10,9 @@
  * >= the padding exactly), E settled / final, seconds (total, setup,
  * settling iterations, repack and per-iteration measures, compaction
  * iterations, median per iteration), or the error for meshes whose charts
- * are refused. Usage: bench_atlas [MESH...] (default: the seam meshes).
+ * are refused. Usage: bench_atlas [--no-rotate] [MESH...] (default: the
+ * seam meshes and the 500 patches; --no-rotate: charts turned by multiples
+ * of 45 degrees only, no layout turn).
  */
 #include <math.h>
 #include <stdio.h>
@@ -51,6 +53,29 @@ static int cmp(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* Append an nx x ny grid patch of size sx x sy at x offset ox, bent in z
+ * by `bend`, to m (arrays grown). */
+static void add_patch(mesh *m, double sx, double sy, int nx, int ny, double ox, double bend)
+{
+    int v0 = m->nv;
+    m->V = realloc(m->V, sizeof(double) * 3 * (size_t)(m->nv + (nx + 1) * (ny + 1)));
+    m->F = realloc(m->F, sizeof(int) * 3 * (size_t)(m->nf + 2 * nx * ny));
+    if (!m->V || !m->F) abort();
+    for (int j = 0; j <= ny; j++)
+        for (int i = 0; i <= nx; i++) {
+            double *v = m->V + 3 * (size_t)(m->nv++), x = sx * i / nx, y = sy * j / ny;
+            v[0] = x + ox;
+            v[1] = y;
+            v[2] = bend * sin(0.8 * x) * cos(0.5 * y);
+        }
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++, m->nf += 2) {
+            int a = v0 + j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
+            int *t = m->F + 3 * (size_t)m->nf;
+            t[0] = a, t[1] = b, t[2] = d, t[3] = a, t[4] = d, t[5] = c;
+        }
+}
+
 static void many_patches(mesh *m, int n)
 {
     int r = 2, nvp = 9, nfp = 8;
@@ -81,10 +106,13 @@ static void many_patches(mesh *m, int n)
     }
 }
 
+static int no_rotate; /* --no-rotate: atlas option rotate = 0 */
+
 static void bench(const char *name, mesh *m)
 {
     atlas_options o = atlas_options_default();
     o.padding = 4.0 / 1024.0;
+    if (no_rotate) o.rotate = 0;
     atlas a;
     scaf_error err;
     err_clear(&err);
@@ -129,6 +157,12 @@ static void bench(const char *name, mesh *m)
 
 int main(int argc, char **argv)
 {
+    if (argc > 1 && !strcmp(argv[1], "--no-rotate")) {
+        no_rotate = 1;
+        argv[1] = argv[0];
+        argv++;
+        argc--;
+    }
     const char *seams[] = {"seams/spot.obj", "seams/blub.obj", "seams/human_neutral.obj",
                            "seams/myles_knot1_seamed.obj", "seams/myles_eight_seamed.obj"};
     printf("| mesh | charts | split vt | iterations | eff. settled (grid) | eff. re-placed | eff. final | "
@@ -155,6 +189,17 @@ int main(int argc, char **argv)
         mesh m;
         many_patches(&m, 500);
         bench("generated: 500 patches", &m);
+        mesh_free(&m);
+        memset(&m, 0, sizeof m);
+        add_patch(&m, 8.0, 1.0, 96, 12, 0.0, 0.3);
+        bench("generated: 8 x 1 strip", &m);
+        mesh_free(&m);
+        /* one large square (settles at 45 degrees from its Tutte circle)
+         * and 50 small ones */
+        memset(&m, 0, sizeof m);
+        add_patch(&m, 10.0, 10.0, 10, 10, 0.0, 0.0);
+        for (int p = 0; p < 50; p++) add_patch(&m, 0.6 + 0.05 * (p % 5), 0.6, 2, 2, 20.0 + 3.0 * p, 0.05);
+        bench("generated: 1 large + 50 small squares", &m);
         mesh_free(&m);
     }
     return 0;

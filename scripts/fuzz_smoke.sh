@@ -2,7 +2,13 @@
 # Bounded fuzz smoke run of every fuzz/fuzz_* target (libFuzzer, clang):
 # mesh readers, topology, CDT, the optimizer on tiny binary meshes, and
 # the `scaf` commands' option values on meshes with extreme coordinates.
-#   FUZZ_SECONDS      total seconds over the library fuzz targets (default 60)
+# By default the run is deterministic (what CI needs: the same inputs every
+# run, so a red run is never the luck of the draw): libFuzzer with a fixed
+# seed and a fixed number of runs per target (about 10-15 s each here).
+#   FUZZ_SEED         libFuzzer -seed (default 1)
+#   FUZZ_RUNS_SCALE   multiplies every target's run count (default 1)
+# Exploring for new bugs instead (random unless FUZZ_SEED is set):
+#   FUZZ_SECONDS      total seconds over the library fuzz targets
 #   FUZZ_CLI_SECONDS  seconds of fuzz_cli, the commands (default 15)
 #   FUZZ_JOBS         cmake build parallelism (default 2)
 # Builds build-fuzz/ with -DSCAF_FUZZ=ON, runs every fuzz/fuzz_* target on a
@@ -13,7 +19,21 @@
 # test_fuzz_regressions.c parses every file there).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+explore="${FUZZ_SECONDS:+yes}"
 seconds="${FUZZ_SECONDS:-60}"
+seed="${FUZZ_SEED:-1}"
+scale="${FUZZ_RUNS_SCALE:-1}"
+# runs per target in the deterministic mode
+runs_of() {
+  case "$1" in
+    fuzz_cli) echo 5000 ;;
+    fuzz_param | fuzz_uv_numbers) echo 15000 ;;
+    fuzz_cdt) echo 8000 ;;
+    fuzz_mesh_parse) echo 1000000 ;;
+    fuzz_topology) echo 700000 ;;
+    *) echo 10000 ;;
+  esac
+}
 cli_seconds="${FUZZ_CLI_SECONDS:-15}"
 jobs="${FUZZ_JOBS:-2}"
 if ! command -v clang >/dev/null 2>&1; then
@@ -50,9 +70,17 @@ for t in "${targets[@]}"; do
     time_s=$cli_seconds
     extra=(-close_fd_mask=3)
   fi
-  echo "fuzz_smoke: $name for ${time_s}s"
+  if [ -n "$explore" ]; then
+    budget=(-max_total_time="$time_s")
+    [ -n "${FUZZ_SEED:-}" ] && budget+=(-seed="$seed")
+    echo "fuzz_smoke: $name for ${time_s}s"
+  else
+    runs=$(( $(runs_of "$name") * scale ))
+    budget=(-seed="$seed" -runs="$runs")
+    echo "fuzz_smoke: $name, $runs runs from seed $seed"
+  fi
   if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
-      "$t" ${extra[@]+"${extra[@]}"} -max_total_time="$time_s" -max_len=4096 -rss_limit_mb=2048 -timeout=10 \
+      "$t" ${extra[@]+"${extra[@]}"} "${budget[@]}" -max_len=4096 -rss_limit_mb=2048 -timeout=10 \
       -artifact_prefix="$art/$name-" -print_final_stats=1 -dict=fuzz/mesh.dict "$work" fuzz/regressions \
       2>build-fuzz/"$name".log; then
     echo "fuzz_smoke: $name FAILED; log: build-fuzz/$name.log, inputs in $art/" >&2

@@ -73,6 +73,9 @@ static void usage(FILE *o)
             "  --lambda-ratio R         scaffold weight ratio (default 0.01)\n"
             "  --compact-lambda-ratio R scaffold weight ratio while compacting (default 1:\n"
             "                           fewer iterations; 0.3 keeps E lower, packs slower)\n"
+            "  --no-rotate              turn charts by multiples of 45 degrees only (default:\n"
+            "                           also to their least-area box, and the layout to its\n"
+            "                           smallest bounding square)\n"
             "  --quiet                  no progress line\n"
             "  --report FILE.json       per-iteration energy, gap and packing efficiency,\n"
             "                           before/after compaction, per-chart distortion\n"
@@ -187,6 +190,8 @@ static int atlas_main(int argc, char **argv)
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
+        } else if (!strcmp(a, "--no-rotate")) {
+            opt.rotate = 0;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             quiet = 1;
         } else if (!strcmp(a, "--report")) {

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/atlas_align.h"
 #include "app/atlas_pack.h"
 #include "app/param.h"
 #include "app/uv_fans.h"
@@ -49,6 +50,7 @@ atlas_options atlas_options_default(void)
     o.progress_tolerance = 1.5e-3;
     o.progress_window = 4;
     o.repack = 1;
+    o.rotate = 1;
     o.pack_cells = 1024;
     o.pack_gap_factor = 2.0;
     o.pack_picks = 2;
@@ -315,6 +317,7 @@ scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
     else if (!finite_at_least(o->distortion_tolerance, 0.0))
         bad = "distortion_tolerance must be a finite number >= 0";
     else if (o->repack != 0 && o->repack != 1) bad = "repack must be 0 or 1";
+    else if (o->rotate != 0 && o->rotate != 1) bad = "rotate must be 0 or 1";
     else if (o->pack_cells < 16 || o->pack_cells > 8192) bad = "pack_cells must be in [16, 8192]";
     else if (!(o->compact_lambda_ratio > 0.0) || !isfinite(o->compact_lambda_ratio))
         bad = "compact_lambda_ratio must be a finite number > 0";
@@ -522,9 +525,8 @@ done:
 
 /* Re-place the charts with the raster packer; keep the result only when
  * it is proved valid and packs better. */
-static scaf_status repack(atlas *a, scaf_error *err)
+static scaf_status repack_from(atlas *a, const double *base, scaf_error *err)
 {
-    a->eff_packed = NAN;
     size_t n2 = 2 * (size_t)a->nw;
     double *out = malloc(sizeof(double) * n2);
     if (!out) return err_nomem(err, "repacking");
@@ -544,11 +546,11 @@ static scaf_status repack(atlas *a, scaf_error *err)
         if (!side_c || !trial) {
             free(side_c);
             free(trial);
-            free(out);
-            return err_nomem(err, "repacking");
+            st = err_nomem(err, "repacking");
+            break;
         }
         int npick = a->opt.pack_picks;
-        st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells / 2, want,
+        st = atlas_pack(a->nw, base, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells / 2, want,
                         -1, npick, &chosen, side_c, trial, &e2);
         double best_side = INFINITY;
         for (int pick = 0; pick < npick && st == SCAF_OK; pick++) {
@@ -557,7 +559,7 @@ static scaf_status repack(atlas *a, scaf_error *err)
                 if (side_c[i] > 0 && (k < 0 || side_c[i] < side_c[k])) k = i;
             if (k < 0) break;
             side_c[k] = -1;
-            st = atlas_pack(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
+            st = atlas_pack(a->nw, base, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
                             k, 0, NULL, NULL, trial, &e2);
             double sd = st == SCAF_OK ? side_of(trial, a->nw) : INFINITY;
             if (sd < best_side) {
@@ -596,6 +598,56 @@ static scaf_status repack(atlas *a, scaf_error *err)
             a->eff_packed = eff1;
         }
         break;
+    }
+    free(out);
+    return st;
+}
+
+/* The raster packer from the settled orientations and, with rotate, from
+ * every chart turned to its least-area bounding rectangle (the packer
+ * tries multiples of 45 or 90 degrees on top of either); the best layout
+ * that passes the checks is kept. */
+static scaf_status repack(atlas *a, scaf_error *err)
+{
+    a->eff_packed = NAN;
+    double *aligned = NULL;
+    if (a->opt.rotate) {
+        aligned = malloc(sizeof(double) * 2 * (size_t)a->nw);
+        if (!aligned) return err_nomem(err, "repacking");
+        scaf_status st = atlas_align_charts(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, aligned,
+                                            NULL, err);
+        if (st != SCAF_OK) {
+            free(aligned);
+            return st;
+        }
+    }
+    scaf_status st = repack_from(a, a->loop.uv, err);
+    if (st == SCAF_OK && aligned) st = repack_from(a, aligned, err);
+    free(aligned);
+    return st;
+}
+
+/* Turn the whole layout to its smallest bounding square (app/atlas_align),
+ * kept only when every chart gap still holds the padding and the exact
+ * checker proves the turned layout bijective. */
+static scaf_status turn_layout(atlas *a, scaf_error *err)
+{
+    size_t n2 = 2 * (size_t)a->nw;
+    double *out = malloc(sizeof(double) * n2);
+    if (!out) return err_nomem(err, "turning the layout");
+    int turned = 0;
+    scaf_status st = atlas_turn_to_square(a->nw, a->loop.uv, a->nf, a->Fw, out, &turned, err);
+    if (st == SCAF_OK && turned) {
+        double g;
+        st = chart_gap_min_segments(out, a->seg, a->nseg, 0.0, &g, NULL, err);
+        if (st == SCAF_OK && g > a->opt.padding * side_of(out, a->nw) * PAD_MARGIN && g > 0.0) {
+            bij_report r;
+            st = bij_check(a->nw, out, a->nf, a->Fw, a->chart, NULL, &r, err);
+            if (st == SCAF_OK && r.bijective) {
+                memcpy(a->loop.uv, out, sizeof(double) * n2);
+                a->turns++;
+            }
+        }
     }
     free(out);
     return st;
@@ -661,9 +713,16 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
         st = repack(a, err);
         if (st != SCAF_OK) return st;
     }
+    a->turns = 0;
+    if (a->opt.rotate) {
+        st = turn_layout(a, err);
+        if (st != SCAF_OK) return st;
+    }
 
     /* ---- phase 2: compaction ------------------------------------------- */
-    if (a->ncharts > 1 && a->opt.compact_iterations > 0) {
+    /* (one chart too: the box shrinks around it, its aspect nears the
+     * square's within the distortion tolerance) */
+    if (a->opt.compact_iterations > 0) {
         a->loop.opt.scaffold.box_scale = a->opt.compact_box_scale;
         a->loop.opt.lambda_ratio = a->opt.compact_lambda_ratio;
         a->loop.opt.scaffold.box_square = 0;
@@ -717,6 +776,10 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
         free(best);
         a->loop.hooks.prepare = NULL;
         a->loop.opt = param_loop_options(&a->opt.base);
+        if (st != SCAF_OK) return st;
+    }
+    if (a->opt.rotate) {
+        st = turn_layout(a, err);
         if (st != SCAF_OK) return st;
     }
     a->eff_after = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);

@@ -16,14 +16,20 @@
  *   1. settle: plain SCAF iterations until the relative decrease of E is
  *      below settle_tolerance;
  *   1b. re-placement (repack): the settled charts are moved rigidly (a
- *      translation and a multiple of 45 degrees) by a raster packer
+ *      translation and a multiple of 45 degrees, from their settled
+ *      orientation and, with rotate, also from each chart turned to its
+ *      least-area bounding rectangle, app/atlas_align) by a raster packer
  *      (app/atlas_pack: several placement strategies ranked on a coarse
  *      grid, the best pack_picks placed on the full grid) into a square, with
  *      pack_gap_factor times the padding between charts; the new layout
  *      is used only when every triangle keeps its exact orientation, the
  *      exact checker proves it bijective, the padding holds and it packs
  *      better;
- *   2. compaction: SCAF iterations with a tight box (compact_box_scale),
+ *   1c. with rotate: the whole layout turned to its smallest bounding
+ *      square (kept when every triangle stays exactly positive, the
+ *      padding holds and the exact checker proves it bijective);
+ *   2. compaction (also for a single chart: the box shrinks its long
+ *      axis, within the distortion tolerance): SCAF iterations with a tight box (compact_box_scale),
  *      a stronger scaffold (compact_lambda_ratio) and, before each solve
  *      (the loop's prepare hook, after the rest shapes are taken): the
  *      box vertices moved toward its center by a fraction of their
@@ -36,6 +42,8 @@
  *      lowers its own total energy. It stops when the layout's side stops
  *      shrinking, when E rises above (1 + distortion_tolerance) times the
  *      settled E, after three iterations without a step, or at the cap.
+ *   3. with rotate: the layout turned again to its smallest bounding
+ *      square (same checks), before the normalization.
  * Padding: the loop's feasibility hook rejects any step after which two
  * different charts are closer than padding * side (side = the longest
  * side of the charts' UV bounding box); the loop then first retries the
@@ -88,6 +96,14 @@ typedef struct atlas_options {
                                     packer (app/atlas_pack), kept only when
                                     the exact checks pass and it packs
                                     better (1) */
+    int rotate;                  /* 1: turn charts beyond multiples of 45
+                                    degrees: the packer starts from each
+                                    chart's least-area bounding rectangle,
+                                    and the layout is turned to its
+                                    smallest bounding square after the
+                                    re-placement and after compaction
+                                    (app/atlas_align; each turn checked
+                                    exactly, kept only when valid) (1) */
     int pack_cells;              /* raster cells along the square (1024) */
     int pack_picks;              /* strategies ranked on a grid of
                                     pack_cells / 2 whose best this many are
@@ -145,6 +161,7 @@ typedef struct atlas {
                                    layout (the last iterations overshot the
                                    distortion tolerance or packed worse);
                                    the scaffold is rebuilt at the next step */
+    int turns;                  /* layout turns kept (rotate) */
     int stiffened;              /* scaffold triangles stiffened (last iteration) */
     scaf_stop_reason settle_stop, compact_stop; /* why each phase stopped
                                    (SCAF_STOP_NONE: not run) */

@@ -447,6 +447,8 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, doub
     free(sg);
     if (st != SCAF_OK) return st;
     *gap = ldexp(g, e);
+    /* a positive gap below the smallest double is not a touching (0) */
+    if (g > 0.0 && *gap == 0.0) *gap = nextafter(0.0, 1.0);
     if (isfinite(g) && !isfinite(*gap))
         return err_set(err, SCAF_ERR_NUMERIC, "the smallest chart gap (%g * 2^%d) exceeds the largest double", g, e);
     return SCAF_OK;

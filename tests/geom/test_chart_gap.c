@@ -304,6 +304,22 @@ static void charts_without_boundary(void **state)
     assert_true(fabs(g - 4.5 * sqrt(2.0)) < 1e-12);
 }
 
+/* A positive gap below the smallest double is reported as the smallest
+ * positive double, never 0 (which means touching): the point chart at
+ * (5.565e-320, 0) lies about 1e-334 from the sliver (0,0)-(9.5e-308,
+ * 1.8e-322); found by fuzz_uv_numbers. */
+static void gap_below_smallest_double(void **state)
+{
+    (void)state;
+    double UV[12] = {9.456776927139342e-308, 1.8e-322, 5.565e-320, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    int F[6] = {1, 1, 1, 0, 5, 2};
+    scaf_error err;
+    double g;
+    assert_int_equal(chart_gap_min(6, UV, 2, F, NULL, 0.0, &g, NULL, &err), SCAF_OK);
+    assert_true(g > 0.0);
+    assert_true(g == nextafter(0.0, 1.0));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -318,6 +334,7 @@ int main(void)
         cmocka_unit_test(scale_free_results),
         cmocka_unit_test(extreme_coordinates),
         cmocka_unit_test(charts_without_boundary),
+        cmocka_unit_test(gap_below_smallest_double),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
