@@ -18,6 +18,7 @@ int cmd_info(int argc, char **argv);
 int cmd_param(int argc, char **argv);
 int cmd_atlas(int argc, char **argv);
 int cmd_tet(int argc, char **argv);
+int cmd_flow(int argc, char **argv);
 
 const command scaf_commands[] = {
     {"check", "verify a UV map is bijective, a surface free of self-intersections, tets positive (exact)", cmd_check},
@@ -25,6 +26,7 @@ const command scaf_commands[] = {
     {"info", "print the topology of a mesh (components, loops, genus, defects, charts)", cmd_info},
     {"param", "bijective UV parametrization with SCAF (writes OBJ with vt)", cmd_param},
     {"atlas", "multi-chart texture atlas: joint bijective optimization, compaction, padding", cmd_atlas},
+    {"flow", "conformalized mean curvature flow of a closed surface (until free of self-intersections)", cmd_flow},
     {"tet", "tetrahedralize a box around a closed surface (TetGen, surface kept, checked exactly)", cmd_tet},
     {NULL, NULL, NULL}
 };

@@ -19,6 +19,7 @@
 #include "base/half_edges.h"
 #include "geom/predicates.h"
 #include "opt/cholmod_solver.h"
+#include "opt/cotan_laplacian.h"
 #include "opt/csc.h"
 #include "opt/energy.h"
 #include "opt/mvc.h"
@@ -52,22 +53,6 @@ static double dist3(const double *a, const double *b)
                 (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-static double tri_area3(const double *a, const double *b, const double *c)
-{
-    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
-    return 0.5 * sqrt(x * x + y * y + z * z);
-}
-
-/* cot of the angle at a in triangle a b c. */
-static double cot_at(const double *a, const double *b, const double *c)
-{
-    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
-    double cr = sqrt(x * x + y * y + z * z);
-    return (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) / cr;
-}
-
 /* Solve the Laplace system on the filled disk. UV2 holds boundary values
  * on entry (fixed[v] != 0) and all values on success. */
 static scaf_status solve_laplace(int nv2, const double *V2, int nf2, const int *F2,
@@ -92,7 +77,7 @@ static scaf_status solve_laplace(int nv2, const double *V2, int nf2, const int *
     for (int f = 0; f < nf2; f++) {
         for (int k = 0; k < 3; k++) {
             int o = F2[3 * f + k], i = F2[3 * f + (k + 1) % 3], j = F2[3 * f + (k + 2) % 3];
-            double w = cotan ? 0.5 * cot_at(V2 + 3 * (size_t)o, V2 + 3 * (size_t)i, V2 + 3 * (size_t)j) : 1.0;
+            double w = cotan ? 0.5 * opt_cot_at(V2 + 3 * (size_t)o, V2 + 3 * (size_t)i, V2 + 3 * (size_t)j) : 1.0;
             if (!isfinite(w)) { st = err_set(err, SCAF_ERR_NUMERIC, "embedding: face %d has a non-finite cotangent weight", f); goto done; }
             int di = dof[i], dj = dof[j];
             if (di >= 0) { I[nt] = di; Jc[nt] = di; Val[nt++] = w; }
@@ -156,7 +141,7 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
     free(onloop);
     double area = 0;
     for (int f = 0; f < nf; f++)
-        area += tri_area3(V + 3 * (size_t)F[3 * f], V + 3 * (size_t)F[3 * f + 1], V + 3 * (size_t)F[3 * f + 2]);
+        area += opt_tri_area3(V + 3 * (size_t)F[3 * f], V + 3 * (size_t)F[3 * f + 1], V + 3 * (size_t)F[3 * f + 2]);
     if (!(area > 0) || !isfinite(area)) return err_set(err, SCAF_ERR_MESH, "chart has 3D area %g", area);
     /* Loop lengths, outer choice, directions (every loop edge must be a
      * boundary edge, walked the same way by the loop). */
