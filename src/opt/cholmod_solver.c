@@ -65,7 +65,7 @@ struct opt_chol {
     int *colptr, *rowidx;
     int factored;        /* L holds a valid numerical factor */
     /* tril(A(p,p)) for the permutation p of L, in the form CHOLMOD's
-     * supernodal factorization reads (see permuted_lower): pattern and the
+     * supernodal factorization reads (see permuted_lower_pattern): pattern and the
      * position of every analyzed entry of A in it, made at each analysis */
     int *low_p, *low_i, *low_of; /* n+1 / nnz / nnz (-1: lower entry, unused) */
     double *low_x;               /* nnz values, refilled per factorization */
