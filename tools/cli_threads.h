@@ -1,6 +1,6 @@
 /* tools/cli_threads: the `--threads N` option of `scaf param` and `scaf
- * atlas`, i.e. how many threads the dense kernels of the sparse Cholesky
- * factorization (OpenBLAS, called by CHOLMOD) may use.
+ * atlas`: threads of the dense kernels of the sparse Cholesky
+ * factorization (scaf_set_threads).
  *
  * Results are deterministic for a given N (OpenBLAS splits each product
  * by output blocks that depend only on N and the sizes, never on timing)
@@ -11,13 +11,9 @@
 #ifndef SCAF_TOOLS_CLI_THREADS_H
 #define SCAF_TOOLS_CLI_THREADS_H
 
-/* Cores this process may run on (its CPU affinity), at least 1. */
-int cli_threads_available(void);
-
-/* Set the solver's thread count: `requested` >= 1 (from --threads), or 0
- * for the default: OPENBLAS_NUM_THREADS if set (OpenBLAS read it at
- * start), else cli_threads_available(). Returns the count now in effect
- * (0 when no OpenBLAS is linked: nothing to set). */
-int cli_threads_apply(int requested);
+/* Set the thread count: `requested` >= 1 (from --threads), or 0 for the
+ * default: OPENBLAS_NUM_THREADS if set (OpenBLAS read it at start), else
+ * every core the process may run on. */
+void cli_threads_apply(int requested);
 
 #endif

@@ -65,9 +65,6 @@ static void tune_allocator(void)
 #endif
 }
 
-/* OpenBLAS, when linked (weak: absent -> nothing to set). */
-extern void openblas_set_num_threads(int) __attribute__((weak));
-
 /* One BLAS thread unless OPENBLAS_NUM_THREADS says otherwise (`scaf param`
  * and `scaf atlas` then choose with --threads, tools/cli_threads): results
  * are then the same on every machine (threaded BLAS sums in another order),
@@ -76,7 +73,7 @@ extern void openblas_set_num_threads(int) __attribute__((weak));
 static void default_threads(void)
 {
     const char *e = getenv("OPENBLAS_NUM_THREADS");
-    if ((!e || !*e) && openblas_set_num_threads) openblas_set_num_threads(1);
+    if (!e || !*e) scaf_set_threads(1);
 }
 
 int main(int argc, char **argv)
