@@ -200,6 +200,27 @@ static int same_pattern(const opt_chol *c, const opt_csc *A)
 
 int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A) { return same_pattern(c, A); }
 
+/* Column offsets (n+1) of triu(A) permuted by pinv (new index of each
+ * unknown) and stored as the upper triangle (lower = 0: entry (r, col)
+ * goes to column max(pinv r, pinv col)) or the lower one (lower = 1:
+ * column min). A's lower entries are ignored, as CHOLMOD does for an
+ * upper-stored matrix. */
+static void permuted_offsets(const opt_csc *A, const int *pinv, int lower, int *cp)
+{
+    size_t n = (size_t)A->n;
+    memset(cp, 0, (n + 1) * sizeof *cp);
+    for (size_t col = 0; col < n; col++) {
+        int pc = pinv[col];
+        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
+            int r = A->rowidx[q];
+            if ((size_t)r > col) continue;
+            int pr = pinv[r];
+            cp[((pr < pc) == lower ? pr : pc) + 1]++;
+        }
+    }
+    for (size_t k = 0; k < n; k++) cp[k + 1] += cp[k];
+}
+
 /* The symbolic analysis of A with the given permutation, as
  * cholmod_analyze_p does it for a supernodal factor (etree, column counts,
  * weighted postorder, supernodes) but with two fewer passes over the
@@ -235,19 +256,8 @@ static cholmod_factor *analyze_given_fast(opt_chol *c, const opt_csc *A, const i
         pinv[v] = (int)k;
     }
     /* S = triu(A(p,p)): entry (r, col) of triu(A) goes to column
-     * max(pinv r, pinv col), row min (lower entries are ignored, as CHOLMOD
-     * does for an upper-stored matrix). */
-    memset(sp, 0, (n + 1) * sizeof *sp);
-    for (size_t col = 0; col < n; col++) {
-        int pc = pinv[col];
-        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
-            int r = A->rowidx[q];
-            if ((size_t)r > col) continue;
-            int pr = pinv[r];
-            sp[(pr > pc ? pr : pc) + 1]++;
-        }
-    }
-    for (size_t k = 0; k < n; k++) sp[k + 1] += sp[k];
+     * max(pinv r, pinv col), row min */
+    permuted_offsets(A, pinv, 0, sp);
     memcpy(first, sp, n * sizeof *first); /* fill cursors */
     for (size_t col = 0; col < n; col++) {
         int pc = pinv[col];
@@ -333,7 +343,7 @@ static void permuted_lower_pattern(opt_chol *c, const opt_csc *A)
     c->low_p = c->low_i = c->low_of = NULL;
     c->low_x = NULL;
     if (!c->L || !c->L->is_super) return; /* not used: CHOLMOD permutes */
-    int *lp = malloc((n + 1) * sizeof *lp), *pinv = malloc(2 * n * sizeof *pinv);
+    int *lp = malloc((n + 1) * sizeof *lp), *pinv = calloc(2 * n, sizeof *pinv);
     int *li = malloc((nz ? nz : 1) * sizeof *li), *of = malloc((nz ? nz : 1) * sizeof *of);
     double *lx = malloc((nz ? nz : 1) * sizeof *lx);
     if (!lp || !pinv || !li || !of || !lx) {
@@ -348,18 +358,8 @@ static void permuted_lower_pattern(opt_chol *c, const opt_csc *A)
     const int *perm = c->L->Perm;
     for (size_t k = 0; k < n; k++) pinv[perm[k]] = (int)k;
     /* entry (r, col) of triu(A) is (max, min) of (pinv r, pinv col) in
-     * tril(A(p,p)); A's lower entries are ignored, as CHOLMOD does */
-    memset(lp, 0, (n + 1) * sizeof *lp);
-    for (size_t col = 0; col < n; col++) {
-        int pc = pinv[col];
-        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
-            int r = A->rowidx[q];
-            if ((size_t)r > col) continue;
-            int pr = pinv[r];
-            lp[(pr < pc ? pr : pc) + 1]++;
-        }
-    }
-    for (size_t k = 0; k < n; k++) lp[k + 1] += lp[k];
+     * tril(A(p,p)) */
+    permuted_offsets(A, pinv, 1, lp);
     memcpy(cur, lp, n * sizeof *cur);
     for (size_t col = 0; col < n; col++) {
         int pc = pinv[col];
