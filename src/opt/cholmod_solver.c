@@ -64,11 +64,13 @@ struct opt_chol {
     int n, nnz;          /* analyzed pattern */
     int *colptr, *rowidx;
     int factored;        /* L holds a valid numerical factor */
+    int reused;          /* factorizations done with the current analysis */
     /* tril(A(p,p)) for the permutation p of L, in the form CHOLMOD's
      * supernodal factorization reads (see permuted_lower_pattern): pattern and the
      * position of every analyzed entry of A in it, made at each analysis */
-    int *low_p, *low_i, *low_of; /* n+1 / nnz / nnz (-1: lower entry, unused) */
-    double *low_x;               /* nnz values, refilled per factorization */
+    int *low_p, *low_i, *low_of; /* n+1 / nnz / nnz (A's lower entries, which
+                                    CHOLMOD ignores, go to the slot after the end) */
+    double *low_x;               /* nnz + 1 values, refilled per factorization */
     cholmod_dense *X, *Y, *E;    /* cholmod_solve2's result and workspaces, kept */
     int block;           /* unknowns per vertex for compressed ordering */
     opt_chol_stats st;
@@ -331,21 +333,29 @@ done:
  * factorization then only copies the values (permuted_lower_values) and
  * hands that matrix over as already permuted (stype -1, L->ordering
  * NATURAL for the call). It assigns the same values to the same factor
- * entries, so the factor is bit-identical. Without the copy (out of
- * memory) cholmod_factorize transposes as before. */
-static void permuted_lower_pattern(opt_chol *c, const opt_csc *A)
+ * entries, so the factor is bit-identical. Building it costs about one
+ * transpose, so it is built at the second factorization of an analysis
+ * (the first one lets CHOLMOD transpose): a pattern factored once, as when
+ * the scaffold changes every iteration, pays nothing extra. Without the
+ * copy (out of memory) cholmod_factorize transposes as before. */
+static void permuted_lower_free(opt_chol *c)
 {
-    size_t n = (size_t)A->n, nz = (size_t)A->nnz;
     free(c->low_p);
     free(c->low_i);
     free(c->low_of);
     free(c->low_x);
     c->low_p = c->low_i = c->low_of = NULL;
     c->low_x = NULL;
+}
+
+static void permuted_lower_pattern(opt_chol *c, const opt_csc *A)
+{
+    size_t n = (size_t)A->n, nz = (size_t)A->nnz;
+    permuted_lower_free(c);
     if (!c->L || !c->L->is_super) return; /* not used: CHOLMOD permutes */
     int *lp = malloc((n + 1) * sizeof *lp), *pinv = calloc(2 * n, sizeof *pinv);
     int *li = malloc((nz ? nz : 1) * sizeof *li), *of = malloc((nz ? nz : 1) * sizeof *of);
-    double *lx = malloc((nz ? nz : 1) * sizeof *lx);
+    double *lx = malloc((nz + 1) * sizeof *lx);
     if (!lp || !pinv || !li || !of || !lx) {
         free(lp);
         free(pinv);
@@ -366,7 +376,7 @@ static void permuted_lower_pattern(opt_chol *c, const opt_csc *A)
         for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
             int r = A->rowidx[q];
             if ((size_t)r > col) {
-                of[q] = -1;
+                of[q] = lp[n]; /* the unused last slot */
                 continue;
             }
             int pr = pinv[r];
@@ -389,7 +399,7 @@ static cholmod_sparse permuted_lower_values(opt_chol *c, const opt_csc *A)
     const double *v = A->val;
     double *x = c->low_x;
     for (int q = 0; q < A->nnz; q++)
-        if (of[q] >= 0) x[of[q]] = v[q];
+        x[of[q]] = v[q];
     cholmod_sparse S = opt_cholmod_pattern_view(A->n, c->low_p, c->low_i, 0);
     S.nzmax = (size_t)c->low_p[A->n];
     S.x = x;
@@ -447,7 +457,8 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     memcpy(c->rowidx, A->rowidx, (size_t)A->nnz * sizeof *ri);
     c->n = A->n;
     c->nnz = A->nnz;
-    permuted_lower_pattern(c, A); /* out of memory: cholmod_factorize permutes A itself */
+    permuted_lower_free(c);
+    c->reused = 0;
     c->st.analyses++;
     c->st.t_analyze += timer_now() - t0;
     return SCAF_OK;
@@ -479,6 +490,7 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
     c->factored = 0;
     int lv = omp_serial_begin();
     int ok;
+    if (!c->low_of && c->reused > 0) permuted_lower_pattern(c, A);
     if (c->low_of) {
         cholmod_sparse S = permuted_lower_values(c, A);
         int ord = c->L->ordering;
@@ -502,6 +514,7 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
                        (int)c->L->minor, (int)c->L->n);
     }
     c->factored = 1;
+    c->reused++;
     c->st.factorizations++;
     c->st.nnz_L = c->cm.lnz;
     c->st.flops = c->cm.fl;
