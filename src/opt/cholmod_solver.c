@@ -64,14 +64,7 @@ struct opt_chol {
     int n, nnz;          /* analyzed pattern */
     int *colptr, *rowidx;
     int factored;        /* L holds a valid numerical factor */
-    int reused;          /* factorizations done with the current analysis */
-    /* tril(A(p,p)) for the permutation p of L, in the form CHOLMOD's
-     * supernodal factorization reads (see permuted_lower_pattern): pattern and the
-     * position of every analyzed entry of A in it, made at each analysis */
-    int *low_p, *low_i, *low_of; /* n+1 / nnz / nnz (A's lower entries, which
-                                    CHOLMOD ignores, go to the slot after the end) */
-    double *low_x;               /* nnz + 1 values, refilled per factorization */
-    cholmod_dense *X, *Y, *E;    /* cholmod_solve2's result and workspaces, kept */
+    cholmod_dense *X, *Y, *E; /* cholmod_solve2's result and workspaces, kept */
     int block;           /* unknowns per vertex for compressed ordering */
     opt_chol_stats st;
 };
@@ -164,10 +157,6 @@ void opt_chol_destroy(opt_chol *c)
     cholmod_finish(&c->cm);
     free(c->colptr);
     free(c->rowidx);
-    free(c->low_p);
-    free(c->low_i);
-    free(c->low_of);
-    free(c->low_x);
     free(c);
 }
 
@@ -201,27 +190,6 @@ static int same_pattern(const opt_chol *c, const opt_csc *A)
 }
 
 int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A) { return same_pattern(c, A); }
-
-/* Column offsets (n+1) of triu(A) permuted by pinv (new index of each
- * unknown) and stored as the upper triangle (lower = 0: entry (r, col)
- * goes to column max(pinv r, pinv col)) or the lower one (lower = 1:
- * column min). A's lower entries are ignored, as CHOLMOD does for an
- * upper-stored matrix. */
-static void permuted_offsets(const opt_csc *A, const int *pinv, int lower, int *cp)
-{
-    size_t n = (size_t)A->n;
-    memset(cp, 0, (n + 1) * sizeof *cp);
-    for (size_t col = 0; col < n; col++) {
-        int pc = pinv[col];
-        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
-            int r = A->rowidx[q];
-            if ((size_t)r > col) continue;
-            int pr = pinv[r];
-            cp[((pr < pc) == lower ? pr : pc) + 1]++;
-        }
-    }
-    for (size_t k = 0; k < n; k++) cp[k + 1] += cp[k];
-}
 
 /* The symbolic analysis of A with the given permutation, as
  * cholmod_analyze_p does it for a supernodal factor (etree, column counts,
@@ -258,8 +226,19 @@ static cholmod_factor *analyze_given_fast(opt_chol *c, const opt_csc *A, const i
         pinv[v] = (int)k;
     }
     /* S = triu(A(p,p)): entry (r, col) of triu(A) goes to column
-     * max(pinv r, pinv col), row min */
-    permuted_offsets(A, pinv, 0, sp);
+     * max(pinv r, pinv col), row min (lower entries are ignored, as CHOLMOD
+     * does for an upper-stored matrix). */
+    memset(sp, 0, (n + 1) * sizeof *sp);
+    for (size_t col = 0; col < n; col++) {
+        int pc = pinv[col];
+        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
+            int r = A->rowidx[q];
+            if ((size_t)r > col) continue;
+            int pr = pinv[r];
+            sp[(pr > pc ? pr : pc) + 1]++;
+        }
+    }
+    for (size_t k = 0; k < n; k++) sp[k + 1] += sp[k];
     memcpy(first, sp, n * sizeof *first); /* fill cursors */
     for (size_t col = 0; col < n; col++) {
         int pc = pinv[col];
@@ -324,90 +303,6 @@ done:
     return L;
 }
 
-/* Before each numerical factorization of an upper-stored A with a fill-
- * reducing order, cholmod_factorize forms tril(A(p,p)) by a permuted
- * transpose into freshly allocated arrays (6% of the factorization time on
- * aphrodite.obj). Its pattern is that of the analysis, so it is built here
- * once per analysis (columns unsorted: the supernodal factorization only
- * scatters them by row), with the position of every entry of A in it; a
- * factorization then only copies the values (permuted_lower_values) and
- * hands that matrix over as already permuted (stype -1, L->ordering
- * NATURAL for the call). It assigns the same values to the same factor
- * entries, so the factor is bit-identical. Building it costs about one
- * transpose, so it is built at the second factorization of an analysis
- * (the first one lets CHOLMOD transpose): a pattern factored once, as when
- * the scaffold changes every iteration, pays nothing extra. Without the
- * copy (out of memory) cholmod_factorize transposes as before. */
-static void permuted_lower_free(opt_chol *c)
-{
-    free(c->low_p);
-    free(c->low_i);
-    free(c->low_of);
-    free(c->low_x);
-    c->low_p = c->low_i = c->low_of = NULL;
-    c->low_x = NULL;
-}
-
-static void permuted_lower_pattern(opt_chol *c, const opt_csc *A)
-{
-    size_t n = (size_t)A->n, nz = (size_t)A->nnz;
-    permuted_lower_free(c);
-    if (!c->L || !c->L->is_super) return; /* not used: CHOLMOD permutes */
-    int *lp = malloc((n + 1) * sizeof *lp), *pinv = calloc(2 * n, sizeof *pinv);
-    int *li = malloc((nz ? nz : 1) * sizeof *li), *of = malloc((nz ? nz : 1) * sizeof *of);
-    double *lx = malloc((nz + 1) * sizeof *lx);
-    if (!lp || !pinv || !li || !of || !lx) {
-        free(lp);
-        free(pinv);
-        free(li);
-        free(of);
-        free(lx);
-        return;
-    }
-    int *cur = pinv + n; /* fill cursors */
-    const int *perm = c->L->Perm;
-    for (size_t k = 0; k < n; k++) pinv[perm[k]] = (int)k;
-    /* entry (r, col) of triu(A) is (max, min) of (pinv r, pinv col) in
-     * tril(A(p,p)) */
-    permuted_offsets(A, pinv, 1, lp);
-    memcpy(cur, lp, n * sizeof *cur);
-    for (size_t col = 0; col < n; col++) {
-        int pc = pinv[col];
-        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
-            int r = A->rowidx[q];
-            if ((size_t)r > col) {
-                of[q] = lp[n]; /* the unused last slot */
-                continue;
-            }
-            int pr = pinv[r];
-            int at = cur[pr < pc ? pr : pc]++;
-            li[at] = pr > pc ? pr : pc;
-            of[q] = at;
-        }
-    }
-    free(pinv);
-    c->low_p = lp;
-    c->low_i = li;
-    c->low_of = of;
-    c->low_x = lx;
-}
-
-/* The values of A into the permuted lower copy; its CHOLMOD header. */
-static cholmod_sparse permuted_lower_values(opt_chol *c, const opt_csc *A)
-{
-    const int *of = c->low_of;
-    const double *v = A->val;
-    double *x = c->low_x;
-    for (int q = 0; q < A->nnz; q++)
-        x[of[q]] = v[q];
-    cholmod_sparse S = opt_cholmod_pattern_view(A->n, c->low_p, c->low_i, 0);
-    S.nzmax = (size_t)c->low_p[A->n];
-    S.x = x;
-    S.xtype = CHOLMOD_REAL;
-    S.stype = -1;
-    return S;
-}
-
 scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm,
                                    scaf_error *err)
 {
@@ -457,8 +352,6 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     memcpy(c->rowidx, A->rowidx, (size_t)A->nnz * sizeof *ri);
     c->n = A->n;
     c->nnz = A->nnz;
-    permuted_lower_free(c);
-    c->reused = 0;
     c->st.analyses++;
     c->st.t_analyze += timer_now() - t0;
     return SCAF_OK;
@@ -487,20 +380,10 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
     }
     assert(opt_csc_is_upper_sorted(A));
     double t0 = timer_now();
+    cholmod_sparse S = opt_csc_cholmod_view(A);
     c->factored = 0;
     int lv = omp_serial_begin();
-    int ok;
-    if (!c->low_of && c->reused > 0) permuted_lower_pattern(c, A);
-    if (c->low_of) {
-        cholmod_sparse S = permuted_lower_values(c, A);
-        int ord = c->L->ordering;
-        c->L->ordering = CHOLMOD_NATURAL; /* S is permuted already */
-        ok = cholmod_factorize(&S, c->L, &c->cm);
-        c->L->ordering = ord;
-    } else {
-        cholmod_sparse S = opt_csc_cholmod_view(A);
-        ok = cholmod_factorize(&S, c->L, &c->cm);
-    }
+    int ok = cholmod_factorize(&S, c->L, &c->cm);
     omp_serial_end(lv);
     c->st.t_factor += timer_now() - t0;
     if (!ok) return fail(c, "factorization", err);
@@ -514,7 +397,6 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
                        (int)c->L->minor, (int)c->L->n);
     }
     c->factored = 1;
-    c->reused++;
     c->st.factorizations++;
     c->st.nnz_L = c->cm.lnz;
     c->st.flops = c->cm.fl;

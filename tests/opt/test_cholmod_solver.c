@@ -2,9 +2,9 @@
  * 1e-10 relative residual, analysis reused for an unchanged pattern and
  * redone for a new one, relaxed supernodes, clear errors; factorizations
  * in two threads at once give the sequential answer and leave OpenMP's
- * process-wide max-active-levels as it was; the solver's own analysis,
- * permuted copy and kept solve workspaces give bit for bit the solutions
- * of plain CHOLMOD calls. */
+ * process-wide max-active-levels as it was; the solver's own analysis and
+ * kept solve workspaces give bit for bit the solutions of plain CHOLMOD
+ * calls. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -210,10 +210,10 @@ static void plain_cholmod_solve(const opt_csc *A, const int *perm, int nrhs, con
     cholmod_finish(&cm);
 }
 
-/* The solver hands CHOLMOD an already permuted lower copy of A (made per
- * analysis, refilled per factorization) and keeps its solve workspaces:
- * the solutions must be those of plain CHOLMOD bit for bit, also after
- * new values on the same pattern and with 1, 3, then 1 right-hand sides. */
+/* The solver analyses with its own passes (analyze_given_fast) and keeps
+ * its solve workspaces: the solutions must be those of plain CHOLMOD bit
+ * for bit, also after new values on the same pattern and with 1, 3, then
+ * 1 right-hand sides. */
 static void same_bits_as_plain_cholmod(void **state)
 {
     (void)state;
