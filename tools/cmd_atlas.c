@@ -25,6 +25,7 @@
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
+#include "cli_threads.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -77,6 +78,9 @@ static void usage(FILE *o)
             "                           also to their least-area box, and the layout to its\n"
             "                           smallest bounding square)\n"
             "  --quiet                  no progress line\n"
+            "  --threads N              threads of the solver's dense kernels (default: all\n"
+            "                           cores, or OPENBLAS_NUM_THREADS when set); the same\n"
+            "                           N gives the same numbers\n"
             "  --report FILE.json       per-iteration energy, gap and packing efficiency,\n"
             "                           before/after compaction, per-chart distortion\n"
             "  --svg FILE               picture of the atlas, charts in distinct colours\n"
@@ -134,7 +138,7 @@ static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
 static int atlas_main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
-    int quiet = 0;
+    int quiet = 0, threads = 0; /* threads 0: the default (cli_threads_apply) */
     double resolution = 0.0, texels = -1.0, padding = -1.0;
     atlas_options opt = atlas_options_default();
     cli_png png;
@@ -194,6 +198,10 @@ static int atlas_main(int argc, char **argv)
             opt.rotate = 0;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             quiet = 1;
+        } else if (!strcmp(a, "--threads")) {
+            NEED_VALUE();
+            if (!cli_parse_int(v, &threads)) BAD_VALUE();
+            if (threads < 1) CLI_OUT_OF_RANGE("atlas", ">= 1");
         } else if (!strcmp(a, "--report")) {
             NEED_VALUE();
             report = v;
@@ -240,6 +248,7 @@ static int atlas_main(int argc, char **argv)
             fprintf(stderr, "scaf atlas: %s\n", msg);
         return EXIT_USAGE;
     }
+    cli_threads_apply(threads);
     /* every output checked before any work; written all together at the end */
     cli_outputs outs;
     cli_uv_outputs k;

@@ -23,6 +23,7 @@
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
+#include "cli_threads.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
@@ -54,6 +55,9 @@ static void usage(FILE *o)
             "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01)\n"
             "  --min-angle DEG        scaffold minimum angle (default 20)\n"
             "  --quiet                no progress line\n"
+            "  --threads N            threads of the solver's dense kernels (default: all\n"
+            "                         cores, or OPENBLAS_NUM_THREADS when set); the same N\n"
+            "                         gives the same numbers\n"
             "  --report FILE.json     options, per-iteration energy and time, phase split\n"
             "  --svg FILE             picture of the UV layout shaded by distortion\n"
             "  --svg-scaffold         also draw the scaffold in the picture\n"
@@ -129,6 +133,7 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
 typedef struct param_args {
     const char *in, *out, *report, *svg;
     int quiet, svg_scaffold, verify;
+    int threads; /* --threads N, 0 = the default (cli_threads_apply) */
     scaf_options_t opt;
     cli_png png;
 } param_args;
@@ -185,6 +190,10 @@ static int parse_args(int argc, char **argv, param_args *o)
             if (!cli_parse_double(v, &o->opt.min_angle_deg)) BAD_VALUE();
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             o->quiet = 1;
+        } else if (!strcmp(a, "--threads")) {
+            NEED_VALUE();
+            if (!cli_parse_int(v, &o->threads)) BAD_VALUE();
+            if (o->threads < 1) CLI_OUT_OF_RANGE("param", ">= 1");
         } else if (!strcmp(a, "--report")) {
             NEED_VALUE();
             o->report = v;
@@ -225,6 +234,7 @@ static int param_main(int argc, char **argv)
     param_args args;
     int parsed = parse_args(argc, argv, &args);
     if (parsed != PARSED_RUN) return parsed;
+    cli_threads_apply(args.threads);
     const char *in = args.in, *out = args.out, *report = args.report, *svg = args.svg;
     int quiet = args.quiet, svg_scaffold = args.svg_scaffold, verify = args.verify;
     scaf_options_t opt = args.opt;

@@ -46,8 +46,9 @@ static void print_help(FILE *out)
     fprintf(out,
             "\n"
             "`scaf COMMAND --help` describes a command. `scaf --version` prints the version.\n"
-            "The sparse solver uses one BLAS thread (same results on every machine);\n"
-            "set OPENBLAS_NUM_THREADS=N to use N.\n"
+            "`scaf param` and `scaf atlas` run the sparse solver's dense kernels on all\n"
+            "cores unless --threads N or OPENBLAS_NUM_THREADS=N says N (the same N gives\n"
+            "the same numbers run after run); the other commands use one thread.\n"
             "\n");
     exit_codes_print(out);
 }
@@ -66,17 +67,15 @@ static void tune_allocator(void)
 #endif
 }
 
-/* OpenBLAS, when linked (weak: absent -> nothing to set). */
-extern void openblas_set_num_threads(int) __attribute__((weak));
-
-/* One BLAS thread unless OPENBLAS_NUM_THREADS says otherwise: results are
- * then the same on every machine (threaded BLAS sums in another order),
+/* One BLAS thread unless OPENBLAS_NUM_THREADS says otherwise (`scaf param`
+ * and `scaf atlas` then choose with --threads, tools/cli_threads): results
+ * are then the same on every machine (threaded BLAS sums in another order),
  * and on a busy machine two spinning BLAS threads made the factorization
  * several times slower (bench/RESULTS-param.md). */
 static void default_threads(void)
 {
     const char *e = getenv("OPENBLAS_NUM_THREADS");
-    if ((!e || !*e) && openblas_set_num_threads) openblas_set_num_threads(1);
+    if (!e || !*e) scaf_set_threads(1);
 }
 
 int main(int argc, char **argv)

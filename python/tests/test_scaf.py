@@ -203,6 +203,24 @@ class LibraryTest(unittest.TestCase):
         self.assertIs(a["repack"], True)
 
 
+class ThreadsTest(unittest.TestCase):
+    def test_set_threads(self):
+        V, F, _, _ = scaf.read_obj(gen("hemisphere", 60))
+        try:
+            self.assertEqual(scaf.set_threads(2), 2)
+            a = rows(scaf.param(V, F, iterations=3).uv)
+            b = rows(scaf.param(V, F, iterations=3).uv)
+            self.assertEqual(a, b)  # bit for bit, same count
+            self.assertEqual(scaf.set_threads(1), 1)
+            c = rows(scaf.param(V, F, iterations=3).uv)
+            self.assertEqual(c, rows(scaf.param(V, F, iterations=3).uv))
+            for bad in (-1, True, 1.5, "2"):
+                with self.assertRaises(scaf.UsageError):
+                    scaf.set_threads(bad)
+        finally:
+            scaf.set_threads(1)  # run_tests.sh runs with OPENBLAS_NUM_THREADS=1
+
+
 class ParamTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):

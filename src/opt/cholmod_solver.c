@@ -64,6 +64,7 @@ struct opt_chol {
     int n, nnz;          /* analyzed pattern */
     int *colptr, *rowidx;
     int factored;        /* L holds a valid numerical factor */
+    cholmod_dense *X, *Y, *E; /* cholmod_solve2's result and workspaces, kept */
     int block;           /* unknowns per vertex for compressed ordering */
     opt_chol_stats st;
 };
@@ -150,6 +151,9 @@ void opt_chol_destroy(opt_chol *c)
 {
     if (!c) return;
     if (c->L) cholmod_free_factor(&c->L, &c->cm);
+    cholmod_free_dense(&c->X, &c->cm);
+    cholmod_free_dense(&c->Y, &c->cm);
+    cholmod_free_dense(&c->E, &c->cm);
     cholmod_finish(&c->cm);
     free(c->colptr);
     free(c->rowidx);
@@ -414,11 +418,12 @@ scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, sc
     Bd.xtype = CHOLMOD_REAL;
     Bd.dtype = CHOLMOD_DOUBLE;
     int lv = omp_serial_begin();
-    cholmod_dense *Xd = cholmod_solve(CHOLMOD_A, c->L, &Bd, &c->cm);
+    /* cholmod_solve2 (what cholmod_solve calls) with the result and its
+     * workspaces kept between solves instead of allocated each time */
+    int ok = cholmod_solve2(CHOLMOD_A, c->L, &Bd, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm);
     omp_serial_end(lv);
-    if (!Xd) return fail(c, "solve", err);
-    memcpy(X, Xd->x, Bd.nzmax * sizeof *X);
-    cholmod_free_dense(&Xd, &c->cm);
+    if (!ok) return fail(c, "solve", err);
+    memcpy(X, c->X->x, Bd.nzmax * sizeof *X);
     c->st.t_solve += timer_now() - t0;
     return SCAF_OK;
 }

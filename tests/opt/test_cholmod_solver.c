@@ -2,7 +2,9 @@
  * 1e-10 relative residual, analysis reused for an unchanged pattern and
  * redone for a new one, relaxed supernodes, clear errors; factorizations
  * in two threads at once give the sequential answer and leave OpenMP's
- * process-wide max-active-levels as it was. */
+ * process-wide max-active-levels as it was; the solver's own analysis and
+ * kept solve workspaces give bit for bit the solutions of plain CHOLMOD
+ * calls. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -15,6 +17,7 @@
 #include <stdlib.h>
 
 #include "opt/cholmod_solver.h"
+#include "opt/cholmod_view.h"
 #include "opt/csc.h"
 #include "rng.h"
 
@@ -173,6 +176,80 @@ static void given_random_permutation(void **state)
     free(seen);
     free(b);
     free(x);
+}
+
+/* The solution of plain CHOLMOD calls (cholmod_analyze_p with perm,
+ * cholmod_factorize of the upper-stored A, cholmod_solve). */
+static void plain_cholmod_solve(const opt_csc *A, const int *perm, int nrhs, const double *b, double *x)
+{
+    cholmod_common cm;
+    assert_true(cholmod_start(&cm));
+    cm.print = 0;
+    cm.supernodal = CHOLMOD_SUPERNODAL;
+    cm.final_ll = 1;
+    cm.nmethods = 1;
+    cm.method[0].ordering = CHOLMOD_GIVEN;
+    cm.postorder = 1;
+    cholmod_sparse S = opt_csc_cholmod_view(A);
+    cholmod_factor *L = cholmod_analyze_p(&S, (int *)perm, NULL, 0, &cm);
+    assert_non_null(L);
+    assert_true(cholmod_factorize(&S, L, &cm));
+    cholmod_dense B;
+    memset(&B, 0, sizeof B);
+    B.nrow = B.d = (size_t)A->n;
+    B.ncol = (size_t)nrhs;
+    B.nzmax = B.nrow * B.ncol;
+    B.x = (void *)b;
+    B.xtype = CHOLMOD_REAL;
+    B.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense *X = cholmod_solve(CHOLMOD_A, L, &B, &cm);
+    assert_non_null(X);
+    memcpy(x, X->x, B.nzmax * sizeof *x);
+    cholmod_free_dense(&X, &cm);
+    cholmod_free_factor(&L, &cm);
+    cholmod_finish(&cm);
+}
+
+/* The solver analyses with its own passes (analyze_given_fast) and keeps
+ * its solve workspaces: the solutions must be those of plain CHOLMOD bit
+ * for bit, also after new values on the same pattern and with 1, 3, then
+ * 1 right-hand sides. */
+static void same_bits_as_plain_cholmod(void **state)
+{
+    (void)state;
+    opt_csc A;
+    grid_laplacian(&A, 40, 0.1, 1);
+    int n = A.n;
+    rng r = {11};
+    int *perm = malloc(n * sizeof *perm);
+    double *b = malloc(3 * n * sizeof *b), *x = malloc(3 * n * sizeof *x), *y = malloc(3 * n * sizeof *y);
+    for (int i = 0; i < n; i++) perm[i] = i;
+    for (int i = n - 1; i > 0; i--) {
+        int j = (int)rng_uniform(&r, 0, i + 1);
+        if (j > i) j = i;
+        int t = perm[i]; perm[i] = perm[j]; perm[j] = t;
+    }
+    for (int i = 0; i < 3 * n; i++) b[i] = rng_uniform(&r, -1, 1);
+    scaf_error e;
+    opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+    assert_non_null(c);
+    assert_int_equal(opt_chol_analyze_given(c, &A, perm, &e), SCAF_OK);
+    static const int nrhs[3] = {1, 3, 1};
+    for (int round = 0; round < 3; round++) {
+        if (round > 0) /* new values, same pattern: factorization only */
+            for (int q = 0; q < A.nnz; q++) A.val[q] *= 1.0 + 0.01 * rng_uniform(&r, 0, 1);
+        assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+        assert_int_equal(opt_chol_solve(c, nrhs[round], b, x, &e), SCAF_OK);
+        plain_cholmod_solve(&A, perm, nrhs[round], b, y);
+        assert_memory_equal(x, y, (size_t)nrhs[round] * n * sizeof *x);
+    }
+    assert_int_equal(opt_chol_get_stats(c).analyses, 1);
+    opt_chol_destroy(c);
+    opt_csc_free(&A);
+    free(perm);
+    free(b);
+    free(x);
+    free(y);
 }
 
 /* kron(grid Laplacian, M) with M 2x2 SPD: interleaved 2-blocks, like the
@@ -374,6 +451,7 @@ int main(void)
         cmocka_unit_test(triplets_sum_duplicates),
         cmocka_unit_test(solves_and_reuses_analysis),
         cmocka_unit_test(given_random_permutation),
+        cmocka_unit_test(same_bits_as_plain_cholmod),
         cmocka_unit_test(block_ordering_solves),
         cmocka_unit_test(relaxed_supernodes_solve),
         cmocka_unit_test(upper_sorted_layout),

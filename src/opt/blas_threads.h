@@ -1,0 +1,14 @@
+/* opt/blas_threads: how many threads the dense kernels of the sparse
+ * Cholesky factorization (OpenBLAS, called by CHOLMOD) use. Process-wide
+ * (OpenBLAS has one setting); scaf_set_threads (include/scaf/scaf.h) is
+ * the public face. */
+#ifndef SCAF_OPT_BLAS_THREADS_H
+#define SCAF_OPT_BLAS_THREADS_H
+
+/* Cores this process may run on (its CPU affinity), at least 1. */
+int opt_blas_cores(void);
+
+/* The BLAS's current thread count, 0 when it offers none to query. */
+int opt_blas_threads(void);
+
+#endif
