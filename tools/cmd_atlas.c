@@ -70,6 +70,9 @@ static void usage(FILE *o)
             "                           0 = no compaction)\n"
             "  --distortion-tolerance T stop compacting when E exceeds (1+T) times the settled\n"
             "                           E (default 0.05); the last layout within it is kept\n"
+            );
+    /* (two strings: C caps a string literal at 4095 characters) */
+    fprintf(o,
             "  --box-scale S            scaffold box while settling (default 3)\n"
             "  --lambda-ratio R         scaffold weight ratio (default 0.01)\n"
             "  --compact-lambda-ratio R scaffold weight ratio while compacting (default 1:\n"
