@@ -324,7 +324,7 @@ static int atlas_main(int argc, char **argv)
     if (svg) {
         char title[256];
         snprintf(title, sizeof title, "%s: %d charts, packing efficiency %.3f, min gap %.4f, E = %.4f", in,
-                 a.ncharts, eff, gap, scaf_loop_energy(&a.loop));
+                 a.ncharts, eff, gap, atlas_energy(&a));
         path = cli_outputs_begin(&outs, k.svg, &err);
         st = path ? atlas_svg_write(path, &a, UV, title, &err) : SCAF_ERR_IO;
         if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
@@ -352,7 +352,7 @@ static int atlas_main(int argc, char **argv)
         fprintf(stderr,
                 "scaf atlas: %d charts, %d+%d iterations, E %.5f, packing efficiency %.3f -> %.3f, "
                 "min chart gap %.5f, %.2f s\n",
-                a.ncharts, a.settle_done, a.compact_done, scaf_loop_energy(&a.loop), a.eff_before, eff, gap, total);
+                a.ncharts, a.settle_done, a.compact_done, atlas_energy(&a), a.eff_before, eff, gap, total);
         scaf_stop_reason why = atlas_stop_reason(&a);
         fprintf(stderr, "scaf atlas: stop reason: %s (%s; settle: %s, compact: %s)\n", scaf_stop_reason_name(why),
                 stop_reason_explained(why), scaf_stop_reason_name(a.settle_stop),

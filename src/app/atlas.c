@@ -92,6 +92,8 @@ static double side_of(const double *uv, int n)
 
 double atlas_side(const atlas *a) { return side_of(a->loop.uv, a->nw); }
 
+double atlas_energy(const atlas *a) { return scaf_loop_energy(&a->loop); }
+
 scaf_status atlas_gap(const atlas *a, double *gap, scaf_error *err)
 {
     double g;

@@ -193,6 +193,9 @@ void atlas_normalized_uv(const atlas *a, double *UV);
 
 /* Side and gap (normalized) of the current layout. */
 double atlas_side(const atlas *a);
+
+/* Reported energy E (symmetric Dirichlet, 4 at an isometry) of the current layout. */
+double atlas_energy(const atlas *a);
 scaf_status atlas_gap(const atlas *a, double *gap, scaf_error *err);
 
 /* Per-chart energy sum A_f SD(J_f) / sum A_f (ncharts values). */
