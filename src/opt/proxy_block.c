@@ -242,13 +242,7 @@ static inline double proxy_d(const opt_term *t, int s, const double *X, double w
             for (int q = 0; q < d; q++) acc += M[a * d + q] * T[q * d + c];
             MT[a * d + c] = acc;
         }
-    const double *G = S->grad + (size_t)s * nc * d;
-    for (int i = 0; i < nc; i++)
-        for (int a = 0; a < d; a++) {
-            double acc = 0;
-            for (int c = 0; c < d; c++) acc += MT[a * d + c] * G[i * d + c];
-            lin[i * d + a] = acc;
-        }
+    opt_pullback(d, S->grad + (size_t)s * nc * d, MT, lin);
     return w2;
 }
 
