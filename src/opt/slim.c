@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "base/timer.h"
+#include "opt/newton_fill.h"
 #include "opt/ordering_reuse.h"
 
 struct opt_slim {
@@ -24,6 +25,7 @@ struct opt_slim {
     int lead_n;
     unsigned lead_version;    /* term 0 block version lead_perm was made for */
     int cap_level;            /* SLIM weight cap level to start from */
+    int newton_exact;         /* next Newton step tries the exact Hessian */
     size_t cap_n, cap_x;
 };
 
@@ -115,22 +117,62 @@ static scaf_status analyze_with_chart_ordering(opt_slim *sl, int d, scaf_error *
     return s;
 }
 
-scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
-                          const int *term_changed, int nv, const int *dof, int nfree, double *X,
-                          opt_slim_stats *st, scaf_error *err)
+/* Values of the system, summed: SLIM's proxy with squared weights capped
+ * at cap, or the Newton Hessian, projected or not (rhs = -gradient). */
+static scaf_status fill_values(opt_slim *sl, int newton, int project, const opt_term *terms,
+                               int nterms, const int *dof, const double *X, double cap,
+                               double *w2max, int *clamped, scaf_error *err)
 {
+    for (int k = 0; k < nterms; k++) {
+        if (newton) {
+            opt_newton_fill_stats ns;
+            scaf_status s = opt_newton_block_fill(&sl->blk[k], &terms[k], dof, X, project,
+                                                  sl->rhs, &ns, err);
+            if (s != SCAF_OK) return s;
+            *clamped += ns.clamped;
+        } else {
+            double w = opt_proxy_block_fill_capped(&sl->blk[k], &terms[k], dof, X, sl->rhs, cap);
+            if (w > *w2max) *w2max = w;
+        }
+    }
+    return SCAF_OK;
+}
+
+static void add_to_diagonal(opt_csc *A, double shift)
+{
+    for (int c = 0; c < A->n; c++) {
+        int e = A->colptr[c + 1] - 1;
+        if (e >= A->colptr[c] && A->rowidx[e] == c) A->val[e] += shift;
+    }
+}
+
+static double max_diagonal(const opt_csc *A)
+{
+    double m = 0;
+    for (int c = 0; c < A->n; c++) {
+        int e = A->colptr[c + 1] - 1;
+        if (e >= A->colptr[c] && A->rowidx[e] == c && A->val[e] > m) m = A->val[e];
+    }
+    return m;
+}
+
+static scaf_status step(opt_slim *sl, int newton, const opt_term *terms, int nterms,
+                        const int *term_changed, int nv, const int *dof, int nfree, double *X,
+                        opt_slim_stats *st, scaf_error *err)
+{
+    const char *who = newton ? "Newton" : "SLIM";
     opt_slim_stats local;
     if (!st) st = &local;
     memset(st, 0, sizeof *st);
     if (nterms < 1 || nterms > OPT_PROXY_MAX_BLOCKS)
-        return err_set(err, SCAF_ERR_USAGE, "SLIM: %d terms (1..%d allowed)", nterms,
+        return err_set(err, SCAF_ERR_USAGE, "%s: %d terms (1..%d allowed)", who, nterms,
                        OPT_PROXY_MAX_BLOCKS);
     int d = terms[0].s->d;
     for (int k = 0; k < nterms; k++)
         if (terms[k].s->d != d)
-            return err_set(err, SCAF_ERR_USAGE, "SLIM: term %d has dimension %d, term 0 has %d", k,
+            return err_set(err, SCAF_ERR_USAGE, "%s: term %d has dimension %d, term 0 has %d", who, k,
                            terms[k].s->d, d);
-    if (nfree < 1) return err_set(err, SCAF_ERR_USAGE, "SLIM: no free vertex");
+    if (nfree < 1) return err_set(err, SCAF_ERR_USAGE, "%s: no free vertex", who);
     size_t n = (size_t)nfree * d, nx = (size_t)nv * d;
     scaf_status s;
     if (n > sl->cap_n) {
@@ -156,11 +198,20 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
         }
     }
     st->t_pattern = timer_now() - t0;
-    /* Values, factorization; on a numerically indefinite system (extreme
-     * SLIM weights) retry with the squared weights capped, tighter each
-     * time. The level that worked is kept while it is binding. */
+    /* Values, factorization, solve. SLIM: on a numerically indefinite
+     * system (extreme SLIM weights) retry with the squared weights capped,
+     * tighter each time; the level that worked is kept while it is
+     * binding. Newton (level -1): the exact Hessian when the last step was
+     * a full one (near a minimum, where it is positive definite and gives
+     * quadratic convergence; per-simplex projection alone changes the
+     * Hessian AT the minimum of a curved surface and converges only
+     * linearly); if it is not positive definite or gives no descent, the
+     * projected one (level 0), then with a diagonal shift of 1e-10, 1e-8,
+     * ... times its largest diagonal entry (levels 1..). */
     static const double caps[] = {INFINITY, 1e12, 1e9, 1e6, 1e4};
+    static const double shifts[] = {0, 1e-10, 1e-8, 1e-6, 1e-4};
     const int ncaps = (int)(sizeof caps / sizeof caps[0]);
+    const int nshifts = (int)(sizeof shifts / sizeof shifts[0]);
     const opt_proxy_block *bl[OPT_PROXY_MAX_BLOCKS];
     for (int k = 0; k < nterms; k++) bl[k] = &sl->blk[k];
     if (sl->o.block_ordering && !sl->block_set) {
@@ -168,29 +219,26 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
         sl->block_set = 1;
     }
     opt_chol_stats c0 = opt_chol_get_stats(sl->chol);
-    double t_extend = 0, w2max = 0;
-    int level = sl->cap_level < ncaps ? sl->cap_level : 0;
+    double t_extend = 0, w2max = 0, shift = 0;
+    int level = newton ? (sl->newton_exact ? -1 : 0) : sl->cap_level < ncaps ? sl->cap_level : 0;
+    int exact_failed = 0;
     for (;;) {
         double ta = timer_now();
         memset(sl->rhs, 0, n * sizeof *sl->rhs);
         w2max = 0;
-        for (int k = 0; k < nterms; k++) {
-            double w = opt_proxy_block_fill_capped(&sl->blk[k], &terms[k], dof, X, sl->rhs, caps[level]);
-            if (w > w2max) w2max = w;
-        }
+        st->clamped = 0;
+        s = fill_values(sl, newton, level >= 0, terms, nterms, dof, X,
+                        caps[level >= 0 ? level : 0], &w2max, &st->clamped, err);
+        if (s != SCAF_OK) return s;
         s = opt_proxy_system_sum(&sl->sys, bl, nterms, err);
         if (s != SCAF_OK) return s;
         if (sl->sys.nfree != nfree)
             return err_set(err, SCAF_ERR_USAGE,
-                           "SLIM: %d free vertices but the simplices use only %d (a free vertex is "
-                           "in no simplex: fix it or drop it)", nfree, sl->sys.nfree);
-        if (sl->o.regularization > 0) {
-            opt_csc *A = &sl->sys.A;
-            for (int c = 0; c < A->n; c++) {
-                int e = A->colptr[c + 1] - 1;
-                if (e >= A->colptr[c] && A->rowidx[e] == c) A->val[e] += sl->o.regularization;
-            }
-        }
+                           "%s: %d free vertices but the simplices use only %d (a free vertex is "
+                           "in no simplex: fix it or drop it)", who, nfree, sl->sys.nfree);
+        shift = newton && level > 0 ? shifts[level] * max_diagonal(&sl->sys.A) : 0.0;
+        if (sl->o.regularization + shift > 0)
+            add_to_diagonal(&sl->sys.A, sl->o.regularization + shift);
         st->t_assemble += timer_now() - ta;
         if (sl->o.reuse_chart_ordering && !opt_chol_pattern_matches(sl->chol, &sl->sys.A)) {
             double te = timer_now();
@@ -199,16 +247,34 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
             t_extend += timer_now() - te;
         }
         s = opt_chol_factor(sl->chol, &sl->sys.A, err);
-        if (s == SCAF_OK) break;
-        if (s != SCAF_ERR_NUMERIC || level + 1 >= ncaps) return s;
+        if (s == SCAF_OK) {
+            s = opt_chol_solve(sl->chol, 1, sl->rhs, sl->sol, err);
+            if (s != SCAF_OK) return s;
+            /* rhs = -g: descent iff -g . p > 0. */
+            double dec = 0;
+            for (size_t k = 0; k < n; k++) dec += sl->rhs[k] * sl->sol[k];
+            if (level >= 0 || dec > 0) break;
+            s = SCAF_ERR_NUMERIC;
+        }
+        if (s != SCAF_ERR_NUMERIC) return s;
+        if (newton && level < 0) { /* exact Hessian indefinite: project */
+            exact_failed = 1;
+            level = 0;
+            continue;
+        }
+        if (level + 1 >= (newton ? nshifts : ncaps)) return s;
         level++;
         st->cap_retries++;
     }
-    st->weight_cap = caps[level];
-    st->max_weight2 = w2max;
-    sl->cap_level = w2max > caps[level] ? level : 0;
-    s = opt_chol_solve(sl->chol, 1, sl->rhs, sl->sol, err);
-    if (s != SCAF_OK) return s;
+    if (newton) {
+        st->weight_cap = INFINITY;
+        st->shift = shift;
+        st->exact = level < 0;
+    } else {
+        st->weight_cap = caps[level];
+        st->max_weight2 = w2max;
+        sl->cap_level = w2max > caps[level] ? level : 0;
+    }
     opt_chol_stats c1 = opt_chol_get_stats(sl->chol);
     st->analyzed = c1.analyses > c0.analyses;
     st->t_analyze = t_extend > 0 ? t_extend : c1.t_analyze - c0.t_analyze;
@@ -219,8 +285,27 @@ scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
     for (int v = 0; v < nv; v++)
         for (int a = 0; a < d; a++)
             sl->dir[(size_t)v * d + a] =
-                dof[v] >= 0 ? sl->sol[(size_t)dof[v] * d + a] - X[(size_t)v * d + a] : 0.0;
+                dof[v] < 0 ? 0.0
+                : newton   ? sl->sol[(size_t)dof[v] * d + a]
+                           : sl->sol[(size_t)dof[v] * d + a] - X[(size_t)v * d + a];
     s = opt_line_search(terms, nterms, d, nv, X, sl->dir, &sl->o.ls, &st->ls, err);
     st->t_line_search = timer_now() - t4;
+    /* Next Newton step: try the exact Hessian after a full step, unless it
+     * just failed (then one projected step first). */
+    sl->newton_exact = s == SCAF_OK && st->ls.step >= sl->o.ls.max_step && !exact_failed;
     return s;
+}
+
+scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
+                          const int *term_changed, int nv, const int *dof, int nfree, double *X,
+                          opt_slim_stats *st, scaf_error *err)
+{
+    return step(sl, 0, terms, nterms, term_changed, nv, dof, nfree, X, st, err);
+}
+
+scaf_status opt_newton_step(opt_slim *sl, const opt_term *terms, int nterms,
+                            const int *term_changed, int nv, const int *dof, int nfree, double *X,
+                            opt_slim_stats *st, scaf_error *err)
+{
+    return step(sl, 1, terms, nterms, term_changed, nv, dof, nfree, X, st, err);
 }

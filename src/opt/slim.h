@@ -75,9 +75,14 @@ typedef struct opt_slim_stats {
     double t_line_search;
     int analyzed;        /* 1 if this iteration needed a new analysis */
     int blocks_rebuilt;  /* terms whose pattern was rebuilt this iteration */
-    int cap_retries;     /* factorizations redone with tighter weight caps */
+    int cap_retries;     /* factorizations redone with tighter weight caps
+                            (Newton: with a larger diagonal shift) */
     double weight_cap;   /* cap on squared SLIM weights used (INFINITY: none) */
-    double max_weight2;  /* largest uncapped squared SLIM weight */
+    double max_weight2;  /* largest uncapped squared SLIM weight (SLIM only) */
+    int clamped;         /* Newton: simplices whose Hessian had a negative
+                            eigenvalue clamped to 0 */
+    double shift;        /* Newton: diagonal shift that made H factorable (0) */
+    int exact;           /* Newton: 1 if the exact (unprojected) Hessian was used */
     opt_ls_result ls;    /* step, energies before/after, backtracks */
 } opt_slim_stats;
 
@@ -99,6 +104,27 @@ void opt_slim_destroy(opt_slim *sl);
 scaf_status opt_slim_step(opt_slim *sl, const opt_term *terms, int nterms,
                           const int *term_changed, int nv, const int *dof, int nfree, double *X,
                           opt_slim_stats *st, scaf_error *err);
+
+/* One projected Newton iteration with the same object, arguments and
+ * machinery: the system is the sum of the terms' PSD-projected Hessians
+ * (opt/newton_fill) in the SLIM proxy's pattern — switching between
+ * opt_slim_step and opt_newton_step needs no new symbolic analysis — its
+ * solution p is the direction (H p = -g, fixed vertices do not move), and
+ * the line search is the same (flip-free bound, Armijo, exact orientation
+ * check; a full step is t = 1, o.ls.max_step). Every term must be
+ * symmetric Dirichlet (SCAF_ERR_USAGE otherwise). After a full step
+ * (t = max_step) the next step first tries the exact Hessian: near a
+ * strict minimum it is positive definite and converges quadratically,
+ * while the per-simplex projection, active at the minimum of a curved
+ * surface (stretched simplices have negative twists there), converges only
+ * linearly. When the exact one is not positive definite (or gives no
+ * descent) the projected one is used; that one is semidefinite, and when
+ * CHOLMOD finds it not positive definite the factorization is retried
+ * with a diagonal shift (1e-10 .. 1e-4 of its largest diagonal entry),
+ * reported in st->shift. From far away SLIM steps are usually better. */
+scaf_status opt_newton_step(opt_slim *sl, const opt_term *terms, int nterms,
+                            const int *term_changed, int nv, const int *dof, int nfree, double *X,
+                            opt_slim_stats *st, scaf_error *err);
 
 /* The solver inside (statistics, permutation). */
 const opt_chol *opt_slim_solver(const opt_slim *sl);
