@@ -19,8 +19,8 @@
 #include <string.h>
 
 #include "../tests/opt/polar_disk.h"
+#include "disk_mesh.h"
 #include "base/timer.h"
-#include "mesh/mesh_io.h"
 #include "opt/embed.h"
 #include "opt/slim.h"
 
@@ -36,61 +36,12 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-static int cmp_ll(const void *a, const void *b)
-{
-    long long x = *(const long long *)a, y = *(const long long *)b;
-    return (x > y) - (x < y);
-}
-
 static uint64_t checksum(const double *x, size_t n)
 {
     uint64_t h = 1469598103934665603ULL;
     const unsigned char *p = (const unsigned char *)x;
     for (size_t k = 0; k < n * sizeof *x; k++) h = (h ^ p[k]) * 1099511628211ULL;
     return h;
-}
-
-/* Read a mesh with the library's reader (any format, .gz ok) and find its
- * single boundary loop (the topology module is not used here). */
-static int load_mesh(const char *path, polar_disk *m)
-{
-    mesh in = {0};
-    scaf_error err;
-    if (mesh_read(path, &in, NULL, &err) != SCAF_OK) {
-        fprintf(stderr, "%s\n", err.message);
-        return -1;
-    }
-    m->nv = in.nv;
-    m->nf = in.nf;
-    m->V = in.V;
-    m->F = in.F;
-    free(in.UV);
-    free(in.FT);
-    /* Boundary half-edges: directed edges whose reverse is absent. */
-    int *next = malloc((size_t)m->nv * sizeof *next);
-    long long *keys = malloc(3 * (size_t)m->nf * sizeof *keys);
-    if (!next || !keys) return -1;
-    for (int v = 0; v < m->nv; v++) next[v] = -1;
-    for (int t = 0; t < m->nf; t++)
-        for (int k = 0; k < 3; k++)
-            keys[3 * t + k] = (long long)m->F[3 * t + k] * m->nv + m->F[3 * t + (k + 1) % 3];
-    qsort(keys, 3 * (size_t)m->nf, sizeof *keys, cmp_ll);
-    int start = -1, nb = 0;
-    for (size_t k = 0; k < 3 * (size_t)m->nf; k++) {
-        long long a = keys[k] / m->nv, b = keys[k] % m->nv, rev = b * m->nv + a;
-        if (!bsearch(&rev, keys, 3 * (size_t)m->nf, sizeof *keys, cmp_ll)) { next[a] = (int)b; start = (int)a; nb++; }
-    }
-    free(keys);
-    m->loops = malloc(((size_t)nb + 1) * sizeof *m->loops);
-    if (start < 0 || !m->loops) return -1;
-    int len = 0, v = start;
-    do { m->loops[len++] = v; v = next[v]; } while (v != start && v >= 0 && len < nb);
-    free(next);
-    if (len != nb) { fprintf(stderr, "%s: %d boundary edges, first loop has %d (not one loop)\n", path, nb, len); return -1; }
-    m->nloops = 1;
-    m->start[0] = 0;
-    m->start[1] = len;
-    return 0;
 }
 
 int main(int argc, char **argv)
@@ -101,7 +52,7 @@ int main(int argc, char **argv)
     iters = argc > 3 ? atoi(argv[3]) : 6;
     if (argc > 4) only = strcmp(argv[4], "amd") == 0 ? 0 : strcmp(argv[4], "metis") == 0 ? 1 : 2;
     if (from_file) {
-        if (load_mesh(argv[2], &m) != 0) { fprintf(stderr, "cannot load %s\n", argv[2]); return 1; }
+        if (disk_mesh_load(argv[2], &m) != 0) { fprintf(stderr, "cannot load %s\n", argv[2]); return 1; }
     } else {
         int rings = argc > 1 ? atoi(argv[1]) : 196, seg = argc > 2 ? atoi(argv[2]) : 256;
         if (rings < 2 || seg < 3) {
@@ -142,14 +93,7 @@ int main(int argc, char **argv)
     }
     printf("harmonic embedding: %.3f s%s; start: E = %.5f (the iterations below start here)\n\n",
            timer_now() - t0, fb ? " (fell back to Tutte)" : "", opt_term_mean_energy(&tstart, X0));
-    for (int k = 0; k < m.start[1]; k++) fixed[m.loops[k]] = 1;
-    {   /* Unreferenced vertices have no simplex: keep them out of the system. */
-        unsigned char *used = calloc((size_t)m.nv, 1);
-        if (!used) return 1;
-        for (int k = 0; k < 3 * m.nf; k++) used[m.F[k]] = 1;
-        for (int v = 0; v < m.nv; v++) if (!used[v]) fixed[v] = 1;
-        free(used);
-    }
+    if (disk_mesh_fixed(&m, fixed) != 0) return 1;
     int nfree = opt_dof_numbering(m.nv, fixed, dof);
     opt_term t = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
 
