@@ -203,6 +203,35 @@ static void newton_fill_matches_dense_assembly(void **state)
     problem_free(&p);
 }
 
+/* add_local folds a simplex whose vertex repeats (i != j, same vertex)
+ * into the vertex's diagonal block from both orders. */
+static void add_local_folds_repeated_vertices(void **state)
+{
+    (void)state;
+    opt_simplices S;
+    assert_int_equal(opt_simplices_alloc(&S, 2, 1, NULL), SCAF_OK);
+    int idx[3] = {1, 0, 1}, dof[2] = {0, 1};
+    memcpy(S.idx, idx, sizeof idx);
+    for (int k = 0; k < 6; k++) S.grad[k] = 1.0;
+    S.vol[0] = S.weight[0] = 1.0;
+    opt_proxy_block b = {0};
+    assert_int_equal(opt_proxy_block_pattern(&b, &S, dof, 2, NULL), SCAF_OK);
+    rng r = {21};
+    double K[36], ref[16] = {0};
+    for (int m = 0; m < 6; m++)
+        for (int k = m; k < 6; k++) K[m * 6 + k] = K[k * 6 + m] = rng_uniform(&r, -1, 1);
+    for (int m = 0; m < 6; m++)
+        for (int k = 0; k < 6; k++)
+            ref[(dof[idx[m / 2]] * 2 + m % 2) * 4 + dof[idx[k / 2]] * 2 + k % 2] += K[m * 6 + k];
+    memset(b.A.val, 0, (size_t)b.A.nnz * sizeof *b.A.val);
+    opt_proxy_block_add_local(&b, &S, 0, dof, K);
+    double *M = dense_of(&b.A);
+    for (int k = 0; k < 16; k++) assert_true(fabs(M[k] - ref[k]) < 1e-15);
+    free(M);
+    opt_proxy_block_free(&b);
+    opt_simplices_free(&S);
+}
+
 static void newton_fill_refuses_bad_input(void **state)
 {
     (void)state;
@@ -356,6 +385,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(newton_fill_matches_dense_assembly),
+        cmocka_unit_test(add_local_folds_repeated_vertices),
         cmocka_unit_test(newton_fill_refuses_bad_input),
         cmocka_unit_test(newton_reuses_slim_analysis),
         cmocka_unit_test(newton_converges_quadratically_2d),
