@@ -10,8 +10,8 @@
  * Each runs until the line search takes no step (converged to rounding) or
  * the iteration cap. Prints per strategy the energy per iteration (mean
  * density E, 4 at an isometry) with cumulative time and, for Newton steps,
- * whether the exact Hessian was used and how many triangles had a negative
- * eigenvalue; then a summary: iterations and seconds to come within 1e-4,
+ * whether the exact Hessian was used (or tried and rejected as not
+ * positive definite) and how many triangles had a negative eigenvalue; then a summary: iterations and seconds to come within 1e-4,
  * 1e-6, 1e-8, 1e-10 (relative) of the lowest energy any strategy reached.
  * Usage: bench_newton [--obj FILE] [max_iterations (300)] [--quiet]
  * Without --obj: a generated curved disk (tests/opt/polar_disk.h).
@@ -67,7 +67,7 @@ static int run(trace *tr, double tau, int newton_only, int max_it, const opt_ter
         tr->t[k] = timer_now() - t0;
         if (!quiet)
             printf("| %d | %s | %.12f | %.3f | %s | %d |\n", k, newton ? "Newton" : "SLIM", tr->E[k],
-                   tr->t[k], newton ? (st.exact ? "yes" : "no") : "", newton ? st.clamped : 0);
+                   tr->t[k], newton ? (st.exact ? "yes" : st.exact_rejected ? "rejected" : "no") : "", newton ? st.clamped : 0);
         if (!newton && tau > 0 && (tr->E[k - 1] - tr->E[k]) < tau * tr->E[k]) {
             newton = 1;
             tr->newton_from = k + 1;

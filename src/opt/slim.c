@@ -270,6 +270,7 @@ static scaf_status step(opt_slim *sl, int newton, const opt_term *terms, int nte
         st->weight_cap = INFINITY;
         st->shift = shift;
         st->exact = level < 0;
+        st->exact_rejected = exact_failed;
     } else {
         st->weight_cap = caps[level];
         st->max_weight2 = w2max;

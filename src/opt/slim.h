@@ -83,6 +83,8 @@ typedef struct opt_slim_stats {
                             eigenvalue clamped to 0 */
     double shift;        /* Newton: diagonal shift that made H factorable (0) */
     int exact;           /* Newton: 1 if the exact (unprojected) Hessian was used */
+    int exact_rejected;  /* Newton: 1 if it was tried first but was not
+                            positive definite (the projected one was used) */
     opt_ls_result ls;    /* step, energies before/after, backtracks */
 } opt_slim_stats;
 
