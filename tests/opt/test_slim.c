@@ -142,9 +142,8 @@ static void slim_two_terms_rebuilt(void **state)
  * weight set to lambda = E_M / (100 |S|). Every simplex stays positive
  * (exact), each step lowers its iteration's total energy, the chart's
  * block is never rebuilt and its energy goes down. */
-static void slim_with_changing_scaffold(void **state)
+static void changing_scaffold(int iters, int newton_from)
 {
-    (void)state;
     int rc = 6, seg = 24, rs = 4;
     polar_disk chart;
     assert_int_equal(polar_disk_make(&chart, rc, seg, 1.5, 0), 0);
@@ -171,7 +170,7 @@ static void slim_with_changing_scaffold(void **state)
     opt_slim *sl = opt_slim_create(NULL, NULL);
     opt_term tc = {&C, OPT_ENERGY_SYMMETRIC_DIRICHLET};
     double e_first = opt_term_mean_energy(&tc, X), e_prev = e_first;
-    for (int it = 0; it < 8; it++) {
+    for (int it = 0; it < iters; it++) {
         int f = 0;
         for (int k = 0; k < rs; k++)
             for (int j = 0; j < seg; j++) {
@@ -193,7 +192,9 @@ static void slim_with_changing_scaffold(void **state)
         int changed[2] = {0, 1};
         opt_slim_stats st;
         scaf_error e;
-        scaf_status s = opt_slim_step(sl, terms, 2, changed, nv, dof, nfree, X, &st, &e);
+        scaf_status s = it >= newton_from
+                            ? opt_newton_step(sl, terms, 2, changed, nv, dof, nfree, X, &st, &e)
+                            : opt_slim_step(sl, terms, 2, changed, nv, dof, nfree, X, &st, &e);
         if (s != SCAF_OK) print_error("%s\n", e.message);
         assert_int_equal(s, SCAF_OK);
         assert_true(st.ls.energy_after <= st.ls.energy_before);
@@ -203,12 +204,27 @@ static void slim_with_changing_scaffold(void **state)
         opt_simplices_free(&Sc);
     }
 #undef RV
-    print_message("changing scaffold: chart E %.4f -> %.4f after 8 iterations\n", e_first, e_prev);
+    print_message("changing scaffold: chart E %.4f -> %.4f after %d iterations (Newton from %d)\n",
+                  e_first, e_prev, iters, newton_from);
     assert_true(e_prev < e_first);
     opt_slim_destroy(sl);
     opt_simplices_free(&C);
     free(SF); free(dof); free(fixed); free(X);
     polar_disk_free(&chart);
+}
+
+static void slim_with_changing_scaffold(void **state)
+{
+    (void)state;
+    changing_scaffold(8, 8);
+}
+
+/* The same loop switching to Newton steps (true scaffold Hessian, exact or
+ * projected) after 3 SLIM steps: the same guarantees. */
+static void newton_with_changing_scaffold(void **state)
+{
+    (void)state;
+    changing_scaffold(12, 3);
 }
 
 static void slim_tets(void **state)
@@ -262,6 +278,7 @@ int main(void)
         cmocka_unit_test(slim_disk_conformal),
         cmocka_unit_test(slim_two_terms_rebuilt),
         cmocka_unit_test(slim_with_changing_scaffold),
+        cmocka_unit_test(newton_with_changing_scaffold),
         cmocka_unit_test(slim_tets),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
