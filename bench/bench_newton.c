@@ -103,12 +103,8 @@ int main(int argc, char **argv)
     }
     scaf_error err;
     opt_simplices S;
-    if (opt_simplices_from_surface(&S, m.nv, m.V, m.nf, m.F, &err) != SCAF_OK) {
-        fprintf(stderr, "%s\n", err.message);
-        return 1;
-    }
-    double wsum = 0;
-    for (int s = 0; s < S.n; s++) wsum += S.weight[s];
+    double wsum;
+    if (disk_mesh_chart(&m, &S, &wsum) != 0) return 1;
     double *X0 = malloc(2 * (size_t)m.nv * sizeof *X0);
     int *dof = malloc((size_t)m.nv * sizeof *dof);
     unsigned char *fixed = calloc((size_t)m.nv, 1);

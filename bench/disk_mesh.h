@@ -12,6 +12,7 @@
 
 #include "../tests/opt/polar_disk.h"
 #include "mesh/mesh_io.h"
+#include "opt/simplices.h"
 
 static inline int disk_mesh_cmp_ll(const void *a, const void *b)
 {
@@ -74,6 +75,20 @@ static inline int disk_mesh_fixed(const polar_disk *m, unsigned char *fixed)
     for (int v = 0; v < m->nv; v++)
         if (!used[v]) fixed[v] = 1;
     free(used);
+    return 0;
+}
+
+/* The chart's simplices (rest frames of the 3D triangles, weight = area)
+ * and the sum of their weights. Returns 0, or -1 with a message. */
+static inline int disk_mesh_chart(const polar_disk *m, opt_simplices *S, double *wsum)
+{
+    scaf_error err;
+    if (opt_simplices_from_surface(S, m->nv, m->V, m->nf, m->F, &err) != SCAF_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return -1;
+    }
+    *wsum = 0;
+    for (int s = 0; s < S->n; s++) *wsum += S->weight[s];
     return 0;
 }
 
