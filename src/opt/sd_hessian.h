@@ -11,7 +11,9 @@
  *   twist    Q = (u_i v_j^T - u_j v_i^T)/sqrt2 lambda = 2 - 2 (s_i^2 - s_i s_j + s_j^2) / (s_i s_j)^3
  * for i < j: d + d(d-1) = d^2 modes, orthonormal in the Frobenius product.
  * Scaling and flip eigenvalues are always positive; only twists can be
- * negative (when the simplex is stretched: s_i s_j large), in 2D and 3D.
+ * negative, in 2D and 3D: when s_i^2 - s_i s_j + s_j^2 > (s_i s_j)^3, i.e.
+ * an anisotropic or compressed pair (s = (2, 0.5): twist -4.5; zero at a
+ * rotation, positive for a uniform scale > 1).
  * The projected Hessian keeps every mode with its eigenvalue clamped to 0
  * (exactly 0, no floor: a caller needing strict definiteness regularizes
  * the assembled system), so H_proj - H is PSD with rank = the number of

@@ -116,8 +116,9 @@ static void eigensystem_is_the_spectrum(void **state)
             }
 }
 
-/* The families produce negative twists (the projection is exercised). */
-static void stretched_simplices_have_negative_twists(void **state)
+/* Anisotropic Jacobians have negative twists (the projection is
+ * exercised); s = (2, 0.5) has exactly one, -4.5. */
+static void anisotropic_simplices_have_negative_twists(void **state)
 {
     (void)state;
     rng r = {6};
@@ -140,6 +141,18 @@ static void stretched_simplices_have_negative_twists(void **state)
             else assert_true(fabs(lambda[k] - 8) < 1e-12);
         }
         assert_int_equal(at_rotation, d * (d - 1) / 2);
+        double D[9] = {0}, l2[9], Q2[81];
+        D[0] = 2.0;
+        D[d + 1] = 0.5;
+        if (d == 3) D[8] = 1.0;
+        assert_int_equal(opt_sd_eigensystem(d, D, l2, Q2), 0);
+        int count = 0;
+        for (int k = 0; k < d * d; k++)
+            if (l2[k] < 0) {
+                count++;
+                if (d == 2) assert_true(fabs(l2[k] + 4.5) < 1e-12);
+            }
+        assert_int_equal(count, d == 2 ? 1 : 2);
     }
 }
 
@@ -420,7 +433,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(eigensystem_is_the_spectrum),
-        cmocka_unit_test(stretched_simplices_have_negative_twists),
+        cmocka_unit_test(anisotropic_simplices_have_negative_twists),
         cmocka_unit_test(gradient_and_hessian_match_finite_differences),
         cmocka_unit_test(projection_clamps_only_negative_modes),
         cmocka_unit_test(inverted_jacobian_is_refused),
