@@ -157,7 +157,7 @@ static double pin_max_step(const opt_obj_term *t, const double *X, const double 
     return len > 0.0 ? q->cap / len : INFINITY;
 }
 
-static const opt_obj_term_ops pin_ops = {pin_energy, pin_energy_slope, pin_pattern, pin_fill, pin_max_step, NULL};
+static const opt_obj_term_ops pin_ops = {pin_energy, pin_energy_slope, pin_pattern, pin_fill, pin_max_step, NULL, NULL};
 
 /* Distance of the pinned vertex to its target after `iterations`, with
  * the term (q != NULL) or without; *max_move: its largest move in one
