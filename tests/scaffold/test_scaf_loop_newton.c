@@ -20,12 +20,11 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "geom/bijectivity.h"
-#include "geom/predicates.h"
 #include "opt/embed.h"
 #include "opt/polar_disk.h"
 #include "scaf/scaf.h"
 #include "scaffold/scaf_loop.h"
+#include "support/loop_valid.h"
 
 /* A curved disk with its Tutte start in a loop with `solver` and energy. */
 static void loop_on_disk(scaf_loop *L, scaf_solver solver, opt_energy energy)
@@ -43,22 +42,6 @@ static void loop_on_disk(scaf_loop *L, scaf_solver solver, opt_energy energy)
     assert_int_equal(scaf_loop_init(L, m.nv, m.V, m.nf, m.F, uv, &o, &err), SCAF_OK);
     free(uv);
     polar_disk_free(&m);
-}
-
-static void assert_bijective(const scaf_loop *L)
-{
-    bij_report rep;
-    assert_int_equal(bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, NULL), SCAF_OK);
-    assert_true(rep.bijective);
-    const scaffold_view *v = scaf_loop_scaffold_view(L);
-    for (int s = 0; s < v->n; s++) {
-        const double *p[3];
-        for (int i = 0; i < 3; i++) {
-            int id = v->simplices[3 * s + i];
-            p[i] = id < v->nmesh ? L->uv + 2 * (size_t)id : v->extra + 2 * (size_t)(id - v->nmesh);
-        }
-        assert_true(orient2d(p[0], p[1], p[2]) > 0);
-    }
 }
 
 static void newton_descends_bijectively(void **state)
@@ -81,7 +64,7 @@ static void newton_descends_bijectively(void **state)
         assert_true(info.decrement > 0.0);
         if (it == 0) first = info.decrement;
         last = info.decrement;
-        assert_bijective(&L);
+        assert_true(test_loop_state_valid(&L));
     }
     /* the decrement (remaining relative decrease) shrinks by orders */
     assert_true(last < 1e-6 * first);
@@ -169,7 +152,7 @@ static void auto_switches_to_newton(void **state)
         if (first_newton) assert_int_equal(info.solver, SCAF_SOLVER_NEWTON); /* stays */
         assert_true(info.step > 0);
         assert_true(info.total_after < info.total_before);
-        assert_bijective(&L);
+        assert_true(test_loop_state_valid(&L));
         if (first_newton && info.decrement < 1e-12) break; /* floating point is done */
     }
     /* at the latest after newton_after SLIM iterations */
