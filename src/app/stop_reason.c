@@ -20,7 +20,7 @@ static const stop_reason_entry TABLE[] = {
     {SCAF_STOP_DISTORTION, "distortion_limit", "E exceeded the distortion tolerance"},
     {SCAF_STOP_PACKING_STALLED, "packing_stalled", "the layout stopped shrinking"},
     {SCAF_STOP_CONVERGED, "converged",
-     "converged: a full Newton step left a relative Newton decrement below the tolerance"},
+     "a full Newton step left a relative Newton decrement below the tolerance"},
 };
 
 static const stop_reason_entry *find(scaf_stop_reason reason)
