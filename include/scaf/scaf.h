@@ -136,7 +136,10 @@ typedef struct scaf_options {
     double lambda_ratio;     /* scaffold weight lambda = lambda_ratio *
                                 E_M / |S| (E_M: area-weighted mesh energy,
                                 |S|: scaffold triangle count), re-evaluated
-                                each iteration (0.01, the paper's 1/100) */
+                                each iteration; Newton iterations use a
+                                tenth of it (the minimum does not depend on
+                                it, convergence does) (0.01, the paper's
+                                1/100) */
     double min_angle_deg;    /* scaffold quality bound in degrees (20) */
     double step_fraction;    /* line search starts at this fraction of the
                                 largest flip-free step (0.8) */

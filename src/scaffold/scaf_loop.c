@@ -120,6 +120,7 @@ scaf_loop_options scaf_loop_options_default(void)
     o.solver = SCAF_SOLVER_SLIM;
     o.newton_switch = 1e-2;
     o.newton_after = 8;
+    o.newton_lambda_scale = 0.1;
     return o;
 }
 
@@ -641,7 +642,10 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     memcpy(X + (size_t)d * L->nv, sc->extra, sizeof(double) * d * (size_t)sc->nextra);
     memcpy(fixed + L->nv, sc->extra_fixed, (size_t)sc->nextra);
     int nfree = opt_dof_numbering(nall, fixed, dof);
+    int newton = (L->opt.solver == SCAF_SOLVER_NEWTON || (L->opt.solver == SCAF_SOLVER_AUTO && w->newton_on)) &&
+                 scaf_loop_newton_available(L);
     double lambda = L->opt.lambda_ratio * EM / (sc->n > 0 ? sc->n : 1);
+    if (newton) lambda *= L->opt.newton_lambda_scale; /* see the option */
     st = scaffold_term(L, nall, X, lambda, err);
     if (st != SCAF_OK) goto done;
     if (L->hooks.prepare) {
@@ -663,8 +667,6 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     /* ---- SLIM or Newton: assembly, CHOLMOD, line search ------------------- */
     slim_times tm;
     opt_ls_result ls;
-    int newton = (L->opt.solver == SCAF_SOLVER_NEWTON || (L->opt.solver == SCAF_SOLVER_AUTO && w->newton_on)) &&
-                 scaf_loop_newton_available(L);
     for (;;) {
         st = slim_step(L, nall, dof, nfree, X, newton, &tm, &ls, err);
         I.phase_seconds[SCAF_PHASE_ASSEMBLY] += tm.assembly;
