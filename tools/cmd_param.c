@@ -46,13 +46,22 @@ static void usage(FILE *o)
             "options:\n"
             "  -o, --output FILE      output OBJ (required)\n"
             "  --iterations N         iteration cap (default 50)\n"
-            "  --tolerance T          stop when E, or the objective E_M + lambda E_S,\n"
-            "                         decreases by less than T relatively in one iteration\n"
-            "                         (default 1e-6; 0 = no tolerance test, see Stopping)\n"
+            "  --tolerance T          converged when a full Newton step leaves a relative\n"
+            "                         Newton decrement -g.p / 2(E_M + lambda E_S) (the\n"
+            "                         decrease to the minimum the quadratic model still\n"
+            "                         predicts) below T; SLIM only: stop when E, or E_M +\n"
+            "                         lambda E_S, decreases by less than T relatively in\n"
+            "                         one iteration (default 1e-6; 0 = no test, see Stopping)\n"
+            "  --solver NAME          auto (default: SLIM until one iteration lowers the\n"
+            "                         objective by less than 1e-2 relatively, then\n"
+            "                         projected Newton), slim, or newton (from the start);\n"
+            "                         Newton needs --energy symmetric-dirichlet, otherwise\n"
+            "                         SLIM runs\n"
             "  --energy NAME          symmetric-dirichlet (default), arap, conformal\n"
             "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n"
             "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
-            "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01)\n"
+            "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01;\n"
+            "                         a tenth of it in Newton iterations)\n"
             "  --min-angle DEG        scaffold minimum angle (default 20)\n"
             "  --quiet                no progress line\n"
             "  --threads N            threads of the solver's dense kernels (default: all\n"
@@ -77,7 +86,8 @@ static void usage(FILE *o)
             "mesh triangles (A_f: 3D area); 4 at an isometry.\n"
             "\n"
             "Stopping: the run ends at the first of: --iterations done (iteration_limit);\n"
-            "the tolerance test above (tolerance); no step lowers the energy any more,\n"
+            "the tolerance test above (converged for Newton steps, tolerance for SLIM\n"
+            "only; one slow Newton step never ends the run); no step lowers the energy any more,\n"
             "also with --tolerance 0 (zero_step: converged to floating-point precision,\n"
             "more iterations would not change the map). The reason is printed at the end\n"
             "(stop reason) and in the report (stop_reason).\n");
@@ -167,6 +177,12 @@ static int parse_args(int argc, char **argv, param_args *o)
         } else if (!strcmp(a, "--tolerance")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &o->opt.tolerance)) BAD_VALUE();
+        } else if (!strcmp(a, "--solver")) {
+            NEED_VALUE();
+            if (!strcmp(v, "auto")) o->opt.solver = SCAF_SOLVER_AUTO;
+            else if (!strcmp(v, "slim")) o->opt.solver = SCAF_SOLVER_SLIM;
+            else if (!strcmp(v, "newton")) o->opt.solver = SCAF_SOLVER_NEWTON;
+            else BAD_VALUE();
         } else if (!strcmp(a, "--energy")) {
             NEED_VALUE();
             if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd")) o->opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;

@@ -104,17 +104,36 @@ typedef enum scaf_init {
 
 /* Options. Always start from scaf_options_default() so that fields added
  * later get their defaults. */
+/* How each iteration computes its step (all share the flip-free line
+ * search and its exact orientation checks). */
+typedef enum scaf_solver {
+    SCAF_SOLVER_AUTO = 0, /* SLIM until one iteration lowers the objective
+                             by less than 1e-2 (relative), then projected
+                             Newton (measured best: bench/RESULTS-newton.md);
+                             SLIM throughout when Newton is unavailable
+                             (an energy other than symmetric Dirichlet) */
+    SCAF_SOLVER_SLIM,     /* SLIM's local/global proxy only (as before) */
+    SCAF_SOLVER_NEWTON    /* projected Newton from the first iteration */
+} scaf_solver;
+
 typedef struct scaf_options {
     scaf_energy energy;      /* mesh distortion energy
                                 (SCAF_ENERGY_SYMMETRIC_DIRICHLET) */
     scaf_init init;          /* initial embedding (SCAF_INIT_MVC) */
     int max_iterations;      /* iteration cap of scaf_param_run (50) */
-    double tolerance;        /* stop when the relative decrease over one
-                                iteration of the reported energy E, or of
-                                the objective E_M + lambda E_S, is below
-                                this; 0 disables this test (a zero step
-                                still ends the run: see scaf_param_run)
-                                (1e-6) */
+    double tolerance;        /* convergence test (0 disables it; a zero
+                                step still ends the run: see
+                                scaf_param_run) (1e-6). Newton steps: stop
+                                when the Newton decrement relative to the
+                                objective, -g.p / (2 (E_M + lambda E_S)) —
+                                the relative decrease the quadratic model
+                                still predicts to the minimum — is below
+                                this after a full step (SCAF_STOP_CONVERGED).
+                                SLIM steps (solver slim, or auto without
+                                Newton): stop when the relative decrease
+                                over one iteration of the reported energy E,
+                                or of E_M + lambda E_S, is below this
+                                (SCAF_STOP_TOLERANCE) */
     double box_scale;        /* scaffold box = this times the current UV
                                 bounding box, same center; recomputed
                                 before each iteration and fixed during its
@@ -127,10 +146,14 @@ typedef struct scaf_options {
     double lambda_ratio;     /* scaffold weight lambda = lambda_ratio *
                                 E_M / |S| (E_M: area-weighted mesh energy,
                                 |S|: scaffold triangle count), re-evaluated
-                                each iteration (0.01, the paper's 1/100) */
+                                each iteration; Newton iterations use a
+                                tenth of it (the minimum does not depend on
+                                it, convergence does) (0.01, the paper's
+                                1/100) */
     double min_angle_deg;    /* scaffold quality bound in degrees (20) */
     double step_fraction;    /* line search starts at this fraction of the
                                 largest flip-free step (0.8) */
+    scaf_solver solver;      /* step computation (SCAF_SOLVER_AUTO) */
 } scaf_options_t;
 
 /* The documented defaults above. */
@@ -166,6 +189,11 @@ typedef struct scaf_iteration_info {
     int scaffold_vertices;    /* scaffold-only vertices (box + Steiner) */
     double seconds;           /* wall time of this iteration */
     double phase_seconds[SCAF_PHASE_COUNT]; /* split of `seconds` */
+    int solver;               /* the step of this iteration:
+                                 SCAF_SOLVER_SLIM or SCAF_SOLVER_NEWTON */
+    double decrement;         /* Newton steps: -g.p / (2 total_before), the
+                                 relative decrease the model predicted (the
+                                 convergence criterion); SLIM steps: 0 */
 } scaf_iteration_info_t;
 
 /* Why a run (or a phase of the atlas) stopped. Values never change
@@ -183,14 +211,18 @@ typedef enum scaf_stop_reason {
     SCAF_STOP_ERROR,          /* an iteration failed (see its status) */
     SCAF_STOP_DISTORTION,     /* atlas compaction: E exceeded (1 +
                                  distortion_tolerance) times the settled E */
-    SCAF_STOP_PACKING_STALLED /* atlas compaction: the layout's side shrank
+    SCAF_STOP_PACKING_STALLED, /* atlas compaction: the layout's side shrank
                                  by less than 0.15% over the last 4
                                  iterations */
+    SCAF_STOP_CONVERGED       /* a full Newton step whose relative Newton
+                                 decrement is below the tolerance: the
+                                 objective is within about that (relative)
+                                 of its minimum */
 } scaf_stop_reason;
 
 /* A short, static name of a stop reason, one word in snake case
  * ("iteration_limit", "tolerance", "zero_step", "cancelled", "error",
- * "distortion_limit", "packing_stalled", "not_run"), as in the JSON
+ * "distortion_limit", "packing_stalled", "converged", "not_run"), as in the JSON
  * reports of `scaf param` / `scaf atlas`; "unknown" for other values. */
 SCAF_API const char *scaf_stop_reason_name(scaf_stop_reason reason);
 

@@ -84,6 +84,8 @@ def _fill(struct, options):
             value = _enum_value(value, _lib.ENERGIES, "energy")
         elif key == "init":
             value = _enum_value(value, _lib.INITS, "init")
+        elif key == "solver":
+            value = _enum_value(value, _lib.SOLVERS, "solver")
         elif key in _BOOL_FIELDS:
             value = 1 if value else 0
         ctype = dict(struct._fields_)[key]
@@ -109,6 +111,8 @@ def _as_dict(struct):
             v = _enum_name(v, _lib.ENERGIES)
         elif key == "init":
             v = _enum_name(v, _lib.INITS)
+        elif key == "solver":
+            v = _enum_name(v, _lib.SOLVERS)
         elif key in _BOOL_FIELDS:
             v = bool(v)
         out[key] = v
@@ -142,7 +146,9 @@ def set_threads(n=0):
 class IterationInfo:
     """One finished SCAF iteration (scaf_iteration_info_t). `lambda_` is the
     C field `lambda` (the scaffold weight); phase_seconds maps each phase
-    name ("assembly", "factorization", ...) to its share of `seconds`."""
+    name ("assembly", "factorization", ...) to its share of `seconds`;
+    solver is "slim" or "newton" (the step this iteration took) and
+    decrement the relative Newton decrement (0 for SLIM steps)."""
 
     iteration: int
     energy: float
@@ -155,12 +161,15 @@ class IterationInfo:
     scaffold_vertices: int
     seconds: float
     phase_seconds: Dict[str, float]
+    solver: str
+    decrement: float
 
     @classmethod
     def _from_c(cls, c):
         return cls(c.iteration, c.energy, c.energy_before, c.total_before, c.total_after, c.lambda_,
                    c.step, c.scaffold_triangles, c.scaffold_vertices, c.seconds,
-                   dict(zip(_lib.PHASES, list(c.phase_seconds))))
+                   dict(zip(_lib.PHASES, list(c.phase_seconds))), _enum_name(c.solver, _lib.SOLVERS),
+                   c.decrement)
 
 
 @dataclass
@@ -416,9 +425,9 @@ class Param(_Handle):
     """A parametrization context (scaf_param_t): options as keyword
     arguments named like the C fields (energy, init, max_iterations,
     tolerance, box_scale, box_square, box_points_per_side, lambda_ratio,
-    min_angle_deg, step_fraction); energy and init take names
-    ("symmetric_dirichlet", "arap", "conformal"; "tutte", "harmonic", "mvc") or
-    the C int values.
+    min_angle_deg, step_fraction, solver); energy, init and solver take names
+    ("symmetric_dirichlet", "arap", "conformal"; "tutte", "harmonic", "mvc";
+    "auto", "slim", "newton") or the C int values.
 
         with scaf.Param(energy="conformal") as p:
             p.set_mesh(V, F)

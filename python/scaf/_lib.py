@@ -41,6 +41,7 @@ SCAF_ERR_CANCELLED = 7
 # enum later (a new init, say) works before this table knows its name.
 ENERGIES = {"symmetric_dirichlet": 0, "arap": 1, "conformal": 2}
 INITS = {"tutte": 0, "harmonic": 1, "mvc": 2}
+SOLVERS = {"auto": 0, "slim": 1, "newton": 2}
 PHASES = ("assembly", "analysis", "factorization", "solve", "line_search", "scaffold", "other")
 PHASE_COUNT = len(PHASES)  # SCAF_PHASE_COUNT
 ATLAS_PHASES = ("settle", "compact")  # SCAF_ATLAS_SETTLE, SCAF_ATLAS_COMPACT
@@ -62,6 +63,7 @@ class Options(ctypes.Structure):
         ("lambda_ratio", ctypes.c_double),
         ("min_angle_deg", ctypes.c_double),
         ("step_fraction", ctypes.c_double),
+        ("solver", c_enum),
     ]
 
 
@@ -80,6 +82,8 @@ class IterationInfo(ctypes.Structure):
         ("scaffold_vertices", ctypes.c_int),
         ("seconds", ctypes.c_double),
         ("phase_seconds", ctypes.c_double * PHASE_COUNT),
+        ("solver", c_enum),
+        ("decrement", ctypes.c_double),
     ]
 
 

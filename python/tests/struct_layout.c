@@ -30,6 +30,7 @@ int main(void)
     FIELD(scaf_options_t, lambda_ratio);
     FIELD(scaf_options_t, min_angle_deg);
     FIELD(scaf_options_t, step_fraction);
+    FIELD(scaf_options_t, solver);
 
     SIZE(scaf_iteration_info_t);
     FIELD(scaf_iteration_info_t, iteration);
@@ -43,6 +44,8 @@ int main(void)
     FIELD(scaf_iteration_info_t, scaffold_vertices);
     FIELD(scaf_iteration_info_t, seconds);
     FIELD(scaf_iteration_info_t, phase_seconds);
+    FIELD(scaf_iteration_info_t, solver);
+    FIELD(scaf_iteration_info_t, decrement);
 
     SIZE(scaf_atlas_options_t);
     FIELD(scaf_atlas_options_t, padding);

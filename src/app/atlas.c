@@ -38,6 +38,9 @@ atlas_options atlas_options_default(void)
     /* The atlas keeps the Tutte start: mean-value settles faster but packs
      * 1-4 points less densely on the seams meshes (bench/RESULTS-init.md). */
     o.base.init = SCAF_INIT_TUTTE;
+    /* SLIM only: the settle/compaction phases and their hooks were tuned
+     * and measured with it (Newton for the atlas: issue 11, item 4). */
+    o.base.solver = SCAF_SOLVER_SLIM;
     o.padding = 0.0;
     o.init_input = 0;
     o.settle_iterations = 30;

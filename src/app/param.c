@@ -61,6 +61,7 @@ scaf_options_t scaf_options_default(void)
     o.lambda_ratio = 0.01;
     o.min_angle_deg = SCAFFOLD_DEFAULT_MIN_ANGLE_DEG;
     o.step_fraction = 0.8;
+    o.solver = SCAF_SOLVER_AUTO;
     return o;
 }
 
@@ -80,6 +81,7 @@ scaf_loop_options param_loop_options(const scaf_options_t *o)
     lo.energy = to_opt_energy(o->energy);
     lo.lambda_ratio = o->lambda_ratio;
     lo.step_fraction = o->step_fraction;
+    lo.solver = o->solver;
     lo.scaffold.box_scale = o->box_scale;
     lo.scaffold.box_square = o->box_square;
     lo.scaffold.box_points_per_side = o->box_points_per_side;
@@ -116,6 +118,7 @@ scaf_status param_options_check(const scaf_options_t *o, char *msg, size_t size)
     else if (!(o->min_angle_deg >= 0.0) || !(o->min_angle_deg <= 30.0))
         bad = "min_angle_deg must be in [0, 30]";
     else if (!(o->step_fraction > 0.0) || !(o->step_fraction < 1.0)) bad = "step_fraction must be in (0, 1)";
+    else if ((int)o->solver < 0 || o->solver > SCAF_SOLVER_NEWTON) bad = "solver is not auto, slim or newton";
     if (!bad) return SCAF_OK;
     if (msg && size) snprintf(msg, size, "invalid option: %s", bad);
     return SCAF_ERR_USAGE;
@@ -503,8 +506,21 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
             p->stop = SCAF_STOP_ZERO_STEP;
             break;
         }
-        /* Converged when the objective (mesh + scaffold, the energy being
-         * minimized) or the reported E stops decreasing noticeably. */
+        /* Newton: converged when a full step leaves a relative Newton
+         * decrement (the model's remaining relative decrease) below the
+         * tolerance; a short Newton step never stops the run. */
+        if (info.solver == SCAF_SOLVER_NEWTON) {
+            if (p->opt.tolerance > 0.0 && info.step == 1.0 && info.decrement < p->opt.tolerance) {
+                p->stop = SCAF_STOP_CONVERGED;
+                break;
+            }
+            continue;
+        }
+        /* A slow SLIM step hands over to Newton when Newton can run (auto:
+         * from the next iteration; newton: this was a fallback step). */
+        if (p->opt.solver != SCAF_SOLVER_SLIM && scaf_loop_newton_available(&p->loop)) continue;
+        /* SLIM only: stop when the objective (mesh + scaffold, the energy
+         * being minimized) or the reported E stops decreasing noticeably. */
         double dec = (info.energy_before - info.energy) / info.energy_before;
         double tdec = (info.total_before - info.total_after) / info.total_before;
         if (p->opt.tolerance > 0.0 && ((dec >= 0.0 && dec < p->opt.tolerance) || tdec < p->opt.tolerance)) {

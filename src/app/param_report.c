@@ -26,6 +26,11 @@ double param_report_median_seconds(const scaf_iteration_info_t *it, int n)
     return m;
 }
 
+static const char *solver_name(int s)
+{
+    return s == SCAF_SOLVER_NEWTON ? "newton" : s == SCAF_SOLVER_SLIM ? "slim" : "auto";
+}
+
 static const char *energy_name(scaf_energy e)
 {
     switch (e) {
@@ -64,7 +69,7 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
         json_write_number(o, op->min_angle_deg);
         fputs(", \"step_fraction\": ", o);
         json_write_number(o, op->step_fraction);
-        fputs("}", o);
+        fprintf(o, ", \"solver\": \"%s\"}", solver_name(op->solver));
     }
     fprintf(o, ",\n  \"mesh\": {\"vertices\": %d, \"faces\": %d, \"charts\": %d}", r->vertices, r->faces, r->charts);
     fputs(",\n  \"setup_seconds\": ", o);
@@ -74,6 +79,9 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
     fputs(",\n  \"final_energy\": ", o);
     json_write_number(o, r->final_energy);
     fprintf(o, ",\n  \"iteration_count\": %d", r->niterations);
+    /* the convergence criterion of the last step (see scaf_options_t) */
+    fputs(",\n  \"final_decrement\": ", o);
+    json_write_number(o, r->niterations > 0 ? r->iterations[r->niterations - 1].decrement : 0.0);
     fputs(",\n  \"median_seconds_per_iteration\": ", o);
     json_write_number(o, param_report_median_seconds(r->iterations, r->niterations));
 
@@ -109,6 +117,8 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
         json_write_number(o, it->lambda);
         fputs(", \"step\": ", o);
         json_write_number(o, it->step);
+        fprintf(o, ", \"solver\": \"%s\", \"decrement\": ", solver_name(it->solver));
+        json_write_number(o, it->decrement);
         fprintf(o, ", \"scaffold_triangles\": %d, \"scaffold_vertices\": %d, \"seconds\": ", it->scaffold_triangles,
                 it->scaffold_vertices);
         json_write_number(o, it->seconds);

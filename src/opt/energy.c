@@ -280,18 +280,14 @@ void opt_term_gradient(const opt_term *t, const double *X, double *g)
 {
     const opt_simplices *S = t->s;
     int d = S->d;
-    double J[9], dJ[9];
+    double J[9], dJ[9], gc[12];
     for (int s = 0; s < S->n; s++) {
         opt_jacobian(S, s, X, J);
         opt_density_grad(t->energy, d, J, dJ);
         const int *ix = S->idx + (size_t)s * (d + 1);
-        const double *G = S->grad + (size_t)s * (d + 1) * d;
+        opt_pullback(d, S->grad + (size_t)s * (d + 1) * d, dJ, gc);
         double w = S->weight[s];
         for (int i = 0; i <= d; i++)
-            for (int a = 0; a < d; a++) {
-                double acc = 0;
-                for (int b = 0; b < d; b++) acc += dJ[a * d + b] * G[i * d + b];
-                g[(size_t)ix[i] * d + a] += w * acc;
-            }
+            for (int a = 0; a < d; a++) g[(size_t)ix[i] * d + a] += w * gc[i * d + a];
     }
 }

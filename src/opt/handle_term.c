@@ -138,8 +138,29 @@ static void handle_fill(opt_obj_term *t, const int *dof, const double *X, double
     }
 }
 
+/* Newton: the term is quadratic, its Hessian 2w I exact (project changes
+ * nothing) and its negative gradient -2w (x - t). */
+static scaf_status handle_hessian_fill(opt_obj_term *t, const int *dof, const double *X, int project, double *rhs,
+                                       scaf_error *err)
+{
+    (void)project;
+    (void)err;
+    const opt_handle_term *h = t->self;
+    if (t->blk.A.nnz > 0) memset(t->blk.A.val, 0, sizeof(double) * (size_t)t->blk.A.nnz);
+    for (int i = 0; i < h->n; i++) {
+        int k = dof[h->vertex[i]];
+        if (k < 0) continue;
+        opt_proxy_block_add_diagonal(&t->blk, k, 2.0 * h->w);
+        for (int a = 0; a < h->d; a++) {
+            size_t v = (size_t)h->d * h->vertex[i] + a;
+            rhs[(size_t)h->d * k + a] -= 2.0 * h->w * (X[v] - h->target[(size_t)h->d * i + a]);
+        }
+    }
+    return SCAF_OK;
+}
+
 static const opt_obj_term_ops handle_ops = {handle_energy, handle_energy_slope, handle_pattern, handle_fill, NULL,
-                                            NULL};
+                                            NULL, handle_hessian_fill};
 
 opt_obj_term opt_handle_term_make(opt_handle_term *h)
 {

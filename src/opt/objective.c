@@ -10,6 +10,7 @@
 
 #include "geom/predicates.h"
 #include "opt/flip_free_step.h"
+#include "opt/newton_fill.h"
 
 void opt_obj_term_free(opt_obj_term *t)
 {
@@ -102,8 +103,19 @@ static int simplex_valid(const opt_obj_term *t, const double *X)
     return 1;
 }
 
+/* Newton uses the true weights: a softer proxy weight would change the
+ * minimizer's model, not just the step length. */
+static scaf_status simplex_hessian_fill(opt_obj_term *t, const int *dof, const double *X, int project, double *rhs,
+                                        scaf_error *err)
+{
+    const opt_simplex_term *st = t->self;
+    opt_term term = {st->S, st->energy};
+    return opt_newton_block_fill(&t->blk, &term, dof, X, project, rhs, NULL, err);
+}
+
 static const opt_obj_term_ops simplex_ops = {
-    simplex_energy, simplex_energy_slope, simplex_pattern, simplex_fill, simplex_max_step, simplex_valid,
+    simplex_energy, simplex_energy_slope, simplex_pattern,      simplex_fill,
+    simplex_max_step, simplex_valid,      simplex_hessian_fill,
 };
 
 opt_obj_term opt_simplex_term_make(opt_simplex_term *st)

@@ -19,9 +19,17 @@
  *                 per-vertex trust region...; the line search starts from
  *                 a fraction of the minimum over the terms;
  *   valid         optional (NULL: always): decides exactly whether X is
- *                 allowed (simplex orientations by exact predicates).
+ *                 allowed (simplex orientations by exact predicates);
+ *   hessian_fill  optional (NULL: no Newton step with this term): its
+ *                 Hessian at X into t->blk (the pattern of `pattern`; each
+ *                 simplex's projected PSD when project != 0, the exact one
+ *                 otherwise) and its NEGATIVE gradient ADDED to rhs. The
+ *                 solution of the summed system is the Newton step itself.
+ *                 Fails with SCAF_ERR_USAGE when the term's energy has no
+ *                 Hessian here (the loop then takes a SLIM step).
  * The line search (opt/line_search) uses energy, energy_slope, max_step
- * and valid; the assembly (scaffold/scaf_loop) pattern and fill. A term
+ * and valid; the assembly (scaffold/scaf_loop) pattern and fill (SLIM) or
+ * hessian_fill (projected Newton). A term
  * with no proxy (pattern/fill NULL) adds nothing to the system.
  *
  * opt_simplex_term is the implementation for a set of simplices with a
@@ -44,6 +52,8 @@ typedef struct opt_obj_term_ops {
     void (*fill)(opt_obj_term *t, const int *dof, const double *X, double *rhs);
     double (*max_step)(const opt_obj_term *t, const double *X, const double *D);
     int (*valid)(const opt_obj_term *t, const double *X);
+    scaf_status (*hessian_fill)(opt_obj_term *t, const int *dof, const double *X, int project, double *rhs,
+                                scaf_error *err);
 } opt_obj_term_ops;
 
 struct opt_obj_term {
@@ -63,7 +73,9 @@ int opt_obj_valid(const opt_obj_term *terms, int nterms, const double *X);
 
 /* Simplices S with energy `energy` (weights S->weight). The proxy uses
  * proxy_weight (S->n values) instead of S->weight when it is not NULL (the
- * SCAF scaffold: a softer proxy, the true energy in the line search).
+ * SCAF scaffold: a softer proxy, the true energy in the line search); its
+ * Newton fill (opt/newton_fill, symmetric Dirichlet only) always uses the
+ * true weights S->weight.
  * keep_pattern: S's simplices and the dofs of their vertices never change
  * once the pattern is built (the mesh term: mesh vertices keep their dofs
  * in every iteration), so it is built once. */

@@ -258,13 +258,7 @@ static inline double proxy_d(const opt_term *t, int s, const double *X, double w
             for (int q = 0; q < d; q++) acc += M[a * d + q] * T[q * d + c];
             MT[a * d + c] = acc;
         }
-    const double *G = S->grad + (size_t)s * nc * d;
-    for (int i = 0; i < nc; i++)
-        for (int a = 0; a < d; a++) {
-            double acc = 0;
-            for (int c = 0; c < d; c++) acc += MT[a * d + c] * G[i * d + c];
-            lin[i * d + a] = acc;
-        }
+    opt_pullback(d, S->grad + (size_t)s * nc * d, MT, lin);
     return w2;
 }
 
@@ -297,4 +291,35 @@ void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, 
     double M[9] = {0}, lin[12] = {0};
     for (int a = 0; a < d; a++) M[a * d + a] = 1.0;
     for (int s = 0; s < S->n; s++) scatter(b, S, s, dof, X, M, lin, rhs);
+}
+
+void opt_proxy_block_add_local(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
+                               const double *K)
+{
+    int d = S->d, nc = d + 1, nd = nc * d, P = (d + 1) * (d + 2) / 2;
+    const int *ix = S->idx + (size_t)s * nc;
+    const int *mp = b->map + (size_t)s * P;
+    int *cp = b->A.colptr;
+    double *val = b->A.val;
+    int p = 0;
+    for (int i = 0; i < nc; i++)
+        for (int j = i; j < nc; j++, p++) {
+            if (mp[p] < 0) continue;
+            int di = dof[ix[i]], dj = dof[ix[j]];
+            /* The stored block couples row vertex min(di, dj) with column
+             * vertex max(di, dj): corner r gives its rows, corner c its columns. */
+            int r = di <= dj ? i : j, c = di <= dj ? j : i, col = di > dj ? di : dj;
+            int k = mp[p] - b->vcolptr[col];
+            for (int a2 = 0; a2 < d; a2++) {
+                double *v = val + cp[col * d + a2] + k * d;
+                if (di != dj) {
+                    for (int a = 0; a < d; a++) v[a] += K[(r * d + a) * nd + c * d + a2];
+                } else if (i == j) {
+                    for (int a = 0; a <= a2; a++) v[a] += K[(i * d + a) * nd + i * d + a2];
+                } else { /* a vertex repeated in the simplex: both orders */
+                    for (int a = 0; a <= a2; a++)
+                        v[a] += K[(i * d + a) * nd + j * d + a2] + K[(j * d + a) * nd + i * d + a2];
+                }
+            }
+        }
 }

@@ -85,4 +85,13 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
 void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, const int *dof,
                                     const double *X, double *rhs);
 
+/* Accumulate one simplex's full local matrix into the block's values, for
+ * fills other than SLIM's Kronecker form (projected Newton, opt/newton_fill).
+ * s: a simplex of the set the pattern was built for. K: ((d+1)d) square,
+ * symmetric, row-major, unknown (corner i, coordinate a) at i*d + a.
+ * Couplings with fixed corners (dof -1) are dropped: the caller's unknowns
+ * are then steps of the free vertices, which fixed ones do not take. */
+void opt_proxy_block_add_local(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
+                               const double *K);
+
 #endif /* SCAF_OPT_PROXY_BLOCK_H */

@@ -49,6 +49,20 @@ int opt_gradient_operator(int d, const double *rest, double *grad, double *vol);
 /* Jacobian of simplex s of set S at positions X (#X by d): J d by d out. */
 void opt_jacobian(const opt_simplices *S, int s, const double *X, double *J);
 
+/* Pull a d by d matrix M (a derivative w.r.t. J, or a direction in J
+ * space) back to the simplex's corners through its gradient operator G
+ * ((d+1) by d): out[i*d + a] = sum_b M[a][b] G[i][b]. This is the chain
+ * rule dJ/dx^T: the corner gradient of f(J) is the pull-back of df/dJ. */
+static inline void opt_pullback(int d, const double *G, const double *M, double *out)
+{
+    for (int i = 0; i <= d; i++)
+        for (int a = 0; a < d; a++) {
+            double acc = 0;
+            for (int b = 0; b < d; b++) acc += M[a * d + b] * G[i * d + b];
+            out[i * d + a] = acc;
+        }
+}
+
 /* Surface chart: nv vertices V (#V by 3), nf triangles F (#F by 3).
  * Builds d = 2 simplices with idx = F, flattened rest frames, vol = weight
  * = 3D area. Fails on a zero-area or non-finite triangle (SCAF_ERR_MESH). */

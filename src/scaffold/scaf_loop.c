@@ -25,6 +25,15 @@
  * system is regularized with mu diag(A) for growing mu (see
  * regularized_factor); when the energy is not finite at the start of the
  * line search, the iteration reports a zero step (see slim_step).
+ *
+ * Newton steps (opt.solver; see newton_system) fill the same pattern with
+ * the terms' Hessians — the scaffold with its TRUE weights — and -g; the
+ * solution is the direction itself. Per-simplex projection alone converges
+ * only linearly on curved surfaces (most triangles keep a negative twist
+ * at the minimum: bench/RESULTS-newton.md), so after a full Newton step
+ * the exact Hessian is tried first, the projected one when CHOLMOD finds
+ * the exact sum not positive definite, then a diagonal shift (without
+ * SLIM's mu diag(A) X rhs term: the unknown is a step, not a position).
  */
 #include "scaffold/scaf_loop.h"
 
@@ -95,6 +104,9 @@ struct scaf_loop_work {
     size_t cap_perm;
     double *rhs, *sol, *dir;
     size_t cap_n, cap_x;
+    int newton_on;               /* auto: SLIM has slowed down, Newton from now on */
+    int slim_steps;              /* SLIM iterations so far (auto's cap) */
+    int newton_exact;            /* the last Newton step was full: try the exact Hessian */
 };
 
 scaf_loop_options scaf_loop_options_default(void)
@@ -105,6 +117,10 @@ scaf_loop_options scaf_loop_options_default(void)
     o.lambda_ratio = 0.01;
     o.step_fraction = 0.8;
     o.scaffold = scaffold_default_options();
+    o.solver = SCAF_SOLVER_SLIM;
+    o.newton_switch = 1e-2;
+    o.newton_after = 8;
+    o.newton_lambda_scale = 0.1;
     return o;
 }
 
@@ -221,6 +237,15 @@ double *scaf_loop_scaffold_proxy_weights(scaf_loop *L) { return L->work->scaf_pw
 const opt_csc *scaf_loop_last_system(const scaf_loop *L) { return &L->work->sys.A; }
 const int *scaf_loop_mesh_ordering(const scaf_loop *L) { return L->work->mesh_perm; }
 
+int scaf_loop_newton_available(const scaf_loop *L)
+{
+    const scaf_loop_work *w = L->work;
+    if (L->opt.energy != OPT_ENERGY_SYMMETRIC_DIRICHLET) return 0;
+    for (int k = 0; k < w->nterms; k++)
+        if (w->terms[k].ops->fill && !w->terms[k].ops->hessian_fill) return 0;
+    return 1;
+}
+
 /* ---- energies ---------------------------------------------------------- */
 
 double scaf_loop_energy(const scaf_loop *L)
@@ -310,9 +335,10 @@ static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, sca
 }
 
 /* Factor A + mu diag(A) with rhs + mu diag(A) x for growing mu, after a
- * plain factorization failed (see the caller). */
+ * plain factorization failed (see the caller); for a Newton system (the
+ * unknown is the step) the rhs stays -g. */
 static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, const double *X, size_t n,
-                                      scaf_error *err)
+                                      int newton, scaf_error *err)
 {
     scaf_loop_work *w = L->work;
     int d = L->d;
@@ -335,7 +361,7 @@ static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, co
     for (double mu = 1e-10; st == SCAF_ERR_NUMERIC && mu < 10.0; mu *= 1000.0) {
         for (size_t c = 0; c < n; c++)
             if (pos[c] >= 0) A->val[pos[c]] = d0[c] * (1.0 + mu);
-        for (int v = 0; v < nall; v++)
+        for (int v = 0; v < nall && !newton; v++)
             if (dof[v] >= 0)
                 for (int a = 0; a < d; a++) {
                     size_t c = (size_t)d * (size_t)dof[v] + a;
@@ -360,10 +386,59 @@ static inline void direction(int d, int nall, const int *dof, const double *sol,
         }
 }
 
-/* Assembly of every term's proxy, ordering, factorization, solve and the
- * line search over all terms. X (nall by d) updated by the line search. */
-static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, double *X, slim_times *tm,
-                             opt_ls_result *ls, scaf_error *err)
+/* dir = the solution (a Newton step) for free vertices, 0 for fixed ones. */
+static void newton_direction(int d, int nall, const int *dof, const double *sol, double *dir)
+{
+    for (int v = 0; v < nall; v++)
+        for (int a = 0; a < d; a++)
+            dir[(size_t)d * (size_t)v + a] = dof[v] >= 0 ? sol[(size_t)d * (size_t)dof[v] + a] : 0.0;
+}
+
+/* Every term's Hessian (each simplex projected PSD when project) and -g
+ * into its block and rhs, summed into the system. */
+static scaf_status newton_fill(scaf_loop *L, const int *dof, const double *X, int project, size_t n,
+                               scaf_error *err)
+{
+    scaf_loop_work *w = L->work;
+    const opt_proxy_block *bl[OPT_PROXY_MAX_BLOCKS];
+    int nb = 0;
+    memset(w->rhs, 0, n * sizeof *w->rhs);
+    for (int k = 0; k < w->nterms; k++) {
+        opt_obj_term *t = &w->terms[k];
+        if (!t->ops->fill) continue;
+        scaf_status st = t->ops->hessian_fill(t, dof, X, project, w->rhs, err);
+        if (st != SCAF_OK) return st;
+        bl[nb++] = &t->blk;
+    }
+    return opt_proxy_system_sum(&w->sys, bl, nb, err);
+}
+
+/* The Newton system, ordered and factored: exact Hessian after a full
+ * Newton step, projected when that is not positive definite (or from the
+ * start), then diagonally shifted (banner). */
+static scaf_status newton_system(scaf_loop *L, int nall, const int *dof, const double *X, size_t n,
+                                 double *t_metis, scaf_error *err)
+{
+    scaf_loop_work *w = L->work;
+    int project = !w->newton_exact;
+    scaf_status st = newton_fill(L, dof, X, project, n, err);
+    if (st == SCAF_OK) st = order_and_factor(L, n, t_metis, err);
+    if (st == SCAF_ERR_NUMERIC && !project) {
+        err_clear(err);
+        double t_more = 0.0;
+        st = newton_fill(L, dof, X, 1, n, err);
+        if (st == SCAF_OK) st = order_and_factor(L, n, &t_more, err);
+        *t_metis += t_more;
+    }
+    if (st == SCAF_ERR_NUMERIC) st = regularized_factor(L, nall, dof, X, n, 1, err);
+    return st;
+}
+
+/* Assembly of every term's proxy (newton: Hessian), ordering,
+ * factorization, solve and the line search over all terms. X (nall by d)
+ * updated by the line search. */
+static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, double *X, int newton,
+                             slim_times *tm, opt_ls_result *ls, scaf_error *err)
 {
     scaf_loop_work *w = L->work;
     int d = L->d;
@@ -392,30 +467,39 @@ static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, 
         st = t->ops->pattern(t, dof, nfree, err);
         if (st != SCAF_OK) return st;
     }
-    memset(w->rhs, 0, n * sizeof *w->rhs);
-    for (int k = 0; k < w->nterms; k++) {
-        opt_obj_term *t = &w->terms[k];
-        if (!t->ops->fill) continue;
-        t->ops->fill(t, dof, X, w->rhs);
-        bl[nb++] = &t->blk;
-    }
-    st = opt_proxy_system_sum(&w->sys, bl, nb, err);
-    if (st != SCAF_OK) return st;
-    tm->assembly = timer_now() - t0;
-
     opt_chol_stats c0 = opt_chol_get_stats(w->chol);
     double t_metis = 0.0;
-    st = order_and_factor(L, n, &t_metis, err);
-    if (st == SCAF_ERR_NUMERIC) st = regularized_factor(L, nall, dof, X, n, err);
+    if (newton) {
+        /* assembly and factorization interleave (the fallbacks refill) */
+        st = newton_system(L, nall, dof, X, n, &t_metis, err);
+        if (st != SCAF_OK) return st;
+    } else {
+        memset(w->rhs, 0, n * sizeof *w->rhs);
+        for (int k = 0; k < w->nterms; k++) {
+            opt_obj_term *t = &w->terms[k];
+            if (!t->ops->fill) continue;
+            t->ops->fill(t, dof, X, w->rhs);
+            bl[nb++] = &t->blk;
+        }
+        st = opt_proxy_system_sum(&w->sys, bl, nb, err);
+        if (st != SCAF_OK) return st;
+        tm->assembly = timer_now() - t0;
+        st = order_and_factor(L, n, &t_metis, err);
+        if (st == SCAF_ERR_NUMERIC) st = regularized_factor(L, nall, dof, X, n, 0, err);
+    }
     if (st == SCAF_OK) st = opt_chol_solve(w->chol, 1, w->rhs, w->sol, err);
     opt_chol_stats c1 = opt_chol_get_stats(w->chol);
     tm->analysis = c1.t_analyze - c0.t_analyze + t_metis;
     tm->factor = c1.t_factor - c0.t_factor;
     tm->solve = c1.t_solve - c0.t_solve;
+    if (newton) /* what the factorizations and orderings did not take */
+        tm->assembly = timer_now() - t0 - tm->analysis - tm->factor - tm->solve;
     if (st != SCAF_OK) return st;
 
     double t4 = timer_now();
-    if (d == 2)
+    if (newton)
+        newton_direction(d, nall, dof, w->sol, w->dir);
+    else if (d == 2)
         direction(2, nall, dof, w->sol, X, w->dir); /* d known: the loop unrolls */
     else
         direction(d, nall, dof, w->sol, X, w->dir);
@@ -434,6 +518,7 @@ static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, 
         st = SCAF_OK;
     }
 
+    if (newton) w->newton_exact = ls->step == 1.0;
     tm->line_search = timer_now() - t4;
     return st;
 }
@@ -557,7 +642,10 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     memcpy(X + (size_t)d * L->nv, sc->extra, sizeof(double) * d * (size_t)sc->nextra);
     memcpy(fixed + L->nv, sc->extra_fixed, (size_t)sc->nextra);
     int nfree = opt_dof_numbering(nall, fixed, dof);
+    int newton = (L->opt.solver == SCAF_SOLVER_NEWTON || (L->opt.solver == SCAF_SOLVER_AUTO && w->newton_on)) &&
+                 scaf_loop_newton_available(L);
     double lambda = L->opt.lambda_ratio * EM / (sc->n > 0 ? sc->n : 1);
+    if (newton) lambda *= L->opt.newton_lambda_scale; /* see the option */
     st = scaffold_term(L, nall, X, lambda, err);
     if (st != SCAF_OK) goto done;
     if (L->hooks.prepare) {
@@ -576,17 +664,37 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     I.phase_seconds[SCAF_PHASE_ASSEMBLY] += t1 - t0;
     t0 = t1;
 
-    /* ---- SLIM: assembly, CHOLMOD, line search ----------------------------- */
+    /* ---- SLIM or Newton: assembly, CHOLMOD, line search ------------------- */
     slim_times tm;
     opt_ls_result ls;
-    st = slim_step(L, nall, dof, nfree, X, &tm, &ls, err);
+    for (;;) {
+        st = slim_step(L, nall, dof, nfree, X, newton, &tm, &ls, err);
+        I.phase_seconds[SCAF_PHASE_ASSEMBLY] += tm.assembly;
+        I.phase_seconds[SCAF_PHASE_ANALYSIS] += tm.analysis;
+        I.phase_seconds[SCAF_PHASE_FACTORIZATION] += tm.factor;
+        I.phase_seconds[SCAF_PHASE_SOLVE] += tm.solve;
+        I.phase_seconds[SCAF_PHASE_LINE_SEARCH] += tm.line_search;
+        /* A Newton system that cannot be filled or factored (a simplex too
+         * thin for floating point) or a direction that takes no step:
+         * SLIM's proxy, always definite, takes this iteration (X is
+         * unchanged after a zero step). */
+        if (!newton || !(st == SCAF_ERR_NUMERIC || (st == SCAF_OK && ls.step <= 0.0))) break;
+        err_clear(err);
+        newton = 0;
+        w->newton_exact = 0;
+    }
     if (st == SCAF_OK && X0) st = feasible_backtrack(L, nall, X0, X, &ls);
     if (st != SCAF_OK) goto done;
-    I.phase_seconds[SCAF_PHASE_ASSEMBLY] += tm.assembly;
-    I.phase_seconds[SCAF_PHASE_ANALYSIS] += tm.analysis;
-    I.phase_seconds[SCAF_PHASE_FACTORIZATION] += tm.factor;
-    I.phase_seconds[SCAF_PHASE_SOLVE] += tm.solve;
-    I.phase_seconds[SCAF_PHASE_LINE_SEARCH] += tm.line_search;
+    I.solver = newton ? SCAF_SOLVER_NEWTON : SCAF_SOLVER_SLIM;
+    if (newton && ls.energy_before > 0.0) I.decrement = -ls.slope / (2.0 * ls.energy_before);
+    /* auto: SLIM has slowed down (one iteration's relative decrease below
+     * the threshold) or has had newton_after iterations, Newton from the
+     * next iteration on */
+    if (!newton) w->slim_steps++;
+    if (!newton && L->opt.solver == SCAF_SOLVER_AUTO && ls.step > 0.0 &&
+        (ls.energy_before - ls.energy_after < L->opt.newton_switch * ls.energy_before ||
+         w->slim_steps >= L->opt.newton_after))
+        w->newton_on = 1;
     t1 = timer_now();
     t0 = t1;
 

@@ -12,12 +12,17 @@
  *      bounding box; its box vertices are fixed during this solve;
  *   2. scaffold rest shapes = their current shapes (guard: rest volume
  *      below the provider's eps -> regular simplex of volume eps), energy
- *      weight lambda = lambda_ratio * E_M / |S|;
+ *      weight lambda = lambda_ratio * E_M / |S| (times
+ *      opt.newton_lambda_scale in a Newton iteration);
  *   3. the terms of the objective (opt/objective) — the mesh term (rest
  *      frames of the 3D triangles, weight = 3D area, energy opt.energy),
  *      the scaffold term (symmetric Dirichlet) and any extra terms
  *      (scaf_loop_add_term) — each fill their block of one SLIM proxy
- *      system, solved with CHOLMOD (supernodal);
+ *      system, solved with CHOLMOD (supernodal); or, for a Newton step
+ *      (opt.solver), their Hessians (hessian_fill: exact after a full
+ *      Newton step, each simplex projected PSD otherwise or when the exact
+ *      sum is not positive definite, then a diagonal shift) and -gradient,
+ *      in the same pattern, whose solution is the step;
  *   4. line search over all terms (opt/line_search): the largest allowed
  *      step (flip-free over mesh and scaffold), a fraction of it, Armijo
  *      backtracking on the total energy, and every term's exact validity
@@ -52,6 +57,26 @@ typedef struct scaf_loop_options {
     double step_fraction;      /* first trial step: this fraction of the
                                   largest allowed step (0.8) */
     scaffold_options scaffold; /* box and quality (scaffold_default_options) */
+    scaf_solver solver;        /* SLIM, projected Newton, or auto: SLIM until
+                                  an iteration lowers the objective by less
+                                  than newton_switch (relative) or after
+                                  newton_after iterations, Newton from
+                                  then on (SCAF_SOLVER_SLIM here; the atlas
+                                  keeps it, scaf_param chooses) */
+    double newton_switch;      /* auto's threshold (1e-2, bench/RESULTS-newton.md) */
+    int newton_after;          /* auto: Newton at the latest after this many
+                                  SLIM iterations (8: a thin strip's SLIM
+                                  keeps lowering its objective by > 1e-2 per
+                                  iteration while E creeps) */
+    double newton_lambda_scale; /* Newton iterations use lambda times this
+                                  (0.1). The re-rested scaffold has zero
+                                  gradient, so lambda does not move the
+                                  minimum; it only pulls the boundary back
+                                  like a proximal term (Newton then converges
+                                  linearly). 0.1: camel_b 21 instead of 31
+                                  iterations, the 1 x 0.001 rectangle 4.00002
+                                  instead of 7.88 after 50
+                                  (bench/RESULTS-newton.md) */
 } scaf_loop_options;
 
 scaf_loop_options scaf_loop_options_default(void);
@@ -128,7 +153,14 @@ scaf_status scaf_loop_set_scaffold_provider(scaf_loop *L, scaffold_provider *p, 
  * first, indices 0..nv-1). */
 scaf_status scaf_loop_add_term(scaf_loop *L, const opt_obj_term *t, scaf_error *err);
 
-/* One iteration; fills info (may be NULL). */
+/* Whether a Newton step is possible: every term with a system block has
+ * a Hessian (hessian_fill) and the mesh energy is symmetric Dirichlet. */
+int scaf_loop_newton_available(const scaf_loop *L);
+
+/* One iteration; fills info (may be NULL; info->solver says which step
+ * was taken, info->decrement the relative Newton decrement). A Newton
+ * step that the line search cannot use (zero step) is replaced by a SLIM
+ * step in the same iteration. */
 scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error *err);
 
 /* Reported energy E = sum A_f SD(J_f) / sum A_f of the current map. */

@@ -63,14 +63,26 @@ static void param_reasons(void **state)
     scaf_param_destroy(p);
     mesh_free(&m);
 
-    /* the tolerance, well before the cap */
+    /* the tolerance, well before the cap: SLIM's one-iteration rule */
     o.tolerance = 1e-2;
+    o.solver = SCAF_SOLVER_SLIM;
     p = param_on("hemisphere", 4, &o, &m);
     memset(&s, 0, sizeof s);
     assert_int_equal(scaf_param_run(p, 100, on_param, &s), SCAF_OK);
     assert_true(s.calls < 100);
     assert_true(s.last_step > 0.0);
     assert_int_equal(scaf_param_stop_reason(p), SCAF_STOP_TOLERANCE);
+    scaf_param_destroy(p);
+    mesh_free(&m);
+
+    /* auto (the default): a full Newton step with a small decrement */
+    o.solver = SCAF_SOLVER_AUTO;
+    p = param_on("hemisphere", 4, &o, &m);
+    memset(&s, 0, sizeof s);
+    assert_int_equal(scaf_param_run(p, 100, on_param, &s), SCAF_OK);
+    assert_true(s.calls < 100);
+    assert_true(s.last_step == 1.0);
+    assert_int_equal(scaf_param_stop_reason(p), SCAF_STOP_CONVERGED);
     scaf_param_destroy(p);
     mesh_free(&m);
 

@@ -79,6 +79,46 @@ static void proxy_solves_to_targets(void **state)
     opt_handle_term_free(&h);
 }
 
+/* Newton: Hessian 2w I on the handles' unknowns, rhs = -gradient (checked
+ * against energy_slope along each unknown), and one full Newton step
+ * lands on the targets (the term is quadratic). */
+static void newton_fill_is_exact(void **state)
+{
+    (void)state;
+    int dof[4] = {0, 1, -1, 2};
+    double X[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    int hv[3] = {3, 0, 2};
+    double ht[6] = {5, 6, -1, 2, 9, 9};
+    opt_handle_term h;
+    opt_handle_term_init(&h, 2, 4);
+    assert_int_equal(opt_handle_term_set(&h, 3, hv, ht, 2.0, NULL), SCAF_OK);
+    opt_obj_term t = opt_handle_term_make(&h);
+    assert_non_null(t.ops->hessian_fill);
+    assert_int_equal(t.ops->pattern(&t, dof, 3, NULL), SCAF_OK);
+    double rhs[6] = {0};
+    assert_int_equal(t.ops->hessian_fill(&t, dof, X, 1, rhs, NULL), SCAF_OK);
+    const opt_csc *A = &t.blk.A;
+    double diag[6] = {0};
+    for (int c = 0; c < A->n; c++)
+        for (int k = A->colptr[c]; k < A->colptr[c + 1]; k++)
+            if (A->rowidx[k] == c) diag[c] += A->val[k];
+    for (int v = 0; v < 4; v++)
+        for (int a = 0; a < 2; a++) {
+            if (dof[v] < 0) continue;
+            double D[8] = {0}, e = 0, slope = 0;
+            D[2 * v + a] = 1.0;
+            t.ops->energy_slope(&t, X, D, &e, &slope);
+            size_t c = 2 * (size_t)dof[v] + a;
+            assert_true(fabs(rhs[c] + slope) < 1e-12); /* rhs = -dE/dx */
+            if (diag[c] != 0.0) /* x + H^-1 (-g): the target */
+                assert_true(fabs(X[2 * v + a] + rhs[c] / diag[c] -
+                                 (v == 3 ? ht[a] : v == 0 ? ht[2 + a] : 0)) < 1e-12);
+        }
+    assert_true(diag[0] > 0 && diag[0] == diag[4] && diag[2] == 0); /* 2w on handles only */
+    opt_obj_term_free(&t);
+    opt_handle_term_free(&h);
+}
+
 static void pattern_kept_while_vertices_stay(void **state)
 {
     (void)state;
@@ -139,6 +179,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(energy_and_slope),
         cmocka_unit_test(proxy_solves_to_targets),
+        cmocka_unit_test(newton_fill_is_exact),
         cmocka_unit_test(pattern_kept_while_vertices_stay),
         cmocka_unit_test(weight_and_errors),
     };

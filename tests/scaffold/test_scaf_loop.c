@@ -20,14 +20,13 @@
 #include <cmocka.h>
 
 #include "app/param.h"
-#include "geom/bijectivity.h"
-#include "geom/predicates.h"
 #include "opt/embed.h"
 #include "opt/polar_disk.h"
 #include "opt/proxy_system.h"
 #include "scaffold/scaf_loop.h"
 #include "scaffold/scaffold_cdt.h"
 #include "scaffold/scaffold_frozen.h"
+#include "support/loop_valid.h"
 
 typedef struct disk {
     polar_disk m;
@@ -60,20 +59,10 @@ static void loop_on_disk(disk *k, scaf_loop *L)
 
 static void assert_state_valid(const scaf_loop *L)
 {
-    bij_report rep;
-    assert_int_equal(bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, NULL), SCAF_OK);
-    assert_true(rep.bijective);
     const scaffold_view *v = scaf_loop_scaffold_view(L);
     assert_int_equal(v->d, 2);
     assert_true(v->n > 0);
-    for (int s = 0; s < v->n; s++) {
-        const double *p[3];
-        for (int i = 0; i < 3; i++) {
-            int id = v->simplices[3 * s + i];
-            p[i] = id < v->nmesh ? L->uv + 2 * (size_t)id : v->extra + 2 * (size_t)(id - v->nmesh);
-        }
-        assert_true(orient2d(p[0], p[1], p[2]) > 0);
-    }
+    assert_true(test_loop_state_valid(L));
 }
 
 static void each_energy_descends_bijectively(void **state)
@@ -158,7 +147,7 @@ static double pin_max_step(const opt_obj_term *t, const double *X, const double 
     return len > 0.0 ? q->cap / len : INFINITY;
 }
 
-static const opt_obj_term_ops pin_ops = {pin_energy, pin_energy_slope, pin_pattern, pin_fill, pin_max_step, NULL};
+static const opt_obj_term_ops pin_ops = {pin_energy, pin_energy_slope, pin_pattern, pin_fill, pin_max_step, NULL, NULL};
 
 /* Distance of the pinned vertex to its target after `iterations`, with
  * the term (q != NULL) or without; *max_move: its largest move in one
