@@ -5,7 +5,7 @@ set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 PACKAGES=(
-  build-essential cmake pkg-config clang
+  build-essential cmake pkg-config clang clang-format   # clang-format: style check (scripts/check_format.sh)
   libsuitesparse-dev libopenblas-dev libmetis-dev   # CHOLMOD sparse Cholesky, UMFPACK sparse LU
   zlib1g-dev                                        # .gz input
   libpng-dev                                        # PNG pictures

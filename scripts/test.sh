@@ -4,8 +4,8 @@
 #   2. bounded fuzz smoke run of every fuzz target (clang libFuzzer);
 #   3. Release build; the layering check (scripts/check_layers.sh) on its
 #      objects: no include or call goes up base -> geom -> mesh -> opt ->
-#      scaffold -> app -> tools; then all tests (ctest's summary closes the
-#      output).
+#      scaffold -> app -> tools; the format check (scripts/check_format.sh,
+#      .clang-format); then all tests (ctest's summary closes the output).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs="$(nproc)"
@@ -25,7 +25,8 @@ fi
 echo "== release build =="
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$jobs"
-echo "== layering =="
+echo "== layering and format =="
 bash scripts/check_layers.sh --build build
+bash scripts/check_format.sh
 ctest --test-dir build --output-on-failure -j"$jobs"
 
