@@ -144,12 +144,17 @@ static void bench(const char *name, mesh *m)
     for (int i = 0; i < t.n; i++) iters += t.sum[i];
     qsort(t.sum, (size_t)t.n, sizeof(double), cmp);
     double med = t.n ? t.sum[t.n / 2] : 0.0;
-    printf("| %s | %d | %d | %d+%d | %.3f | %.3f | %.3f | %.5f%s | %s | %.4f / %.4f | %.2f | %.2f | %.2f | %.2f | %.2f | "
+    printf("| %s | %d | %d | %d+%d | %.3f | %.3f | %.3f | %.5f%s | %s | %.4f / %.4f | %.2f | %.2f "
+           "| %.2f | %.2f | %.2f | "
            "%.3f |\n",
-           name, a.ncharts, a.split_uvs, a.settle_done, a.compact_done, a.eff_before, a.eff_packed, eff, gap,
-           a.ncharts < 2 ? "" : cert == 1 ? " (exact >= P)" : cert == 0 ? " (NOT >= P)" : " (not certifiable)",
-           r.bijective ? "yes" : "NO", a.settled_energy, scaf_loop_energy(&a.loop), t2 - t0, t1 - t0, t.phase[0],
-           (t2 - t1) - iters, t.phase[1], med);
+           name, a.ncharts, a.split_uvs, a.settle_done, a.compact_done, a.eff_before, a.eff_packed,
+           eff, gap,
+           a.ncharts < 2   ? ""
+               : cert == 1 ? " (exact >= P)"
+               : cert == 0 ? " (NOT >= P)"
+                           : " (not certifiable)",
+           r.bijective ? "yes" : "NO", a.settled_energy, scaf_loop_energy(&a.loop), t2 - t0,
+           t1 - t0, t.phase[0], (t2 - t1) - iters, t.phase[1], med);
     fflush(stdout);
     free(UV);
     atlas_free(&a);
@@ -165,17 +170,17 @@ int main(int argc, char **argv)
     }
     const char *seams[] = {"seams/spot.obj", "seams/blub.obj", "seams/human_neutral.obj",
                            "seams/myles_knot1_seamed.obj", "seams/myles_eight_seamed.obj"};
-    printf("| mesh | charts | split vt | iterations | eff. settled (grid) | eff. re-placed | eff. final | "
-           "min gap | bijective | E settled / final | total s | setup s | settle s | repack+checks s | compaction s | "
+    printf("| mesh | charts | split vt | iterations | eff. settled (grid) | eff. re-placed | eff. "
+           "final | "
+           "min gap | bijective | E settled / final | total s | setup s | settle s | repack+checks "
+           "s | compaction s | "
            "median s/it |\n");
     printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     int n = argc > 1 ? argc - 1 : (int)(sizeof seams / sizeof *seams);
     for (int i = 0; i < n; i++) {
         char path[4096];
-        if (argc > 1)
-            snprintf(path, sizeof path, "%s", argv[i + 1]);
-        else
-            snprintf(path, sizeof path, "%s/%s", SCAF_DATA_DIR, seams[i]);
+        if (argc > 1) snprintf(path, sizeof path, "%s", argv[i + 1]);
+        else snprintf(path, sizeof path, "%s/%s", SCAF_DATA_DIR, seams[i]);
         mesh m;
         scaf_error err;
         if (mesh_read(path, &m, NULL, &err) != SCAF_OK) {
@@ -198,7 +203,8 @@ int main(int argc, char **argv)
          * and 50 small ones */
         memset(&m, 0, sizeof m);
         add_patch(&m, 10.0, 10.0, 10, 10, 0.0, 0.0);
-        for (int p = 0; p < 50; p++) add_patch(&m, 0.6 + 0.05 * (p % 5), 0.6, 2, 2, 20.0 + 3.0 * p, 0.05);
+        for (int p = 0; p < 50; p++)
+            add_patch(&m, 0.6 + 0.05 * (p % 5), 0.6, 2, 2, 20.0 + 3.0 * p, 0.05);
         bench("generated: 1 large + 50 small squares", &m);
         mesh_free(&m);
     }

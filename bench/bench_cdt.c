@@ -95,42 +95,38 @@ static void run(const char *name, const cdt_builder *p, int reps, double min_ang
         double t0 = now(), c0 = cpu_now();
         scaf_status s = cdt_triangulate(&in, &opt, &out, &err);
         double dt = now() - t0, dc = cpu_now() - c0;
-        if (dc < best_cpu)
-            best_cpu = dc;
+        if (dc < best_cpu) best_cpu = dc;
         if (s != SCAF_OK) {
             printf("| %s | %d | error: %s |\n", name, p->np - 4, err.message);
             return;
         }
-        if (dt < best)
-            best = dt;
-        if (r + 1 < reps)
-            cdt_output_free(&out);
+        if (dt < best) best = dt;
+        if (r + 1 < reps) cdt_output_free(&out);
     }
     /* quality: all triangles, and those touching no chart vertex */
     unsigned char *chart = calloc((size_t)out.npoints, 1);
     for (int s = 0; s < p->ns; s++)
-        if (!p->split[s])
-            chart[p->seg[2 * s]] = chart[p->seg[2 * s + 1]] = 1;
+        if (!p->split[s]) chart[p->seg[2 * s]] = chart[p->seg[2 * s + 1]] = 1;
     double amin = 180, afree = 180;
     long nfree = 0, below = 0, nbelow_all = 0;
     for (int t = 0; t < out.ntriangles; t++) {
         const int *v = out.triangles + 3 * t;
-        double a = tri_min_angle(out.points + 2 * v[0], out.points + 2 * v[1], out.points + 2 * v[2]);
+        double a =
+            tri_min_angle(out.points + 2 * v[0], out.points + 2 * v[1], out.points + 2 * v[2]);
         amin = fmin(amin, a);
-        if (a < min_angle_deg - 1e-9)
-            nbelow_all++;
+        if (a < min_angle_deg - 1e-9) nbelow_all++;
         if (!chart[v[0]] && !chart[v[1]] && !chart[v[2]]) {
             nfree++;
             afree = fmin(afree, a);
-            if (a < min_angle_deg - 1e-9)
-                below++;
+            if (a < min_angle_deg - 1e-9) below++;
         }
     }
-    printf("| %s | %d | %.2f | %.2f | %d | %d | %.2f M | %d | %.2f | %.1f%% | %.2f (%ld of %ld below) |\n",
+    printf("| %s | %d | %.2f | %.2f | %d | %d | %.2f M | %d | %.2f | %.1f%% | %.2f (%ld of %ld "
+           "below) |\n",
            name, p->np - 4, best_cpu * 1e3, best * 1e3, out.ntriangles, out.nsteiner,
-           out.ntriangles / best_cpu * 1e-6,
-           out.nrejected, amin, 100.0 * (out.ntriangles - nbelow_all) / (out.ntriangles ? out.ntriangles : 1),
-           afree, below, nfree);
+           out.ntriangles / best_cpu * 1e-6, out.nrejected, amin,
+           100.0 * (out.ntriangles - nbelow_all) / (out.ntriangles ? out.ntriangles : 1), afree,
+           below, nfree);
     fflush(stdout);
     free(chart);
     cdt_output_free(&out);

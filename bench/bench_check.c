@@ -88,12 +88,15 @@ int main(void)
         time_check("grid 922x922, 1 chart", nuv, UV, nf, F);
     free(UV);
     free(F);
-    if (layout(20, 46, &UV, &F, &nuv, &nf) == 0)
-        time_check("400 charts of 46x46", nuv, UV, nf, F);
+    if (layout(20, 46, &UV, &F, &nuv, &nf) == 0) time_check("400 charts of 46x46", nuv, UV, nf, F);
     free(UV);
     free(F);
-    const char *files[] = {"disk/camel_b.obj", "seams/blub.obj", "seams/spot.obj",
-                           "seams/human_neutral.obj", "seams/myles_eight_seamed.obj", NULL};
+    const char *files[] = {"disk/camel_b.obj",
+                           "seams/blub.obj",
+                           "seams/spot.obj",
+                           "seams/human_neutral.obj",
+                           "seams/myles_eight_seamed.obj",
+                           NULL};
     for (int i = 0; files[i]; i++) {
         char path[1024];
         snprintf(path, sizeof path, "%s/%s", SCAF_DATA_DIR, files[i]);

@@ -50,7 +50,10 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-typedef struct dedge { long long key; int a, b; } dedge;
+typedef struct dedge {
+    long long key;
+    int a, b;
+} dedge;
 
 static int cmp_dedge(const void *x, const void *y)
 {
@@ -65,7 +68,11 @@ static int boundary_loop(const mesh *m, int *loop)
     size_t ne = 3 * (size_t)m->nf;
     dedge *e = malloc(sizeof *e * ne);
     int *next = malloc(sizeof(int) * (size_t)m->nv);
-    if (!e || !next) { free(e); free(next); return 0; }
+    if (!e || !next) {
+        free(e);
+        free(next);
+        return 0;
+    }
     for (int f = 0; f < m->nf; f++)
         for (int j = 0; j < 3; j++) {
             int a = m->F[3 * f + j], b = m->F[3 * f + (j + 1) % 3];
@@ -78,7 +85,11 @@ static int boundary_loop(const mesh *m, int *loop)
     for (size_t i = 0; i < ne;) {
         size_t j = i + 1;
         while (j < ne && e[j].key == e[i].key) j++;
-        if (j - i == 1) { next[e[i].a] = e[i].b; first = e[i].a; nb++; }
+        if (j - i == 1) {
+            next[e[i].a] = e[i].b;
+            first = e[i].a;
+            nb++;
+        }
         i = j;
     }
     free(e);
@@ -187,14 +198,24 @@ int main(int argc, char **argv)
         for (int J = L.nv; J < nvs; J++) {
             int col = 2 * J + 1;
             for (int k = A->colptr[col]; k < A->colptr[col + 1]; k++)
-                if (A->rowidx[k] / 2 < L.nv) { ring[J] = 1; break; }
+                if (A->rowidx[k] / 2 < L.nv) {
+                    ring[J] = 1;
+                    break;
+                }
         }
         for (int J = L.nv; J < nvs; J++)
-            if (!ring[J]) { perm2[np2++] = 2 * J; perm2[np2++] = 2 * J + 1; }
+            if (!ring[J]) {
+                perm2[np2++] = 2 * J;
+                perm2[np2++] = 2 * J + 1;
+            }
         memcpy(perm2 + np2, scaf_loop_mesh_ordering(&L), nm * sizeof(int));
         np2 += (int)nm;
         for (int J = L.nv; J < nvs; J++)
-            if (ring[J]) { perm2[np2++] = 2 * J; perm2[np2++] = 2 * J + 1; nring++; }
+            if (ring[J]) {
+                perm2[np2++] = 2 * J;
+                perm2[np2++] = 2 * J + 1;
+                nring++;
+            }
         free(ring);
     }
     printf("scaffold vertices next to the chart: %d of %zu\n", nring, ((size_t)A->n - nm) / 2);
@@ -203,7 +224,13 @@ int main(int argc, char **argv)
     cm.print = 0;
     cm.supernodal = CHOLMOD_SUPERNODAL;
     cm.final_ll = 1;
-    typedef struct variant { const char *name; int nrelax[3]; double zrelax[3]; int threads; int alt; } variant;
+    typedef struct variant {
+        const char *name;
+        int nrelax[3];
+        double zrelax[3];
+        int threads;
+        int alt;
+    } variant;
     variant var[] = {
         {"default relax, 1 thread", {4, 16, 48}, {0.8, 0.1, 0.05}, 1, 0},
         {"relax x2, 1 thread", {8, 32, 96}, {0.8, 0.1, 0.05}, 1, 0},
@@ -221,10 +248,16 @@ int main(int argc, char **argv)
     for (int r = 0; r < R && r < 64; r++)
         for (int v = 0; v < nvar; v++) {
             if (var[v].threads != T) continue;
-            for (int q = 0; q < 3; q++) { cm.nrelax[q] = (size_t)var[v].nrelax[q]; cm.zrelax[q] = var[v].zrelax[q]; }
+            for (int q = 0; q < 3; q++) {
+                cm.nrelax[q] = (size_t)var[v].nrelax[q];
+                cm.zrelax[q] = var[v].zrelax[q];
+            }
             if (openblas_set_num_threads) openblas_set_num_threads(var[v].threads);
             F[v] = analyze(&S, var[v].alt ? perm2 : perm, &cm, &ta[v][r]);
-            if (!F[v]) { fprintf(stderr, "analysis failed\n"); return 1; }
+            if (!F[v]) {
+                fprintf(stderr, "analysis failed\n");
+                return 1;
+            }
             tf[v][r] = time_factor(&S, F[v], &cm);
             fl[v] = cm.fl;
             nsuper[v] = (long)F[v]->nsuper;
@@ -235,14 +268,15 @@ int main(int argc, char **argv)
     printf("%s: %d vertices, %d faces; system n = %d, nnz(A) = %d (upper), scaffold unknowns %zu; "
            "%d iterations, median iteration %.4f s (last: factorization %.4f s)\n",
            path, m.nv, m.nf, A->n, A->nnz, (size_t)A->n - nm, K, it_med, fsum);
-    printf("| variant | supernodes | stored L entries | flops (exact L) | analysis s | factorization s | iteration / factorization |\n");
+    printf("| variant | supernodes | stored L entries | flops (exact L) | analysis s | "
+           "factorization s | iteration / factorization |\n");
     printf("|---|---|---|---|---|---|---|\n");
     int Rn = R < 64 ? R : 64;
     for (int v = 0; v < nvar; v++) {
         if (var[v].threads != T) continue;
         double a = median(ta[v], Rn), f = median(tf[v], Rn);
-        printf("| %s | %ld | %.0f | %.3g | %.4f | %.4f | %.2f |\n", var[v].name, nsuper[v], lnz[v], fl[v], a, f,
-               f > 0 ? it_med / f : 0.0);
+        printf("| %s | %ld | %.0f | %.3g | %.4f | %.4f | %.2f |\n", var[v].name, nsuper[v], lnz[v],
+               fl[v], a, f, f > 0 ? it_med / f : 0.0);
     }
     cholmod_finish(&cm);
     free(perm);

@@ -89,8 +89,9 @@ static void bench_mesh(const char *dir, const char *rel, int with_uv, int iterat
         scaf_param_t *p = scaf_param_new(&o);
         if (!p) continue;
         double t0 = now();
-        scaf_status s = with_uv && m.nuv > 0 ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
-                                             : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
+        scaf_status s = with_uv && m.nuv > 0
+            ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
+            : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
         r[k].start_s = now() - t0;
         if (s == SCAF_OK) {
             r[k].e0 = scaf_param_energy(p);
@@ -107,7 +108,10 @@ static void bench_mesh(const char *dir, const char *rel, int with_uv, int iterat
     for (int k = 0; k < NINIT; k++)
         for (int i = 0; r[k].ok && i < r[k].n; i++)
             if (r[k].e[i] < best) best = r[k].e[i];
-    const char *fallback = !r[1].ok ? "?" : r[1].e0 == r[2].e0 ? "to mvc" : r[1].e0 == r[0].e0 ? "to tutte" : "no";
+    const char *fallback = !r[1].ok ? "?"
+        : r[1].e0 == r[2].e0        ? "to mvc"
+        : r[1].e0 == r[0].e0        ? "to tutte"
+                                    : "no";
     for (int k = 0; k < NINIT; k++) {
         if (!r[k].ok) {
             printf("| %s | %s | %s | | | | | | | |\n", rel, init_name[k], msg[k]);
@@ -120,8 +124,9 @@ static void bench_mesh(const char *dir, const char *rel, int with_uv, int iterat
         char reach_s[32];
         if (reach > 0) snprintf(reach_s, sizeof reach_s, "%d", reach);
         else snprintf(reach_s, sizeof reach_s, "> %d", n);
-        printf("| %s | %s | %.4f | %.4g | %.4g | %.4g | %.4g (it %d) | %s | %s |\n", rel, init_name[k], r[k].start_s,
-               r[k].e0, n >= 1 ? r[k].e[0] : NAN, n >= 10 ? r[k].e[9] : NAN, n ? r[k].e[n - 1] : NAN, n, reach_s,
+        printf("| %s | %s | %.4f | %.4g | %.4g | %.4g | %.4g (it %d) | %s | %s |\n", rel,
+               init_name[k], r[k].start_s, r[k].e0, n >= 1 ? r[k].e[0] : NAN,
+               n >= 10 ? r[k].e[9] : NAN, n ? r[k].e[n - 1] : NAN, n, reach_s,
                k == 1 ? fallback : "");
         fflush(stdout);
     }
@@ -157,9 +162,10 @@ static void bench_atlas(const char *dir, const char *rel)
         if (s != SCAF_OK)
             printf("| %s | %s | failed: %s | | | | | |\n", rel, init_name[k], scaf_atlas_error(a));
         else
-            printf("| %s | %s | %.4f | %.4g | %d | %d | %.4f | %.3f | %.2f |\n", rel, init_name[k], t1 - t0, e0,
-                   scaf_atlas_iterations(a, SCAF_ATLAS_SETTLE), scaf_atlas_iterations(a, SCAF_ATLAS_COMPACT),
-                   scaf_atlas_energy(a), scaf_atlas_packing_efficiency(a), t2 - t0);
+            printf("| %s | %s | %.4f | %.4g | %d | %d | %.4f | %.3f | %.2f |\n", rel, init_name[k],
+                   t1 - t0, e0, scaf_atlas_iterations(a, SCAF_ATLAS_SETTLE),
+                   scaf_atlas_iterations(a, SCAF_ATLAS_COMPACT), scaf_atlas_energy(a),
+                   scaf_atlas_packing_efficiency(a), t2 - t0);
         fflush(stdout);
         scaf_atlas_destroy(a);
     }
@@ -188,7 +194,8 @@ static void bench_embed(const char *dir, const char *rel)
     if (verts && UV) {
         for (int k = 0; k < t.cx.loop_start[nl]; k++) verts[k] = m.F[t.cx.loop_he[k]];
         opt_chart_loops L = {nl, t.cx.loop_start, verts, -1};
-        static const opt_embed_method meth[NINIT] = {OPT_EMBED_TUTTE, OPT_EMBED_HARMONIC, OPT_EMBED_MVC};
+        static const opt_embed_method meth[NINIT] = {OPT_EMBED_TUTTE, OPT_EMBED_HARMONIC,
+                                                     OPT_EMBED_MVC};
         printf("| %s | %d |", rel, m.nf);
         for (int k = 0; k < NINIT; k++) {
             double best = INFINITY;
@@ -224,14 +231,26 @@ int main(int argc, char **argv)
     }
     const char *dir = getenv("SCAF_DATA_DIR");
     if (!dir) dir = SCAF_DATA_DIR;
-    static const struct { const char *rel; int uv, it; } meshes[] = {
-        {"disk/aphrodite.obj", 0, 10},   {"disk/bull_1.obj", 0, 30},    {"disk/camel_b.obj", 0, 30},
-        {"disk/camelhead.off", 0, 30},   {"disk/hand_lowres.obj", 0, 30}, {"disk/hilbert.obj", 0, 30},
-        {"disk/mountain.obj", 0, 30},    {"bad/plane_holes.obj", 0, 60}, {"seams/blub.obj", 1, 30},
-        {"seams/spot.obj", 1, 30},       {"seams/human_neutral.obj", 1, 30}, {"seams/myles_eight_seamed.obj", 1, 30},
+    static const struct {
+        const char *rel;
+        int uv, it;
+    } meshes[] = {
+        {"disk/aphrodite.obj", 0, 10},
+        {"disk/bull_1.obj", 0, 30},
+        {"disk/camel_b.obj", 0, 30},
+        {"disk/camelhead.off", 0, 30},
+        {"disk/hand_lowres.obj", 0, 30},
+        {"disk/hilbert.obj", 0, 30},
+        {"disk/mountain.obj", 0, 30},
+        {"bad/plane_holes.obj", 0, 60},
+        {"seams/blub.obj", 1, 30},
+        {"seams/spot.obj", 1, 30},
+        {"seams/human_neutral.obj", 1, 30},
+        {"seams/myles_eight_seamed.obj", 1, 30},
         {"seams/myles_knot1_seamed.obj", 1, 30},
     };
-    printf("| mesh | init | start s | E start | E it 1 | E it 10 | E last | iterations to 1.05 x best | harmonic fell back |\n");
+    printf("| mesh | init | start s | E start | E it 1 | E it 10 | E last | iterations to 1.05 x "
+           "best | harmonic fell back |\n");
     printf("|---|---|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < sizeof meshes / sizeof meshes[0]; i++)
         bench_mesh(dir, meshes[i].rel, meshes[i].uv, iterations > 0 ? iterations : meshes[i].it);
@@ -240,7 +259,8 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof meshes / sizeof meshes[0]; i++)
         if (!meshes[i].uv) bench_embed(dir, meshes[i].rel);
     printf("\nAtlas (default options, seams meshes):\n\n");
-    printf("| mesh | init | set_mesh s | E start | settle its | compact its | E final | efficiency | total s |\n");
+    printf("| mesh | init | set_mesh s | E start | settle its | compact its | E final | efficiency "
+           "| total s |\n");
     printf("|---|---|---|---|---|---|---|---|---|\n");
     for (size_t i = 0; i < sizeof meshes / sizeof meshes[0]; i++)
         if (meshes[i].uv) bench_atlas(dir, meshes[i].rel);

@@ -63,7 +63,8 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
     r->cpu[r->n] = c - r->cpu_last;
     r->cpu_last = c;
     r->n++;
-    fprintf(stderr, "\r  iteration %d  E = %.5f  %.3f s   ", info->iteration, info->energy, info->seconds);
+    fprintf(stderr, "\r  iteration %d  E = %.5f  %.3f s   ", info->iteration, info->energy,
+            info->seconds);
     return 0;
 }
 
@@ -134,9 +135,11 @@ static void bench(const char *rel, int iterations, const char *ref_energy)
     for (int k = 0; k < SCAF_PHASE_COUNT; k++)
         len += snprintf(split + len, sizeof split - (size_t)len, "%s%s %.0f%%", k ? ", " : "",
                         scaf_phase_name((scaf_phase)k), total > 0 ? 100 * phase[k] / total : 0.0);
-    printf("| %s | %d | %d | %.5f (ref %s) | %.4f | %.4f | %s | %.4f (%.2fx) | %.0f MB |\n", rel, m.nf, r.n,
-           scaf_param_energy(p), ref_energy, mw, mc, split, mf, mf > 0 ? mw / mf : 0.0, ru.ru_maxrss / 1024.0);
-    printf("<!-- %s: dominant phase %s; total %.2f s -->\n", rel, scaf_phase_name((scaf_phase)dom), total);
+    printf("| %s | %d | %d | %.5f (ref %s) | %.4f | %.4f | %s | %.4f (%.2fx) | %.0f MB |\n", rel,
+           m.nf, r.n, scaf_param_energy(p), ref_energy, mw, mc, split, mf, mf > 0 ? mw / mf : 0.0,
+           ru.ru_maxrss / 1024.0);
+    printf("<!-- %s: dominant phase %s; total %.2f s -->\n", rel, scaf_phase_name((scaf_phase)dom),
+           total);
     fflush(stdout);
     free(w);
     free(f);
@@ -156,13 +159,15 @@ int main(int argc, char **argv)
 #endif
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--large")) large = 1;
-        else if (!strcmp(argv[i], "--large-iterations") && i + 1 < argc) large_its = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--large-iterations") && i + 1 < argc)
+            large_its = atoi(argv[++i]);
         else {
             fprintf(stderr, "usage: bench_param [--large] [--large-iterations N]\n");
             return 2;
         }
     }
-    printf("| mesh | faces | iterations | E reached | median s/it (wall) | median s/it (CPU) | phase split | median factorization s (it / fact) | peak RSS |\n");
+    printf("| mesh | faces | iterations | E reached | median s/it (wall) | median s/it (CPU) | "
+           "phase split | median factorization s (it / fact) | peak RSS |\n");
     printf("|---|---|---|---|---|---|---|---|---|\n");
     bench("disk/camel_b.obj", 50, "4.10928 @50");
     bench("disk/camelhead.off", 50, "7.44660 @50");

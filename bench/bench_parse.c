@@ -81,8 +81,8 @@ int main(int argc, char **argv)
     int nfiles = argc - first;
     int use_defaults = nfiles <= 0;
     if (use_defaults) nfiles = 3;
-    printf("%-30s %7s %9s %8s %10s %8s %9s %9s\n", "file", "MB", "faces", "parse_s", "parse_MB/s", "cpu_MB/s",
-           "read_s", "read_MB/s");
+    printf("%-30s %7s %9s %8s %10s %8s %9s %9s\n", "file", "MB", "faces", "parse_s", "parse_MB/s",
+           "cpu_MB/s", "read_s", "read_MB/s");
     int status = 0;
     for (int i = 0; i < nfiles; i++) {
         char path[4096];
@@ -126,8 +126,8 @@ int main(int argc, char **argv)
         const char *base = strrchr(path, '/');
         base = base ? base + 1 : path;
         double mb = (double)size / 1e6;
-        printf("%-30s %7.1f %9d %8.3f %10.0f %8.0f %9.3f %9.0f\n", base, mb, nf, best_parse, mb / best_parse,
-               mb / best_cpu, best_read, mb / best_read);
+        printf("%-30s %7.1f %9d %8.3f %10.0f %8.0f %9.3f %9.0f\n", base, mb, nf, best_parse,
+               mb / best_parse, mb / best_cpu, best_read, mb / best_read);
         free(data);
     }
     return status;

@@ -27,7 +27,11 @@ static double now(void)
 
 static double median3(double a, double b, double c)
 {
-    if (a > b) { double t = a; a = b; b = t; }
+    if (a > b) {
+        double t = a;
+        a = b;
+        b = t;
+    }
     if (b > c) b = c;
     return a > b ? a : b;
 }
@@ -54,8 +58,9 @@ static void one(const char *path)
             if (m.V[3 * i + k] < blo[k]) blo[k] = m.V[3 * i + k];
             if (m.V[3 * i + k] > bhi[k]) bhi[k] = m.V[3 * i + k];
         }
-    double diag = sqrt((bhi[0] - blo[0]) * (bhi[0] - blo[0]) + (bhi[1] - blo[1]) * (bhi[1] - blo[1]) +
-                       (bhi[2] - blo[2]) * (bhi[2] - blo[2]));
+    double diag =
+        sqrt((bhi[0] - blo[0]) * (bhi[0] - blo[0]) + (bhi[1] - blo[1]) * (bhi[1] - blo[1]) +
+             (bhi[2] - blo[2]) * (bhi[2] - blo[2]));
     const char *out = "bench_png_out.png";
     int sizes[2] = {1024, 4096};
     for (int s = 0; s < 2; s++)
@@ -76,13 +81,15 @@ static void one(const char *path)
                 uv_raster_frame fr = uv_raster_fit(lo, hi, o.size, o.size / 64, &W, &H);
                 uv_raster ras;
                 if (uv_raster_new(&ras, W, H, &err) != SCAF_OK) return;
-                uv_raster_mesh rm = {m.nf, m.UV, m.FT, col, chk ? m.V : NULL, chk ? m.F : NULL, diag / 20.0};
+                uv_raster_mesh rm = {
+                    m.nf, m.UV, m.FT, col, chk ? m.V : NULL, chk ? m.F : NULL, diag / 20.0};
                 double t0 = now();
                 uv_raster_fill(&ras, &fr, &rm);
                 tf[r] = now() - t0;
                 uv_raster_free(&ras);
                 t0 = now();
-                if (uv_png_write(out, m.nuv, m.UV, m.nf, m.FT, col, m.nv, m.V, m.F, &o, &err) != SCAF_OK) {
+                if (uv_png_write(out, m.nuv, m.UV, m.nf, m.FT, col, m.nv, m.V, m.F, &o, &err) !=
+                    SCAF_OK) {
                     printf("| %s | %s |\n", path, err.message);
                     return;
                 }
@@ -90,8 +97,9 @@ static void one(const char *path)
             }
             struct stat st;
             long bytes = stat(out, &st) == 0 ? (long)st.st_size : -1;
-            printf("| %s | %d | %d | %s | %.3f | %.3f | %ld |\n", path, m.nf, sizes[s], chk ? "yes" : "no",
-                   median3(tf[0], tf[1], tf[2]), median3(tw[0], tw[1], tw[2]), bytes);
+            printf("| %s | %d | %d | %s | %.3f | %.3f | %ld |\n", path, m.nf, sizes[s],
+                   chk ? "yes" : "no", median3(tf[0], tf[1], tf[2]), median3(tw[0], tw[1], tw[2]),
+                   bytes);
             fflush(stdout);
         }
     remove(out);
@@ -101,7 +109,8 @@ static void one(const char *path)
 
 int main(int argc, char **argv)
 {
-    printf("| mesh | faces | pixels | checker | fill s | picture s | bytes |\n|---|---|---|---|---|---|---|\n");
+    printf("| mesh | faces | pixels | checker | fill s | picture s | bytes "
+           "|\n|---|---|---|---|---|---|---|\n");
     if (argc > 1) {
         for (int i = 1; i < argc; i++) one(argv[i]);
         return 0;

@@ -148,10 +148,8 @@ int main(int argc, char **argv)
             fill(k, p);
             r[k] = rate(fs[p], seconds);
         }
-        if (p > 1)
-            printf("| %s | %.3g | %.3g | %.3g | - |\n", names[p], r[0], r[1], r[2]);
-        else
-            printf("| %s | %.3g | %.3g | %.3g | %.3g |\n", names[p], r[0], r[1], r[2], r[3]);
+        if (p > 1) printf("| %s | %.3g | %.3g | %.3g | - |\n", names[p], r[0], r[1], r[2]);
+        else printf("| %s | %.3g | %.3g | %.3g | %.3g |\n", names[p], r[0], r[1], r[2], r[3]);
     }
     return 0;
 }

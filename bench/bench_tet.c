@@ -32,19 +32,21 @@ static void run(const char *name, const mesh *m)
         if (t2 - t1 < best_tet) best_tet = t2 - t1;
     }
     if (s == SCAF_OK)
-        printf("| %s | %d | %lld | %.3f | %d | %d | %d | %.3f |\n", name, m->nf, r.pairs, best_check, tm.nv, tm.nt,
-               tm.ninside, best_tet);
+        printf("| %s | %d | %lld | %.3f | %d | %d | %d | %.3f |\n", name, m->nf, r.pairs,
+               best_check, tm.nv, tm.nt, tm.ninside, best_tet);
     else
-        printf("| %s | %d | %lld | %.3f | refused: %s | | | |\n", name, m->nf, r.pairs, best_check, e.message);
+        printf("| %s | %d | %lld | %.3f | refused: %s | | | |\n", name, m->nf, r.pairs, best_check,
+               e.message);
     tet_box_mesh_free(&tm);
 }
 
 int main(void)
 {
-    printf("| mesh | faces | intersecting pairs | check s | scaffold vertices | tets | tets inside | "
+    printf("| mesh | faces | intersecting pairs | check s | scaffold vertices | tets | tets inside "
+           "| "
            "TetGen + checks s |\n|---|---|---|---|---|---|---|---|\n");
-    static const char *files[] = {"bunny.obj", "leg-intersect.off", "leg-flow6.off", "fertility.off",
-                                  "nefertiti-lowres.obj", "armadillo.obj"};
+    static const char *files[] = {"bunny.obj",     "leg-intersect.off",    "leg-flow6.off",
+                                  "fertility.off", "nefertiti-lowres.obj", "armadillo.obj"};
     for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
         char path[1024];
         snprintf(path, sizeof path, "%s/closed/%s", SCAF_DATA_DIR, files[i]);

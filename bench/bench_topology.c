@@ -46,8 +46,8 @@ static void run(const char *name, const mesh *m, double read_s)
         mesh_charts_free(&c);
         mesh_topology_free(&t);
     }
-    printf("%-40s %9d faces  read %6.3f s  topology %6.3f s  charts %6.3f s\n", name, m->nf, read_s, best_t,
-           best_c);
+    printf("%-40s %9d faces  read %6.3f s  topology %6.3f s  charts %6.3f s\n", name, m->nf, read_s,
+           best_t, best_c);
 }
 
 int main(int argc, char **argv)

@@ -86,12 +86,14 @@ static int read_obj(const char *path, mesh_arrays *m)
         line++;
         if (buf[0] == 'v' && buf[1] == ' ') {
             if (grow((void **)&m->V, &cv, m->nv + 1, 3 * sizeof(double))) rc = -1;
-            else if (sscanf(buf + 2, "%lf %lf %lf", &m->V[3 * m->nv], &m->V[3 * m->nv + 1], &m->V[3 * m->nv + 2]) != 3)
+            else if (sscanf(buf + 2, "%lf %lf %lf", &m->V[3 * m->nv], &m->V[3 * m->nv + 1],
+                            &m->V[3 * m->nv + 2]) != 3)
                 rc = -2;
             else m->nv++;
         } else if (buf[0] == 'v' && buf[1] == 't' && buf[2] == ' ') {
             if (grow((void **)&m->UV, &cuv, m->nuv + 1, 2 * sizeof(double))) rc = -1;
-            else if (sscanf(buf + 3, "%lf %lf", &m->UV[2 * m->nuv], &m->UV[2 * m->nuv + 1]) != 2) rc = -2;
+            else if (sscanf(buf + 3, "%lf %lf", &m->UV[2 * m->nuv], &m->UV[2 * m->nuv + 1]) != 2)
+                rc = -2;
             else m->nuv++;
         } else if (buf[0] == 'f' && buf[1] == ' ') {
             if (grow((void **)&m->F, &cf, m->nf + 1, 3 * sizeof(int)) ||
@@ -126,28 +128,33 @@ static int read_obj(const char *path, mesh_arrays *m)
     }
     fclose(fp);
     if (rc == -1) fprintf(stderr, "atlas_example: out of memory reading %s\n", path);
-    if (rc == -2) fprintf(stderr, "atlas_example: %s:%d: unsupported line (only v, vt, triangles)\n", path, line);
+    if (rc == -2)
+        fprintf(stderr, "atlas_example: %s:%d: unsupported line (only v, vt, triangles)\n", path,
+                line);
     if (rc == 0 && faces_with_vt != m->nf) m->nuv = 0; /* charts = components */
     return rc;
 }
 
-static int write_obj(const char *path, const mesh_arrays *m, const double *UV, int nuv, const int *FT)
+static int write_obj(const char *path, const mesh_arrays *m, const double *UV, int nuv,
+                     const int *FT)
 {
     FILE *fp = fopen(path, "w");
     if (!fp) return -1;
-    for (int i = 0; i < m->nv; i++) fprintf(fp, "v %.17g %.17g %.17g\n", m->V[3 * i], m->V[3 * i + 1], m->V[3 * i + 2]);
+    for (int i = 0; i < m->nv; i++)
+        fprintf(fp, "v %.17g %.17g %.17g\n", m->V[3 * i], m->V[3 * i + 1], m->V[3 * i + 2]);
     for (int i = 0; i < nuv; i++) fprintf(fp, "vt %.17g %.17g\n", UV[2 * i], UV[2 * i + 1]);
     for (int f = 0; f < m->nf; f++)
-        fprintf(fp, "f %d/%d %d/%d %d/%d\n", m->F[3 * f] + 1, FT[3 * f] + 1, m->F[3 * f + 1] + 1, FT[3 * f + 1] + 1,
-                m->F[3 * f + 2] + 1, FT[3 * f + 2] + 1);
+        fprintf(fp, "f %d/%d %d/%d %d/%d\n", m->F[3 * f] + 1, FT[3 * f] + 1, m->F[3 * f + 1] + 1,
+                FT[3 * f + 1] + 1, m->F[3 * f + 2] + 1, FT[3 * f + 2] + 1);
     return fclose(fp) == 0 ? 0 : -1;
 }
 
 static int on_progress(const scaf_atlas_iteration_info_t *it, void *user)
 {
     (void)user;
-    printf("  %-7s %3d  E %.5f  efficiency %.3f  gap %.5f\n", it->phase == SCAF_ATLAS_SETTLE ? "settle" : "compact",
-           it->phase_iteration, it->energy, it->efficiency, it->gap);
+    printf("  %-7s %3d  E %.5f  efficiency %.3f  gap %.5f\n",
+           it->phase == SCAF_ATLAS_SETTLE ? "settle" : "compact", it->phase_iteration, it->energy,
+           it->efficiency, it->gap);
     return 0; /* nonzero would stop the run (SCAF_ERR_CANCELLED) */
 }
 
@@ -155,7 +162,8 @@ int main(int argc, char **argv)
 {
     mesh_arrays m;
     if (argc > 1 ? read_obj(argv[1], &m) : make_patches(&m, 6)) return 1;
-    printf("scaf %s: %d vertices, %d triangles%s\n", scaf_version(), m.nv, m.nf, m.nuv ? ", charts from vt" : "");
+    printf("scaf %s: %d vertices, %d triangles%s\n", scaf_version(), m.nv, m.nf,
+           m.nuv ? ", charts from vt" : "");
 
     scaf_atlas_options_t opt = scaf_atlas_options_default();
     opt.padding = 4.0 / 1024.0; /* 4 texels of a 1024 x 1024 texture */
@@ -166,7 +174,8 @@ int main(int argc, char **argv)
     int rc = 1;
     double *UV = NULL, *E = NULL;
     int *FT = NULL;
-    scaf_status st = scaf_atlas_set_mesh(a, m.V, m.nv, m.F, m.nf, m.nuv ? m.UV : NULL, m.nuv, m.nuv ? m.FT : NULL);
+    scaf_status st = scaf_atlas_set_mesh(a, m.V, m.nv, m.F, m.nf, m.nuv ? m.UV : NULL, m.nuv,
+                                         m.nuv ? m.FT : NULL);
     if (st == SCAF_OK) st = scaf_atlas_run(a, on_progress, NULL);
     if (st != SCAF_OK) {
         fprintf(stderr, "atlas_example: %s: %s\n", scaf_status_name(st), scaf_atlas_error(a));
@@ -177,7 +186,8 @@ int main(int argc, char **argv)
     FT = malloc(sizeof(int) * 3 * (size_t)m.nf);
     E = malloc(sizeof(double) * (size_t)nc);
     if (!UV || !FT || !E) goto done;
-    if (scaf_atlas_get_uv(a, UV, FT, NULL) != SCAF_OK || scaf_atlas_chart_distortion(a, E) != SCAF_OK) {
+    if (scaf_atlas_get_uv(a, UV, FT, NULL) != SCAF_OK ||
+        scaf_atlas_chart_distortion(a, E) != SCAF_OK) {
         fprintf(stderr, "atlas_example: %s\n", scaf_atlas_error(a));
         goto done;
     }

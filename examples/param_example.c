@@ -58,15 +58,16 @@ int main(void)
     FT = malloc(sizeof(int) * 3 * (size_t)nf);
     if (!UV || !FT || scaf_param_get_uv(p, UV, FT) != SCAF_OK) goto done;
     for (int f = 0; f < nf; f++) {
-        const double *a = UV + 2 * FT[3 * f], *b = UV + 2 * FT[3 * f + 1], *c = UV + 2 * FT[3 * f + 2];
+        const double *a = UV + 2 * FT[3 * f], *b = UV + 2 * FT[3 * f + 1],
+                     *c = UV + 2 * FT[3 * f + 2];
         if (!((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) > 0.0)) {
             fprintf(stderr, "param_example: triangle %d is not counter-clockwise\n", f);
             goto done;
         }
     }
     double e1 = scaf_param_energy(p);
-    printf("param: %d UVs, %d iterations (stop reason: %s), E %.6f -> %.6f\n", nuv, scaf_param_iterations(p),
-           scaf_stop_reason_name(scaf_param_stop_reason(p)), e0, e1);
+    printf("param: %d UVs, %d iterations (stop reason: %s), E %.6f -> %.6f\n", nuv,
+           scaf_param_iterations(p), scaf_stop_reason_name(scaf_param_stop_reason(p)), e0, e1);
     rc = e1 < e0 ? 0 : 1;
 done:
     scaf_param_destroy(p);

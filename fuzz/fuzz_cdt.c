@@ -25,16 +25,14 @@ static int has_edge(const cdt_output *o, int a, int b)
     for (int t = 0; t < o->ntriangles; t++)
         for (int k = 0; k < 3; k++) {
             int u = o->triangles[3 * t + (k + 1) % 3], w = o->triangles[3 * t + (k + 2) % 3];
-            if ((u == a && w == b) || (u == b && w == a))
-                return 1;
+            if ((u == a && w == b) || (u == b && w == a)) return 1;
         }
     return 0;
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    if (size < 2)
-        return 0;
+    if (size < 2) return 0;
     size_t pos = 0;
     uint8_t opt_byte = data[pos++];
     int np = data[pos++] % 48;
@@ -92,19 +90,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     for (int i = 0; i < n; i++)
-        if (out.points[2 * i] != pts[2 * i] || out.points[2 * i + 1] != pts[2 * i + 1])
-            abort();
+        if (out.points[2 * i] != pts[2 * i] || out.points[2 * i + 1] != pts[2 * i + 1]) abort();
     for (int t = 0; t < out.ntriangles; t++) {
         const int *v = out.triangles + 3 * t;
         for (int k = 0; k < 3; k++)
-            if (v[k] < 0 || v[k] >= out.npoints)
-                abort();
+            if (v[k] < 0 || v[k] >= out.npoints) abort();
         if (!(orient2d(out.points + 2 * v[0], out.points + 2 * v[1], out.points + 2 * v[2]) > 0))
             abort();
         for (int k = 0; k < 3; k++) {
             int nb = out.neighbors[3 * t + k];
-            if (nb < -1 || nb >= out.ntriangles)
-                abort();
+            if (nb < -1 || nb >= out.ntriangles) abort();
             if (nb >= 0 && out.neighbors[3 * nb] != t && out.neighbors[3 * nb + 1] != t &&
                 out.neighbors[3 * nb + 2] != t)
                 abort();
@@ -113,10 +108,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* subsegments are edges; an unsplittable segment is one whole subsegment */
     for (int i = 0; i < out.nsubsegments; i++) {
         int sg = out.subsegment_of[i], u = out.subsegments[2 * i], w = out.subsegments[2 * i + 1];
-        if (sg < 0 || sg >= ns || !has_edge(&out, u, w))
-            abort();
-        if (!split[sg] && !((u == segs[2 * sg] && w == segs[2 * sg + 1]) ||
-                            (w == segs[2 * sg] && u == segs[2 * sg + 1])))
+        if (sg < 0 || sg >= ns || !has_edge(&out, u, w)) abort();
+        if (!split[sg] &&
+            !((u == segs[2 * sg] && w == segs[2 * sg + 1]) ||
+              (w == segs[2 * sg] && u == segs[2 * sg + 1])))
             abort();
     }
     cdt_output_free(&out);

@@ -64,36 +64,96 @@ atlas_options __wrap_atlas_options_default(void)
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-static char dir[256];   /* scratch folder of every run */
+static char dir[256]; /* scratch folder of every run */
 
-static const double scales[] = {1.0,    1e-300, 1e-200, 1e-80, 1e-30,  1e-8,   1e8,    1e30,
-                                1e80,   1e154,  1e155,  1e200, 1e300,  1e307,  1e308,  4.9e-324,
-                                2.2e-308, 1e-160, 1e160, -1.0, 0.0,    3.0,    1e15,   1e-15};
+static const double scales[] = {1.0,      1e-300, 1e-200, 1e-80, 1e-30, 1e-8,  1e8,   1e30,
+                                1e80,     1e154,  1e155,  1e200, 1e300, 1e307, 1e308, 4.9e-324,
+                                2.2e-308, 1e-160, 1e160,  -1.0,  0.0,   3.0,   1e15,  1e-15};
 static const double offsets[] = {0.0, 1.0, -1e10, 1e15, 1e200, -1e300, 1e-300, 0.5};
 
 /* Option names per command; the values are taken from `values`. */
-static const char *const param_names[] = {
-    "-o", "--output", "--iterations", "--tolerance", "--energy", "--init", "--box-scale", "--lambda-ratio",
-    "--min-angle", "--quiet", "--report", "--svg", "--svg-scaffold", "--png", "--png-size", "--checker",
-    "--verify", "-h", "--bogus", "-q"};
-static const char *const atlas_names[] = {
-    "-o", "--output", "--padding", "--resolution", "--padding-texels", "--init", "--iterations",
-    "--compact-iterations", "--distortion-tolerance", "--box-scale", "--lambda-ratio",
-    "--compact-lambda-ratio", "--quiet", "--report", "--svg", "--png", "--png-size", "--checker", "-h", "--bogus"};
+static const char *const param_names[] = {"-o",
+                                          "--output",
+                                          "--iterations",
+                                          "--tolerance",
+                                          "--energy",
+                                          "--init",
+                                          "--box-scale",
+                                          "--lambda-ratio",
+                                          "--min-angle",
+                                          "--quiet",
+                                          "--report",
+                                          "--svg",
+                                          "--svg-scaffold",
+                                          "--png",
+                                          "--png-size",
+                                          "--checker",
+                                          "--verify",
+                                          "-h",
+                                          "--bogus",
+                                          "-q"};
+static const char *const atlas_names[] = {"-o",
+                                          "--output",
+                                          "--padding",
+                                          "--resolution",
+                                          "--padding-texels",
+                                          "--init",
+                                          "--iterations",
+                                          "--compact-iterations",
+                                          "--distortion-tolerance",
+                                          "--box-scale",
+                                          "--lambda-ratio",
+                                          "--compact-lambda-ratio",
+                                          "--quiet",
+                                          "--report",
+                                          "--svg",
+                                          "--png",
+                                          "--png-size",
+                                          "--checker",
+                                          "-h",
+                                          "--bogus"};
 static const char *const check_names[] = {"--json", "-h", "--bogus", "--json"};
 /* options that take no value (the fuzzer's value byte is then skipped) */
-static const char *const flags[] = {"--quiet", "-q", "--svg-scaffold", "--verify", "-h", "--json", "--bogus"};
+static const char *const flags[] = {"--quiet", "-q",     "--svg-scaffold", "--verify",
+                                    "-h",      "--json", "--bogus"};
 
 /* Values; "@NAME" is the file NAME in the scratch folder, "-" after an
  * option naming a file is the standard output. No valid PNG size above 64
  * pixels: a run must stay small. */
-static const char *const values[] = {
-    "0", "1", "2", "3", "-1", "1e-61", "1e-300", "1e300", "1e308", "4.9e-324", "nan", "inf", "-inf", "", "abc",
-    "100000000", "100000001", "2147483648", "0.5", "0.49", "0.4999999", "1e-5", "15", "16", "64", "16385", "20",
-    "60", "89", "90", "179", "1e-320", "0x10", "1e", " 1", "1 ", "-0", "sd", "arap", "conformal", "mips",
-    "symmetric-dirichlet", "tutte", "harmonic", "mvc", "input", "0.01", "10000", "10001", "1024",
-    "@o.obj", "@o.obj.gz", "@o.ply", "@o.off", "@o", "@r.json", "@r.json.gz", "@s.svg", "@p.png", "@in.obj",
-    "@link.obj", "@fifo.obj", "@dir.obj", "@nodir/x.obj", "@", "@-", "@o.OBJ", "-"};
+static const char *const values[] = {"0",          "1",
+                                     "2",          "3",
+                                     "-1",         "1e-61",
+                                     "1e-300",     "1e300",
+                                     "1e308",      "4.9e-324",
+                                     "nan",        "inf",
+                                     "-inf",       "",
+                                     "abc",        "100000000",
+                                     "100000001",  "2147483648",
+                                     "0.5",        "0.49",
+                                     "0.4999999",  "1e-5",
+                                     "15",         "16",
+                                     "64",         "16385",
+                                     "20",         "60",
+                                     "89",         "90",
+                                     "179",        "1e-320",
+                                     "0x10",       "1e",
+                                     " 1",         "1 ",
+                                     "-0",         "sd",
+                                     "arap",       "conformal",
+                                     "mips",       "symmetric-dirichlet",
+                                     "tutte",      "harmonic",
+                                     "mvc",        "input",
+                                     "0.01",       "10000",
+                                     "10001",      "1024",
+                                     "@o.obj",     "@o.obj.gz",
+                                     "@o.ply",     "@o.off",
+                                     "@o",         "@r.json",
+                                     "@r.json.gz", "@s.svg",
+                                     "@p.png",     "@in.obj",
+                                     "@link.obj",  "@fifo.obj",
+                                     "@dir.obj",   "@nodir/x.obj",
+                                     "@",          "@-",
+                                     "@o.OBJ",     "-"};
 
 /* Options naming a file: their value is always a name in the scratch
  * folder (never the working directory). */
@@ -103,7 +163,6 @@ static const char *const path_options[] = {"-o", "--output", "--report", "--svg"
  * run. */
 static const char *const fixed[] = {"in.obj", "fifo.obj", "dir.obj", "link.obj"};
 
-
 typedef struct reader {
     const uint8_t *p;
     size_t n, i;
@@ -111,7 +170,10 @@ typedef struct reader {
 
 static unsigned next_byte(reader *r) { return r->i < r->n ? r->p[r->i++] : 0u; }
 
-static void path_of(char *buf, size_t size, const char *name) { snprintf(buf, size, "%s/%s", dir, name); }
+static void path_of(char *buf, size_t size, const char *name)
+{
+    snprintf(buf, size, "%s/%s", dir, name);
+}
 
 static void remove_scratch(void);
 
@@ -147,8 +209,10 @@ static int write_mesh(reader *r, const char *path)
     for (int c = 0; c < copies; c++)
         for (int i = 0; i < n; i++)
             for (int j = 0; j < n; j++) {
-                double jx = (int)next_byte(r) - 128, jy = (int)next_byte(r) - 128, jz = (int)next_byte(r) - 128;
-                double x = (j + 3.0 * c + jx / 1024.0) * scale + offset, y = (i + jy / 1024.0) * scale + offset;
+                double jx = (int)next_byte(r) - 128, jy = (int)next_byte(r) - 128,
+                       jz = (int)next_byte(r) - 128;
+                double x = (j + 3.0 * c + jx / 1024.0) * scale + offset,
+                       y = (i + jy / 1024.0) * scale + offset;
                 fprintf(f, "v %.17g %.17g %.17g\n", x, y, jz / 256.0 * scale);
                 if (uv) {
                     double k = fold ? 1.0 / 128.0 : 1.0 / 1024.0;
@@ -163,9 +227,9 @@ static int write_mesh(reader *r, const char *path)
             for (int j = 0; j < side; j++) {
                 int a = c * n * n + i * n + j + 1, b = a + 1, d = a + n, e = d + 1;
                 if (uv)
-                    fprintf(f, "f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n", a, a, b, b, e, e, a, a, e, e, d, d);
-                else
-                    fprintf(f, "f %d %d %d\nf %d %d %d\n", a, b, e, a, e, d);
+                    fprintf(f, "f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n", a, a, b, b, e, e, a, a,
+                            e, e, d, d);
+                else fprintf(f, "f %d %d %d\nf %d %d %d\n", a, b, e, a, e, d);
             }
     return fclose(f) == 0;
 }
@@ -251,9 +315,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     clean_scratch();
 
     const char *const *opts = cmd == 0 ? param_names : cmd == 1 ? atlas_names : check_names;
-    size_t nopts = cmd == 0   ? sizeof param_names / sizeof param_names[0]
-                   : cmd == 1 ? sizeof atlas_names / sizeof atlas_names[0]
-                              : sizeof check_names / sizeof check_names[0];
+    size_t nopts = cmd == 0 ? sizeof param_names / sizeof param_names[0]
+        : cmd == 1          ? sizeof atlas_names / sizeof atlas_names[0]
+                            : sizeof check_names / sizeof check_names[0];
     enum { MAX_ARGS = 40, ARG_LEN = 320 };
     static char store[MAX_ARGS][ARG_LEN];
     char *argv[MAX_ARGS + 1];
@@ -266,7 +330,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         unsigned vb = next_byte(&r);
         PUSH(o);
         if (!strcmp(o, "-o") || !strcmp(o, "--output")) mesh_out = argc; /* its value comes next */
-        if (!strcmp(o, "-h")) help = 1;                                   /* exit 0, nothing written */
+        if (!strcmp(o, "-h")) help = 1; /* exit 0, nothing written */
         if (listed(o, flags, sizeof flags / sizeof flags[0]) && vb < 240)
             continue; /* sometimes a stray value after a flag */
         const char *v = values[vb % (sizeof values / sizeof values[0])];
@@ -299,7 +363,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (int i = 0; i < argc; i++) fprintf(stderr, " '%s'", argv[i]);
         fputc('\n', stderr);
     }
-    int rc = cmd == 0 ? cmd_param(argc, argv) : cmd == 1 ? cmd_atlas(argc, argv) : cmd_check(argc, argv);
+    int rc = cmd == 0 ? cmd_param(argc, argv)
+        : cmd == 1    ? cmd_atlas(argc, argv)
+                      : cmd_check(argc, argv);
     /* 0..7; not 8 (no signal), not 70 (a bug in scaf, by definition) */
     int expected = rc >= EXIT_OK && rc <= EXIT_NOMEM && (rc != EXIT_NOT_BIJECTIVE || cmd == 2);
     if (!expected) {
@@ -309,6 +375,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         abort();
     }
     assert_no_temporary();
-    if (rc == EXIT_OK && cmd != 2 && !help && mesh_out >= 0 && mesh_out < argc) assert_output_bijective(argv[mesh_out]);
+    if (rc == EXIT_OK && cmd != 2 && !help && mesh_out >= 0 && mesh_out < argc)
+        assert_output_bijective(argv[mesh_out]);
     return 0;
 }

@@ -19,7 +19,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size < 1) return 0;
-    static const mesh_format formats[4] = {MESH_FORMAT_OBJ, MESH_FORMAT_OFF, MESH_FORMAT_PLY, MESH_FORMAT_UNKNOWN};
+    static const mesh_format formats[4] = {MESH_FORMAT_OBJ, MESH_FORMAT_OFF, MESH_FORMAT_PLY,
+                                           MESH_FORMAT_UNKNOWN};
     mesh_format fmt = formats[data[0] % 4];
     mesh m;
     mesh_read_info info;

@@ -41,8 +41,8 @@ static double next_coord(reader *r)
     return (double)(int16_t)(uint16_t)(lo | hi << 8) / 256.0;
 }
 
-static void run_param(int nv, const double *V, int nf, const int *F, const double *UV, const int *FT,
-                      unsigned flags)
+static void run_param(int nv, const double *V, int nf, const int *F, const double *UV,
+                      const int *FT, unsigned flags)
 {
     scaf_options_t o = scaf_options_default();
     o.init = flags & 1 ? SCAF_INIT_HARMONIC : flags & 32 ? SCAF_INIT_MVC : SCAF_INIT_TUTTE;
@@ -59,7 +59,8 @@ static void run_param(int nv, const double *V, int nf, const int *F, const doubl
             bij_report r;
             scaf_error err;
             /* charts by UV connectivity: NULL lets the checker find them */
-            if (bij_check(nuv, uv, nf, ft, NULL, NULL, &r, &err) == SCAF_OK && !r.bijective) abort();
+            if (bij_check(nuv, uv, nf, ft, NULL, NULL, &r, &err) == SCAF_OK && !r.bijective)
+                abort();
         }
         free(uv);
         free(ft);
@@ -67,7 +68,8 @@ static void run_param(int nv, const double *V, int nf, const int *F, const doubl
     scaf_param_destroy(p);
 }
 
-static void run_atlas(const double *V, int nv, const int *F, int nf, const double *UV, const int *FT)
+static void run_atlas(const double *V, int nv, const int *F, int nf, const double *UV,
+                      const int *FT)
 {
     mesh m = {nv, (double *)V, nf, (int *)F, UV ? nv : 0, (double *)UV, (int *)FT};
     atlas_options o = atlas_options_default();

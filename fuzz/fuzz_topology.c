@@ -40,10 +40,12 @@ static void check_complex(const tri_complex *cx, const int *F)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size < 1) return 0;
-    static const mesh_format formats[4] = {MESH_FORMAT_OBJ, MESH_FORMAT_OFF, MESH_FORMAT_PLY, MESH_FORMAT_UNKNOWN};
+    static const mesh_format formats[4] = {MESH_FORMAT_OBJ, MESH_FORMAT_OFF, MESH_FORMAT_PLY,
+                                           MESH_FORMAT_UNKNOWN};
     mesh m;
     scaf_error err;
-    if (mesh_parse((const char *)data + 1, size - 1, formats[data[0] % 4], "fuzz", &m, NULL, &err) != SCAF_OK)
+    if (mesh_parse((const char *)data + 1, size - 1, formats[data[0] % 4], "fuzz", &m, NULL,
+                   &err) != SCAF_OK)
         return 0;
     mesh_topology t;
     if (mesh_topology_compute(&m, &t, &err) != SCAF_OK) abort();
@@ -62,7 +64,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (int k = 0; k < c.ncharts; k++) {
         scaf_status s = mesh_chart_check(&c, k, 1, &err);
         mesh_chart_kind kind = mesh_chart_classify(&c, k);
-        if ((s == SCAF_OK) != (kind == MESH_CHART_DISK || kind == MESH_CHART_DISK_WITH_HOLES)) abort();
+        if ((s == SCAF_OK) != (kind == MESH_CHART_DISK || kind == MESH_CHART_DISK_WITH_HOLES))
+            abort();
         if (kind == MESH_CHART_DISK && c.cx.group_loops[k] != 1) abort();
         const int *v, *vt;
         for (int i = 0; mesh_chart_loop(&c, k, i, &v, &vt, NULL) > 0; i++)

@@ -30,7 +30,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 enum { MAX_TRI = 8, MAX_PTS = 3 * MAX_TRI };
 
 /* Gap (status in *st) and efficiency of the layout. */
-static void measure(const double *UV, int npts, int nf, const int *F, double *gap, scaf_status *st, double *eff)
+static void measure(const double *UV, int npts, int nf, const int *F, double *gap, scaf_status *st,
+                    double *eff)
 {
     scaf_error err;
     *st = chart_gap_min(npts, UV, nf, F, NULL, 0.0, gap, NULL, &err);
@@ -95,8 +96,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         abort();
     bij_report r2;
     if (bij_check(npts, S, nf, F, NULL, NULL, &r2, &err) != SCAF_OK) abort();
-    if (r2.bijective != r.bijective || r2.flipped != r.flipped || r2.boundary_touchings != r.boundary_touchings ||
-        r2.nested_loops != r.nested_loops)
+    if (r2.bijective != r.bijective || r2.flipped != r.flipped ||
+        r2.boundary_touchings != r.boundary_touchings || r2.nested_loops != r.nested_loops)
         abort();
     return 0;
 }

@@ -23,14 +23,17 @@ static void print_json(const char *path, const mesh_topology *t, const si_report
 {
     printf("{\"file\": ");
     json_write_string(stdout, path);
-    printf(", \"check\": \"self_intersections\", \"faces\": %d, \"vertices\": %d, \"boundary_edges\": %d, "
-           "\"closed\": %s, \"manifold\": %s, \"degenerate_faces\": %d, \"intersecting_pairs\": %lld, "
+    printf(", \"check\": \"self_intersections\", \"faces\": %d, \"vertices\": %d, "
+           "\"boundary_edges\": %d, "
+           "\"closed\": %s, \"manifold\": %s, \"degenerate_faces\": %d, \"intersecting_pairs\": "
+           "%lld, "
            "\"crossing_pairs\": %lld, \"vertex_pairs\": %lld, \"edge_pairs\": %lld, "
            "\"duplicate_pairs\": %lld, \"first_pairs\": [",
            r->faces, t->vertices, t->boundary_edges, t->boundary_edges == 0 ? "true" : "false",
-           t->manifold ? "true" : "false", r->degenerate_faces, r->pairs, r->crossing_pairs, r->vertex_pairs,
-           r->edge_pairs, r->duplicate_pairs);
-    for (int i = 0; i < r->nfirst; i++) printf("%s[%d, %d]", i ? ", " : "", r->first[i][0], r->first[i][1]);
+           t->manifold ? "true" : "false", r->degenerate_faces, r->pairs, r->crossing_pairs,
+           r->vertex_pairs, r->edge_pairs, r->duplicate_pairs);
+    for (int i = 0; i < r->nfirst; i++)
+        printf("%s[%d, %d]", i ? ", " : "", r->first[i][0], r->first[i][1]);
     printf("], \"intersection_free\": %s}\n", r->intersection_free ? "true" : "false");
 }
 
@@ -38,8 +41,8 @@ static void print_text(const char *path, const mesh_topology *t, const si_report
 {
     printf("%s: %s\n", path, r->intersection_free ? "intersection-free" : "SELF-INTERSECTING");
     printf("  faces                %d\n", r->faces);
-    printf("  closed               %s (%d boundary edges), %smanifold\n", t->boundary_edges == 0 ? "yes" : "no",
-           t->boundary_edges, t->manifold ? "" : "NOT ");
+    printf("  closed               %s (%d boundary edges), %smanifold\n",
+           t->boundary_edges == 0 ? "yes" : "no", t->boundary_edges, t->manifold ? "" : "NOT ");
     printf("  degenerate faces     %d", r->degenerate_faces);
     if (r->first_degenerate >= 0) printf(" (first: face %d)", r->first_degenerate);
     printf("\n  intersecting pairs   %lld\n", r->pairs);
@@ -69,10 +72,8 @@ int check_surface_run(const char *path, const mesh *m, int json)
         fprintf(stderr, "scaf check: %s: %s\n", path, err.message);
         return exit_code_for(s);
     }
-    if (json)
-        print_json(path, &t, &r);
-    else
-        print_text(path, &t, &r);
+    if (json) print_json(path, &t, &r);
+    else print_text(path, &t, &r);
     mesh_topology_free(&t);
     return r.intersection_free ? EXIT_OK : EXIT_NOT_BIJECTIVE;
 }

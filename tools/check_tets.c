@@ -34,7 +34,8 @@ int check_tets_run(const char *path, int json)
     if (json) {
         printf("{\"file\": ");
         json_write_string(stdout, path);
-        printf(", \"check\": \"tet_orientation\", \"tets\": %d, \"positive\": %d, \"inverted\": %d, "
+        printf(", \"check\": \"tet_orientation\", \"tets\": %d, \"positive\": %d, \"inverted\": "
+               "%d, "
                "\"degenerate\": %d, \"first_bad\": %d, \"valid\": %s}\n",
                r.tets, r.positive, r.inverted, r.degenerate, r.first_bad, ok ? "true" : "false");
     } else {

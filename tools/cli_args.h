@@ -15,28 +15,28 @@ int cli_parse_double(const char *s, double *out);
  * option's value (or fail with a usage error naming the option), and
  * refuse a value that does not parse. Both return EXIT_USAGE from the
  * enclosing function on failure (needs <stdio.h> and exit_codes.h). */
-#define CLI_NEED_VALUE(cmd)                                                           \
-    do {                                                                              \
-        if (!v) {                                                                     \
-            fprintf(stderr, "scaf %s: %s needs a value (see --help)\n", (cmd), a);     \
-            return EXIT_USAGE;                                                        \
-        }                                                                             \
-        i++;                                                                          \
+#define CLI_NEED_VALUE(cmd)                                                                        \
+    do {                                                                                           \
+        if (!v) {                                                                                  \
+            fprintf(stderr, "scaf %s: %s needs a value (see --help)\n", (cmd), a);                 \
+            return EXIT_USAGE;                                                                     \
+        }                                                                                          \
+        i++;                                                                                       \
     } while (0)
-#define CLI_BAD_VALUE(cmd)                                                                     \
-    do {                                                                                       \
-        fprintf(stderr, "scaf %s: invalid value '%s' for %s (see --help)\n", (cmd), v, a);   \
-        return EXIT_USAGE;                                                                     \
+#define CLI_BAD_VALUE(cmd)                                                                         \
+    do {                                                                                           \
+        fprintf(stderr, "scaf %s: invalid value '%s' for %s (see --help)\n", (cmd), v, a);         \
+        return EXIT_USAGE;                                                                         \
     } while (0)
 
 /* A value that parsed but lies outside RANGE (text such as ">= 1"): a
  * usage error that says the allowed range. Ranges the library checks
  * (param_options_check, atlas_options_check) are left to it, so each
  * range is written once; this is for options only the program has. */
-#define CLI_OUT_OF_RANGE(cmd, range)                                                           \
-    do {                                                                                       \
-        fprintf(stderr, "scaf %s: %s %s is out of range: it must be %s\n", (cmd), a, v, (range)); \
-        return EXIT_USAGE;                                                                     \
+#define CLI_OUT_OF_RANGE(cmd, range)                                                               \
+    do {                                                                                           \
+        fprintf(stderr, "scaf %s: %s %s is out of range: it must be %s\n", (cmd), a, v, (range));  \
+        return EXIT_USAGE;                                                                         \
     } while (0)
 
 #endif

@@ -22,14 +22,16 @@ int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_re
     return EXIT_OK;
 }
 
-scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info, const char *out,
-                         const mesh *o, scaf_error *err)
+scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info,
+                         const char *out, const mesh *o, scaf_error *err)
 {
     if (info && info->format == MESH_FORMAT_OBJ) {
         scaf_status st = obj_rewrite_uv(in, out, o, err);
         if (st != SCAF_ERR_MESH) return st;
-        fprintf(stderr, "scaf %s: warning: %s; writing a plain OBJ (normals, materials and groups not kept)\n", cmd,
-                err->message);
+        fprintf(stderr,
+                "scaf %s: warning: %s; writing a plain OBJ (normals, materials and groups not "
+                "kept)\n",
+                cmd, err->message);
         err_clear(err);
     }
     return mesh_write_obj(out, o, err);

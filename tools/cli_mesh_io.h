@@ -25,7 +25,7 @@ int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_re
 
 /* cmd: command name for messages; in/info: the input path and what its
  * read said; o: the mesh as read with the new UV and FT. */
-scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info, const char *out,
-                         const mesh *o, scaf_error *err);
+scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info,
+                         const char *out, const mesh *o, scaf_error *err);
 
 #endif

@@ -45,19 +45,24 @@ static int ends_with(const char *path, const char *suffix)
 static int check_format(const cli_outputs *o, cli_output *c)
 {
     c->gz = ends_with(c->path, ".gz");
-    if (c->kind != CLI_OUTPUT_MESH || c->to_stdout || ends_with(c->path, ".obj") || ends_with(c->path, ".obj.gz"))
+    if (c->kind != CLI_OUTPUT_MESH || c->to_stdout || ends_with(c->path, ".obj") ||
+        ends_with(c->path, ".obj.gz"))
         return 0;
-    static const char *const no_uv[][2] = {{".ply", "PLY"}, {".off", "OFF"}, {".stl", "STL"},
-                                           {".ply.gz", "PLY"}, {".off.gz", "OFF"}, {".stl.gz", "STL"}};
+    static const char *const no_uv[][2] = {{".ply", "PLY"},    {".off", "OFF"},
+                                           {".stl", "STL"},    {".ply.gz", "PLY"},
+                                           {".off.gz", "OFF"}, {".stl.gz", "STL"}};
     for (size_t i = 0; i < sizeof no_uv / sizeof no_uv[0]; i++)
         if (ends_with(c->path, no_uv[i][0])) {
             fprintf(stderr,
-                    "scaf %s: %s %s: scaf cannot write %s (it has no per-corner texture coordinates); "
+                    "scaf %s: %s %s: scaf cannot write %s (it has no per-corner texture "
+                    "coordinates); "
                     "name the output .obj or .obj.gz\n",
                     o->cmd, c->option, c->path, no_uv[i][1]);
             return EXIT_USAGE;
         }
-    fprintf(stderr, "scaf %s: %s %s: unknown output format; name the output .obj or .obj.gz (gzip-compressed)\n",
+    fprintf(stderr,
+            "scaf %s: %s %s: unknown output format; name the output .obj or .obj.gz "
+            "(gzip-compressed)\n",
             o->cmd, c->option, c->path);
     return EXIT_USAGE;
 }
@@ -112,8 +117,8 @@ int cli_outputs_check(cli_outputs *o)
         if (o->out[k].to_stdout) {
             strcpy(ids[1 + k].path, "-"); /* not a path: only another "-" is the same */
             rc = check_format(o, &o->out[k]);
-        } else if (atomic_resolve(o->out[k].path, ids[1 + k].path, sizeof ids[1 + k].path, NULL, &err) !=
-                   SCAF_OK) {
+        } else if (atomic_resolve(o->out[k].path, ids[1 + k].path, sizeof ids[1 + k].path, NULL,
+                                  &err) != SCAF_OK) {
             fprintf(stderr, "scaf %s: %s %s\n", o->cmd, o->out[k].option, err.message);
             rc = EXIT_OUTPUT;
         } else {
@@ -123,13 +128,16 @@ int cli_outputs_check(cli_outputs *o)
     }
     for (int k = 0; k < o->n && !rc; k++) {
         if (have_input && same_file(&ids[0], &ids[1 + k])) {
-            fprintf(stderr, "scaf %s: the input and %s name the same file (%s): it would be overwritten\n", o->cmd,
-                    o->out[k].option, o->out[k].path);
+            fprintf(stderr,
+                    "scaf %s: the input and %s name the same file (%s): it would be overwritten\n",
+                    o->cmd, o->out[k].option, o->out[k].path);
             rc = EXIT_USAGE;
         }
         for (int j = 0; j < k && !rc; j++)
             if (same_file(&ids[1 + j], &ids[1 + k])) {
-                fprintf(stderr, "scaf %s: %s and %s name the same file (%s): give each output its own file\n",
+                fprintf(stderr,
+                        "scaf %s: %s and %s name the same file (%s): give each output its own "
+                        "file\n",
                         o->cmd, o->out[j].option, o->out[k].option, o->out[k].path);
                 rc = EXIT_USAGE;
             }
@@ -148,8 +156,8 @@ int cli_outputs_check(cli_outputs *o)
     return rc;
 }
 
-int cli_outputs_uv(cli_outputs *o, const char *mesh, const char *svg, const char *png, const char *report,
-                   cli_uv_outputs *k)
+int cli_outputs_uv(cli_outputs *o, const char *mesh, const char *svg, const char *png,
+                   const char *report, cli_uv_outputs *k)
 {
     k->mesh = cli_outputs_add(o, "-o", mesh, CLI_OUTPUT_MESH);
     k->svg = cli_outputs_add(o, "--svg", svg, CLI_OUTPUT_FILE);
@@ -170,7 +178,8 @@ static const char *stage_for_stdout(cli_output *c, scaf_error *err)
     int fd = mkstemp(a->tmp);
     if (fd < 0) {
         a->tmp[0] = '\0';
-        err_set(err, SCAF_ERR_IO, "standard output: cannot create a temporary file in %s", tmp && *tmp ? tmp : "/tmp");
+        err_set(err, SCAF_ERR_IO, "standard output: cannot create a temporary file in %s",
+                tmp && *tmp ? tmp : "/tmp");
         return NULL;
     }
     close(fd);
@@ -184,7 +193,8 @@ static const char *stage_for_stdout(cli_output *c, scaf_error *err)
 static scaf_status copy_to_stdout(atomic_file *staged, scaf_error *err)
 {
     FILE *in = fopen(staged->tmp, "rb");
-    if (!in) return err_set(err, SCAF_ERR_IO, "standard output: cannot read the temporary file back");
+    if (!in)
+        return err_set(err, SCAF_ERR_IO, "standard output: cannot read the temporary file back");
     remove(staged->tmp);
     staged->tmp[0] = '\0';
     char buf[1 << 16];
@@ -206,7 +216,8 @@ const char *cli_outputs_begin(cli_outputs *o, int k, scaf_error *err)
     c->written = 0;
     if (c->to_stdout) return stage_for_stdout(c, err);
     /* an empty temporary file beside the target: the writer replaces it */
-    if (atomic_open(&c->staged, c->path, err) != SCAF_OK || atomic_finish(&c->staged, err) != SCAF_OK) {
+    if (atomic_open(&c->staged, c->path, err) != SCAF_OK ||
+        atomic_finish(&c->staged, err) != SCAF_OK) {
         atomic_abort(&c->staged);
         return NULL;
     }
@@ -236,7 +247,8 @@ static void rename_in_message(scaf_error *err, const char *from, const char *to)
 static scaf_status gzip_into(const char *src, atomic_file *dst, scaf_error *err)
 {
     FILE *in = fopen(src, "rb");
-    if (!in) return err_set(err, SCAF_ERR_IO, "%s: cannot read the uncompressed file back", dst->name);
+    if (!in)
+        return err_set(err, SCAF_ERR_IO, "%s: cannot read the uncompressed file back", dst->name);
     int fd = dup(fileno(dst->f));
     gzFile z = fd >= 0 ? gzdopen(fd, "wb6") : NULL;
     int bad = !z;
@@ -249,7 +261,8 @@ static scaf_status gzip_into(const char *src, atomic_file *dst, scaf_error *err)
     fclose(in);
     if (z && gzclose(z) != Z_OK) bad = 1;
     scaf_status st = atomic_finish(dst, err); /* syncs what gzclose wrote through the shared file */
-    if (bad && st == SCAF_OK) st = err_set(err, SCAF_ERR_IO, "%s: gzip compression failed (disk full?)", dst->name);
+    if (bad && st == SCAF_OK)
+        st = err_set(err, SCAF_ERR_IO, "%s: gzip compression failed (disk full?)", dst->name);
     return st;
 }
 
@@ -257,7 +270,8 @@ int cli_outputs_end(cli_outputs *o, int k, scaf_status st, scaf_error *err)
 {
     if (k < 0) return EXIT_OK;
     cli_output *c = &o->out[k];
-    if (st == SCAF_OK && !c->staged.tmp[0]) st = SCAF_ERR_IO; /* begin failed: its message is in err */
+    if (st == SCAF_OK && !c->staged.tmp[0])
+        st = SCAF_ERR_IO; /* begin failed: its message is in err */
     if (st == SCAF_OK && c->gz) {
         atomic_file z;
         st = atomic_open(&z, c->path, err);
@@ -288,8 +302,8 @@ int cli_outputs_commit(cli_outputs *o)
     }
     for (int k = 0; k < o->n; k++)
         if (!o->out[k].written) {
-            fprintf(stderr, "scaf %s: internal error: %s %s was not written; nothing written\n", o->cmd,
-                    o->out[k].option, o->out[k].path);
+            fprintf(stderr, "scaf %s: internal error: %s %s was not written; nothing written\n",
+                    o->cmd, o->out[k].option, o->out[k].path);
             cli_outputs_abort(o);
             return EXIT_INTERNAL;
         }
@@ -308,7 +322,8 @@ int cli_outputs_commit(cli_outputs *o)
     }
     int rc = EXIT_OK;
     for (int k = 0; k < o->n; k++)
-        if (o->out[k].to_stdout && rc == EXIT_OK && copy_to_stdout(&o->out[k].staged, &err) != SCAF_OK) {
+        if (o->out[k].to_stdout && rc == EXIT_OK &&
+            copy_to_stdout(&o->out[k].staged, &err) != SCAF_OK) {
             fprintf(stderr, "scaf %s: %s\n", o->cmd, err.message);
             rc = EXIT_OUTPUT;
         }

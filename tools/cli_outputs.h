@@ -37,13 +37,13 @@
 #define CLI_OUTPUTS_MAX 8
 
 /* The paragraph of the commands' --help that says the above. */
-#define CLI_OUTPUTS_HELP                                                                   \
-    "\n"                                                                                   \
-    "Output files: -o ends in .obj, or .obj.gz for a gzip-compressed OBJ (any output\n"    \
-    "ending in .gz is compressed). Every output is checked before the work starts\n"     \
-    "and all are written together at the end, or none is: a directory, FIFO or\n"        \
-    "device, a missing or read-only folder, or two of the input and the outputs\n"       \
-    "naming the same file are refused. A symbolic link is written through (the\n"       \
+#define CLI_OUTPUTS_HELP                                                                           \
+    "\n"                                                                                           \
+    "Output files: -o ends in .obj, or .obj.gz for a gzip-compressed OBJ (any output\n"            \
+    "ending in .gz is compressed). Every output is checked before the work starts\n"               \
+    "and all are written together at the end, or none is: a directory, FIFO or\n"                  \
+    "device, a missing or read-only folder, or two of the input and the outputs\n"                 \
+    "naming the same file are refused. A symbolic link is written through (the\n"                  \
     "file it points to is replaced). \"-\" writes to the standard output.\n"
 
 typedef enum cli_output_kind {
@@ -52,18 +52,18 @@ typedef enum cli_output_kind {
 } cli_output_kind;
 
 typedef struct cli_output {
-    const char *option;   /* "-o", "--report", ... for messages */
-    const char *path;     /* as given */
+    const char *option; /* "-o", "--report", ... for messages */
+    const char *path;   /* as given */
     cli_output_kind kind;
-    int gz;               /* name ends in .gz: compress */
-    atomic_file staged;   /* the temporary file holding the result */
-    int written;          /* staged holds the whole result */
-    int to_stdout;        /* the path is "-" */
+    int gz;             /* name ends in .gz: compress */
+    atomic_file staged; /* the temporary file holding the result */
+    int written;        /* staged holds the whole result */
+    int to_stdout;      /* the path is "-" */
 } cli_output;
 
 typedef struct cli_outputs {
-    const char *cmd;      /* "param", ... for messages */
-    const char *input;    /* may be NULL */
+    const char *cmd;   /* "param", ... for messages */
+    const char *input; /* may be NULL */
     int n;
     cli_output out[CLI_OUTPUTS_MAX];
 } cli_outputs;
@@ -85,8 +85,8 @@ typedef struct cli_uv_outputs {
 
 /* Declare -o (the mesh), --svg, --png and --report (each may be NULL)
  * and check them all: 0, or the exit status after printing why. */
-int cli_outputs_uv(cli_outputs *o, const char *mesh, const char *svg, const char *png, const char *report,
-                   cli_uv_outputs *k);
+int cli_outputs_uv(cli_outputs *o, const char *mesh, const char *svg, const char *png,
+                   const char *report, cli_uv_outputs *k);
 
 /* The path output k's writer writes to (NULL after printing why; pass
  * its failure on to cli_outputs_end). */

@@ -36,8 +36,9 @@ int cli_png_option(const char *cmd, int argc, char **argv, int *i, cli_png *p)
             return -1;
         }
         if (!cli_parse_int(v, &n) || n < UV_PNG_MIN_SIZE || n > UV_PNG_MAX_SIZE) {
-            fprintf(stderr, "scaf %s: --png-size '%s': give a whole number of pixels from %d to %d\n", cmd, v,
-                    UV_PNG_MIN_SIZE, UV_PNG_MAX_SIZE);
+            fprintf(stderr,
+                    "scaf %s: --png-size '%s': give a whole number of pixels from %d to %d\n", cmd,
+                    v, UV_PNG_MIN_SIZE, UV_PNG_MAX_SIZE);
             return -1;
         }
         p->opt.size = n;
@@ -50,7 +51,9 @@ int cli_png_option(const char *cmd, int argc, char **argv, int *i, cli_png *p)
         p->opt.checker = CLI_PNG_DEFAULT_CHECKER;
         if (v && cli_parse_double(v, &n)) {
             if (!(n >= 1.0 && n <= 10000.0)) {
-                fprintf(stderr, "scaf %s: --checker %s: give from 1 to 10000 squares across the diagonal\n", cmd, v);
+                fprintf(stderr,
+                        "scaf %s: --checker %s: give from 1 to 10000 squares across the diagonal\n",
+                        cmd, v);
                 return -1;
             }
             p->opt.checker = n;

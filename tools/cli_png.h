@@ -10,8 +10,8 @@
 #define CLI_PNG_DEFAULT_CHECKER 20.0
 
 typedef struct cli_png {
-    const char *path;       /* --png FILE, or NULL */
-    uv_png_options opt;     /* size, checker (0 = none), outline */
+    const char *path;   /* --png FILE, or NULL */
+    uv_png_options opt; /* size, checker (0 = none), outline */
     int size_given;
 } cli_png;
 

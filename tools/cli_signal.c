@@ -46,7 +46,8 @@ int cli_signal_caught(void) { return caught; }
 int cli_signal_report(const char *cmd)
 {
     if (!caught) return 0;
-    fprintf(stderr, "scaf %s: interrupted by %s; nothing written\n", cmd, caught == SIGTERM ? "SIGTERM" : "SIGINT");
+    fprintf(stderr, "scaf %s: interrupted by %s; nothing written\n", cmd,
+            caught == SIGTERM ? "SIGTERM" : "SIGINT");
     return 1;
 }
 

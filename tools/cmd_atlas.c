@@ -69,8 +69,7 @@ static void usage(FILE *o)
             "  --compact-iterations N   cap of the compaction iterations (default 150;\n"
             "                           0 = no compaction)\n"
             "  --distortion-tolerance T stop compacting when E exceeds (1+T) times the settled\n"
-            "                           E (default 0.05); the last layout within it is kept\n"
-            );
+            "                           E (default 0.05); the last layout within it is kept\n");
     /* (two strings: C caps a string literal at 4095 characters) */
     fprintf(o,
             "  --box-scale S            scaffold box while settling (default 3)\n"
@@ -131,8 +130,8 @@ static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
     if (cli_signal_caught()) return 1; /* SIGINT / SIGTERM: stop after this iteration */
     if (s->live) {
         fprintf(stderr, "\rscaf atlas: %s %d  E = %.5f  efficiency %.3f  gap %.5f  %.3f s   ",
-                it->phase == ATLAS_COMPACT ? "compact" : "settle", it->info.iteration, it->info.energy, it->efficiency,
-                it->gap, it->info.seconds);
+                it->phase == ATLAS_COMPACT ? "compact" : "settle", it->info.iteration,
+                it->info.energy, it->efficiency, it->gap, it->info.seconds);
         fflush(stderr);
     }
     return 0;
@@ -224,7 +223,8 @@ static int atlas_main(int argc, char **argv)
 #undef BAD_VALUE
     }
     if (!in || !out) {
-        fprintf(stderr, "scaf atlas: %s (see --help)\n", !in ? "no input file" : "no output file: use -o OUT.obj");
+        fprintf(stderr, "scaf atlas: %s (see --help)\n",
+                !in ? "no input file" : "no output file: use -o OUT.obj");
         return EXIT_USAGE;
     }
     if (cli_png_finish("atlas", &png) < 0) return EXIT_USAGE;
@@ -246,9 +246,9 @@ static int atlas_main(int argc, char **argv)
     char msg[256];
     if (atlas_options_check(&opt, msg, sizeof msg) != SCAF_OK) {
         if (texels >= 0.0)
-            fprintf(stderr, "scaf atlas: %s (--padding-texels %g / --resolution %g)\n", msg, texels, resolution);
-        else
-            fprintf(stderr, "scaf atlas: %s\n", msg);
+            fprintf(stderr, "scaf atlas: %s (--padding-texels %g / --resolution %g)\n", msg, texels,
+                    resolution);
+        else fprintf(stderr, "scaf atlas: %s\n", msg);
         return EXIT_USAGE;
     }
     cli_threads_apply(threads);
@@ -283,8 +283,8 @@ static int atlas_main(int argc, char **argv)
     double setup = timer_now() - t_start;
     ps.live = !quiet && isatty(fileno(stderr));
     if (!quiet && !ps.live)
-        fprintf(stderr, "scaf atlas: %s: %d faces, %d chart(s)%s, padding %g\n", in, m.nf, a.ncharts,
-                a.split_uvs ? " (pinched vt split)" : "", opt.padding);
+        fprintf(stderr, "scaf atlas: %s: %d faces, %d chart(s)%s, padding %g\n", in, m.nf,
+                a.ncharts, a.split_uvs ? " (pinched vt split)" : "", opt.padding);
     if (cli_signal_report("atlas")) {
         rc = EXIT_CANCELLED;
         goto done;
@@ -319,12 +319,15 @@ static int atlas_main(int argc, char **argv)
     double gap = ao.gap, eff = ao.efficiency;
     mesh o = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
     const char *path = cli_outputs_begin(&outs, k.mesh, &err);
-    rc = cli_outputs_end(&outs, k.mesh, path ? cli_write_uv("atlas", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
+    rc = cli_outputs_end(&outs, k.mesh,
+                         path ? cli_write_uv("atlas", in, &rinfo, path, &o, &err) : SCAF_ERR_IO,
+                         &err);
     if (rc != EXIT_OK) goto done;
     if (svg) {
         char title[256];
-        snprintf(title, sizeof title, "%s: %d charts, packing efficiency %.3f, min gap %.4f, E = %.4f", in,
-                 a.ncharts, eff, gap, atlas_energy(&a));
+        snprintf(title, sizeof title,
+                 "%s: %d charts, packing efficiency %.3f, min gap %.4f, E = %.4f", in, a.ncharts,
+                 eff, gap, atlas_energy(&a));
         path = cli_outputs_begin(&outs, k.svg, &err);
         st = path ? atlas_svg_write(path, &a, UV, title, &err) : SCAF_ERR_IO;
         if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
@@ -335,7 +338,9 @@ static int atlas_main(int argc, char **argv)
         for (int f = 0; col && f < a.nf; f++) col[f] = atlas_chart_colour(a.chart[f]);
         if (st == SCAF_OK) {
             path = cli_outputs_begin(&outs, k.png, &err);
-            st = path ? uv_png_write(path, a.nw, UV, a.nf, a.Fw, col, m.nv, m.V, m.F, &png.opt, &err) : SCAF_ERR_IO;
+            st = path
+                ? uv_png_write(path, a.nw, UV, a.nf, a.Fw, col, m.nv, m.V, m.F, &png.opt, &err)
+                : SCAF_ERR_IO;
         }
         free(col);
         if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
@@ -352,11 +357,12 @@ static int atlas_main(int argc, char **argv)
         fprintf(stderr,
                 "scaf atlas: %d charts, %d+%d iterations, E %.5f, packing efficiency %.3f -> %.3f, "
                 "min chart gap %.5f, %.2f s\n",
-                a.ncharts, a.settle_done, a.compact_done, atlas_energy(&a), a.eff_before, eff, gap, total);
+                a.ncharts, a.settle_done, a.compact_done, atlas_energy(&a), a.eff_before, eff, gap,
+                total);
         scaf_stop_reason why = atlas_stop_reason(&a);
-        fprintf(stderr, "scaf atlas: stop reason: %s (%s; settle: %s, compact: %s)\n", scaf_stop_reason_name(why),
-                stop_reason_explained(why), scaf_stop_reason_name(a.settle_stop),
-                scaf_stop_reason_name(a.compact_stop));
+        fprintf(stderr, "scaf atlas: stop reason: %s (%s; settle: %s, compact: %s)\n",
+                scaf_stop_reason_name(why), stop_reason_explained(why),
+                scaf_stop_reason_name(a.settle_stop), scaf_stop_reason_name(a.compact_stop));
     }
 done:
     cli_outputs_abort(&outs);

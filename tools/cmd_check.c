@@ -68,12 +68,13 @@ static void print_json(const char *path, const bij_report *r, double gap, double
     printf(", \"triangles\": %d, \"positive\": %d, \"flipped\": %d, \"degenerate\": %d, "
            "\"charts\": %d, \"mirrored_charts\": %d, \"mixed_charts\": %d, "
            "\"boundary_edges\": %d, \"boundary_loops\": %d, \"boundary_crossings\": %lld, "
-           "\"boundary_touchings\": %lld, \"boundary_foldbacks\": %lld, \"folded_edges\": %d, \"nonmanifold_edges\": %d, "
+           "\"boundary_touchings\": %lld, \"boundary_foldbacks\": %lld, \"folded_edges\": %d, "
+           "\"nonmanifold_edges\": %d, "
            "\"nested_loops\": %d, \"corner_overlaps\": %d, \"bijective\": %s, ",
            r->triangles, r->positive, r->flipped, r->degenerate, r->charts, r->mirrored_charts,
            r->mixed_charts, r->boundary_edges, r->boundary_loops, r->boundary_crossings,
-           r->boundary_touchings, r->boundary_foldbacks, r->folded_edges, r->nonmanifold_edges, r->nested_loops,
-           r->corner_overlaps, r->bijective ? "true" : "false");
+           r->boundary_touchings, r->boundary_foldbacks, r->folded_edges, r->nonmanifold_edges,
+           r->nested_loops, r->corner_overlaps, r->bijective ? "true" : "false");
     printf("\"min_chart_gap\": ");
     json_write_number(stdout, gap);
     printf(", \"packing_efficiency\": ");
@@ -98,10 +99,8 @@ static void print_text(const char *path, const bij_report *r, double gap, double
     printf("  non-manifold edges   %d\n", r->nonmanifold_edges);
     printf("  nested loops         %d\n", r->nested_loops);
     printf("  corner overlaps      %d\n", r->corner_overlaps);
-    if (isfinite(gap))
-        printf("  min chart gap        %.6g\n", gap);
-    else
-        printf("  min chart gap        none (fewer than two charts)\n");
+    if (isfinite(gap)) printf("  min chart gap        %.6g\n", gap);
+    else printf("  min chart gap        none (fewer than two charts)\n");
     printf("  packing efficiency   %.4f\n", eff);
 }
 
@@ -153,8 +152,7 @@ int cmd_check(int argc, char **argv)
         if (info.faces_without_uv > 0)
             fprintf(stderr, "scaf check: %s: %d faces have no UV indices: no UV map to check\n",
                     path, info.faces_without_uv);
-        else
-            fprintf(stderr, "scaf check: %s: no UV coordinates (vt) to check\n", path);
+        else fprintf(stderr, "scaf check: %s: no UV coordinates (vt) to check\n", path);
         mesh_free(&m);
         return EXIT_MESH;
     }
@@ -168,9 +166,7 @@ int cmd_check(int argc, char **argv)
         fprintf(stderr, "scaf check: %s: %s\n", path, err.message);
         return exit_code_for(s);
     }
-    if (json)
-        print_json(path, &r, gap, eff);
-    else
-        print_text(path, &r, gap, eff);
+    if (json) print_json(path, &r, gap, eff);
+    else print_text(path, &r, gap, eff);
     return r.bijective ? EXIT_OK : EXIT_NOT_BIJECTIVE;
 }

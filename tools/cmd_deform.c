@@ -64,9 +64,7 @@ static void usage(FILE *o)
             "                         per-iteration history\n"
             "  --svg FILE             picture of the deformed mesh\n"
             "  --png FILE             the same as PNG\n"
-            "  -h, --help             this help\n"
-            CLI_OUTPUTS_HELP
-            "\n");
+            "  -h, --help             this help\n" CLI_OUTPUTS_HELP "\n");
     exit_codes_print(o);
 }
 
@@ -134,7 +132,9 @@ static int parse_args(int argc, char **argv, deform_args *o)
     }
     if (!o->in || !o->out || !o->targets) {
         fprintf(stderr, "scaf deform: %s (see --help)\n",
-                !o->in ? "missing input mesh" : !o->out ? "missing -o OUT.obj" : "missing --targets FILE");
+                !o->in        ? "missing input mesh"
+                    : !o->out ? "missing -o OUT.obj"
+                              : "missing --targets FILE");
         return EXIT_USAGE;
     }
     if (cli_png_finish("deform", &o->png) < 0) return EXIT_USAGE;
@@ -161,14 +161,16 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
 {
     progress_state *s = user;
     if (s->n < s->opt->iterations) {
-        step_record r = {info->iteration, info->energy, opt_handle_term_max_error(s->h, s->opt->current), info->step};
+        step_record r = {info->iteration, info->energy,
+                         opt_handle_term_max_error(s->h, s->opt->current), info->step};
         s->rec[s->n++] = r;
     }
     cli_signal_test_point(info->iteration);
     if (cli_signal_caught()) return 1;
     if (s->verify) {
         bij_report rep;
-        if (bij_check(s->nv, s->opt->current, s->nf, s->F, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective) {
+        if (bij_check(s->nv, s->opt->current, s->nf, s->F, NULL, NULL, &rep, NULL) != SCAF_OK ||
+            !rep.bijective) {
             s->not_bijective = info->iteration;
             return 1;
         }
@@ -176,8 +178,8 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
     return 0;
 }
 
-static scaf_status write_report(const char *path, const deform_args *a, int nh, const deform_result *r,
-                                const progress_state *s, scaf_error *err)
+static scaf_status write_report(const char *path, const deform_args *a, int nh,
+                                const deform_result *r, const progress_state *s, scaf_error *err)
 {
     FILE *f = fopen(path, "wb");
     if (!f) return err_set(err, SCAF_ERR_IO, "cannot write '%s'", path);
@@ -185,7 +187,8 @@ static scaf_status write_report(const char *path, const deform_args *a, int nh, 
     json_write_string(f, a->in);
     fputs(",\n  \"targets\": ", f);
     json_write_string(f, a->targets);
-    fprintf(f, ",\n  \"handles\": %d,\n  \"remesh\": %s,\n  \"energy\": ", nh, a->no_remesh ? "false" : "true");
+    fprintf(f, ",\n  \"handles\": %d,\n  \"remesh\": %s,\n  \"energy\": ", nh,
+            a->no_remesh ? "false" : "true");
     json_write_number(f, r->energy);
     fputs(",\n  \"max_handle_error\": ", f);
     json_write_number(f, r->max_handle_error);
@@ -221,8 +224,10 @@ static int planar_mesh(const mesh *m, const char *in, int *nv, double **P, const
     }
     for (int v = 0; v < m->nv; v++)
         if (m->V[3 * v + 2] != 0.0) {
-            fprintf(stderr, "scaf deform: %s: vertex %d has z = %g: give a planar mesh (z = 0) or one with vt\n", in,
-                    v + 1, m->V[3 * v + 2]);
+            fprintf(stderr,
+                    "scaf deform: %s: vertex %d has z = %g: give a planar mesh (z = 0) or one with "
+                    "vt\n",
+                    in, v + 1, m->V[3 * v + 2]);
             return EXIT_MESH;
         }
     *nv = m->nv;
@@ -267,8 +272,9 @@ static int deform_main(int argc, char **argv)
     if ((rc = planar_mesh(&m, a.in, &nv, &P, &F)) != EXIT_OK) goto done;
     for (int i = 0; i < t.n; i++)
         if (t.vertex[i] >= nv) {
-            fprintf(stderr, "scaf deform: %s: handle %d: vertex %d is not one of the mesh's %d (0-based)\n", a.targets,
-                    i + 1, t.vertex[i], nv);
+            fprintf(stderr,
+                    "scaf deform: %s: handle %d: vertex %d is not one of the mesh's %d (0-based)\n",
+                    a.targets, i + 1, t.vertex[i], nv);
             rc = EXIT_MESH;
             goto done;
         }
@@ -307,14 +313,15 @@ static int deform_main(int argc, char **argv)
         goto done;
     }
     if (ps.not_bijective) {
-        fprintf(stderr, "scaf deform: %s: BUG: not bijective after iteration %d (please report)\n", a.in,
-                ps.not_bijective);
+        fprintf(stderr, "scaf deform: %s: BUG: not bijective after iteration %d (please report)\n",
+                a.in, ps.not_bijective);
         rc = EXIT_INTERNAL;
         goto done;
     }
     if (!a.quiet) {
-        fprintf(stderr, "scaf deform: %d iterations, E %.6f, max handle error %.3g%s\n", r.iterations, r.energy,
-                r.max_handle_error, a.verify ? " (bijective after every iteration: verified)" : "");
+        fprintf(stderr, "scaf deform: %d iterations, E %.6f, max handle error %.3g%s\n",
+                r.iterations, r.energy, r.max_handle_error,
+                a.verify ? " (bijective after every iteration: verified)" : "");
         fprintf(stderr, "scaf deform: stop reason: %s (%s)\n", scaf_stop_reason_name(r.stop),
                 stop_reason_explained(r.stop));
     }
@@ -324,15 +331,17 @@ static int deform_main(int argc, char **argv)
         rc = EXIT_NOMEM;
         goto done;
     }
-    for (int v = 0; v < nv; v++) V3[3 * v] = X[2 * v], V3[3 * v + 1] = X[2 * v + 1], V3[3 * v + 2] = 0.0;
+    for (int v = 0; v < nv; v++)
+        V3[3 * v] = X[2 * v], V3[3 * v + 1] = X[2 * v + 1], V3[3 * v + 2] = 0.0;
     mesh out = {nv, V3, m.nf, (int *)F, nv, X, (int *)F};
     const char *path = cli_outputs_begin(&outs, k.mesh, &err);
-    if ((rc = cli_outputs_end(&outs, k.mesh, path ? mesh_write_obj(path, &out, &err) : SCAF_ERR_IO, &err)) != EXIT_OK)
+    if ((rc = cli_outputs_end(&outs, k.mesh, path ? mesh_write_obj(path, &out, &err) : SCAF_ERR_IO,
+                              &err)) != EXIT_OK)
         goto done;
     if (a.svg) {
         char title[256];
-        snprintf(title, sizeof title, "%s: max handle error %.3g after %d iterations", a.in, r.max_handle_error,
-                 r.iterations);
+        snprintf(title, sizeof title, "%s: max handle error %.3g after %d iterations", a.in,
+                 r.max_handle_error, r.iterations);
         path = cli_outputs_begin(&outs, k.svg, &err);
         st = path ? uv_svg_write(path, nv, X, m.nf, F, NULL, NULL, title, &err) : SCAF_ERR_IO;
         if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
@@ -343,7 +352,8 @@ static int deform_main(int argc, char **argv)
         if (st == SCAF_OK) {
             for (int f = 0; f < m.nf; f++) col[f] = uv_svg_colour(4.0);
             path = cli_outputs_begin(&outs, k.png, &err);
-            st = path ? uv_png_write(path, nv, X, m.nf, F, col, nv, V3, F, &a.png.opt, &err) : SCAF_ERR_IO;
+            st = path ? uv_png_write(path, nv, X, m.nf, F, col, nv, V3, F, &a.png.opt, &err)
+                      : SCAF_ERR_IO;
         }
         free(col);
         if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;

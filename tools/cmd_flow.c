@@ -34,7 +34,8 @@
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: scaf flow IN -o OUT.obj --steps N [--delta D] [--until-free] [--report R.json]\n"
+            "usage: scaf flow IN -o OUT.obj --steps N [--delta D] [--until-free] [--report "
+            "R.json]\n"
             "                 [--quiet]\n"
             "\n"
             "Conformalized mean curvature flow (Kazhdan, Solomon, Ben-Chen 2012) of the\n"
@@ -55,8 +56,7 @@ static void usage(FILE *out)
             "                     free, and per step its seconds (with --until-free its\n"
             "                     defects: intersecting face pairs + zero-area faces)\n"
             "  -q, --quiet        no per-step lines on stderr (step, seconds, and with\n"
-            "                     --until-free the intersecting face pairs)\n"
-            CLI_OUTPUTS_HELP
+            "                     --until-free the intersecting face pairs)\n" CLI_OUTPUTS_HELP
             "\n",
             FLOW_MAX_STEPS);
     exit_codes_print(out);
@@ -75,21 +75,23 @@ static int check_closed_manifold(const char *in, const mesh *m)
         return exit_code_for(st);
     }
     char why[256] = "";
-    if (t.faces == 0)
-        snprintf(why, sizeof why, "it has no face");
+    if (t.faces == 0) snprintf(why, sizeof why, "it has no face");
     else if (t.boundary_edges > 0)
-        snprintf(why, sizeof why, "the surface is open: %d boundary edges in %d loops", t.boundary_edges,
-                 t.boundary_loops);
+        snprintf(why, sizeof why, "the surface is open: %d boundary edges in %d loops",
+                 t.boundary_edges, t.boundary_loops);
     else if (!t.manifold)
-        snprintf(why, sizeof why, "the surface is not manifold: %d non-manifold edges, %d non-manifold vertices",
+        snprintf(why, sizeof why,
+                 "the surface is not manifold: %d non-manifold edges, %d non-manifold vertices",
                  t.non_manifold_edges, t.non_manifold_vertices);
     else if (t.degenerate_faces > 0)
-        snprintf(why, sizeof why, "%d faces have zero area (no cotangent weights)", t.degenerate_faces);
+        snprintf(why, sizeof why, "%d faces have zero area (no cotangent weights)",
+                 t.degenerate_faces);
     else if (t.unreferenced_vertices > 0)
         snprintf(why, sizeof why, "%d vertices belong to no face", t.unreferenced_vertices);
     mesh_topology_free(&t);
     if (!why[0]) return EXIT_OK;
-    fprintf(stderr, "scaf flow: %s: %s; the flow needs a closed manifold triangle surface\n", in, why);
+    fprintf(stderr, "scaf flow: %s: %s; the flow needs a closed manifold triangle surface\n", in,
+            why);
     return EXIT_MESH;
 }
 
@@ -108,22 +110,22 @@ static long long surface_defects(const mesh *m, char *what, size_t size, int *st
         return -1;
     }
     if (r.degenerate_faces > 0)
-        snprintf(what, size, "%lld intersecting face pairs, %d zero-area faces", r.pairs, r.degenerate_faces);
-    else
-        snprintf(what, size, "%lld intersecting face pairs", r.pairs);
+        snprintf(what, size, "%lld intersecting face pairs, %d zero-area faces", r.pairs,
+                 r.degenerate_faces);
+    else snprintf(what, size, "%lld intersecting face pairs", r.pairs);
     return r.pairs + r.degenerate_faces;
 }
 
 /* What the run did, for --report. */
 typedef struct flow_log {
-    int steps;           /* steps done */
-    double *seconds;     /* per step (steps entries; room for the maximum) */
-    long long *defects;  /* per step with --until-free: intersecting pairs + zero-area faces */
+    int steps;               /* steps done */
+    double *seconds;         /* per step (steps entries; room for the maximum) */
+    long long *defects;      /* per step with --until-free: intersecting pairs + zero-area faces */
     long long input_defects; /* -1 without --until-free */
 } flow_log;
 
-static scaf_status write_report(const char *path, const char *in, double delta, int until_free, const flow_log *g,
-                                scaf_error *err)
+static scaf_status write_report(const char *path, const char *in, double delta, int until_free,
+                                const flow_log *g, scaf_error *err)
 {
     atomic_file a;
     scaf_status st = atomic_open(&a, path, err);
@@ -133,7 +135,8 @@ static scaf_status write_report(const char *path, const char *in, double delta, 
     json_write_string(o, in);
     fputs(",\n  \"delta\": ", o);
     json_write_number(o, delta);
-    fprintf(o, ",\n  \"until_free\": %s,\n  \"steps\": %d", until_free ? "true" : "false", g->steps);
+    fprintf(o, ",\n  \"until_free\": %s,\n  \"steps\": %d", until_free ? "true" : "false",
+            g->steps);
     if (until_free)
         fprintf(o, ",\n  \"input_defects\": %lld,\n  \"intersection_free\": %s", g->input_defects,
                 (g->steps ? g->defects[g->steps - 1] : g->input_defects) == 0 ? "true" : "false");
@@ -166,7 +169,8 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet,
     char what[128] = "";
     if (until_free) {
         g->input_defects = defects = surface_defects(m, what, sizeof what, &rc);
-        if (defects == 0 && !quiet) fprintf(stderr, "scaf flow: the input is already free of self-intersections\n");
+        if (defects == 0 && !quiet)
+            fprintf(stderr, "scaf flow: the input is already free of self-intersections\n");
         else if (defects > 0 && !quiet) fprintf(stderr, "scaf flow: input: %s\n", what);
     }
     for (int s = 1; s <= steps && defects != 0 && rc == EXIT_OK; s++) {
@@ -185,8 +189,7 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet,
             if (until_free)
                 fprintf(stderr, "scaf flow: step %d: %.3f s, check %.3f s, %s\n", s, t_step,
                         timer_now() - t0 - t_step, what);
-            else
-                fprintf(stderr, "scaf flow: step %d: %.3f s\n", s, t_step);
+            else fprintf(stderr, "scaf flow: step %d: %.3f s\n", s, t_step);
         }
         cli_signal_test_point(s);
         if (cli_signal_caught()) break;
@@ -194,10 +197,13 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet,
     int done = f.steps;
     cmcf_free(&f);
     if (rc == EXIT_OK && until_free && defects == 0 && done > 0 && !quiet)
-        fprintf(stderr, "scaf flow: free of self-intersections after %d step%s\n", done, done > 1 ? "s" : "");
+        fprintf(stderr, "scaf flow: free of self-intersections after %d step%s\n", done,
+                done > 1 ? "s" : "");
     if (rc == EXIT_OK && until_free && defects != 0 && !cli_signal_caught()) {
-        fprintf(stderr, "scaf flow: the surface still intersects itself after %d steps (%s); nothing written\n", steps,
-                what);
+        fprintf(stderr,
+                "scaf flow: the surface still intersects itself after %d steps (%s); nothing "
+                "written\n",
+                steps, what);
         rc = EXIT_NUMERIC;
     }
     return rc;
@@ -243,7 +249,9 @@ static int flow_main(int argc, char **argv)
     }
     if (!in || !out || !steps) {
         fprintf(stderr, "scaf flow: %s (see --help)\n",
-                !in ? "missing the input surface" : !out ? "missing -o OUT.obj" : "missing --steps N");
+                !in        ? "missing the input surface"
+                    : !out ? "missing -o OUT.obj"
+                           : "missing --steps N");
         return EXIT_USAGE;
     }
     cli_outputs outs;
@@ -255,7 +263,8 @@ static int flow_main(int argc, char **argv)
     mesh m;
     mesh_read_info info;
     if ((rc = cli_read_mesh("flow", in, quiet, &m, &info)) != EXIT_OK) return rc;
-    flow_log g = {0, malloc(sizeof(double) * (size_t)steps), malloc(sizeof(long long) * (size_t)steps), -1};
+    flow_log g = {0, malloc(sizeof(double) * (size_t)steps),
+                  malloc(sizeof(long long) * (size_t)steps), -1};
     if (!g.seconds || !g.defects) {
         fprintf(stderr, "scaf flow: out of memory\n");
         rc = EXIT_NOMEM;
@@ -270,8 +279,9 @@ static int flow_main(int argc, char **argv)
         rc = cli_outputs_end(&outs, k, path ? mesh_write_obj(path, &m, &err) : SCAF_ERR_IO, &err);
         if (rc == EXIT_OK && kr >= 0) {
             path = cli_outputs_begin(&outs, kr, &err);
-            rc = cli_outputs_end(&outs, kr, path ? write_report(path, in, delta, until_free, &g, &err) : SCAF_ERR_IO,
-                                 &err);
+            rc = cli_outputs_end(
+                &outs, kr, path ? write_report(path, in, delta, until_free, &g, &err) : SCAF_ERR_IO,
+                &err);
         }
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }

@@ -28,7 +28,8 @@ static void list_samples(FILE *out)
         const mesh_sample_info *s = mesh_sample_get(i);
         char range[32];
         snprintf(range, sizeof range, "%d..%d", s->min_size, s->max_size);
-        fprintf(out, "%-12s %-9s %s (default size %d)\n", s->name, range, s->summary, s->default_size);
+        fprintf(out, "%-12s %-9s %s (default size %d)\n", s->name, range, s->summary,
+                s->default_size);
     }
 }
 
@@ -51,8 +52,9 @@ static void usage(FILE *out)
             "\n"
             "samples:\n");
     list_samples(out);
-    fprintf(out, "\nExit status: 0 written, 2 usage, 5 output not written, 7 out of memory,\n"
-                 "8 interrupted (nothing written).\n");
+    fprintf(out,
+            "\nExit status: 0 written, 2 usage, 5 output not written, 7 out of memory,\n"
+            "8 interrupted (nothing written).\n");
 }
 
 /* Strict decimal int in [1, INT_MAX]; -1 if not one. */
@@ -77,7 +79,8 @@ static int gen_main(int argc, char **argv)
         } else if (!strcmp(a, "--list") || !strcmp(a, "-l")) {
             list_samples(stdout);
             return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "-s") || !strcmp(a, "--size")) {
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "-s") ||
+                   !strcmp(a, "--size")) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "scaf gen: option '%s' needs a value\n", a);
                 return EXIT_USAGE;
@@ -112,9 +115,12 @@ static int gen_main(int argc, char **argv)
     char targets[4096] = "";
     if (!strcmp(name, "spiral")) {
         size_t len = strlen(out);
-        size_t stem = len >= 7 && !strcmp(out + len - 7, ".obj.gz") ? len - 7 : len >= 4 && !strcmp(out + len - 4, ".obj") ? len - 4 : len;
+        size_t stem = len >= 7 && !strcmp(out + len - 7, ".obj.gz") ? len - 7
+            : len >= 4 && !strcmp(out + len - 4, ".obj")            ? len - 4
+                                                                    : len;
         if (!strcmp(out, "-") || stem + 14 > sizeof targets) {
-            fprintf(stderr, "scaf gen: spiral writes its targets beside -o FILE: give a file name\n");
+            fprintf(stderr,
+                    "scaf gen: spiral writes its targets beside -o FILE: give a file name\n");
             return EXIT_USAGE;
         }
         memcpy(targets, out, stem);
@@ -143,12 +149,13 @@ static int gen_main(int argc, char **argv)
         path = cli_outputs_begin(&outs, kt, &err);
         if (T) {
             for (int f = 0; f < nfr; f++)
-                spiral_strip_curl(nseg, (f + 1.0) / SPIRAL_STRIP_FRAMES, T + 2 * (size_t)m.nv * (size_t)(f + 1));
+                spiral_strip_curl(nseg, (f + 1.0) / SPIRAL_STRIP_FRAMES,
+                                  T + 2 * (size_t)m.nv * (size_t)(f + 1));
             spiral_strip_curl(nseg, 1.0, T);
         }
-        st = !T ? err_nomem(&err, "spiral targets")
-             : path ? deform_targets_write(path, m.nv, T, nfr, T + 2 * (size_t)m.nv, &err)
-                    : SCAF_ERR_IO;
+        st = !T    ? err_nomem(&err, "spiral targets")
+            : path ? deform_targets_write(path, m.nv, T, nfr, T + 2 * (size_t)m.nv, &err)
+                   : SCAF_ERR_IO;
         free(T);
         rc = cli_outputs_end(&outs, kt, st, &err);
     }

@@ -113,7 +113,8 @@ static void print_json(FILE *out, const char *path, const mesh_read_info *ri, co
     int first = 1;
     for (int k = 0; k <= MESH_CHART_NON_ORIENTABLE; k++) {
         if (!kinds[k]) continue;
-        fprintf(out, "%s\"%s\": %d", first ? "" : ", ", mesh_chart_kind_name((mesh_chart_kind)k), kinds[k]);
+        fprintf(out, "%s\"%s\": %d", first ? "" : ", ", mesh_chart_kind_name((mesh_chart_kind)k),
+                kinds[k]);
         first = 0;
     }
     fputs("},\n  \"genus_per_component\": [", out);
@@ -127,8 +128,8 @@ static void print_json(FILE *out, const char *path, const mesh_read_info *ri, co
         fprintf(out,
                 "%s\n    {\"faces\": %d, \"vertices\": %d, \"edges\": %d, \"boundary_loops\": %d, "
                 "\"euler_characteristic\": %d, \"genus\": ",
-                c ? "," : "", cx->group_face_start[c + 1] - cx->group_face_start[c], cx->group_vertices[c],
-                cx->group_edges[c], cx->group_loops[c], cx->group_euler[c]);
+                c ? "," : "", cx->group_face_start[c + 1] - cx->group_face_start[c],
+                cx->group_vertices[c], cx->group_edges[c], cx->group_loops[c], cx->group_euler[c]);
         json_genus(out, cx->group_genus[c]);
         fprintf(out, ", \"manifold\": %s, \"orientable\": %s, \"misoriented_edges\": %d}",
                 !cx->group_nm_edges[c] && !cx->group_nm_vertices[c] ? "true" : "false",
@@ -142,16 +143,20 @@ static void print_text(FILE *out, const char *path, const mesh_read_info *ri, co
 {
     const tri_complex *cx = &t->cx;
     fprintf(out, "file            %s (%s)\n", path, format_name(ri->format));
-    fprintf(out, "vertices        %d referenced (%d in file, %d unreferenced)\n", t->vertices, m->nv,
-            t->unreferenced_vertices);
+    fprintf(out, "vertices        %d referenced (%d in file, %d unreferenced)\n", t->vertices,
+            m->nv, t->unreferenced_vertices);
     fprintf(out, "faces           %d", t->faces);
-    if (ri->polygons_triangulated) fprintf(out, " (%d polygons fan-triangulated)", ri->polygons_triangulated);
+    if (ri->polygons_triangulated)
+        fprintf(out, " (%d polygons fan-triangulated)", ri->polygons_triangulated);
     fprintf(out, "\nedges           %d (%d on the boundary)\n", t->edges, t->boundary_edges);
     fprintf(out, "components      %d\n", t->components);
     fprintf(out, "boundary loops  %d (%d simple cycles)\n", t->boundary_loops, ordered_loops(cx));
     fprintf(out, "euler char.     %d\n", t->euler_characteristic);
-    if (t->genus_sum >= 0) fprintf(out, "genus           %d%s\n", t->genus_sum, t->components > 1 ? " (sum over components)" : "");
-    else fprintf(out, "genus           undefined (a component is non-manifold or non-orientable)\n");
+    if (t->genus_sum >= 0)
+        fprintf(out, "genus           %d%s\n", t->genus_sum,
+                t->components > 1 ? " (sum over components)" : "");
+    else
+        fprintf(out, "genus           undefined (a component is non-manifold or non-orientable)\n");
     fprintf(out, "manifold        %s (%d non-manifold edges, %d non-manifold vertices)\n",
             t->manifold ? "yes" : "no", t->non_manifold_edges, t->non_manifold_vertices);
     fprintf(out, "orientation     %s (%d misoriented edges)%s\n",
@@ -160,9 +165,9 @@ static void print_text(FILE *out, const char *path, const mesh_read_info *ri, co
     fprintf(out, "degenerate      %d faces (%d with a repeated vertex), %d duplicate faces\n",
             t->degenerate_faces, t->repeated_index_faces, t->duplicate_faces);
     if (t->has_uv)
-        fprintf(out, "uv              %d vt, %d charts, %d seam edges\n", m->nuv, t->uv_charts, t->seam_edges);
-    else
-        fprintf(out, "uv              none (%d charts = components)\n", t->uv_charts);
+        fprintf(out, "uv              %d vt, %d charts, %d seam edges\n", m->nuv, t->uv_charts,
+                t->seam_edges);
+    else fprintf(out, "uv              none (%d charts = components)\n", t->uv_charts);
     int kinds[MESH_CHART_NON_ORIENTABLE + 1] = {0};
     for (int c = 0; c < ch->ncharts; c++) kinds[mesh_chart_classify(ch, c)]++;
     fprintf(out, "chart kinds    ");
@@ -171,17 +176,19 @@ static void print_text(FILE *out, const char *path, const mesh_read_info *ri, co
     fputc('\n', out);
     if (t->components > 1) {
         int listed = t->components < INFO_MAX_LISTED ? t->components : INFO_MAX_LISTED;
-        fprintf(out, "\n%9s %9s %9s %6s %6s %6s  %s\n", "component", "faces", "vertices", "loops", "chi", "genus",
-                "manifold");
+        fprintf(out, "\n%9s %9s %9s %6s %6s %6s  %s\n", "component", "faces", "vertices", "loops",
+                "chi", "genus", "manifold");
         for (int c = 0; c < listed; c++) {
             char g[16];
             if (cx->group_genus[c] >= 0) snprintf(g, sizeof g, "%d", cx->group_genus[c]);
             else snprintf(g, sizeof g, "-");
-            fprintf(out, "%9d %9d %9d %6d %6d %6s  %s\n", c, cx->group_face_start[c + 1] - cx->group_face_start[c],
-                    cx->group_vertices[c], cx->group_loops[c], cx->group_euler[c], g,
+            fprintf(out, "%9d %9d %9d %6d %6d %6s  %s\n", c,
+                    cx->group_face_start[c + 1] - cx->group_face_start[c], cx->group_vertices[c],
+                    cx->group_loops[c], cx->group_euler[c], g,
                     !cx->group_nm_edges[c] && !cx->group_nm_vertices[c] ? "yes" : "no");
         }
-        if (listed < t->components) fprintf(out, "(%d more components not listed)\n", t->components - listed);
+        if (listed < t->components)
+            fprintf(out, "(%d more components not listed)\n", t->components - listed);
     }
 }
 

@@ -97,8 +97,8 @@ static void usage(FILE *o)
 
 typedef struct progress_state {
     const scaf_param_t *p;
-    int verify;         /* check bijectivity after every iteration */
-    int not_bijective;  /* iteration at which the check failed, 0 if none */
+    int verify;        /* check bijectivity after every iteration */
+    int not_bijective; /* iteration at which the check failed, 0 if none */
     int live;
     int cap;
     scaf_iteration_info_t *it;
@@ -126,14 +126,15 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
         param_map pm;
         param_working_map(s->p, &pm);
         bij_report rep;
-        if (bij_check(pm.nuv, pm.uv, pm.nf, pm.FT, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective) {
+        if (bij_check(pm.nuv, pm.uv, pm.nf, pm.FT, NULL, NULL, &rep, NULL) != SCAF_OK ||
+            !rep.bijective) {
             s->not_bijective = info->iteration;
             return 1;
         }
     }
     if (s->live) {
-        fprintf(stderr, "\rscaf param: iteration %d/%d  E = %.6f  step %.3g  %.3f s/it   ", info->iteration, s->cap,
-                info->energy, info->step, info->seconds);
+        fprintf(stderr, "\rscaf param: iteration %d/%d  E = %.6f  step %.3g  %.3f s/it   ",
+                info->iteration, s->cap, info->energy, info->step, info->seconds);
         fflush(stderr);
     }
     return 0;
@@ -185,9 +186,11 @@ static int parse_args(int argc, char **argv, param_args *o)
             else BAD_VALUE();
         } else if (!strcmp(a, "--energy")) {
             NEED_VALUE();
-            if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd")) o->opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
+            if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd"))
+                o->opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
             else if (!strcmp(v, "arap")) o->opt.energy = SCAF_ENERGY_ARAP;
-            else if (!strcmp(v, "conformal") || !strcmp(v, "mips")) o->opt.energy = SCAF_ENERGY_CONFORMAL;
+            else if (!strcmp(v, "conformal") || !strcmp(v, "mips"))
+                o->opt.energy = SCAF_ENERGY_CONFORMAL;
             else BAD_VALUE();
         } else if (!strcmp(a, "--init")) {
             NEED_VALUE();
@@ -233,7 +236,8 @@ static int parse_args(int argc, char **argv, param_args *o)
 #undef BAD_VALUE
     }
     if (!o->in || !o->out) {
-        fprintf(stderr, "scaf param: %s (see --help)\n", !o->in ? "no input file" : "no output file: use -o OUT.obj");
+        fprintf(stderr, "scaf param: %s (see --help)\n",
+                !o->in ? "no input file" : "no output file: use -o OUT.obj");
         return EXIT_USAGE;
     }
     if (cli_png_finish("param", &o->png) < 0) return EXIT_USAGE;
@@ -263,9 +267,10 @@ static int param_main(int argc, char **argv)
     if (out_rc != EXIT_OK) return out_rc;
 
     if (opt.energy == SCAF_ENERGY_ARAP && !quiet)
-        fprintf(stderr, "scaf param: warning: ARAP is not a barrier energy: triangles pushed towards "
-                        "inversion are only held by the line search and may become very thin "
-                        "(symmetric-dirichlet is the default for that reason)\n");
+        fprintf(stderr,
+                "scaf param: warning: ARAP is not a barrier energy: triangles pushed towards "
+                "inversion are only held by the line search and may become very thin "
+                "(symmetric-dirichlet is the default for that reason)\n");
     double t_start = timer_now();
     mesh m;
     scaf_error err;
@@ -287,8 +292,9 @@ static int param_main(int argc, char **argv)
         mesh_free(&m);
         return EXIT_NOMEM;
     }
-    scaf_status st = mesh_has_uv(&m) ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
-                                     : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
+    scaf_status st = mesh_has_uv(&m)
+        ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
+        : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf param: %s: %s\n", in, scaf_param_error(p));
         rc = st == SCAF_ERR_USAGE ? EXIT_MESH : exit_code_for(st);
@@ -301,7 +307,8 @@ static int param_main(int argc, char **argv)
     ps.live = !quiet && isatty(fileno(stderr));
     ps.cap = opt.max_iterations;
     if (!quiet && !ps.live)
-        fprintf(stderr, "scaf param: %s: %d faces, %d chart(s), initial E = %.6f\n", in, m.nf, scaf_param_chart_count(p), e0);
+        fprintf(stderr, "scaf param: %s: %d faces, %d chart(s), initial E = %.6f\n", in, m.nf,
+                scaf_param_chart_count(p), e0);
     if (cli_signal_report("param")) {
         rc = EXIT_CANCELLED;
         goto done;
@@ -313,8 +320,10 @@ static int param_main(int argc, char **argv)
         goto done;
     }
     if (ps.not_bijective) {
-        fprintf(stderr, "scaf param: %s: BUG: the map is not bijective after iteration %d (please report)\n", in,
-                ps.not_bijective);
+        fprintf(stderr,
+                "scaf param: %s: BUG: the map is not bijective after iteration %d (please "
+                "report)\n",
+                in, ps.not_bijective);
         rc = EXIT_INTERNAL;
         goto done;
     }
@@ -325,10 +334,12 @@ static int param_main(int argc, char **argv)
     }
     double e1 = scaf_param_energy(p);
     if (!quiet) {
-        fprintf(stderr, "scaf param: %d iterations, E %.6f -> %.6f, %.3f s%s\n", scaf_param_iterations(p), e0, e1,
-                timer_now() - t_start, verify ? " (bijective after every iteration: verified)" : "");
+        fprintf(stderr, "scaf param: %d iterations, E %.6f -> %.6f, %.3f s%s\n",
+                scaf_param_iterations(p), e0, e1, timer_now() - t_start,
+                verify ? " (bijective after every iteration: verified)" : "");
         scaf_stop_reason why = scaf_param_stop_reason(p);
-        fprintf(stderr, "scaf param: stop reason: %s (%s)\n", scaf_stop_reason_name(why), stop_reason_explained(why));
+        fprintf(stderr, "scaf param: stop reason: %s (%s)\n", scaf_stop_reason_name(why),
+                stop_reason_explained(why));
     }
 
     int nuv = scaf_param_uv_count(p);
@@ -346,7 +357,9 @@ static int param_main(int argc, char **argv)
     }
     mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
     const char *path = cli_outputs_begin(&outs, k.mesh, &err);
-    rc = cli_outputs_end(&outs, k.mesh, path ? cli_write_uv("param", in, &rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
+    rc = cli_outputs_end(&outs, k.mesh,
+                         path ? cli_write_uv("param", in, &rinfo, path, &o, &err) : SCAF_ERR_IO,
+                         &err);
     if (rc != EXIT_OK) goto done;
     if (svg) {
         param_map pm;
@@ -362,10 +375,13 @@ static int param_main(int argc, char **argv)
             ss.extra = sv.extra;
         }
         char title[256];
-        snprintf(title, sizeof title, "%s: E = %.5f after %d iterations (4 = isometry)", in, e1, scaf_param_iterations(p));
+        snprintf(title, sizeof title, "%s: E = %.5f after %d iterations (4 = isometry)", in, e1,
+                 scaf_param_iterations(p));
         /* Working vertex ids are the UV ids: draw with the loop's faces. */
         path = cli_outputs_begin(&outs, k.svg, &err);
-        st = path ? uv_svg_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, E, ss.ntri ? &ss : NULL, title, &err) : SCAF_ERR_IO;
+        st = path
+            ? uv_svg_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, E, ss.ntri ? &ss : NULL, title, &err)
+            : SCAF_ERR_IO;
         free(E);
         if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
     }
@@ -380,7 +396,8 @@ static int param_main(int argc, char **argv)
             param_face_energy(p, E);
             for (int f = 0; f < pm.nf; f++) col[f] = uv_svg_colour(E[f]);
             path = cli_outputs_begin(&outs, k.png, &err);
-            st = path ? uv_png_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, col, m.nv, m.V, m.F, &png.opt, &err)
+            st = path ? uv_png_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, col, m.nv, m.V, m.F,
+                                     &png.opt, &err)
                       : SCAF_ERR_IO;
         }
         free(E);
@@ -388,8 +405,19 @@ static int param_main(int argc, char **argv)
         if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
     }
     if (report) {
-        param_report r = {in, out, &opt, m.nv, m.nf, scaf_param_chart_count(p), setup, e0, e1, "ok",
-                          scaf_param_stop_reason(p), ps.n, ps.it};
+        param_report r = {in,
+                          out,
+                          &opt,
+                          m.nv,
+                          m.nf,
+                          scaf_param_chart_count(p),
+                          setup,
+                          e0,
+                          e1,
+                          "ok",
+                          scaf_param_stop_reason(p),
+                          ps.n,
+                          ps.it};
         path = cli_outputs_begin(&outs, k.report, &err);
         st = path ? param_report_write(path, &r, &err) : SCAF_ERR_IO;
         if ((rc = cli_outputs_end(&outs, k.report, st, &err)) != EXIT_OK) goto done;

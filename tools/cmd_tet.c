@@ -99,8 +99,9 @@ int cmd_tet(int argc, char **argv)
     for (int t = 0; t < tm.nt; t++) label[t] = tm.inside[t] ? 1 : 2;
     s = tet_medit_write(out, tm.nv, tm.V, tm.nt, tm.T, label, &err);
     if (s == SCAF_OK && !quiet)
-        fprintf(stderr, "scaf tet: %d vertices (%d surface, %d box, %d added), %d tets (%d inside)\n", tm.nv,
-                tm.nsurface, tm.nbox, tm.nv - tm.nsurface - tm.nbox, tm.nt, tm.ninside);
+        fprintf(stderr,
+                "scaf tet: %d vertices (%d surface, %d box, %d added), %d tets (%d inside)\n",
+                tm.nv, tm.nsurface, tm.nbox, tm.nv - tm.nsurface - tm.nbox, tm.nt, tm.ninside);
     free(label);
     tet_box_mesh_free(&tm);
     if (s != SCAF_OK) {

@@ -4,8 +4,8 @@
 
 typedef struct command {
     const char *name;
-    const char *summary;  /* one line for `scaf --help` */
-    int (*run)(int argc, char **argv);  /* argv[0] is the command name */
+    const char *summary;               /* one line for `scaf --help` */
+    int (*run)(int argc, char **argv); /* argv[0] is the command name */
 } command;
 
 /* The table, terminated by a {NULL} entry (tools/main.c). */

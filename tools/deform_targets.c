@@ -13,8 +13,8 @@ typedef struct reader {
     const char *s, *path;
     int line;
     int cap;
-    double *paths;   /* cap by path_len by 2, handle-major */
-    int path_len;    /* -1 until the first handle */
+    double *paths; /* cap by path_len by 2, handle-major */
+    int path_len;  /* -1 until the first handle */
     deform_targets *t;
     scaf_error *err;
 } reader;
@@ -59,12 +59,15 @@ static scaf_status number(reader *r, double *v, const char *what)
     skip_ws(r);
     const char *p = r->s;
     if (*p == '-') p++;
-    if (!isdigit((unsigned char)*p)) return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s: expected a number", r->path, r->line, what);
+    if (!isdigit((unsigned char)*p))
+        return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s: expected a number", r->path, r->line,
+                       what);
     char *end;
     errno = 0;
     *v = strtod(r->s, &end);
     if (errno == ERANGE || !isfinite(*v))
-        return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s: number out of range", r->path, r->line, what);
+        return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s: number out of range", r->path, r->line,
+                       what);
     r->s = end;
     return SCAF_OK;
 }
@@ -77,10 +80,12 @@ static scaf_status read_path(reader *r, int *len)
     if (eat(r, ']')) return SCAF_OK;
     do {
         if (r->path_len >= 0 && *len >= r->path_len)
-            return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: handle %d has a longer path than the first handle (%d points)",
+            return err_set(r->err, SCAF_ERR_PARSE,
+                           "%s:%d: handle %d has a longer path than the first handle (%d points)",
                            r->path, r->line, r->t->n + 1, r->path_len);
         if (r->path_len < 0) { /* the first handle: grow as we go */
-            double *pp = realloc(r->paths, sizeof(double) * 2 * ((size_t)*len + 1) * (size_t)r->cap);
+            double *pp =
+                realloc(r->paths, sizeof(double) * 2 * ((size_t)*len + 1) * (size_t)r->cap);
             if (!pp) return err_nomem(r->err, "handle paths");
             r->paths = pp;
         }
@@ -107,12 +112,15 @@ static scaf_status handle(reader *r)
         if (v) t->vertex = v;
         double *x = realloc(t->target, sizeof(double) * 2 * (size_t)cap);
         if (x) t->target = x;
-        double *pp = r->path_len > 0 ? realloc(r->paths, sizeof(double) * 2 * (size_t)r->path_len * (size_t)cap) : r->paths;
+        double *pp = r->path_len > 0
+            ? realloc(r->paths, sizeof(double) * 2 * (size_t)r->path_len * (size_t)cap)
+            : r->paths;
         if (pp) r->paths = pp;
         if (!v || !x || (r->path_len > 0 && !pp)) return err_nomem(r->err, "handles");
         r->cap = cap;
     }
-    if (!eat(r, '{')) return fail(r, "a handle must be an object {\"vertex\": i, \"target\": [x, y]}");
+    if (!eat(r, '{'))
+        return fail(r, "a handle must be an object {\"vertex\": i, \"target\": [x, y]}");
     int seen_v = 0, seen_t = 0, len = 0;
     char k[32];
     do {
@@ -121,7 +129,8 @@ static scaf_status handle(reader *r)
         if (!strcmp(k, "vertex") && !seen_v) {
             double v;
             if ((st = number(r, &v, "\"vertex\""))) return st;
-            if (v != floor(v) || v < 0 || v > 2147483647.0) return fail(r, "\"vertex\" must be an integer >= 0");
+            if (v != floor(v) || v < 0 || v > 2147483647.0)
+                return fail(r, "\"vertex\" must be an integer >= 0");
             t->vertex[t->n] = (int)v;
             seen_v = 1;
         } else if (!strcmp(k, "target") && !seen_t) {
@@ -134,15 +143,17 @@ static scaf_status handle(reader *r)
         } else if (!strcmp(k, "path") && len == 0) {
             if ((st = read_path(r, &len))) return st;
         } else {
-            return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: unknown or repeated key \"%s\" in a handle", r->path,
-                           r->line, k);
+            return err_set(r->err, SCAF_ERR_PARSE,
+                           "%s:%d: unknown or repeated key \"%s\" in a handle", r->path, r->line,
+                           k);
         }
     } while (eat(r, ','));
     if (!eat(r, '}')) return fail(r, "expected ',' or '}' in a handle");
     if (!seen_v || !seen_t) return fail(r, "a handle needs both \"vertex\" and \"target\"");
     if (r->path_len < 0) r->path_len = len;
     if (len != r->path_len)
-        return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: handle %d has a path of %d points, the first handle %d", r->path,
+        return err_set(r->err, SCAF_ERR_PARSE,
+                       "%s:%d: handle %d has a path of %d points, the first handle %d", r->path,
                        r->line, t->n + 1, len, r->path_len);
     t->n++;
     return SCAF_OK;
@@ -170,7 +181,8 @@ static scaf_status document(reader *r)
             if (r->t->weight < 0) return fail(r, "\"weight\" must be >= 0");
             r->t->has_weight = 1;
         } else {
-            return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: unknown or repeated key \"%s\"", r->path, r->line, k);
+            return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: unknown or repeated key \"%s\"", r->path,
+                           r->line, k);
         }
     } while (eat(r, ','));
     if (!eat(r, '}')) return fail(r, "expected ',' or '}'");
@@ -216,7 +228,8 @@ scaf_status deform_targets_read(const char *path, deform_targets *t, scaf_error 
         for (int i = 0; st == SCAF_OK && i < t->n; i++)
             for (int k = 0; k < r.path_len; k++)
                 for (int a = 0; a < 2; a++)
-                    t->frames[2 * ((size_t)k * t->n + i) + a] = r.paths[2 * ((size_t)i * r.path_len + k) + a];
+                    t->frames[2 * ((size_t)k * t->n + i) + a] =
+                        r.paths[2 * ((size_t)i * r.path_len + k) + a];
         t->nframes = r.path_len;
     }
     free(r.paths);
@@ -224,8 +237,8 @@ scaf_status deform_targets_read(const char *path, deform_targets *t, scaf_error 
     return st;
 }
 
-scaf_status deform_targets_write(const char *path, int n, const double *T, int nframes, const double *frames,
-                                 scaf_error *err)
+scaf_status deform_targets_write(const char *path, int n, const double *T, int nframes,
+                                 const double *frames, scaf_error *err)
 {
     FILE *f = fopen(path, "wb");
     if (!f) return err_set(err, SCAF_ERR_IO, "cannot write '%s': %s", path, strerror(errno));

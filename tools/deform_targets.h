@@ -21,10 +21,10 @@
 
 typedef struct deform_targets {
     int n;
-    int *vertex;     /* n */
-    double *target;  /* n by 2 */
-    int nframes;     /* waypoints per handle (0: none) */
-    double *frames;  /* nframes by n by 2: frame f of handle i at (f n + i) 2 */
+    int *vertex;    /* n */
+    double *target; /* n by 2 */
+    int nframes;    /* waypoints per handle (0: none) */
+    double *frames; /* nframes by n by 2: frame f of handle i at (f n + i) 2 */
     int has_weight;
     double weight;
 } deform_targets;
@@ -35,8 +35,8 @@ scaf_status deform_targets_read(const char *path, deform_targets *t, scaf_error 
 
 /* Write n handles (vertex i -> T[2i..2i+1] for i < n), each with the
  * path of nframes waypoints (frames as in deform_targets; NULL when 0). */
-scaf_status deform_targets_write(const char *path, int n, const double *T, int nframes, const double *frames,
-                                 scaf_error *err);
+scaf_status deform_targets_write(const char *path, int n, const double *T, int nframes,
+                                 const double *frames, scaf_error *err);
 
 void deform_targets_free(deform_targets *t);
 

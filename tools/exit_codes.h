@@ -33,12 +33,14 @@ static inline const exit_code_meaning *exit_code_meanings(int *count)
 {
     static const exit_code_meaning table[] = {
         {EXIT_OK, "success (`scaf check`: the map is bijective)"},
-        {EXIT_NOT_BIJECTIVE, "`scaf check`: the map is not bijective (a 3D surface intersects itself,\n"
-                             "a tet mesh has a tet that is not positive)"},
+        {EXIT_NOT_BIJECTIVE,
+         "`scaf check`: the map is not bijective (a 3D surface intersects itself,\n"
+         "a tet mesh has a tet that is not positive)"},
         {EXIT_USAGE, "bad command line (unknown option, value out of range, missing file)"},
         {EXIT_INPUT, "input file missing, unreadable or malformed"},
-        {EXIT_MESH, "input readable but invalid for the command (a chart that is not a disk,\n"
-                    "a degenerate face, input UVs not bijective with --init input; check: no UVs)"},
+        {EXIT_MESH,
+         "input readable but invalid for the command (a chart that is not a disk,\n"
+         "a degenerate face, input UVs not bijective with --init input; check: no UVs)"},
         {EXIT_OUTPUT, "output could not be written (nothing partial is left behind)"},
         {EXIT_NUMERIC, "numerical failure"},
         {EXIT_NOMEM, "out of memory"},

@@ -22,16 +22,22 @@ int cmd_deform(int argc, char **argv);
 int cmd_flow(int argc, char **argv);
 
 const command scaf_commands[] = {
-    {"check", "verify a UV map is bijective, a surface free of self-intersections, tets positive (exact)", cmd_check},
+    {"check",
+     "verify a UV map is bijective, a surface free of self-intersections, tets positive (exact)",
+     cmd_check},
     {"gen", "write a built-in sample mesh (hemisphere, holes, cubesphere, ...)", cmd_gen},
     {"info", "print the topology of a mesh (components, loops, genus, defects, charts)", cmd_info},
     {"param", "bijective UV parametrization with SCAF (writes OBJ with vt)", cmd_param},
-    {"atlas", "multi-chart texture atlas: joint bijective optimization, compaction, padding", cmd_atlas},
-    {"deform", "deform a planar mesh towards handle targets, bijectively (soft constraints)", cmd_deform},
-    {"flow", "conformalized mean curvature flow of a closed surface (until free of self-intersections)", cmd_flow},
-    {"tet", "tetrahedralize a box around a closed surface (TetGen, surface kept, checked exactly)", cmd_tet},
-    {NULL, NULL, NULL}
-};
+    {"atlas", "multi-chart texture atlas: joint bijective optimization, compaction, padding",
+     cmd_atlas},
+    {"deform", "deform a planar mesh towards handle targets, bijectively (soft constraints)",
+     cmd_deform},
+    {"flow",
+     "conformalized mean curvature flow of a closed surface (until free of self-intersections)",
+     cmd_flow},
+    {"tet", "tetrahedralize a box around a closed surface (TetGen, surface kept, checked exactly)",
+     cmd_tet},
+    {NULL, NULL, NULL}};
 
 static void print_help(FILE *out)
 {
@@ -95,8 +101,7 @@ int main(int argc, char **argv)
         return EXIT_OK;
     }
     for (const command *c = scaf_commands; c->name; c++)
-        if (!strcmp(argv[1], c->name))
-            return c->run(argc - 1, argv + 1);
+        if (!strcmp(argv[1], c->name)) return c->run(argc - 1, argv + 1);
     fprintf(stderr, "scaf: unknown command '%s' (see `scaf --help`)\n", argv[1]);
     return EXIT_USAGE;
 }

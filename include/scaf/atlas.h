@@ -90,16 +90,16 @@ typedef enum scaf_atlas_phase {
 /* What one iteration did, passed to the progress callback. */
 typedef struct scaf_atlas_iteration_info {
     scaf_atlas_phase phase;
-    int iteration;             /* 1-based, counted over both phases */
-    int phase_iteration;       /* 1-based within the phase */
-    double energy;             /* E after the step (see scaf_iteration_info_t) */
-    double efficiency;         /* packing efficiency of the current layout:
+    int iteration;              /* 1-based, counted over both phases */
+    int phase_iteration;        /* 1-based within the phase */
+    double energy;              /* E after the step (see scaf_iteration_info_t) */
+    double efficiency;          /* packing efficiency of the current layout:
                                   chart UV area / (longest side of its UV
                                   bounding box)^2 */
-    double gap;                /* smallest distance between two charts
+    double gap;                 /* smallest distance between two charts
                                   divided by that side (the gap in the unit
                                   square); INFINITY with one chart */
-    double seconds;            /* wall time of this iteration */
+    double seconds;             /* wall time of this iteration */
     scaf_iteration_info_t loop; /* the SCAF iteration's own numbers */
 } scaf_atlas_iteration_info_t;
 
@@ -139,8 +139,8 @@ SCAF_API scaf_status scaf_atlas_set_options(scaf_atlas_t *a, const scaf_atlas_op
  * disk (possibly with holes), is non-manifold, non-orientable, has a
  * degenerate face or a non-finite coordinate, or when init_input is set
  * and the input UVs are not bijective. On failure the context has no mesh. */
-SCAF_API scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const int *F, int nf,
-                                         const double *UV, int nuv, const int *FT);
+SCAF_API scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const int *F,
+                                         int nf, const double *UV, int nuv, const int *FT);
 
 /* Run both phases (once per scaf_atlas_set_mesh; a second call fails with
  * SCAF_ERR_USAGE). progress may be NULL. Returns SCAF_OK,

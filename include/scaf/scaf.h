@@ -28,15 +28,15 @@ extern "C" {
  * (README.md, "Exit status of `scaf`"; tools/exit_codes.h). */
 typedef enum scaf_status {
     SCAF_OK = 0,
-    SCAF_ERR_USAGE,      /* invalid argument or option value */
-    SCAF_ERR_IO,         /* a file cannot be opened, read or written */
-    SCAF_ERR_PARSE,      /* malformed input file (syntax, index, number) */
-    SCAF_ERR_MESH,       /* the mesh is invalid for the operation (topology,
+    SCAF_ERR_USAGE,     /* invalid argument or option value */
+    SCAF_ERR_IO,        /* a file cannot be opened, read or written */
+    SCAF_ERR_PARSE,     /* malformed input file (syntax, index, number) */
+    SCAF_ERR_MESH,      /* the mesh is invalid for the operation (topology,
                             degenerate faces, NaN, wrong chart type) */
-    SCAF_ERR_NUMERIC,    /* a numerical step failed (factorization, ...) */
-    SCAF_ERR_NOMEM,      /* out of memory */
-    SCAF_ERR_CANCELLED,  /* stopped by the caller's progress callback */
-    SCAF_ERR_INTERNAL    /* a bug: an invariant of scaf itself broke */
+    SCAF_ERR_NUMERIC,   /* a numerical step failed (factorization, ...) */
+    SCAF_ERR_NOMEM,     /* out of memory */
+    SCAF_ERR_CANCELLED, /* stopped by the caller's progress callback */
+    SCAF_ERR_INTERNAL   /* a bug: an invariant of scaf itself broke */
 } scaf_status;
 
 /* A short, static English name of a status ("parse error", ...). */
@@ -161,13 +161,13 @@ SCAF_API scaf_options_t scaf_options_default(void);
 
 /* What one iteration did, passed to the progress callback. */
 typedef enum scaf_phase {
-    SCAF_PHASE_ASSEMBLY = 0,   /* Jacobians, weights, sparse system */
-    SCAF_PHASE_ANALYSIS,       /* fill-reducing ordering, symbolic analysis */
-    SCAF_PHASE_FACTORIZATION,  /* numerical Cholesky factorization */
-    SCAF_PHASE_SOLVE,          /* triangular solves */
-    SCAF_PHASE_LINE_SEARCH,    /* flip-free step, Armijo, exact checks */
-    SCAF_PHASE_SCAFFOLD,       /* rebuilding the scaffold (CDT) */
-    SCAF_PHASE_OTHER,          /* everything else */
+    SCAF_PHASE_ASSEMBLY = 0,  /* Jacobians, weights, sparse system */
+    SCAF_PHASE_ANALYSIS,      /* fill-reducing ordering, symbolic analysis */
+    SCAF_PHASE_FACTORIZATION, /* numerical Cholesky factorization */
+    SCAF_PHASE_SOLVE,         /* triangular solves */
+    SCAF_PHASE_LINE_SEARCH,   /* flip-free step, Armijo, exact checks */
+    SCAF_PHASE_SCAFFOLD,      /* rebuilding the scaffold (CDT) */
+    SCAF_PHASE_OTHER,         /* everything else */
     SCAF_PHASE_COUNT
 } scaf_phase;
 
@@ -175,23 +175,23 @@ typedef enum scaf_phase {
 SCAF_API const char *scaf_phase_name(scaf_phase phase);
 
 typedef struct scaf_iteration_info {
-    int iteration;            /* 1-based count of finished iterations */
-    double energy;            /* E after the step: sum_f A_f (||J_f||^2 +
+    int iteration;                          /* 1-based count of finished iterations */
+    double energy;                          /* E after the step: sum_f A_f (||J_f||^2 +
                                  ||J_f^-1||^2) / sum_f A_f over mesh
                                  triangles (A_f 3D area); 4 at an isometry */
-    double energy_before;     /* E before this iteration */
-    double total_before;      /* E_M + lambda E_S before the step */
-    double total_after;       /* E_M + lambda E_S after the step (same
+    double energy_before;                   /* E before this iteration */
+    double total_before;                    /* E_M + lambda E_S before the step */
+    double total_after;                     /* E_M + lambda E_S after the step (same
                                  scaffold, same lambda) */
-    double lambda;            /* scaffold weight used */
-    double step;              /* accepted step length (1 = full proxy step) */
-    int scaffold_triangles;   /* |S| */
-    int scaffold_vertices;    /* scaffold-only vertices (box + Steiner) */
-    double seconds;           /* wall time of this iteration */
+    double lambda;                          /* scaffold weight used */
+    double step;                            /* accepted step length (1 = full proxy step) */
+    int scaffold_triangles;                 /* |S| */
+    int scaffold_vertices;                  /* scaffold-only vertices (box + Steiner) */
+    double seconds;                         /* wall time of this iteration */
     double phase_seconds[SCAF_PHASE_COUNT]; /* split of `seconds` */
-    int solver;               /* the step of this iteration:
+    int solver;                             /* the step of this iteration:
                                  SCAF_SOLVER_SLIM or SCAF_SOLVER_NEWTON */
-    double decrement;         /* Newton steps: -g.p / (2 total_before), the
+    double decrement;                       /* Newton steps: -g.p / (2 total_before), the
                                  relative decrease the model predicted (the
                                  convergence criterion); SLIM steps: 0 */
 } scaf_iteration_info_t;
@@ -199,22 +199,22 @@ typedef struct scaf_iteration_info {
 /* Why a run (or a phase of the atlas) stopped. Values never change
  * meaning; new ones are only appended. */
 typedef enum scaf_stop_reason {
-    SCAF_STOP_NONE = 0,       /* not run (yet): no iteration was asked for
+    SCAF_STOP_NONE = 0,        /* not run (yet): no iteration was asked for
                                  or the phase did not take place */
-    SCAF_STOP_ITERATIONS,     /* the iteration cap was reached */
-    SCAF_STOP_TOLERANCE,      /* the relative decrease of the energy over
+    SCAF_STOP_ITERATIONS,      /* the iteration cap was reached */
+    SCAF_STOP_TOLERANCE,       /* the relative decrease of the energy over
                                  one iteration fell below the tolerance */
-    SCAF_STOP_ZERO_STEP,      /* no step lowers the energy any more (the
+    SCAF_STOP_ZERO_STEP,       /* no step lowers the energy any more (the
                                  line search accepted none): converged to
                                  floating-point precision */
-    SCAF_STOP_CANCELLED,      /* the progress callback returned nonzero */
-    SCAF_STOP_ERROR,          /* an iteration failed (see its status) */
-    SCAF_STOP_DISTORTION,     /* atlas compaction: E exceeded (1 +
+    SCAF_STOP_CANCELLED,       /* the progress callback returned nonzero */
+    SCAF_STOP_ERROR,           /* an iteration failed (see its status) */
+    SCAF_STOP_DISTORTION,      /* atlas compaction: E exceeded (1 +
                                  distortion_tolerance) times the settled E */
     SCAF_STOP_PACKING_STALLED, /* atlas compaction: the layout's side shrank
                                  by less than 0.15% over the last 4
                                  iterations */
-    SCAF_STOP_CONVERGED       /* a full Newton step whose relative Newton
+    SCAF_STOP_CONVERGED        /* a full Newton step whose relative Newton
                                  decrement is below the tolerance: the
                                  objective is within about that (relative)
                                  of its minimum */
@@ -258,8 +258,8 @@ SCAF_API scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_
  * closed, has genus, is non-manifold or non-orientable, or has a
  * degenerate triangle (exactly zero area, the test `scaf info` counts);
  * SCAF_ERR_USAGE on out-of-range indices. */
-SCAF_API scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F, int nf,
-                                         const double *UV, int nuv, const int *FT);
+SCAF_API scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F,
+                                         int nf, const double *UV, int nuv, const int *FT);
 
 /* Run up to `iterations` SCAF iterations (<= 0: options.max_iterations).
  * It stops at the first of (scaf_param_stop_reason tells which):
@@ -274,8 +274,8 @@ SCAF_API scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int n
  *   - the progress callback returns nonzero (SCAF_STOP_CANCELLED);
  *   - an iteration fails (SCAF_STOP_ERROR, with its status).
  * progress may be NULL. */
-SCAF_API scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_fn progress,
-                                    void *user);
+SCAF_API scaf_status scaf_param_run(scaf_param_t *p, int iterations,
+                                    scaf_param_progress_fn progress, void *user);
 
 /* Soft positional constraints for interactive or deformation-like use:
  * from the next scaf_param_run on, the objective also has
@@ -292,8 +292,8 @@ SCAF_API scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_
  * scaf_param_set_mesh. SCAF_ERR_USAGE without a mesh, on an index out of
  * range, a target that is not finite or a weight ratio < 0. */
 #define SCAF_HANDLE_WEIGHT_DEFAULT 1e4
-SCAF_API scaf_status scaf_param_set_handles(scaf_param_t *p, int n, const int *idx, const double *targets,
-                                            double weight_ratio);
+SCAF_API scaf_status scaf_param_set_handles(scaf_param_t *p, int n, const int *idx,
+                                            const double *targets, double weight_ratio);
 
 /* Why the last scaf_param_run stopped (SCAF_STOP_NONE before any run or
  * after scaf_param_set_mesh). */

@@ -113,7 +113,8 @@ void atlas_normalized_uv(const atlas *a, double *UV)
     double s = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(s > 0.0)) s = 1.0;
     for (int i = 0; i < a->nw; i++)
-        for (int k = 0; k < 2; k++) UV[2 * (size_t)i + k] = (a->loop.uv[2 * (size_t)i + k] - lo[k]) / s;
+        for (int k = 0; k < 2; k++)
+            UV[2 * (size_t)i + k] = (a->loop.uv[2 * (size_t)i + k] - lo[k]) / s;
 }
 
 void atlas_chart_energy(const atlas *a, double *E)
@@ -168,7 +169,8 @@ static int freeze_close(void *user, const scaf_loop *L, const double *X, double 
     int changed = 0;
     if (chart_gap_mark_close(X, a->seg, a->nseg, need, mark, &np, &e) == SCAF_OK && np > 0) {
         for (int v = 0; v < L->nv; v++)
-            if (mark[a->wchart[v]] && (dir[2 * (size_t)v] != 0.0 || dir[2 * (size_t)v + 1] != 0.0)) {
+            if (mark[a->wchart[v]] &&
+                (dir[2 * (size_t)v] != 0.0 || dir[2 * (size_t)v + 1] != 0.0)) {
                 dir[2 * (size_t)v] = dir[2 * (size_t)v + 1] = 0.0;
                 changed = 1;
             }
@@ -195,7 +197,8 @@ static int scaffold_positive(const scaf_loop *L, const double *X)
     const scaffold_view *sc = scaf_loop_scaffold_view(L);
     for (int s = 0; s < sc->n; s++) {
         const int *t = sc->simplices + 3 * s;
-        if (!(orient2d(X + 2 * (size_t)t[0], X + 2 * (size_t)t[1], X + 2 * (size_t)t[2]) > 0.0)) return 0;
+        if (!(orient2d(X + 2 * (size_t)t[0], X + 2 * (size_t)t[1], X + 2 * (size_t)t[2]) > 0.0))
+            return 0;
     }
     return 1;
 }
@@ -317,7 +320,8 @@ scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
     const char *bad = NULL;
     if (o->init_input != 0 && o->init_input != 1) bad = "init_input must be 0 or 1";
     else if (o->settle_iterations < 0) bad = "settle_iterations must be >= 0";
-    else if (!finite_at_least(o->settle_tolerance, 0.0)) bad = "settle_tolerance must be a finite number >= 0";
+    else if (!finite_at_least(o->settle_tolerance, 0.0))
+        bad = "settle_tolerance must be a finite number >= 0";
     else if (o->compact_iterations < 0) bad = "compact_iterations must be >= 0";
     else if (!finite_at_least(o->distortion_tolerance, 0.0))
         bad = "distortion_tolerance must be a finite number >= 0";
@@ -332,16 +336,19 @@ scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
         bad = "compact_rest_scale must be in (0, 1]";
     else if (!(o->compact_box_scale >= 1.0) || !(o->compact_box_scale <= 1e6))
         bad = "compact_box_scale must be in [1, 1e6]";
-    else if (!(o->compact_fraction > 0.0) || !(o->compact_fraction < 1.0)) bad = "compact_fraction must be in (0, 1)";
+    else if (!(o->compact_fraction > 0.0) || !(o->compact_fraction < 1.0))
+        bad = "compact_fraction must be in (0, 1)";
     else if (o->pack_picks < 1 || o->pack_picks > 16) bad = "pack_picks must be in [1, 16]";
-    else if (!finite_at_least(o->progress_tolerance, 0.0)) bad = "progress_tolerance must be a finite number >= 0";
-    else if (o->progress_window < 1 || o->progress_window > 64) bad = "progress_window must be in [1, 64]";
+    else if (!finite_at_least(o->progress_tolerance, 0.0))
+        bad = "progress_tolerance must be a finite number >= 0";
+    else if (o->progress_window < 1 || o->progress_window > 64)
+        bad = "progress_window must be in [1, 64]";
     /* the output's padding is certified exactly (geom/chart_gap), which
      * takes paddings of at least 2^-200 */
     else if (!(o->padding == 0.0 || (o->padding >= CHART_GAP_EXACT_MIN && o->padding < 0.5))) {
         if (msg && size)
-            snprintf(msg, size, "padding %g must be 0 or in [2^-200, 0.5) ([%.17g, 0.5))", o->padding,
-                     CHART_GAP_EXACT_MIN);
+            snprintf(msg, size, "padding %g must be 0 or in [2^-200, 0.5) ([%.17g, 0.5))",
+                     o->padding, CHART_GAP_EXACT_MIN);
         return SCAF_ERR_USAGE;
     }
     if (!bad) return SCAF_OK;
@@ -355,7 +362,8 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     a->opt = o ? *o : atlas_options_default();
     scaf_status st = SCAF_OK;
     char msg[256];
-    if (atlas_options_check(&a->opt, msg, sizeof msg) != SCAF_OK) return err_set(err, SCAF_ERR_USAGE, "%s", msg);
+    if (atlas_options_check(&a->opt, msg, sizeof msg) != SCAF_OK)
+        return err_set(err, SCAF_ERR_USAGE, "%s", msg);
     if (a->opt.init_input && !mesh_has_uv(m))
         return err_set(err, SCAF_ERR_USAGE, "--init input: the mesh has no UVs (vt) to start from");
     if (a->opt.init_input) {
@@ -367,8 +375,10 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
             char defects[320];
             bij_report_defects(&r, defects, sizeof defects);
             return err_set(err, SCAF_ERR_MESH,
-                           "--init input: the input UVs are not bijective (as scaf check reports: %s); "
-                           "use the default start (Tutte on circles)", defects);
+                           "--init input: the input UVs are not bijective (as scaf check reports: "
+                           "%s); "
+                           "use the default start (Tutte on circles)",
+                           defects);
         }
     }
     int *FT2 = NULL, *map = NULL, nuv2 = 0;
@@ -388,7 +398,8 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
             st = err_nomem(err, "atlas");
             goto done;
         }
-        for (int i = 0; i < nuv2; i++) memcpy(UV2 + 2 * (size_t)i, m->UV + 2 * (size_t)map[i], sizeof(double) * 2);
+        for (int i = 0; i < nuv2; i++)
+            memcpy(UV2 + 2 * (size_t)i, m->UV + 2 * (size_t)map[i], sizeof(double) * 2);
     }
     scaf_options_t po = a->opt.base;
     p = scaf_param_new(&po);
@@ -424,7 +435,8 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     for (int f = 0; f < a->nf; f++)
         for (int j = 0; j < 3; j++)
             for (int k = 0; k < 3; k++)
-                W3[3 * (size_t)a->Fw[3 * f + j] + k] = ldexp(m->V[3 * (size_t)m->F[3 * f + j] + k], -e);
+                W3[3 * (size_t)a->Fw[3 * f + j] + k] =
+                    ldexp(m->V[3 * (size_t)m->F[3 * f + j] + k], -e);
     int nc = 0;
     st = chart_gap_labels(a->nw, a->nf, a->Fw, a->chart, &nc, err);
     if (st != SCAF_OK) goto done;
@@ -442,7 +454,8 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     if (a->opt.init_input) {
         for (int f = 0; f < a->nf; f++)
             for (int j = 0; j < 3; j++)
-                memcpy(uv0 + 2 * (size_t)a->Fw[3 * f + j], UV2 + 2 * (size_t)FT2[3 * f + j], sizeof(double) * 2);
+                memcpy(uv0 + 2 * (size_t)a->Fw[3 * f + j], UV2 + 2 * (size_t)FT2[3 * f + j],
+                       sizeof(double) * 2);
         /* The input is bijective (checked above); split pinch points are
          * distinct indices at one point now, which the scaffold cannot
          * separate: say so rather than quote other counts. */
@@ -453,8 +466,10 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
             char defects[320];
             bij_report_defects(&r, defects, sizeof defects);
             st = err_set(err, SCAF_ERR_MESH,
-                         "--init input: the input UVs are bijective, but with its %d pinch point(s) (a vt where a "
-                         "chart touches itself) split into one UV per fan they are not (%s): the optimizer cannot "
+                         "--init input: the input UVs are bijective, but with its %d pinch "
+                         "point(s) (a vt where a "
+                         "chart touches itself) split into one UV per fan they are not (%s): the "
+                         "optimizer cannot "
                          "start there; use the default start (Tutte on circles)",
                          a->split_uvs, defects);
             goto done;
@@ -466,19 +481,23 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
          * to the surface's area. Exact in floating point (checked), so
          * every orientation and non-overlap the checker proved still
          * holds. */
-        int eu = -coord_scale_exponent(uv0, 2, 3 * (size_t)a->nf, a->Fw), bad = scale_exactly(uv0, 2 * (size_t)a->nw, eu);
+        int eu = -coord_scale_exponent(uv0, 2, 3 * (size_t)a->nf, a->Fw),
+            bad = scale_exactly(uv0, 2 * (size_t)a->nw, eu);
         double a3 = 0.0, a2 = 0.0;
         for (int f = 0; f < a->nf && bad < 0; f++) {
             const int *t = a->Fw + 3 * f;
-            const double *p0 = W3 + 3 * (size_t)t[0], *p1 = W3 + 3 * (size_t)t[1], *p2 = W3 + 3 * (size_t)t[2];
+            const double *p0 = W3 + 3 * (size_t)t[0], *p1 = W3 + 3 * (size_t)t[1],
+                         *p2 = W3 + 3 * (size_t)t[2];
             double u[3], w[3];
             for (int k = 0; k < 3; k++) {
                 u[k] = p1[k] - p0[k];
                 w[k] = p2[k] - p0[k];
             }
-            a3 += 0.5 * sqrt(pow(u[1] * w[2] - u[2] * w[1], 2) + pow(u[2] * w[0] - u[0] * w[2], 2) +
-                             pow(u[0] * w[1] - u[1] * w[0], 2));
-            const double *q0 = uv0 + 2 * (size_t)t[0], *q1 = uv0 + 2 * (size_t)t[1], *q2 = uv0 + 2 * (size_t)t[2];
+            a3 += 0.5 *
+                sqrt(pow(u[1] * w[2] - u[2] * w[1], 2) + pow(u[2] * w[0] - u[0] * w[2], 2) +
+                     pow(u[0] * w[1] - u[1] * w[0], 2));
+            const double *q0 = uv0 + 2 * (size_t)t[0], *q1 = uv0 + 2 * (size_t)t[1],
+                         *q2 = uv0 + 2 * (size_t)t[2];
             a2 += 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
         }
         if (bad < 0 && a3 > 0.0 && a2 > 0.0) {
@@ -489,8 +508,11 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         }
         if (bad >= 0) {
             st = err_set(err, SCAF_ERR_MESH,
-                         "--init input: the input UVs span too many orders of magnitude to be brought to the "
-                         "surface's scale exactly (UV coordinate %d would round); use the default start", bad);
+                         "--init input: the input UVs span too many orders of magnitude to be "
+                         "brought to the "
+                         "surface's scale exactly (UV coordinate %d would round); use the default "
+                         "start",
+                         bad);
             goto done;
         }
     }
@@ -502,9 +524,11 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         if (st != SCAF_OK) goto done;
         if (!(g > a->opt.padding * s * PAD_MARGIN)) {
             st = err_set(err, SCAF_ERR_USAGE,
-                         "padding %g is not met by the starting layout of %d charts (smallest gap %g of the "
+                         "padding %g is not met by the starting layout of %d charts (smallest gap "
+                         "%g of the "
                          "square): use a smaller padding%s",
-                         a->opt.padding, a->ncharts, g / s, a->opt.init_input ? " or the default start" : "");
+                         a->opt.padding, a->ncharts, g / s,
+                         a->opt.init_input ? " or the default start" : "");
             goto done;
         }
     }
@@ -555,8 +579,8 @@ static scaf_status repack_from(atlas *a, const double *base, scaf_error *err)
             break;
         }
         int npick = a->opt.pack_picks;
-        st = atlas_pack(a->nw, base, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells / 2, want,
-                        -1, npick, &chosen, side_c, trial, &e2);
+        st = atlas_pack(a->nw, base, a->nf, a->Fw, a->chart, a->wchart, a->ncharts,
+                        a->opt.pack_cells / 2, want, -1, npick, &chosen, side_c, trial, &e2);
         double best_side = INFINITY;
         for (int pick = 0; pick < npick && st == SCAF_OK; pick++) {
             int k = -1;
@@ -564,8 +588,8 @@ static scaf_status repack_from(atlas *a, const double *base, scaf_error *err)
                 if (side_c[i] > 0 && (k < 0 || side_c[i] < side_c[k])) k = i;
             if (k < 0) break;
             side_c[k] = -1;
-            st = atlas_pack(a->nw, base, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, a->opt.pack_cells, want,
-                            k, 0, NULL, NULL, trial, &e2);
+            st = atlas_pack(a->nw, base, a->nf, a->Fw, a->chart, a->wchart, a->ncharts,
+                            a->opt.pack_cells, want, k, 0, NULL, NULL, trial, &e2);
             double sd = st == SCAF_OK ? side_of(trial, a->nw) : INFINITY;
             if (sd < best_side) {
                 best_side = sd;
@@ -583,7 +607,9 @@ static scaf_status repack_from(atlas *a, const double *base, scaf_error *err)
         int ok = 1;
         for (int f = 0; f < a->nf && ok; f++) {
             const int *t = a->Fw + 3 * f;
-            if (!(orient2d(out + 2 * (size_t)t[0], out + 2 * (size_t)t[1], out + 2 * (size_t)t[2]) > 0.0)) ok = 0;
+            if (!(orient2d(out + 2 * (size_t)t[0], out + 2 * (size_t)t[1], out + 2 * (size_t)t[2]) >
+                  0.0))
+                ok = 0;
         }
         if (!ok) break;
         double g, side = side_of(out, a->nw);
@@ -619,8 +645,8 @@ static scaf_status repack(atlas *a, scaf_error *err)
     if (a->opt.rotate) {
         aligned = malloc(sizeof(double) * 2 * (size_t)a->nw);
         if (!aligned) return err_nomem(err, "repacking");
-        scaf_status st = atlas_align_charts(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart, a->ncharts, aligned,
-                                            NULL, err);
+        scaf_status st = atlas_align_charts(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, a->wchart,
+                                            a->ncharts, aligned, NULL, err);
         if (st != SCAF_OK) {
             free(aligned);
             return st;
@@ -673,8 +699,8 @@ static scaf_status one_iteration(atlas *a, atlas_phase ph, atlas_progress_fn pro
     if (st != SCAF_OK) return st;
     it->efficiency = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
     if (progress && progress(a, it, user))
-        return err_set(err, SCAF_ERR_CANCELLED, "stopped by the progress callback after iteration %d",
-                       it->info.iteration);
+        return err_set(err, SCAF_ERR_CANCELLED,
+                       "stopped by the progress callback after iteration %d", it->info.iteration);
     return SCAF_OK;
 }
 
@@ -733,7 +759,9 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
         a->loop.opt.scaffold.box_square = 0;
         a->loop.hooks.prepare = compact_prepare;
         enum { MAXWIN = 64 };
-        int win = a->opt.progress_window < 1 ? 1 : a->opt.progress_window > MAXWIN ? MAXWIN : a->opt.progress_window;
+        int win = a->opt.progress_window < 1  ? 1
+            : a->opt.progress_window > MAXWIN ? MAXWIN
+                                              : a->opt.progress_window;
         double hist[MAXWIN];
         int zero_steps = 0;
         /* The layout kept: the best packed one whose E is within the

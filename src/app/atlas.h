@@ -134,35 +134,35 @@ typedef enum atlas_phase { ATLAS_SETTLE = 0, ATLAS_COMPACT = 1 } atlas_phase;
 typedef struct atlas_iteration {
     scaf_iteration_info_t info; /* the loop's numbers */
     atlas_phase phase;
-    double side;                /* longest side of the charts' UV bbox */
-    double gap;                 /* smallest chart gap / side (normalized);
+    double side;       /* longest side of the charts' UV bbox */
+    double gap;        /* smallest chart gap / side (normalized);
                                    INFINITY with one chart */
-    double efficiency;          /* chart UV area / side^2 */
+    double efficiency; /* chart UV area / side^2 */
 } atlas_iteration;
 
 typedef struct atlas {
     atlas_options opt;
-    int nv, nf;                 /* input vertices and faces */
+    int nv, nf; /* input vertices and faces */
     int ncharts;
-    int nw;                     /* working vertices = output UVs */
-    int *Fw;                    /* nf by 3 working vertex (output UV) per corner */
-    int *chart;                 /* nf chart id per face */
-    int *wchart;                /* nw chart id per working vertex */
-    int split_uvs;              /* vt indices split at pinch points */
-    int *seg;                   /* nseg by 3 boundary segments (a, b, chart) */
+    int nw;        /* working vertices = output UVs */
+    int *Fw;       /* nf by 3 working vertex (output UV) per corner */
+    int *chart;    /* nf chart id per face */
+    int *wchart;   /* nw chart id per working vertex */
+    int split_uvs; /* vt indices split at pinch points */
+    int *seg;      /* nseg by 3 boundary segments (a, b, chart) */
     int nseg;
     scaf_loop loop;
-    double settled_energy;      /* E at the end of phase 1 */
-    double eff_before, eff_after; /* packing efficiency before / after phase 2 */
-    double gap_before, gap_after; /* normalized smallest gap, same times */
-    double eff_packed;          /* after the raster re-placement (NAN: not done / rejected) */
+    double settled_energy;         /* E at the end of phase 1 */
+    double eff_before, eff_after;  /* packing efficiency before / after phase 2 */
+    double gap_before, gap_after;  /* normalized smallest gap, same times */
+    double eff_packed;             /* after the raster re-placement (NAN: not done / rejected) */
     int settle_done, compact_done; /* iterations run in each phase */
-    int compact_restored;       /* 1: the result is an earlier compaction
+    int compact_restored;          /* 1: the result is an earlier compaction
                                    layout (the last iterations overshot the
                                    distortion tolerance or packed worse);
                                    the scaffold is rebuilt at the next step */
-    int turns;                  /* layout turns kept (rotate) */
-    int stiffened;              /* scaffold triangles stiffened (last iteration) */
+    int turns;                     /* layout turns kept (rotate) */
+    int stiffened;                 /* scaffold triangles stiffened (last iteration) */
     scaf_stop_reason settle_stop, compact_stop; /* why each phase stopped
                                    (SCAF_STOP_NONE: not run) */
 } atlas;

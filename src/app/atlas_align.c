@@ -33,7 +33,8 @@ static int positive(const double *X, const int *F, const int *fs, int nfs)
 {
     for (int i = 0; i < nfs; i++) {
         const int *t = F + 3 * (size_t)(fs ? fs[i] : i);
-        if (!(orient2d(X + 2 * (size_t)t[0], X + 2 * (size_t)t[1], X + 2 * (size_t)t[2]) > 0.0)) return 0;
+        if (!(orient2d(X + 2 * (size_t)t[0], X + 2 * (size_t)t[1], X + 2 * (size_t)t[2]) > 0.0))
+            return 0;
     }
     return 1;
 }
@@ -50,22 +51,26 @@ static int angle_of(const double *uv, const int *vs, int nv, int pick, double *t
         free(hull);
         return -1;
     }
-    for (int i = 0; i < nv; i++) memcpy(P + 2 * (size_t)i, uv + 2 * (size_t)vs[i], sizeof(double) * 2);
+    for (int i = 0; i < nv; i++)
+        memcpy(P + 2 * (size_t)i, uv + 2 * (size_t)vs[i], sizeof(double) * 2);
     int nh = min_box_hull(P, nv, hull);
-    if (nh >= 0) *theta = pick ? min_box_square_angle(P, hull, nh, side) : min_box_area_angle(P, hull, nh);
+    if (nh >= 0)
+        *theta = pick ? min_box_square_angle(P, hull, nh, side) : min_box_area_angle(P, hull, nh);
     free(P);
     free(hull);
     return nh < 0 ? -1 : 0;
 }
 
-scaf_status atlas_align_charts(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                               int ncharts, double *out, int *turned, scaf_error *err)
+scaf_status atlas_align_charts(int nw, const double *uv, int nf, const int *F, const int *chart,
+                               const int *wchart, int ncharts, double *out, int *turned,
+                               scaf_error *err)
 {
     memcpy(out, uv, sizeof(double) * 2 * (size_t)nw);
     if (turned) *turned = 0;
     size_t nc1 = (size_t)ncharts + 1;
     int *vstart = calloc(nc1 + 1, sizeof(int)), *fstart = calloc(nc1 + 1, sizeof(int));
-    int *vs = malloc(sizeof(int) * (size_t)(nw ? nw : 1)), *fs = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
+    int *vs = malloc(sizeof(int) * (size_t)(nw ? nw : 1)),
+        *fs = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
     int *fill = malloc(sizeof(int) * nc1);
     scaf_status st = SCAF_OK;
     if (!vstart || !fstart || !vs || !fs || !fill) {
@@ -96,7 +101,8 @@ scaf_status atlas_align_charts(int nw, const double *uv, int nf, const int *F, c
             if (turned) (*turned)++;
         } else {
             /* rounding flipped a triangle: this chart keeps its place */
-            for (int i = 0; i < ncv; i++) memcpy(out + 2 * (size_t)cv[i], uv + 2 * (size_t)cv[i], sizeof(double) * 2);
+            for (int i = 0; i < ncv; i++)
+                memcpy(out + 2 * (size_t)cv[i], uv + 2 * (size_t)cv[i], sizeof(double) * 2);
         }
     }
 done:
@@ -108,8 +114,8 @@ done:
     return st;
 }
 
-scaf_status atlas_turn_to_square(int nw, const double *uv, int nf, const int *F, double *out, int *turned,
-                                 scaf_error *err)
+scaf_status atlas_turn_to_square(int nw, const double *uv, int nf, const int *F, double *out,
+                                 int *turned, scaf_error *err)
 {
     *turned = 0;
     memcpy(out, uv, sizeof(double) * 2 * (size_t)nw);

@@ -23,13 +23,14 @@
 /* uv (nw by 2) -> out (nw by 2); F nf by 3, wchart nw chart per vertex
  * (< 0: no chart, copied), chart nf chart per face. *turned (may be NULL)
  * gets the number of charts turned. SCAF_ERR_NOMEM only. */
-scaf_status atlas_align_charts(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                               int ncharts, double *out, int *turned, scaf_error *err);
+scaf_status atlas_align_charts(int nw, const double *uv, int nf, const int *F, const int *chart,
+                               const int *wchart, int ncharts, double *out, int *turned,
+                               scaf_error *err);
 
 /* uv -> out turned to the smallest bounding square; *turned = 1 when out
  * differs from uv (its square is smaller by more than rounding and every
  * triangle stays strictly positive), else out = uv. SCAF_ERR_NOMEM only. */
-scaf_status atlas_turn_to_square(int nw, const double *uv, int nf, const int *F, double *out, int *turned,
-                                 scaf_error *err);
+scaf_status atlas_turn_to_square(int nw, const double *uv, int nf, const int *F, double *out,
+                                 int *turned, scaf_error *err);
 
 #endif /* SCAF_APP_ATLAS_ALIGN_H */

@@ -26,12 +26,12 @@ struct scaf_atlas {
     scaf_atlas_options_t opt;
     scaf_error err;
     int has_mesh;
-    int ran;                 /* scaf_atlas_run called on this mesh */
+    int ran; /* scaf_atlas_run called on this mesh */
     atlas at;
     /* the verified output of the current layout (out_state: 0 not
      * computed, 1 verified, -1 failed with out_err) */
     int out_state;
-    double *UV;              /* at.nw by 2 normalized */
+    double *UV; /* at.nw by 2 normalized */
     atlas_output out;
     scaf_error out_err;
 };
@@ -137,10 +137,13 @@ void scaf_atlas_destroy(scaf_atlas_t *a)
     free(a);
 }
 
-const char *scaf_atlas_error(const scaf_atlas_t *a) { return a ? a->err.message : "no atlas context (NULL)"; }
+const char *scaf_atlas_error(const scaf_atlas_t *a)
+{
+    return a ? a->err.message : "no atlas context (NULL)";
+}
 
-scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const int *F, int nf, const double *UV,
-                                int nuv, const int *FT)
+scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const int *F, int nf,
+                                const double *UV, int nuv, const int *FT)
 {
     if (!a) return SCAF_ERR_USAGE;
     err_clear(&a->err);
@@ -148,8 +151,15 @@ scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const 
     scaf_status st = param_check_arrays(V, nv, F, nf, UV, nuv, FT, &a->err);
     if (st != SCAF_OK) return st;
     if (a->opt.init_input && nuv == 0)
-        return err_set(&a->err, SCAF_ERR_USAGE, "init_input is set but no UVs (UV, FT) were given to start from");
-    mesh m = {nv, (double *)V, nf, (int *)F, nuv, nuv > 0 ? (double *)UV : NULL, nuv > 0 ? (int *)FT : NULL};
+        return err_set(&a->err, SCAF_ERR_USAGE,
+                       "init_input is set but no UVs (UV, FT) were given to start from");
+    mesh m = {nv,
+              (double *)V,
+              nf,
+              (int *)F,
+              nuv,
+              nuv > 0 ? (double *)UV : NULL,
+              nuv > 0 ? (int *)FT : NULL};
     atlas_options in = to_internal(&a->opt);
     st = atlas_init(&a->at, &m, &in, &a->err);
     if (st != SCAF_OK) {
@@ -171,7 +181,8 @@ scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const 
  * reason into a->err. */
 static scaf_status ensure_output(scaf_atlas_t *a)
 {
-    if (!a->has_mesh) return err_set(&a->err, SCAF_ERR_USAGE, "no mesh: call scaf_atlas_set_mesh first");
+    if (!a->has_mesh)
+        return err_set(&a->err, SCAF_ERR_USAGE, "no mesh: call scaf_atlas_set_mesh first");
     if (a->out_state == 0) {
         err_clear(&a->out_err);
         scaf_status st = atlas_output_verify(&a->at, a->UV, &a->out, &a->out_err);
@@ -213,10 +224,12 @@ scaf_status scaf_atlas_run(scaf_atlas_t *a, scaf_atlas_progress_fn progress, voi
 {
     if (!a) return SCAF_ERR_USAGE;
     err_clear(&a->err);
-    if (!a->has_mesh) return err_set(&a->err, SCAF_ERR_USAGE, "no mesh: call scaf_atlas_set_mesh first");
+    if (!a->has_mesh)
+        return err_set(&a->err, SCAF_ERR_USAGE, "no mesh: call scaf_atlas_set_mesh first");
     if (a->ran)
         return err_set(&a->err, SCAF_ERR_USAGE,
-                       "scaf_atlas_run was already called for this mesh: call scaf_atlas_set_mesh to start over");
+                       "scaf_atlas_run was already called for this mesh: call scaf_atlas_set_mesh "
+                       "to start over");
     a->ran = 1;
     drop_output(a);
     progress_adapter pa = {progress, user};
@@ -250,13 +263,18 @@ scaf_stop_reason scaf_atlas_stop_reason(const scaf_atlas_t *a, scaf_atlas_phase 
     return SCAF_STOP_NONE;
 }
 
-double scaf_atlas_energy(const scaf_atlas_t *a) { return a && a->has_mesh ? scaf_loop_energy(&a->at.loop) : NAN; }
+double scaf_atlas_energy(const scaf_atlas_t *a)
+{
+    return a && a->has_mesh ? scaf_loop_energy(&a->at.loop) : NAN;
+}
 
 scaf_status scaf_atlas_get_uv(scaf_atlas_t *a, double *UV, int *FT, int *chart)
 {
     if (!a) return SCAF_ERR_USAGE;
     err_clear(&a->err);
-    if (!UV) return err_set(&a->err, SCAF_ERR_USAGE, "UV is NULL (give %d by 2 doubles)", scaf_atlas_uv_count(a));
+    if (!UV)
+        return err_set(&a->err, SCAF_ERR_USAGE, "UV is NULL (give %d by 2 doubles)",
+                       scaf_atlas_uv_count(a));
     scaf_status st = ensure_output(a);
     if (st != SCAF_OK) return st;
     memcpy(UV, a->UV, sizeof(double) * 2 * (size_t)a->at.nw);
@@ -283,7 +301,8 @@ scaf_status scaf_atlas_chart_distortion(scaf_atlas_t *a, double *E)
 {
     if (!a) return SCAF_ERR_USAGE;
     err_clear(&a->err);
-    if (!a->has_mesh) return err_set(&a->err, SCAF_ERR_USAGE, "no mesh: call scaf_atlas_set_mesh first");
+    if (!a->has_mesh)
+        return err_set(&a->err, SCAF_ERR_USAGE, "no mesh: call scaf_atlas_set_mesh first");
     if (!E) return err_set(&a->err, SCAF_ERR_USAGE, "E is NULL (give %d doubles)", a->at.ncharts);
     atlas_chart_energy(&a->at, E);
     /* atlas_chart_energy writes NAN everywhere when its scratch memory

@@ -28,13 +28,15 @@ scaf_status atlas_output_verify(const atlas *a, double *UV, atlas_output *out, s
     out->efficiency = chart_packing_efficiency(a->nw, UV, a->nf, a->Fw);
     if (!out->bij.bijective)
         return err_set(err, SCAF_ERR_INTERNAL,
-                       "internal error: the normalized atlas is not bijective (%d flipped, %d degenerate "
+                       "internal error: the normalized atlas is not bijective (%d flipped, %d "
+                       "degenerate "
                        "triangles, %lld boundary crossings, %lld touchings)",
                        out->bij.flipped, out->bij.degenerate, out->bij.boundary_crossings,
                        out->bij.boundary_touchings);
     if (!out->certified)
         return err_set(err, SCAF_ERR_INTERNAL,
-                       "internal error: the normalized atlas is bijective but not certified >= padding "
+                       "internal error: the normalized atlas is bijective but not certified >= "
+                       "padding "
                        "(charts %d and %d; gap %g, padding %g)",
                        out->pair[0], out->pair[1], out->gap, a->opt.padding);
     return SCAF_OK;

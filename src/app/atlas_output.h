@@ -22,12 +22,12 @@
 #include "geom/bijectivity.h"
 
 typedef struct atlas_output {
-    bij_report bij;      /* the exact checker's report on the output */
-    int certified;       /* 1: every chart pair >= padding (exact) */
-    int pair[2];         /* charts of a failing pair (certified == 0) */
-    double gap;          /* smallest distance between two charts of the
+    bij_report bij;    /* the exact checker's report on the output */
+    int certified;     /* 1: every chart pair >= padding (exact) */
+    int pair[2];       /* charts of a failing pair (certified == 0) */
+    double gap;        /* smallest distance between two charts of the
                             output (floating point; INFINITY: one chart) */
-    double efficiency;   /* packing efficiency of the output (chart UV area
+    double efficiency; /* packing efficiency of the output (chart UV area
                             / unit square) */
 } atlas_output;
 

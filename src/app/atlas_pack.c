@@ -17,13 +17,13 @@
 #include <string.h>
 
 typedef struct chart_raster {
-    int w, h;          /* cover size in cells */
+    int w, h; /* cover size in cells */
     int nrun;
-    int *run;          /* nrun by 3: row, x0, x1 (inclusive) of covered cells */
-    int hint;          /* run to test first (the last one that conflicted) */
-    int dw, dh;        /* dilated size = w + 2k, h + 2k */
-    unsigned char *dil;/* dh by dw dilated cover */
-    double m[2];       /* rotated bbox min (cell origin) */
+    int *run;           /* nrun by 3: row, x0, x1 (inclusive) of covered cells */
+    int hint;           /* run to test first (the last one that conflicted) */
+    int dw, dh;         /* dilated size = w + 2k, h + 2k */
+    unsigned char *dil; /* dh by dw dilated cover */
+    double m[2];        /* rotated bbox min (cell origin) */
 } chart_raster;
 
 enum { NROT = 8 }; /* rotations tried: multiples of 360/NROT degrees */
@@ -50,10 +50,22 @@ static inline void rot(const rotation *R, const double *p, double *q)
         return;
     }
     switch ((R->r / (NROT / 4)) & 3) {
-    case 0: q[0] = p[0]; q[1] = p[1]; break;
-    case 1: q[0] = -p[1]; q[1] = p[0]; break;
-    case 2: q[0] = -p[0]; q[1] = -p[1]; break;
-    default: q[0] = p[1]; q[1] = -p[0]; break;
+    case 0:
+        q[0] = p[0];
+        q[1] = p[1];
+        break;
+    case 1:
+        q[0] = -p[1];
+        q[1] = p[0];
+        break;
+    case 2:
+        q[0] = -p[0];
+        q[1] = -p[1];
+        break;
+    default:
+        q[0] = p[1];
+        q[1] = -p[0];
+        break;
     }
 }
 
@@ -68,8 +80,9 @@ static void raster_free(chart_raster *c)
 }
 
 /* Rasterize chart faces fc (nfc ids) rotated by r with cell h, dilation k. */
-static scaf_status raster_chart(const double *uv, const int *F, const int *fc, int nfc, const rotation *r, double h,
-                                int k, chart_raster *c, scaf_error *err)
+static scaf_status raster_chart(const double *uv, const int *F, const int *fc, int nfc,
+                                const rotation *r, double h, int k, chart_raster *c,
+                                scaf_error *err)
 {
     memset(c, 0, sizeof *c);
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
@@ -105,7 +118,8 @@ static scaf_status raster_chart(const double *uv, const int *F, const int *fc, i
             P[j][0] = (P[j][0] - lo[0]) / h;
             P[j][1] = (P[j][1] - lo[1]) / h;
         }
-        double ylo = dmin(P[0][1], dmin(P[1][1], P[2][1])), yhi = dmax(P[0][1], dmax(P[1][1], P[2][1]));
+        double ylo = dmin(P[0][1], dmin(P[1][1], P[2][1])),
+               yhi = dmax(P[0][1], dmax(P[1][1], P[2][1]));
         int y0 = (int)floor(ylo), y1 = (int)floor(yhi);
         if (y0 < 0) y0 = 0;
         if (y1 > c->h - 1) y1 = c->h - 1;
@@ -303,13 +317,13 @@ typedef struct packer {
     const double *uv;
     const int *F, *chart;
     int nf, ncharts;
-    int *start, *faces;  /* faces of chart c: faces[start[c] .. start[c+1]-1] */
-    chart_raster *R;     /* ncharts by NROT rasters */
-    int k;               /* dilation in cells */
-    int maxdim;          /* largest raster side in cells */
+    int *start, *faces; /* faces of chart c: faces[start[c] .. start[c+1]-1] */
+    chart_raster *R;    /* ncharts by NROT rasters */
+    int k;              /* dilation in cells */
+    int maxdim;         /* largest raster side in cells */
     occ_grid grid;
-    order_item *ord;     /* placement order of the current strategy */
-    int *place;          /* ncharts by (x, y, rotation) of the current strategy */
+    order_item *ord; /* placement order of the current strategy */
+    int *place;      /* ncharts by (x, y, rotation) of the current strategy */
 } packer;
 
 /* Group the faces by chart; *total gets the layout's UV area. */
@@ -320,7 +334,8 @@ static scaf_status group_faces(packer *pk, double *total, scaf_error *err)
         const double *uv = pk->uv;
         const int *F = pk->F;
         pk->start[pk->chart[f] + 1]++;
-        const double *a = uv + 2 * (size_t)F[3 * f], *b = uv + 2 * (size_t)F[3 * f + 1], *d = uv + 2 * (size_t)F[3 * f + 2];
+        const double *a = uv + 2 * (size_t)F[3 * f], *b = uv + 2 * (size_t)F[3 * f + 1],
+                     *d = uv + 2 * (size_t)F[3 * f + 2];
         *total += 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
     }
     for (int c = 0; c < pk->ncharts; c++) pk->start[c + 1] += pk->start[c];
@@ -360,8 +375,9 @@ static scaf_status raster_charts(packer *pk, const rotation *rots, double h, sca
     for (int c = 0; c < pk->ncharts; c++)
         for (int r = 0; r < NROT; r++) {
             chart_raster *cr = &pk->R[NROT * c + r];
-            scaf_status st = raster_chart(pk->uv, pk->F, pk->faces + pk->start[c], pk->start[c + 1] - pk->start[c],
-                                          &rots[r], h, pk->k, cr, err);
+            scaf_status st =
+                raster_chart(pk->uv, pk->F, pk->faces + pk->start[c],
+                             pk->start[c + 1] - pk->start[c], &rots[r], h, pk->k, cr, err);
             if (st != SCAF_OK) return st;
             if (cr->w > pk->maxdim) pk->maxdim = cr->w;
             if (cr->h > pk->maxdim) pk->maxdim = cr->h;
@@ -449,11 +465,14 @@ static void order_charts(packer *pk, const strategy_rule *s, unsigned *rng)
         for (int f = 0; f < pk->nf; f++) {
             const double *uv = pk->uv;
             const int *F = pk->F;
-            const double *p0 = uv + 2 * (size_t)F[3 * f], *p1 = uv + 2 * (size_t)F[3 * f + 1], *p2 = uv + 2 * (size_t)F[3 * f + 2];
-            ord[pk->chart[f]].area += (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+            const double *p0 = uv + 2 * (size_t)F[3 * f], *p1 = uv + 2 * (size_t)F[3 * f + 1],
+                         *p2 = uv + 2 * (size_t)F[3 * f + 2];
+            ord[pk->chart[f]].area +=
+                (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
         }
     if (s->perturbed)
-        for (int c = 0; c < pk->ncharts; c++) ord[c].area *= 1.0 + 0.6 * (xorshift(rng) % 1000) / 1000.0;
+        for (int c = 0; c < pk->ncharts; c++)
+            ord[c].area *= 1.0 + 0.6 * (xorshift(rng) % 1000) / 1000.0;
     qsort(ord, (size_t)pk->ncharts, sizeof *ord, cmp_order);
 }
 
@@ -480,7 +499,8 @@ static placement best_position(packer *pk, int c, const strategy_rule *s, int cu
             for (int x = 0, nx; x + cr->w <= G; x = nx) {
                 long sz = cur_x > x + cr->w ? cur_x : x + cr->w;
                 if (sy > sz) sz = sy;
-                if (b.side >= 0 && (sz > b.side || (sz == b.side && (key > b.key || (key == b.key && x >= b.x)))))
+                if (b.side >= 0 &&
+                    (sz > b.side || (sz == b.side && (key > b.key || (key == b.key && x >= b.x)))))
                     break;
                 nx = fit_next(cr, &pk->grid, x, y);
                 if (nx < 0) {
@@ -517,7 +537,8 @@ static long run_strategy(packer *pk, const strategy_rule *s, int keep, int ntop,
         pk->place[3 * c + 2] = b.r;
         if (b.x + cr->w > cur_x) cur_x = b.x + cr->w;
         if (b.y + cr->h > cur_y) cur_y = b.y + cr->h;
-        if (keep > 0 && ntop == keep && (cur_x > cur_y ? cur_x : cur_y) > topk[keep - 1]) return G + 1;
+        if (keep > 0 && ntop == keep && (cur_x > cur_y ? cur_x : cur_y) > topk[keep - 1])
+            return G + 1;
         grid_mark(&pk->grid, cr, b.x, b.y, pk->k);
     }
     return cur_x > cur_y ? cur_x : cur_y;
@@ -536,7 +557,8 @@ static void topk_insert(long *topk, int *ntop, int keep, long side)
 }
 
 /* Move the charts rigidly to their places (vertices of no chart stay). */
-static void move_charts(const packer *pk, const rotation *rots, double h, int nw, const int *wchart, double *out)
+static void move_charts(const packer *pk, const rotation *rots, double h, int nw, const int *wchart,
+                        double *out)
 {
     for (int v = 0; v < nw; v++) {
         int c = wchart[v];
@@ -554,9 +576,9 @@ static void move_charts(const packer *pk, const rotation *rots, double h, int nw
     }
 }
 
-scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                       int ncharts, int cells, double gap, int strategy, int keep, int *chosen, long *strat_side, double *out,
-                       scaf_error *err)
+scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart,
+                       const int *wchart, int ncharts, int cells, double gap, int strategy,
+                       int keep, int *chosen, long *strat_side, double *out, scaf_error *err)
 {
     scaf_status st = SCAF_OK;
     rotation rots[NROT];
@@ -609,7 +631,8 @@ scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int
         order_charts(&pk, &s, &rng);
         long side = run_strategy(&pk, &s, keep, ntop, topk);
         if (strat_side) strat_side[strat] = side <= G ? side : -1;
-        if (keep > 0 && side <= G && (ntop < keep || side < topk[ntop - 1])) topk_insert(topk, &ntop, keep, side);
+        if (keep > 0 && side <= G && (ntop < keep || side < topk[ntop - 1]))
+            topk_insert(topk, &ntop, keep, side);
         if (side <= G && (best_side < 0 || side < best_side)) {
             best_side = side;
             if (chosen) *chosen = strat;

@@ -38,9 +38,9 @@
  *            square side in cells each strategy reached (-1: not run or
  *            abandoned)
  * out        nw by 2 new positions (write) */
-scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart, const int *wchart,
-                       int ncharts, int cells, double gap, int strategy, int keep, int *chosen, long *strat_side, double *out,
-                       scaf_error *err);
+scaf_status atlas_pack(int nw, const double *uv, int nf, const int *F, const int *chart,
+                       const int *wchart, int ncharts, int cells, double gap, int strategy,
+                       int keep, int *chosen, long *strat_side, double *out, scaf_error *err);
 
 /* Number of strategies tried for ncharts charts. */
 int atlas_pack_strategies(int ncharts);

@@ -32,7 +32,10 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     fputs(", \"resolution\": ", o);
     json_write_number(o, r->resolution > 0 ? r->resolution : NAN);
     fprintf(o, ", \"init\": \"%s\", \"settle_iterations\": %d, \"settle_tolerance\": ",
-            op->init_input ? "input" : (op->base.init == SCAF_INIT_HARMONIC ? "harmonic" : op->base.init == SCAF_INIT_MVC ? "mvc" : "tutte"),
+            op->init_input ? "input"
+                           : (op->base.init == SCAF_INIT_HARMONIC  ? "harmonic"
+                                  : op->base.init == SCAF_INIT_MVC ? "mvc"
+                                                                   : "tutte"),
             op->settle_iterations);
     json_write_number(o, op->settle_tolerance);
     fprintf(o, ", \"compact_iterations\": %d, \"compact_box_scale\": ", op->compact_iterations);
@@ -47,16 +50,20 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     json_write_number(o, op->base.lambda_ratio);
     fputs(", \"compact_lambda_ratio\": ", o);
     json_write_number(o, op->compact_lambda_ratio);
-    fprintf(o, "},\n  \"vertices\": %d,\n  \"faces\": %d,\n  \"charts\": %d,\n  \"split_uvs\": %d,\n", a->nv, a->nf,
-            a->ncharts, a->split_uvs);
+    fprintf(o,
+            "},\n  \"vertices\": %d,\n  \"faces\": %d,\n  \"charts\": %d,\n  \"split_uvs\": %d,\n",
+            a->nv, a->nf, a->ncharts, a->split_uvs);
     fputs("  \"setup_seconds\": ", o);
     json_write_number(o, r->setup_seconds);
     fputs(",\n  \"total_seconds\": ", o);
     json_write_number(o, r->total_seconds);
-    fprintf(o, ",\n  \"settle_iterations_run\": %d,\n  \"compact_iterations_run\": %d,\n", a->settle_done,
-            a->compact_done);
-    fprintf(o, "  \"compaction_kept_earlier_layout\": %s,\n", a->compact_restored ? "true" : "false");
-    fprintf(o, "  \"stop_reason\": \"%s\",\n  \"phase_stop_reasons\": {\"settle\": \"%s\", \"compact\": \"%s\"},\n",
+    fprintf(o, ",\n  \"settle_iterations_run\": %d,\n  \"compact_iterations_run\": %d,\n",
+            a->settle_done, a->compact_done);
+    fprintf(o, "  \"compaction_kept_earlier_layout\": %s,\n",
+            a->compact_restored ? "true" : "false");
+    fprintf(o,
+            "  \"stop_reason\": \"%s\",\n  \"phase_stop_reasons\": {\"settle\": \"%s\", "
+            "\"compact\": \"%s\"},\n",
             scaf_stop_reason_name(atlas_stop_reason(a)), scaf_stop_reason_name(a->settle_stop),
             scaf_stop_reason_name(a->compact_stop));
     fputs("  \"settled_energy\": ", o);
@@ -85,8 +92,8 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     fputs("],\n  \"iterations\": [", o);
     for (int i = 0; i < r->niterations; i++) {
         const atlas_iteration *it = &r->iterations[i];
-        fprintf(o, "%s\n    {\"iteration\": %d, \"phase\": \"%s\", \"energy\": ", i ? "," : "", it->info.iteration,
-                it->phase == ATLAS_COMPACT ? "compact" : "settle");
+        fprintf(o, "%s\n    {\"iteration\": %d, \"phase\": \"%s\", \"energy\": ", i ? "," : "",
+                it->info.iteration, it->phase == ATLAS_COMPACT ? "compact" : "settle");
         json_write_number(o, it->info.energy);
         fputs(", \"total_before\": ", o);
         json_write_number(o, it->info.total_before);
@@ -120,7 +127,8 @@ unsigned atlas_chart_colour(int c)
     return out;
 }
 
-scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, const char *title, scaf_error *err)
+scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, const char *title,
+                            scaf_error *err)
 {
     atomic_file af;
     scaf_status st = atomic_open(&af, path, err);
@@ -128,7 +136,9 @@ scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, 
     FILE *o = af.f;
     const double S = 1000.0, M = 20.0;
     fprintf(o, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-    fprintf(o, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
+    fprintf(o,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 "
+            "0 %.0f %.0f\">\n",
             S + 2 * M, S + 2 * M + 30, S + 2 * M, S + 2 * M + 30);
     fprintf(o, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
     if (title) {
@@ -141,8 +151,10 @@ scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, 
         }
         fputs("</text>\n", o);
     }
-    fprintf(o, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" stroke=\"#888\"/>\n", M,
-            M + 30, S, S);
+    fprintf(o,
+            "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" "
+            "stroke=\"#888\"/>\n",
+            M, M + 30, S, S);
     fprintf(o, "<g stroke-width=\"0.15\" stroke-linejoin=\"round\">\n");
     for (int f = 0; f < a->nf; f++) {
         unsigned col = atlas_chart_colour(a->chart[f]);

@@ -17,9 +17,9 @@
 #include "app/atlas.h"
 
 typedef struct atlas_report {
-    const char *input, *output;   /* may be NULL */
+    const char *input, *output; /* may be NULL */
     const atlas *a;
-    double resolution;            /* texels (0: not given) */
+    double resolution; /* texels (0: not given) */
     double setup_seconds, total_seconds;
     double out_gap, out_efficiency; /* of the written, normalized layout */
     int niterations;
@@ -29,7 +29,8 @@ typedef struct atlas_report {
 scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_error *err);
 
 /* UV nw by 2 normalized positions (faces a->Fw, charts a->chart). */
-scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, const char *title, scaf_error *err);
+scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, const char *title,
+                            scaf_error *err);
 
 /* The picture colour of chart c (>= 0), 0xRRGGBB: golden-ratio hues, so
  * neighbouring ids differ clearly (shared by the SVG and the PNG). */

@@ -27,29 +27,35 @@ static scaf_status rest_is_ccw(int nv, const double *P, int nf, const int *F, sc
     for (int f = 0; f < nf; f++) {
         for (int i = 0; i < 3; i++)
             if (F[3 * f + i] < 0 || F[3 * f + i] >= nv)
-                return err_set(err, SCAF_ERR_MESH, "triangle %d: vertex %d out of range", f + 1, F[3 * f + i] + 1);
-        if (orient2d(P + 2 * (size_t)F[3 * f], P + 2 * (size_t)F[3 * f + 1], P + 2 * (size_t)F[3 * f + 2]) <= 0)
+                return err_set(err, SCAF_ERR_MESH, "triangle %d: vertex %d out of range", f + 1,
+                               F[3 * f + i] + 1);
+        if (orient2d(P + 2 * (size_t)F[3 * f], P + 2 * (size_t)F[3 * f + 1],
+                     P + 2 * (size_t)F[3 * f + 2]) <= 0)
             return err_set(err, SCAF_ERR_MESH,
-                           "triangle %d is not counter-clockwise in the plane (flipped or degenerate): the rest "
+                           "triangle %d is not counter-clockwise in the plane (flipped or "
+                           "degenerate): the rest "
                            "shape must be a planar embedding",
                            f + 1);
     }
     return SCAF_OK;
 }
 
-scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, const int *hv, const double *ht,
-                       int nframes, const double *frames, deform_options *o, double *out, deform_result *r,
-                       scaf_error *err)
+scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, const int *hv,
+                       const double *ht, int nframes, const double *frames, deform_options *o,
+                       double *out, deform_result *r, scaf_error *err)
 {
     deform_options def = deform_options_default();
     if (!o) o = &def;
     memset(r, 0, sizeof *r);
     memcpy(out, P, sizeof(double) * 2 * (size_t)nv);
     if (nframes < 0 || (nframes > 0 && o->frame_iterations < 1))
-        return err_set(err, SCAF_ERR_USAGE, "deform: a drag needs at least one iteration per waypoint");
-    if (o->iterations < 0 || !(o->weight_ratio >= 0.0) || !isfinite(o->weight_ratio) || !(o->tolerance >= 0.0))
-        return err_set(err, SCAF_ERR_USAGE, "deform: iterations >= 0, a finite weight ratio >= 0 and a tolerance >= 0 "
-                                            "are needed");
+        return err_set(err, SCAF_ERR_USAGE,
+                       "deform: a drag needs at least one iteration per waypoint");
+    if (o->iterations < 0 || !(o->weight_ratio >= 0.0) || !isfinite(o->weight_ratio) ||
+        !(o->tolerance >= 0.0))
+        return err_set(err, SCAF_ERR_USAGE,
+                       "deform: iterations >= 0, a finite weight ratio >= 0 and a tolerance >= 0 "
+                       "are needed");
     scaf_status st = rest_is_ccw(nv, P, nf, F, err);
     if (st != SCAF_OK) return st;
     double *V3 = malloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
@@ -82,7 +88,8 @@ scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, co
         int frame = it / (o->frame_iterations > 0 ? o->frame_iterations : 1);
         int dragging = frame < nframes;
         if (it > 0 && it % o->frame_iterations == 0 && frame <= nframes) {
-            st = opt_handle_term_set(&h, nh, hv, dragging ? frames + 2 * (size_t)frame * (size_t)nh : ht, w, err);
+            st = opt_handle_term_set(
+                &h, nh, hv, dragging ? frames + 2 * (size_t)frame * (size_t)nh : ht, w, err);
             if (st != SCAF_OK) break;
         }
         scaf_iteration_info_t info;
@@ -107,7 +114,8 @@ scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, co
             r->stop = SCAF_STOP_ZERO_STEP;
             break;
         }
-        if (o->tolerance > 0.0 && info.total_before - info.total_after < o->tolerance * fabs(info.total_before)) {
+        if (o->tolerance > 0.0 &&
+            info.total_before - info.total_after < o->tolerance * fabs(info.total_before)) {
             r->stop = SCAF_STOP_TOLERANCE;
             break;
         }

@@ -27,11 +27,11 @@
 #include "scaf/scaf.h"
 
 typedef struct deform_options {
-    int iterations;       /* cap (100) */
-    double tolerance;     /* relative total-energy decrease (1e-12; 0 = off) */
-    double weight_ratio;  /* handle weight ratio, dimensionless (see opt/handle_term) */
-    int no_remesh;        /* freeze the scaffold after the first iteration */
-    int frame_iterations; /* iterations per waypoint of a drag (4) */
+    int iterations;                  /* cap (100) */
+    double tolerance;                /* relative total-energy decrease (1e-12; 0 = off) */
+    double weight_ratio;             /* handle weight ratio, dimensionless (see opt/handle_term) */
+    int no_remesh;                   /* freeze the scaffold after the first iteration */
+    int frame_iterations;            /* iterations per waypoint of a drag (4) */
     scaf_param_progress_fn progress; /* after each iteration (may be NULL) */
     void *user;
     /* what the callback may read: the positions after the iteration */
@@ -53,8 +53,8 @@ typedef struct deform_result {
  * frame_iterations iterations before ht (the stopping rules other than the
  * cap apply from then on). out nv by 2 receives the deformed positions. o
  * may be NULL (defaults); o->current is updated while the callback runs. */
-scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, const int *hv, const double *ht,
-                       int nframes, const double *frames, deform_options *o, double *out, deform_result *r,
-                       scaf_error *err);
+scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, const int *hv,
+                       const double *ht, int nframes, const double *frames, deform_options *o,
+                       double *out, deform_result *r, scaf_error *err);
 
 #endif /* SCAF_APP_DEFORM_H */

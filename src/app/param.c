@@ -38,11 +38,11 @@ struct scaf_param {
     int has_mesh;
     int nf;
     int ncharts;
-    int nw;          /* working vertices */
-    int *Fw;         /* nf by 3 working vertex per corner */
-    int pos_exp;     /* the loop works on positions / 2^pos_exp (geom/coord_scale) */
+    int nw;      /* working vertices */
+    int *Fw;     /* nf by 3 working vertex per corner */
+    int pos_exp; /* the loop works on positions / 2^pos_exp (geom/coord_scale) */
     scaf_loop loop;
-    scaf_stop_reason stop; /* why the last run stopped */
+    scaf_stop_reason stop;   /* why the last run stopped */
     opt_handle_term handles; /* soft positional constraints (scaf_param_set_handles) */
     int handles_added;       /* the term is in the loop */
 };
@@ -107,18 +107,25 @@ const char *scaf_phase_name(scaf_phase phase)
 scaf_status param_options_check(const scaf_options_t *o, char *msg, size_t size)
 {
     const char *bad = NULL;
-    if ((int)o->energy < 0 || o->energy > SCAF_ENERGY_CONFORMAL) bad = "energy is not a known energy";
-    else if ((int)o->init < 0 || o->init > SCAF_INIT_MVC) bad = "init is not tutte, harmonic or mvc";
+    if ((int)o->energy < 0 || o->energy > SCAF_ENERGY_CONFORMAL)
+        bad = "energy is not a known energy";
+    else if ((int)o->init < 0 || o->init > SCAF_INIT_MVC)
+        bad = "init is not tutte, harmonic or mvc";
     else if (o->max_iterations < 0) bad = "max_iterations must be >= 0";
-    else if (!(o->tolerance >= 0.0) || !isfinite(o->tolerance)) bad = "tolerance must be a finite number >= 0";
-    else if (!(o->box_scale >= 1.0) || !(o->box_scale <= 1e6)) bad = "box_scale must be in [1, 1e6]";
+    else if (!(o->tolerance >= 0.0) || !isfinite(o->tolerance))
+        bad = "tolerance must be a finite number >= 0";
+    else if (!(o->box_scale >= 1.0) || !(o->box_scale <= 1e6))
+        bad = "box_scale must be in [1, 1e6]";
     else if (o->box_points_per_side < 1 || o->box_points_per_side > 100000)
         bad = "box_points_per_side must be in [1, 100000]";
-    else if (!(o->lambda_ratio > 0.0) || !isfinite(o->lambda_ratio)) bad = "lambda_ratio must be > 0";
+    else if (!(o->lambda_ratio > 0.0) || !isfinite(o->lambda_ratio))
+        bad = "lambda_ratio must be > 0";
     else if (!(o->min_angle_deg >= 0.0) || !(o->min_angle_deg <= 30.0))
         bad = "min_angle_deg must be in [0, 30]";
-    else if (!(o->step_fraction > 0.0) || !(o->step_fraction < 1.0)) bad = "step_fraction must be in (0, 1)";
-    else if ((int)o->solver < 0 || o->solver > SCAF_SOLVER_NEWTON) bad = "solver is not auto, slim or newton";
+    else if (!(o->step_fraction > 0.0) || !(o->step_fraction < 1.0))
+        bad = "step_fraction must be in (0, 1)";
+    else if ((int)o->solver < 0 || o->solver > SCAF_SOLVER_NEWTON)
+        bad = "solver is not auto, slim or newton";
     if (!bad) return SCAF_OK;
     if (msg && size) snprintf(msg, size, "invalid option: %s", bad);
     return SCAF_ERR_USAGE;
@@ -200,22 +207,31 @@ int param_last_scaffold(const scaf_param_t *p, scaffold_view *v)
 
 /* ---- set_mesh ------------------------------------------------------------ */
 
-scaf_status param_check_arrays(const double *V, int nv, const int *F, int nf, const double *UV, int nuv,
-                               const int *FT, scaf_error *err)
+scaf_status param_check_arrays(const double *V, int nv, const int *F, int nf, const double *UV,
+                               int nuv, const int *FT, scaf_error *err)
 {
-    if (nv <= 0 || nf <= 0) return err_set(err, SCAF_ERR_USAGE, "the mesh is empty (%d vertices, %d faces)", nv, nf);
-    if (!V || !F) return err_set(err, SCAF_ERR_USAGE, "%s is NULL (%d vertices, %d faces)", !V ? "V" : "F", nv, nf);
+    if (nv <= 0 || nf <= 0)
+        return err_set(err, SCAF_ERR_USAGE, "the mesh is empty (%d vertices, %d faces)", nv, nf);
+    if (!V || !F)
+        return err_set(err, SCAF_ERR_USAGE, "%s is NULL (%d vertices, %d faces)", !V ? "V" : "F",
+                       nv, nf);
     if (nv > INT_MAX / 3 || nf > INT_MAX / 3 || nuv > INT_MAX / 2)
-        return err_set(err, SCAF_ERR_USAGE, "the mesh is too large for int indices (%d vertices, %d faces, %d UVs)", nv, nf, nuv);
+        return err_set(err, SCAF_ERR_USAGE,
+                       "the mesh is too large for int indices (%d vertices, %d faces, %d UVs)", nv,
+                       nf, nuv);
     if (nuv < 0 || (nuv > 0 && (!UV || !FT)) || (nuv == 0 && FT))
         return err_set(err, SCAF_ERR_USAGE, "UV and FT must be given together (nuv = %d)", nuv);
     for (int i = 0; i < 3 * nv; i++)
-        if (!isfinite(V[i])) return err_set(err, SCAF_ERR_MESH, "vertex %d has a non-finite coordinate", i / 3);
+        if (!isfinite(V[i]))
+            return err_set(err, SCAF_ERR_MESH, "vertex %d has a non-finite coordinate", i / 3);
     for (int i = 0; i < 3 * nf; i++) {
         if (F[i] < 0 || F[i] >= nv)
-            return err_set(err, SCAF_ERR_USAGE, "face %d references vertex %d, but the mesh has %d vertices", i / 3, F[i], nv);
+            return err_set(err, SCAF_ERR_USAGE,
+                           "face %d references vertex %d, but the mesh has %d vertices", i / 3,
+                           F[i], nv);
         if (nuv > 0 && (FT[i] < 0 || FT[i] >= nuv))
-            return err_set(err, SCAF_ERR_USAGE, "face %d references UV %d, but there are %d UVs", i / 3, FT[i], nuv);
+            return err_set(err, SCAF_ERR_USAGE, "face %d references UV %d, but there are %d UVs",
+                           i / 3, FT[i], nuv);
     }
     return SCAF_OK;
 }
@@ -227,7 +243,8 @@ static double area3(const double *a, const double *b, const double *c)
         u[d] = b[d] - a[d];
         v[d] = c[d] - a[d];
     }
-    double cr[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    double cr[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0]};
     return 0.5 * sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
 }
 
@@ -250,7 +267,8 @@ static scaf_status split_fans(mesh *m, int **FTs, scaf_error *err)
 /* The charts of m (positions at unit scale, 2^-pos_exp times V_in, the
  * caller's), each checked to be a disk (possibly with holes) with no
  * degenerate triangle; errors name the chart. */
-static scaf_status find_charts(const mesh *m, const double *V_in, int pos_exp, mesh_charts *ch, scaf_error *err)
+static scaf_status find_charts(const mesh *m, const double *V_in, int pos_exp, mesh_charts *ch,
+                               scaf_error *err)
 {
     scaf_status st = mesh_charts_compute(m, ch, err);
     if (st != SCAF_OK) return st;
@@ -262,12 +280,16 @@ static scaf_status find_charts(const mesh *m, const double *V_in, int pos_exp, m
     for (int f = 0; f < m->nf; f++) {
         const int *t = m->F + 3 * f;
         /* degenerate: the one exact definition `scaf info` counts too */
-        if (tri3_is_degenerate(V_in + 3 * (size_t)t[0], V_in + 3 * (size_t)t[1], V_in + 3 * (size_t)t[2]))
-            return err_set(err, SCAF_ERR_MESH, "chart %d: face %d is degenerate (zero 3D area)", ch->cx.face_group[f], f);
+        if (tri3_is_degenerate(V_in + 3 * (size_t)t[0], V_in + 3 * (size_t)t[1],
+                               V_in + 3 * (size_t)t[2]))
+            return err_set(err, SCAF_ERR_MESH, "chart %d: face %d is degenerate (zero 3D area)",
+                           ch->cx.face_group[f], f);
         double a = area3(V + 3 * (size_t)t[0], V + 3 * (size_t)t[1], V + 3 * (size_t)t[2]);
         if (!(a >= DBL_MIN) || !isfinite(a))
-            return err_set(err, SCAF_ERR_MESH, "chart %d: face %d is not degenerate, but too small next to the "
-                           "mesh's largest coordinate (2^%d) for double precision: its area underflows",
+            return err_set(err, SCAF_ERR_MESH,
+                           "chart %d: face %d is not degenerate, but too small next to the "
+                           "mesh's largest coordinate (2^%d) for double precision: its area "
+                           "underflows",
                            ch->cx.face_group[f], f, pos_exp);
     }
     return SCAF_OK;
@@ -279,8 +301,8 @@ static scaf_status find_charts(const mesh *m, const double *V_in, int pos_exp, m
  * vertices are contiguous. Fw (nf by 3) gets the working vertex of each
  * corner, widx (nidx) the working vertex of each index (-1: unused),
  * *W3 (nw by 3, allocated) their 3D positions. */
-static scaf_status working_vertices(const mesh *m, const mesh_charts *ch, const int *IDX, int nidx, int *widx,
-                                    int *Fw, int *nw_out, double **W3, scaf_error *err)
+static scaf_status working_vertices(const mesh *m, const mesh_charts *ch, const int *IDX, int nidx,
+                                    int *widx, int *Fw, int *nw_out, double **W3, scaf_error *err)
 {
     for (int i = 0; i < nidx; i++) widx[i] = -1;
     int nw = 0;
@@ -298,7 +320,8 @@ static scaf_status working_vertices(const mesh *m, const mesh_charts *ch, const 
     if (!*W3) return err_nomem(err, "working mesh");
     for (int f = 0; f < m->nf; f++)
         for (int j = 0; j < 3; j++)
-            memcpy(*W3 + 3 * (size_t)Fw[3 * f + j], m->V + 3 * (size_t)m->F[3 * f + j], sizeof(double) * 3);
+            memcpy(*W3 + 3 * (size_t)Fw[3 * f + j], m->V + 3 * (size_t)m->F[3 * f + j],
+                   sizeof(double) * 3);
     return SCAF_OK;
 }
 
@@ -306,9 +329,9 @@ static scaf_status working_vertices(const mesh *m, const mesh_charts *ch, const 
  * holes, the best of up to OUTER_TRIES loops on the circle) and store its
  * UV in uv (working vertices) and the circle's radius in *radius. local
  * (nw entries, all -1) is scratch, left all -1. */
-static scaf_status embed_chart(const mesh_charts *ch, int c, const int *IDX, const int *widx, const int *Fw,
-                               const double *W3, opt_embed_method method, int *local, double *uv, double *radius,
-                               scaf_error *err)
+static scaf_status embed_chart(const mesh_charts *ch, int c, const int *IDX, const int *widx,
+                               const int *Fw, const double *W3, opt_embed_method method, int *local,
+                               double *uv, double *radius, scaf_error *err)
 {
     int f0 = ch->cx.group_face_start[c], f1 = ch->cx.group_face_start[c + 1], mf = f1 - f0;
     int l0 = ch->chart_loop_start[c], l1 = ch->chart_loop_start[c + 1];
@@ -381,8 +404,8 @@ done:
 /* Several charts: move chart c's circle (radius up to the largest) to
  * cell c of a grid of 2.5 * rmax cells, so the circles do not touch.
  * chart_of_w (nw) is scratch. */
-static void place_on_grid(const mesh_charts *ch, int nf, const int *Fw, int nw, const double *radius,
-                          int *chart_of_w, double *uv)
+static void place_on_grid(const mesh_charts *ch, int nf, const int *Fw, int nw,
+                          const double *radius, int *chart_of_w, double *uv)
 {
     if (ch->ncharts <= 1) return;
     double rmax = 0.0;
@@ -401,7 +424,9 @@ static void place_on_grid(const mesh_charts *ch, int nf, const int *Fw, int nw, 
 
 static opt_embed_method embed_method(scaf_init init)
 {
-    return init == SCAF_INIT_HARMONIC ? OPT_EMBED_HARMONIC : init == SCAF_INIT_MVC ? OPT_EMBED_MVC : OPT_EMBED_TUTTE;
+    return init == SCAF_INIT_HARMONIC ? OPT_EMBED_HARMONIC
+        : init == SCAF_INIT_MVC       ? OPT_EMBED_MVC
+                                      : OPT_EMBED_TUTTE;
 }
 
 scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const int *F, int nf,
@@ -450,7 +475,8 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     }
     for (int i = 0; i < nw; i++) local[i] = -1;
     for (int c = 0; c < ch.ncharts; c++) {
-        st = embed_chart(&ch, c, IDX, widx, p->Fw, W3, embed_method(p->opt.init), local, uv, &radius[c], err);
+        st = embed_chart(&ch, c, IDX, widx, p->Fw, W3, embed_method(p->opt.init), local, uv,
+                         &radius[c], err);
         if (st != SCAF_OK) goto fail;
     }
     place_on_grid(&ch, nf, p->Fw, nw, radius, local, uv);
@@ -482,14 +508,17 @@ done:
 
 /* ---- run and results ----------------------------------------------------- */
 
-scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_fn progress, void *user)
+scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_fn progress,
+                           void *user)
 {
     if (!p) return SCAF_ERR_USAGE;
     err_clear(&p->err);
-    if (!p->has_mesh) return err_set(&p->err, SCAF_ERR_USAGE, "no mesh: call scaf_param_set_mesh first");
+    if (!p->has_mesh)
+        return err_set(&p->err, SCAF_ERR_USAGE, "no mesh: call scaf_param_set_mesh first");
     p->loop.opt = param_loop_options(&p->opt);
     int n = iterations > 0 ? iterations : p->opt.max_iterations;
-    p->stop = n > 0 ? SCAF_STOP_ITERATIONS : SCAF_STOP_NONE; /* unless a rule below stops it first */
+    p->stop =
+        n > 0 ? SCAF_STOP_ITERATIONS : SCAF_STOP_NONE; /* unless a rule below stops it first */
     for (int it = 0; it < n; it++) {
         scaf_iteration_info_t info;
         scaf_status st = scaf_loop_step(&p->loop, &info, &p->err);
@@ -499,8 +528,8 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
         }
         if (progress && progress(&info, user)) {
             p->stop = SCAF_STOP_CANCELLED;
-            return err_set(&p->err, SCAF_ERR_CANCELLED, "stopped by the progress callback after iteration %d",
-                           info.iteration);
+            return err_set(&p->err, SCAF_ERR_CANCELLED,
+                           "stopped by the progress callback after iteration %d", info.iteration);
         }
         if (info.step == 0.0) { /* no descent left */
             p->stop = SCAF_STOP_ZERO_STEP;
@@ -523,7 +552,8 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
          * being minimized) or the reported E stops decreasing noticeably. */
         double dec = (info.energy_before - info.energy) / info.energy_before;
         double tdec = (info.total_before - info.total_after) / info.total_before;
-        if (p->opt.tolerance > 0.0 && ((dec >= 0.0 && dec < p->opt.tolerance) || tdec < p->opt.tolerance)) {
+        if (p->opt.tolerance > 0.0 &&
+            ((dec >= 0.0 && dec < p->opt.tolerance) || tdec < p->opt.tolerance)) {
             p->stop = SCAF_STOP_TOLERANCE;
             break;
         }
@@ -536,18 +566,21 @@ scaf_status scaf_param_set_handles(scaf_param_t *p, int n, const int *idx, const
 {
     if (!p) return SCAF_ERR_USAGE;
     err_clear(&p->err);
-    if (!p->has_mesh) return err_set(&p->err, SCAF_ERR_USAGE, "no mesh: call scaf_param_set_mesh first");
+    if (!p->has_mesh)
+        return err_set(&p->err, SCAF_ERR_USAGE, "no mesh: call scaf_param_set_mesh first");
     if (n < 0 || (n > 0 && (!idx || !targets)))
-        return err_set(&p->err, SCAF_ERR_USAGE, "handles: n >= 0 and, when n > 0, idx and targets are needed");
+        return err_set(&p->err, SCAF_ERR_USAGE,
+                       "handles: n >= 0 and, when n > 0, idx and targets are needed");
     if (!(weight_ratio >= 0.0) || !isfinite(weight_ratio))
-        return err_set(&p->err, SCAF_ERR_USAGE, "handles: the weight ratio must be a finite number >= 0");
+        return err_set(&p->err, SCAF_ERR_USAGE,
+                       "handles: the weight ratio must be a finite number >= 0");
     /* targets in the loop's units (positions / 2^pos_exp, see set_mesh) */
     double *t = malloc(sizeof(double) * 2 * (size_t)(n > 0 ? n : 1));
     if (!t) return err_nomem(&p->err, "handles");
     for (size_t i = 0; i < 2 * (size_t)n; i++) t[i] = ldexp(targets[i], -p->pos_exp);
     if (!p->handles_added) opt_handle_term_init(&p->handles, 2, p->nw);
-    scaf_status st =
-        opt_handle_term_set(&p->handles, n, idx, t, opt_handle_weight(weight_ratio, p->loop.total_area, n), &p->err);
+    scaf_status st = opt_handle_term_set(
+        &p->handles, n, idx, t, opt_handle_weight(weight_ratio, p->loop.total_area, n), &p->err);
     free(t);
     if (st != SCAF_OK || p->handles_added) return st;
     opt_obj_term term = opt_handle_term_make(&p->handles);
@@ -557,10 +590,19 @@ scaf_status scaf_param_set_handles(scaf_param_t *p, int n, const int *idx, const
     return st;
 }
 
-double scaf_param_energy(const scaf_param_t *p) { return p && p->has_mesh ? scaf_loop_energy(&p->loop) : NAN; }
+double scaf_param_energy(const scaf_param_t *p)
+{
+    return p && p->has_mesh ? scaf_loop_energy(&p->loop) : NAN;
+}
 int scaf_param_chart_count(const scaf_param_t *p) { return p ? p->ncharts : 0; }
-int scaf_param_iterations(const scaf_param_t *p) { return p && p->has_mesh ? p->loop.iterations : 0; }
-scaf_stop_reason scaf_param_stop_reason(const scaf_param_t *p) { return p ? p->stop : SCAF_STOP_NONE; }
+int scaf_param_iterations(const scaf_param_t *p)
+{
+    return p && p->has_mesh ? p->loop.iterations : 0;
+}
+scaf_stop_reason scaf_param_stop_reason(const scaf_param_t *p)
+{
+    return p ? p->stop : SCAF_STOP_NONE;
+}
 int scaf_param_uv_count(const scaf_param_t *p) { return p ? p->nw : 0; }
 
 scaf_status scaf_param_get_uv(const scaf_param_t *p, double *UV, int *FT)
@@ -579,6 +621,9 @@ scaf_status scaf_param_get_uv(const scaf_param_t *p, double *UV, int *FT)
     /* the context is the caller's heap object: its message may change even
      * through this const pointer, so scaf_param_error says why */
     return err_set(&((scaf_param_t *)p)->err, SCAF_ERR_NUMERIC,
-                   "UV %zu cannot be written exactly in the mesh's units (2^%d times %g would %s); scale the "
-                   "mesh by a power of 2", bad / 2, p->pos_exp, p->loop.uv[bad], p->pos_exp > 0 ? "overflow" : "be subnormal");
+                   "UV %zu cannot be written exactly in the mesh's units (2^%d times %g would %s); "
+                   "scale the "
+                   "mesh by a power of 2",
+                   bad / 2, p->pos_exp, p->loop.uv[bad],
+                   p->pos_exp > 0 ? "overflow" : "be subnormal");
 }

@@ -47,7 +47,7 @@ scaf_status param_options_check(const scaf_options_t *o, char *msg, size_t size)
 /* Validate the arrays of scaf_param_set_mesh (same arguments): non-empty,
  * non-NULL, UV and FT together, indices in range (SCAF_ERR_USAGE naming
  * the face and index), finite positions (SCAF_ERR_MESH naming the vertex). */
-scaf_status param_check_arrays(const double *V, int nv, const int *F, int nf, const double *UV, int nuv,
-                               const int *FT, scaf_error *err);
+scaf_status param_check_arrays(const double *V, int nv, const int *F, int nf, const double *UV,
+                               int nuv, const int *FT, scaf_error *err);
 
 #endif /* SCAF_APP_PARAM_H */

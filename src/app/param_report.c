@@ -57,13 +57,19 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
     fputs(",\n  \"stop_reason\": ", o);
     json_write_string(o, scaf_stop_reason_name(r->stop_reason));
     if (op) {
-        fprintf(o, ",\n  \"options\": {\"energy\": \"%s\", \"init\": \"%s\", \"max_iterations\": %d, \"tolerance\": ",
-                energy_name(op->energy), op->init == SCAF_INIT_HARMONIC ? "harmonic" : op->init == SCAF_INIT_MVC ? "mvc" : "tutte", op->max_iterations);
+        fprintf(o,
+                ",\n  \"options\": {\"energy\": \"%s\", \"init\": \"%s\", \"max_iterations\": %d, "
+                "\"tolerance\": ",
+                energy_name(op->energy),
+                op->init == SCAF_INIT_HARMONIC  ? "harmonic"
+                    : op->init == SCAF_INIT_MVC ? "mvc"
+                                                : "tutte",
+                op->max_iterations);
         json_write_number(o, op->tolerance);
         fputs(", \"box_scale\": ", o);
         json_write_number(o, op->box_scale);
-        fprintf(o, ", \"box_square\": %s, \"box_points_per_side\": %d, \"lambda_ratio\": ", op->box_square ? "true" : "false",
-                op->box_points_per_side);
+        fprintf(o, ", \"box_square\": %s, \"box_points_per_side\": %d, \"lambda_ratio\": ",
+                op->box_square ? "true" : "false", op->box_points_per_side);
         json_write_number(o, op->lambda_ratio);
         fputs(", \"min_angle_deg\": ", o);
         json_write_number(o, op->min_angle_deg);
@@ -71,7 +77,8 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
         json_write_number(o, op->step_fraction);
         fprintf(o, ", \"solver\": \"%s\"}", solver_name(op->solver));
     }
-    fprintf(o, ",\n  \"mesh\": {\"vertices\": %d, \"faces\": %d, \"charts\": %d}", r->vertices, r->faces, r->charts);
+    fprintf(o, ",\n  \"mesh\": {\"vertices\": %d, \"faces\": %d, \"charts\": %d}", r->vertices,
+            r->faces, r->charts);
     fputs(",\n  \"setup_seconds\": ", o);
     json_write_number(o, r->setup_seconds);
     fputs(",\n  \"initial_energy\": ", o);
@@ -119,8 +126,8 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
         json_write_number(o, it->step);
         fprintf(o, ", \"solver\": \"%s\", \"decrement\": ", solver_name(it->solver));
         json_write_number(o, it->decrement);
-        fprintf(o, ", \"scaffold_triangles\": %d, \"scaffold_vertices\": %d, \"seconds\": ", it->scaffold_triangles,
-                it->scaffold_vertices);
+        fprintf(o, ", \"scaffold_triangles\": %d, \"scaffold_vertices\": %d, \"seconds\": ",
+                it->scaffold_triangles, it->scaffold_vertices);
         json_write_number(o, it->seconds);
         fputs(", \"phase_seconds\": {", o);
         for (int k = 0; k < SCAF_PHASE_COUNT; k++) {

@@ -13,15 +13,15 @@
 #include "base/error.h"
 
 typedef struct param_report {
-    const char *input;                 /* may be NULL */
-    const char *output;                /* may be NULL */
+    const char *input;  /* may be NULL */
+    const char *output; /* may be NULL */
     const scaf_options_t *options;
     int vertices, faces, charts;
-    double setup_seconds;              /* reading + charts + initial embedding */
+    double setup_seconds; /* reading + charts + initial embedding */
     double initial_energy;
     double final_energy;
-    const char *status;                /* "ok", "cancelled", ... */
-    scaf_stop_reason stop_reason;      /* why the run stopped */
+    const char *status;           /* "ok", "cancelled", ... */
+    scaf_stop_reason stop_reason; /* why the run stopped */
     int niterations;
     const scaf_iteration_info_t *iterations; /* niterations entries */
 } param_report;

@@ -8,7 +8,8 @@
 
 #include "base/atomic_file.h"
 
-scaf_status png_write_rgba(const char *path, int width, int height, const unsigned char *rgba, scaf_error *err)
+scaf_status png_write_rgba(const char *path, int width, int height, const unsigned char *rgba,
+                           scaf_error *err)
 {
     if (width < 1 || height < 1 || !rgba)
         return err_set(err, SCAF_ERR_USAGE, "%s: empty picture (%d x %d)", path, width, height);
@@ -22,7 +23,8 @@ scaf_status png_write_rgba(const char *path, int width, int height, const unsign
     img.height = (png_uint_32)height;
     img.format = PNG_FORMAT_RGBA;
     if (!png_image_write_to_stdio(&img, a.f, 0, rgba, 0, NULL)) {
-        err_set(err, SCAF_ERR_IO, "%s: PNG encoding failed: %s", path, img.message[0] ? img.message : "libpng error");
+        err_set(err, SCAF_ERR_IO, "%s: PNG encoding failed: %s", path,
+                img.message[0] ? img.message : "libpng error");
         png_image_free(&img);
         atomic_abort(&a);
         return SCAF_ERR_IO;

@@ -13,6 +13,7 @@
 /* path    output file
  * width, height  picture size in pixels (>= 1)
  * rgba    height rows of width pixels, 4 bytes R G B A each, top row first */
-scaf_status png_write_rgba(const char *path, int width, int height, const unsigned char *rgba, scaf_error *err);
+scaf_status png_write_rgba(const char *path, int width, int height, const unsigned char *rgba,
+                           scaf_error *err);
 
 #endif /* SCAF_APP_PNG_WRITE_H */

@@ -12,7 +12,8 @@ typedef struct stop_reason_entry {
 static const stop_reason_entry TABLE[] = {
     {SCAF_STOP_NONE, "not_run", "did not run"},
     {SCAF_STOP_ITERATIONS, "iteration_limit", "the iteration cap was reached"},
-    {SCAF_STOP_TOLERANCE, "tolerance", "the energy decreased by less than the tolerance in one iteration"},
+    {SCAF_STOP_TOLERANCE, "tolerance",
+     "the energy decreased by less than the tolerance in one iteration"},
     {SCAF_STOP_ZERO_STEP, "zero_step",
      "no step lowers the energy any more: converged to floating-point precision"},
     {SCAF_STOP_CANCELLED, "cancelled", "cancelled"},

@@ -36,8 +36,8 @@ scaf_status uv_split_fans(int nf, const int *FT, int nuv, int *FT_out, int *nuv_
     int *from = malloc(sizeof(int) * ((size_t)nuv + nc + 1));
     int nhe = 0;
     scaf_status st = parent && order && assigned && claimed && from
-                         ? half_edges_sort(nuv, (int)(nc / 3), FT, NULL, order, &nhe, err)
-                         : SCAF_ERR_NOMEM;
+        ? half_edges_sort(nuv, (int)(nc / 3), FT, NULL, order, &nhe, err)
+        : SCAF_ERR_NOMEM;
     if (st != SCAF_OK) {
         free(parent);
         free(order);

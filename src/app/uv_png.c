@@ -21,8 +21,8 @@ uv_png_options uv_png_options_default(void)
     return o;
 }
 
-static scaf_status outline(uv_raster *r, const uv_raster_frame *fr, const double *uv, int nf, const int *F,
-                           scaf_error *err)
+static scaf_status outline(uv_raster *r, const uv_raster_frame *fr, const double *uv, int nf,
+                           const int *F, scaf_error *err)
 {
     size_t ne = 3 * (size_t)nf;
     if (ne > INT32_MAX) return err_nomem(err, "picture outline");
@@ -38,28 +38,31 @@ static scaf_status outline(uv_raster *r, const uv_raster_frame *fr, const double
         size_t e = i + 1;
         while (e < ne && k[e] == k[i]) e++;
         if (e - i == 1)
-            uv_raster_line(r, fr, uv + 2 * (size_t)(k[i] >> 32), uv + 2 * (size_t)(k[i] & 0xffffffffu), 0x303030u);
+            uv_raster_line(r, fr, uv + 2 * (size_t)(k[i] >> 32),
+                           uv + 2 * (size_t)(k[i] & 0xffffffffu), 0x303030u);
         i = e;
     }
     free(k);
     return SCAF_OK;
 }
 
-scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, const int *F, const unsigned *colour,
-                         int nv, const double *V, const int *F3, const uv_png_options *o, scaf_error *err)
+scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, const int *F,
+                         const unsigned *colour, int nv, const double *V, const int *F3,
+                         const uv_png_options *o, scaf_error *err)
 {
     uv_png_options d = uv_png_options_default();
     if (!o) o = &d;
     if (o->size < UV_PNG_MIN_SIZE || o->size > UV_PNG_MAX_SIZE)
-        return err_set(err, SCAF_ERR_USAGE, "%s: picture size %d is outside %d..%d pixels", path, o->size,
-                       UV_PNG_MIN_SIZE, UV_PNG_MAX_SIZE);
+        return err_set(err, SCAF_ERR_USAGE, "%s: picture size %d is outside %d..%d pixels", path,
+                       o->size, UV_PNG_MIN_SIZE, UV_PNG_MAX_SIZE);
     if (o->checker > 0.0 && (!V || !F3 || nv < 1))
         return err_set(err, SCAF_ERR_USAGE, "%s: the checker needs the 3D positions", path);
     for (int f = 0; f < nf; f++)
         for (int j = 0; j < 3; j++) {
             int t = F[3 * f + j], v = F3 ? F3[3 * f + j] : 0;
             if (t < 0 || t >= nuv || (o->checker > 0.0 && (v < 0 || v >= nv)))
-                return err_set(err, SCAF_ERR_USAGE, "%s: triangle %d has an index out of range", path, f);
+                return err_set(err, SCAF_ERR_USAGE, "%s: triangle %d has an index out of range",
+                               path, f);
         }
     double lo[2] = {0.0, 0.0}, hi[2] = {1.0, 1.0};
     int margin = 0;
@@ -86,7 +89,8 @@ scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, co
          * depend on the mesh's units, and its period cannot overflow */
         Vs = malloc(sizeof(double) * 3 * (size_t)nv);
         if (!Vs) return err_nomem(err, "checker positions");
-        coord_scale_apply(Vs, V, 3, nv, 3 * (size_t)nf, F3, coord_scale_exponent(V, 3, 3 * (size_t)nf, F3));
+        coord_scale_apply(Vs, V, 3, nv, 3 * (size_t)nf, F3,
+                          coord_scale_exponent(V, 3, 3 * (size_t)nf, F3));
         double blo[3] = {INFINITY, INFINITY, INFINITY}, bhi[3] = {-INFINITY, -INFINITY, -INFINITY};
         for (size_t i = 0; i < 3 * (size_t)nf; i++)
             for (int c = 0; c < 3; c++) {
@@ -94,8 +98,9 @@ scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, co
                 if (x < blo[c]) blo[c] = x;
                 if (x > bhi[c]) bhi[c] = x;
             }
-        double diag = sqrt((bhi[0] - blo[0]) * (bhi[0] - blo[0]) + (bhi[1] - blo[1]) * (bhi[1] - blo[1]) +
-                           (bhi[2] - blo[2]) * (bhi[2] - blo[2]));
+        double diag =
+            sqrt((bhi[0] - blo[0]) * (bhi[0] - blo[0]) + (bhi[1] - blo[1]) * (bhi[1] - blo[1]) +
+                 (bhi[2] - blo[2]) * (bhi[2] - blo[2]));
         if (diag > 0.0 && isfinite(diag)) {
             m.xyz = Vs;
             m.F3 = F3;

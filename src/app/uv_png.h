@@ -18,11 +18,11 @@
 #define UV_PNG_MAX_SIZE 16384
 
 typedef struct uv_png_options {
-    int size;         /* pixels of the longer side, UV_PNG_MIN_SIZE..UV_PNG_MAX_SIZE */
-    int unit_square;  /* 1: the picture is the unit UV square (a texture);
+    int size;        /* pixels of the longer side, UV_PNG_MIN_SIZE..UV_PNG_MAX_SIZE */
+    int unit_square; /* 1: the picture is the unit UV square (a texture);
                          0: it fits the layout with a small margin */
-    double checker;   /* squares across the 3D bounding-box diagonal; 0 = none */
-    int outline;      /* 1: draw the chart boundaries */
+    double checker;  /* squares across the 3D bounding-box diagonal; 0 = none */
+    int outline;     /* 1: draw the chart boundaries */
 } uv_png_options;
 
 /* The defaults: 1024 pixels, fitted, no checker, outlines. */
@@ -35,7 +35,8 @@ uv_png_options uv_png_options_default(void);
  * nv, V      nv by 3 3D positions, or 0 / NULL (needed for the checker)
  * F3         nf by 3 indices into V (same triangles as F), or NULL
  * o          options (NULL: defaults) */
-scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, const int *F, const unsigned *colour,
-                         int nv, const double *V, const int *F3, const uv_png_options *o, scaf_error *err);
+scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, const int *F,
+                         const unsigned *colour, int nv, const double *V, const int *F3,
+                         const uv_png_options *o, scaf_error *err);
 
 #endif /* SCAF_APP_UV_PNG_H */

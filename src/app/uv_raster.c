@@ -20,7 +20,8 @@ scaf_status uv_raster_new(uv_raster *r, int width, int height, scaf_error *err)
 {
     r->width = r->height = 0;
     r->rgba = NULL;
-    if (width < 1 || height < 1) return err_set(err, SCAF_ERR_USAGE, "picture size %d x %d", width, height);
+    if (width < 1 || height < 1)
+        return err_set(err, SCAF_ERR_USAGE, "picture size %d x %d", width, height);
     size_t n = (size_t)width * (size_t)height * 4;
     r->rgba = malloc(n);
     if (!r->rgba) return err_nomem(err, "picture buffer");
@@ -40,8 +41,8 @@ void uv_raster_free(uv_raster *r)
     r->width = r->height = 0;
 }
 
-uv_raster_frame uv_raster_fit(const double lo[2], const double hi[2], int long_side, int margin, int *width,
-                              int *height)
+uv_raster_frame uv_raster_fit(const double lo[2], const double hi[2], int long_side, int margin,
+                              int *width, int *height)
 {
     double w = hi[0] - lo[0], h = hi[1] - lo[1];
     /* a flat, empty or non-finite box draws at scale long_side (no NaN sizes) */
@@ -53,7 +54,8 @@ uv_raster_frame uv_raster_fit(const double lo[2], const double hi[2], int long_s
     if (margin < 0 || 2 * margin >= long_side) margin = (long_side - 1) / 2;
     int inner = long_side - 2 * margin;
     uv_raster_frame fr = {lo[0], hi[1], inner / ext, margin, margin};
-    int W = (int)ceil(w * fr.scale - 1e-9) + 2 * margin, H = (int)ceil(h * fr.scale - 1e-9) + 2 * margin;
+    int W = (int)ceil(w * fr.scale - 1e-9) + 2 * margin,
+        H = (int)ceil(h * fr.scale - 1e-9) + 2 * margin;
     *width = W < 1 ? 1 : (W > long_side ? long_side : W);
     *height = H < 1 ? 1 : (H > long_side ? long_side : H);
     return fr;
@@ -125,12 +127,14 @@ void uv_raster_fill(uv_raster *r, const uv_raster_frame *fr, const uv_raster_mes
                 if (p[k][d] > hi[d]) hi[d] = p[k][d];
             }
         int i0, i1, j0, j1;
-        if (!span(lo[0], hi[0], r->width, &i0, &i1) || !span(lo[1], hi[1], r->height, &j0, &j1)) continue;
+        if (!span(lo[0], hi[0], r->width, &i0, &i1) || !span(lo[1], hi[1], r->height, &j0, &j1))
+            continue;
         int own[3];
         for (int k = 0; k < 3; k++) own[k] = owns(p[k], p[(k + 1) % 3]);
         unsigned light = m->colour[f], dark = uv_raster_checker_dark(light);
         /* twice the signed area, for barycentric weights */
-        double area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+        double area =
+            (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
         for (int j = j0; j <= j1; j++)
             for (int i = i0; i <= i1; i++) {
                 double c[2] = {i + 0.5, j + 0.5};
@@ -146,7 +150,8 @@ void uv_raster_fill(uv_raster *r, const uv_raster_frame *fr, const uv_raster_mes
                     double w[3];
                     for (int k = 0; k < 3; k++) {
                         const double *a = p[(k + 1) % 3], *b = p[(k + 2) % 3];
-                        w[k] = ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / area;
+                        w[k] =
+                            ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / area;
                     }
                     for (int d = 0; d < 3; d++) {
                         double X = w[0] * x[0][d] + w[1] * x[1][d] + w[2] * x[2][d];
@@ -160,7 +165,8 @@ void uv_raster_fill(uv_raster *r, const uv_raster_frame *fr, const uv_raster_mes
     }
 }
 
-void uv_raster_line(uv_raster *r, const uv_raster_frame *fr, const double a[2], const double b[2], unsigned rgb)
+void uv_raster_line(uv_raster *r, const uv_raster_frame *fr, const double a[2], const double b[2],
+                    unsigned rgb)
 {
     double p[2], q[2];
     to_pixel(fr, a, p);

@@ -14,9 +14,11 @@
 unsigned uv_svg_colour(double energy)
 {
     /* t = 0 at isometry (E = 4), 1 at E = 4 * 2^4 and above. */
-    double t = (isfinite(energy) && energy > 4.0) ? log2(energy / 4.0) / 4.0 : (isfinite(energy) ? 0.0 : 1.0);
+    double t = (isfinite(energy) && energy > 4.0) ? log2(energy / 4.0) / 4.0
+                                                  : (isfinite(energy) ? 0.0 : 1.0);
     if (t > 1.0) t = 1.0;
-    static const double stops[4][3] = {{0.80, 0.90, 1.00}, {0.55, 0.85, 0.55}, {1.00, 0.85, 0.20}, {0.85, 0.10, 0.10}};
+    static const double stops[4][3] = {
+        {0.80, 0.90, 1.00}, {0.55, 0.85, 0.55}, {1.00, 0.85, 0.20}, {0.85, 0.10, 0.10}};
     double x = t * 3.0;
     int i = (int)x;
     if (i > 2) i = 2;
@@ -70,11 +72,14 @@ scaf_status uv_svg_write(const char *path, int nuv, const double *uv, int nf, co
     if (st != SCAF_OK) return st;
     FILE *o = a.f;
     fprintf(o, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-    fprintf(o, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
+    fprintf(o,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 "
+            "0 %.0f %.0f\">\n",
             W, H, W, H);
     fprintf(o, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
     if (title) {
-        fprintf(o, "<text x=\"%.0f\" y=\"20\" font-family=\"sans-serif\" font-size=\"14\">", margin);
+        fprintf(o, "<text x=\"%.0f\" y=\"20\" font-family=\"sans-serif\" font-size=\"14\">",
+                margin);
         for (const char *c = title; *c; c++) {
             if (*c == '<') fputs("&lt;", o);
             else if (*c == '>') fputs("&gt;", o);
@@ -91,16 +96,18 @@ scaf_status uv_svg_write(const char *path, int nuv, const double *uv, int nf, co
             const double *p0 = pos(scaffold->T[3 * t], nuv, uv, scaffold);
             const double *p1 = pos(scaffold->T[3 * t + 1], nuv, uv, scaffold);
             const double *p2 = pos(scaffold->T[3 * t + 2], nuv, uv, scaffold);
-            fprintf(o, "<polygon points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", X(p0), Y(p0), X(p1), Y(p1), X(p2), Y(p2));
+            fprintf(o, "<polygon points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", X(p0), Y(p0), X(p1),
+                    Y(p1), X(p2), Y(p2));
         }
         fprintf(o, "</g>\n");
     }
     fprintf(o, "<g stroke=\"#303030\" stroke-width=\"0.25\" stroke-linejoin=\"round\">\n");
     for (int f = 0; f < nf; f++) {
-        const double *p0 = uv + 2 * (size_t)F[3 * f], *p1 = uv + 2 * (size_t)F[3 * f + 1], *p2 = uv + 2 * (size_t)F[3 * f + 2];
+        const double *p0 = uv + 2 * (size_t)F[3 * f], *p1 = uv + 2 * (size_t)F[3 * f + 1],
+                     *p2 = uv + 2 * (size_t)F[3 * f + 2];
         unsigned c = energy ? uv_svg_colour(energy[f]) : 0xcce5ffu;
-        fprintf(o, "<polygon fill=\"#%06x\" points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", c, X(p0), Y(p0), X(p1),
-                Y(p1), X(p2), Y(p2));
+        fprintf(o, "<polygon fill=\"#%06x\" points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", c, X(p0),
+                Y(p0), X(p1), Y(p1), X(p2), Y(p2));
     }
     fprintf(o, "</g>\n</svg>\n");
 #undef X

@@ -13,8 +13,8 @@
 
 typedef struct uv_svg_scaffold {
     int ntri;
-    const int *T;          /* ntri by 3 ids: < nuv index uv, else extra */
-    const double *extra;   /* (max id - nuv + 1) by 2 scaffold-only positions */
+    const int *T;        /* ntri by 3 ids: < nuv index uv, else extra */
+    const double *extra; /* (max id - nuv + 1) by 2 scaffold-only positions */
 } uv_svg_scaffold;
 
 /* path      output file

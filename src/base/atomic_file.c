@@ -43,7 +43,8 @@ static scaf_status follow_links(const char *path, char *cur, size_t size, int *e
             *mode = st.st_mode;
             return SCAF_OK;
         }
-        if (hop == MAX_LINK_HOPS) return err_set(err, SCAF_ERR_IO, "%s: too many levels of symbolic links", path);
+        if (hop == MAX_LINK_HOPS)
+            return err_set(err, SCAF_ERR_IO, "%s: too many levels of symbolic links", path);
         char link[4096];
         ssize_t n = readlink(cur, link, sizeof link - 1);
         if (n < 0) return err_set(err, SCAF_ERR_IO, "%s: %s", path, strerror(errno));
@@ -56,7 +57,8 @@ static scaf_status follow_links(const char *path, char *cur, size_t size, int *e
     }
 }
 
-static scaf_status resolve(const char *path, char *out, size_t size, int *exists, mode_t *mode, scaf_error *err)
+static scaf_status resolve(const char *path, char *out, size_t size, int *exists, mode_t *mode,
+                           scaf_error *err)
 {
     if (!path || !*path) return err_set(err, SCAF_ERR_USAGE, "no output path");
     char cur[4096];
@@ -67,7 +69,8 @@ static scaf_status resolve(const char *path, char *out, size_t size, int *exists
     char *slash = strrchr(cur, '/');
     const char *name = slash ? slash + 1 : cur;
     if (!*name || !strcmp(name, ".") || !strcmp(name, ".."))
-        return err_set(err, SCAF_ERR_IO, "%s is a directory, not a regular file: not replaced", path);
+        return err_set(err, SCAF_ERR_IO, "%s is a directory, not a regular file: not replaced",
+                       path);
     const char *dir = ".";
     if (slash == cur) dir = "/";
     else if (slash) {
@@ -75,7 +78,9 @@ static scaf_status resolve(const char *path, char *out, size_t size, int *exists
         dir = cur;
     }
     char *real = realpath(dir, NULL);
-    if (!real) return err_set(err, SCAF_ERR_IO, "%s: cannot use the folder '%s': %s", path, dir, strerror(errno));
+    if (!real)
+        return err_set(err, SCAF_ERR_IO, "%s: cannot use the folder '%s': %s", path, dir,
+                       strerror(errno));
     int n = snprintf(out, size, "%s/%s", strcmp(real, "/") ? real : "", name);
     free(real);
     if (n < 0 || (size_t)n >= size) return err_set(err, SCAF_ERR_IO, "%s: path too long", path);
@@ -129,7 +134,8 @@ scaf_status atomic_finish(atomic_file *a, scaf_error *err)
     if (bad) {
         remove(a->tmp);
         a->tmp[0] = '\0';
-        return err_set(err, SCAF_ERR_IO, "%s: write failed (disk full?)", a->name ? a->name : a->path);
+        return err_set(err, SCAF_ERR_IO, "%s: write failed (disk full?)",
+                       a->name ? a->name : a->path);
     }
     a->finished = 1;
     return SCAF_OK;
@@ -137,13 +143,14 @@ scaf_status atomic_finish(atomic_file *a, scaf_error *err)
 
 scaf_status atomic_rename(atomic_file *a, scaf_error *err)
 {
-    if (!a->finished || !a->tmp[0]) return err_set(err, SCAF_ERR_IO, "%s: not written", a->name ? a->name : a->path);
+    if (!a->finished || !a->tmp[0])
+        return err_set(err, SCAF_ERR_IO, "%s: not written", a->name ? a->name : a->path);
     if (rename(a->tmp, a->path) != 0) {
         int e = errno;
         remove(a->tmp);
         a->tmp[0] = '\0';
-        return err_set(err, SCAF_ERR_IO, "%s: cannot rename the temporary file: %s", a->name ? a->name : a->path,
-                       strerror(e));
+        return err_set(err, SCAF_ERR_IO, "%s: cannot rename the temporary file: %s",
+                       a->name ? a->name : a->path, strerror(e));
     }
     a->tmp[0] = '\0';
     a->finished = 0;

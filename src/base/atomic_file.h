@@ -27,10 +27,10 @@
 
 typedef struct atomic_file {
     FILE *f;
-    char tmp[4096];    /* the temporary file, "" when there is none */
-    char path[4096];   /* the resolved target: absolute, links followed */
-    const char *name;  /* the path as given, for messages */
-    int finished;      /* closed and synced, waiting for atomic_rename */
+    char tmp[4096];   /* the temporary file, "" when there is none */
+    char path[4096];  /* the resolved target: absolute, links followed */
+    const char *name; /* the path as given, for messages */
+    int finished;     /* closed and synced, waiting for atomic_rename */
 } atomic_file;
 
 /* The file that writing `path` replaces, written into out (size bytes):

@@ -27,8 +27,7 @@ scaf_status err_set(scaf_error *err, scaf_status code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
 /* Put "context: " in front of the current message (e.g. the file name). */
-void err_prefix(scaf_error *err, const char *fmt, ...)
-    __attribute__((format(printf, 2, 3)));
+void err_prefix(scaf_error *err, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Convenience for allocation failure: sets SCAF_ERR_NOMEM naming what. */
 scaf_status err_nomem(scaf_error *err, const char *what);

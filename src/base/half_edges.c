@@ -21,12 +21,13 @@ int half_edges_index_count(int nf, const int *F)
     return n;
 }
 
-scaf_status half_edges_sort(int n, int nf, const int *F, const unsigned char *skip, int *order, int *count,
-                            scaf_error *err)
+scaf_status half_edges_sort(int n, int nf, const int *F, const unsigned char *skip, int *order,
+                            int *count, scaf_error *err)
 {
     *count = 0;
     if (n < 0 || nf < 0 || nf > INT_MAX / 3)
-        return err_set(err, SCAF_ERR_USAGE, "half-edges: %d faces over %d indices is out of range", nf, n);
+        return err_set(err, SCAF_ERR_USAGE, "half-edges: %d faces over %d indices is out of range",
+                       nf, n);
     size_t nh = 3 * (size_t)nf;
     int *start = calloc((size_t)n + 2, sizeof *start);
     uint64_t *keys = malloc((nh ? nh : 1) * sizeof *keys);

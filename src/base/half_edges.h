@@ -47,8 +47,8 @@ static inline int half_edges_same_edge(const int *F, int g, int h)
  *   count  out: how many (3 nf minus 3 per skipped face)
  * Every index of a face not skipped must be in [0, n). Fails only with
  * SCAF_ERR_NOMEM (or SCAF_ERR_USAGE on a negative n or nf). */
-scaf_status half_edges_sort(int n, int nf, const int *F, const unsigned char *skip, int *order, int *count,
-                            scaf_error *err);
+scaf_status half_edges_sort(int n, int nf, const int *F, const unsigned char *skip, int *order,
+                            int *count, scaf_error *err);
 
 /* One past the largest index of F (0 for no faces): n for
  * half_edges_sort when the caller does not know it. */

@@ -39,7 +39,7 @@ void bigint_from_double(bigint *r, double x, int emin)
     double m = frexp(fabs(x), &e);
     uint64_t mi = (uint64_t)ldexp(m, 53);
     int shift = e - 53 - emin; /* x = mi * 2^(e-53), a multiple of 2^emin */
-    while (shift < 0) {         /* trailing zero bits of mi absorb it */
+    while (shift < 0) {        /* trailing zero bits of mi absorb it */
         mi >>= 1;
         shift++;
     }

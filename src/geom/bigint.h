@@ -19,8 +19,8 @@
 #define BIGINT_LIMBS 340
 
 typedef struct bigint {
-    int sign;  /* -1, 0, +1 */
-    int n;     /* used limbs of the magnitude, 0 when sign == 0 */
+    int sign; /* -1, 0, +1 */
+    int n;    /* used limbs of the magnitude, 0 when sign == 0 */
     uint32_t d[BIGINT_LIMBS];
 } bigint;
 

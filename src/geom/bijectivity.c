@@ -35,7 +35,7 @@ static inline double dmax(double a, double b) { return a > b ? a : b; }
 static int on_segment(const double *a, const double *b, const double *c)
 {
     return dmin(a[0], b[0]) <= c[0] && c[0] <= dmax(a[0], b[0]) && dmin(a[1], b[1]) <= c[1] &&
-           c[1] <= dmax(a[1], b[1]);
+        c[1] <= dmax(a[1], b[1]);
 }
 
 int bij_segments_meet(const double p1[2], const double p2[2], const double q1[2],
@@ -123,8 +123,8 @@ static int cmp_int(const void *a, const void *b)
 /* ---- the check ---- */
 
 typedef struct seg {
-    int a, b;         /* UV indices, in the direction of their triangle */
-    int lox, loy;     /* first grid cell of the bounding box */
+    int a, b;     /* UV indices, in the direction of their triangle */
+    int lox, loy; /* first grid cell of the bounding box */
     int hix, hiy;
 } seg;
 
@@ -168,8 +168,8 @@ static scaf_status nomem(work *w, scaf_error *err, const char *what)
 
 /* Count crossing and touching boundary segment pairs with a grid. */
 static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
-                                 unsigned char *contact, const int *loop_of_vertex,
-                                 bij_report *rep, scaf_error *err)
+                                 unsigned char *contact, const int *loop_of_vertex, bij_report *rep,
+                                 scaf_error *err)
 {
     if (nseg < 2) return SCAF_OK;
     double minx = INFINITY, miny = INFINITY, maxx = -INFINITY, maxy = -INFINITY;
@@ -205,7 +205,8 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
     if (!w->cell_start || !w->cell_items) return err_nomem(err, "boundary segment grid");
     for (int i = 0; i < nseg; i++)
         for (int y = segs[i].loy; y <= segs[i].hiy; y++)
-            for (int x = segs[i].lox; x <= segs[i].hix; x++) w->cell_start[(size_t)y * g.nx + x + 1]++;
+            for (int x = segs[i].lox; x <= segs[i].hix; x++)
+                w->cell_start[(size_t)y * g.nx + x + 1]++;
     for (size_t c = 0; c < ncell; c++) w->cell_start[c + 1] += w->cell_start[c];
     int *fill = malloc((ncell + 1) * sizeof *fill);
     if (!fill) return err_nomem(err, "boundary segment grid");
@@ -249,10 +250,8 @@ static scaf_status test_segments(const double *UV, seg *segs, int nseg, work *w,
                         continue;
                     }
                     int m = bij_segments_meet(p1, p2, q1, q2);
-                    if (m == 1)
-                        rep->boundary_crossings++;
-                    else if (m == 2)
-                        rep->boundary_touchings++;
+                    if (m == 1) rep->boundary_crossings++;
+                    else if (m == 2) rep->boundary_touchings++;
                     if (m) contact[loop_of_vertex[s->a]] = contact[loop_of_vertex[t->a]] = 1;
                 }
             }
@@ -325,7 +324,8 @@ static scaf_status test_nesting(const double *UV, int nf, const int *F, work *w,
     for (int t = 0; t < nf; t++) {
         if (w->ori[t] == 0) continue;
         const int *c = F + 3 * (size_t)t;
-        const double *a = UV + 2 * (size_t)c[0], *b = UV + 2 * (size_t)c[1], *d = UV + 2 * (size_t)c[2];
+        const double *a = UV + 2 * (size_t)c[0], *b = UV + 2 * (size_t)c[1],
+                     *d = UV + 2 * (size_t)c[2];
         double tminx = dmin(a[0], dmin(b[0], d[0])), tmaxx = dmax(a[0], dmax(b[0], d[0]));
         double tminy = dmin(a[1], dmin(b[1], d[1])), tmaxy = dmax(a[1], dmax(b[1], d[1]));
         if (tmaxx < minx || tminx > maxx || tmaxy < miny || tminy > maxy) continue;
@@ -482,11 +482,11 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
     w.tri_bnd = calloc((size_t)nf + 1, 1);
     w.bvert = calloc((size_t)nuv + 1, 1);
     w.parent = malloc(((size_t)nf + 1) * sizeof *w.parent);
-    if (!w.hedges || !w.tri_bnd || !w.bvert || !w.parent)
-        return nomem(&w, err, "edge table");
+    if (!w.hedges || !w.tri_bnd || !w.bvert || !w.parent) return nomem(&w, err, "edge table");
     uf_init(w.parent, nf);
     int nhe = 0;
-    if (half_edges_sort(nuv, nf, F, NULL, w.hedges, &nhe, err) != SCAF_OK) return nomem(&w, err, "edge table");
+    if (half_edges_sort(nuv, nf, F, NULL, w.hedges, &nhe, err) != SCAF_OK)
+        return nomem(&w, err, "edge table");
     int nseg = 0, segcap = 0;
     for (int i = 0; i < nhe;) {
         int j = i + 1;
@@ -605,9 +605,8 @@ scaf_status bij_check(int nuv, const double *UV, int nf, const int *F, const int
     }
 
     rep->bijective = rep->flipped == 0 && rep->degenerate == 0 && rep->boundary_crossings == 0 &&
-                     rep->boundary_touchings == 0 && rep->boundary_foldbacks == 0 &&
-                     rep->folded_edges == 0 && rep->corner_overlaps == 0 &&
-                     rep->nonmanifold_edges == 0 && rep->nested_loops == 0;
+        rep->boundary_touchings == 0 && rep->boundary_foldbacks == 0 && rep->folded_edges == 0 &&
+        rep->corner_overlaps == 0 && rep->nonmanifold_edges == 0 && rep->nested_loops == 0;
     work_free(&w);
     return SCAF_OK;
 }

@@ -43,15 +43,15 @@
 #include "base/error.h"
 
 typedef struct bij_report {
-    int triangles;          /* number of triangles checked */
-    int positive;           /* counter-clockwise, nonzero area */
-    int flipped;            /* clockwise (including mirrored charts) */
-    int degenerate;         /* exactly zero area (incl. repeated indices) */
-    int charts;             /* charts (given, or by shared UV edges) */
-    int mirrored_charts;    /* charts with clockwise and no ccw triangles */
-    int mixed_charts;       /* charts with both ccw and clockwise ones */
-    int boundary_edges;     /* UV edges used by exactly one triangle */
-    int boundary_loops;     /* connected components of boundary edges */
+    int triangles;                /* number of triangles checked */
+    int positive;                 /* counter-clockwise, nonzero area */
+    int flipped;                  /* clockwise (including mirrored charts) */
+    int degenerate;               /* exactly zero area (incl. repeated indices) */
+    int charts;                   /* charts (given, or by shared UV edges) */
+    int mirrored_charts;          /* charts with clockwise and no ccw triangles */
+    int mixed_charts;             /* charts with both ccw and clockwise ones */
+    int boundary_edges;           /* UV edges used by exactly one triangle */
+    int boundary_loops;           /* connected components of boundary edges */
     long long boundary_crossings; /* properly crossing segment pairs that
                                      share no UV index */
     long long boundary_touchings; /* other contacts of segment pairs that
@@ -62,17 +62,17 @@ typedef struct bij_report {
     long long boundary_foldbacks; /* pairs of segments sharing one UV index
                                      that overlap along a line (the boundary
                                      turns back on itself by 180 degrees) */
-    int folded_edges;       /* interior edges with both triangles on one side */
-    int nonmanifold_edges;  /* UV edges used by more than two triangles */
-    int nested_loops;       /* boundary loops without any boundary contact
+    int folded_edges;             /* interior edges with both triangles on one side */
+    int nonmanifold_edges;        /* UV edges used by more than two triangles */
+    int nested_loops;             /* boundary loops without any boundary contact
                                that have a vertex in the interior of another
                                chart's region (or of their own chart) */
-    int corner_overlaps;     /* boundary UV points where the corners of the
+    int corner_overlaps;          /* boundary UV points where the corners of the
                                triangles using the point overlap: fans
                                joined only at the point (the boundary passes
                                more than once), or a triangle reaching into
                                another chart's fan by a shared index */
-    int bijective;          /* 1 when all of the above counts of defects are
+    int bijective;                /* 1 when all of the above counts of defects are
                                zero (flipped, degenerate, crossings,
                                touchings, foldbacks, folds, non-manifold,
                                nesting, corner overlaps) */

@@ -40,8 +40,7 @@ cdt_options cdt_default_options(void)
 
 void cdt_output_free(cdt_output *out)
 {
-    if (!out)
-        return;
+    if (!out) return;
     free(out->points);
     free(out->triangles);
     free(out->neighbors);
@@ -62,12 +61,9 @@ static void radix_sort(keyed *a, keyed *tmp, int n)
 {
     for (int shift = 0; shift < 32; shift += 8) {
         int count[257] = {0};
-        for (int i = 0; i < n; i++)
-            count[((a[i].key >> shift) & 255u) + 1]++;
-        for (int b = 0; b < 256; b++)
-            count[b + 1] += count[b];
-        for (int i = 0; i < n; i++)
-            tmp[count[(a[i].key >> shift) & 255u]++] = a[i];
+        for (int i = 0; i < n; i++) count[((a[i].key >> shift) & 255u) + 1]++;
+        for (int b = 0; b < 256; b++) count[b + 1] += count[b];
+        for (int i = 0; i < n; i++) tmp[count[(a[i].key >> shift) & 255u]++] = a[i];
         memcpy(a, tmp, (size_t)n * sizeof *a);
     }
 }
@@ -97,11 +93,9 @@ static uint32_t hilbert_key(uint32_t x, uint32_t y)
 static int brio_order(const double *p, int n, const double lo[2], double ext, int *order)
 {
     keyed *k = malloc((size_t)(n > 0 ? n : 1) * 2 * sizeof *k);
-    if (!k)
-        return -1;
+    if (!k) return -1;
     unsigned r = 0x2545f491u;
-    for (int i = 0; i < n; i++)
-        order[i] = i;
+    for (int i = 0; i < n; i++) order[i] = i;
     for (int i = n - 1; i > 0; i--) {
         r ^= r << 13;
         r ^= r >> 17;
@@ -125,8 +119,7 @@ static int brio_order(const double *p, int n, const double lo[2], double ext, in
             k[i].idx = v;
         }
         radix_sort(k, k + n, m);
-        for (int i = 0; i < m; i++)
-            order[start + i] = k[i].idx;
+        for (int i = 0; i < m; i++) order[start + i] = k[i].idx;
         end = start;
     }
     free(k);
@@ -145,8 +138,7 @@ static int pairs_push(pairs *q, int a, int b)
     if (q->n >= q->cap) {
         int nc = q->cap ? 2 * q->cap : 64;
         int *nv = realloc(q->v, (size_t)nc * 2 * sizeof(int));
-        if (!nv)
-            return -1;
+        if (!nv) return -1;
         q->v = nv;
         q->cap = nc;
     }
@@ -159,7 +151,7 @@ static int pairs_push(pairs *q, int a, int b)
 typedef struct recover_ctx {
     cdt_mesh *m;
     const cdt_input *in;
-    unsigned char *split;   /* effective splittable flags (merged for duplicates) */
+    unsigned char *split; /* effective splittable flags (merged for duplicates) */
     pairs cross, fresh;
 } recover_ctx;
 
@@ -193,16 +185,13 @@ static scaf_status restore_delaunay(recover_ctx *ctx, scaf_error *err)
     pairs *q = &ctx->fresh;
     long budget = 64L * m->nt + 1024; /* Lawson terminates; this only guards bugs */
     while (q->n > 0) {
-        if (--budget < 0)
-            return err_set(err, SCAF_ERR_INTERNAL, "Delaunay flips did not converge");
+        if (--budget < 0) return err_set(err, SCAF_ERR_INTERNAL, "Delaunay flips did not converge");
         q->n--;
         int u = q->v[2 * q->n], w = q->v[2 * q->n + 1];
         int c = cdt_mesh_find_edge(m, u, w);
-        if (c < 0 || m->S[c] >= 0 || m->N[c] < 0)
-            continue;
+        if (c < 0 || m->S[c] >= 0 || m->N[c] < 0) continue;
         int e = m->N[c];
-        if (!(cdt_incircle_t(m, c / 3, m->xy + 2 * m->V[e]) > 0))
-            continue;
+        if (!(cdt_incircle_t(m, c / 3, m->xy + 2 * m->V[e]) > 0)) continue;
         int x = m->V[c], y = m->V[e];
         cdt_mesh_flip(m, c);
         /* the four outer edges of the new pair may now be non-Delaunay */
@@ -219,8 +208,7 @@ static scaf_status recover_segment(recover_ctx *ctx, int s, scaf_error *err)
     const cdt_input *in = ctx->in;
     int a = in->segments[2 * s], b = in->segments[2 * s + 1];
     int c = cdt_mesh_find_edge(m, a, b);
-    if (c < 0)
-        c = cdt_mesh_find_edge(m, b, a);
+    if (c < 0) c = cdt_mesh_find_edge(m, b, a);
     if (c >= 0) {
         if (m->S[c] >= 0) { /* the same segment given twice: keep one, merged */
             int s0 = m->S[c] >> 1;
@@ -228,8 +216,7 @@ static scaf_status recover_segment(recover_ctx *ctx, int s, scaf_error *err)
             return SCAF_OK;
         }
         m->S[c] = 2 * s;
-        if (m->N[c] >= 0)
-            m->S[m->N[c]] = 2 * s;
+        if (m->N[c] >= 0) m->S[m->N[c]] = 2 * s;
         return SCAF_OK;
     }
 
@@ -250,32 +237,28 @@ static scaf_status recover_segment(recover_ctx *ctx, int s, scaf_error *err)
             break;
         }
         int n = m->N[cdt_next(ca)];
-        if (n < 0)
-            break;
+        if (n < 0) break;
         ca = cdt_next(n);
     } while (ca != c0 && ++guard < 3L * m->nt + 3);
     if (found < 0)
-        return err_set(err, SCAF_ERR_INTERNAL, "segment %d (%d->%d): no triangle at point %d "
-                       "points towards point %d", s, a, b, a, b);
+        return err_set(err, SCAF_ERR_INTERNAL,
+                       "segment %d (%d->%d): no triangle at point %d "
+                       "points towards point %d",
+                       s, a, b, a, b);
 
     /* walk to b collecting the crossed edges */
     ctx->cross.n = ctx->cross.head = 0;
     int cc = found; /* corner at a; the crossed edge faces it: u -> w */
     for (;;) {
-        if (m->S[cc] >= 0)
-            return err_crossing(err, in, s, m->S[cc] >> 1);
-        if (pairs_push(&ctx->cross, u, w))
-            return err_nomem(err, "segment recovery");
+        if (m->S[cc] >= 0) return err_crossing(err, in, s, m->S[cc] >> 1);
+        if (pairs_push(&ctx->cross, u, w)) return err_nomem(err, "segment recovery");
         int e = m->N[cc];
-        if (e < 0)
-            return err_set(err, SCAF_ERR_INTERNAL, "segment %d left the triangulation", s);
+        if (e < 0) return err_set(err, SCAF_ERR_INTERNAL, "segment %d left the triangulation", s);
         int x = m->V[e];
-        if (x == b)
-            break;
+        if (x == b) break;
         double ox = cdt_orient(m, a, b, x);
         if (ox == 0) {
-            if (x < in->npoints)
-                return err_point_on_segment(err, in, s, x);
+            if (x < in->npoints) return err_point_on_segment(err, in, s, x);
             return err_set(err, SCAF_ERR_INTERNAL, "segment %d runs through a helper vertex", s);
         }
         if (ox > 0) { /* x left: leave through u -> x, facing w */
@@ -293,8 +276,10 @@ static scaf_status recover_segment(recover_ctx *ctx, int s, scaf_error *err)
     long budget = 64L * q->n * (q->n + 4) + 1024;
     while (q->head < q->n) {
         if (--budget < 0)
-            return err_set(err, SCAF_ERR_INTERNAL, "segment %d (%d->%d): recovery did not "
-                           "converge", s, a, b);
+            return err_set(err, SCAF_ERR_INTERNAL,
+                           "segment %d (%d->%d): recovery did not "
+                           "converge",
+                           s, a, b);
         int eu = q->v[2 * q->head], ew = q->v[2 * q->head + 1];
         q->head++;
         int ce = cdt_mesh_find_edge(m, eu, ew);
@@ -310,8 +295,7 @@ static scaf_status recover_segment(recover_ctx *ctx, int s, scaf_error *err)
                 q->n -= q->head;
                 q->head = 0;
             }
-            if (pairs_push(q, eu, ew))
-                return err_nomem(err, "segment recovery");
+            if (pairs_push(q, eu, ew)) return err_nomem(err, "segment recovery");
             continue;
         }
         cdt_mesh_flip(m, ce);
@@ -320,15 +304,12 @@ static scaf_status recover_segment(recover_ctx *ctx, int s, scaf_error *err)
             double ox = cdt_orient(m, a, b, x), oy = cdt_orient(m, a, b, y);
             still = (ox > 0 && oy < 0) || (ox < 0 && oy > 0);
         }
-        if (pairs_push(still ? q : &ctx->fresh, x, y))
-            return err_nomem(err, "segment recovery");
+        if (pairs_push(still ? q : &ctx->fresh, x, y)) return err_nomem(err, "segment recovery");
     }
     c = cdt_mesh_find_edge(m, a, b);
-    if (c < 0)
-        return err_set(err, SCAF_ERR_INTERNAL, "segment %d (%d->%d) not recovered", s, a, b);
+    if (c < 0) return err_set(err, SCAF_ERR_INTERNAL, "segment %d (%d->%d) not recovered", s, a, b);
     m->S[c] = 2 * s;
-    if (m->N[c] >= 0)
-        m->S[m->N[c]] = 2 * s;
+    if (m->N[c] >= 0) m->S[m->N[c]] = 2 * s;
     return restore_delaunay(ctx, err);
 }
 
@@ -336,14 +317,12 @@ static scaf_status recover_segment(recover_ctx *ctx, int s, scaf_error *err)
 
 static int flood(cdt_mesh *m, int t0, unsigned char from, unsigned char to, int **stk, int *cap)
 {
-    if (m->reg[t0] != from)
-        return 0;
+    if (m->reg[t0] != from) return 0;
     int n = 0;
     m->reg[t0] = to;
     if (*cap < 1) {
         *stk = malloc(64 * sizeof(int));
-        if (!*stk)
-            return -1;
+        if (!*stk) return -1;
         *cap = 64;
     }
     (*stk)[n++] = t0;
@@ -351,13 +330,11 @@ static int flood(cdt_mesh *m, int t0, unsigned char from, unsigned char to, int 
         int t = (*stk)[--n];
         for (int k = 0; k < 3; k++) {
             int c = 3 * t + k, nb = m->N[c];
-            if (nb < 0 || m->S[c] >= 0 || m->reg[nb / 3] != from)
-                continue;
+            if (nb < 0 || m->S[c] >= 0 || m->reg[nb / 3] != from) continue;
             m->reg[nb / 3] = to;
             if (n >= *cap) {
                 int *ns = realloc(*stk, (size_t)(*cap) * 2 * sizeof(int));
-                if (!ns)
-                    return -1;
+                if (!ns) return -1;
                 *stk = ns;
                 *cap *= 2;
             }
@@ -370,8 +347,7 @@ static int flood(cdt_mesh *m, int t0, unsigned char from, unsigned char to, int 
 static int classify(cdt_mesh *m, const cdt_input *in, int n)
 {
     int *stk = NULL, cap = 0;
-    for (int t = 0; t < m->nt; t++)
-        m->reg[t] = CDT_REG_DOMAIN;
+    for (int t = 0; t < m->nt; t++) m->reg[t] = CDT_REG_DOMAIN;
     for (int t = 0; t < m->nt; t++) {
         const int *v = m->V + 3 * t;
         if (v[0] >= n || v[1] >= n || v[2] >= n)
@@ -382,8 +358,7 @@ static int classify(cdt_mesh *m, const cdt_input *in, int n)
     }
     if (in->left_is_hole)
         for (int s = 0; s < in->nsegments; s++) {
-            if (!in->left_is_hole[s])
-                continue;
+            if (!in->left_is_hole[s]) continue;
             int c = cdt_mesh_find_edge(m, in->segments[2 * s], in->segments[2 * s + 1]);
             if (c >= 0 && flood(m, c / 3, CDT_REG_DOMAIN, CDT_REG_HOLE, &stk, &cap)) {
                 free(stk);
@@ -408,18 +383,14 @@ static scaf_status write_output(const cdt_mesh *m, const cdt_input *in, cdt_outp
 {
     int n = in->npoints, nout = m->nv - 3;
     int *map = malloc((size_t)(m->nt > 0 ? m->nt : 1) * sizeof(int));
-    if (!map)
-        return err_nomem(err, "triangulation output");
+    if (!map) return err_nomem(err, "triangulation output");
     int nt = 0, nss = 0;
-    for (int t = 0; t < m->nt; t++)
-        map[t] = m->reg[t] == CDT_REG_DOMAIN ? nt++ : -1;
+    for (int t = 0; t < m->nt; t++) map[t] = m->reg[t] == CDT_REG_DOMAIN ? nt++ : -1;
     for (int t = 0; t < m->nt; t++) {
-        if (map[t] < 0)
-            continue;
+        if (map[t] < 0) continue;
         for (int k = 0; k < 3; k++) {
             int c = 3 * t + k, nb = m->N[c];
-            if (m->S[c] >= 0 && (nb < 0 || map[nb / 3] < 0 || nb / 3 > t))
-                nss++;
+            if (m->S[c] >= 0 && (nb < 0 || map[nb / 3] < 0 || nb / 3 > t)) nss++;
         }
     }
     out->npoints = nout;
@@ -438,11 +409,10 @@ static scaf_status write_output(const cdt_mesh *m, const cdt_input *in, cdt_outp
     memcpy(out->points, m->xy, (size_t)n * 2 * sizeof(double));
     if (nout > n)
         memcpy(out->points + 2 * n, m->xy + 2 * (n + 3), (size_t)(nout - n) * 2 * sizeof(double));
-#define OUTV(v) ((v) < n ? (v) : (v) - 3)
+#define OUTV(v) ((v) < n ? (v) : (v)-3)
     int j = 0;
     for (int t = 0; t < m->nt; t++) {
-        if (map[t] < 0)
-            continue;
+        if (map[t] < 0) continue;
         int o = map[t];
         for (int k = 0; k < 3; k++) {
             int c = 3 * t + k, nb = m->N[c];
@@ -454,7 +424,7 @@ static scaf_status write_output(const cdt_mesh *m, const cdt_input *in, cdt_outp
                 const double *pa = in->points + 2 * in->segments[2 * s];
                 const double *pb = in->points + 2 * in->segments[2 * s + 1];
                 double dot = (m->xy[2 * w] - m->xy[2 * u]) * (pb[0] - pa[0]) +
-                             (m->xy[2 * w + 1] - m->xy[2 * u + 1]) * (pb[1] - pa[1]);
+                    (m->xy[2 * w + 1] - m->xy[2 * u + 1]) * (pb[1] - pa[1]);
                 if (dot < 0) {
                     int tmp = u;
                     u = w;
@@ -473,7 +443,8 @@ static scaf_status write_output(const cdt_mesh *m, const cdt_input *in, cdt_outp
     /* every output triangle counter-clockwise (exactly), neighbours mutual */
     for (int t = 0; t < nt; t++) {
         const int *v = out->triangles + 3 * t;
-        assert(orient2d(out->points + 2 * v[0], out->points + 2 * v[1], out->points + 2 * v[2]) > 0.0);
+        assert(orient2d(out->points + 2 * v[0], out->points + 2 * v[1], out->points + 2 * v[2]) >
+               0.0);
         for (int k = 0; k < 3; k++) {
             int nb = out->neighbors[3 * t + k];
             assert(nb < 0 || out->neighbors[3 * nb] == t || out->neighbors[3 * nb + 1] == t ||
@@ -497,25 +468,34 @@ static scaf_status check_input(const cdt_input *in, const cdt_options *opt, scaf
                        in->npoints);
     if (!(opt->min_angle_deg >= 0 && opt->min_angle_deg < 60) || !(opt->max_area >= 0) ||
         opt->max_steiner < 0)
-        return err_set(err, SCAF_ERR_USAGE, "cdt: options out of range (min angle %g must be in "
-                       "[0, 60), max area %g >= 0, max Steiner %d >= 0)", opt->min_angle_deg,
-                       opt->max_area, opt->max_steiner);
+        return err_set(err, SCAF_ERR_USAGE,
+                       "cdt: options out of range (min angle %g must be in "
+                       "[0, 60), max area %g >= 0, max Steiner %d >= 0)",
+                       opt->min_angle_deg, opt->max_area, opt->max_steiner);
     for (int i = 0; i < in->npoints; i++)
         if (!isfinite(in->points[2 * i]) || !isfinite(in->points[2 * i + 1]))
-            return err_set(err, SCAF_ERR_MESH, "point %d has a non-finite coordinate "
-                           "(%g, %g)", i, in->points[2 * i], in->points[2 * i + 1]);
+            return err_set(err, SCAF_ERR_MESH,
+                           "point %d has a non-finite coordinate "
+                           "(%g, %g)",
+                           i, in->points[2 * i], in->points[2 * i + 1]);
         else if (fabs(in->points[2 * i]) > 0x1p500 || fabs(in->points[2 * i + 1]) > 0x1p500)
             /* the enclosing triangle is 64 times larger: keep it finite */
-            return err_set(err, SCAF_ERR_MESH, "point %d (%g, %g) is too large (|coordinate| "
-                           "> 2^500)", i, in->points[2 * i], in->points[2 * i + 1]);
+            return err_set(err, SCAF_ERR_MESH,
+                           "point %d (%g, %g) is too large (|coordinate| "
+                           "> 2^500)",
+                           i, in->points[2 * i], in->points[2 * i + 1]);
     for (int s = 0; s < in->nsegments; s++) {
         int a = in->segments[2 * s], b = in->segments[2 * s + 1];
         if (a < 0 || b < 0 || a >= in->npoints || b >= in->npoints)
-            return err_set(err, SCAF_ERR_MESH, "segment %d (%d->%d) references a point "
-                           "outside 0..%d", s, a, b, in->npoints - 1);
+            return err_set(err, SCAF_ERR_MESH,
+                           "segment %d (%d->%d) references a point "
+                           "outside 0..%d",
+                           s, a, b, in->npoints - 1);
         if (a == b)
-            return err_set(err, SCAF_ERR_MESH, "segment %d is degenerate: both ends are "
-                           "point %d", s, a);
+            return err_set(err, SCAF_ERR_MESH,
+                           "segment %d is degenerate: both ends are "
+                           "point %d",
+                           s, a);
     }
     for (int h = 0; h < in->nholes; h++)
         if (!isfinite(in->holes[2 * h]) || !isfinite(in->holes[2 * h + 1]))
@@ -531,25 +511,20 @@ static scaf_status build(const cdt_input *in, const cdt_options *opt, cdt_mesh *
     for (int i = 0; i < n; i++)
         for (int k = 0; k < 2; k++) {
             double x = in->points[2 * i + k];
-            if (i == 0 || x < lo[k])
-                lo[k] = x;
-            if (i == 0 || x > hi[k])
-                hi[k] = x;
+            if (i == 0 || x < lo[k]) lo[k] = x;
+            if (i == 0 || x > hi[k]) hi[k] = x;
         }
     double ext = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
     double big = ext > 0 ? 64.0 * ext : 1.0;
     big = fmax(big, 1e-300 + 1e-10 * fmax(fabs(cx), fabs(cy)));
 
-    if (cdt_mesh_init(m, n + 3 + n / 2 + 64))
-        return err_nomem(err, "triangulation");
-    for (int i = 0; i < n; i++)
-        cdt_mesh_add_vertex(m, in->points[2 * i], in->points[2 * i + 1]);
+    if (cdt_mesh_init(m, n + 3 + n / 2 + 64)) return err_nomem(err, "triangulation");
+    for (int i = 0; i < n; i++) cdt_mesh_add_vertex(m, in->points[2 * i], in->points[2 * i + 1]);
     int s0 = cdt_mesh_add_vertex(m, cx - big, cy - big);
     int s1 = cdt_mesh_add_vertex(m, cx + big, cy - big);
     int s2 = cdt_mesh_add_vertex(m, cx, cy + big);
-    if (s2 < 0 || cdt_mesh_first_triangle(m, s0, s1, s2))
-        return err_nomem(err, "triangulation");
+    if (s2 < 0 || cdt_mesh_first_triangle(m, s0, s1, s2)) return err_nomem(err, "triangulation");
 
     /* ---- Delaunay triangulation of the points ---- */
     int *order = malloc((size_t)(n > 0 ? n : 1) * sizeof(int));
@@ -599,23 +574,18 @@ static scaf_status build(const cdt_input *in, const cdt_options *opt, cdt_mesh *
         status = recover_segment(&rc, s, err);
     free(rc.cross.v);
     free(rc.fresh.v);
-    if (status != SCAF_OK)
-        return status;
+    if (status != SCAF_OK) return status;
 
     /* ---- regions and refinement ---- */
-    if (classify(m, in, n))
-        return err_nomem(err, "triangulation regions");
+    if (classify(m, in, n)) return err_nomem(err, "triangulation regions");
     if (opt->min_angle_deg > 0 || opt->max_area > 0) {
         double area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
         double cap = opt->max_steiner > 0 ? opt->max_steiner : 64.0 * n + 100000.0;
-        if (opt->max_steiner <= 0 && opt->max_area > 0)
-            cap += 4.0 * area / opt->max_area;
-        if (cap > (double)((1 << 29) - n))
-            cap = (double)((1 << 29) - n);
-        cdt_refine_params prm = {n, in->segments, split, opt->min_angle_deg, opt->max_area,
+        if (opt->max_steiner <= 0 && opt->max_area > 0) cap += 4.0 * area / opt->max_area;
+        if (cap > (double)((1 << 29) - n)) cap = (double)((1 << 29) - n);
+        cdt_refine_params prm = {n,        in->segments, split, opt->min_angle_deg, opt->max_area,
                                  (long)cap};
-        if (cdt_refine(m, &prm, st))
-            return err_nomem(err, "triangulation refinement");
+        if (cdt_refine(m, &prm, st)) return err_nomem(err, "triangulation refinement");
     }
     return SCAF_OK;
 }
@@ -623,28 +593,22 @@ static scaf_status build(const cdt_input *in, const cdt_options *opt, cdt_mesh *
 scaf_status cdt_triangulate(const cdt_input *in, const cdt_options *opt, cdt_output *out,
                             scaf_error *err)
 {
-    if (!out)
-        return err_set(err, SCAF_ERR_USAGE, "cdt: no output");
+    if (!out) return err_set(err, SCAF_ERR_USAGE, "cdt: no output");
     memset(out, 0, sizeof *out);
-    if (!in)
-        return err_set(err, SCAF_ERR_USAGE, "cdt: no input");
+    if (!in) return err_set(err, SCAF_ERR_USAGE, "cdt: no input");
     cdt_options def = cdt_default_options();
-    if (!opt)
-        opt = &def;
+    if (!opt) opt = &def;
     scaf_status status = check_input(in, opt, err);
-    if (status != SCAF_OK)
-        return status;
+    if (status != SCAF_OK) return status;
     unsigned char *split = malloc((size_t)(in->nsegments > 0 ? in->nsegments : 1));
-    if (!split)
-        return err_nomem(err, "triangulation");
+    if (!split) return err_nomem(err, "triangulation");
     for (int s = 0; s < in->nsegments; s++)
         split[s] = in->splittable ? (in->splittable[s] != 0) : 0;
     cdt_mesh m;
     memset(&m, 0, sizeof m);
     cdt_refine_stats st = {0, 0, 0};
     status = build(in, opt, &m, split, &st, err);
-    if (status == SCAF_OK)
-        status = write_output(&m, in, out, err);
+    if (status == SCAF_OK) status = write_output(&m, in, out, err);
     cdt_mesh_free(&m);
     free(split);
     if (status != SCAF_OK) {

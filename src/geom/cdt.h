@@ -14,10 +14,10 @@
 
 typedef struct cdt_input {
     int npoints;
-    const double *points;         /* #P by 2 coordinates (finite, distinct) */
+    const double *points; /* #P by 2 coordinates (finite, distinct) */
     int nsegments;
-    const int *segments;          /* #S by 2 point indices */
-    const unsigned char *splittable; /* #S flags: 1 = Steiner points may be
+    const int *segments;               /* #S by 2 point indices */
+    const unsigned char *splittable;   /* #S flags: 1 = Steiner points may be
                                         inserted on the segment (box edges),
                                         0 = keep it whole (chart edges).
                                         NULL: no segment is splittable */
@@ -27,14 +27,14 @@ typedef struct cdt_input {
                                           edges oriented with the chart on
                                           their left). NULL: none */
     int nholes;
-    const double *holes;          /* #H by 2 seed points inside holes; may be 0 */
+    const double *holes; /* #H by 2 seed points inside holes; may be 0 */
 } cdt_input;
 
 typedef struct cdt_options {
-    double min_angle_deg;   /* quality bound in [0, 60); 0 disables angle
+    double min_angle_deg; /* quality bound in [0, 60); 0 disables angle
                                refinement (20) */
-    double max_area;        /* upper bound on triangle area; 0 = none (0) */
-    int max_steiner;        /* safety cap on inserted points; 0 = no cap (0).
+    double max_area;      /* upper bound on triangle area; 0 = none (0) */
+    int max_steiner;      /* safety cap on inserted points; 0 = no cap (0).
                                Whatever this says, an internal cap
                                proportional to the input size (and to
                                box area / max_area) guarantees termination;
@@ -46,24 +46,24 @@ cdt_options cdt_default_options(void);
 
 typedef struct cdt_output {
     int npoints;
-    double *points;   /* #P by 2: the input points first, in input order,
+    double *points; /* #P by 2: the input points first, in input order,
                          then the Steiner points */
     int ntriangles;
-    int *triangles;   /* #T by 3 point indices, counter-clockwise */
-    int *neighbors;   /* #T by 3: neighbors[3t+i] = triangle across the edge
+    int *triangles; /* #T by 3 point indices, counter-clockwise */
+    int *neighbors; /* #T by 3: neighbors[3t+i] = triangle across the edge
                          opposite corner i (from corner i+1 to i+2), or -1
                          where that edge bounds the domain */
     int nsubsegments;
-    int *subsegments; /* #SS by 2 point indices: the output edges lying on
+    int *subsegments;   /* #SS by 2 point indices: the output edges lying on
                          input segments that border at least one output
                          triangle, oriented like their segment; an
                          unsplittable segment is exactly one subsegment */
     int *subsegment_of; /* #SS: index of the input segment */
-    int nsteiner;     /* = npoints - input npoints */
-    int nrejected;    /* refinement steps refused (a Steiner point would
+    int nsteiner;       /* = npoints - input npoints */
+    int nrejected;      /* refinement steps refused (a Steiner point would
                          encroach an unsplittable segment, leave the domain,
                          or break orientation); quality is best-effort there */
-    int capped;       /* 1 when refinement stopped at the Steiner cap */
+    int capped;         /* 1 when refinement stopped at the Steiner cap */
 } cdt_output;
 
 /* Triangulate the region enclosed by the segments: triangles that can be

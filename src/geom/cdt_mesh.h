@@ -28,22 +28,22 @@ enum { CDT_REG_DOMAIN = 0, CDT_REG_EXTERIOR = 1, CDT_REG_HOLE = 2 };
 
 typedef struct cdt_mesh {
     /* vertices */
-    double *xy;  /* #nv by 2 */
-    int *vt;     /* #nv: a corner holding the vertex, -1 before insertion */
-    int *vmark;  /* #nv scratch for cavity bookkeeping */
+    double *xy; /* #nv by 2 */
+    int *vt;    /* #nv: a corner holding the vertex, -1 before insertion */
+    int *vmark; /* #nv scratch for cavity bookkeeping */
     int nv, capv;
     /* triangles */
-    int *V;      /* #nt by 3 corner vertices */
-    int *N;      /* #nt by 3 neighbour corners */
-    int *S;      /* #nt by 3 constraints: -1 or 2*segment+frozen */
+    int *V;             /* #nt by 3 corner vertices */
+    int *N;             /* #nt by 3 neighbour corners */
+    int *S;             /* #nt by 3 constraints: -1 or 2*segment+frozen */
     unsigned char *reg; /* #nt regions */
     unsigned *tmark;    /* #nt scratch stamps */
     int nt, capt;
     unsigned stamp;
-    unsigned rng;       /* walk randomization state (deterministic) */
+    unsigned rng; /* walk randomization state (deterministic) */
     /* cavity scratch */
-    int *cav, ncav, capcav;       /* triangles of the cavity */
-    int *bnd, nbnd, capbnd;       /* boundary corners of the cavity */
+    int *cav, ncav, capcav; /* triangles of the cavity */
+    int *bnd, nbnd, capbnd; /* boundary corners of the cavity */
     /* per-boundary-edge copies used while committing */
     int *ba, *bb, *bn, *bs, capbx;
     unsigned char *br;

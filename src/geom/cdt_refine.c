@@ -42,21 +42,18 @@ static int rq_push(rq *q, const int *item)
 {
     if (q->head > 0 && q->head * 2 >= q->n && q->n >= 1024) {
         long live = q->n - q->head;
-        for (long i = 0; i < live * q->width; i++)
-            q->v[i] = q->v[q->head * q->width + i];
+        for (long i = 0; i < live * q->width; i++) q->v[i] = q->v[q->head * q->width + i];
         q->n = live;
         q->head = 0;
     }
     if (q->n >= q->cap) {
         long nc = q->cap ? 2 * q->cap : 256;
         int *nv = realloc(q->v, (size_t)nc * (size_t)q->width * sizeof(int));
-        if (!nv)
-            return -1;
+        if (!nv) return -1;
         q->v = nv;
         q->cap = nc;
     }
-    for (int k = 0; k < q->width; k++)
-        q->v[q->n * q->width + k] = item[k];
+    for (int k = 0; k < q->width; k++) q->v[q->n * q->width + k] = item[k];
     q->n++;
     return 0;
 }
@@ -65,11 +62,11 @@ typedef struct refiner {
     cdt_mesh *m;
     const cdt_refine_params *prm;
     cdt_refine_stats *st;
-    double sin2;    /* sin^2 of the angle bound */
-    double offh;    /* off-center height / shortest edge length */
+    double sin2;       /* sin^2 of the angle bound */
+    double offh;       /* off-center height / shortest edge length */
     double cos1, cos2; /* cos(bound), cos(2 bound) for the lens test */
-    rq segq;        /* a, b, forced */
-    rq triq;        /* t, v0, v1, v2, tries */
+    rq segq;           /* a, b, forced */
+    rq triq;           /* t, v0, v1, v2, tries */
 } refiner;
 
 static int seg_splittable(const refiner *r, int code)
@@ -97,8 +94,7 @@ static int encroaches(const double *u, const double *w, const double *p)
 {
     double ux = u[0] - p[0], uy = u[1] - p[1], wx = w[0] - p[0], wy = w[1] - p[1];
     double s = max_abs4(ux, uy, wx, wy);
-    if (s == 0)
-        return 1;
+    if (s == 0) return 1;
     double f = unit_scale(s);
     return (ux * f) * (wx * f) + (uy * f) * (wy * f) <= 0;
 }
@@ -115,20 +111,17 @@ static int spoils(const refiner *r, const double *u, const double *w, const doub
     double ux = u[0] - p[0], uy = u[1] - p[1], wx = w[0] - p[0], wy = w[1] - p[1];
     double sx = w[0] - u[0], sy = w[1] - u[1];
     double sc = fmax(max_abs4(ux, uy, wx, wy), fmax(fabs(sx), fabs(sy)));
-    if (sc == 0)
-        return 1;
+    if (sc == 0) return 1;
     double f = unit_scale(sc);
     ux *= f, uy *= f, wx *= f, wy *= f, sx *= f, sy *= f;
     double lu = sqrt(ux * ux + uy * uy), lw = sqrt(wx * wx + wy * wy), ls = sqrt(sx * sx + sy * sy);
-    if (!(lu > 0 && lw > 0 && ls > 0))
+    if (!(lu > 0 && lw > 0 && ls > 0)) return 1;
+    if (ux * wx + uy * wy < -r->cos2 * lu * lw) /* angle at p */
         return 1;
-    if (ux * wx + uy * wy < -r->cos2 * lu * lw)           /* angle at p */
+    if (lu >= ls && lw >= ls) return 0;
+    if (-(ux * sx + uy * sy) > r->cos1 * lu * ls) /* angle at u */
         return 1;
-    if (lu >= ls && lw >= ls)
-        return 0;
-    if (-(ux * sx + uy * sy) > r->cos1 * lu * ls)          /* angle at u */
-        return 1;
-    if (wx * sx + wy * sy > r->cos1 * lw * ls)             /* angle at w */
+    if (wx * sx + wy * sy > r->cos1 * lw * ls) /* angle at w */
         return 1;
     return 0;
 }
@@ -141,14 +134,14 @@ static int badness(const refiner *r, int t, int *kmin, double *fscale)
     const cdt_mesh *m = r->m;
     const int *v = m->V + 3 * t;
     const double *p0 = m->xy + 2 * v[0], *p1 = m->xy + 2 * v[1], *p2 = m->xy + 2 * v[2];
-    double e[3][2] = {{p2[0] - p1[0], p2[1] - p1[1]}, {p0[0] - p2[0], p0[1] - p2[1]},
+    double e[3][2] = {{p2[0] - p1[0], p2[1] - p1[1]},
+                      {p0[0] - p2[0], p0[1] - p2[1]},
                       {p1[0] - p0[0], p1[1] - p0[1]}};
-    double sc = fmax(max_abs4(e[0][0], e[0][1], e[1][0], e[1][1]), fmax(fabs(e[2][0]), fabs(e[2][1])));
+    double sc =
+        fmax(max_abs4(e[0][0], e[0][1], e[1][0], e[1][1]), fmax(fabs(e[2][0]), fabs(e[2][1])));
     *kmin = 0;
-    if (fscale)
-        *fscale = sc > 0 ? unit_scale(sc) : 1.0;
-    if (!(sc > 0))
-        return 0;
+    if (fscale) *fscale = sc > 0 ? unit_scale(sc) : 1.0;
+    if (!(sc > 0)) return 0;
     double f = unit_scale(sc), l[3];
     for (int i = 0; i < 3; i++) {
         e[i][0] *= f;
@@ -157,29 +150,22 @@ static int badness(const refiner *r, int t, int *kmin, double *fscale)
     }
     double a2 = e[2][0] * (-e[1][1]) - e[2][1] * (-e[1][0]); /* (p1-p0) x (p2-p0), scaled */
     int k = 0;
-    if (l[1] < l[k])
-        k = 1;
-    if (l[2] < l[k])
-        k = 2;
+    if (l[1] < l[k]) k = 1;
+    if (l[2] < l[k]) k = 2;
     *kmin = k;
-    if (r->prm->max_area > 0 && 0.5 * a2 / f / f > r->prm->max_area)
-        return 2;
-    if (r->sin2 <= 0)
-        return 0;
+    if (r->prm->max_area > 0 && 0.5 * a2 / f / f > r->prm->max_area) return 2;
+    if (r->sin2 <= 0) return 0;
     double ln = l[(k + 1) % 3], lp = l[(k + 2) % 3];
-    if (!(a2 * a2 < r->sin2 * ln * lp))
-        return 0;
+    if (!(a2 * a2 < r->sin2 * ln * lp)) return 0;
     /* smallest angle between two segments: an input angle, leave it */
-    if (m->S[3 * t + (k + 1) % 3] >= 0 && m->S[3 * t + (k + 2) % 3] >= 0)
-        return 0;
+    if (m->S[3 * t + (k + 1) % 3] >= 0 && m->S[3 * t + (k + 2) % 3] >= 0) return 0;
     return 1;
 }
 
 static int push_tri(refiner *r, int t, int tries)
 {
     int k;
-    if (r->m->reg[t] != CDT_REG_DOMAIN || !badness(r, t, &k, NULL))
-        return 0;
+    if (r->m->reg[t] != CDT_REG_DOMAIN || !badness(r, t, &k, NULL)) return 0;
     const int *v = r->m->V + 3 * t;
     int item[5] = {t, v[0], v[1], v[2], tries};
     return rq_push(&r->triq, item);
@@ -190,8 +176,7 @@ static int push_tri(refiner *r, int t, int tries)
 static int check_seg(refiner *r, int c, int forced)
 {
     cdt_mesh *m = r->m;
-    if (!seg_splittable(r, m->S[c]))
-        return 0;
+    if (!seg_splittable(r, m->S[c])) return 0;
     int u = m->V[cdt_next(c)], w = m->V[cdt_prev(c)];
     int enc = forced;
     if (!enc && m->reg[c / 3] == CDT_REG_DOMAIN)
@@ -199,8 +184,7 @@ static int check_seg(refiner *r, int c, int forced)
     int n = m->N[c];
     if (!enc && n >= 0 && m->reg[n / 3] == CDT_REG_DOMAIN)
         enc = encroaches(m->xy + 2 * u, m->xy + 2 * w, m->xy + 2 * m->V[n]);
-    if (!enc)
-        return 0;
+    if (!enc) return 0;
     int item[3] = {u, w, forced};
     return rq_push(&r->segq, item);
 }
@@ -208,8 +192,7 @@ static int check_seg(refiner *r, int c, int forced)
 static void freeze(cdt_mesh *m, int c)
 {
     m->S[c] |= 1;
-    if (m->N[c] >= 0)
-        m->S[m->N[c]] |= 1;
+    if (m->N[c] >= 0) m->S[m->N[c]] |= 1;
 }
 
 /* After a commit: queue new bad triangles and encroached subsegments. */
@@ -220,12 +203,10 @@ static int after_insert(refiner *r)
     r->st->nsteiner++;
     for (int j = 0; j < k + 2; j++) {
         int t = j < k ? m->cav[j] : m->nt - 2 + (j - k);
-        if (push_tri(r, t, 0))
-            return -1;
+        if (push_tri(r, t, 0)) return -1;
         for (int i = 0; i < 3; i++) {
             int c = 3 * t + i;
-            if (m->S[c] >= 0 && check_seg(r, c, 0))
-                return -1;
+            if (m->S[c] >= 0 && check_seg(r, c, 0)) return -1;
         }
     }
     return 0;
@@ -240,10 +221,8 @@ static int on_segment_exactly(const double *a, const double *b, double *p)
         for (int dy = 0; dy < 3; dy++) {
             double q[2] = {dx == 0 ? x0 : nextafter(x0, dx == 1 ? INFINITY : -INFINITY),
                            dy == 0 ? y0 : nextafter(y0, dy == 1 ? INFINITY : -INFINITY)};
-            if (orient2d(a, b, q) != 0)
-                continue;
-            if ((q[0] == a[0] && q[1] == a[1]) || (q[0] == b[0] && q[1] == b[1]))
-                continue;
+            if (orient2d(a, b, q) != 0) continue;
+            if ((q[0] == a[0] && q[1] == a[1]) || (q[0] == b[0] && q[1] == b[1])) continue;
             if (q[0] < fmin(a[0], b[0]) || q[0] > fmax(a[0], b[0]) || q[1] < fmin(a[1], b[1]) ||
                 q[1] > fmax(a[1], b[1]))
                 continue;
@@ -258,18 +237,15 @@ static int split_segment(refiner *r, int a, int b, int forced)
 {
     cdt_mesh *m = r->m;
     int c = cdt_mesh_find_edge(m, a, b);
-    if (c < 0)
-        c = cdt_mesh_find_edge(m, b, a);
-    if (c < 0 || !seg_splittable(r, m->S[c]))
-        return 0;
+    if (c < 0) c = cdt_mesh_find_edge(m, b, a);
+    if (c < 0 || !seg_splittable(r, m->S[c])) return 0;
     if (!forced) { /* still encroached? */
         int u = m->V[cdt_next(c)], w = m->V[cdt_prev(c)], n = m->N[c], enc = 0;
         if (m->reg[c / 3] == CDT_REG_DOMAIN)
             enc = encroaches(m->xy + 2 * u, m->xy + 2 * w, m->xy + 2 * m->V[c]);
         if (!enc && n >= 0 && m->reg[n / 3] == CDT_REG_DOMAIN)
             enc = encroaches(m->xy + 2 * u, m->xy + 2 * w, m->xy + 2 * m->V[n]);
-        if (!enc)
-            return 0;
+        if (!enc) return 0;
     }
     if (m->N[c] < 0) {
         freeze(m, c);
@@ -294,8 +270,7 @@ static int split_segment(refiner *r, int a, int b, int forced)
         return 0;
     }
     int ok = cdt_mesh_cavity(m, p, c / 3, m->N[c] / 3);
-    if (ok < 0)
-        return -1;
+    if (ok < 0) return -1;
     if (ok == 1) { /* no Steiner point inside an unsplittable segment's diametral circle */
         for (int j = 0; j < m->nbnd; j++) {
             int e = m->bnd[j];
@@ -313,8 +288,7 @@ static int split_segment(refiner *r, int a, int b, int forced)
     }
     int code = m->S[c];
     int v = cdt_mesh_add_vertex(m, p[0], p[1]);
-    if (v < 0 || cdt_mesh_commit(m, v, code, a, b) < 0)
-        return -1;
+    if (v < 0 || cdt_mesh_commit(m, v, code, a, b) < 0) return -1;
     return after_insert(r);
 }
 
@@ -324,8 +298,7 @@ static int split_segment(refiner *r, int a, int b, int forced)
 static int try_point(refiner *r, int t, const double p[2])
 {
     cdt_mesh *m = r->m;
-    if (!isfinite(p[0]) || !isfinite(p[1]))
-        return 2;
+    if (!isfinite(p[0]) || !isfinite(p[1])) return 2;
     int blocker, lt = cdt_mesh_walk_constrained(m, t, p, &blocker);
     if (lt < 0) {
         if (blocker >= 0 && seg_splittable(r, m->S[blocker])) {
@@ -336,36 +309,28 @@ static int try_point(refiner *r, int t, const double p[2])
     }
     for (int i = 0; i < 3; i++) {
         const double *q = m->xy + 2 * m->V[3 * lt + i];
-        if (q[0] == p[0] && q[1] == p[1])
-            return 2;
+        if (q[0] == p[0] && q[1] == p[1]) return 2;
     }
     int ok = cdt_mesh_cavity(m, p, lt, -1);
-    if (ok <= 0)
-        return ok < 0 ? -1 : 2;
+    if (ok <= 0) return ok < 0 ? -1 : 2;
     int retry = 0, refuse = 0;
     for (int j = 0; j < m->nbnd; j++) {
         int e = m->bnd[j];
-        if (m->S[e] < 0)
-            continue;
+        if (m->S[e] < 0) continue;
         const double *eu = m->xy + 2 * m->V[cdt_next(e)], *ew = m->xy + 2 * m->V[cdt_prev(e)];
         if (seg_splittable(r, m->S[e])) {
-            if (!encroaches(eu, ew, p))
-                continue;
+            if (!encroaches(eu, ew, p)) continue;
             int it[3] = {m->V[cdt_next(e)], m->V[cdt_prev(e)], 1};
-            if (rq_push(&r->segq, it))
-                return -1;
+            if (rq_push(&r->segq, it)) return -1;
             retry = 1;
         } else if (spoils(r, eu, ew, p)) {
             refuse = 1;
         }
     }
-    if (retry)
-        return 3;
-    if (refuse)
-        return 2;
+    if (retry) return 3;
+    if (refuse) return 2;
     int nv = cdt_mesh_add_vertex(m, p[0], p[1]);
-    if (nv < 0 || cdt_mesh_commit(m, nv, -1, -1, -1) < 0)
-        return -1;
+    if (nv < 0 || cdt_mesh_commit(m, nv, -1, -1, -1) < 0) return -1;
     return after_insert(r) ? -1 : 0;
 }
 
@@ -379,8 +344,7 @@ static int refine_triangle(refiner *r, const int *item)
     int k;
     double f;
     int bad = badness(r, t, &k, &f);
-    if (!bad)
-        return 0;
+    if (!bad) return 0;
     /* circumcenter and off-center in coordinates relative to pp, scaled by f */
     const double *pp = m->xy + 2 * v[(k + 1) % 3], *pq = m->xy + 2 * v[(k + 2) % 3];
     const double *pr = m->xy + 2 * v[k];
@@ -409,12 +373,9 @@ static int refine_triangle(refiner *r, const int *item)
     double p[2] = {pp[0] + ux / f, pp[1] + uy / f};
     double p2[2] = {pp[0] + vx / f, pp[1] + vy / f};
     int verdict = try_point(r, t, p);
-    if (verdict == 2)
-        verdict = try_point(r, t, p2);
-    if (verdict < 0)
-        return -1;
-    if (verdict == 0)
-        return 0;
+    if (verdict == 2) verdict = try_point(r, t, p2);
+    if (verdict < 0) return -1;
+    if (verdict == 0) return 0;
     if (verdict == 3 && item[4] < 3) { /* splittable segments queued first */
         int again[5] = {item[0], item[1], item[2], item[3], item[4] + 1};
         return rq_push(&r->triq, again);
@@ -440,18 +401,14 @@ int cdt_refine(cdt_mesh *m, const cdt_refine_params *prm, cdt_refine_stats *st)
     r.triq = (rq){NULL, 0, 0, 0, 5};
     int rc = 0;
     for (int t = 0; t < m->nt && !rc; t++) {
-        if (m->reg[t] != CDT_REG_DOMAIN)
-            continue;
+        if (m->reg[t] != CDT_REG_DOMAIN) continue;
         for (int i = 0; i < 3 && !rc; i++)
-            if (m->S[3 * t + i] >= 0)
-                rc = check_seg(&r, 3 * t + i, 0);
-        if (!rc)
-            rc = push_tri(&r, t, 0);
+            if (m->S[3 * t + i] >= 0) rc = check_seg(&r, 3 * t + i, 0);
+        if (!rc) rc = push_tri(&r, t, 0);
     }
     while (!rc) {
         if (st->nsteiner >= prm->max_steiner) {
-            if (r.segq.head < r.segq.n || r.triq.head < r.triq.n)
-                st->capped = 1;
+            if (r.segq.head < r.segq.n || r.triq.head < r.triq.n) st->capped = 1;
             break;
         }
         if (r.segq.head < r.segq.n) {
@@ -461,8 +418,7 @@ int cdt_refine(cdt_mesh *m, const cdt_refine_params *prm, cdt_refine_stats *st)
             rc = split_segment(&r, a, b, f);
         } else if (r.triq.head < r.triq.n) {
             int it[5];
-            for (int i = 0; i < 5; i++)
-                it[i] = r.triq.v[r.triq.head * 5 + i];
+            for (int i = 0; i < 5; i++) it[i] = r.triq.v[r.triq.head * 5 + i];
             r.triq.head++;
             rc = refine_triangle(&r, it);
         } else {

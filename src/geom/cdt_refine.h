@@ -18,12 +18,12 @@
 #include "geom/cdt_mesh.h"
 
 typedef struct cdt_refine_params {
-    int ninput;                    /* vertices 0..ninput-1 are input points */
-    const int *segments;           /* #S by 2 input segments */
+    int ninput;                      /* vertices 0..ninput-1 are input points */
+    const int *segments;             /* #S by 2 input segments */
     const unsigned char *splittable; /* #S effective flags */
-    double min_angle_deg;          /* 0: no angle refinement */
-    double max_area;               /* 0: none */
-    long max_steiner;              /* hard cap (> 0) */
+    double min_angle_deg;            /* 0: no angle refinement */
+    double max_area;                 /* 0: none */
+    long max_steiner;                /* hard cap (> 0) */
 } cdt_refine_params;
 
 typedef struct cdt_refine_stats {

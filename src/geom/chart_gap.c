@@ -31,7 +31,8 @@ static int find_root(int *p, int x)
     return x;
 }
 
-scaf_status chart_gap_labels(int nuv, int nf, const int *F, int *chart, int *ncharts, scaf_error *err)
+scaf_status chart_gap_labels(int nuv, int nf, const int *F, int *chart, int *ncharts,
+                             scaf_error *err)
 {
     int *p = malloc(sizeof(int) * (size_t)(nuv > 0 ? nuv : 1));
     int *lab = malloc(sizeof(int) * (size_t)(nuv > 0 ? nuv : 1));
@@ -81,7 +82,8 @@ static double point_segment(const double *p, const double *a, const double *b)
     return sqrt(x * x + y * y);
 }
 
-double chart_segment_distance(const double p1[2], const double p2[2], const double q1[2], const double q2[2])
+double chart_segment_distance(const double p1[2], const double p2[2], const double q1[2],
+                              const double q2[2])
 {
     if (bij_segments_meet(p1, p2, q1, q2)) return 0.0;
     double d = point_segment(p1, q1, q2), e;
@@ -99,8 +101,8 @@ double chart_segment_distance(const double p1[2], const double p2[2], const doub
  * so the expansion arithmetic is exact. */
 
 /* h = x1 * y1 + x2 * y2 for expansions (lengths <= 16 each). */
-static int exp_dot2(int lx1, const double *x1, int ly1, const double *y1, int lx2, const double *x2, int ly2,
-                    const double *y2, double *h)
+static int exp_dot2(int lx1, const double *x1, int ly1, const double *y1, int lx2, const double *x2,
+                    int ly2, const double *y2, double *h)
 {
     double a[128], b[128], work[512];
     int la = exp_mul(lx1, x1, ly1, y1, a, work);
@@ -110,7 +112,8 @@ static int exp_dot2(int lx1, const double *x1, int ly1, const double *y1, int lx
 
 /* sign(|w|^2 - P^2), w an expansion pair (lengths <= 2); P2 the expansion
  * of P^2 (length lp). */
-static double sq_minus(int lwx, const double *wx, int lwy, const double *wy, int lp, const double *P2)
+static double sq_minus(int lwx, const double *wx, int lwy, const double *wy, int lp,
+                       const double *P2)
 {
     double n[16], neg[2], h[20];
     int ln = exp_dot2(lwx, wx, lwx, wx, lwy, wy, lwy, wy, n);
@@ -121,7 +124,8 @@ static double sq_minus(int lwx, const double *wx, int lwy, const double *wy, int
 
 /* Exactly: is the distance from p to the closed segment ab at least P
  * (P2 = the expansion of P^2)? */
-static int point_segment_at_least(const double *p, const double *a, const double *b, int lp, const double *P2)
+static int point_segment_at_least(const double *p, const double *a, const double *b, int lp,
+                                  const double *P2)
 {
     double dx[2], dy[2], wx[2], wy[2], vx[2], vy[2], dot[16];
     int ldx = exp_from_diff(b[0], a[0], dx), ldy = exp_from_diff(b[1], a[1], dy);
@@ -145,8 +149,8 @@ static int point_segment_at_least(const double *p, const double *a, const double
     return exp_sign_estimate(lh, h) >= 0.0;
 }
 
-int chart_segment_distance_at_least(const double p1[2], const double p2[2], const double q1[2], const double q2[2],
-                                    double P)
+int chart_segment_distance_at_least(const double p1[2], const double p2[2], const double q1[2],
+                                    const double q2[2], double P)
 {
     if (!(P > 0.0)) return 1;
     if (bij_segments_meet(p1, p2, q1, q2)) return 0;
@@ -157,8 +161,9 @@ int chart_segment_distance_at_least(const double p1[2], const double p2[2], cons
     P2[lp++] = x;
     /* two disjoint segments: their distance is the smallest of the four
      * endpoint-to-segment distances */
-    return point_segment_at_least(p1, q1, q2, lp, P2) && point_segment_at_least(p2, q1, q2, lp, P2) &&
-           point_segment_at_least(q1, p1, p2, lp, P2) && point_segment_at_least(q2, p1, p2, lp, P2);
+    return point_segment_at_least(p1, q1, q2, lp, P2) &&
+        point_segment_at_least(p2, q1, q2, lp, P2) && point_segment_at_least(q1, p1, p2, lp, P2) &&
+        point_segment_at_least(q2, p1, p2, lp, P2);
 }
 
 double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F)
@@ -177,7 +182,9 @@ double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F)
                 lo[k] = fmin(lo[k], x);
                 hi[k] = fmax(hi[k], x);
             }
-        area += fabs(0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])));
+        area += fabs(0.5 *
+                     ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
+                      (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])));
     }
     double side = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(side > 0.0) || !isfinite(side) || !isfinite(area)) return 0.0;
@@ -205,9 +212,10 @@ static int cell_index(double t, int n)
 }
 
 /* One search with radius r over segments seg (n by {a, b, chart}). */
-static scaf_status grid_search(const double *UV, const int *seg, int n, double r, const double lo[2], double extent,
-                               double *best, int pair[2], unsigned char *mark, long *npairs, double cert,
-                               int *bad, scaf_error *err)
+static scaf_status grid_search(const double *UV, const int *seg, int n, double r,
+                               const double lo[2], double extent, double *best, int pair[2],
+                               unsigned char *mark, long *npairs, double cert, int *bad,
+                               scaf_error *err)
 {
     double cell = extent / sqrt((double)n + 1.0);
     if (r > cell) cell = r;
@@ -228,8 +236,10 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
     size_t total = 0;
     for (int s = 0; s < n; s++) {
         const double *a = UV + 2 * (size_t)seg[3 * s], *b = UV + 2 * (size_t)seg[3 * s + 1];
-        int i0 = cell_index((fmin(a[0], b[0]) - h - lo[0]) / cell, nx), i1 = cell_index((fmax(a[0], b[0]) + h - lo[0]) / cell, nx);
-        int j0 = cell_index((fmin(a[1], b[1]) - h - lo[1]) / cell, ny), j1 = cell_index((fmax(a[1], b[1]) + h - lo[1]) / cell, ny);
+        int i0 = cell_index((fmin(a[0], b[0]) - h - lo[0]) / cell, nx),
+            i1 = cell_index((fmax(a[0], b[0]) + h - lo[0]) / cell, nx);
+        int j0 = cell_index((fmin(a[1], b[1]) - h - lo[1]) / cell, ny),
+            j1 = cell_index((fmax(a[1], b[1]) + h - lo[1]) / cell, ny);
         box[s][0] = i0;
         box[s][1] = j0;
         box[s][2] = i1;
@@ -238,7 +248,8 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
         if (total > INT_MAX) { /* cell offsets are ints */
             free(start);
             free(box);
-            return err_set(err, SCAF_ERR_NOMEM, "chart gap grid: more than %d segment-cell entries", INT_MAX);
+            return err_set(err, SCAF_ERR_NOMEM, "chart gap grid: more than %d segment-cell entries",
+                           INT_MAX);
         }
         for (int j = j0; j <= j1; j++)
             for (int i = i0; i <= i1; i++) start[(size_t)j * nx + i + 1]++;
@@ -268,8 +279,10 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
                 int fi = box[s][0] > box[t][0] ? box[s][0] : box[t][0];
                 int fj = box[s][1] > box[t][1] ? box[s][1] : box[t][1];
                 if (fi != ci || fj != cj) continue;
-                const double *p1 = UV + 2 * (size_t)seg[3 * s], *p2 = UV + 2 * (size_t)seg[3 * s + 1];
-                const double *q1 = UV + 2 * (size_t)seg[3 * t], *q2 = UV + 2 * (size_t)seg[3 * t + 1];
+                const double *p1 = UV + 2 * (size_t)seg[3 * s],
+                             *p2 = UV + 2 * (size_t)seg[3 * s + 1];
+                const double *q1 = UV + 2 * (size_t)seg[3 * t],
+                             *q2 = UV + 2 * (size_t)seg[3 * t + 1];
                 if (cert > 0.0) {
                     /* boxes apart by more than cert along an axis: far
                      * enough (rounding is monotone, so fl(gap) > cert
@@ -314,7 +327,8 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
     return SCAF_OK;
 }
 
-scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg_out, int *nseg, scaf_error *err)
+scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg_out, int *nseg,
+                               scaf_error *err)
 {
     *seg_out = NULL;
     *nseg = 0;
@@ -322,8 +336,9 @@ scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg
     int *order = malloc(sizeof(int) * (nh ? nh : 1));
     int *seg = malloc(sizeof(int) * 3 * (nh ? nh : 1));
     int nhe = 0;
-    scaf_status st = order && seg ? half_edges_sort(half_edges_index_count(nf, F), nf, F, NULL, order, &nhe, err)
-                                  : SCAF_ERR_NOMEM;
+    scaf_status st = order && seg
+        ? half_edges_sort(half_edges_index_count(nf, F), nf, F, NULL, order, &nhe, err)
+        : SCAF_ERR_NOMEM;
     if (st != SCAF_OK) {
         free(order);
         free(seg);
@@ -373,8 +388,8 @@ scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg
  * in [1, 2)): *xy (2 points per segment) and *seg2 (rows {2s, 2s + 1,
  * chart}), both malloc'd. Exact, and grid searches on them cannot overflow
  * (the extent is at most 4) whatever the units of the layout. */
-static scaf_status scaled_segments(const double *UV, const int *seg, int n, double **xy, int **seg2, int *e,
-                                   scaf_error *err)
+static scaf_status scaled_segments(const double *UV, const int *seg, int n, double **xy, int **seg2,
+                                   int *e, scaf_error *err)
 {
     *xy = malloc(sizeof(double) * 4 * (size_t)n);
     *seg2 = malloc(sizeof(int) * 3 * (size_t)n);
@@ -397,7 +412,8 @@ static scaf_status scaled_segments(const double *UV, const int *seg, int n, doub
     *e = m > 0.0 && isfinite(m) ? ilogb(m) : 0;
     for (int s = 0; s < n; s++)
         for (int k = 0; k < 2; k++)
-            for (int c = 0; c < 2; c++) (*xy)[4 * (size_t)s + 2 * k + c] = ldexp(UV[2 * (size_t)seg[3 * s + k] + c], -*e);
+            for (int c = 0; c < 2; c++)
+                (*xy)[4 * (size_t)s + 2 * k + c] = ldexp(UV[2 * (size_t)seg[3 * s + k] + c], -*e);
     return SCAF_OK;
 }
 
@@ -418,8 +434,8 @@ static double segment_extent(const double *UV, const int *seg, int n, double lo[
     return extent > 0.0 && isfinite(extent) ? extent : 1.0;
 }
 
-scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, double radius, double *gap, int pair[2],
-                                   scaf_error *err)
+scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, double radius,
+                                   double *gap, int pair[2], scaf_error *err)
 {
     *gap = INFINITY;
     if (pair) pair[0] = pair[1] = -1;
@@ -430,10 +446,13 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, doub
     if (st != SCAF_OK) return st;
     double lo[2], len = 0.0, g = INFINITY;
     double extent = segment_extent(xy, sg, n, lo);
-    for (int s = 0; s < n; s++) len += hypot(xy[4 * (size_t)s] - xy[4 * (size_t)s + 2], xy[4 * (size_t)s + 1] - xy[4 * (size_t)s + 3]);
+    for (int s = 0; s < n; s++)
+        len += hypot(xy[4 * (size_t)s] - xy[4 * (size_t)s + 2],
+                     xy[4 * (size_t)s + 1] - xy[4 * (size_t)s + 3]);
     if (radius > 0.0 && isfinite(radius)) {
         /* a radius below 2^-1074 after scaling finds touching pairs only */
-        st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, pair, NULL, NULL, 0.0, NULL, err);
+        st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, pair, NULL, NULL, 0.0, NULL,
+                         err);
     } else {
         double r = len / n;
         if (!(r > 0.0)) r = extent / n;
@@ -450,19 +469,21 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, doub
     /* a positive gap below the smallest double is not a touching (0) */
     if (g > 0.0 && *gap == 0.0) *gap = nextafter(0.0, 1.0);
     if (isfinite(g) && !isfinite(*gap))
-        return err_set(err, SCAF_ERR_NUMERIC, "the smallest chart gap (%g * 2^%d) exceeds the largest double", g, e);
+        return err_set(err, SCAF_ERR_NUMERIC,
+                       "the smallest chart gap (%g * 2^%d) exceeds the largest double", g, e);
     return SCAF_OK;
 }
 
-scaf_status chart_gap_min(int nuv, const double *UV, int nf, const int *F, const int *chart, double radius,
-                          double *gap, int pair[2], scaf_error *err)
+scaf_status chart_gap_min(int nuv, const double *UV, int nf, const int *F, const int *chart,
+                          double radius, double *gap, int pair[2], scaf_error *err)
 {
     *gap = INFINITY;
     if (pair) pair[0] = pair[1] = -1;
     for (int f = 0; f < nf; f++)
         for (int j = 0; j < 3; j++) {
             int a = F[3 * f + j];
-            if (a < 0 || a >= nuv) return err_set(err, SCAF_ERR_MESH, "triangle %d references UV %d of %d", f, a, nuv);
+            if (a < 0 || a >= nuv)
+                return err_set(err, SCAF_ERR_MESH, "triangle %d references UV %d of %d", f, a, nuv);
             if (!isfinite(UV[2 * (size_t)a]) || !isfinite(UV[2 * (size_t)a + 1]))
                 return err_set(err, SCAF_ERR_MESH, "UV %d has a non-finite coordinate", a);
         }
@@ -482,8 +503,8 @@ scaf_status chart_gap_min(int nuv, const double *UV, int nf, const int *F, const
     return st;
 }
 
-scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double radius, unsigned char *mark,
-                                 long *npairs, scaf_error *err)
+scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double radius,
+                                 unsigned char *mark, long *npairs, scaf_error *err)
 {
     *npairs = 0;
     if (n < 2 || !(radius > 0.0)) return SCAF_OK;
@@ -493,7 +514,8 @@ scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double
     if (st != SCAF_OK) return st;
     double lo[2], g = INFINITY;
     double extent = segment_extent(xy, sg, n, lo);
-    st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, NULL, mark, npairs, 0.0, NULL, err);
+    st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, NULL, mark, npairs, 0.0, NULL,
+                     err);
     free(xy);
     free(sg);
     return st;
@@ -508,13 +530,14 @@ static int exact_range(double x)
     return ax == 0.0 || (ax >= CHART_GAP_EXACT_MIN && ax <= CHART_GAP_EXACT_MAX);
 }
 
-scaf_status chart_gap_certify(const double *UV, const int *seg, int n, double padding, int *ok, int pair[2],
-                              scaf_error *err)
+scaf_status chart_gap_certify(const double *UV, const int *seg, int n, double padding, int *ok,
+                              int pair[2], scaf_error *err)
 {
     *ok = 1;
     if (pair) pair[0] = pair[1] = -1;
     if (!(padding >= 0.0) || !exact_range(padding))
-        return err_set(err, SCAF_ERR_NUMERIC, "chart gap certificate: padding %g outside [2^-200, 2^200]", padding);
+        return err_set(err, SCAF_ERR_NUMERIC,
+                       "chart gap certificate: padding %g outside [2^-200, 2^200]", padding);
     if (n < 2 || padding == 0.0) return SCAF_OK;
     for (int s = 0; s < n; s++)
         for (int k = 0; k < 2; k++) {
@@ -522,7 +545,8 @@ scaf_status chart_gap_certify(const double *UV, const int *seg, int n, double pa
             for (int c = 0; c < 2; c++)
                 if (!exact_range(UV[2 * (size_t)v + c]))
                     return err_set(err, SCAF_ERR_NUMERIC,
-                                   "chart gap certificate: UV %d coordinate %g is not 0 and outside [2^-200, 2^200]",
+                                   "chart gap certificate: UV %d coordinate %g is not 0 and "
+                                   "outside [2^-200, 2^200]",
                                    v, UV[2 * (size_t)v + c]);
         }
     double lo[2], g = INFINITY;
@@ -531,7 +555,8 @@ scaf_status chart_gap_certify(const double *UV, const int *seg, int n, double pa
     /* search radius 2 * padding: boxes widened by a whole padding on each
      * side, so every pair closer than the padding shares a cell with a
      * margin far above the rounding of the cell indices */
-    scaf_status st = grid_search(UV, seg, n, 2.0 * padding, lo, extent, &g, pair, NULL, NULL, padding, &bad, err);
+    scaf_status st = grid_search(UV, seg, n, 2.0 * padding, lo, extent, &g, pair, NULL, NULL,
+                                 padding, &bad, err);
     *ok = !bad;
     return st;
 }

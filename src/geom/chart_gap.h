@@ -53,7 +53,8 @@
 
 /* Chart of each triangle: triangles sharing a UV index are in one chart.
  *   chart  #F out, ids 0..*ncharts-1 in order of first triangle. */
-scaf_status chart_gap_labels(int nuv, int nf, const int *F, int *chart, int *ncharts, scaf_error *err);
+scaf_status chart_gap_labels(int nuv, int nf, const int *F, int *chart, int *ncharts,
+                             scaf_error *err);
 
 /* Smallest distance between boundary segments of different charts.
  *   nuv, UV  #UV by 2 positions
@@ -65,22 +66,23 @@ scaf_status chart_gap_labels(int nuv, int nf, const int *F, int *chart, int *nch
  *   gap      out: the smallest distance, INFINITY when there is no pair
  *            within the radius (or fewer than two charts)
  *   pair     optional out (may be NULL): the two charts realizing it */
-scaf_status chart_gap_min(int nuv, const double *UV, int nf, const int *F, const int *chart, double radius,
-                          double *gap, int pair[2], scaf_error *err);
+scaf_status chart_gap_min(int nuv, const double *UV, int nf, const int *F, const int *chart,
+                          double radius, double *gap, int pair[2], scaf_error *err);
 
 /* The boundary segments (UV edges used by one triangle): *seg (malloc'd,
  * free it) gets *nseg rows {a, b, chart}. */
-scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg, int *nseg, scaf_error *err);
+scaf_status chart_gap_segments(int nf, const int *F, const int *chart, int **seg, int *nseg,
+                               scaf_error *err);
 
 /* chart_gap_min on precomputed segments (UV indices into UV). */
-scaf_status chart_gap_min_segments(const double *UV, const int *seg, int nseg, double radius, double *gap,
-                                   int pair[2], scaf_error *err);
+scaf_status chart_gap_min_segments(const double *UV, const int *seg, int nseg, double radius,
+                                   double *gap, int pair[2], scaf_error *err);
 
 /* Mark (mark[chart] = 1) both charts of every segment pair of different
  * charts closer than radius (> 0); mark has one entry per chart id.
  * Returns the number of such pairs found (pairs, not charts). */
-scaf_status chart_gap_mark_close(const double *UV, const int *seg, int nseg, double radius, unsigned char *mark,
-                                 long *npairs, scaf_error *err);
+scaf_status chart_gap_mark_close(const double *UV, const int *seg, int nseg, double radius,
+                                 unsigned char *mark, long *npairs, scaf_error *err);
 
 /* The smallest nonzero padding (and coordinate magnitude) the exact
  * certificate takes, and the largest: 2^-200 and 2^200. */
@@ -97,13 +99,13 @@ scaf_status chart_gap_mark_close(const double *UV, const int *seg, int nseg, dou
  * boxes are more than P apart along an axis (decided by a floating-point
  * subtraction, whose rounding is monotone) pass; the others are decided
  * exactly. SCAF_ERR_NUMERIC for coordinates outside the exact range. */
-scaf_status chart_gap_certify(const double *UV, const int *seg, int nseg, double padding, int *ok, int pair[2],
-                              scaf_error *err);
+scaf_status chart_gap_certify(const double *UV, const int *seg, int nseg, double padding, int *ok,
+                              int pair[2], scaf_error *err);
 
 /* Exactly: is the distance between the closed segments p1p2 and q1q2 at
  * least P (P > 0; coordinates in the range above)? 1 yes, 0 no. */
-int chart_segment_distance_at_least(const double p1[2], const double p2[2], const double q1[2], const double q2[2],
-                                    double P);
+int chart_segment_distance_at_least(const double p1[2], const double p2[2], const double q1[2],
+                                    const double q2[2], double P);
 
 /* Total unsigned UV area of the triangles / (longest side of the UV bounding
  * box of the referenced points)^2; 0 for an empty or flat layout. */
@@ -111,6 +113,7 @@ double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F)
 
 /* Distance between the closed segments p1p2 and q1q2 (0 when they meet,
  * decided exactly). */
-double chart_segment_distance(const double p1[2], const double p2[2], const double q1[2], const double q2[2]);
+double chart_segment_distance(const double p1[2], const double p2[2], const double q1[2],
+                              const double q2[2]);
 
 #endif /* SCAF_GEOM_CHART_GAP_H */

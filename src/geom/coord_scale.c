@@ -12,7 +12,8 @@ int coord_scale_exponent(const double *X, int dim, size_t ncorner, const int *id
     return m > 0.0 && isfinite(m) ? ilogb(m) : 0;
 }
 
-void coord_scale_apply(double *Xs, const double *X, int dim, int n, size_t ncorner, const int *idx, int e)
+void coord_scale_apply(double *Xs, const double *X, int dim, int n, size_t ncorner, const int *idx,
+                       int e)
 {
     memcpy(Xs, X, sizeof(double) * (size_t)dim * (size_t)n);
     /* from X, not Xs: a point used by several corners is scaled once */

@@ -28,6 +28,7 @@ int coord_scale_exponent(const double *X, int dim, size_t ncorner, const int *id
 
 /* Xs = X (n points) with every point used by a corner divided by 2^e
  * (ldexp; the others copied as they are). Xs may not alias X. */
-void coord_scale_apply(double *Xs, const double *X, int dim, int n, size_t ncorner, const int *idx, int e);
+void coord_scale_apply(double *Xs, const double *X, int dim, int n, size_t ncorner, const int *idx,
+                       int e);
 
 #endif /* SCAF_GEOM_COORD_SCALE_H */

@@ -25,15 +25,11 @@ int exp_sum(int elen, const double *e, int flen, const double *f, double *h)
      * everything still to come). */
     int i = 0, j = 0, n = 0;
     double q, g, hi, lo;
-    if (fabs(e[0]) < fabs(f[0]))
-        q = e[i++];
-    else
-        q = f[j++];
+    if (fabs(e[0]) < fabs(f[0])) q = e[i++];
+    else q = f[j++];
     while (i < elen || j < flen) {
-        if (j >= flen || (i < elen && fabs(e[i]) < fabs(f[j])))
-            g = e[i++];
-        else
-            g = f[j++];
+        if (j >= flen || (i < elen && fabs(e[i]) < fabs(f[j]))) g = e[i++];
+        else g = f[j++];
         two_sum(q, g, &hi, &lo);
         if (lo != 0.0) h[n++] = lo;
         q = hi;

@@ -39,11 +39,15 @@ int min_box_hull(const double *P, int n, int *hull)
     }
     int k = 0;
     for (int i = 0; i < m; i++) { /* lower chain */
-        while (k >= 2 && !(orient2d(P + 2 * (size_t)hull[k - 2], P + 2 * (size_t)hull[k - 1], s[i].p) > 0.0)) k--;
+        while (k >= 2 &&
+               !(orient2d(P + 2 * (size_t)hull[k - 2], P + 2 * (size_t)hull[k - 1], s[i].p) > 0.0))
+            k--;
         hull[k++] = s[i].i;
     }
     for (int i = m - 2, lo = k + 1; i >= 0; i--) { /* upper chain */
-        while (k >= lo && !(orient2d(P + 2 * (size_t)hull[k - 2], P + 2 * (size_t)hull[k - 1], s[i].p) > 0.0)) k--;
+        while (k >= lo &&
+               !(orient2d(P + 2 * (size_t)hull[k - 2], P + 2 * (size_t)hull[k - 1], s[i].p) > 0.0))
+            k--;
         hull[k++] = s[i].i;
     }
     free(s);
@@ -133,8 +137,10 @@ double min_box_square_angle(const double *P, const int *hull, int nh, double *si
             double mid = 0.5 * (t[i] + t[i + 1]), c = cos(mid), s = sin(mid);
             /* at mid, x' = c x - s y and y' = s x + c y; the extreme
              * points of x' and y' stay the same over the interval */
-            const double *xa = P + 2 * (size_t)extreme(P, hull, nh, c, -s), *xb = P + 2 * (size_t)extreme(P, hull, nh, -c, s);
-            const double *ya = P + 2 * (size_t)extreme(P, hull, nh, s, c), *yb = P + 2 * (size_t)extreme(P, hull, nh, -s, -c);
+            const double *xa = P + 2 * (size_t)extreme(P, hull, nh, c, -s),
+                         *xb = P + 2 * (size_t)extreme(P, hull, nh, -c, s);
+            const double *ya = P + 2 * (size_t)extreme(P, hull, nh, s, c),
+                         *yb = P + 2 * (size_t)extreme(P, hull, nh, -s, -c);
             double ux = xa[0] - xb[0], uy = xa[1] - xb[1], vx = ya[0] - yb[0], vy = ya[1] - yb[1];
             /* w - h = cos(th) (ux - vy) - sin(th) (uy + vx) = 0 */
             double th = atan2(ux - vy, uy + vx);

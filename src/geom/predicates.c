@@ -251,7 +251,7 @@ static double orient3d_bigint(const double *p)
     int emin = low_exponent(p, 12);
     bigint v[12], d[9], m, t, s, acc;
     for (int i = 0; i < 12; i++) bigint_from_double(&v[i], p[i], emin);
-    for (int k = 0; k < 3; k++)      /* rows a-d, b-d, c-d */
+    for (int k = 0; k < 3; k++) /* rows a-d, b-d, c-d */
         for (int j = 0; j < 3; j++) bigint_sub(&d[3 * k + j], &v[3 * k + j], &v[9 + j]);
     /* det = adz (bdx cdy - bdy cdx) - bdz (adx cdy - ady cdx) + cdz (adx bdy - ady bdx) */
     bigint_mul(&m, &d[3], &d[7]);
@@ -370,7 +370,7 @@ double orient3d(const double a[3], const double b[3], const double c[3], const d
     double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
     double az = fabs(adz), bz = fabs(bdz), cz = fabs(cdz);
     double perm = (fabs(bdxcdy) + fabs(cdxbdy)) * az + (fabs(cdxady) + fabs(adxcdy)) * bz +
-                  (fabs(adxbdy) + fabs(bdxady)) * cz;
+        (fabs(adxbdy) + fabs(bdxady)) * cz;
     double bound = o3d_bound * perm + UFL * (az + bz + cz + 1.0);
     if (det > bound || -det > bound) return det;
     return orient3d_slow(a, b, c, d, perm);
@@ -577,10 +577,8 @@ static double insphere_bigint(const double *p)
             bigint_add(&m3, &m3, &s);
         }
         bigint_mul(&s, &lift[k], &m3);
-        if (k % 2 == 0)
-            bigint_sub(&acc, &acc, &s); /* cofactor signs -, +, -, + */
-        else
-            bigint_add(&acc, &acc, &s);
+        if (k % 2 == 0) bigint_sub(&acc, &acc, &s); /* cofactor signs -, +, -, + */
+        else bigint_add(&acc, &acc, &s);
     }
     return sign_of(&acc);
 }
@@ -619,10 +617,10 @@ double insphere(const double a[3], const double b[3], const double c[3], const d
     double perm = dlift * pabc + clift * pdab + blift * pcda + alift * pbcd;
     double lsum = alift + blift + clift + dlift;
     double bound = isp_bound * perm +
-                   UFL * ((az + bz + cz + dz + 2.0) * (lsum + 1.0) + pabc + pbcd + pcda + pdab + 1.0);
+        UFL * ((az + bz + cz + dz + 2.0) * (lsum + 1.0) + pabc + pbcd + pcda + pdab + 1.0);
     if (det > bound || -det > bound) return det;
-    const double p[15] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2],
-                          d[0], d[1], d[2], e[0], e[1], e[2]};
+    const double p[15] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1],
+                          c[2], d[0], d[1], d[2], e[0], e[1], e[2]};
     if (!all_finite(p, 15)) return NAN;
     return insphere_bigint(p);
 }

@@ -48,9 +48,9 @@ si_pair_kind si_classify_pair(const double *V, const int fa[3], const int fb[3])
         s1 = orient_sign(b, a[(k + 1) % 3]), s2 = orient_sign(b, a[(k + 2) % 3]);
         if (s1 != 0 && s1 == s2) return SI_PAIR_NONE;
         return seg_tri_intersect(a[(k + 1) % 3], a[(k + 2) % 3], b[0], b[1], b[2]) ||
-                       seg_tri_intersect(b[(l + 1) % 3], b[(l + 2) % 3], a[0], a[1], a[2])
-                   ? SI_PAIR_VERTEX
-                   : SI_PAIR_NONE;
+                seg_tri_intersect(b[(l + 1) % 3], b[(l + 2) % 3], a[0], a[1], a[2])
+            ? SI_PAIR_VERTEX
+            : SI_PAIR_NONE;
     }
     /* shared edge: only coplanar faces with both apexes on one side meet
      * off the edge. */
@@ -132,7 +132,8 @@ static void record(si_report *r, si_pair_kind kind, int i, int j)
     r->pairs++;
     /* keep the SI_FIRST_MAX smallest (i, j), sorted */
     int pos = r->nfirst;
-    while (pos > 0 && (r->first[pos - 1][0] > i || (r->first[pos - 1][0] == i && r->first[pos - 1][1] > j)))
+    while (pos > 0 &&
+           (r->first[pos - 1][0] > i || (r->first[pos - 1][0] == i && r->first[pos - 1][1] > j)))
         pos--;
     if (pos >= SI_FIRST_MAX) return;
     int last = r->nfirst < SI_FIRST_MAX ? r->nfirst : SI_FIRST_MAX - 1;
@@ -217,15 +218,14 @@ scaf_status si_check(int nv, const double *V, int nf, const int *F, si_report *r
         for (int i = 0; i < nlive; i++) {
             const double *bx = box + 6 * (size_t)live[i];
             int c0[3], c1[3], c[3];
-            for (int k = 0; k < 3; k++) c0[k] = cell_coord(&g, k, bx[k]), c1[k] = cell_coord(&g, k, bx[3 + k]);
+            for (int k = 0; k < 3; k++)
+                c0[k] = cell_coord(&g, k, bx[k]), c1[k] = cell_coord(&g, k, bx[3 + k]);
             for (c[2] = c0[2]; c[2] <= c1[2]; c[2]++)
                 for (c[1] = c0[1]; c[1] <= c1[1]; c[1]++)
                     for (c[0] = c0[0]; c[0] <= c1[0]; c[0]++) {
                         size_t ci = cell_index(&g, c);
-                        if (pass == 0)
-                            start[ci + 1]++;
-                        else
-                            cell_faces[start[ci]++] = live[i];
+                        if (pass == 0) start[ci + 1]++;
+                        else cell_faces[start[ci]++] = live[i];
                     }
         }
         if (pass == 0) {

@@ -47,26 +47,26 @@
 #define SI_FIRST_MAX 16
 
 typedef enum si_pair_kind {
-    SI_PAIR_NONE = 0,    /* meet in at most what they share */
-    SI_PAIR_CROSSING,    /* share no vertex index and meet */
-    SI_PAIR_VERTEX,      /* share one vertex and meet elsewhere */
-    SI_PAIR_EDGE,        /* share an edge and fold onto each other */
-    SI_PAIR_DUPLICATE    /* the same three vertex indices */
+    SI_PAIR_NONE = 0, /* meet in at most what they share */
+    SI_PAIR_CROSSING, /* share no vertex index and meet */
+    SI_PAIR_VERTEX,   /* share one vertex and meet elsewhere */
+    SI_PAIR_EDGE,     /* share an edge and fold onto each other */
+    SI_PAIR_DUPLICATE /* the same three vertex indices */
 } si_pair_kind;
 
 typedef struct si_report {
-    int faces;                 /* faces checked */
-    int degenerate_faces;      /* zero-area faces (not paired) */
-    long long pairs;           /* intersecting pairs: the sum of the four below */
+    int faces;            /* faces checked */
+    int degenerate_faces; /* zero-area faces (not paired) */
+    long long pairs;      /* intersecting pairs: the sum of the four below */
     long long crossing_pairs;
     long long vertex_pairs;
     long long edge_pairs;
     long long duplicate_pairs;
-    int nfirst;                /* entries of first[] used (<= SI_FIRST_MAX) */
-    int first[SI_FIRST_MAX][2];/* the intersecting pairs (i < j) smallest in
+    int nfirst;                 /* entries of first[] used (<= SI_FIRST_MAX) */
+    int first[SI_FIRST_MAX][2]; /* the intersecting pairs (i < j) smallest in
                                   (i, j) order: deterministic */
-    int first_degenerate;      /* lowest degenerate face, -1 when none */
-    int intersection_free;     /* 1 when pairs == 0 and no degenerate face */
+    int first_degenerate;       /* lowest degenerate face, -1 when none */
+    int intersection_free;      /* 1 when pairs == 0 and no degenerate face */
 } si_report;
 
 /* Classify faces fa and fb (3 vertex indices each) of the surface with

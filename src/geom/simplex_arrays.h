@@ -10,7 +10,7 @@
  * first simplex with an index outside [0, nv) ("face 3 references vertex
  * 9 but there are 5 vertices"; `what` names the simplex: "face", "tet").
  * SCAF_ERR_USAGE for negative counts or missing arrays. */
-scaf_status simplex_arrays_check(int nv, const double *V, int n, const int *S, int corners, const char *what,
-                                 scaf_error *err);
+scaf_status simplex_arrays_check(int nv, const double *V, int n, const int *S, int corners,
+                                 const char *what, scaf_error *err);
 
 #endif

@@ -16,7 +16,8 @@
 
 void tet_box_around(int nv, const double *V, double scale, double lo[3], double hi[3])
 {
-    double blo[3] = {INFINITY, INFINITY, INFINITY}, bhi[3] = {-INFINITY, -INFINITY, -INFINITY}, ext = 0;
+    double blo[3] = {INFINITY, INFINITY, INFINITY}, bhi[3] = {-INFINITY, -INFINITY, -INFINITY},
+           ext = 0;
     for (int i = 0; i < nv; i++)
         for (int k = 0; k < 3; k++) {
             blo[k] = fmin(blo[k], V[3 * (size_t)i + k]);
@@ -39,7 +40,8 @@ static scaf_status check_edges(int nf, const int *F, scaf_error *err)
     if (!key) return err_nomem(err, "surface edges");
     for (int f = 0; f < nf; f++)
         for (int k = 0; k < 3; k++) {
-            uint64_t a = (uint32_t)F[3 * (size_t)f + k], b = (uint32_t)F[3 * (size_t)f + (k + 1) % 3];
+            uint64_t a = (uint32_t)F[3 * (size_t)f + k],
+                     b = (uint32_t)F[3 * (size_t)f + (k + 1) % 3];
             key[3 * (size_t)f + k] = a < b ? a << 32 | b : b << 32 | a;
         }
     sort_u64(key, 3 * nf);
@@ -48,9 +50,11 @@ static scaf_status check_edges(int nf, const int *F, scaf_error *err)
         for (j = i; j < 3 * nf && key[j] == key[i]; j++) {}
         int a = (int)(key[i] >> 32), b = (int)(key[i] & 0xffffffffu);
         if (j - i == 1)
-            s = err_set(err, SCAF_ERR_MESH, "the surface is open: edge (%d, %d) has one face", a, b);
+            s = err_set(err, SCAF_ERR_MESH, "the surface is open: edge (%d, %d) has one face", a,
+                        b);
         else if (j - i > 2)
-            s = err_set(err, SCAF_ERR_MESH, "the surface is not manifold: edge (%d, %d) has %d faces", a, b, j - i);
+            s = err_set(err, SCAF_ERR_MESH,
+                        "the surface is not manifold: edge (%d, %d) has %d faces", a, b, j - i);
     }
     free(key);
     return s;
@@ -60,11 +64,13 @@ static scaf_status check_input(int nv, const double *V, int nf, const int *F, co
                                const double hi[3], int box_cells, scaf_error *err)
 {
     if (nv < 4 || nf < 4 || !V || !F || box_cells < 1 || box_cells > 64)
-        return err_set(err, SCAF_ERR_USAGE, "tet_box_mesh: bad arguments (%d vertices, %d faces, %d box cells)", nv,
-                       nf, box_cells);
+        return err_set(err, SCAF_ERR_USAGE,
+                       "tet_box_mesh: bad arguments (%d vertices, %d faces, %d box cells)", nv, nf,
+                       box_cells);
     for (int k = 0; k < 3; k++)
         if (!(lo[k] < hi[k]) || !isfinite(lo[k]) || !isfinite(hi[k]))
-            return err_set(err, SCAF_ERR_USAGE, "the box is empty or not finite along axis %d (%g .. %g)", k, lo[k],
+            return err_set(err, SCAF_ERR_USAGE,
+                           "the box is empty or not finite along axis %d (%g .. %g)", k, lo[k],
                            hi[k]);
     si_report r;
     scaf_status s = si_check(nv, V, nf, F, &r, err); /* also validates indices and coordinates */
@@ -72,28 +78,35 @@ static scaf_status check_input(int nv, const double *V, int nf, const int *F, co
     for (int i = 0; i < nv; i++)
         for (int k = 0; k < 3; k++)
             if (!(V[3 * (size_t)i + k] > lo[k] && V[3 * (size_t)i + k] < hi[k]))
-                return err_set(err, SCAF_ERR_USAGE, "vertex %d (%g, %g, %g) is not strictly inside the box", i,
+                return err_set(err, SCAF_ERR_USAGE,
+                               "vertex %d (%g, %g, %g) is not strictly inside the box", i,
                                V[3 * (size_t)i], V[3 * (size_t)i + 1], V[3 * (size_t)i + 2]);
     s = check_edges(nf, F, err);
     if (s) return s;
     if (r.degenerate_faces > 0)
-        return err_set(err, SCAF_ERR_MESH, "the surface has %d zero-area faces (the first: face %d)",
+        return err_set(err, SCAF_ERR_MESH,
+                       "the surface has %d zero-area faces (the first: face %d)",
                        r.degenerate_faces, r.first_degenerate);
     if (r.pairs > 0)
-        return err_set(err, SCAF_ERR_MESH, "the surface intersects itself: %lld pairs of faces (the first: faces %d and %d)",
+        return err_set(err, SCAF_ERR_MESH,
+                       "the surface intersects itself: %lld pairs of faces (the first: faces %d "
+                       "and %d)",
                        r.pairs, r.first[0][0], r.first[0][1]);
     return SCAF_OK;
 }
 
 /* ---- the box ---- */
 
-static double lerp(double a, double b, int i, int n) { return a * ((double)(n - i) / n) + b * ((double)i / n); }
+static double lerp(double a, double b, int i, int n)
+{
+    return a * ((double)(n - i) / n) + b * ((double)i / n);
+}
 
 /* Points of the box surface grid appended after the nv surface points;
  * grid[(i * (n + 1) + j) * (n + 1) + k] = point index of lattice point
  * (i, j, k) on the surface of the lattice cube, -1 inside. */
-static scaf_status build_box(int nv, const double lo[3], const double hi[3], int n, tet_box_mesh *m, double *P,
-                             scaf_error *err)
+static scaf_status build_box(int nv, const double lo[3], const double hi[3], int n, tet_box_mesh *m,
+                             double *P, scaf_error *err)
 {
     size_t side = (size_t)n + 1;
     int *grid = malloc(sizeof(int) * side * side * side);
@@ -168,10 +181,8 @@ static int find_face(const face_ref *fr, int n, const int key[3], int *count)
     face_ref probe = {{key[0], key[1], key[2]}, -1, 0};
     while (lo < hi) {
         int mid = lo + (hi - lo) / 2;
-        if (cmp_face(&fr[mid], &probe) < 0)
-            lo = mid + 1;
-        else
-            hi = mid;
+        if (cmp_face(&fr[mid], &probe) < 0) lo = mid + 1;
+        else hi = mid;
     }
     int c = 0;
     while (lo + c < n && !memcmp(fr[lo + c].v, key, sizeof fr[0].v)) c++;
@@ -205,7 +216,8 @@ static face_ref *sorted_faces(const tet_box_mesh *m)
  * outside); the walk fails if the surface does not separate consistently.
  * TetGen's region attribute is a cross-check: its seeded outer region
  * must be labelled outside. */
-static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const double *attribute, scaf_error *err)
+static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const double *attribute,
+                                   scaf_error *err)
 {
     size_t nref = 4 * (size_t)m->nt;
     face_ref *fr = sorted_faces(m);
@@ -232,8 +244,8 @@ static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const 
             nb[a] = fr[i + 1].tet;
             nb[4 * (size_t)fr[i + 1].tet + fr[i + 1].side] = fr[i].tet;
         } else {
-            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen face (%d, %d, %d) bounds %d tets", fr[i].v[0], fr[i].v[1],
-                        fr[i].v[2], (int)(j - i));
+            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen face (%d, %d, %d) bounds %d tets",
+                        fr[i].v[0], fr[i].v[1], fr[i].v[2], (int)(j - i));
         }
     }
     /* every input triangle: a face of two tets; every box triangle: of one */
@@ -242,8 +254,9 @@ static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const 
         sorted3(F + 3 * (size_t)f, key);
         int at = find_face(fr, (int)nref, key, &c);
         if (c != 2)
-            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen lost surface face %d (%d, %d, %d): it bounds %d tets, not 2",
-                        f, F[3 * (size_t)f], F[3 * (size_t)f + 1], F[3 * (size_t)f + 2], c);
+            s = err_set(err, SCAF_ERR_INTERNAL,
+                        "TetGen lost surface face %d (%d, %d, %d): it bounds %d tets, not 2", f,
+                        F[3 * (size_t)f], F[3 * (size_t)f + 1], F[3 * (size_t)f + 2], c);
         else
             for (int e = 0; e < 2; e++) cross[4 * (size_t)fr[at + e].tet + fr[at + e].side] = 1;
     }
@@ -251,10 +264,13 @@ static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const 
         int key[3], c;
         sorted3(m->box_F + 3 * (size_t)f, key);
         find_face(fr, (int)nref, key, &c);
-        if (c != 1) s = err_set(err, SCAF_ERR_INTERNAL, "TetGen lost box face %d: it bounds %d tets, not 1", f, c);
+        if (c != 1)
+            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen lost box face %d: it bounds %d tets, not 1",
+                        f, c);
     }
     if (s == SCAF_OK && hull != m->nbox_faces)
-        s = err_set(err, SCAF_ERR_INTERNAL, "the TetGen mesh has %d hull faces, the box %d", hull, m->nbox_faces);
+        s = err_set(err, SCAF_ERR_INTERNAL, "the TetGen mesh has %d hull faces, the box %d", hull,
+                    m->nbox_faces);
     /* the walk */
     int head = 0, tail = 0;
     for (int t = 0; t < m->nt; t++) {
@@ -275,7 +291,8 @@ static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const 
                 m->inside[u] = want;
                 queue[tail++] = u;
             } else if (m->inside[u] != want) {
-                s = err_set(err, SCAF_ERR_INTERNAL, "the surface does not separate inside from outside at tet %d", u);
+                s = err_set(err, SCAF_ERR_INTERNAL,
+                            "the surface does not separate inside from outside at tet %d", u);
             }
         }
     }
@@ -283,7 +300,8 @@ static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const 
         s = err_set(err, SCAF_ERR_INTERNAL, "%d tets are not connected to the box", m->nt - tail);
     for (int t = 0; t < m->nt && s == SCAF_OK; t++) {
         if (attribute[t] == OUTSIDE_ATTRIBUTE && m->inside[t])
-            s = err_set(err, SCAF_ERR_INTERNAL, "tet %d is in TetGen's outer region but inside the surface", t);
+            s = err_set(err, SCAF_ERR_INTERNAL,
+                        "tet %d is in TetGen's outer region but inside the surface", t);
         m->ninside += m->inside[t];
     }
     free(fr);
@@ -295,8 +313,9 @@ static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const 
 
 /* ---- the build ---- */
 
-scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, const double lo[3], const double hi[3],
-                               int box_cells, tet_box_mesh *out, scaf_error *err)
+scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, const double lo[3],
+                               const double hi[3], int box_cells, tet_box_mesh *out,
+                               scaf_error *err)
 {
     memset(out, 0, sizeof *out);
     scaf_status s = check_input(nv, V, nf, F, lo, hi, box_cells, err);
@@ -323,8 +342,8 @@ scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, co
         double blo[3] = {INFINITY, INFINITY, INFINITY};
         for (int i = 0; i < nv; i++)
             for (int k = 0; k < 3; k++) blo[k] = fmin(blo[k], V[3 * (size_t)i + k]);
-        double seed[4] = {lo[0] * 0.5 + blo[0] * 0.5, lo[1] * 0.5 + blo[1] * 0.5, lo[2] * 0.5 + blo[2] * 0.5,
-                          OUTSIDE_ATTRIBUTE};
+        double seed[4] = {lo[0] * 0.5 + blo[0] * 0.5, lo[1] * 0.5 + blo[1] * 0.5,
+                          lo[2] * 0.5 + blo[2] * 0.5, OUTSIDE_ATTRIBUTE};
         tetgen_result tr;
         memset(&tr, 0, sizeof tr);
         s = tetgen_call(nv + out->nbox, P, nf + out->nbox_faces, all_F, 1, seed, &tr, err);
@@ -334,8 +353,9 @@ scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, co
             out->nt = tr.nt;
             out->T = tr.T;
             attribute = tr.attribute;
-            if (s == SCAF_OK && (out->nv < nv + out->nbox ||
-                                 memcmp(out->V, P, sizeof(double) * 3 * (size_t)(nv + out->nbox))))
+            if (s == SCAF_OK &&
+                (out->nv < nv + out->nbox ||
+                 memcmp(out->V, P, sizeof(double) * 3 * (size_t)(nv + out->nbox))))
                 s = err_set(err, SCAF_ERR_INTERNAL, "TetGen changed or dropped input points");
         }
     }
@@ -345,7 +365,8 @@ scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, co
         tet_orient_report r;
         s = tet_orient_check(out->nv, out->V, out->nt, out->T, &r, err);
         if (s == SCAF_OK && r.positive != out->nt)
-            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen produced %d inverted and %d flat tets (the first: tet %d)",
+            s = err_set(err, SCAF_ERR_INTERNAL,
+                        "TetGen produced %d inverted and %d flat tets (the first: tet %d)",
                         r.inverted, r.degenerate, r.first_bad);
     }
     if (s == SCAF_OK) s = label_and_check(out, nf, F, attribute, err);

@@ -28,17 +28,17 @@
 #include "base/error.h"
 
 typedef struct tet_box_mesh {
-    int nv;                /* vertices: the surface's nsurface first, then
+    int nv;    /* vertices: the surface's nsurface first, then
                               the box's nbox, then points TetGen added */
-    double *V;             /* #V by 3 */
+    double *V; /* #V by 3 */
     int nsurface, nbox;
-    int nt;                /* tetrahedra */
-    int *T;                /* #T by 4 vertex indices, positively oriented:
+    int nt;              /* tetrahedra */
+    int *T;              /* #T by 4 vertex indices, positively oriented:
                               det[b - a, c - a, d - a] > 0 */
-    signed char *inside;   /* #T: 1 inside the surface, 0 between it and the box */
-    int ninside;           /* tets with inside == 1 */
-    int nbox_faces;        /* triangles of the box (12 n^2) */
-    int *box_F;            /* #box_faces by 3, outward, indices into V */
+    signed char *inside; /* #T: 1 inside the surface, 0 between it and the box */
+    int ninside;         /* tets with inside == 1 */
+    int nbox_faces;      /* triangles of the box (12 n^2) */
+    int *box_F;          /* #box_faces by 3, outward, indices into V */
 } tet_box_mesh;
 
 /* A box around the surface: its bounding box scaled by `scale` (> 1)
@@ -55,8 +55,9 @@ void tet_box_around(int nv, const double *V, double scale, double lo[3], double 
  * Errors: SCAF_ERR_USAGE (bad arguments, box), SCAF_ERR_MESH (the surface
  * cannot be meshed: the message names the face, edge or vertex),
  * SCAF_ERR_NOMEM, SCAF_ERR_INTERNAL (TetGen's output failed a check). */
-scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, const double lo[3], const double hi[3],
-                               int box_cells, tet_box_mesh *out, scaf_error *err);
+scaf_status tet_box_mesh_build(int nv, const double *V, int nf, const int *F, const double lo[3],
+                               const double hi[3], int box_cells, tet_box_mesh *out,
+                               scaf_error *err);
 
 void tet_box_mesh_free(tet_box_mesh *m);
 

@@ -29,10 +29,8 @@ scaf_status tet_orient_check(int nv, const double *V, int nt, const int *T, tet_
             r->positive++;
             continue;
         }
-        if (s < 0)
-            r->inverted++;
-        else
-            r->degenerate++;
+        if (s < 0) r->inverted++;
+        else r->degenerate++;
         if (r->first_bad < 0) r->first_bad = t;
     }
     return SCAF_OK;

@@ -13,11 +13,11 @@
 #include "base/error.h"
 
 typedef struct tet_orient_report {
-    int tets;          /* tetrahedra checked */
+    int tets; /* tetrahedra checked */
     int positive;
     int inverted;
     int degenerate;
-    int first_bad;     /* lowest inverted or degenerate tet, -1 when none */
+    int first_bad; /* lowest inverted or degenerate tet, -1 when none */
 } tet_orient_report;
 
 /* The exact sign of the signed volume of tet (a, b, c, d): +1, 0 or -1. */

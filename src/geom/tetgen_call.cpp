@@ -23,7 +23,8 @@
 
 #include "geom/tetgen_call.h"
 
-namespace {
+namespace
+{
 
 const char *reason(int code)
 {
@@ -33,7 +34,8 @@ const char *reason(int code)
     case 3: return "input facets intersect each other (self-intersecting surface)";
     case 4: return "an input feature is smaller than TetGen's tolerance (nearly coincident points)";
     case 5: return "two input facets are too close to each other";
-    case 10: return "invalid input (e.g. an open or non-manifold surface, a facet with repeated points)";
+    case 10:
+        return "invalid input (e.g. an open or non-manifold surface, a facet with repeated points)";
     default: return "unknown TetGen error";
     }
 }
@@ -92,7 +94,8 @@ int child_fd = -1; // only ever set in the forked child
 }
 
 // tetgenio frees its lists with delete[]: fill them with new[].
-void fill_input(tetgenio &in, int np, const double *P, int ntri, const int *tri, int nseed, const double *seed)
+void fill_input(tetgenio &in, int np, const double *P, int ntri, const int *tri, int nseed,
+                const double *seed)
 {
     in.firstnumber = 0;
     in.numberofpoints = np;
@@ -134,11 +137,14 @@ void fill_input(tetgenio &in, int np, const double *P, int ntri, const int *tri,
     if (!b.parse_commandline(switches)) throw 2;
     tetrahedralize(&b, &in, &out);
     if (out.numberofcorners != 4) throw 2;
-    reply_header h = {1, 0, out.numberofpoints, out.numberoftetrahedra, out.numberoftetrahedronattributes};
-    bool ok = write_all(fd, &h, sizeof h) && write_all(fd, out.pointlist, sizeof(double) * 3 * (size_t)h.np) &&
-              write_all(fd, out.tetrahedronlist, sizeof(int) * 4 * (size_t)h.nt);
+    reply_header h = {1, 0, out.numberofpoints, out.numberoftetrahedra,
+                      out.numberoftetrahedronattributes};
+    bool ok = write_all(fd, &h, sizeof h) &&
+        write_all(fd, out.pointlist, sizeof(double) * 3 * (size_t)h.np) &&
+        write_all(fd, out.tetrahedronlist, sizeof(int) * 4 * (size_t)h.nt);
     for (int t = 0; ok && t < h.nt && h.nattributes > 0; t++)
-        ok = write_all(fd, &out.tetrahedronattributelist[(size_t)h.nattributes * t], sizeof(double));
+        ok =
+            write_all(fd, &out.tetrahedronattributelist[(size_t)h.nattributes * t], sizeof(double));
     _exit(ok ? 0 : 1);
 }
 
@@ -149,16 +155,22 @@ scaf_status read_reply(int fd, tetgen_result *r, scaf_error *err)
     reply_header h;
     if (!read_all(fd, &h, sizeof h)) return SCAF_ERR_INTERNAL; // the child died: said by the caller
     if (!h.ok)
-        return err_set(err, h.code == 1 ? SCAF_ERR_NOMEM : h.code == 2 ? SCAF_ERR_INTERNAL : SCAF_ERR_MESH,
-                       "TetGen cannot mesh the surface: %s (TetGen error %d)", reason(h.code), h.code);
-    if (h.np < 0 || h.nt < 0) return err_set(err, SCAF_ERR_INTERNAL, "TetGen returned negative sizes");
+        return err_set(err,
+                       h.code == 1       ? SCAF_ERR_NOMEM
+                           : h.code == 2 ? SCAF_ERR_INTERNAL
+                                         : SCAF_ERR_MESH,
+                       "TetGen cannot mesh the surface: %s (TetGen error %d)", reason(h.code),
+                       h.code);
+    if (h.np < 0 || h.nt < 0)
+        return err_set(err, SCAF_ERR_INTERNAL, "TetGen returned negative sizes");
     r->np = h.np;
     r->nt = h.nt;
     r->P = (double *)std::malloc(sizeof(double) * 3 * (size_t)(h.np > 0 ? h.np : 1));
     r->T = (int *)std::malloc(sizeof(int) * 4 * (size_t)(h.nt > 0 ? h.nt : 1));
     r->attribute = (double *)std::calloc((size_t)(h.nt > 0 ? h.nt : 1), sizeof(double));
     if (!r->P || !r->T || !r->attribute) return err_nomem(err, "the TetGen mesh");
-    if (!read_all(fd, r->P, sizeof(double) * 3 * (size_t)h.np) || !read_all(fd, r->T, sizeof(int) * 4 * (size_t)h.nt) ||
+    if (!read_all(fd, r->P, sizeof(double) * 3 * (size_t)h.np) ||
+        !read_all(fd, r->T, sizeof(int) * 4 * (size_t)h.nt) ||
         (h.nattributes > 0 && !read_all(fd, r->attribute, sizeof(double) * (size_t)h.nt)))
         return err_set(err, SCAF_ERR_INTERNAL, "the TetGen process ended before sending its mesh");
     return SCAF_OK;
@@ -174,20 +186,23 @@ extern "C" void tetgen_result_free(tetgen_result *r)
     std::memset(r, 0, sizeof *r);
 }
 
-extern "C" scaf_status tetgen_call(int np, const double *P, int ntri, const int *tri, int nseed, const double *seed,
-                                   tetgen_result *out, scaf_error *err)
+extern "C" scaf_status tetgen_call(int np, const double *P, int ntri, const int *tri, int nseed,
+                                   const double *seed, tetgen_result *out, scaf_error *err)
 {
     std::memset(out, 0, sizeof *out);
     if (np < 4 || ntri < 4 || nseed < 0 || !P || !tri || (nseed > 0 && !seed))
-        return err_set(err, SCAF_ERR_USAGE, "tetgen_call: bad arguments (%d points, %d facets)", np, ntri);
+        return err_set(err, SCAF_ERR_USAGE, "tetgen_call: bad arguments (%d points, %d facets)", np,
+                       ntri);
     int fds[2];
     if (pipe(fds) != 0)
-        return err_set(err, SCAF_ERR_INTERNAL, "cannot create a pipe for TetGen: %s", std::strerror(errno));
+        return err_set(err, SCAF_ERR_INTERNAL, "cannot create a pipe for TetGen: %s",
+                       std::strerror(errno));
     pid_t pid = fork();
     if (pid < 0) {
         close(fds[0]);
         close(fds[1]);
-        return err_set(err, SCAF_ERR_NOMEM, "cannot start the TetGen process: %s", std::strerror(errno));
+        return err_set(err, SCAF_ERR_NOMEM, "cannot start the TetGen process: %s",
+                       std::strerror(errno));
     }
     if (pid == 0) {
         close(fds[0]);
@@ -202,7 +217,8 @@ extern "C" scaf_status tetgen_call(int np, const double *P, int ntri, const int 
     while (waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {}
     if (s != SCAF_OK && child_err.message[0] == '\0') {
         if (WIFSIGNALED(wstatus))
-            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen crashed (signal %d) on this input", WTERMSIG(wstatus));
+            s = err_set(err, SCAF_ERR_INTERNAL, "TetGen crashed (signal %d) on this input",
+                        WTERMSIG(wstatus));
         else
             s = err_set(err, SCAF_ERR_INTERNAL, "TetGen ended without a mesh (exit status %d)",
                         WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : -1);

@@ -51,8 +51,8 @@ typedef struct tetgen_result {
  *   out          the mesh, emptied on failure
  * Errors: SCAF_ERR_MESH when TetGen refuses the input (the message says
  * why), SCAF_ERR_NOMEM, SCAF_ERR_INTERNAL for TetGen's internal errors. */
-scaf_status tetgen_call(int np, const double *P, int ntri, const int *tri, int nseed, const double *seed,
-                        tetgen_result *out, scaf_error *err);
+scaf_status tetgen_call(int np, const double *P, int ntri, const int *tri, int nseed,
+                        const double *seed, tetgen_result *out, scaf_error *err);
 
 void tetgen_result_free(tetgen_result *r);
 

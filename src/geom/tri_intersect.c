@@ -67,15 +67,17 @@ static int seg_seg_2d(const double p[2], const double q[2], const double r[2], c
 }
 
 /* p in the closed non-degenerate triangle abc. */
-static int point_in_tri_2d(const double p[2], const double a[2], const double b[2], const double c[2])
+static int point_in_tri_2d(const double p[2], const double a[2], const double b[2],
+                           const double c[2])
 {
     int s = sgn(orient2d(a, b, c));
-    return sgn(orient2d(a, b, p)) != -s && sgn(orient2d(b, c, p)) != -s && sgn(orient2d(c, a, p)) != -s;
+    return sgn(orient2d(a, b, p)) != -s && sgn(orient2d(b, c, p)) != -s &&
+        sgn(orient2d(c, a, p)) != -s;
 }
 
 /* Segment pq lying in the plane of triangle abc. */
-static int seg_tri_coplanar(const double p[3], const double q[3], const double a[3], const double b[3],
-                            const double c[3])
+static int seg_tri_coplanar(const double p[3], const double q[3], const double a[3],
+                            const double b[3], const double c[3])
 {
     int axis = tri3_projection_axis(a, b, c);
     double p2[2], q2[2], a2[2], b2[2], c2[2];
@@ -85,14 +87,15 @@ static int seg_tri_coplanar(const double p[3], const double q[3], const double a
     drop_axis(axis, b, b2);
     drop_axis(axis, c, c2);
     return point_in_tri_2d(p2, a2, b2, c2) || point_in_tri_2d(q2, a2, b2, c2) ||
-           seg_seg_2d(p2, q2, a2, b2) || seg_seg_2d(p2, q2, b2, c2) || seg_seg_2d(p2, q2, c2, a2);
+        seg_seg_2d(p2, q2, a2, b2) || seg_seg_2d(p2, q2, b2, c2) || seg_seg_2d(p2, q2, c2, a2);
 }
 
 /* Segment pq meeting the plane of triangle t in exactly one point: that
  * point is in t iff the line pq passes every directed edge on one side. */
 static int line_meets_tri(const double p[3], const double q[3], const double *const t[3])
 {
-    int o1 = sgn(orient3d(p, q, t[0], t[1])), o2 = sgn(orient3d(p, q, t[1], t[2])), o3 = sgn(orient3d(p, q, t[2], t[0]));
+    int o1 = sgn(orient3d(p, q, t[0], t[1])), o2 = sgn(orient3d(p, q, t[1], t[2])),
+        o3 = sgn(orient3d(p, q, t[2], t[0]));
     int has_pos = o1 > 0 || o2 > 0 || o3 > 0, has_neg = o1 < 0 || o2 < 0 || o3 < 0;
     return !(has_pos && has_neg);
 }

@@ -20,12 +20,12 @@ void tri_complex_free(tri_complex *c)
 {
     if (!c) return;
     mesh_edges_free(&c->edges);
-    int **arrays[] = {&c->face_group, &c->group_face_start, &c->group_faces,
-                      &c->group_vertices, &c->group_edges, &c->group_loops,
-                      &c->group_euler, &c->group_nm_edges, &c->group_nm_vertices,
-                      &c->group_misoriented, &c->group_orientable, &c->group_genus,
-                      &c->group_bad_edge, &c->group_bad_vertex, &c->group_bad_orient,
-                      &c->loop_group, &c->loop_ordered, &c->loop_start, &c->loop_he};
+    int **arrays[] = {
+        &c->face_group,        &c->group_face_start,  &c->group_faces,      &c->group_vertices,
+        &c->group_edges,       &c->group_loops,       &c->group_euler,      &c->group_nm_edges,
+        &c->group_nm_vertices, &c->group_misoriented, &c->group_orientable, &c->group_genus,
+        &c->group_bad_edge,    &c->group_bad_vertex,  &c->group_bad_orient, &c->loop_group,
+        &c->loop_ordered,      &c->loop_start,        &c->loop_he};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) free(*arrays[i]);
     memset(c, 0, sizeof *c);
 }
@@ -83,11 +83,13 @@ static scaf_status build_groups(tri_complex *c, int ngroups, const int *face_gro
     c->face_group = malloc(((size_t)nf + 1) * sizeof(int));
     c->group_face_start = calloc((size_t)ngroups + 1, sizeof(int));
     c->group_faces = malloc(((size_t)nf + 1) * sizeof(int));
-    if (!c->face_group || !c->group_face_start || !c->group_faces) return err_nomem(err, "face groups");
+    if (!c->face_group || !c->group_face_start || !c->group_faces)
+        return err_nomem(err, "face groups");
     for (int f = 0; f < nf; f++) {
         int g = face_group[f];
         if (g < 0 || g >= ngroups)
-            return err_set(err, SCAF_ERR_INTERNAL, "face %d has group %d outside [0, %d)", f, g, ngroups);
+            return err_set(err, SCAF_ERR_INTERNAL, "face %d has group %d outside [0, %d)", f, g,
+                           ngroups);
         c->face_group[f] = g;
         c->group_face_start[g + 1]++;
     }
@@ -238,8 +240,8 @@ static scaf_status boundary_loops(tri_complex *c, const int *F, scaf_error *err)
     size_t nh = 3 * (size_t)c->nf;
     int nb = c->boundary_edges;
     scaf_status st = SCAF_OK;
-    int *bhe = malloc(((size_t)nb + 1) * sizeof *bhe);     /* boundary half-edges, ascending */
-    int *vstart = calloc((size_t)n + 2, sizeof *vstart);   /* per-index incidence (CSR) */
+    int *bhe = malloc(((size_t)nb + 1) * sizeof *bhe);   /* boundary half-edges, ascending */
+    int *vstart = calloc((size_t)n + 2, sizeof *vstart); /* per-index incidence (CSR) */
     int *vlist = malloc((2 * (size_t)nb + 1) * sizeof *vlist);
     int *parent = malloc(((size_t)nb + 1) * sizeof *parent);
     int *bad = calloc((size_t)nb + 1, sizeof *bad);
@@ -281,7 +283,8 @@ static scaf_status boundary_loops(tri_complex *c, const int *F, scaf_error *err)
     for (int v = 0; v < n; v++) {
         int k = 0;
         for (int i = vstart[v]; i < vstart[v + 1]; i++)
-            scratch[k++] = ((uint64_t)(uint32_t)c->face_group[bhe[vlist[i]] / 3] << 32) | (uint32_t)vlist[i];
+            scratch[k++] =
+                ((uint64_t)(uint32_t)c->face_group[bhe[vlist[i]] / 3] << 32) | (uint32_t)vlist[i];
         sort_u64(scratch, k);
         for (int i = 1; i < k; i++)
             if (scratch[i] >> 32 == scratch[i - 1] >> 32)
@@ -293,7 +296,8 @@ static scaf_status boundary_loops(tri_complex *c, const int *F, scaf_error *err)
     for (int v = 0; v < n; v++) {
         int k = 0;
         for (int i = vstart[v]; i < vstart[v + 1]; i++)
-            scratch[k++] = ((uint64_t)(uint32_t)uf_find(parent, vlist[i]) << 32) | (uint32_t)vlist[i];
+            scratch[k++] =
+                ((uint64_t)(uint32_t)uf_find(parent, vlist[i]) << 32) | (uint32_t)vlist[i];
         sort_u64(scratch, k);
         for (int s0 = 0, s1; s0 < k; s0 = s1) {
             int r = (int)(scratch[s0] >> 32), outs = 0, ins = 0, out_b = -1, in_b = -1;
@@ -382,10 +386,10 @@ scaf_status tri_complex_build(int n, int nf, const int *F, int ngroups, const in
     st = mesh_edges_build(n, nf, F, &c->edges, err);
     if (st) goto fail;
 
-    int **per_group[] = {&c->group_vertices, &c->group_edges, &c->group_loops,
-                         &c->group_euler, &c->group_nm_edges, &c->group_nm_vertices,
+    int **per_group[] = {&c->group_vertices,    &c->group_edges,      &c->group_loops,
+                         &c->group_euler,       &c->group_nm_edges,   &c->group_nm_vertices,
                          &c->group_misoriented, &c->group_orientable, &c->group_genus,
-                         &c->group_bad_edge, &c->group_bad_vertex, &c->group_bad_orient};
+                         &c->group_bad_edge,    &c->group_bad_vertex, &c->group_bad_orient};
     for (size_t i = 0; i < sizeof per_group / sizeof per_group[0]; i++) {
         *per_group[i] = calloc((size_t)ngroups + 1, sizeof(int));
         if (!*per_group[i]) {
@@ -407,8 +411,8 @@ scaf_status tri_complex_build(int n, int nf, const int *F, int ngroups, const in
         c->group_euler[g] = chi;
         int twice = 2 - chi - c->group_loops[g];
         int manifold = !c->group_nm_edges[g] && !c->group_nm_vertices[g];
-        c->group_genus[g] = manifold && c->group_orientable[g] && twice >= 0 && twice % 2 == 0
-                                ? twice / 2 : -1;
+        c->group_genus[g] =
+            manifold && c->group_orientable[g] && twice >= 0 && twice % 2 == 0 ? twice / 2 : -1;
     }
     return SCAF_OK;
 

@@ -32,41 +32,41 @@
 #include "mesh/edges.h"
 
 typedef struct tri_complex {
-    int n;                  /* size of the index space */
-    int nf;                 /* number of faces */
-    mesh_edges edges;       /* edge table of F (see mesh/edges.h) */
+    int n;            /* size of the index space */
+    int nf;           /* number of faces */
+    mesh_edges edges; /* edge table of F (see mesh/edges.h) */
 
     /* ---- groups ---- */
     int ngroups;
-    int *face_group;        /* #F group of each face (copy of the input) */
-    int *group_face_start;  /* ngroups+1: faces of group g are            */
-    int *group_faces;       /*   group_faces[start[g] .. start[g+1]-1], ascending */
+    int *face_group;       /* #F group of each face (copy of the input) */
+    int *group_face_start; /* ngroups+1: faces of group g are            */
+    int *group_faces;      /*   group_faces[start[g] .. start[g+1]-1], ascending */
 
     /* ---- per group, each ngroups long ---- */
-    int *group_vertices;    /* referenced indices */
+    int *group_vertices; /* referenced indices */
     int *group_edges;
-    int *group_loops;       /* boundary loops */
-    int *group_euler;       /* V - E + F */
+    int *group_loops; /* boundary loops */
+    int *group_euler; /* V - E + F */
     int *group_nm_edges;
     int *group_nm_vertices;
     int *group_misoriented;
-    int *group_orientable;  /* 1 / 0 */
-    int *group_genus;       /* -1 when undefined */
-    int *group_bad_edge;    /* first non-manifold edge of the group or -1 */
-    int *group_bad_vertex;  /* first non-manifold vertex or -1 */
-    int *group_bad_orient;  /* first misoriented edge or -1 */
+    int *group_orientable; /* 1 / 0 */
+    int *group_genus;      /* -1 when undefined */
+    int *group_bad_edge;   /* first non-manifold edge of the group or -1 */
+    int *group_bad_vertex; /* first non-manifold vertex or -1 */
+    int *group_bad_orient; /* first misoriented edge or -1 */
 
     /* ---- totals over all groups ---- */
-    int referenced;         /* indices used by at least one valid face */
+    int referenced; /* indices used by at least one valid face */
     int boundary_edges;
     int nm_edges, nm_vertices, misoriented;
 
     /* ---- boundary loops ---- */
     int nloops;
-    int *loop_group;        /* #loops group of each loop */
-    int *loop_ordered;      /* #loops 1 if the loop is a simple cycle */
-    int *loop_start;        /* #loops+1: half-edges of loop l are             */
-    int *loop_he;           /*   loop_he[loop_start[l] .. loop_start[l+1]-1]  */
+    int *loop_group;   /* #loops group of each loop */
+    int *loop_ordered; /* #loops 1 if the loop is a simple cycle */
+    int *loop_start;   /* #loops+1: half-edges of loop l are             */
+    int *loop_he;      /*   loop_he[loop_start[l] .. loop_start[l+1]-1]  */
     /* For an ordered loop the half-edges are in traversal order: each one
      * ends where the next starts, the faces lie on their left, and the loop
      * starts at its smallest half-edge id. Otherwise they are ascending.

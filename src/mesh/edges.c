@@ -27,7 +27,8 @@ scaf_status mesh_edges_build(int n, int nf, const int *F, mesh_edges *e, scaf_er
 {
     memset(e, 0, sizeof *e);
     if (n < 0 || nf < 0 || nf > INT_MAX / 3)
-        return err_set(err, SCAF_ERR_MESH, "edge table: %d faces over %d indices is out of range", nf, n);
+        return err_set(err, SCAF_ERR_MESH, "edge table: %d faces over %d indices is out of range",
+                       nf, n);
     size_t nh = 3 * (size_t)nf;
     unsigned char *invalid = malloc((size_t)nf + 1);
     e->he_edge = malloc((nh ? nh : 1) * sizeof *e->he_edge);
@@ -61,7 +62,8 @@ scaf_status mesh_edges_build(int n, int nf, const int *F, mesh_edges *e, scaf_er
     }
     e->edge_he_start[ne] = nvalid;
     e->ne = ne;
-    for (int k = 0; k < ne; k++) assert(e->ev[2 * k] < e->ev[2 * k + 1] && mesh_edge_valence(e, k) > 0);
+    for (int k = 0; k < ne; k++)
+        assert(e->ev[2 * k] < e->ev[2 * k + 1] && mesh_edge_valence(e, k) > 0);
     free(invalid);
     return SCAF_OK;
 

@@ -12,13 +12,13 @@
 #include "base/error.h"
 
 typedef struct mesh {
-    int nv;        /* number of vertices */
-    double *V;     /* #V by 3 positions */
-    int nf;        /* number of triangles */
-    int *F;        /* #F by 3 vertex indices, 0-based, counter-clockwise */
-    int nuv;       /* number of UV coordinates; 0 when the mesh has none */
-    double *UV;    /* #UV by 2 texture coordinates, NULL when nuv == 0 */
-    int *FT;       /* #F by 3 UV indices per corner, NULL when nuv == 0 */
+    int nv;     /* number of vertices */
+    double *V;  /* #V by 3 positions */
+    int nf;     /* number of triangles */
+    int *F;     /* #F by 3 vertex indices, 0-based, counter-clockwise */
+    int nuv;    /* number of UV coordinates; 0 when the mesh has none */
+    double *UV; /* #UV by 2 texture coordinates, NULL when nuv == 0 */
+    int *FT;    /* #F by 3 UV indices per corner, NULL when nuv == 0 */
 } mesh;
 
 /* Allocate arrays for nv vertices, nf faces and nuv UVs (FT allocated iff

@@ -15,12 +15,12 @@
 #include "mesh/mesh.h"
 
 typedef struct mesh_builder {
-    double *V;     /* nv by 3 */
+    double *V; /* nv by 3 */
     size_t nv, cap_v;
-    double *UV;    /* nuv by 2 */
+    double *UV; /* nuv by 2 */
     size_t nuv, cap_uv;
-    int *F;        /* nf by 3 */
-    int *FT;       /* nf by 3, only when with_ft; -1 marks a corner without vt */
+    int *F;  /* nf by 3 */
+    int *FT; /* nf by 3, only when with_ft; -1 marks a corner without vt */
     size_t nf, cap_f;
     int with_ft;
 } mesh_builder;
@@ -41,7 +41,9 @@ static inline int mesh_builder_add_v(mesh_builder *b, double x, double y, double
 {
     if (b->nv == b->cap_v && mesh_builder_grow_v(b)) return -1;
     double *v = b->V + 3 * b->nv++;
-    v[0] = x; v[1] = y; v[2] = z;
+    v[0] = x;
+    v[1] = y;
+    v[2] = z;
     return 0;
 }
 
@@ -49,7 +51,8 @@ static inline int mesh_builder_add_uv(mesh_builder *b, double u, double v)
 {
     if (b->nuv == b->cap_uv && mesh_builder_grow_uv(b)) return -1;
     double *t = b->UV + 2 * b->nuv++;
-    t[0] = u; t[1] = v;
+    t[0] = u;
+    t[1] = v;
     return 0;
 }
 
@@ -58,10 +61,14 @@ static inline int mesh_builder_add_f(mesh_builder *b, int a, int bb, int c, int 
 {
     if (b->nf == b->cap_f && mesh_builder_grow_f(b)) return -1;
     int *f = b->F + 3 * b->nf;
-    f[0] = a; f[1] = bb; f[2] = c;
+    f[0] = a;
+    f[1] = bb;
+    f[2] = c;
     if (b->with_ft) {
         int *t = b->FT + 3 * b->nf;
-        t[0] = ta; t[1] = tb; t[2] = tc;
+        t[0] = ta;
+        t[1] = tb;
+        t[2] = tc;
     }
     b->nf++;
     return 0;

@@ -48,7 +48,8 @@ static mesh_format format_from_content(const char *data, size_t size)
 {
     if (size >= 3 && memcmp(data, "ply", 3) == 0) return MESH_FORMAT_PLY;
     size_t i = 0;
-    while (i < size && (data[i] == ' ' || data[i] == '\t' || data[i] == '\r' || data[i] == '\n')) i++;
+    while (i < size && (data[i] == ' ' || data[i] == '\t' || data[i] == '\r' || data[i] == '\n'))
+        i++;
     size_t j = i;
     while (j < size && j - i < 8 && data[j] > ' ') j++;
     if (j - i >= 3 && memcmp(data + j - 3, "OFF", 3) == 0) return MESH_FORMAT_OFF;
@@ -98,8 +99,8 @@ static scaf_status load_plain(int fd, const char *path, size_t size, char **out,
 }
 
 /* Decompress a whole gzip file (fd is consumed). */
-static scaf_status load_gzip(int fd, const char *path, size_t compressed, char **out, size_t *out_size,
-                             scaf_error *err)
+static scaf_status load_gzip(int fd, const char *path, size_t compressed, char **out,
+                             size_t *out_size, scaf_error *err)
 {
     gzFile gz = gzdopen(fd, "rb");
     if (!gz) {
@@ -120,7 +121,8 @@ static scaf_status load_gzip(int fd, const char *path, size_t compressed, char *
             }
             char *b = realloc(buf, cap * 2);
             if (!b) {
-                st = err_set(err, SCAF_ERR_NOMEM, "%s: out of memory (%zu bytes decompressed)", path, n);
+                st = err_set(err, SCAF_ERR_NOMEM, "%s: out of memory (%zu bytes decompressed)",
+                             path, n);
                 break;
             }
             buf = b;
@@ -131,15 +133,17 @@ static scaf_status load_gzip(int fd, const char *path, size_t compressed, char *
         if (r < 0) {
             int code;
             const char *msg = gzerror(gz, &code);
-            st = code == Z_ERRNO ? err_set(err, SCAF_ERR_IO, "%s: cannot read: %s", path, strerror(errno))
-                                 : err_set(err, SCAF_ERR_PARSE, "%s:1: corrupt gzip data (%s)", path, msg);
+            st = code == Z_ERRNO
+                ? err_set(err, SCAF_ERR_IO, "%s: cannot read: %s", path, strerror(errno))
+                : err_set(err, SCAF_ERR_PARSE, "%s:1: corrupt gzip data (%s)", path, msg);
             break;
         }
         if (r == 0) {
             int code;
             const char *msg = gzerror(gz, &code);
             if (code != Z_OK && code != Z_STREAM_END)
-                st = err_set(err, SCAF_ERR_PARSE, "%s:1: corrupt or truncated gzip data (%s)", path, msg);
+                st = err_set(err, SCAF_ERR_PARSE, "%s:1: corrupt or truncated gzip data (%s)", path,
+                             msg);
             break;
         }
         n += (size_t)r;
@@ -208,14 +212,16 @@ int mesh_read_warnings(const mesh_read_info *info, char *buf, size_t size)
     if (info->polygons_triangulated > 0) {
         n++;
         if (buf && o < size)
-            o += (size_t)snprintf(buf + o, size - o, "%d polygon%s with more than 3 corners fan-triangulated",
-                                  info->polygons_triangulated, info->polygons_triangulated == 1 ? "" : "s");
+            o += (size_t)snprintf(
+                buf + o, size - o, "%d polygon%s with more than 3 corners fan-triangulated",
+                info->polygons_triangulated, info->polygons_triangulated == 1 ? "" : "s");
     }
     if (info->faces_without_uv > 0) {
         n++;
         if (buf && o < size)
-            o += (size_t)snprintf(buf + o, size - o, "%s%d face%s without texture indices: UVs dropped",
-                                  o ? "; " : "", info->faces_without_uv, info->faces_without_uv == 1 ? "" : "s");
+            o += (size_t)snprintf(buf + o, size - o,
+                                  "%s%d face%s without texture indices: UVs dropped", o ? "; " : "",
+                                  info->faces_without_uv, info->faces_without_uv == 1 ? "" : "s");
     }
     return n;
 }

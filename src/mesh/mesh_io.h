@@ -35,9 +35,9 @@ typedef enum mesh_format {
 /* What a reader noticed that is not an error (reported as warnings). */
 typedef struct mesh_read_info {
     mesh_format format;
-    int polygons_triangulated;  /* faces with more than 3 corners, fanned */
-    int normals_ignored;        /* `vn` lines (OBJ) */
-    int faces_without_uv;       /* OBJ faces lacking vt while others have it */
+    int polygons_triangulated; /* faces with more than 3 corners, fanned */
+    int normals_ignored;       /* `vn` lines (OBJ) */
+    int faces_without_uv;      /* OBJ faces lacking vt while others have it */
 } mesh_read_info;
 
 /* The warnings of a read as one line of text for people (no trailing
@@ -55,8 +55,8 @@ scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_erro
 scaf_status mesh_load_file(const char *path, char **data, size_t *size, scaf_error *err);
 
 /* Parse a whole file already in memory; `name` is used in messages. */
-scaf_status mesh_parse(const char *data, size_t size, mesh_format format, const char *name,
-                       mesh *m, mesh_read_info *info, scaf_error *err);
+scaf_status mesh_parse(const char *data, size_t size, mesh_format format, const char *name, mesh *m,
+                       mesh_read_info *info, scaf_error *err);
 
 /* Write an OBJ: `v` lines for every vertex in order (values round-trip
  * exactly), `vt` lines when the mesh has UVs, and `f v/vt` (or `f v`)

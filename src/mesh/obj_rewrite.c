@@ -15,14 +15,14 @@
 typedef struct corner {
     const char *v, *n; /* token starts (n NULL: no normal) */
     int vlen, nlen;
-    int vertex;        /* resolved 0-based vertex index */
+    int vertex; /* resolved 0-based vertex index */
 } corner;
 
 typedef struct rewriter {
     const char *name;
     const mesh *m;
     FILE *f;
-    const char *eol;   /* "\n" or "\r\n" */
+    const char *eol; /* "\n" or "\r\n" */
     corner *c;
     size_t ccap;
     long long nv_seen; /* `v` lines so far (relative indices) */
@@ -55,7 +55,8 @@ static int write_vt_block(rewriter *R)
 }
 
 /* Rewrite one `f` line (s: after the keyword, e: end of line content). */
-static scaf_status rewrite_face(rewriter *R, long line, const char *s, const char *e, scaf_error *err)
+static scaf_status rewrite_face(rewriter *R, long line, const char *s, const char *e,
+                                scaf_error *err)
 {
     size_t n = 0;
     for (;;) {
@@ -75,8 +76,9 @@ static scaf_status rewrite_face(rewriter *R, long line, const char *s, const cha
         const char *slash = memchr(s, '/', (size_t)(t - s));
         c->vlen = (int)((slash ? slash : t) - s);
         if (!corner_vertex(s, slash ? slash : t, R->nv_seen, &c->vertex))
-            return err_set(err, SCAF_ERR_MESH, "%s:%ld: bad face corner (the file changed since it was read?)",
-                           R->name, line);
+            return err_set(err, SCAF_ERR_MESH,
+                           "%s:%ld: bad face corner (the file changed since it was read?)", R->name,
+                           line);
         if (slash) {
             const char *slash2 = memchr(slash + 1, '/', (size_t)(t - slash - 1));
             if (slash2 && slash2 + 1 < t) {
@@ -87,22 +89,25 @@ static scaf_status rewrite_face(rewriter *R, long line, const char *s, const cha
         s = t;
     }
     if (n < 3)
-        return err_set(err, SCAF_ERR_MESH, "%s:%ld: face with %zu corners (the file changed since it was read?)",
+        return err_set(err, SCAF_ERR_MESH,
+                       "%s:%ld: face with %zu corners (the file changed since it was read?)",
                        R->name, line, n);
     for (size_t i = 1; i + 1 < n; i++) {
         const corner *tri[3] = {&R->c[0], &R->c[i], &R->c[i + 1]};
         int fi = R->face;
         if (fi >= R->m->nf)
-            return err_set(err, SCAF_ERR_MESH, "%s:%ld: more faces than the mesh read from it (%d)", R->name, line,
-                           R->m->nf);
+            return err_set(err, SCAF_ERR_MESH, "%s:%ld: more faces than the mesh read from it (%d)",
+                           R->name, line, R->m->nf);
         for (int j = 0; j < 3; j++)
             if (tri[j]->vertex != R->m->F[3 * (size_t)fi + j])
                 return err_set(err, SCAF_ERR_MESH,
-                               "%s:%ld: face %d does not match the mesh read from it (the file changed?)", R->name,
-                               line, fi + 1);
+                               "%s:%ld: face %d does not match the mesh read from it (the file "
+                               "changed?)",
+                               R->name, line, fi + 1);
         if (fputc('f', R->f) == EOF) return err_set(err, SCAF_ERR_IO, "write failed");
         for (int j = 0; j < 3; j++) {
-            int ok = fprintf(R->f, " %.*s/%d", tri[j]->vlen, tri[j]->v, R->m->FT[3 * (size_t)fi + j] + 1) >= 0;
+            int ok = fprintf(R->f, " %.*s/%d", tri[j]->vlen, tri[j]->v,
+                             R->m->FT[3 * (size_t)fi + j] + 1) >= 0;
             if (ok && tri[j]->n) ok = fprintf(R->f, "/%.*s", tri[j]->nlen, tri[j]->n) >= 0;
             if (!ok) return err_set(err, SCAF_ERR_IO, "write failed");
         }
@@ -121,8 +126,8 @@ static scaf_status rewrite(rewriter *R, const char *data, size_t size, scaf_erro
         if (fwrite(p, 1, 3, R->f) != 3) return err_set(err, SCAF_ERR_IO, "write failed");
         p += 3;
     }
-    if (fprintf(R->f, "# texture coordinates by scaf %s; everything else as in the input%s", scaf_version(),
-                R->eol) < 0)
+    if (fprintf(R->f, "# texture coordinates by scaf %s; everything else as in the input%s",
+                scaf_version(), R->eol) < 0)
         return err_set(err, SCAF_ERR_IO, "write failed");
     long line = 0;
     while (p < end) {
@@ -137,7 +142,8 @@ static scaf_status rewrite(rewriter *R, const char *data, size_t size, scaf_erro
         if (kn == 2 && k[0] == 'v' && k[1] == 't') {
             /* old texture coordinate: dropped */
         } else if (kn == 1 && k[0] == 'f') {
-            if (!R->vt_written && write_vt_block(R) != 0) return err_set(err, SCAF_ERR_IO, "write failed");
+            if (!R->vt_written && write_vt_block(R) != 0)
+                return err_set(err, SCAF_ERR_IO, "write failed");
             scaf_status st = rewrite_face(R, line, ke, content_end, err);
             if (st != SCAF_OK) return st;
         } else {
@@ -148,18 +154,21 @@ static scaf_status rewrite(rewriter *R, const char *data, size_t size, scaf_erro
         p = next;
     }
     if (R->face != R->m->nf)
-        return err_set(err, SCAF_ERR_MESH, "%s: %d faces, the mesh read from it has %d (the file changed?)", R->name,
+        return err_set(err, SCAF_ERR_MESH,
+                       "%s: %d faces, the mesh read from it has %d (the file changed?)", R->name,
                        R->face, R->m->nf);
     return SCAF_OK;
 }
 
-scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh *m, scaf_error *err)
+scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh *m,
+                           scaf_error *err)
 {
     if (!in_path || !out_path || !m || !m->F || !mesh_has_uv(m) || !m->UV)
         return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv: missing path, faces or UVs");
     for (size_t k = 0; k < 3 * (size_t)m->nf; k++)
         if (m->FT[k] < 0 || m->FT[k] >= m->nuv)
-            return err_set(err, SCAF_ERR_MESH, "obj_rewrite_uv: face %zu uses UV %d of %d", k / 3, m->FT[k], m->nuv);
+            return err_set(err, SCAF_ERR_MESH, "obj_rewrite_uv: face %zu uses UV %d of %d", k / 3,
+                           m->FT[k], m->nuv);
     char *data = NULL;
     size_t size = 0;
     scaf_status st = mesh_load_file(in_path, &data, &size, err);

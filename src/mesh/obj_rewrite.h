@@ -34,6 +34,7 @@
  * out_path the file to write (plain OBJ)
  * m        the mesh as read (nv, nf, F) with the new UVs (nuv, UV nuv by 2,
  *          FT nf by 3) */
-scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh *m, scaf_error *err);
+scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh *m,
+                           scaf_error *err);
 
 #endif /* SCAF_MESH_OBJ_REWRITE_H */

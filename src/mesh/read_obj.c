@@ -29,11 +29,11 @@
 
 /* Statements that carry no geometry we use. */
 static const char *const obj_ignored[] = {
-    "o",      "g",      "s",        "mtllib",   "usemtl",     "l",         "p",     "vp",
-    "cstype", "deg",    "bmat",     "step",     "curv",       "curv2",     "surf",  "parm",
-    "trim",   "hole",   "scrv",     "sp",       "end",        "con",       "mg",    "bevel",
-    "c_interp", "d_interp", "lod",  "maplib",   "usemap",     "shadow_obj", "trace_obj",
-    "ctech",  "stech",  "call",     "csh",      NULL};
+    "o",        "g",        "s",    "mtllib", "usemtl", "l",          "p",         "vp",
+    "cstype",   "deg",      "bmat", "step",   "curv",   "curv2",      "surf",      "parm",
+    "trim",     "hole",     "scrv", "sp",     "end",    "con",        "mg",        "bevel",
+    "c_interp", "d_interp", "lod",  "maplib", "usemap", "shadow_obj", "trace_obj", "ctech",
+    "stech",    "call",     "csh",  NULL};
 
 static int obj_is_ignored(const char *s, size_t n)
 {
@@ -47,13 +47,13 @@ typedef struct obj_parser {
     const char *name;
     scaf_error *err;
     mesh_builder b;
-    int *cv, *ct;        /* corners of the current face: vertex and vt indices */
+    int *cv, *ct; /* corners of the current face: vertex and vt indices */
     size_t ccap;
-    long long max_v;     /* largest 1-based positive vertex index seen */
+    long long max_v; /* largest 1-based positive vertex index seen */
     long max_v_line;
     long long max_t;
     long max_t_line;
-    long long with_uv;   /* faces with / without texture indices */
+    long long with_uv; /* faces with / without texture indices */
     long long without_uv;
     long long polygons;
     long long normals;
@@ -63,8 +63,7 @@ static scaf_status obj_number_error(obj_parser *P, long line, scan_result r, con
                                     const char *eol, const char *what)
 {
     char tok[64];
-    if (r == SCAN_NONE)
-        return mesh_parse_fail(P->err, P->name, line, "%s: missing value", what);
+    if (r == SCAN_NONE) return mesh_parse_fail(P->err, P->name, line, "%s: missing value", what);
     mesh_quote_token(s, eol, tok, sizeof tok);
     if (r == SCAN_NONFINITE)
         return mesh_parse_fail(P->err, P->name, line, "%s: '%s' is not a finite number", what, tok);
@@ -80,8 +79,8 @@ static scaf_status obj_vertex(obj_parser *P, long line, const char *s, const cha
         if (r != SCAN_OK) return obj_number_error(P, line, r, s, eol, "vertex coordinate");
     }
     if (mesh_builder_add_v(&P->b, x[0], x[1], x[2]))
-        return err_set(P->err, SCAF_ERR_NOMEM, "%s:%ld: out of memory (or more than INT_MAX vertices)",
-                       P->name, line);
+        return err_set(P->err, SCAF_ERR_NOMEM,
+                       "%s:%ld: out of memory (or more than INT_MAX vertices)", P->name, line);
     return SCAF_OK;
 }
 
@@ -113,7 +112,8 @@ static scaf_status obj_index(obj_parser *P, long line, const char **ps, const ch
         char tok[64];
         mesh_quote_token(*ps, eol, tok, sizeof tok);
         if (r == SCAN_RANGE)
-            return mesh_parse_fail(P->err, P->name, line, "%s index in '%s' overflows an int", what, tok);
+            return mesh_parse_fail(P->err, P->name, line, "%s index in '%s' overflows an int", what,
+                                   tok);
         return mesh_parse_fail(P->err, P->name, line, "bad face corner '%s'", tok);
     }
     if (v == 0)
@@ -122,7 +122,8 @@ static scaf_status obj_index(obj_parser *P, long line, const char **ps, const ch
         long long a = (long long)count + v;
         if (a < 0)
             return mesh_parse_fail(P->err, P->name, line,
-                                   "relative %s index %lld reaches before the first one (%zu so far)",
+                                   "relative %s index %lld reaches before the first one (%zu so "
+                                   "far)",
                                    what, v, count);
         *out = (int)a;
     } else {
@@ -153,7 +154,8 @@ static scaf_status obj_face(obj_parser *P, long line, const char *s, const char 
             if (s < eol && *s == '/') {
                 s++; /* a//n */
             } else if (s < eol && !scan_is_space(*s)) {
-                st = obj_index(P, line, &s, eol, '/', P->b.nuv, "texture", &P->max_t, &P->max_t_line, &ti);
+                st = obj_index(P, line, &s, eol, '/', P->b.nuv, "texture", &P->max_t,
+                               &P->max_t_line, &ti);
                 if (st) return st;
                 this_t = 1;
                 if (s < eol && *s == '/') s++;
@@ -196,9 +198,10 @@ static scaf_status obj_face(obj_parser *P, long line, const char *s, const char 
         return mesh_parse_fail(P->err, P->name, line,
                                "face uses vertex %d more than once (degenerate face)", dup + 1);
     for (size_t i = 1; i + 1 < n; i++)
-        if (mesh_builder_add_f(&P->b, P->cv[0], P->cv[i], P->cv[i + 1], P->ct[0], P->ct[i], P->ct[i + 1]))
-            return err_set(P->err, SCAF_ERR_NOMEM, "%s:%ld: out of memory (or more than INT_MAX faces)",
-                           P->name, line);
+        if (mesh_builder_add_f(&P->b, P->cv[0], P->cv[i], P->cv[i + 1], P->ct[0], P->ct[i],
+                               P->ct[i + 1]))
+            return err_set(P->err, SCAF_ERR_NOMEM,
+                           "%s:%ld: out of memory (or more than INT_MAX faces)", P->name, line);
     if (n > 3) P->polygons++;
     if (has_t) P->with_uv++;
     else P->without_uv++;
@@ -245,11 +248,13 @@ scaf_status mesh_parse_obj(const char *data, size_t size, const char *name, mesh
     if (st == SCAF_OK && P.b.nf == 0)
         st = mesh_parse_fail(err, name, line > 0 ? line : 1, "no faces (empty mesh)");
     if (st == SCAF_OK && P.max_v > (long long)P.b.nv)
-        st = mesh_parse_fail(err, name, P.max_v_line, "vertex index %lld out of range (the file has %zu vertices)",
-                             P.max_v, P.b.nv);
+        st = mesh_parse_fail(err, name, P.max_v_line,
+                             "vertex index %lld out of range (the file has %zu vertices)", P.max_v,
+                             P.b.nv);
     if (st == SCAF_OK && P.max_t > (long long)P.b.nuv)
         st = mesh_parse_fail(err, name, P.max_t_line,
-                             "texture index %lld out of range (the file has %zu vt)", P.max_t, P.b.nuv);
+                             "texture index %lld out of range (the file has %zu vt)", P.max_t,
+                             P.b.nuv);
     free(P.cv);
     free(P.ct);
     if (st != SCAF_OK) {

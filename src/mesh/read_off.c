@@ -113,7 +113,8 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
     if (ndim) {
         if ((st = off_header_int(&c, name, "dimension", &dim, err))) return st;
         if (dim != 3)
-            return mesh_parse_fail(err, name, c.line, "dimension %lld is not supported (only 3)", dim);
+            return mesh_parse_fail(err, name, c.line, "dimension %lld is not supported (only 3)",
+                                   dim);
     }
     if ((st = off_header_int(&c, name, "vertex count", &nv, err))) return st;
     if ((st = off_header_int(&c, name, "face count", &nf, err))) return st;
@@ -146,7 +147,8 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
     const char *s, *eol;
     for (long long i = 0; i < nv; i++) {
         if (!off_next_line(&c, &s, &eol)) {
-            st = mesh_parse_fail(err, name, c.line, "truncated file: %lld of %lld vertices read", i, nv);
+            st = mesh_parse_fail(err, name, c.line, "truncated file: %lld of %lld vertices read", i,
+                                 nv);
             goto done;
         }
         double x[3];
@@ -155,10 +157,12 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
             scan_result r = scan_double(&s, eol, &x[d]);
             if (r != SCAN_OK) {
                 if (r == SCAN_NONE)
-                    st = mesh_parse_fail(err, name, c.line, "vertex %lld has %d coordinate%s (needs 3)", i, d,
+                    st = mesh_parse_fail(err, name, c.line,
+                                         "vertex %lld has %d coordinate%s (needs 3)", i, d,
                                          d == 1 ? "" : "s");
                 else
-                    st = mesh_parse_fail(err, name, c.line, "vertex coordinate '%s' is not a %snumber",
+                    st = mesh_parse_fail(err, name, c.line,
+                                         "vertex coordinate '%s' is not a %snumber",
                                          mesh_quote_token(s, eol, tok, sizeof tok),
                                          r == SCAN_NONFINITE ? "finite " : "");
                 goto done;
@@ -169,7 +173,8 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
     }
     for (long long i = 0; i < nf; i++) {
         if (!off_next_line(&c, &s, &eol)) {
-            st = mesh_parse_fail(err, name, c.line, "truncated file: %lld of %lld faces read", i, nf);
+            st = mesh_parse_fail(err, name, c.line, "truncated file: %lld of %lld faces read", i,
+                                 nf);
             goto done;
         }
         long long n;
@@ -186,7 +191,8 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
             goto done;
         }
         if ((size_t)n > (size_t)(eol - s) / 2 + 1) {
-            st = mesh_parse_fail(err, name, c.line, "face says %lld corners but the line is shorter", n);
+            st = mesh_parse_fail(err, name, c.line,
+                                 "face says %lld corners but the line is shorter", n);
             goto done;
         }
         if ((size_t)n > ccap) {
@@ -214,7 +220,9 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
                     st = mesh_parse_fail(err, name, c.line, "bad vertex index '%s'", tok);
                 else
                     st = mesh_parse_fail(err, name, c.line,
-                                         "vertex index %s out of range (the file has %lld vertices)", tok, nv);
+                                         "vertex index %s out of range (the file has %lld "
+                                         "vertices)",
+                                         tok, nv);
                 goto done;
             }
             corners[j] = (int)v;
@@ -222,15 +230,16 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
         int dup;
         int rep = mesh_corners_repeat(corners, (size_t)n, &dup);
         if (rep) {
-            st = rep < 0 ? err_nomem(err, "face corners")
-                         : mesh_parse_fail(err, name, c.line,
-                                           "face uses vertex %d more than once (degenerate face)", dup);
+            st = rep < 0
+                ? err_nomem(err, "face corners")
+                : mesh_parse_fail(err, name, c.line,
+                                  "face uses vertex %d more than once (degenerate face)", dup);
             goto done;
         }
         for (long long j = 1; j + 1 < n; j++)
             if (mesh_builder_add_f(&b, corners[0], corners[j], corners[j + 1], 0, 0, 0)) {
-                st = err_set(err, SCAF_ERR_NOMEM, "%s:%ld: out of memory (or more than INT_MAX faces)",
-                             name, c.line);
+                st = err_set(err, SCAF_ERR_NOMEM,
+                             "%s:%ld: out of memory (or more than INT_MAX faces)", name, c.line);
                 goto done;
             }
         if (n > 3) polygons++;

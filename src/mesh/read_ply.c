@@ -28,14 +28,25 @@
 #include "mesh/mesh_readers.h"
 #include "mesh/text_scan.h"
 
-typedef enum ply_type { PT_NONE, PT_I8, PT_U8, PT_I16, PT_U16, PT_I32, PT_U32, PT_F32, PT_F64 } ply_type;
+typedef enum ply_type {
+    PT_NONE,
+    PT_I8,
+    PT_U8,
+    PT_I16,
+    PT_U16,
+    PT_I32,
+    PT_U32,
+    PT_F32,
+    PT_F64
+} ply_type;
 
 static const struct {
     const char *a, *b;
     ply_type t;
     int size;
-} ply_types[] = {{"char", "int8", PT_I8, 1},      {"uchar", "uint8", PT_U8, 1},   {"short", "int16", PT_I16, 2},
-                 {"ushort", "uint16", PT_U16, 2}, {"int", "int32", PT_I32, 4},    {"uint", "uint32", PT_U32, 4},
+} ply_types[] = {{"char", "int8", PT_I8, 1},      {"uchar", "uint8", PT_U8, 1},
+                 {"short", "int16", PT_I16, 2},   {"ushort", "uint16", PT_U16, 2},
+                 {"int", "int32", PT_I32, 4},     {"uint", "uint32", PT_U32, 4},
                  {"float", "float32", PT_F32, 4}, {"double", "float64", PT_F64, 8}};
 
 static int type_size(ply_type t) { return t == PT_NONE ? 0 : ply_types[t - 1].size; }
@@ -63,7 +74,7 @@ typedef enum ply_format { PLY_ASCII, PLY_LE, PLY_BE } ply_format;
 typedef struct ply_reader {
     const char *p, *end, *body;
     ply_format fmt;
-    long line;        /* ascii: current line; binary: the end_header line */
+    long line; /* ascii: current line; binary: the end_header line */
     const char *name;
     scaf_error *err;
 } ply_reader;
@@ -91,14 +102,62 @@ static void bin_decode(const ply_reader *R, ply_type t, int swap, double *d, lon
     long long iv = 0;
     double dv = 0;
     switch (t) {
-    case PT_I8: { int8_t v; memcpy(&v, b, 1); iv = v; dv = v; break; }
-    case PT_U8: { uint8_t v; memcpy(&v, b, 1); iv = v; dv = v; break; }
-    case PT_I16: { int16_t v; memcpy(&v, b, 2); iv = v; dv = v; break; }
-    case PT_U16: { uint16_t v; memcpy(&v, b, 2); iv = v; dv = v; break; }
-    case PT_I32: { int32_t v; memcpy(&v, b, 4); iv = v; dv = v; break; }
-    case PT_U32: { uint32_t v; memcpy(&v, b, 4); iv = v; dv = v; break; }
-    case PT_F32: { float v; memcpy(&v, b, 4); dv = v; iv = 0; break; }
-    case PT_F64: { double v; memcpy(&v, b, 8); dv = v; iv = 0; break; }
+    case PT_I8: {
+        int8_t v;
+        memcpy(&v, b, 1);
+        iv = v;
+        dv = v;
+        break;
+    }
+    case PT_U8: {
+        uint8_t v;
+        memcpy(&v, b, 1);
+        iv = v;
+        dv = v;
+        break;
+    }
+    case PT_I16: {
+        int16_t v;
+        memcpy(&v, b, 2);
+        iv = v;
+        dv = v;
+        break;
+    }
+    case PT_U16: {
+        uint16_t v;
+        memcpy(&v, b, 2);
+        iv = v;
+        dv = v;
+        break;
+    }
+    case PT_I32: {
+        int32_t v;
+        memcpy(&v, b, 4);
+        iv = v;
+        dv = v;
+        break;
+    }
+    case PT_U32: {
+        uint32_t v;
+        memcpy(&v, b, 4);
+        iv = v;
+        dv = v;
+        break;
+    }
+    case PT_F32: {
+        float v;
+        memcpy(&v, b, 4);
+        dv = v;
+        iv = 0;
+        break;
+    }
+    case PT_F64: {
+        double v;
+        memcpy(&v, b, 8);
+        dv = v;
+        iv = 0;
+        break;
+    }
     default: break;
     }
     if (d) *d = dv;
@@ -117,9 +176,11 @@ static void ascii_skip(ply_reader *R)
 static scaf_status ply_truncated(ply_reader *R, const char *what, long long item)
 {
     if (R->fmt == PLY_ASCII)
-        return mesh_parse_fail(R->err, R->name, R->line, "truncated file: %s %lld is incomplete", what, item);
-    return mesh_parse_fail(R->err, R->name, R->line, "truncated binary data: %s %lld is incomplete (byte %zu)",
-                           what, item, (size_t)(R->p - R->body));
+        return mesh_parse_fail(R->err, R->name, R->line, "truncated file: %s %lld is incomplete",
+                               what, item);
+    return mesh_parse_fail(R->err, R->name, R->line,
+                           "truncated binary data: %s %lld is incomplete (byte %zu)", what, item,
+                           (size_t)(R->p - R->body));
 }
 
 /* Read one value of type t. want_int: must be an integer (list counts and
@@ -150,20 +211,24 @@ static scaf_status ply_value(ply_reader *R, ply_type t, int want_int, double *d,
         char tok[64];
         mesh_quote_token(t0, R->end, tok, sizeof tok);
         return mesh_parse_fail(R->err, R->name, R->line, "%s %lld: '%s' is not %s", what, item, tok,
-                               want_int ? "an integer in range" : r == SCAN_NONFINITE ? "a finite number"
-                                                                                      : "a number");
+                               want_int                  ? "an integer in range"
+                                   : r == SCAN_NONFINITE ? "a finite number"
+                                                         : "a number");
     }
     return SCAF_OK;
 }
 
 /* Skip a property (scalar or list) of one item. */
-static scaf_status ply_skip_prop(ply_reader *R, const ply_prop *pr, const char *what, long long item)
+static scaf_status ply_skip_prop(ply_reader *R, const ply_prop *pr, const char *what,
+                                 long long item)
 {
     scaf_status st;
     if (pr->count_type == PT_NONE) return ply_value(R, pr->type, 0, NULL, NULL, what, item);
     long long n;
     if ((st = ply_value(R, pr->count_type, 1, NULL, &n, what, item))) return st;
-    if (n < 0) return mesh_parse_fail(R->err, R->name, R->line, "%s %lld: negative list length %lld", what, item, n);
+    if (n < 0)
+        return mesh_parse_fail(R->err, R->name, R->line, "%s %lld: negative list length %lld", what,
+                               item, n);
     if (R->fmt != PLY_ASCII) {
         long long bytes = n * type_size(pr->type);
         if (R->end - R->p < bytes) return ply_truncated(R, what, item);
@@ -193,7 +258,10 @@ static int split_words(const char *s, const char *e, const char *w[5], size_t wl
     return n;
 }
 
-static int word_is(const char *w, size_t n, const char *lit) { return strlen(lit) == n && memcmp(w, lit, n) == 0; }
+static int word_is(const char *w, size_t n, const char *lit)
+{
+    return strlen(lit) == n && memcmp(w, lit, n) == 0;
+}
 
 static ply_type parse_type(const char *w, size_t n)
 {
@@ -216,7 +284,8 @@ static void header_free(ply_header *h)
     free(h->elems);
 }
 
-static scaf_status parse_header(const char *data, size_t size, const char *name, ply_header *h, scaf_error *err)
+static scaf_status parse_header(const char *data, size_t size, const char *name, ply_header *h,
+                                scaf_error *err)
 {
     const char *p = data, *end = data + size;
     long line = 0;
@@ -234,13 +303,15 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
         int nw = split_words(p, e, w, wl);
         if (line == 1) {
             if (nw != 1 || !word_is(w[0], wl[0], "ply"))
-                return mesh_parse_fail(err, name, line, "not a PLY file (first line must be 'ply')");
+                return mesh_parse_fail(err, name, line,
+                                       "not a PLY file (first line must be 'ply')");
         } else if (nw == 0) {
             /* tolerate blank header lines */
         } else if (word_is(w[0], wl[0], "comment") || word_is(w[0], wl[0], "obj_info")) {
             /* ignored */
         } else if (word_is(w[0], wl[0], "format")) {
-            if (nw != 3) return mesh_parse_fail(err, name, line, "format line needs a format and a version");
+            if (nw != 3)
+                return mesh_parse_fail(err, name, line, "format line needs a format and a version");
             if (word_is(w[1], wl[1], "ascii")) h->fmt = PLY_ASCII;
             else if (word_is(w[1], wl[1], "binary_little_endian")) h->fmt = PLY_LE;
             else if (word_is(w[1], wl[1], "binary_big_endian")) h->fmt = PLY_BE;
@@ -249,7 +320,8 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
                                        mesh_quote_token(w[1], e, tok, sizeof tok));
             have_format = 1;
         } else if (word_is(w[0], wl[0], "element")) {
-            if (nw != 3) return mesh_parse_fail(err, name, line, "element line needs a name and a count");
+            if (nw != 3)
+                return mesh_parse_fail(err, name, line, "element line needs a name and a count");
             const char *c = w[2];
             long long count;
             if (scan_long(&c, w[2] + wl[2], 0, 0, 1LL << 62, &count) != SCAN_OK)
@@ -269,7 +341,8 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
             el->is_vertex = word_is(w[1], wl[1], "vertex");
             el->is_face = word_is(w[1], wl[1], "face");
         } else if (word_is(w[0], wl[0], "property")) {
-            if (h->nelems == 0) return mesh_parse_fail(err, name, line, "property before any element");
+            if (h->nelems == 0)
+                return mesh_parse_fail(err, name, line, "property before any element");
             ply_elem *el = &h->elems[h->nelems - 1];
             ply_prop pr = {PT_NONE, PT_NONE, ROLE_SKIP};
             const char *pname;
@@ -279,10 +352,11 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
                 pr.type = parse_type(w[3], wl[3]);
                 if (pr.count_type == PT_NONE || pr.type == PT_NONE)
                     return mesh_parse_fail(err, name, line, "unknown PLY type '%s'",
-                                           mesh_quote_token(pr.count_type == PT_NONE ? w[2] : w[3], e, tok,
-                                                            sizeof tok));
+                                           mesh_quote_token(pr.count_type == PT_NONE ? w[2] : w[3],
+                                                            e, tok, sizeof tok));
                 if (!type_is_int(pr.count_type))
-                    return mesh_parse_fail(err, name, line, "list count type must be an integer type");
+                    return mesh_parse_fail(err, name, line,
+                                           "list count type must be an integer type");
                 pname = w[4];
                 pnl = wl[4];
             } else if (nw == 3) {
@@ -303,7 +377,8 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
             if (el->is_face && pr.count_type != PT_NONE &&
                 (word_is(pname, pnl, "vertex_indices") || word_is(pname, pnl, "vertex_index"))) {
                 if (!type_is_int(pr.type))
-                    return mesh_parse_fail(err, name, line, "face indices must have an integer type");
+                    return mesh_parse_fail(err, name, line,
+                                           "face indices must have an integer type");
                 pr.role = ROLE_INDICES;
             }
             for (int k = 0; pr.role != ROLE_SKIP && k < el->nprops; k++)
@@ -318,7 +393,8 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
             }
             el->props[el->nprops++] = pr;
         } else if (word_is(w[0], wl[0], "end_header")) {
-            if (!have_format) return mesh_parse_fail(err, name, line, "no format line before end_header");
+            if (!have_format)
+                return mesh_parse_fail(err, name, line, "no format line before end_header");
             h->end_line = line;
             h->body = next;
             return SCAF_OK;
@@ -337,7 +413,9 @@ static long long min_item_bytes(const ply_elem *el, ply_format fmt)
     long long s = 0;
     for (int k = 0; k < el->nprops; k++) {
         if (fmt == PLY_ASCII) s += 2;
-        else s += type_size(el->props[k].count_type != PT_NONE ? el->props[k].count_type : el->props[k].type);
+        else
+            s += type_size(el->props[k].count_type != PT_NONE ? el->props[k].count_type
+                                                              : el->props[k].type);
     }
     return s;
 }
@@ -364,16 +442,20 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
         if (el->is_vertex && !ev) ev = el;
         if (el->is_face && !ef) ef = el;
         long long mb = min_item_bytes(el, h.fmt);
-        if (mb > 0 && (unsigned long long)el->count > ((unsigned long long)rest + 1) / (unsigned long long)mb) {
+        if (mb > 0 &&
+            (unsigned long long)el->count >
+                ((unsigned long long)rest + 1) / (unsigned long long)mb) {
             st = mesh_parse_fail(err, name, h.end_line,
-                                 "header says %lld '%s' items but only %zu bytes follow (truncated file?)",
+                                 "header says %lld '%s' items but only %zu bytes follow (truncated "
+                                 "file?)",
                                  el->count, el->name, rest);
             goto done;
         }
         need += (unsigned long long)el->count * (unsigned long long)mb;
         if (need > (unsigned long long)rest + 1) {
             st = mesh_parse_fail(err, name, h.end_line,
-                                 "header element counts need more than the %zu bytes that follow (truncated file?)",
+                                 "header element counts need more than the %zu bytes that follow "
+                                 "(truncated file?)",
                                  rest);
             goto done;
         }
@@ -423,12 +505,15 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
                     double *d = &x[pr->role - ROLE_X];
                     if ((st = ply_value(&R, pr->type, 0, d, NULL, what, it))) break;
                     if (!isfinite(*d))
-                        st = mesh_parse_fail(err, name, R.line, "vertex %lld: coordinate is not finite", it);
+                        st = mesh_parse_fail(err, name, R.line,
+                                             "vertex %lld: coordinate is not finite", it);
                 } else if (el == ef && pr->role == ROLE_INDICES) {
                     long long n;
                     if ((st = ply_value(&R, pr->count_type, 1, NULL, &n, what, it))) break;
                     if (n < 3) {
-                        st = mesh_parse_fail(err, name, R.line, "face %lld has %lld corners (needs at least 3)", it, n);
+                        st =
+                            mesh_parse_fail(err, name, R.line,
+                                            "face %lld has %lld corners (needs at least 3)", it, n);
                         break;
                     }
                     size_t minb = h.fmt == PLY_ASCII ? 2 : (size_t)type_size(pr->type);
@@ -451,10 +536,10 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
                         if ((st = ply_value(&R, pr->type, 1, NULL, &v, what, it))) break;
                         if (v < 0 || v >= nv)
                             st = mesh_parse_fail(err, name, R.line,
-                                                 "face %lld: vertex index %lld out of range (the file has %lld vertices)",
+                                                 "face %lld: vertex index %lld out of range (the "
+                                                 "file has %lld vertices)",
                                                  it, v, nv);
-                        else
-                            corners[j] = (int)v;
+                        else corners[j] = (int)v;
                     }
                     if (st) break;
                     int dup;
@@ -462,13 +547,16 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
                     if (rep) {
                         st = rep < 0 ? err_nomem(err, "face corners")
                                      : mesh_parse_fail(err, name, R.line,
-                                                       "face %lld uses vertex %d more than once (degenerate face)",
+                                                       "face %lld uses vertex %d more than once "
+                                                       "(degenerate face)",
                                                        it, dup);
                         break;
                     }
                     for (long long j = 1; j + 1 < n; j++)
-                        if (mesh_builder_add_f(&b, corners[0], corners[j], corners[j + 1], 0, 0, 0)) {
-                            st = err_set(err, SCAF_ERR_NOMEM, "%s: out of memory (or more than INT_MAX faces)", name);
+                        if (mesh_builder_add_f(&b, corners[0], corners[j], corners[j + 1], 0, 0,
+                                               0)) {
+                            st = err_set(err, SCAF_ERR_NOMEM,
+                                         "%s: out of memory (or more than INT_MAX faces)", name);
                             break;
                         }
                     if (n > 3) polygons++;

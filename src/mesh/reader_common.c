@@ -36,7 +36,10 @@ const char *mesh_quote_token(const char *p, const char *end, char *buf, size_t s
             o += 4;
         }
         if (o >= 40 && p < end && *p != ' ') {
-            if (o + 4 < size) { memcpy(buf + o, "...", 3); o += 3; }
+            if (o + 4 < size) {
+                memcpy(buf + o, "...", 3);
+                o += 3;
+            }
             break;
         }
     }

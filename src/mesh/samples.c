@@ -18,11 +18,18 @@ static const mesh_sample_info SAMPLES[] = {
     {"triangle", "a single triangle (size ignored)", 1, 1, 1},
     {"grid", "flat n x n square grid with UVs = xy (a disk)", 8, 1, 3000},
     {"hemisphere", "bumpy open hemisphere with n rings, 6n^2 faces (a disk)", 16, 1, 2000},
-    {"holes", "curved plate with 6 circular holes, n points per cell side (genus 0, 7 loops)", 8, 2, 1000},
-    {"cubesphere", "closed bumpy sphere, 6 UV charts (cube faces of n x n cells), 12n seam edges", 8, 1, 256},
+    {"holes", "curved plate with 6 circular holes, n points per cell side (genus 0, 7 loops)", 8, 2,
+     1000},
+    {"cubesphere", "closed bumpy sphere, 6 UV charts (cube faces of n x n cells), 12n seam edges",
+     8, 1, 256},
     {"tetrahedron", "a closed tetrahedron (size ignored)", 1, 1, 1},
-    {"spiral", "thin open strip along a circle, n segments (Figure 4 of the SCAF paper; gen also writes targets)", 26, 3, 1000},
-    {"icosphere", "closed unit geodesic sphere, each icosahedron face cut n x n: 20n^2 faces, no UVs", 4, 1, 200},
+    {"spiral",
+     "thin open strip along a circle, n segments (Figure 4 of the SCAF paper; gen also writes "
+     "targets)",
+     26, 3, 1000},
+    {"icosphere",
+     "closed unit geodesic sphere, each icosahedron face cut n x n: 20n^2 faces, no UVs", 4, 1,
+     200},
 };
 
 int mesh_sample_count(void) { return (int)(sizeof SAMPLES / sizeof SAMPLES[0]); }
@@ -114,7 +121,8 @@ static scaf_status make_hemisphere(int n, mesh *m, scaf_error *err)
         for (int k = 0; k < cnt; k++) {
             double rho = (double)i / n, phi = i == 0 ? 0 : 2 * PI * k / cnt;
             double theta = rho * PI / 2;
-            double r = 1 + 0.06 * sin(5 * phi) * sin(2 * theta) + 0.03 * cos(7 * theta) * sin(3 * phi + 1);
+            double r =
+                1 + 0.06 * sin(5 * phi) * sin(2 * theta) + 0.03 * cos(7 * theta) * sin(3 * phi + 1);
             double *p = m->V + 3 * (ring_start(i) + k);
             p[0] = r * sin(theta) * cos(phi);
             p[1] = r * sin(theta) * sin(phi);
@@ -146,8 +154,8 @@ static scaf_status make_hemisphere(int n, mesh *m, scaf_error *err)
 
 static scaf_status make_holes(int n, mesh *m, scaf_error *err)
 {
-    int rings = n / 2 > 1 ? n / 2 : 1;        /* loops strictly inside the cell */
-    int per = 4 * n;                          /* points per loop */
+    int rings = n / 2 > 1 ? n / 2 : 1; /* loops strictly inside the cell */
+    int per = 4 * n;                   /* points per loop */
     int lw = HOLES_X * n + 1, lh = HOLES_Y * n + 1;
     int cells = HOLES_X * HOLES_Y;
     /* lattice points on the cell lines: horizontal + vertical - crossings */
@@ -176,10 +184,22 @@ static scaf_status make_holes(int n, mesh *m, scaf_error *err)
             for (int k = 0; k < per; k++) {
                 int side = k / n, t = k % n, X, Y;
                 switch (side) {
-                case 0: X = t; Y = 0; break;
-                case 1: X = n; Y = t; break;
-                case 2: X = n - t; Y = n; break;
-                default: X = 0; Y = n - t; break;
+                case 0:
+                    X = t;
+                    Y = 0;
+                    break;
+                case 1:
+                    X = n;
+                    Y = t;
+                    break;
+                case 2:
+                    X = n - t;
+                    Y = n;
+                    break;
+                default:
+                    X = 0;
+                    Y = n - t;
+                    break;
                 }
                 X += cx * n;
                 Y += cy * n;
@@ -218,8 +238,8 @@ static scaf_status make_holes(int n, mesh *m, scaf_error *err)
         free(lat);
         free(loop);
         mesh_free(m);
-        return err_set(err, SCAF_ERR_INTERNAL, "holes: built %d vertices / %d faces, expected %d / %d",
-                       v, f, nv, nf);
+        return err_set(err, SCAF_ERR_INTERNAL,
+                       "holes: built %d vertices / %d faces, expected %d / %d", v, f, nv, nf);
     }
     for (int i = 0; i < v; i++) {
         double *p = m->V + 3 * i;
@@ -297,8 +317,8 @@ static scaf_status make_cubesphere(int n, mesh *m, scaf_error *err)
     free(lat);
     if (v != nv || f != nf) {
         mesh_free(m);
-        return err_set(err, SCAF_ERR_INTERNAL, "cubesphere: built %d vertices / %d faces, expected %d / %d",
-                       v, f, nv, nf);
+        return err_set(err, SCAF_ERR_INTERNAL,
+                       "cubesphere: built %d vertices / %d faces, expected %d / %d", v, f, nv, nf);
     }
     return SCAF_OK;
 }
@@ -337,8 +357,9 @@ static int ico_point(int n, int f, int i, int j, int edge[12][12])
 static scaf_status make_icosphere(int n, mesh *m, scaf_error *err)
 {
     const double g = (1 + sqrt(5.0)) / 2;
-    const double C[12][3] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                             {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    const double C[12][3] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0},
+                             {0, -1, g}, {0, 1, g}, {0, -1, -g}, {0, 1, -g},
+                             {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
     int edge[12][12], ne = 0;
     for (int a = 0; a < 12; a++)
         for (int b = 0; b < 12; b++) edge[a][b] = -1;
@@ -363,8 +384,8 @@ static scaf_status make_icosphere(int n, mesh *m, scaf_error *err)
             }
         for (int i = 0; i < n; i++)
             for (int j = 0; i + j < n; j++) {
-                set3(m->F + 3 * (size_t)nt++, ico_point(n, f, i, j, edge), ico_point(n, f, i + 1, j, edge),
-                     ico_point(n, f, i, j + 1, edge));
+                set3(m->F + 3 * (size_t)nt++, ico_point(n, f, i, j, edge),
+                     ico_point(n, f, i + 1, j, edge), ico_point(n, f, i, j + 1, edge));
                 if (i + j < n - 1)
                     set3(m->F + 3 * (size_t)nt++, ico_point(n, f, i + 1, j, edge),
                          ico_point(n, f, i + 1, j + 1, edge), ico_point(n, f, i, j + 1, edge));
@@ -383,12 +404,13 @@ scaf_status mesh_sample_make(const char *name, int size, mesh *m, scaf_error *er
             strncat(list, i ? ", " : "", sizeof list - strlen(list) - 1);
             strncat(list, SAMPLES[i].name, sizeof list - strlen(list) - 1);
         }
-        return err_set(err, SCAF_ERR_USAGE, "unknown sample '%s' (samples: %s)", name ? name : "", list);
+        return err_set(err, SCAF_ERR_USAGE, "unknown sample '%s' (samples: %s)", name ? name : "",
+                       list);
     }
     if (size == 0) size = info->default_size;
     if (size < info->min_size || size > info->max_size)
-        return err_set(err, SCAF_ERR_USAGE, "sample '%s': size %d outside [%d, %d]", info->name, size,
-                       info->min_size, info->max_size);
+        return err_set(err, SCAF_ERR_USAGE, "sample '%s': size %d outside [%d, %d]", info->name,
+                       size, info->min_size, info->max_size);
     if (!strcmp(info->name, "triangle")) return make_triangle(m, err);
     if (!strcmp(info->name, "tetrahedron")) return make_tetrahedron(m, err);
     if (!strcmp(info->name, "grid")) return make_grid(size, m, err);

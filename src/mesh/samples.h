@@ -25,7 +25,7 @@
 
 typedef struct mesh_sample_info {
     const char *name;
-    const char *summary;   /* one line for `scaf gen --list` */
+    const char *summary; /* one line for `scaf gen --list` */
     int default_size;
     int min_size, max_size;
 } mesh_sample_info;

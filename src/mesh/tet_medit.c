@@ -28,15 +28,16 @@ static int write_body(FILE *f, int nv, const double *V, int nt, const int *T, co
     if (fprintf(f, "Tetrahedra\n%d\n", nt) < 0) return -1;
     for (int t = 0; t < nt; t++) {
         const int *q = T + 4 * (size_t)t;
-        if (fprintf(f, "%d %d %d %d %d\n", q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1, label ? label[t] : 0) < 0)
+        if (fprintf(f, "%d %d %d %d %d\n", q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1,
+                    label ? label[t] : 0) < 0)
             return -1;
     }
     if (fprintf(f, "End\n") < 0) return -1;
     return ferror(f) ? -1 : 0;
 }
 
-scaf_status tet_medit_write(const char *path, int nv, const double *V, int nt, const int *T, const int *label,
-                            scaf_error *err)
+scaf_status tet_medit_write(const char *path, int nv, const double *V, int nt, const int *T,
+                            const int *label, scaf_error *err)
 {
     scaf_status s = simplex_arrays_check(nv, V, nt, T, 4, "tet", err);
     if (s) return s;
@@ -85,26 +86,32 @@ static int next_token(reader *r)
     return 1;
 }
 
-static scaf_status read_int(reader *r, long lo, long hi, const char *what, long *out, scaf_error *err)
+static scaf_status read_int(reader *r, long lo, long hi, const char *what, long *out,
+                            scaf_error *err)
 {
-    if (!next_token(r)) return err_set(err, SCAF_ERR_PARSE, "%s:%d: end of file where %s was expected", r->path, r->line, what);
+    if (!next_token(r))
+        return err_set(err, SCAF_ERR_PARSE, "%s:%d: end of file where %s was expected", r->path,
+                       r->line, what);
     char *end;
     errno = 0;
     long v = strtol(r->tok, &end, 10);
     if (errno || *end || end == r->tok || v < lo || v > hi)
-        return err_set(err, SCAF_ERR_PARSE, "%s:%d: '%s' is not %s (an integer in %ld..%ld)", r->path, r->line, r->tok,
-                       what, lo, hi);
+        return err_set(err, SCAF_ERR_PARSE, "%s:%d: '%s' is not %s (an integer in %ld..%ld)",
+                       r->path, r->line, r->tok, what, lo, hi);
     *out = v;
     return SCAF_OK;
 }
 
 static scaf_status read_double(reader *r, const char *what, double *out, scaf_error *err)
 {
-    if (!next_token(r)) return err_set(err, SCAF_ERR_PARSE, "%s:%d: end of file where %s was expected", r->path, r->line, what);
+    if (!next_token(r))
+        return err_set(err, SCAF_ERR_PARSE, "%s:%d: end of file where %s was expected", r->path,
+                       r->line, what);
     char *end;
     double v = strtod(r->tok, &end);
     if (*end || end == r->tok || !isfinite(v))
-        return err_set(err, SCAF_ERR_PARSE, "%s:%d: '%s' is not a finite number (%s)", r->path, r->line, r->tok, what);
+        return err_set(err, SCAF_ERR_PARSE, "%s:%d: '%s' is not a finite number (%s)", r->path,
+                       r->line, r->tok, what);
     *out = v;
     return SCAF_OK;
 }
@@ -115,7 +122,9 @@ static scaf_status skip_section(reader *r, int per, scaf_error *err)
     long n;
     scaf_status s = read_int(r, 0, INT_MAX, "an entry count", &n, err);
     for (long i = 0; s == SCAF_OK && i < n * per; i++)
-        if (!next_token(r)) s = err_set(err, SCAF_ERR_PARSE, "%s:%d: the file ends inside a section", r->path, r->line);
+        if (!next_token(r))
+            s = err_set(err, SCAF_ERR_PARSE, "%s:%d: the file ends inside a section", r->path,
+                        r->line);
     return s;
 }
 
@@ -130,20 +139,27 @@ static scaf_status read_body(reader *r, tet_medit *m, scaf_error *err)
         } else if (!strcmp(r->tok, "Dimension")) {
             s = read_int(r, 3, 3, "the dimension (3)", &x, err);
         } else if (!strcmp(r->tok, "Vertices")) {
-            if (seen_v++) return err_set(err, SCAF_ERR_PARSE, "%s:%d: a second Vertices section", r->path, r->line);
+            if (seen_v++)
+                return err_set(err, SCAF_ERR_PARSE, "%s:%d: a second Vertices section", r->path,
+                               r->line);
             s = read_int(r, 0, INT_MAX / 3, "the number of vertices", &n, err);
             if (s) break;
             m->nv = (int)n;
             m->V = malloc(sizeof(double) * 3 * (size_t)(n > 0 ? n : 1));
             if (!m->V) return err_nomem(err, "tet mesh vertices");
             for (long i = 0; s == SCAF_OK && i < n; i++) {
-                for (int k = 0; s == SCAF_OK && k < 3; k++) s = read_double(r, "a vertex coordinate", &m->V[3 * i + k], err);
-                if (s == SCAF_OK) s = read_int(r, LONG_MIN, LONG_MAX, "a vertex reference", &x, err);
+                for (int k = 0; s == SCAF_OK && k < 3; k++)
+                    s = read_double(r, "a vertex coordinate", &m->V[3 * i + k], err);
+                if (s == SCAF_OK)
+                    s = read_int(r, LONG_MIN, LONG_MAX, "a vertex reference", &x, err);
             }
         } else if (!strcmp(r->tok, "Tetrahedra")) {
-            if (seen_t++) return err_set(err, SCAF_ERR_PARSE, "%s:%d: a second Tetrahedra section", r->path, r->line);
+            if (seen_t++)
+                return err_set(err, SCAF_ERR_PARSE, "%s:%d: a second Tetrahedra section", r->path,
+                               r->line);
             if (!seen_v)
-                return err_set(err, SCAF_ERR_PARSE, "%s:%d: Tetrahedra before Vertices", r->path, r->line);
+                return err_set(err, SCAF_ERR_PARSE, "%s:%d: Tetrahedra before Vertices", r->path,
+                               r->line);
             s = read_int(r, 0, INT_MAX / 4, "the number of tetrahedra", &n, err);
             if (s) break;
             m->nt = (int)n;
@@ -162,17 +178,19 @@ static scaf_status read_body(reader *r, tet_medit *m, scaf_error *err)
             s = skip_section(r, 4, err);
         } else if (!strcmp(r->tok, "Quadrilaterals")) {
             s = skip_section(r, 5, err);
-        } else if (!strcmp(r->tok, "Edges") || !strcmp(r->tok, "Ridges") || !strcmp(r->tok, "Corners") ||
-                   !strcmp(r->tok, "RequiredVertices")) {
+        } else if (!strcmp(r->tok, "Edges") || !strcmp(r->tok, "Ridges") ||
+                   !strcmp(r->tok, "Corners") || !strcmp(r->tok, "RequiredVertices")) {
             s = skip_section(r, !strcmp(r->tok, "Edges") ? 3 : 1, err);
         } else if (!strcmp(r->tok, "End")) {
             ended = 1;
         } else {
-            return err_set(err, SCAF_ERR_PARSE, "%s:%d: unsupported keyword '%s'", r->path, r->line, r->tok);
+            return err_set(err, SCAF_ERR_PARSE, "%s:%d: unsupported keyword '%s'", r->path, r->line,
+                           r->tok);
         }
     }
     if (s == SCAF_OK && !seen_t)
-        s = err_set(err, SCAF_ERR_PARSE, "%s: no Tetrahedra section: not a tetrahedral mesh", r->path);
+        s = err_set(err, SCAF_ERR_PARSE, "%s: no Tetrahedra section: not a tetrahedral mesh",
+                    r->path);
     return s;
 }
 

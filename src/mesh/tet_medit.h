@@ -16,16 +16,16 @@
 
 typedef struct tet_medit {
     int nv;
-    double *V;   /* #V by 3 */
+    double *V; /* #V by 3 */
     int nt;
-    int *T;      /* #T by 4, 0-based */
-    int *label;  /* #T reference numbers */
+    int *T;     /* #T by 4, 0-based */
+    int *label; /* #T reference numbers */
 } tet_medit;
 
 /* Write; label may be NULL (all 0). SCAF_ERR_MESH for invalid arrays
  * (nothing written), SCAF_ERR_IO naming the path. */
-scaf_status tet_medit_write(const char *path, int nv, const double *V, int nt, const int *T, const int *label,
-                            scaf_error *err);
+scaf_status tet_medit_write(const char *path, int nv, const double *V, int nt, const int *T,
+                            const int *label, scaf_error *err);
 
 /* Read into *m (free with tet_medit_free; empty on failure).
  * SCAF_ERR_IO unreadable, SCAF_ERR_PARSE malformed (file and line named),

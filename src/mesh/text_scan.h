@@ -65,7 +65,10 @@ static inline scan_result scan_double(const char **pp, const char *end, double *
         unsigned d = (unsigned)(*s - '0');
         any = 1;
         if (nd < 19) {
-            if (m || d) { m = m * 10 + d; nd++; }
+            if (m || d) {
+                m = m * 10 + d;
+                nd++;
+            }
         } else {
             e10++;
             lost |= d != 0;
@@ -78,7 +81,10 @@ static inline scan_result scan_double(const char **pp, const char *end, double *
             unsigned d = (unsigned)(*s - '0');
             any = 1;
             if (nd < 19) {
-                if (m || d) { m = m * 10 + d; nd++; }
+                if (m || d) {
+                    m = m * 10 + d;
+                    nd++;
+                }
                 e10--;
             } else {
                 lost |= d != 0;

@@ -44,9 +44,21 @@ static int count_duplicates(const mesh *m, scaf_error *err)
     for (int v = 0; v < nv; v++) start[v + 1] += start[v];
     for (int f = 0; f < nf; f++) {
         int a = m->F[3 * f], b = m->F[3 * f + 1], c = m->F[3 * f + 2], x;
-        if (a > b) { x = a; a = b; b = x; }
-        if (b > c) { x = b; b = c; c = x; }
-        if (a > b) { x = a; a = b; b = x; }
+        if (a > b) {
+            x = a;
+            a = b;
+            b = x;
+        }
+        if (b > c) {
+            x = b;
+            b = c;
+            c = x;
+        }
+        if (a > b) {
+            x = a;
+            a = b;
+            b = x;
+        }
         keys[start[a]++] = ((uint64_t)(uint32_t)b << 32) | (uint32_t)c;
     }
     /* start[v] now holds the end of bucket v (= start of bucket v+1) */
@@ -88,11 +100,13 @@ scaf_status mesh_topology_compute(const mesh *m, mesh_topology *t, scaf_error *e
     memset(t, 0, sizeof *t);
     int nv = m->nv, nf = m->nf;
     if (nf > INT_MAX / 3)
-        return err_set(err, SCAF_ERR_MESH, "%d faces: more than this build can index (%d)", nf, INT_MAX / 3);
+        return err_set(err, SCAF_ERR_MESH, "%d faces: more than this build can index (%d)", nf,
+                       INT_MAX / 3);
     for (int i = 0; i < 3 * nf; i++)
         if (m->F[i] < 0 || m->F[i] >= nv)
-            return err_set(err, SCAF_ERR_MESH, "face %d references vertex %d, but the mesh has %d vertices",
-                           i / 3, m->F[i], nv);
+            return err_set(err, SCAF_ERR_MESH,
+                           "face %d references vertex %d, but the mesh has %d vertices", i / 3,
+                           m->F[i], nv);
 
     scaf_status st = SCAF_OK;
     int *label = malloc(((size_t)nf + 1) * sizeof *label);

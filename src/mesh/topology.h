@@ -22,27 +22,27 @@
 #include "mesh/mesh.h"
 
 typedef struct mesh_topology {
-    int vertices;              /* vertices referenced by faces */
+    int vertices; /* vertices referenced by faces */
     int faces;
-    int edges;                 /* undirected edges */
-    int boundary_edges;        /* edges with exactly one face */
+    int edges;          /* undirected edges */
+    int boundary_edges; /* edges with exactly one face */
     int components;
     int boundary_loops;
-    int euler_characteristic;  /* V - E + F, summed over components */
-    int manifold;              /* 1 iff no non-manifold edge nor vertex */
-    int orientable;            /* 1 iff every component is orientable */
+    int euler_characteristic; /* V - E + F, summed over components */
+    int manifold;             /* 1 iff no non-manifold edge nor vertex */
+    int orientable;           /* 1 iff every component is orientable */
     int non_manifold_edges;
     int non_manifold_vertices;
     int misoriented_edges;
-    int degenerate_faces;      /* zero 3D area, including repeated-index faces */
-    int repeated_index_faces;  /* faces using one vertex twice */
-    int duplicate_faces;       /* faces on the same vertex set as an earlier face */
+    int degenerate_faces;     /* zero 3D area, including repeated-index faces */
+    int repeated_index_faces; /* faces using one vertex twice */
+    int duplicate_faces;      /* faces on the same vertex set as an earlier face */
     int unreferenced_vertices;
-    int has_uv;                /* the mesh has vt indices */
-    int uv_charts;             /* charts cut by vt seams; components when !has_uv */
-    int seam_edges;            /* 2-face edges whose sides use different vt pairs */
-    int genus_sum;             /* sum of component genera; -1 if any is undefined */
-    tri_complex cx;            /* per component: cx.group_*[c]; loops: cx.loop_* */
+    int has_uv;     /* the mesh has vt indices */
+    int uv_charts;  /* charts cut by vt seams; components when !has_uv */
+    int seam_edges; /* 2-face edges whose sides use different vt pairs */
+    int genus_sum;  /* sum of component genera; -1 if any is undefined */
+    tri_complex cx; /* per component: cx.group_*[c]; loops: cx.loop_* */
 } mesh_topology;
 
 /* Compute the report of m. On failure *t is left empty. */

@@ -102,12 +102,14 @@ static scaf_status chart_vertex_lists(mesh_charts *c, const int *IF, int n, scaf
                 c->chart_vertices[k++] = v;
             }
         }
-        qsort(c->chart_vertices + c->chart_vertex_start[g], (size_t)(k - c->chart_vertex_start[g]), sizeof(int),
-              cmp_int);
+        qsort(c->chart_vertices + c->chart_vertex_start[g], (size_t)(k - c->chart_vertex_start[g]),
+              sizeof(int), cmp_int);
     }
     c->chart_vertex_start[c->ncharts] = k;
     free(stamp);
-    if (k != total) return err_set(err, SCAF_ERR_INTERNAL, "chart vertex lists: %d indices, expected %d", k, total);
+    if (k != total)
+        return err_set(err, SCAF_ERR_INTERNAL, "chart vertex lists: %d indices, expected %d", k,
+                       total);
     return SCAF_OK;
 }
 
@@ -130,11 +132,13 @@ scaf_status mesh_charts_compute(const mesh *m, mesh_charts *c, scaf_error *err)
     memset(c, 0, sizeof *c);
     int nf = m->nf;
     if (nf > INT_MAX / 3)
-        return err_set(err, SCAF_ERR_MESH, "%d faces: more than this build can index (%d)", nf, INT_MAX / 3);
+        return err_set(err, SCAF_ERR_MESH, "%d faces: more than this build can index (%d)", nf,
+                       INT_MAX / 3);
     for (int i = 0; i < 3 * nf; i++)
         if (m->F[i] < 0 || m->F[i] >= m->nv)
-            return err_set(err, SCAF_ERR_MESH, "face %d references vertex %d, but the mesh has %d vertices",
-                           i / 3, m->F[i], m->nv);
+            return err_set(err, SCAF_ERR_MESH,
+                           "face %d references vertex %d, but the mesh has %d vertices", i / 3,
+                           m->F[i], m->nv);
     c->uses_uv = mesh_has_uv(m);
     const int *IF = c->uses_uv ? m->FT : m->F;
     int n = c->uses_uv ? m->nuv : m->nv;
@@ -155,7 +159,8 @@ scaf_status mesh_charts_compute(const mesh *m, mesh_charts *c, scaf_error *err)
     c->chart_loop_start = calloc((size_t)c->ncharts + 2, sizeof *c->chart_loop_start);
     c->chart_loops = malloc(((size_t)nl + 1) * sizeof *c->chart_loops);
     keys = malloc(((size_t)nl + 1) * sizeof *keys);
-    if (!c->loop_v || !c->loop_vt || !c->loop_length || !c->chart_loop_start || !c->chart_loops || !keys) {
+    if (!c->loop_v || !c->loop_vt || !c->loop_length || !c->chart_loop_start || !c->chart_loops ||
+        !keys) {
         st = err_nomem(err, "chart loops");
         goto fail;
     }
@@ -163,7 +168,7 @@ scaf_status mesh_charts_compute(const mesh *m, mesh_charts *c, scaf_error *err)
         double len = 0;
         for (int i = cx->loop_start[l]; i < cx->loop_start[l + 1]; i++) {
             int h = cx->loop_he[i];
-            int h_next = 3 * (h / 3) + (h % 3 + 1) % 3;  /* corner at the half-edge's end */
+            int h_next = 3 * (h / 3) + (h % 3 + 1) % 3; /* corner at the half-edge's end */
             c->loop_v[i] = m->F[h];
             c->loop_vt[i] = c->uses_uv ? m->FT[h] : -1;
             const double *a = m->V + 3 * m->F[h], *b = m->V + 3 * m->F[h_next];
@@ -220,7 +225,8 @@ static int first_invalid_face(const mesh_charts *c, int chart)
 mesh_chart_kind mesh_chart_classify(const mesh_charts *c, int chart)
 {
     const tri_complex *cx = &c->cx;
-    if (cx->group_nm_edges[chart] || cx->group_nm_vertices[chart] || first_invalid_face(c, chart) >= 0)
+    if (cx->group_nm_edges[chart] || cx->group_nm_vertices[chart] ||
+        first_invalid_face(c, chart) >= 0)
         return MESH_CHART_NON_MANIFOLD;
     if (!cx->group_orientable[chart]) return MESH_CHART_NON_ORIENTABLE;
     if (cx->group_misoriented[chart]) return MESH_CHART_MISORIENTED;
@@ -233,7 +239,8 @@ mesh_chart_kind mesh_chart_classify(const mesh_charts *c, int chart)
 
 int mesh_chart_loop(const mesh_charts *c, int chart, int i, const int **v, const int **vt, int *id)
 {
-    if (chart < 0 || chart >= c->ncharts || i < 0 || i >= c->chart_loop_start[chart + 1] - c->chart_loop_start[chart])
+    if (chart < 0 || chart >= c->ncharts || i < 0 ||
+        i >= c->chart_loop_start[chart + 1] - c->chart_loop_start[chart])
         return 0;
     int l = c->chart_loops[c->chart_loop_start[chart] + i];
     int s = c->cx.loop_start[l];
@@ -262,24 +269,26 @@ scaf_status mesh_chart_check(const mesh_charts *c, int chart, int allow_holes, s
     const tri_complex *cx = &c->cx;
     const char *what = c->uses_uv ? "vt" : "vertex";
     if (chart < 0 || chart >= c->ncharts)
-        return err_set(err, SCAF_ERR_USAGE, "chart %d does not exist (%d charts)", chart, c->ncharts);
+        return err_set(err, SCAF_ERR_USAGE, "chart %d does not exist (%d charts)", chart,
+                       c->ncharts);
     mesh_chart_kind kind = mesh_chart_classify(c, chart);
     int f = first_invalid_face(c, chart);
     switch (kind) {
-    case MESH_CHART_DISK:
-        return SCAF_OK;
+    case MESH_CHART_DISK: return SCAF_OK;
     case MESH_CHART_DISK_WITH_HOLES:
         if (allow_holes) return SCAF_OK;
-        return err_set(err, SCAF_ERR_MESH, "chart %d is a disk with %d holes (%d boundary loops), not a disk",
-                       chart, cx->group_loops[chart] - 1, cx->group_loops[chart]);
+        return err_set(err, SCAF_ERR_MESH,
+                       "chart %d is a disk with %d holes (%d boundary loops), not a disk", chart,
+                       cx->group_loops[chart] - 1, cx->group_loops[chart]);
     case MESH_CHART_NON_MANIFOLD:
         if (f >= 0)
-            return err_set(err, SCAF_ERR_MESH, "chart %d: face %d has a missing or repeated %s index",
-                           chart, f, what);
+            return err_set(err, SCAF_ERR_MESH,
+                           "chart %d: face %d has a missing or repeated %s index", chart, f, what);
         if (cx->group_bad_edge[chart] >= 0) {
             int e = cx->group_bad_edge[chart];
             return err_set(err, SCAF_ERR_MESH,
-                           "chart %d is not manifold: edge %s %d-%d has %d faces (%d non-manifold edges)",
+                           "chart %d is not manifold: edge %s %d-%d has %d faces (%d non-manifold "
+                           "edges)",
                            chart, what, cx->edges.ev[2 * e], cx->edges.ev[2 * e + 1],
                            mesh_edge_valence(&cx->edges, e), cx->group_nm_edges[chart]);
         }
@@ -288,25 +297,32 @@ scaf_status mesh_chart_check(const mesh_charts *c, int chart, int allow_holes, s
                            "chart %d is not manifold: the faces around %s %d form several fans "
                            "(a pinch point, or shared with another chart; %d such)",
                            chart, what, cx->group_bad_vertex[chart], cx->group_nm_vertices[chart]);
-        return err_set(err, SCAF_ERR_MESH, "chart %d: a boundary loop touches itself (not a simple cycle)", chart);
+        return err_set(err, SCAF_ERR_MESH,
+                       "chart %d: a boundary loop touches itself (not a simple cycle)", chart);
     case MESH_CHART_NON_ORIENTABLE:
-        return err_set(err, SCAF_ERR_MESH, "chart %d is not orientable (like a Moebius strip)", chart);
+        return err_set(err, SCAF_ERR_MESH, "chart %d is not orientable (like a Moebius strip)",
+                       chart);
     case MESH_CHART_MISORIENTED: {
         int e = cx->group_bad_orient[chart];
         return err_set(err, SCAF_ERR_MESH,
-                       "chart %d has inconsistently oriented faces: %s edge %d-%d is used twice in one "
+                       "chart %d has inconsistently oriented faces: %s edge %d-%d is used twice in "
+                       "one "
                        "direction (%d such edges); reorient the faces",
-                       chart, what, cx->edges.ev[2 * e], cx->edges.ev[2 * e + 1], cx->group_misoriented[chart]);
+                       chart, what, cx->edges.ev[2 * e], cx->edges.ev[2 * e + 1],
+                       cx->group_misoriented[chart]);
     }
     case MESH_CHART_CLOSED:
         return err_set(err, SCAF_ERR_MESH,
-                       "chart %d is a closed surface (no boundary, Euler characteristic %d): cut it open first",
+                       "chart %d is a closed surface (no boundary, Euler characteristic %d): cut "
+                       "it open first",
                        chart, cx->group_euler[chart]);
     case MESH_CHART_HIGHER_GENUS:
         if (cx->group_genus[chart] > 0)
-            return err_set(err, SCAF_ERR_MESH, "chart %d has genus %d (%d boundary loops): cut its handles first",
+            return err_set(err, SCAF_ERR_MESH,
+                           "chart %d has genus %d (%d boundary loops): cut its handles first",
                            chart, cx->group_genus[chart], cx->group_loops[chart]);
-        return err_set(err, SCAF_ERR_MESH, "chart %d has an invalid Euler characteristic %d with %d boundary loops",
+        return err_set(err, SCAF_ERR_MESH,
+                       "chart %d has an invalid Euler characteristic %d with %d boundary loops",
                        chart, cx->group_euler[chart], cx->group_loops[chart]);
     }
     return err_set(err, SCAF_ERR_INTERNAL, "chart %d: unknown kind", chart);

@@ -23,15 +23,15 @@
 #include "mesh/mesh.h"
 
 typedef struct mesh_charts {
-    int uses_uv;           /* 1: index space = vt (FT); 0: vertices (F) */
+    int uses_uv; /* 1: index space = vt (FT); 0: vertices (F) */
     int ncharts;
-    tri_complex cx;        /* over FT or F, groups = charts: cx.face_group[f] is the
+    tri_complex cx;          /* over FT or F, groups = charts: cx.face_group[f] is the
                               chart of face f, cx.group_faces its faces, cx.group_* stats */
-    int *loop_v;           /* per loop vertex, CSR by cx.loop_start: 3D vertex index */
-    int *loop_vt;          /* same positions: vt index, or -1 when !uses_uv */
-    double *loop_length;   /* #loops 3D length of each loop */
-    int *chart_loop_start; /* ncharts+1: loops of chart c are                    */
-    int *chart_loops;      /*   chart_loops[chart_loop_start[c] .. [c+1]-1], longest first */
+    int *loop_v;             /* per loop vertex, CSR by cx.loop_start: 3D vertex index */
+    int *loop_vt;            /* same positions: vt index, or -1 when !uses_uv */
+    double *loop_length;     /* #loops 3D length of each loop */
+    int *chart_loop_start;   /* ncharts+1: loops of chart c are                    */
+    int *chart_loops;        /*   chart_loops[chart_loop_start[c] .. [c+1]-1], longest first */
     int *chart_vertex_start; /* ncharts+1: the distinct indices (vt, or vertices   */
     int *chart_vertices;     /*   without UVs) used by chart c's valid faces, ascending:
                                 chart_vertices[chart_vertex_start[c] .. [c+1]-1] */
@@ -39,13 +39,13 @@ typedef struct mesh_charts {
 
 /* What a chart is, topologically (in its own index space). */
 typedef enum mesh_chart_kind {
-    MESH_CHART_DISK = 0,         /* manifold, oriented, genus 0, one loop */
-    MESH_CHART_DISK_WITH_HOLES,  /* manifold, oriented, genus 0, >1 loops */
-    MESH_CHART_CLOSED,           /* no boundary */
-    MESH_CHART_HIGHER_GENUS,     /* handles (genus > 0) */
-    MESH_CHART_NON_MANIFOLD,     /* a non-manifold edge or vertex, or invalid faces */
-    MESH_CHART_MISORIENTED,      /* faces disagree in orientation */
-    MESH_CHART_NON_ORIENTABLE    /* no consistent orientation exists */
+    MESH_CHART_DISK = 0,        /* manifold, oriented, genus 0, one loop */
+    MESH_CHART_DISK_WITH_HOLES, /* manifold, oriented, genus 0, >1 loops */
+    MESH_CHART_CLOSED,          /* no boundary */
+    MESH_CHART_HIGHER_GENUS,    /* handles (genus > 0) */
+    MESH_CHART_NON_MANIFOLD,    /* a non-manifold edge or vertex, or invalid faces */
+    MESH_CHART_MISORIENTED,     /* faces disagree in orientation */
+    MESH_CHART_NON_ORIENTABLE   /* no consistent orientation exists */
 } mesh_chart_kind;
 
 /* Label faces by UV chart. face_chart: #F output (charts numbered in order

@@ -29,17 +29,19 @@ static scaf_status check_mesh(const mesh *m, scaf_error *err)
     if (uv && !m->UV) return err_set(err, SCAF_ERR_MESH, "mesh_write_obj: UV array missing");
     for (size_t k = 0; k < 3 * (size_t)m->nv; k++)
         if (!isfinite(m->V[k]))
-            return err_set(err, SCAF_ERR_MESH, "mesh_write_obj: vertex %zu has a non-finite coordinate", k / 3);
+            return err_set(err, SCAF_ERR_MESH,
+                           "mesh_write_obj: vertex %zu has a non-finite coordinate", k / 3);
     for (size_t k = 0; uv && k < 2 * (size_t)m->nuv; k++)
         if (!isfinite(m->UV[k]))
-            return err_set(err, SCAF_ERR_MESH, "mesh_write_obj: UV %zu has a non-finite coordinate", k / 2);
+            return err_set(err, SCAF_ERR_MESH, "mesh_write_obj: UV %zu has a non-finite coordinate",
+                           k / 2);
     for (size_t k = 0; k < 3 * (size_t)m->nf; k++) {
         if (m->F[k] < 0 || m->F[k] >= m->nv)
-            return err_set(err, SCAF_ERR_MESH, "mesh_write_obj: face %zu uses vertex %d of %d", k / 3, m->F[k],
-                           m->nv);
+            return err_set(err, SCAF_ERR_MESH, "mesh_write_obj: face %zu uses vertex %d of %d",
+                           k / 3, m->F[k], m->nv);
         if (uv && (m->FT[k] < 0 || m->FT[k] >= m->nuv))
-            return err_set(err, SCAF_ERR_MESH, "mesh_write_obj: face %zu uses UV %d of %d", k / 3, m->FT[k],
-                           m->nuv);
+            return err_set(err, SCAF_ERR_MESH, "mesh_write_obj: face %zu uses UV %d of %d", k / 3,
+                           m->FT[k], m->nuv);
     }
     return SCAF_OK;
 }
@@ -66,7 +68,8 @@ static int write_body(FILE *f, const mesh *m)
         int r;
         if (uv) {
             const int *u = m->FT + 3 * (size_t)i;
-            r = fprintf(f, "f %d/%d %d/%d %d/%d\n", t[0] + 1, u[0] + 1, t[1] + 1, u[1] + 1, t[2] + 1, u[2] + 1);
+            r = fprintf(f, "f %d/%d %d/%d %d/%d\n", t[0] + 1, u[0] + 1, t[1] + 1, u[1] + 1,
+                        t[2] + 1, u[2] + 1);
         } else {
             r = fprintf(f, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
         }
@@ -77,7 +80,8 @@ static int write_body(FILE *f, const mesh *m)
 
 scaf_status mesh_write_obj(const char *path, const mesh *m, scaf_error *err)
 {
-    if (!path || !*path || !m) return err_set(err, SCAF_ERR_USAGE, "mesh_write_obj: no path or mesh");
+    if (!path || !*path || !m)
+        return err_set(err, SCAF_ERR_USAGE, "mesh_write_obj: no path or mesh");
     scaf_status st = check_mesh(m, err);
     if (st) {
         err_prefix(err, "%s: not written", path);

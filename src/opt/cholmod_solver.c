@@ -61,11 +61,11 @@ struct opt_chol {
     cholmod_common cm;
     cholmod_factor *L;
     opt_ordering ordering;
-    int n, nnz;          /* analyzed pattern */
+    int n, nnz; /* analyzed pattern */
     int *colptr, *rowidx;
-    int factored;        /* L holds a valid numerical factor */
+    int factored;             /* L holds a valid numerical factor */
     cholmod_dense *X, *Y, *E; /* cholmod_solve2's result and workspaces, kept */
-    int block;           /* unknowns per vertex for compressed ordering */
+    int block;                /* unknowns per vertex for compressed ordering */
     opt_chol_stats st;
 };
 
@@ -179,14 +179,15 @@ static scaf_status fail(opt_chol *c, const char *what, scaf_error *err)
 {
     int s = c->cm.status;
     if (s == CHOLMOD_OUT_OF_MEMORY) return err_nomem(err, what);
-    return err_set(err, SCAF_ERR_NUMERIC, "CHOLMOD %s failed: %s (status %d)", what, status_text(s), s);
+    return err_set(err, SCAF_ERR_NUMERIC, "CHOLMOD %s failed: %s (status %d)", what, status_text(s),
+                   s);
 }
 
 static int same_pattern(const opt_chol *c, const opt_csc *A)
 {
     return c->L && c->n == A->n && c->nnz == A->nnz &&
-           memcmp(c->colptr, A->colptr, ((size_t)A->n + 1) * sizeof *A->colptr) == 0 &&
-           memcmp(c->rowidx, A->rowidx, (size_t)A->nnz * sizeof *A->rowidx) == 0;
+        memcmp(c->colptr, A->colptr, ((size_t)A->n + 1) * sizeof *A->colptr) == 0 &&
+        memcmp(c->rowidx, A->rowidx, (size_t)A->nnz * sizeof *A->rowidx) == 0;
 }
 
 int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A) { return same_pattern(c, A); }
@@ -246,10 +247,8 @@ static cholmod_factor *analyze_given_fast(opt_chol *c, const opt_csc *A, const i
             int r = A->rowidx[q];
             if ((size_t)r > col) continue;
             int pr = pinv[r];
-            if (pr > pc)
-                si[first[pr]++] = pc;
-            else
-                si[first[pc]++] = pr;
+            if (pr > pc) si[first[pr]++] = pc;
+            else si[first[pc]++] = pr;
         }
     }
     cholmod_sparse S = opt_cholmod_pattern_view((int)n, sp, si, 0);
@@ -257,7 +256,8 @@ static cholmod_factor *analyze_given_fast(opt_chol *c, const opt_csc *A, const i
     if (!F) goto done;
     if (!cholmod_etree(&S, parent, cm)) goto done;
     if (cholmod_postorder(parent, n, NULL, post, cm) != (long)n) goto done;
-    if (!cholmod_rowcolcounts(F, NULL, 0, parent, post, NULL, colcount, first, level, cm)) goto done;
+    if (!cholmod_rowcolcounts(F, NULL, 0, parent, post, NULL, colcount, first, level, cm))
+        goto done;
     double fl = cm->fl, lnz = cm->lnz;
     L = cholmod_allocate_factor(n, cm);
     if (!L) goto done;
@@ -303,8 +303,7 @@ done:
     return L;
 }
 
-scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm,
-                                   scaf_error *err)
+scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm, scaf_error *err)
 {
     if (A->n < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD: empty system (no free unknowns)");
     /* CHOLMOD is told the columns are sorted upper ones (no copy, no check) */
@@ -405,7 +404,9 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
 
 scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, scaf_error *err)
 {
-    if (!c->factored) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD solve called before a successful factorization");
+    if (!c->factored)
+        return err_set(err, SCAF_ERR_USAGE,
+                       "CHOLMOD solve called before a successful factorization");
     if (nrhs < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD solve: %d right-hand sides", nrhs);
     double t0 = timer_now();
     cholmod_dense Bd;

@@ -27,16 +27,16 @@ typedef enum opt_ordering {
 } opt_ordering;
 
 typedef struct opt_chol_stats {
-    int analyses;          /* symbolic analyses done */
-    int factorizations;    /* numerical factorizations done */
-    int not_posdef;        /* factorizations that found the matrix not
+    int analyses;       /* symbolic analyses done */
+    int factorizations; /* numerical factorizations done */
+    int not_posdef;     /* factorizations that found the matrix not
                               positive definite (the caller's recovery,
                               e.g. a regularized retry, follows them) */
-    double t_analyze;      /* seconds in analysis, cumulative */
-    double t_factor;       /* seconds in numerical factorization, cumulative */
-    double t_solve;        /* seconds in triangular solves, cumulative */
-    double nnz_L;          /* nonzeros of the last factor */
-    double flops;          /* flop count of the last factorization (CHOLMOD's estimate) */
+    double t_analyze;   /* seconds in analysis, cumulative */
+    double t_factor;    /* seconds in numerical factorization, cumulative */
+    double t_solve;     /* seconds in triangular solves, cumulative */
+    double nnz_L;       /* nonzeros of the last factor */
+    double flops;       /* flop count of the last factorization (CHOLMOD's estimate) */
 } opt_chol_stats;
 
 typedef struct opt_chol opt_chol;
@@ -70,8 +70,7 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err);
 
 /* Force a new analysis of A's pattern with a given fill-reducing
  * permutation perm (n entries), or the solver's ordering if perm is NULL. */
-scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm,
-                                   scaf_error *err);
+scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm, scaf_error *err);
 
 /* Whether A has exactly the pattern of the last analysis (then
  * opt_chol_factor will not analyse again). */

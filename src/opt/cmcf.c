@@ -38,12 +38,16 @@ void cmcf_free(cmcf *f)
     memset(f, 0, sizeof *f);
 }
 
-scaf_status cmcf_init(cmcf *f, int nv, const double *V, int nf, const int *F, double delta, scaf_error *err)
+scaf_status cmcf_init(cmcf *f, int nv, const double *V, int nf, const int *F, double delta,
+                      scaf_error *err)
 {
     memset(f, 0, sizeof *f);
     if (!(delta > 0) || !isfinite(delta))
-        return err_set(err, SCAF_ERR_USAGE, "flow time step %g: it must be positive and finite", delta);
-    if (nv < 3 || nf < 1) return err_set(err, SCAF_ERR_USAGE, "flow of a surface with %d vertices and %d faces", nv, nf);
+        return err_set(err, SCAF_ERR_USAGE, "flow time step %g: it must be positive and finite",
+                       delta);
+    if (nv < 3 || nf < 1)
+        return err_set(err, SCAF_ERR_USAGE, "flow of a surface with %d vertices and %d faces", nv,
+                       nf);
     f->nv = nv;
     f->nf = nf;
     f->F = F;
@@ -98,7 +102,8 @@ scaf_status cmcf_step(cmcf *f, double *U, scaf_error *err)
     }
     for (size_t k = 0; k < 3 * (size_t)nv; k++)
         if (!isfinite(f->rhs[k]))
-            return err_set(err, SCAF_ERR_NUMERIC, "flow step %d: vertex %d got a non-finite position", f->steps + 1,
+            return err_set(err, SCAF_ERR_NUMERIC,
+                           "flow step %d: vertex %d got a non-finite position", f->steps + 1,
                            (int)(k % (size_t)nv));
     /* normalize a copy: U stays unchanged on failure */
     for (int v = 0; v < nv; v++)

@@ -31,16 +31,16 @@
 
 typedef struct cmcf {
     int nv, nf;
-    const int *F;   /* the caller's faces (kept, not copied) */
+    const int *F; /* the caller's faces (kept, not copied) */
     double delta;
-    opt_csc L;      /* input's cotangent stiffness */
-    opt_csc A;      /* M - delta L: L's pattern */
-    int *diag;      /* index of each diagonal entry in A.val */
-    double *mass;   /* current lumped mass */
-    double *rhs;    /* M U, column-major (x, y, z columns), then U' */
-    double *next;   /* U' row-major, normalized before it replaces U */
+    opt_csc L;    /* input's cotangent stiffness */
+    opt_csc A;    /* M - delta L: L's pattern */
+    int *diag;    /* index of each diagonal entry in A.val */
+    double *mass; /* current lumped mass */
+    double *rhs;  /* M U, column-major (x, y, z columns), then U' */
+    double *next; /* U' row-major, normalized before it replaces U */
     opt_chol *chol;
-    int steps;      /* steps done */
+    int steps; /* steps done */
 } cmcf;
 
 /* Normalize U in place: area-weighted centroid at the origin, total area
@@ -52,7 +52,8 @@ scaf_status cmcf_normalize(int nv, double *U, int nf, const int *F, scaf_error *
  * stay valid while f is used. Errors: SCAF_ERR_USAGE (delta not positive
  * and finite, no face), SCAF_ERR_MESH (a zero-area face),
  * SCAF_ERR_NOMEM. On failure f is left freed. */
-scaf_status cmcf_init(cmcf *f, int nv, const double *V, int nf, const int *F, double delta, scaf_error *err);
+scaf_status cmcf_init(cmcf *f, int nv, const double *V, int nf, const int *F, double delta,
+                      scaf_error *err);
 
 /* One step: U (#V by 3, row-major, the current normalized shape) is
  * replaced by the next one, normalized. SCAF_ERR_NUMERIC when the system

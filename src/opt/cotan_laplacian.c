@@ -5,7 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void cross3(const double *a, const double *b, const double *c, double u[3], double v[3], double x[3])
+static void cross3(const double *a, const double *b, const double *c, double u[3], double v[3],
+                   double x[3])
 {
     for (int k = 0; k < 3; k++) {
         u[k] = b[k] - a[k];
@@ -31,7 +32,8 @@ double opt_tri_area3(const double *a, const double *b, const double *c)
     return 0.5 * sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
 }
 
-scaf_status opt_cotan_laplacian(int nv, const double *V, int nf, const int *F, opt_csc *L, scaf_error *err)
+scaf_status opt_cotan_laplacian(int nv, const double *V, int nf, const int *F, opt_csc *L,
+                                scaf_error *err)
 {
     memset(L, 0, sizeof *L);
     /* per face and corner: the off-diagonal pair and two diagonal terms;
@@ -57,9 +59,15 @@ scaf_status opt_cotan_laplacian(int nv, const double *V, int nf, const int *F, o
                 st = err_set(err, SCAF_ERR_MESH, "face %d has zero area: no cotangent weight", f);
                 goto done;
             }
-            I[nt] = i; J[nt] = j; W[nt++] = w;
-            I[nt] = i; J[nt] = i; W[nt++] = -w;
-            I[nt] = j; J[nt] = j; W[nt++] = -w;
+            I[nt] = i;
+            J[nt] = j;
+            W[nt++] = w;
+            I[nt] = i;
+            J[nt] = i;
+            W[nt++] = -w;
+            I[nt] = j;
+            J[nt] = j;
+            W[nt++] = -w;
         }
     st = opt_csc_from_triplets(L, nv, nt, I, J, W, err);
 done:

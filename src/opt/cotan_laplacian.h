@@ -27,7 +27,8 @@ double opt_tri_area3(const double *a, const double *b, const double *c);
  * vertices V (#V by 3) and nf faces F (#F by 3, 0-based). A face whose
  * cotangent is not finite (zero area) fails with SCAF_ERR_MESH naming it;
  * SCAF_ERR_NOMEM. */
-scaf_status opt_cotan_laplacian(int nv, const double *V, int nf, const int *F, opt_csc *L, scaf_error *err);
+scaf_status opt_cotan_laplacian(int nv, const double *V, int nf, const int *F, opt_csc *L,
+                                scaf_error *err);
 
 /* The barycentric lumped mass of every vertex into mass (nv entries);
  * returns the total area. */

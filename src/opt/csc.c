@@ -49,13 +49,16 @@ scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const
     memset(A, 0, sizeof *A);
     for (int k = 0; k < nt; k++)
         if (I[k] < 0 || I[k] >= n || Jc[k] < 0 || Jc[k] >= n)
-            return err_set(err, SCAF_ERR_USAGE, "triplet %d: index (%d, %d) outside a %d by %d matrix",
-                           k, I[k], Jc[k], n, n);
+            return err_set(err, SCAF_ERR_USAGE,
+                           "triplet %d: index (%d, %d) outside a %d by %d matrix", k, I[k], Jc[k],
+                           n, n);
     int *cp = calloc((size_t)n + 1, sizeof *cp);
     int *rows = malloc(((size_t)nt + 1) * sizeof *rows);
     double *vals = malloc(((size_t)nt + 1) * sizeof *vals);
     if (!cp || !rows || !vals) {
-        free(cp); free(rows); free(vals);
+        free(cp);
+        free(rows);
+        free(vals);
         return err_nomem(err, "sparse matrix");
     }
     for (int k = 0; k < nt; k++) {
@@ -65,7 +68,9 @@ scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const
     for (int c = 0; c < n; c++) cp[c + 1] += cp[c];
     int *next = malloc(((size_t)n + 1) * sizeof *next);
     if (!next) {
-        free(cp); free(rows); free(vals);
+        free(cp);
+        free(rows);
+        free(vals);
         return err_nomem(err, "sparse matrix");
     }
     memcpy(next, cp, ((size_t)n + 1) * sizeof *next);
@@ -82,7 +87,11 @@ scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const
             int r = rows[i];
             double v = vals[i];
             int j = i - 1;
-            while (j >= b && rows[j] > r) { rows[j + 1] = rows[j]; vals[j + 1] = vals[j]; j--; }
+            while (j >= b && rows[j] > r) {
+                rows[j + 1] = rows[j];
+                vals[j + 1] = vals[j];
+                j--;
+            }
             rows[j + 1] = r;
             vals[j + 1] = v;
         }
@@ -107,8 +116,8 @@ scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const
     return SCAF_OK;
 }
 
-scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *vcolptr, const int *vrowidx,
-                                          int zero_values, scaf_error *err)
+scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *vcolptr,
+                                          const int *vrowidx, int zero_values, scaf_error *err)
 {
     int n = nv * d;
     A->n = n;
@@ -124,7 +133,8 @@ scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *
     }
     A->nnz = A->colptr[n];
     A->rowidx = malloc(((size_t)A->nnz + 1) * sizeof *A->rowidx);
-    A->val = zero_values ? calloc((size_t)A->nnz + 1, sizeof *A->val) : malloc(((size_t)A->nnz + 1) * sizeof *A->val);
+    A->val = zero_values ? calloc((size_t)A->nnz + 1, sizeof *A->val)
+                         : malloc(((size_t)A->nnz + 1) * sizeof *A->val);
     if (!A->rowidx || !A->val) return err_nomem(err, "proxy system matrix");
     for (int c = 0; c < nv; c++) {
         int lo = vcolptr[c], hi = vcolptr[c + 1];

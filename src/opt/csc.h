@@ -45,7 +45,7 @@ scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const
  * I == J). Values zeroed when zero_values, else left unset (for a caller
  * that overwrites them all). On failure A holds what was allocated (free
  * it with opt_csc_free). */
-scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *vcolptr, const int *vrowidx,
-                                          int zero_values, scaf_error *err);
+scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *vcolptr,
+                                          const int *vrowidx, int zero_values, scaf_error *err);
 
 #endif /* SCAF_OPT_CSC_H */

@@ -67,24 +67,52 @@ static scaf_status solve_laplace(int nv2, const double *V2, int nf2, const int *
     opt_csc A = {0};
     opt_chol *ch = NULL;
     scaf_status st = SCAF_OK;
-    if (!dof || !I || !Jc || !Val) { st = err_nomem(err, "embedding system"); goto done; }
+    if (!dof || !I || !Jc || !Val) {
+        st = err_nomem(err, "embedding system");
+        goto done;
+    }
     int n = 0;
     for (int v = 0; v < nv2; v++) dof[v] = fixed[v] ? -1 : n++;
     b = calloc(2 * (size_t)(n ? n : 1), sizeof *b);
     x = malloc(2 * (size_t)(n ? n : 1) * sizeof *x);
-    if (!b || !x) { st = err_nomem(err, "embedding system"); goto done; }
+    if (!b || !x) {
+        st = err_nomem(err, "embedding system");
+        goto done;
+    }
     int nt = 0;
     for (int f = 0; f < nf2; f++) {
         for (int k = 0; k < 3; k++) {
             int o = F2[3 * f + k], i = F2[3 * f + (k + 1) % 3], j = F2[3 * f + (k + 2) % 3];
-            double w = cotan ? 0.5 * opt_cot_at(V2 + 3 * (size_t)o, V2 + 3 * (size_t)i, V2 + 3 * (size_t)j) : 1.0;
-            if (!isfinite(w)) { st = err_set(err, SCAF_ERR_NUMERIC, "embedding: face %d has a non-finite cotangent weight", f); goto done; }
+            double w = cotan
+                ? 0.5 * opt_cot_at(V2 + 3 * (size_t)o, V2 + 3 * (size_t)i, V2 + 3 * (size_t)j)
+                : 1.0;
+            if (!isfinite(w)) {
+                st = err_set(err, SCAF_ERR_NUMERIC,
+                             "embedding: face %d has a non-finite cotangent weight", f);
+                goto done;
+            }
             int di = dof[i], dj = dof[j];
-            if (di >= 0) { I[nt] = di; Jc[nt] = di; Val[nt++] = w; }
-            if (dj >= 0) { I[nt] = dj; Jc[nt] = dj; Val[nt++] = w; }
-            if (di >= 0 && dj >= 0) { I[nt] = di; Jc[nt] = dj; Val[nt++] = -w; }
-            else if (di >= 0) { b[di] += w * UV2[2 * (size_t)j]; b[n + di] += w * UV2[2 * (size_t)j + 1]; }
-            else if (dj >= 0) { b[dj] += w * UV2[2 * (size_t)i]; b[n + dj] += w * UV2[2 * (size_t)i + 1]; }
+            if (di >= 0) {
+                I[nt] = di;
+                Jc[nt] = di;
+                Val[nt++] = w;
+            }
+            if (dj >= 0) {
+                I[nt] = dj;
+                Jc[nt] = dj;
+                Val[nt++] = w;
+            }
+            if (di >= 0 && dj >= 0) {
+                I[nt] = di;
+                Jc[nt] = dj;
+                Val[nt++] = -w;
+            } else if (di >= 0) {
+                b[di] += w * UV2[2 * (size_t)j];
+                b[n + di] += w * UV2[2 * (size_t)j + 1];
+            } else if (dj >= 0) {
+                b[dj] += w * UV2[2 * (size_t)i];
+                b[n + dj] += w * UV2[2 * (size_t)i + 1];
+            }
         }
     }
     if (n > 0) {
@@ -93,7 +121,10 @@ static scaf_status solve_laplace(int nv2, const double *V2, int nf2, const int *
         /* CHOLMOD's default tries AMD and switches to METIS when the fill
          * is high (large charts), which pays off for a one-off solve. */
         ch = opt_chol_create(OPT_ORDER_CHOLMOD_DEFAULT, err);
-        if (!ch) { st = err->code; goto done; }
+        if (!ch) {
+            st = err->code;
+            goto done;
+        }
         st = opt_chol_factor(ch, &A, err);
         if (st != SCAF_OK) goto done;
         st = opt_chol_solve(ch, 2, b, x, err);
@@ -107,7 +138,12 @@ static scaf_status solve_laplace(int nv2, const double *V2, int nf2, const int *
 done:
     opt_chol_destroy(ch);
     opt_csc_free(&A);
-    free(dof); free(I); free(Jc); free(Val); free(b); free(x);
+    free(dof);
+    free(I);
+    free(Jc);
+    free(Val);
+    free(b);
+    free(x);
     return st;
 }
 
@@ -119,30 +155,47 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
     if (!err) err = &tmp;
     if (used_fallback) *used_fallback = 0;
     /* ---- check inputs ---- */
-    if (nv < 3 || nf < 1) return err_set(err, SCAF_ERR_MESH, "chart has %d vertices and %d faces", nv, nf);
-    if (!loops || loops->nloops < 1) return err_set(err, SCAF_ERR_MESH, "chart has no boundary loop (closed surface?)");
+    if (nv < 3 || nf < 1)
+        return err_set(err, SCAF_ERR_MESH, "chart has %d vertices and %d faces", nv, nf);
+    if (!loops || loops->nloops < 1)
+        return err_set(err, SCAF_ERR_MESH, "chart has no boundary loop (closed surface?)");
     for (int k = 0; k < 3 * nf; k++)
         if (F[k] < 0 || F[k] >= nv)
-            return err_set(err, SCAF_ERR_USAGE, "face %d references vertex %d but the chart has %d", k / 3, F[k], nv);
+            return err_set(err, SCAF_ERR_USAGE, "face %d references vertex %d but the chart has %d",
+                           k / 3, F[k], nv);
     int nl = loops->nloops;
     for (int l = 0; l < nl; l++)
         if (loops->start[l + 1] - loops->start[l] < 3)
-            return err_set(err, SCAF_ERR_MESH, "boundary loop %d has %d vertices (at least 3 needed)", l,
+            return err_set(err, SCAF_ERR_MESH,
+                           "boundary loop %d has %d vertices (at least 3 needed)", l,
                            loops->start[l + 1] - loops->start[l]);
     unsigned char *onloop = calloc((size_t)nv, 1);
     if (!onloop) return err_nomem(err, "embedding");
     for (int l = 0; l < nl; l++)
         for (int k = loops->start[l]; k < loops->start[l + 1]; k++) {
             int v = loops->vertices[k];
-            if (v < 0 || v >= nv) { free(onloop); return err_set(err, SCAF_ERR_USAGE, "boundary loop %d references vertex %d but the chart has %d", l, v, nv); }
-            if (onloop[v]) { free(onloop); return err_set(err, SCAF_ERR_MESH, "vertex %d appears twice on the boundary loops (non-manifold boundary)", v); }
+            if (v < 0 || v >= nv) {
+                free(onloop);
+                return err_set(err, SCAF_ERR_USAGE,
+                               "boundary loop %d references vertex %d but the chart has %d", l, v,
+                               nv);
+            }
+            if (onloop[v]) {
+                free(onloop);
+                return err_set(err, SCAF_ERR_MESH,
+                               "vertex %d appears twice on the boundary loops (non-manifold "
+                               "boundary)",
+                               v);
+            }
             onloop[v] = 1;
         }
     free(onloop);
     double area = 0;
     for (int f = 0; f < nf; f++)
-        area += opt_tri_area3(V + 3 * (size_t)F[3 * f], V + 3 * (size_t)F[3 * f + 1], V + 3 * (size_t)F[3 * f + 2]);
-    if (!(area > 0) || !isfinite(area)) return err_set(err, SCAF_ERR_MESH, "chart has 3D area %g", area);
+        area += opt_tri_area3(V + 3 * (size_t)F[3 * f], V + 3 * (size_t)F[3 * f + 1],
+                              V + 3 * (size_t)F[3 * f + 2]);
+    if (!(area > 0) || !isfinite(area))
+        return err_set(err, SCAF_ERR_MESH, "chart has 3D area %g", area);
     /* Loop lengths, outer choice, directions (every loop edge must be a
      * boundary edge, walked the same way by the loop). */
     int nhe = 0;
@@ -163,20 +216,26 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
             int a = lv[k], b = lv[(k + 1) % len], fwd = 0;
             int uses = edge_uses(he, nhe, F, a, b, &fwd);
             if (uses != 1 || (k > 0 && fwd != dir[l])) {
-                free(he); free(dir);
-                return err_set(err, SCAF_ERR_MESH,
-                               "boundary loop %d: edge %d-%d is %s", l, a, b,
-                               uses == 0 ? "not an edge of any face"
-                               : uses > 1 ? "shared by several faces (not a boundary edge)"
-                                          : "walked against the loop's direction");
+                free(he);
+                free(dir);
+                return err_set(err, SCAF_ERR_MESH, "boundary loop %d: edge %d-%d is %s", l, a, b,
+                               uses == 0      ? "not an edge of any face"
+                                   : uses > 1 ? "shared by several faces (not a boundary edge)"
+                                              : "walked against the loop's direction");
             }
             dir[l] = fwd;
             L += dist3(V + 3 * (size_t)a, V + 3 * (size_t)b);
         }
-        if (loops->outer < 0 && L > best) { best = L; outer = l; }
+        if (loops->outer < 0 && L > best) {
+            best = L;
+            outer = l;
+        }
     }
     free(he);
-    if (outer < 0 || outer >= nl) { free(dir); return err_set(err, SCAF_ERR_USAGE, "outer loop %d of %d", outer, nl); }
+    if (outer < 0 || outer >= nl) {
+        free(dir);
+        return err_set(err, SCAF_ERR_USAGE, "outer loop %d of %d", outer, nl);
+    }
     /* ---- filled disk ---- */
     int nholes = nl - 1, nfill = 0;
     for (int l = 0; l < nl; l++)
@@ -188,7 +247,10 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
     unsigned char *fixed = calloc((size_t)nv2, 1);
     unsigned char *used = calloc((size_t)nv2, 1);
     scaf_status st = SCAF_OK;
-    if (!V2 || !F2 || !UV2 || !fixed || !used) { st = err_nomem(err, "embedding"); goto done; }
+    if (!V2 || !F2 || !UV2 || !fixed || !used) {
+        st = err_nomem(err, "embedding");
+        goto done;
+    }
     memcpy(V2, V, 3 * (size_t)nv * sizeof *V2);
     memcpy(F2, F, 3 * (size_t)nf * sizeof *F2);
     int fv = nv, ff = nf;
@@ -216,7 +278,8 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
         const int *lv = loops->vertices + loops->start[outer];
         int len = loops->start[outer + 1] - loops->start[outer];
         double L = 0;
-        for (int k = 0; k < len; k++) L += dist3(V + 3 * (size_t)lv[k], V + 3 * (size_t)lv[(k + 1) % len]);
+        for (int k = 0; k < len; k++)
+            L += dist3(V + 3 * (size_t)lv[k], V + 3 * (size_t)lv[(k + 1) % len]);
         double r = sqrt(area / SCAF_PI), s = 0;
         for (int k = 0; k < len; k++) {
             /* Counter-clockwise along the faces' orientation. */
@@ -249,7 +312,8 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
         int bad = -1;
         if (st == SCAF_OK)
             for (int f = 0; f < nf && bad < 0; f++)
-                if (!(orient2d(UV2 + 2 * (size_t)F[3 * f], UV2 + 2 * (size_t)F[3 * f + 1], UV2 + 2 * (size_t)F[3 * f + 2]) > 0))
+                if (!(orient2d(UV2 + 2 * (size_t)F[3 * f], UV2 + 2 * (size_t)F[3 * f + 1],
+                               UV2 + 2 * (size_t)F[3 * f + 2]) > 0))
                     bad = f;
         if (st == SCAF_OK && bad < 0) break;
         if (attempt + 1 < nchain && st != SCAF_ERR_NOMEM) {
@@ -258,14 +322,21 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
             continue;
         }
         if (st == SCAF_OK)
-            st = err_set(err, SCAF_ERR_NUMERIC, "Tutte embedding: triangle %d is inverted or degenerate (is the chart a valid disk?)", bad);
-        else
-            *err = e2;
+            st = err_set(err, SCAF_ERR_NUMERIC,
+                         "Tutte embedding: triangle %d is inverted or degenerate (is the chart a "
+                         "valid disk?)",
+                         bad);
+        else *err = e2;
         break;
     }
     if (st == SCAF_OK) memcpy(UV, UV2, 2 * (size_t)nv * sizeof *UV);
 done:
-    free(dir); free(V2); free(F2); free(UV2); free(fixed); free(used);
+    free(dir);
+    free(V2);
+    free(F2);
+    free(UV2);
+    free(fixed);
+    free(used);
     return st;
 }
 
@@ -289,9 +360,10 @@ static int cmp_loop_rank(const void *x, const void *y)
     return a->loop - b->loop;
 }
 
-scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, const opt_chart_loops *loops,
-                                 opt_embed_method method, int max_tries, double *UV, int *used_fallback,
-                                 double *energy, scaf_error *err)
+scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F,
+                                 const opt_chart_loops *loops, opt_embed_method method,
+                                 int max_tries, double *UV, int *used_fallback, double *energy,
+                                 scaf_error *err)
 {
     scaf_error tmp;
     if (!err) err = &tmp;
@@ -321,7 +393,8 @@ scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, 
         const int *lv = loops->vertices + loops->start[l];
         int len = loops->start[l + 1] - loops->start[l];
         double L = 0.0;
-        for (int k = 0; k < len && len > 0; k++) L += dist3(V + 3 * (size_t)lv[k], V + 3 * (size_t)lv[(k + 1) % len]);
+        for (int k = 0; k < len && len > 0; k++)
+            L += dist3(V + 3 * (size_t)lv[k], V + 3 * (size_t)lv[(k + 1) % len]);
         rank[l].length = L;
         rank[l].loop = l;
     }

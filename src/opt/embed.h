@@ -34,10 +34,10 @@ typedef enum opt_embed_method {
 } opt_embed_method;
 
 typedef struct opt_chart_loops {
-    int nloops;              /* number of boundary loops (>= 1) */
-    const int *start;        /* nloops+1 offsets into vertices */
-    const int *vertices;     /* loop k is vertices[start[k] .. start[k+1]) in cyclic order */
-    int outer;               /* index of the outer loop, or -1: the longest in 3D */
+    int nloops;          /* number of boundary loops (>= 1) */
+    const int *start;    /* nloops+1 offsets into vertices */
+    const int *vertices; /* loop k is vertices[start[k] .. start[k+1]) in cyclic order */
+    int outer;           /* index of the outer loop, or -1: the longest in 3D */
 } opt_chart_loops;
 
 /* nv vertices V (#V by 3), nf faces F (#F by 3, consistently oriented),
@@ -59,8 +59,9 @@ scaf_status opt_embed_chart(int nv, const double *V, int nf, const int *F,
  * returned only when every try failed. A chart with a degenerate 3D
  * triangle (no energy to compare by) gets the longest loop. energy (may
  * be NULL): the start's E (opt_term_mean_energy), NAN when unmeasurable. */
-scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F, const opt_chart_loops *loops,
-                                 opt_embed_method method, int max_tries, double *UV, int *used_fallback,
-                                 double *energy, scaf_error *err);
+scaf_status opt_embed_chart_best(int nv, const double *V, int nf, const int *F,
+                                 const opt_chart_loops *loops, opt_embed_method method,
+                                 int max_tries, double *UV, int *used_fallback, double *energy,
+                                 scaf_error *err);
 
 #endif /* SCAF_OPT_EMBED_H */

@@ -29,7 +29,10 @@ int opt_energy_parse(const char *name, opt_energy *e)
     static const opt_energy all[] = {OPT_ENERGY_SYMMETRIC_DIRICHLET, OPT_ENERGY_ARAP,
                                      OPT_ENERGY_CONFORMAL};
     for (size_t k = 0; k < sizeof all / sizeof all[0]; k++)
-        if (strcmp(name, opt_energy_name(all[k])) == 0) { *e = all[k]; return 0; }
+        if (strcmp(name, opt_energy_name(all[k])) == 0) {
+            *e = all[k];
+            return 0;
+        }
     return -1;
 }
 
@@ -37,7 +40,7 @@ double opt_det(int d, const double *J)
 {
     if (d == 2) return J[0] * J[3] - J[1] * J[2];
     return J[0] * (J[4] * J[8] - J[5] * J[7]) - J[1] * (J[3] * J[8] - J[5] * J[6]) +
-           J[2] * (J[3] * J[7] - J[4] * J[6]);
+        J[2] * (J[3] * J[7] - J[4] * J[6]);
 }
 
 /* Inverse of J through the adjugate; returns det. */
@@ -45,8 +48,10 @@ static double inverse(int d, const double *J, double *Ji)
 {
     double det = opt_det(d, J);
     if (d == 2) {
-        Ji[0] = J[3] / det; Ji[1] = -J[1] / det;
-        Ji[2] = -J[2] / det; Ji[3] = J[0] / det;
+        Ji[0] = J[3] / det;
+        Ji[1] = -J[1] / det;
+        Ji[2] = -J[2] / det;
+        Ji[3] = J[0] / det;
         return det;
     }
     Ji[0] = (J[4] * J[8] - J[5] * J[7]) / det;
@@ -192,14 +197,20 @@ static double proxy2_rotation_target(opt_energy e, const double *J, double w2_ca
     if (w0 > w2_cap) w0 = w2_cap;
     if (w1 > w2_cap) w1 = w2_cap;
     double ca = Q > 0 ? E / Q : 1.0, sa = Q > 0 ? H / Q : 0.0;
-    T[0] = ca; T[1] = -sa; T[2] = sa; T[3] = ca;
+    T[0] = ca;
+    T[1] = -sa;
+    T[2] = sa;
+    T[3] = ca;
     double r0 = sqrt(w0), r1 = sqrt(w1), m = 0.5 * (r0 + r1), h = 0.5 * (r0 - r1);
     double c2 = 1.0, s2 = 0.0;
     if (R > 0 && Q > 0) {
         c2 = (F * E - G * H) / (R * Q);
         s2 = (G * E + F * H) / (R * Q);
     }
-    W[0] = m + h * c2; W[1] = h * s2; W[2] = h * s2; W[3] = m - h * c2;
+    W[0] = m + h * c2;
+    W[1] = h * s2;
+    W[2] = h * s2;
+    W[3] = m - h * c2;
     return w2max;
 }
 
@@ -219,7 +230,10 @@ double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap
         }
         break;
     case OPT_ENERGY_ARAP:
-        for (int i = 0; i < d; i++) { t[i] = 1.0; w2[i] = 1.0; }
+        for (int i = 0; i < d; i++) {
+            t[i] = 1.0;
+            w2[i] = 1.0;
+        }
         break;
     case OPT_ENERGY_CONFORMAL: {
         double det = s[0] * s[1] * (d == 3 ? s[2] : 1.0);
@@ -232,13 +246,16 @@ double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap
             double g = 2.0 / (d * c * c) * (s[i] - s2 / (d * s[i]));
             double r = g / (2.0 * (s[i] - c));
             double fallback = 1.0 / (c * c);
-            w2[i] = (isfinite(r) && r > 1e-8 * fallback && fabs(s[i] - c) > 1e-12 * c) ? r
-                                                                                     : fallback;
+            w2[i] =
+                (isfinite(r) && r > 1e-8 * fallback && fabs(s[i] - c) > 1e-12 * c) ? r : fallback;
         }
         break;
     }
     default:
-        for (int i = 0; i < d; i++) { t[i] = 1.0; w2[i] = 1.0; }
+        for (int i = 0; i < d; i++) {
+            t[i] = 1.0;
+            w2[i] = 1.0;
+        }
     }
     double w2max = 0;
     for (int i = 0; i < d; i++) {

@@ -34,7 +34,11 @@ static int positive_quadratic_roots(double a, double b, double q, double r[2])
     double sq = sqrt(disc);
     double h = -0.5 * (b + (b >= 0 ? sq : -sq));
     double t1 = h != 0.0 ? h / q : 0.0, t2 = h != 0.0 ? a / h : 0.0;
-    if (t1 > t2) { double tmp = t1; t1 = t2; t2 = tmp; }
+    if (t1 > t2) {
+        double tmp = t1;
+        t1 = t2;
+        t2 = tmp;
+    }
     if (t1 > 0) r[n++] = t1;
     if (t2 > 0 && t2 != t1) r[n++] = t2;
     return n;
@@ -46,10 +50,8 @@ static double bisect(int deg, const double *c, double lo, double hi)
     for (int it = 0; it < 200; it++) {
         double mid = 0.5 * (lo + hi);
         if (mid <= lo || mid >= hi) break;
-        if (eval(deg, c, mid) > 0)
-            lo = mid;
-        else
-            hi = mid;
+        if (eval(deg, c, mid) > 0) lo = mid;
+        else hi = mid;
     }
     return lo;
 }
@@ -80,15 +82,15 @@ double opt_first_positive_root(int deg, const double *c)
     return bisect(deg, c, lo, hi);
 }
 
-double opt_max_step_triangle(const double *x0, const double *x1, const double *x2,
-                             const double *d0, const double *d1, const double *d2)
+double opt_max_step_triangle(const double *x0, const double *x1, const double *x2, const double *d0,
+                             const double *d1, const double *d2)
 {
     double e1x = x1[0] - x0[0], e1y = x1[1] - x0[1], e2x = x2[0] - x0[0], e2y = x2[1] - x0[1];
     double f1x = d1[0] - d0[0], f1y = d1[1] - d0[1], f2x = d2[0] - d0[0], f2y = d2[1] - d0[1];
     double c = e1x * e2y - e1y * e2x;
     double b = e1x * f2y - e1y * f2x + f1x * e2y - f1y * e2x;
     double a = f1x * f2y - f1y * f2x;
-    if (!(c > 0)) return 0.0; /* already degenerate or inverted: no step is safe */
+    if (!(c > 0)) return 0.0;              /* already degenerate or inverted: no step is safe */
     if (a >= 0 && b >= 0) return INFINITY; /* fast path: area never decreases */
     double coef[3] = {c, b, a};
     double r[2];
@@ -103,7 +105,7 @@ double opt_max_step_triangle(const double *x0, const double *x1, const double *x
 static double det3(const double *a, const double *b, const double *c)
 {
     return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-           a[2] * (b[0] * c[1] - b[1] * c[0]);
+        a[2] * (b[0] * c[1] - b[1] * c[0]);
 }
 
 double opt_max_step_tet(const double *x0, const double *x1, const double *x2, const double *x3,

@@ -20,8 +20,8 @@
 double opt_first_positive_root(int deg, const double *c);
 
 /* Triangle corners x0 x1 x2 (2 each), per-corner directions d0 d1 d2. */
-double opt_max_step_triangle(const double *x0, const double *x1, const double *x2,
-                             const double *d0, const double *d1, const double *d2);
+double opt_max_step_triangle(const double *x0, const double *x1, const double *x2, const double *d0,
+                             const double *d1, const double *d2);
 
 /* Tetrahedron corners x0..x3 (3 each), directions d0..d3. */
 double opt_max_step_tet(const double *x0, const double *x1, const double *x2, const double *x3,

@@ -19,17 +19,20 @@ void opt_handle_term_init(opt_handle_term *h, int d, int nverts)
     h->nverts = nverts;
 }
 
-scaf_status opt_handle_term_set(opt_handle_term *h, int n, const int *vertex, const double *target, double w,
-                                scaf_error *err)
+scaf_status opt_handle_term_set(opt_handle_term *h, int n, const int *vertex, const double *target,
+                                double w, scaf_error *err)
 {
     if (n < 0) return err_set(err, SCAF_ERR_USAGE, "handles: negative count %d", n);
-    if (!isfinite(w) || w < 0.0) return err_set(err, SCAF_ERR_USAGE, "handles: weight %g is not a finite value >= 0", w);
+    if (!isfinite(w) || w < 0.0)
+        return err_set(err, SCAF_ERR_USAGE, "handles: weight %g is not a finite value >= 0", w);
     for (int i = 0; i < n; i++) {
         if (vertex[i] < 0 || vertex[i] >= h->nverts)
-            return err_set(err, SCAF_ERR_USAGE, "handle %d: vertex %d is not in [0, %d)", i, vertex[i], h->nverts);
+            return err_set(err, SCAF_ERR_USAGE, "handle %d: vertex %d is not in [0, %d)", i,
+                           vertex[i], h->nverts);
         for (int a = 0; a < h->d; a++)
             if (!isfinite(target[(size_t)h->d * i + a]))
-                return err_set(err, SCAF_ERR_USAGE, "handle %d: target coordinate %d is not finite", i, a);
+                return err_set(err, SCAF_ERR_USAGE, "handle %d: target coordinate %d is not finite",
+                               i, a);
     }
     if (n > h->cap) {
         int *v = malloc(sizeof(int) * (size_t)n);
@@ -95,7 +98,8 @@ static double handle_energy(const opt_obj_term *t, const double *X)
     return h->w * s;
 }
 
-static void handle_energy_slope(const opt_obj_term *t, const double *X, const double *D, double *e, double *slope)
+static void handle_energy_slope(const opt_obj_term *t, const double *X, const double *D, double *e,
+                                double *slope)
 {
     const opt_handle_term *h = t->self;
     double s = 0.0, g = 0.0;
@@ -118,7 +122,8 @@ static scaf_status handle_pattern(opt_obj_term *t, const int *dof, int nfree, sc
     for (int i = 0; same && i < h->n; i++) same = h->built_dof[i] == dof[h->vertex[i]];
     if (same) return SCAF_OK;
     h->built = 0;
-    scaf_status st = opt_proxy_block_pattern_vertices(&t->blk, h->d, h->n, h->vertex, dof, nfree, err);
+    scaf_status st =
+        opt_proxy_block_pattern_vertices(&t->blk, h->d, h->n, h->vertex, dof, nfree, err);
     if (st != SCAF_OK) return st;
     for (int i = 0; i < h->n; i++) h->built_dof[i] = dof[h->vertex[i]];
     h->built = 1;
@@ -134,14 +139,15 @@ static void handle_fill(opt_obj_term *t, const int *dof, const double *X, double
         int k = dof[h->vertex[i]];
         if (k < 0) continue; /* a fixed vertex: nothing to move */
         opt_proxy_block_add_diagonal(&t->blk, k, h->w);
-        for (int a = 0; a < h->d; a++) rhs[(size_t)h->d * k + a] += h->w * h->target[(size_t)h->d * i + a];
+        for (int a = 0; a < h->d; a++)
+            rhs[(size_t)h->d * k + a] += h->w * h->target[(size_t)h->d * i + a];
     }
 }
 
 /* Newton: the term is quadratic, its Hessian 2w I exact (project changes
  * nothing) and its negative gradient -2w (x - t). */
-static scaf_status handle_hessian_fill(opt_obj_term *t, const int *dof, const double *X, int project, double *rhs,
-                                       scaf_error *err)
+static scaf_status handle_hessian_fill(opt_obj_term *t, const int *dof, const double *X,
+                                       int project, double *rhs, scaf_error *err)
 {
     (void)project;
     (void)err;
@@ -159,8 +165,9 @@ static scaf_status handle_hessian_fill(opt_obj_term *t, const int *dof, const do
     return SCAF_OK;
 }
 
-static const opt_obj_term_ops handle_ops = {handle_energy, handle_energy_slope, handle_pattern, handle_fill, NULL,
-                                            NULL, handle_hessian_fill};
+static const opt_obj_term_ops handle_ops = {
+    handle_energy, handle_energy_slope, handle_pattern, handle_fill, NULL,
+    NULL,          handle_hessian_fill};
 
 opt_obj_term opt_handle_term_make(opt_handle_term *h)
 {

@@ -37,15 +37,15 @@
 #define OPT_HANDLE_WEIGHT_RATIO_DEFAULT 1e4
 
 typedef struct opt_handle_term {
-    int d;           /* dimension of the positions */
-    int nverts;      /* vertices of X a handle may name (0..nverts-1) */
-    int n;           /* handles */
-    int *vertex;     /* n vertex indices (repeats allowed) */
-    double *target;  /* n by d */
-    double w;        /* the weight (not the ratio) */
-    int *built_dof;  /* n: the dofs the block's pattern was built for */
-    int built;       /* the pattern exists */
-    int cap;         /* allocated handles */
+    int d;          /* dimension of the positions */
+    int nverts;     /* vertices of X a handle may name (0..nverts-1) */
+    int n;          /* handles */
+    int *vertex;    /* n vertex indices (repeats allowed) */
+    double *target; /* n by d */
+    double w;       /* the weight (not the ratio) */
+    int *built_dof; /* n: the dofs the block's pattern was built for */
+    int built;      /* the pattern exists */
+    int cap;        /* allocated handles */
 } opt_handle_term;
 
 /* w = weight_ratio / nhandles (see above; total_area cancels out and is
@@ -58,8 +58,8 @@ void opt_handle_term_init(opt_handle_term *h, int d, int nverts);
 
 /* Replace the handles: n of them, vertex[i] in [0, nverts), target n by d,
  * weight w >= 0 (copied). On failure h is unchanged. */
-scaf_status opt_handle_term_set(opt_handle_term *h, int n, const int *vertex, const double *target, double w,
-                                scaf_error *err);
+scaf_status opt_handle_term_set(opt_handle_term *h, int n, const int *vertex, const double *target,
+                                double w, scaf_error *err);
 
 /* Largest distance of a handle to its target at X. 0 without handles. */
 double opt_handle_term_max_error(const opt_handle_term *h, const double *X);

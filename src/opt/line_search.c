@@ -13,7 +13,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-
 void opt_ls_options_default(opt_ls_options *o)
 {
     o->safety = 0.8;
@@ -28,20 +27,25 @@ scaf_status opt_line_search(const opt_obj_term *terms, int nterms, int d, int nv
                             scaf_error *err)
 {
     opt_ls_options def;
-    if (!o) { opt_ls_options_default(&def); o = &def; }
+    if (!o) {
+        opt_ls_options_default(&def);
+        o = &def;
+    }
     memset(res, 0, sizeof *res);
     size_t n = (size_t)nv * d;
     for (size_t k = 0; k < n; k++)
         if (!isfinite(D[k]))
-            return err_set(err, SCAF_ERR_NUMERIC, "line search: direction entry %zu (vertex %zu) is not finite",
-                           k, k / d);
+            return err_set(err, SCAF_ERR_NUMERIC,
+                           "line search: direction entry %zu (vertex %zu) is not finite", k, k / d);
     double e0 = 0, slope = 0;
     for (int k = 0; k < nterms; k++) terms[k].ops->energy_slope(&terms[k], X, D, &e0, &slope);
     res->energy_before = e0;
     res->energy_after = e0;
     if (!isfinite(e0))
         return err_set(err, SCAF_ERR_NUMERIC,
-                       "line search: energy at the start is %g (a simplex is inverted or degenerate)", e0);
+                       "line search: energy at the start is %g (a simplex is inverted or "
+                       "degenerate)",
+                       e0);
     double tmax = INFINITY;
     for (int k = 0; k < nterms; k++) {
         if (!terms[k].ops->max_step) continue;

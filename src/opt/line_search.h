@@ -29,12 +29,12 @@ typedef struct opt_ls_options {
 } opt_ls_options;
 
 typedef struct opt_ls_result {
-    double step;          /* accepted t; 0 when no step was taken */
-    double max_flip_free; /* min over simplices of the flip-free step (may be inf) */
-    double energy_before; /* total energy sum_terms sum_s weight * density at X */
-    double energy_after;  /* the same after the step */
-    double slope;         /* directional derivative E'(0) */
-    int backtracks;       /* energy (Armijo) reductions */
+    double step;             /* accepted t; 0 when no step was taken */
+    double max_flip_free;    /* min over simplices of the flip-free step (may be inf) */
+    double energy_before;    /* total energy sum_terms sum_s weight * density at X */
+    double energy_after;     /* the same after the step */
+    double slope;            /* directional derivative E'(0) */
+    int backtracks;          /* energy (Armijo) reductions */
     int orientation_rejects; /* reductions forced by the exact orientation check */
 } opt_ls_result;
 

@@ -20,10 +20,12 @@
  * the dot product. */
 static double half_tan(const double *u, const double *v)
 {
-    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2],
+           z = u[0] * v[1] - u[1] * v[0];
     double c = sqrt(x * x + y * y + z * z);
     double d = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-    double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) * sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) *
+        sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     double t = d >= 0 ? c / (l + d) : (l - d) / c;
     return isfinite(t) && t > 0 ? t : 0.0;
 }
@@ -54,9 +56,13 @@ int opt_mvc_corner_weights(int nv, const double *V, int nf, const int *F, double
             w[1] = b;
             /* t = 0 marks a degenerate corner; a zero length gives NaN or
              * inf, a huge t over a tiny length can overflow. */
-            if (!(t > 0) || !(a > 0) || !(b > 0) || !isfinite(a) || !isfinite(b) || !isfinite(a + b)) {
+            if (!(t > 0) || !(a > 0) || !(b > 0) || !isfinite(a) || !isfinite(b) ||
+                !isfinite(a + b)) {
                 if (bad) bad[i] = 1;
-                else { w[0] = 1.0; w[1] = 1.0; } /* no memory for the row flags: local corner fallback */
+                else {
+                    w[0] = 1.0;
+                    w[1] = 1.0;
+                } /* no memory for the row flags: local corner fallback */
             }
         }
     /* Uniform fallback for the whole row of a vertex with a degenerate
@@ -76,7 +82,8 @@ int opt_mvc_corner_weights(int nv, const double *V, int nf, const int *F, double
         if (sum) {
             for (int f = 0; f < nf; f++)
                 for (int k = 0; k < 3; k++)
-                    sum[F[3 * f + k]] += W[6 * (size_t)f + 2 * (size_t)k] + W[6 * (size_t)f + 2 * (size_t)k + 1];
+                    sum[F[3 * f + k]] +=
+                        W[6 * (size_t)f + 2 * (size_t)k] + W[6 * (size_t)f + 2 * (size_t)k + 1];
             for (int f = 0; f < nf; f++)
                 for (int k = 0; k < 3; k++) {
                     int i = F[3 * f + k];
@@ -94,8 +101,8 @@ int opt_mvc_corner_weights(int nv, const double *V, int nf, const int *F, double
     return nbad;
 }
 
-scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F,
-                          const unsigned char *fixed, double *UV, scaf_error *err)
+scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F, const unsigned char *fixed,
+                          double *UV, scaf_error *err)
 {
     scaf_status st = SCAF_OK;
     int *dof = malloc((nv > 0 ? (size_t)nv : 1) * sizeof *dof);
@@ -106,7 +113,10 @@ scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F,
     int *Ap = NULL, *Ai = NULL;
     double *Ax = NULL, *b = NULL, *x = NULL;
     void *sym = NULL, *num = NULL;
-    if (!dof || !W || !Ti || !Tj || !Tx) { st = err_nomem(err, "mean-value system"); goto done; }
+    if (!dof || !W || !Ti || !Tj || !Tx) {
+        st = err_nomem(err, "mean-value system");
+        goto done;
+    }
     int n = 0;
     for (int v = 0; v < nv; v++) dof[v] = fixed[v] ? -1 : n++;
     if (n == 0) goto done;
@@ -115,7 +125,10 @@ scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F,
     Ap = malloc(((size_t)n + 1) * sizeof *Ap);
     Ai = malloc(cap * sizeof *Ai);
     Ax = malloc(cap * sizeof *Ax);
-    if (!b || !x || !Ap || !Ai || !Ax) { st = err_nomem(err, "mean-value system"); goto done; }
+    if (!b || !x || !Ap || !Ai || !Ax) {
+        st = err_nomem(err, "mean-value system");
+        goto done;
+    }
     opt_mvc_corner_weights(nv, V, nf, F, W, NULL);
     int nt = 0;
     for (int f = 0; f < nf; f++)
@@ -124,34 +137,78 @@ scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F,
             if (di < 0) continue;
             int j = F[3 * f + (k + 1) % 3], l = F[3 * f + (k + 2) % 3];
             double wj = W[6 * (size_t)f + 2 * (size_t)k], wl = W[6 * (size_t)f + 2 * (size_t)k + 1];
-            Ti[nt] = di; Tj[nt] = di; Tx[nt++] = wj + wl;
-            if (dof[j] >= 0) { Ti[nt] = di; Tj[nt] = dof[j]; Tx[nt++] = -wj; }
-            else { b[di] += wj * UV[2 * (size_t)j]; b[n + di] += wj * UV[2 * (size_t)j + 1]; }
-            if (dof[l] >= 0) { Ti[nt] = di; Tj[nt] = dof[l]; Tx[nt++] = -wl; }
-            else { b[di] += wl * UV[2 * (size_t)l]; b[n + di] += wl * UV[2 * (size_t)l + 1]; }
+            Ti[nt] = di;
+            Tj[nt] = di;
+            Tx[nt++] = wj + wl;
+            if (dof[j] >= 0) {
+                Ti[nt] = di;
+                Tj[nt] = dof[j];
+                Tx[nt++] = -wj;
+            } else {
+                b[di] += wj * UV[2 * (size_t)j];
+                b[n + di] += wj * UV[2 * (size_t)j + 1];
+            }
+            if (dof[l] >= 0) {
+                Ti[nt] = di;
+                Tj[nt] = dof[l];
+                Tx[nt++] = -wl;
+            } else {
+                b[di] += wl * UV[2 * (size_t)l];
+                b[n + di] += wl * UV[2 * (size_t)l + 1];
+            }
         }
     int rc = umfpack_di_triplet_to_col(n, n, nt, Ti, Tj, Tx, Ap, Ai, Ax, NULL);
-    if (rc == UMFPACK_ERROR_out_of_memory) { st = err_nomem(err, "mean-value system"); goto done; }
-    if (rc != UMFPACK_OK) { st = err_set(err, SCAF_ERR_NUMERIC, "mean-value system: UMFPACK triplet conversion failed (status %d)", rc); goto done; }
+    if (rc == UMFPACK_ERROR_out_of_memory) {
+        st = err_nomem(err, "mean-value system");
+        goto done;
+    }
+    if (rc != UMFPACK_OK) {
+        st = err_set(err, SCAF_ERR_NUMERIC,
+                     "mean-value system: UMFPACK triplet conversion failed (status %d)", rc);
+        goto done;
+    }
     double info[UMFPACK_INFO];
     rc = umfpack_di_symbolic(n, n, Ap, Ai, Ax, &sym, NULL, info);
     if (rc == UMFPACK_OK) rc = umfpack_di_numeric(Ap, Ai, Ax, sym, &num, NULL, info);
     for (int c = 0; c < 2 && rc == UMFPACK_OK; c++)
-        rc = umfpack_di_solve(UMFPACK_A, Ap, Ai, Ax, x + (size_t)c * n, b + (size_t)c * n, num, NULL, info);
-    if (rc == UMFPACK_ERROR_out_of_memory) { st = err_nomem(err, "mean-value factorization"); goto done; }
+        rc = umfpack_di_solve(UMFPACK_A, Ap, Ai, Ax, x + (size_t)c * n, b + (size_t)c * n, num,
+                              NULL, info);
+    if (rc == UMFPACK_ERROR_out_of_memory) {
+        st = err_nomem(err, "mean-value factorization");
+        goto done;
+    }
     /* A warning (singular matrix) counts as failure too: the map would not
      * be a convex-combination embedding. */
-    if (rc != UMFPACK_OK) { st = err_set(err, SCAF_ERR_NUMERIC, "mean-value system is singular or ill-posed (UMFPACK status %d): a component not connected to the boundary?", rc); goto done; }
+    if (rc != UMFPACK_OK) {
+        st = err_set(err, SCAF_ERR_NUMERIC,
+                     "mean-value system is singular or ill-posed (UMFPACK status %d): a component "
+                     "not connected to the boundary?",
+                     rc);
+        goto done;
+    }
     for (int v = 0; v < nv; v++)
         if (dof[v] >= 0) {
             double u0 = x[dof[v]], u1 = x[n + dof[v]];
-            if (!isfinite(u0) || !isfinite(u1)) { st = err_set(err, SCAF_ERR_NUMERIC, "mean-value solve gave a non-finite position for vertex %d", v); goto done; }
+            if (!isfinite(u0) || !isfinite(u1)) {
+                st = err_set(err, SCAF_ERR_NUMERIC,
+                             "mean-value solve gave a non-finite position for vertex %d", v);
+                goto done;
+            }
             UV[2 * (size_t)v] = u0;
             UV[2 * (size_t)v + 1] = u1;
         }
 done:
     if (num) umfpack_di_free_numeric(&num);
     if (sym) umfpack_di_free_symbolic(&sym);
-    free(dof); free(W); free(Ti); free(Tj); free(Tx); free(Ap); free(Ai); free(Ax); free(b); free(x);
+    free(dof);
+    free(W);
+    free(Ti);
+    free(Tj);
+    free(Tx);
+    free(Ap);
+    free(Ai);
+    free(Ax);
+    free(b);
+    free(x);
     return st;
 }

@@ -32,7 +32,7 @@ int opt_mvc_corner_weights(int nv, const double *V, int nf, const int *F, double
 /* Solve the mean-value system. fixed (#V): nonzero for vertices whose UV
  * is given. UV: #V by 2; fixed rows are read, the others written. A free
  * vertex used by no face gets a singular system (SCAF_ERR_NUMERIC). */
-scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F,
-                          const unsigned char *fixed, double *UV, scaf_error *err);
+scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F, const unsigned char *fixed,
+                          double *UV, scaf_error *err);
 
 #endif /* SCAF_OPT_MVC_H */

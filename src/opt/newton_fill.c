@@ -18,8 +18,7 @@ scaf_status opt_newton_block_fill(opt_proxy_block *b, const opt_term *t, const i
     const opt_simplices *S = t->s;
     if (t->energy != OPT_ENERGY_SYMMETRIC_DIRICHLET)
         return err_set(err, SCAF_ERR_USAGE, "Newton: energy %s has no Hessian here (only %s)",
-                       opt_energy_name(t->energy),
-                       opt_energy_name(OPT_ENERGY_SYMMETRIC_DIRICHLET));
+                       opt_energy_name(t->energy), opt_energy_name(OPT_ENERGY_SYMMETRIC_DIRICHLET));
     int d = S->d, nc = d + 1;
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
     double energy = 0, e, g[12], H[144];

@@ -20,8 +20,8 @@
 #include "opt/proxy_block.h"
 
 typedef struct opt_newton_fill_stats {
-    double energy;   /* sum_s weight_s * Psi(J_s) of the term at X */
-    int clamped;     /* simplices with at least one negative eigenvalue
+    double energy; /* sum_s weight_s * Psi(J_s) of the term at X */
+    int clamped;   /* simplices with at least one negative eigenvalue
                         (clamped when projecting) */
 } opt_newton_fill_stats;
 

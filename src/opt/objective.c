@@ -42,8 +42,8 @@ static double simplex_energy(const opt_obj_term *t, const double *X)
 
 /* sum weight * density and sum weight * <dE/dJ, J(D)> (J is linear in
  * positions), added to the running sums. */
-static void simplex_energy_slope(const opt_obj_term *t, const double *X, const double *D, double *energy,
-                                 double *slope)
+static void simplex_energy_slope(const opt_obj_term *t, const double *X, const double *D,
+                                 double *energy, double *slope)
 {
     const opt_simplex_term *st = t->self;
     const opt_simplices *S = st->S;
@@ -105,8 +105,8 @@ static int simplex_valid(const opt_obj_term *t, const double *X)
 
 /* Newton uses the true weights: a softer proxy weight would change the
  * minimizer's model, not just the step length. */
-static scaf_status simplex_hessian_fill(opt_obj_term *t, const int *dof, const double *X, int project, double *rhs,
-                                        scaf_error *err)
+static scaf_status simplex_hessian_fill(opt_obj_term *t, const int *dof, const double *X,
+                                        int project, double *rhs, scaf_error *err)
 {
     const opt_simplex_term *st = t->self;
     opt_term term = {st->S, st->energy};
@@ -114,8 +114,8 @@ static scaf_status simplex_hessian_fill(opt_obj_term *t, const int *dof, const d
 }
 
 static const opt_obj_term_ops simplex_ops = {
-    simplex_energy, simplex_energy_slope, simplex_pattern,      simplex_fill,
-    simplex_max_step, simplex_valid,      simplex_hessian_fill,
+    simplex_energy,   simplex_energy_slope, simplex_pattern,      simplex_fill,
+    simplex_max_step, simplex_valid,        simplex_hessian_fill,
 };
 
 opt_obj_term opt_simplex_term_make(opt_simplex_term *st)

@@ -47,13 +47,14 @@ typedef struct opt_obj_term opt_obj_term;
 
 typedef struct opt_obj_term_ops {
     double (*energy)(const opt_obj_term *t, const double *X);
-    void (*energy_slope)(const opt_obj_term *t, const double *X, const double *D, double *e, double *slope);
+    void (*energy_slope)(const opt_obj_term *t, const double *X, const double *D, double *e,
+                         double *slope);
     scaf_status (*pattern)(opt_obj_term *t, const int *dof, int nfree, scaf_error *err);
     void (*fill)(opt_obj_term *t, const int *dof, const double *X, double *rhs);
     double (*max_step)(const opt_obj_term *t, const double *X, const double *D);
     int (*valid)(const opt_obj_term *t, const double *X);
-    scaf_status (*hessian_fill)(opt_obj_term *t, const int *dof, const double *X, int project, double *rhs,
-                                scaf_error *err);
+    scaf_status (*hessian_fill)(opt_obj_term *t, const int *dof, const double *X, int project,
+                                double *rhs, scaf_error *err);
 } opt_obj_term_ops;
 
 struct opt_obj_term {

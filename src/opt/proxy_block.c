@@ -34,7 +34,9 @@ void opt_proxy_block_free(opt_proxy_block *b)
     b->version = v;
 }
 
-typedef struct row_id { int row, id; } row_id;
+typedef struct row_id {
+    int row, id;
+} row_id;
 
 static int cmp_row_id(const void *pa, const void *pb)
 {
@@ -46,7 +48,8 @@ static int cmp_row_id(const void *pa, const void *pb)
  * the block on failure. */
 static scaf_status expand_scalar(opt_proxy_block *b, scaf_error *err)
 {
-    scaf_status st = opt_csc_expand_vertex_pattern(&b->A, b->d, b->nfree, b->vcolptr, b->vrowidx, 1, err);
+    scaf_status st =
+        opt_csc_expand_vertex_pattern(&b->A, b->d, b->nfree, b->vcolptr, b->vrowidx, 1, err);
     if (st != SCAF_OK) {
         opt_proxy_block_free(b);
         return st;
@@ -65,7 +68,8 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
     for (size_t k = 0; k < (size_t)S->n * nc; k++) {
         int v = dof[S->idx[k]];
         if (v >= nfree)
-            return err_set(err, SCAF_ERR_INTERNAL, "simplex %zu: dof %d outside [0, %d)", k / nc, v, nfree);
+            return err_set(err, SCAF_ERR_INTERNAL, "simplex %zu: dof %d outside [0, %d)", k / nc, v,
+                           nfree);
         if (v > top) top = v;
     }
     nfree = top + 1;
@@ -77,7 +81,8 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
     row_id *ent = malloc((ne ? ne : 1) * sizeof *ent);
     int *fill = malloc(((size_t)nfree + 1) * sizeof *fill);
     if (!b->vcolptr || !b->map || !ent || !fill) {
-        free(ent); free(fill);
+        free(ent);
+        free(fill);
         opt_proxy_block_free(b);
         return err_nomem(err, "proxy system pattern");
     }
@@ -117,7 +122,10 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
             for (int i = lo + 1; i < hi; i++) {
                 row_id x = ent[i];
                 int j = i - 1;
-                while (j >= lo && ent[j].row > x.row) { ent[j + 1] = ent[j]; j--; }
+                while (j >= lo && ent[j].row > x.row) {
+                    ent[j + 1] = ent[j];
+                    j--;
+                }
                 ent[j + 1] = x;
             }
         }
@@ -141,14 +149,16 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
     return expand_scalar(b, err);
 }
 
-scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, const int *verts, const int *dof,
-                                             int nfree, scaf_error *err)
+scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, const int *verts,
+                                             const int *dof, int nfree, scaf_error *err)
 {
     opt_proxy_block_free(b);
     int top = -1;
     for (int i = 0; i < n; i++) {
         int v = dof[verts[i]];
-        if (v >= nfree) return err_set(err, SCAF_ERR_INTERNAL, "vertex %d: dof %d outside [0, %d)", verts[i], v, nfree);
+        if (v >= nfree)
+            return err_set(err, SCAF_ERR_INTERNAL, "vertex %d: dof %d outside [0, %d)", verts[i], v,
+                           nfree);
         if (v > top) top = v;
     }
     b->d = d;
@@ -176,7 +186,8 @@ void opt_proxy_block_add_diagonal(opt_proxy_block *b, int k, double w)
 /* Accumulate one simplex: coefficient matrix M (d by d, symmetric) and
  * per-corner linear terms lin ((d+1) by d). */
 static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
-                             const double *X, const double *M, const double *lin, double *rhs, int d)
+                             const double *X, const double *M, const double *lin, double *rhs,
+                             int d)
 {
     int nc = d + 1, P = (d + 1) * (d + 2) / 2;
     const int *ix = S->idx + (size_t)s * nc;
@@ -276,7 +287,8 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
     double M[9], lin[12], w2max = 0;
     for (int s = 0; s < S->n; s++) {
-        double w2 = d == 2 ? proxy_d(t, s, X, w2_cap, M, lin, 2) : proxy_d(t, s, X, w2_cap, M, lin, d);
+        double w2 =
+            d == 2 ? proxy_d(t, s, X, w2_cap, M, lin, 2) : proxy_d(t, s, X, w2_cap, M, lin, d);
         if (w2 > w2max) w2max = w2;
         scatter(b, S, s, dof, X, M, lin, rhs);
     }

@@ -24,16 +24,16 @@
 #include "opt/energy.h"
 
 typedef struct opt_proxy_block {
-    int d;         /* dimension of the simplices */
-    int ns;        /* number of simplices the pattern was built for */
-    int nfree;     /* 1 + the largest dof its simplices use: the block's
+    int d;            /* dimension of the simplices */
+    int ns;           /* number of simplices the pattern was built for */
+    int nfree;        /* 1 + the largest dof its simplices use: the block's
                       matrix is nfree*d square (a leading part of the
                       whole system when other blocks use higher dofs) */
-    int *vcolptr;  /* nfree+1: vertex-level upper pattern, columns by dof */
-    int *vrowidx;  /* vertex-level rows (dofs), ascending, diagonal last */
-    int *map;      /* ns by (d+1)(d+2)/2: vertex-level entry of each local
+    int *vcolptr;     /* nfree+1: vertex-level upper pattern, columns by dof */
+    int *vrowidx;     /* vertex-level rows (dofs), ascending, diagonal last */
+    int *map;         /* ns by (d+1)(d+2)/2: vertex-level entry of each local
                       corner pair (i <= j), -1 when a corner is fixed */
-    opt_csc A;     /* scalar upper CSC, nfree*d square; values from fill */
+    opt_csc A;        /* scalar upper CSC, nfree*d square; values from fill */
     unsigned version; /* incremented each time the pattern is rebuilt */
 } opt_proxy_block;
 
@@ -57,8 +57,8 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
  * like): its pattern holds the d by d diagonal block of each free vertex
  * of verts (n entries, repeats allowed, fixed ones skipped) and nothing
  * else. Values are zeroed; add them with opt_proxy_block_add_diagonal. */
-scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, const int *verts, const int *dof,
-                                             int nfree, scaf_error *err);
+scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, const int *verts,
+                                             const int *dof, int nfree, scaf_error *err);
 
 /* Add w * I (d by d) to the diagonal block of the free vertex with dof k,
  * which must be in the pattern (any block: the diagonal sorts last in its

@@ -68,11 +68,12 @@ static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *con
     sys->vcolptr[nfree] = out;
     /* Scalar expansion, same rule as the blocks. */
     sys->owns = 1;
-    return opt_csc_expand_vertex_pattern(&sys->A, d, nfree, sys->vcolptr, sys->vrowidx, 0, err); /* summed values overwrite */
+    return opt_csc_expand_vertex_pattern(&sys->A, d, nfree, sys->vcolptr, sys->vrowidx, 0,
+                                         err); /* summed values overwrite */
 }
 
-scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *const *bl,
-                                 int nb, scaf_error *err)
+scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *const *bl, int nb,
+                                 scaf_error *err)
 {
     if (nb < 1 || nb > OPT_PROXY_MAX_BLOCKS)
         return err_set(err, SCAF_ERR_USAGE, "proxy system: %d blocks (1..%d allowed)", nb,
@@ -109,7 +110,10 @@ scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *c
     sys->d = bl[0]->d;
     sys->nfree = nfree;
     sys->nblocks = nb;
-    for (int k = 0; k < nb; k++) { sys->blk[k] = bl[k]; sys->seen[k] = bl[k]->version; }
+    for (int k = 0; k < nb; k++) {
+        sys->blk[k] = bl[k];
+        sys->seen[k] = bl[k]->version;
+    }
     if (nb == 1) return SCAF_OK;
     /* Sum values. */
     int d = sys->d;

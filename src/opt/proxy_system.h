@@ -19,15 +19,15 @@
 #define OPT_PROXY_MAX_BLOCKS 8
 
 typedef struct opt_proxy_system {
-    int d, nfree;      /* nfree: max over blocks; A is nfree*d square */
+    int d, nfree; /* nfree: max over blocks; A is nfree*d square */
     int nblocks;
-    int *vcolptr, *vrowidx;                 /* union vertex-level pattern */
-    int *emap[OPT_PROXY_MAX_BLOCKS];        /* block entry -> union entry */
-    unsigned seen[OPT_PROXY_MAX_BLOCKS];    /* block versions merged */
+    int *vcolptr, *vrowidx;              /* union vertex-level pattern */
+    int *emap[OPT_PROXY_MAX_BLOCKS];     /* block entry -> union entry */
+    unsigned seen[OPT_PROXY_MAX_BLOCKS]; /* block versions merged */
     const opt_proxy_block *blk[OPT_PROXY_MAX_BLOCKS];
-    opt_csc A;         /* union matrix (owned when nblocks > 1) */
-    int owns;          /* whether A's arrays are owned */
-    unsigned version;  /* bumped whenever A's pattern changes */
+    opt_csc A;        /* union matrix (owned when nblocks > 1) */
+    int owns;         /* whether A's arrays are owned */
+    unsigned version; /* bumped whenever A's pattern changes */
 } opt_proxy_system;
 
 /* Free everything; safe on a zeroed system. */

@@ -44,16 +44,22 @@ void opt_simplices_free(opt_simplices *s)
 void opt_flatten_triangle(const double p0[3], const double p1[3], const double p2[3], double q[6])
 {
     double e1[3], e2[3];
-    for (int k = 0; k < 3; k++) { e1[k] = p1[k] - p0[k]; e2[k] = p2[k] - p0[k]; }
+    for (int k = 0; k < 3; k++) {
+        e1[k] = p1[k] - p0[k];
+        e2[k] = p2[k] - p0[k];
+    }
     double l1 = sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
     double x = l1 > 0 ? (e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2]) / l1 : 0.0;
     double c[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
                    e1[0] * e2[1] - e1[1] * e2[0]};
     /* |e1 x e2| / |e1| is the height: exact positive y without cancellation. */
     double y = l1 > 0 ? sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / l1 : 0.0;
-    q[0] = 0; q[1] = 0;
-    q[2] = l1; q[3] = 0;
-    q[4] = x; q[5] = y;
+    q[0] = 0;
+    q[1] = 0;
+    q[2] = l1;
+    q[3] = 0;
+    q[4] = x;
+    q[5] = y;
 }
 
 int opt_gradient_operator(int d, const double *rest, double *grad, double *vol)
@@ -66,8 +72,10 @@ int opt_gradient_operator(int d, const double *rest, double *grad, double *vol)
         *vol = 0.5 * det;
         if (!(det != 0.0) || !isfinite(det)) return 0;
         double inv[4] = {e / det, -b / det, -c / det, a / det};
-        grad[2] = inv[0]; grad[3] = inv[1];
-        grad[4] = inv[2]; grad[5] = inv[3];
+        grad[2] = inv[0];
+        grad[3] = inv[1];
+        grad[4] = inv[2];
+        grad[5] = inv[3];
         grad[0] = -inv[0] - inv[2];
         grad[1] = -inv[1] - inv[3];
         return 1;
@@ -75,10 +83,9 @@ int opt_gradient_operator(int d, const double *rest, double *grad, double *vol)
     double R[9];
     for (int r = 0; r < 3; r++)
         for (int k = 0; k < 3; k++) R[3 * r + k] = rest[3 * (k + 1) + r] - rest[r];
-    double C[9] = {
-        R[4] * R[8] - R[5] * R[7], R[5] * R[6] - R[3] * R[8], R[3] * R[7] - R[4] * R[6],
-        R[2] * R[7] - R[1] * R[8], R[0] * R[8] - R[2] * R[6], R[1] * R[6] - R[0] * R[7],
-        R[1] * R[5] - R[2] * R[4], R[2] * R[3] - R[0] * R[5], R[0] * R[4] - R[1] * R[3]};
+    double C[9] = {R[4] * R[8] - R[5] * R[7], R[5] * R[6] - R[3] * R[8], R[3] * R[7] - R[4] * R[6],
+                   R[2] * R[7] - R[1] * R[8], R[0] * R[8] - R[2] * R[6], R[1] * R[6] - R[0] * R[7],
+                   R[1] * R[5] - R[2] * R[4], R[2] * R[3] - R[0] * R[5], R[0] * R[4] - R[1] * R[3]};
     double det = R[0] * C[0] + R[1] * C[1] + R[2] * C[2];
     *vol = det / 6.0;
     if (!(det != 0.0) || !isfinite(det)) return 0;
@@ -96,7 +103,8 @@ void opt_jacobian(const opt_simplices *S, int s, const double *X, double *J)
     const double *G = S->grad + (size_t)s * (d + 1) * d;
     if (d == 2) {
         /* Unrolled (the hot case); same summation order as below. */
-        const double *x0 = X + 2 * (size_t)ix[0], *x1 = X + 2 * (size_t)ix[1], *x2 = X + 2 * (size_t)ix[2];
+        const double *x0 = X + 2 * (size_t)ix[0], *x1 = X + 2 * (size_t)ix[1],
+                     *x2 = X + 2 * (size_t)ix[2];
         for (int a = 0; a < 2; a++) {
             J[2 * a] = x0[a] * G[0] + x1[a] * G[2] + x2[a] * G[4];
             J[2 * a + 1] = x0[a] * G[1] + x1[a] * G[3] + x2[a] * G[5];
@@ -124,8 +132,8 @@ double opt_signed_volume(const opt_simplices *S, int s, const double *X)
     for (int k = 0; k < 3; k++)
         for (int r = 0; r < 3; r++) e[k][r] = X[(size_t)ix[k + 1] * 3 + r] - x0[r];
     double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                 e[1][0] * (e[0][1] * e[2][2] - e[0][2] * e[2][1]) +
-                 e[2][0] * (e[0][1] * e[1][2] - e[0][2] * e[1][1]);
+        e[1][0] * (e[0][1] * e[2][2] - e[0][2] * e[2][1]) +
+        e[2][0] * (e[0][1] * e[1][2] - e[0][2] * e[1][1]);
     return det / 6.0;
 }
 
@@ -175,8 +183,18 @@ static void regular_simplex(int d, double v, double *rest)
         memcpy(rest, q, sizeof q);
     } else {
         double a = cbrt(6.0 * sqrt(2.0) * v);
-        double q[12] = {0, 0, 0, a, 0, 0, 0.5 * a, 0.5 * sqrt(3.0) * a, 0,
-                        0.5 * a, sqrt(3.0) / 6.0 * a, sqrt(2.0 / 3.0) * a};
+        double q[12] = {0,
+                        0,
+                        0,
+                        a,
+                        0,
+                        0,
+                        0.5 * a,
+                        0.5 * sqrt(3.0) * a,
+                        0,
+                        0.5 * a,
+                        sqrt(3.0) / 6.0 * a,
+                        sqrt(2.0 / 3.0) * a};
         memcpy(rest, q, sizeof q);
     }
 }

@@ -21,9 +21,15 @@ void svd2_signed(const double J[4], double U[4], double s[2], double V[4])
     double a1 = atan2(G, F), a2 = atan2(H, E);
     double theta = 0.5 * (a2 - a1), phi = 0.5 * (a2 + a1);
     double cp = cos(phi), sp = sin(phi), ct = cos(theta), st = sin(theta);
-    U[0] = cp; U[1] = -sp; U[2] = sp; U[3] = cp;
+    U[0] = cp;
+    U[1] = -sp;
+    U[2] = sp;
+    U[3] = cp;
     /* J = U diag(s) R(theta), so V = R(theta)^T. */
-    V[0] = ct; V[1] = st; V[2] = -st; V[3] = ct;
+    V[0] = ct;
+    V[1] = st;
+    V[2] = -st;
+    V[3] = ct;
 }
 
 static void cross3(const double a[3], const double b[3], double c[3])
@@ -45,14 +51,19 @@ static void any_perp(const double a[3], double p[3])
     e[k] = 1.0;
     cross3(a, e, p);
     double n = norm3(p);
-    p[0] /= n; p[1] /= n; p[2] /= n;
+    p[0] /= n;
+    p[1] /= n;
+    p[2] /= n;
 }
 
 /* Symmetric 3x3 eigen-decomposition A = V diag(l) V^T by cyclic Jacobi. */
 static void jacobi_eigen3(const double Ain[9], double l[3], double V[9])
 {
     double A[9];
-    for (int i = 0; i < 9; i++) { A[i] = Ain[i]; V[i] = (i % 4 == 0) ? 1.0 : 0.0; }
+    for (int i = 0; i < 9; i++) {
+        A[i] = Ain[i];
+        V[i] = (i % 4 == 0) ? 1.0 : 0.0;
+    }
     for (int sweep = 0; sweep < 32; sweep++) {
         double off = A[1] * A[1] + A[2] * A[2] + A[5] * A[5];
         double dia = A[0] * A[0] + A[4] * A[4] + A[8] * A[8];
@@ -84,7 +95,9 @@ static void jacobi_eigen3(const double Ain[9], double l[3], double V[9])
             }
         }
     }
-    l[0] = A[0]; l[1] = A[4]; l[2] = A[8];
+    l[0] = A[0];
+    l[1] = A[4];
+    l[2] = A[8];
 }
 
 void svd3_signed(const double J[9], double U[9], double s[3], double V[9])
@@ -99,7 +112,11 @@ void svd3_signed(const double J[9], double U[9], double s[3], double V[9])
     int ord[3] = {0, 1, 2};
     for (int i = 0; i < 3; i++)
         for (int j = i + 1; j < 3; j++)
-            if (l[ord[j]] > l[ord[i]]) { int t = ord[i]; ord[i] = ord[j]; ord[j] = t; }
+            if (l[ord[j]] > l[ord[i]]) {
+                int t = ord[i];
+                ord[i] = ord[j];
+                ord[j] = t;
+            }
     double v[3][3];
     for (int k = 0; k < 3; k++)
         for (int r = 0; r < 3; r++) v[k][r] = W[3 * r + ord[k]];
@@ -107,7 +124,9 @@ void svd3_signed(const double J[9], double U[9], double s[3], double V[9])
     double c01[3];
     cross3(v[0], v[1], c01);
     if (c01[0] * v[2][0] + c01[1] * v[2][1] + c01[2] * v[2][2] < 0) {
-        v[2][0] = -v[2][0]; v[2][1] = -v[2][1]; v[2][2] = -v[2][2];
+        v[2][0] = -v[2][0];
+        v[2][1] = -v[2][1];
+        v[2][2] = -v[2][2];
     }
     double u[3][3], Jv[3][3];
     for (int k = 0; k < 3; k++)
@@ -117,7 +136,9 @@ void svd3_signed(const double J[9], double U[9], double s[3], double V[9])
     if (n0 > 0 && isfinite(n0)) {
         for (int r = 0; r < 3; r++) u[0][r] = Jv[0][r] / n0;
     } else {
-        u[0][0] = 1; u[0][1] = 0; u[0][2] = 0;
+        u[0][0] = 1;
+        u[0][1] = 0;
+        u[0][2] = 0;
     }
     /* Gram-Schmidt the second column against the first. */
     double d01 = u[0][0] * Jv[1][0] + u[0][1] * Jv[1][1] + u[0][2] * Jv[1][2];
@@ -133,13 +154,14 @@ void svd3_signed(const double J[9], double U[9], double s[3], double V[9])
     s[1] = u[1][0] * Jv[1][0] + u[1][1] * Jv[1][1] + u[1][2] * Jv[1][2];
     s[2] = u[2][0] * Jv[2][0] + u[2][1] * Jv[2][1] + u[2][2] * Jv[2][2];
     for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 3; k++) { U[3 * r + k] = u[k][r]; V[3 * r + k] = v[k][r]; }
+        for (int k = 0; k < 3; k++) {
+            U[3 * r + k] = u[k][r];
+            V[3 * r + k] = v[k][r];
+        }
 }
 
 void svd_signed(int d, const double *J, double *U, double *s, double *V)
 {
-    if (d == 2)
-        svd2_signed(J, U, s, V);
-    else
-        svd3_signed(J, U, s, V);
+    if (d == 2) svd2_signed(J, U, s, V);
+    else svd3_signed(J, U, s, V);
 }

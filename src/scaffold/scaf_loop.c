@@ -54,7 +54,8 @@
 /* Edges used by exactly one face, oriented as in that face (chart on the
  * left), in increasing (smaller end, larger end) order. Chart topology was
  * validated by the caller. */
-static scaf_status boundary_edges(int nv, int nf, const int *F, int **out, int *nout, scaf_error *err)
+static scaf_status boundary_edges(int nv, int nf, const int *F, int **out, int *nout,
+                                  scaf_error *err)
 {
     size_t nh = nf > 0 ? 3 * (size_t)nf : 0;
     int *order = malloc(sizeof(int) * (nh ? nh : 1));
@@ -96,17 +97,17 @@ struct scaf_loop_work {
     opt_simplex_term mesh_def, scaf_def;
     opt_obj_term terms[OPT_PROXY_MAX_BLOCKS]; /* mesh, scaffold, extra terms */
     int nterms;
-    opt_proxy_system sys;        /* the sum of the terms' blocks */
-    opt_chol *chol;              /* CHOLMOD, analysis reused while the pattern stays */
-    int *mesh_perm;              /* d nv: fill-reducing order of the mesh unknowns,
+    opt_proxy_system sys; /* the sum of the terms' blocks */
+    opt_chol *chol;       /* CHOLMOD, analysis reused while the pattern stays */
+    int *mesh_perm;       /* d nv: fill-reducing order of the mesh unknowns,
                                     from the first (METIS) analysis; reused */
-    int *perm;                   /* scratch: full permutation */
+    int *perm;            /* scratch: full permutation */
     size_t cap_perm;
     double *rhs, *sol, *dir;
     size_t cap_n, cap_x;
-    int newton_on;               /* auto: SLIM has slowed down, Newton from now on */
-    int slim_steps;              /* SLIM iterations so far (auto's cap) */
-    int newton_exact;            /* the last Newton step was full: try the exact Hessian */
+    int newton_on;    /* auto: SLIM has slowed down, Newton from now on */
+    int slim_steps;   /* SLIM iterations so far (auto's cap) */
+    int newton_exact; /* the last Newton step was full: try the exact Hessian */
 };
 
 scaf_loop_options scaf_loop_options_default(void)
@@ -175,9 +176,11 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
     for (int f = 0; f < nf; f++) L->total_area += L->chart.weight[f];
     for (int f = 0; f < nf; f++) {
         const int *t = F + 3 * f;
-        if (!(orient2d(uv0 + 2 * (size_t)t[0], uv0 + 2 * (size_t)t[1], uv0 + 2 * (size_t)t[2]) > 0.0)) {
+        if (!(orient2d(uv0 + 2 * (size_t)t[0], uv0 + 2 * (size_t)t[1], uv0 + 2 * (size_t)t[2]) >
+              0.0)) {
             scaf_loop_free(L);
-            return err_set(err, SCAF_ERR_INTERNAL, "initial UV triangle %d is not positively oriented", f);
+            return err_set(err, SCAF_ERR_INTERNAL,
+                           "initial UV triangle %d is not positively oriented", f);
         }
     }
     st = boundary_edges(nv, nf, F, &L->bedges, &L->nbedges, err);
@@ -209,7 +212,9 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
 scaf_status scaf_loop_set_scaffold_provider(scaf_loop *L, scaffold_provider *p, scaf_error *err)
 {
     if (!p || p->d != L->d || p->nmesh != L->nv)
-        return err_set(err, SCAF_ERR_USAGE, "SCAF loop: a scaffold provider of dimension %d over %d mesh vertices is needed",
+        return err_set(err, SCAF_ERR_USAGE,
+                       "SCAF loop: a scaffold provider of dimension %d over %d mesh vertices is "
+                       "needed",
                        L->d, L->nv);
     scaf_loop_work *w = L->work;
     scaffold_provider_destroy(w->scaffold);
@@ -221,8 +226,10 @@ scaf_status scaf_loop_set_scaffold_provider(scaf_loop *L, scaffold_provider *p, 
 scaf_status scaf_loop_add_term(scaf_loop *L, const opt_obj_term *t, scaf_error *err)
 {
     scaf_loop_work *w = L->work;
-    if (!t || !t->ops || !t->ops->energy || !t->ops->energy_slope || !t->ops->pattern != !t->ops->fill)
-        return err_set(err, SCAF_ERR_USAGE, "SCAF loop: a term needs energy and energy_slope, and pattern with fill");
+    if (!t || !t->ops || !t->ops->energy || !t->ops->energy_slope ||
+        !t->ops->pattern != !t->ops->fill)
+        return err_set(err, SCAF_ERR_USAGE,
+                       "SCAF loop: a term needs energy and energy_slope, and pattern with fill");
     if (w->nterms >= OPT_PROXY_MAX_BLOCKS)
         return err_set(err, SCAF_ERR_USAGE, "SCAF loop: at most %d terms", OPT_PROXY_MAX_BLOCKS);
     w->terms[w->nterms] = *t;
@@ -337,8 +344,8 @@ static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, sca
 /* Factor A + mu diag(A) with rhs + mu diag(A) x for growing mu, after a
  * plain factorization failed (see the caller); for a Newton system (the
  * unknown is the step) the rhs stays -g. */
-static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, const double *X, size_t n,
-                                      int newton, scaf_error *err)
+static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, const double *X,
+                                      size_t n, int newton, scaf_error *err)
 {
     scaf_loop_work *w = L->work;
     int d = L->d;
@@ -377,7 +384,8 @@ static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, co
 }
 
 /* dir = the solution minus X for free vertices, 0 for fixed ones. */
-static inline void direction(int d, int nall, const int *dof, const double *sol, const double *X, double *dir)
+static inline void direction(int d, int nall, const int *dof, const double *sol, const double *X,
+                             double *dir)
 {
     for (int v = 0; v < nall; v++)
         for (int a = 0; a < d; a++) {
@@ -391,7 +399,8 @@ static void newton_direction(int d, int nall, const int *dof, const double *sol,
 {
     for (int v = 0; v < nall; v++)
         for (int a = 0; a < d; a++)
-            dir[(size_t)d * (size_t)v + a] = dof[v] >= 0 ? sol[(size_t)d * (size_t)dof[v] + a] : 0.0;
+            dir[(size_t)d * (size_t)v + a] =
+                dof[v] >= 0 ? sol[(size_t)d * (size_t)dof[v] + a] : 0.0;
 }
 
 /* Every term's Hessian (each simplex projected PSD when project) and -g
@@ -437,8 +446,8 @@ static scaf_status newton_system(scaf_loop *L, int nall, const int *dof, const d
 /* Assembly of every term's proxy (newton: Hessian), ordering,
  * factorization, solve and the line search over all terms. X (nall by d)
  * updated by the line search. */
-static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, double *X, int newton,
-                             slim_times *tm, opt_ls_result *ls, scaf_error *err)
+static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, double *X,
+                             int newton, slim_times *tm, opt_ls_result *ls, scaf_error *err)
 {
     scaf_loop_work *w = L->work;
     int d = L->d;
@@ -497,12 +506,9 @@ static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, 
     if (st != SCAF_OK) return st;
 
     double t4 = timer_now();
-    if (newton)
-        newton_direction(d, nall, dof, w->sol, w->dir);
-    else if (d == 2)
-        direction(2, nall, dof, w->sol, X, w->dir); /* d known: the loop unrolls */
-    else
-        direction(d, nall, dof, w->sol, X, w->dir);
+    if (newton) newton_direction(d, nall, dof, w->sol, w->dir);
+    else if (d == 2) direction(2, nall, dof, w->sol, X, w->dir); /* d known: the loop unrolls */
+    else direction(d, nall, dof, w->sol, X, w->dir);
     opt_ls_options lo;
     opt_ls_options_default(&lo);
     lo.safety = L->opt.step_fraction;
@@ -528,7 +534,8 @@ static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, 
 /* X holds the line search's result X0 + step * dir; halve the step until
  * the hook accepts, every term accepts X (exactly) and the total energy
  * is below its value at X0; otherwise restore X0 (step 0). */
-static scaf_status feasible_backtrack(scaf_loop *L, int nall, const double *X0, double *X, opt_ls_result *ls)
+static scaf_status feasible_backtrack(scaf_loop *L, int nall, const double *X0, double *X,
+                                      opt_ls_result *ls)
 {
     scaf_loop_work *w = L->work;
     if (!L->hooks.feasible || ls->step <= 0.0 || L->hooks.feasible(L->hooks.user, L, X, nall))
@@ -575,11 +582,13 @@ static inline double triangle_area(const double *X, const int *t)
 
 /* Rest shapes of the scaffold = current shapes (eps guard), energy weight
  * lambda, proxy weight lambda / 4 except on guarded simplices (banner). */
-static scaf_status scaffold_term(scaf_loop *L, int nall, const double *X, double lambda, scaf_error *err)
+static scaf_status scaffold_term(scaf_loop *L, int nall, const double *X, double lambda,
+                                 scaf_error *err)
 {
     scaf_loop_work *w = L->work;
     const scaffold_view *v = &w->view;
-    scaf_status st = opt_simplices_from_current(&w->scaf, L->d, nall, X, v->n, v->simplices, v->eps, err);
+    scaf_status st =
+        opt_simplices_from_current(&w->scaf, L->d, nall, X, v->n, v->simplices, v->eps, err);
     if (st != SCAF_OK) {
         err_prefix(err, "scaffold rest shapes");
         return st;
@@ -589,7 +598,8 @@ static scaf_status scaffold_term(scaf_loop *L, int nall, const double *X, double
     w->scaf_def.proxy_weight = w->scaf_pw;
     if (!w->scaf_pw) return err_nomem(err, "scaffold weights");
     for (int s = 0; s < w->scaf.n; s++) {
-        double vol = L->d == 2 ? triangle_area(X, v->simplices + 3 * (size_t)s) : opt_signed_volume(&w->scaf, s, X);
+        double vol = L->d == 2 ? triangle_area(X, v->simplices + 3 * (size_t)s)
+                               : opt_signed_volume(&w->scaf, s, X);
         w->scaf.weight[s] = lambda;
         w->scaf_pw[s] = vol >= v->eps ? 0.25 * lambda : lambda;
     }
@@ -613,7 +623,8 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     double EM = mesh_term->ops->energy(mesh_term, L->uv);
     /* The reported E is symmetric Dirichlet: reuse EM when that is the
      * optimized energy too. */
-    I.energy_before = L->opt.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET ? EM / L->total_area : scaf_loop_energy(L);
+    I.energy_before =
+        L->opt.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET ? EM / L->total_area : scaf_loop_energy(L);
     t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_OTHER] += t1 - t0;
     t0 = t1;
@@ -642,8 +653,9 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     memcpy(X + (size_t)d * L->nv, sc->extra, sizeof(double) * d * (size_t)sc->nextra);
     memcpy(fixed + L->nv, sc->extra_fixed, (size_t)sc->nextra);
     int nfree = opt_dof_numbering(nall, fixed, dof);
-    int newton = (L->opt.solver == SCAF_SOLVER_NEWTON || (L->opt.solver == SCAF_SOLVER_AUTO && w->newton_on)) &&
-                 scaf_loop_newton_available(L);
+    int newton = (L->opt.solver == SCAF_SOLVER_NEWTON ||
+                  (L->opt.solver == SCAF_SOLVER_AUTO && w->newton_on)) &&
+        scaf_loop_newton_available(L);
     double lambda = L->opt.lambda_ratio * EM / (sc->n > 0 ? sc->n : 1);
     if (newton) lambda *= L->opt.newton_lambda_scale; /* see the option */
     st = scaffold_term(L, nall, X, lambda, err);

@@ -52,19 +52,19 @@ struct scaf_loop;
 /* What the caller sets; scaf_loop_options_default gives the paper's and
  * the project's measured defaults. */
 typedef struct scaf_loop_options {
-    opt_energy energy;         /* the mesh term's energy (symmetric Dirichlet) */
-    double lambda_ratio;       /* scaffold weight lambda = ratio * E_M / |S| (0.01) */
-    double step_fraction;      /* first trial step: this fraction of the
+    opt_energy energy;          /* the mesh term's energy (symmetric Dirichlet) */
+    double lambda_ratio;        /* scaffold weight lambda = ratio * E_M / |S| (0.01) */
+    double step_fraction;       /* first trial step: this fraction of the
                                   largest allowed step (0.8) */
-    scaffold_options scaffold; /* box and quality (scaffold_default_options) */
-    scaf_solver solver;        /* SLIM, projected Newton, or auto: SLIM until
+    scaffold_options scaffold;  /* box and quality (scaffold_default_options) */
+    scaf_solver solver;         /* SLIM, projected Newton, or auto: SLIM until
                                   an iteration lowers the objective by less
                                   than newton_switch (relative) or after
                                   newton_after iterations, Newton from
                                   then on (SCAF_SOLVER_SLIM here; the atlas
                                   keeps it, scaf_param chooses) */
-    double newton_switch;      /* auto's threshold (1e-2, bench/RESULTS-newton.md) */
-    int newton_after;          /* auto: Newton at the latest after this many
+    double newton_switch;       /* auto's threshold (1e-2, bench/RESULTS-newton.md) */
+    int newton_after;           /* auto: Newton at the latest after this many
                                   SLIM iterations (8: a thin strip's SLIM
                                   keeps lowering its objective by > 1e-2 per
                                   iteration while E creeps) */
@@ -104,7 +104,8 @@ scaf_loop_options scaf_loop_options_default(void);
 typedef struct scaf_loop_hooks {
     scaf_status (*prepare)(void *user, struct scaf_loop *L, double *X, int nall, scaf_error *err);
     int (*feasible)(void *user, const struct scaf_loop *L, const double *X, int nall);
-    int (*restrict_dir)(void *user, const struct scaf_loop *L, const double *X, double *dir, int nall);
+    int (*restrict_dir)(void *user, const struct scaf_loop *L, const double *X, double *dir,
+                        int nall);
     void *user;
 } scaf_loop_hooks;
 
@@ -113,19 +114,19 @@ typedef struct scaf_loop_work scaf_loop_work;
 typedef struct scaf_loop {
     /* set by the caller */
     scaf_loop_options opt;
-    scaf_loop_hooks hooks;  /* zero = none (see above) */
+    scaf_loop_hooks hooks; /* zero = none (see above) */
     /* the problem (read only) */
-    int d;                  /* vertex dimension of the map (2) */
+    int d; /* vertex dimension of the map (2) */
     int nv, nf;
-    int *F;                 /* nf by 3 working faces */
-    opt_simplices chart;    /* rest frames of the mesh triangles, weight = 3D area */
+    int *F;              /* nf by 3 working faces */
+    opt_simplices chart; /* rest frames of the mesh triangles, weight = 3D area */
     double total_area;
     int nbedges;
-    int *bedges;            /* nbedges by 2 chart boundary edges, chart on the left */
+    int *bedges; /* nbedges by 2 chart boundary edges, chart on the left */
     /* the state */
-    double *uv;             /* nv by d current positions (updated) */
+    double *uv; /* nv by d current positions (updated) */
     /* the report */
-    int iterations;         /* finished iterations */
+    int iterations; /* finished iterations */
     /* the loop's own */
     scaf_loop_work *work;
 } scaf_loop;

@@ -105,8 +105,8 @@ scaf_status scaffold_build(const double *uv, int nmesh, const int *edges, int ne
         for (int j = 0; j < 2; j++) {
             int v = edges[2 * e + j];
             if (v < 0 || v >= nmesh) {
-                st = err_set(err, SCAF_ERR_INTERNAL, "scaffold: boundary edge %d references vertex %d of %d",
-                             e, v, nmesh);
+                st = err_set(err, SCAF_ERR_INTERNAL,
+                             "scaffold: boundary edge %d references vertex %d of %d", e, v, nmesh);
                 goto done;
             }
             if (cdt_of[v] < 0) {
@@ -129,7 +129,8 @@ scaf_status scaffold_build(const double *uv, int nmesh, const int *edges, int ne
     for (int i = 0; i < nb; i++) {
         const double *p = pts + 2 * i;
         if (!(p[0] > box[0] && p[0] < box[2] && p[1] > box[1] && p[1] < box[3])) {
-            st = err_set(err, SCAF_ERR_INTERNAL, "scaffold: boundary vertex %d at (%g, %g) is not inside the box",
+            st = err_set(err, SCAF_ERR_INTERNAL,
+                         "scaffold: boundary vertex %d at (%g, %g) is not inside the box",
                          mesh_of[i], p[0], p[1]);
             goto done;
         }
@@ -141,13 +142,17 @@ scaf_status scaffold_build(const double *uv, int nmesh, const int *edges, int ne
     for (int i = 0; i < per_side; i++) {
         double t = (double)i / per_side;
         double *p = pts + 2 * (nb + i);
-        p[0] = box[0] + t * w; p[1] = box[1];               /* bottom, left to right */
+        p[0] = box[0] + t * w;
+        p[1] = box[1]; /* bottom, left to right */
         p = pts + 2 * (nb + per_side + i);
-        p[0] = box[2]; p[1] = box[1] + t * h;               /* right, bottom to top */
+        p[0] = box[2];
+        p[1] = box[1] + t * h; /* right, bottom to top */
         p = pts + 2 * (nb + 2 * per_side + i);
-        p[0] = box[2] - t * w; p[1] = box[3];               /* top, right to left */
+        p[0] = box[2] - t * w;
+        p[1] = box[3]; /* top, right to left */
         p = pts + 2 * (nb + 3 * per_side + i);
-        p[0] = box[0]; p[1] = box[3] - t * h;               /* left, top to bottom */
+        p[0] = box[0];
+        p[1] = box[3] - t * h; /* left, top to bottom */
     }
     for (int i = 0; i < nbox; i++) {
         int e = nedges + i;

@@ -33,15 +33,15 @@ typedef struct scaffold_options {
 scaffold_options scaffold_default_options(void);
 
 typedef struct scaffold {
-    int nmesh;          /* ids < nmesh are mesh vertices */
-    int nextra;         /* scaffold-only vertices: ids nmesh .. nmesh+nextra-1 */
-    double *extra_uv;   /* nextra by 2 positions of the scaffold-only vertices */
+    int nmesh;                  /* ids < nmesh are mesh vertices */
+    int nextra;                 /* scaffold-only vertices: ids nmesh .. nmesh+nextra-1 */
+    double *extra_uv;           /* nextra by 2 positions of the scaffold-only vertices */
     unsigned char *extra_fixed; /* nextra flags: 1 = on the box boundary */
-    int ntri;           /* |S| */
-    int *T;             /* ntri by 3 vertex ids, counter-clockwise in UV */
-    double box[4];      /* xmin, ymin, xmax, ymax of the box */
-    double min_edge;    /* l: shortest chart boundary edge length in UV */
-    double eps;         /* l^2 / 4: degeneracy guard area */
+    int ntri;                   /* |S| */
+    int *T;                     /* ntri by 3 vertex ids, counter-clockwise in UV */
+    double box[4];              /* xmin, ymin, xmax, ymax of the box */
+    double min_edge;            /* l: shortest chart boundary edge length in UV */
+    double eps;                 /* l^2 / 4: degeneracy guard area */
 } scaffold;
 
 /* The box around the UV positions of the listed vertices (all nmesh when

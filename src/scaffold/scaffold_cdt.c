@@ -11,7 +11,8 @@ typedef struct cdt_provider {
     scaffold sc; /* the current scaffold (empty before the first refresh) */
 } cdt_provider;
 
-static scaf_status cdt_refresh(scaffold_provider *p, const double *X, const scaffold_options *o, scaf_error *err)
+static scaf_status cdt_refresh(scaffold_provider *p, const double *X, const scaffold_options *o,
+                               scaf_error *err)
 {
     cdt_provider *c = (cdt_provider *)p;
     scaffold_free(&c->sc);

@@ -11,7 +11,8 @@ typedef struct frozen_provider {
     int built;
 } frozen_provider;
 
-static scaf_status frozen_refresh(scaffold_provider *p, const double *X, const scaffold_options *o, scaf_error *err)
+static scaf_status frozen_refresh(scaffold_provider *p, const double *X, const scaffold_options *o,
+                                  scaf_error *err)
 {
     frozen_provider *f = (frozen_provider *)p;
     if (!f->built) {
@@ -29,7 +30,8 @@ static scaf_status frozen_refresh(scaffold_provider *p, const double *X, const s
             q[i] = id < v.nmesh ? X + 2 * (size_t)id : v.extra + 2 * (size_t)(id - v.nmesh);
         }
         if (orient2d(q[0], q[1], q[2]) <= 0)
-            return err_set(err, SCAF_ERR_INTERNAL, "frozen scaffold: triangle %d is not positively oriented", s);
+            return err_set(err, SCAF_ERR_INTERNAL,
+                           "frozen scaffold: triangle %d is not positively oriented", s);
     }
     return SCAF_OK;
 }

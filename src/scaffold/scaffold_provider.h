@@ -51,7 +51,8 @@ typedef struct scaffold_view {
 typedef struct scaffold_provider scaffold_provider;
 
 typedef struct scaffold_provider_ops {
-    scaf_status (*refresh)(scaffold_provider *p, const double *X, const scaffold_options *o, scaf_error *err);
+    scaf_status (*refresh)(scaffold_provider *p, const double *X, const scaffold_options *o,
+                           scaf_error *err);
     void (*view)(const scaffold_provider *p, scaffold_view *v);
     void (*destroy)(scaffold_provider *p);
 } scaffold_provider_ops;

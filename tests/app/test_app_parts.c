@@ -70,7 +70,8 @@ static void degenerate_side_joins_nothing(void **state)
 static void svg_colours_grow_with_energy(void **state)
 {
     (void)state;
-    unsigned c4 = uv_svg_colour(4.0), c8 = uv_svg_colour(8.0), c64 = uv_svg_colour(64.0), cinf = uv_svg_colour(INFINITY);
+    unsigned c4 = uv_svg_colour(4.0), c8 = uv_svg_colour(8.0), c64 = uv_svg_colour(64.0),
+             cinf = uv_svg_colour(INFINITY);
     assert_int_not_equal(c4, c64);
     /* blue fades, red grows */
     assert_true((c4 & 0xff) > (c64 & 0xff));
@@ -127,7 +128,8 @@ static void report_is_json_with_phases(void **state)
     }
     it[1].lambda = NAN; /* non-finite numbers become null */
     scaf_options_t o = scaf_options_default();
-    param_report r = {"in \"quoted\".obj", "out.obj", &o, 10, 12, 1, 0.5, 7.0, 3.0, "ok", SCAF_STOP_TOLERANCE, 3, it};
+    param_report r = {"in \"quoted\".obj", "out.obj", &o, 10, 12, 1, 0.5, 7.0, 3.0, "ok",
+                      SCAF_STOP_TOLERANCE, 3,         it};
     char path[512];
     test_tmp_path("parts.json", path, sizeof path);
     assert_int_equal(param_report_write(path, &r, NULL), SCAF_OK);

@@ -86,7 +86,8 @@ static int check_iteration(const atlas *a, const atlas_iteration *it, void *user
     assert_int_equal(r.boundary_crossings, 0);
     if (s->padding > 0.0 && a->ncharts > 1) {
         double g, side = atlas_side(a);
-        assert_int_equal(chart_gap_min(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, 0.0, &g, NULL, &err), SCAF_OK);
+        assert_int_equal(
+            chart_gap_min(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, 0.0, &g, NULL, &err), SCAF_OK);
         assert_true(g >= s->padding * side);
     }
     if (it->info.step > 0.0) assert_true(it->info.total_after < it->info.total_before);
@@ -273,7 +274,8 @@ static void compaction_keeps_best_layout(void **state)
     double eff = chart_packing_efficiency(a.nw, a.loop.uv, a.nf, a.Fw);
     assert_true(eff == b.best_eff);
     assert_true(scaf_loop_energy(&a.loop) <= b.e_max);
-    print_message("cube sphere 5: %d compaction iterations, %d over the tolerance, kept an earlier layout: %d\n",
+    print_message("cube sphere 5: %d compaction iterations, %d over the tolerance, kept an earlier "
+                  "layout: %d\n",
                   b.compact, b.over, a.compact_restored);
     /* an overshooting iteration ends the phase, so it was undone */
     assert_true(b.over == 0 || a.compact_restored);
@@ -411,10 +413,12 @@ static void out_of_range_options_are_refused(void **state)
         err_clear(&err);
         assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_ERR_USAGE);
         static const char *const knob[NBAD] = {
-            "pack_gap_factor", "pack_gap_factor", "compact_lambda_ratio", "compact_lambda_ratio",
-            "compact_rest_scale", "compact_rest_scale", "compact_rest_scale", "compact_box_scale",
-            "compact_box_scale", "compact_fraction", "compact_fraction", "compact_fraction",
-            "pack_cells", "pack_cells", "pack_picks", "pack_picks", "compact_rest_scale"};
+            "pack_gap_factor",      "pack_gap_factor",    "compact_lambda_ratio",
+            "compact_lambda_ratio", "compact_rest_scale", "compact_rest_scale",
+            "compact_rest_scale",   "compact_box_scale",  "compact_box_scale",
+            "compact_fraction",     "compact_fraction",   "compact_fraction",
+            "pack_cells",           "pack_cells",         "pack_picks",
+            "pack_picks",           "compact_rest_scale"};
         assert_non_null(strstr(err.message, knob[i])); /* names the option and its range */
         assert_non_null(strstr(err.message, "must be"));
     }
@@ -451,18 +455,19 @@ static void pack_keep_matches_full_ranking(void **state)
     assert_int_equal(atlas_run(&a, NULL, NULL, &err), SCAF_OK);
     int ns = atlas_pack_strategies(a.ncharts), c0 = -1, c1 = -1;
     long *s0 = malloc(sizeof(long) * (size_t)ns), *s1 = malloc(sizeof(long) * (size_t)ns);
-    double *o0 = malloc(sizeof(double) * 2 * (size_t)a.nw), *o1 = malloc(sizeof(double) * 2 * (size_t)a.nw);
+    double *o0 = malloc(sizeof(double) * 2 * (size_t)a.nw),
+           *o1 = malloc(sizeof(double) * 2 * (size_t)a.nw);
     assert_non_null(s0);
     assert_non_null(s1);
     assert_non_null(o0);
     assert_non_null(o1);
     double gap = 2.0 * o.padding * atlas_side(&a);
     for (int keep = 1; keep <= 3; keep++) {
-        assert_int_equal(atlas_pack(a.nw, a.loop.uv, a.nf, a.Fw, a.chart, a.wchart, a.ncharts, 128, gap, -1, 0, &c0,
-                                    s0, o0, &err),
+        assert_int_equal(atlas_pack(a.nw, a.loop.uv, a.nf, a.Fw, a.chart, a.wchart, a.ncharts, 128,
+                                    gap, -1, 0, &c0, s0, o0, &err),
                          SCAF_OK);
-        assert_int_equal(atlas_pack(a.nw, a.loop.uv, a.nf, a.Fw, a.chart, a.wchart, a.ncharts, 128, gap, -1, keep,
-                                    &c1, s1, o1, &err),
+        assert_int_equal(atlas_pack(a.nw, a.loop.uv, a.nf, a.Fw, a.chart, a.wchart, a.ncharts, 128,
+                                    gap, -1, keep, &c1, s1, o1, &err),
                          SCAF_OK);
         assert_int_equal(s0[c0], s1[c1]);
         for (int i = 0; i < 2 * a.nw; i++) assert_true(o0[i] == o1[i]);

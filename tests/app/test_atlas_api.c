@@ -128,13 +128,16 @@ static int padding_holds(const double *UV, const edge *s, int n, double P, doubl
     for (int i = 0; i < n; i++)
         for (int j = i + 1; j < n; j++) {
             if (s[i].chart == s[j].chart) continue;
-            const double *p1 = UV + 2 * s[i].a, *p2 = UV + 2 * s[i].b, *q1 = UV + 2 * s[j].a, *q2 = UV + 2 * s[j].b;
+            const double *p1 = UV + 2 * s[i].a, *p2 = UV + 2 * s[i].b, *q1 = UV + 2 * s[j].a,
+                         *q2 = UV + 2 * s[j].b;
             double d = chart_segment_distance(p1, p2, q1, q2);
             if (d < *gap) *gap = d;
             if (!(P > 0.0)) continue;
             double far = 2.0 * P;
-            if (fmin(q1[0], q2[0]) - fmax(p1[0], p2[0]) > far || fmin(p1[0], p2[0]) - fmax(q1[0], q2[0]) > far ||
-                fmin(q1[1], q2[1]) - fmax(p1[1], p2[1]) > far || fmin(p1[1], p2[1]) - fmax(q1[1], q2[1]) > far)
+            if (fmin(q1[0], q2[0]) - fmax(p1[0], p2[0]) > far ||
+                fmin(p1[0], p2[0]) - fmax(q1[0], q2[0]) > far ||
+                fmin(q1[1], q2[1]) - fmax(p1[1], p2[1]) > far ||
+                fmin(p1[1], p2[1]) - fmax(q1[1], q2[1]) > far)
                 continue;
             if (!chart_segment_distance_at_least(p1, p2, q1, q2, P)) ok = 0;
         }
@@ -150,13 +153,14 @@ static double tri_area3(const double *a, const double *b, const double *c)
 {
     double u[3], v[3];
     for (int k = 0; k < 3; k++) u[k] = b[k] - a[k], v[k] = c[k] - a[k];
-    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+    double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2],
+           z = u[0] * v[1] - u[1] * v[0];
     return 0.5 * sqrt(x * x + y * y + z * z);
 }
 
 /* ||J||^2 and ||J^-1||^2 of the map from the 3D triangle to the UV one. */
-static void jacobian_norms(const double *p0, const double *p1, const double *p2, const double *u0, const double *u1,
-                           const double *u2, double *jj, double *ji)
+static void jacobian_norms(const double *p0, const double *p1, const double *p2, const double *u0,
+                           const double *u1, const double *u2, double *jj, double *ji)
 {
     double e1[3], e2[3];
     for (int k = 0; k < 3; k++) e1[k] = p1[k] - p0[k], e2[k] = p2[k] - p0[k];
@@ -210,7 +214,8 @@ static void check_output(scaf_atlas_t *a, const input *in, double padding)
 
     /* every face keeps its chart; each output UV belongs to one vertex */
     for (int c = 0; c < 3 * nf; c++) assert_true(FT[c] >= 0 && FT[c] < nuv);
-    int kin = in->FT ? labels_by_index(nf, in->FT, in->nuv, lin) : labels_by_index(nf, in->F, in->nv, lin);
+    int kin = in->FT ? labels_by_index(nf, in->FT, in->nuv, lin)
+                     : labels_by_index(nf, in->F, in->nv, lin);
     int kout = labels_by_index(nf, FT, nuv, lout);
     assert_int_equal(kin, nc);
     same_partition(nf, lin, kin, lout, kout);
@@ -242,7 +247,8 @@ static void check_output(scaf_atlas_t *a, const input *in, double padding)
 
     /* efficiency = chart UV area / unit square, recomputed */
     double area = 0.0;
-    for (int f = 0; f < nf; f++) area += fabs(tri_area2(UV + 2 * FT[3 * f], UV + 2 * FT[3 * f + 1], UV + 2 * FT[3 * f + 2]));
+    for (int f = 0; f < nf; f++)
+        area += fabs(tri_area2(UV + 2 * FT[3 * f], UV + 2 * FT[3 * f + 1], UV + 2 * FT[3 * f + 2]));
     double side = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     double eff = area / (side * side), reff = scaf_atlas_packing_efficiency(a);
     assert_true(eff > 0.0 && eff <= 1.0);
@@ -259,8 +265,8 @@ static void check_output(scaf_atlas_t *a, const input *in, double padding)
     for (int f = 0; f < nf; f++) {
         const int *t = in->F + 3 * f, *u = FT + 3 * f;
         double jj, ji, w = tri_area3(in->V + 3 * t[0], in->V + 3 * t[1], in->V + 3 * t[2]);
-        jacobian_norms(in->V + 3 * t[0], in->V + 3 * t[1], in->V + 3 * t[2], UV + 2 * u[0], UV + 2 * u[1],
-                       UV + 2 * u[2], &jj, &ji);
+        jacobian_norms(in->V + 3 * t[0], in->V + 3 * t[1], in->V + 3 * t[2], UV + 2 * u[0],
+                       UV + 2 * u[1], UV + 2 * u[2], &jj, &ji);
         ac[chart[f]] += w * jj;
         bc[chart[f]] += w * ji;
         wc[chart[f]] += w;
@@ -281,8 +287,16 @@ static void check_output(scaf_atlas_t *a, const input *in, double padding)
     }
     assert_true(agree);
     for (int c = 0; c < nc; c++) assert_true(E[c] >= 4.0 - 1e-9);
-    free(E); free(ac); free(bc); free(wc);
-    free(UV); free(FT); free(chart); free(lin); free(lout); free(back);
+    free(E);
+    free(ac);
+    free(bc);
+    free(wc);
+    free(UV);
+    free(FT);
+    free(chart);
+    free(lin);
+    free(lout);
+    free(back);
 }
 
 /* ---- meshes --------------------------------------------------------------------- */
@@ -336,7 +350,7 @@ typedef struct watch {
     int last_iteration;
     double padding;
     int multi;
-    int stop_after;              /* cancel after this many calls (0 never) */
+    int stop_after; /* cancel after this many calls (0 never) */
     int stop_at_first_compact;
 } watch;
 
@@ -457,7 +471,9 @@ static void cancel_from_progress(void **state)
     assert_int_equal(w.calls, 2);
     assert_true(strlen(scaf_atlas_error(a)) > 0);
     /* the cancelled iteration's step stands and is counted (as in param) */
-    assert_int_equal(scaf_atlas_iterations(a, SCAF_ATLAS_SETTLE) + scaf_atlas_iterations(a, SCAF_ATLAS_COMPACT), 2);
+    assert_int_equal(scaf_atlas_iterations(a, SCAF_ATLAS_SETTLE) +
+                         scaf_atlas_iterations(a, SCAF_ATLAS_COMPACT),
+                     2);
     check_output(a, &in, o.padding); /* the last finished iteration's layout */
     assert_int_equal(scaf_atlas_run(a, on_progress, &w), SCAF_ERR_USAGE);
     scaf_atlas_destroy(a);
@@ -478,10 +494,10 @@ static void cancel_from_progress(void **state)
 }
 
 /* One bad call: its status, and a message. */
-#define EXPECT(call, status)                                                                                        \
-    do {                                                                                                            \
-        assert_int_equal((call), (status));                                                                         \
-        assert_true(strlen(scaf_atlas_error(a)) > 0);                                                               \
+#define EXPECT(call, status)                                                                       \
+    do {                                                                                           \
+        assert_int_equal((call), (status));                                                        \
+        assert_true(strlen(scaf_atlas_error(a)) > 0);                                              \
     } while (0)
 
 static void argument_errors(void **state)
@@ -729,11 +745,15 @@ static void spot_data(void **state)
         edge *seg = boundary(m.nf, FT, l, &nseg);
         double gap;
         assert_true(padding_holds(UV, seg, nseg, o.padding, &gap));
-        free(seg); free(UV); free(FT); free(l);
+        free(seg);
+        free(UV);
+        free(FT);
+        free(l);
     }
-    print_message("spot: %d charts, efficiency %.3f, gap %.5f, %d+%d iterations\n", scaf_atlas_chart_count(a),
-                  scaf_atlas_packing_efficiency(a), scaf_atlas_min_chart_gap(a),
-                  scaf_atlas_iterations(a, SCAF_ATLAS_SETTLE), scaf_atlas_iterations(a, SCAF_ATLAS_COMPACT));
+    print_message("spot: %d charts, efficiency %.3f, gap %.5f, %d+%d iterations\n",
+                  scaf_atlas_chart_count(a), scaf_atlas_packing_efficiency(a),
+                  scaf_atlas_min_chart_gap(a), scaf_atlas_iterations(a, SCAF_ATLAS_SETTLE),
+                  scaf_atlas_iterations(a, SCAF_ATLAS_COMPACT));
     scaf_atlas_destroy(a);
     mesh_free(&m);
 }

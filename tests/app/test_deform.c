@@ -38,14 +38,16 @@ static int each_iteration(const scaf_iteration_info_t *info, void *user)
 {
     watch *w = user;
     bij_report rep;
-    if (bij_check(w->nv, w->o->current, w->nf, w->F, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective)
+    if (bij_check(w->nv, w->o->current, w->nf, w->F, NULL, NULL, &rep, NULL) != SCAF_OK ||
+        !rep.bijective)
         w->failures++;
     w->checked++;
     if (info->step > 0 && !(info->total_after < info->total_before)) w->rises++;
     if (w->err_history) {
         double worst = 0;
         for (int i = 0; i < w->nh; i++) {
-            double e = hypot(w->o->current[2 * i] - w->ht[2 * i], w->o->current[2 * i + 1] - w->ht[2 * i + 1]);
+            double e = hypot(w->o->current[2 * i] - w->ht[2 * i],
+                             w->o->current[2 * i + 1] - w->ht[2 * i + 1]);
             if (e > worst) worst = e;
         }
         w->err_history[info->iteration - 1] = worst;
@@ -74,10 +76,12 @@ static void spiral_run(int no_remesh, deform_result *r, double *size, double *hi
     assert_true(X && T && hv);
     for (int i = 0; i < nv; i++) hv[i] = i;
     spiral_strip_curl(26, 1.0, T);
-    for (int f = 0; f < nfr; f++) spiral_strip_curl(26, (f + 1.0) / SPIRAL_STRIP_FRAMES, T + 2 * (size_t)nv * (f + 1));
+    for (int f = 0; f < nfr; f++)
+        spiral_strip_curl(26, (f + 1.0) / SPIRAL_STRIP_FRAMES, T + 2 * (size_t)nv * (f + 1));
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (int i = 0; i < nv; i++)
-        for (int a = 0; a < 2; a++) lo[a] = fmin(lo[a], T[2 * i + a]), hi[a] = fmax(hi[a], T[2 * i + a]);
+        for (int a = 0; a < 2; a++)
+            lo[a] = fmin(lo[a], T[2 * i + a]), hi[a] = fmax(hi[a], T[2 * i + a]);
     *size = hypot(hi[0] - lo[0], hi[1] - lo[1]);
     deform_options o = deform_options_default();
     o.no_remesh = no_remesh;
@@ -87,7 +91,8 @@ static void spiral_run(int no_remesh, deform_result *r, double *size, double *hi
     o.progress = each_iteration;
     o.user = &w;
     scaf_error err;
-    assert_int_equal(deform_run(nv, P, m.nf, m.F, nv, hv, T, nfr, T + 2 * (size_t)nv, &o, X, r, &err), SCAF_OK);
+    assert_int_equal(
+        deform_run(nv, P, m.nf, m.F, nv, hv, T, nfr, T + 2 * (size_t)nv, &o, X, r, &err), SCAF_OK);
     assert_int_equal(w.checked, r->iterations);
     assert_int_equal(w.failures, 0);
     assert_int_equal(w.rises, 0);
@@ -105,8 +110,10 @@ static void spiral_reaches_targets_only_with_remeshing(void **state)
     double size, h_remesh[100], h_frozen[100];
     spiral_run(0, &remesh, &size, h_remesh);
     spiral_run(1, &frozen, &size, h_frozen);
-    print_message("spiral (size %.3f): max handle error remeshed %.3g (E %.4f), frozen %.3g (E %.4f)\n", size,
-                  remesh.max_handle_error, remesh.energy, frozen.max_handle_error, frozen.energy);
+    print_message("spiral (size %.3f): max handle error remeshed %.3g (E %.4f), frozen %.3g (E "
+                  "%.4f)\n",
+                  size, remesh.max_handle_error, remesh.energy, frozen.max_handle_error,
+                  frozen.energy);
     assert_true(remesh.max_handle_error < 1e-3 * size);
     /* locked: at no iteration on the final targets (after the drag's
      * 23 x 4) within a tenth of the size; remeshed: there from the first */
@@ -148,8 +155,8 @@ static void grid_handles_dragged_across_each_other(void **state)
     deform_result r;
     scaf_error err;
     assert_int_equal(deform_run(m.nv, P, m.nf, m.F, nh, hv, ht, 0, NULL, &o, X, &r, &err), SCAF_OK);
-    print_message("grid: %d iterations checked, max handle error %.3g, E %.3f, stop %s\n", wt.checked,
-                  r.max_handle_error, r.energy, scaf_stop_reason_name(r.stop));
+    print_message("grid: %d iterations checked, max handle error %.3g, E %.3f, stop %s\n",
+                  wt.checked, r.max_handle_error, r.energy, scaf_stop_reason_name(r.stop));
     assert_true(wt.checked >= 10);
     assert_int_equal(wt.failures, 0);
     assert_int_equal(wt.rises, 0);
@@ -171,7 +178,8 @@ static void clockwise_rest_is_refused(void **state)
     for (int v = 0; v < m.nv; v++) P[2 * v] = -P[2 * v];
     deform_result r;
     scaf_error err;
-    assert_int_equal(deform_run(m.nv, P, m.nf, m.F, 0, NULL, NULL, 0, NULL, NULL, X, &r, &err), SCAF_ERR_MESH);
+    assert_int_equal(deform_run(m.nv, P, m.nf, m.F, 0, NULL, NULL, 0, NULL, NULL, X, &r, &err),
+                     SCAF_ERR_MESH);
     assert_non_null(strstr(err.message, "counter-clockwise"));
     free(P);
     mesh_free(&m);

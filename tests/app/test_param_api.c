@@ -24,8 +24,10 @@ static int seg_cross(const double *a, const double *b, const double *c, const do
 {
     /* Segments ab and cd intersect (properly, or touching) when they share
      * no endpoint: exact orientation tests. */
-    double o1 = orient2d(a, b, c), o2 = orient2d(a, b, d), o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
-    if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) return 1;
+    double o1 = orient2d(a, b, c), o2 = orient2d(a, b, d), o3 = orient2d(c, d, a),
+           o4 = orient2d(c, d, b);
+    if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+        return 1;
     if (o1 == 0 || o2 == 0 || o3 == 0 || o4 == 0) {
         /* collinear touching: check bounding boxes on the zero cases */
         const double *p[4] = {c, d, a, b};
@@ -58,7 +60,8 @@ static int violations(const scaf_loop *L)
         for (int j = i + 1; j < L->nbedges; j++) {
             const int *e = L->bedges + 2 * i, *g = L->bedges + 2 * j;
             if (e[0] == g[0] || e[0] == g[1] || e[1] == g[0] || e[1] == g[1]) continue;
-            if (seg_cross(L->uv + 2 * e[0], L->uv + 2 * e[1], L->uv + 2 * g[0], L->uv + 2 * g[1])) bad++;
+            if (seg_cross(L->uv + 2 * e[0], L->uv + 2 * e[1], L->uv + 2 * g[0], L->uv + 2 * g[1]))
+                bad++;
         }
     return bad;
 }
@@ -67,8 +70,8 @@ typedef struct watch {
     const scaf_param_t *p;
     int calls;
     int bad_maps;
-    int energy_rises;   /* accepted steps that did not lower the total */
-    int stop_after;     /* cancel after this many calls (0: never) */
+    int energy_rises; /* accepted steps that did not lower the total */
+    int stop_after;   /* cancel after this many calls (0: never) */
 } watch;
 
 static int check_iteration(const scaf_iteration_info_t *info, void *user)
@@ -81,7 +84,8 @@ static int check_iteration(const scaf_iteration_info_t *info, void *user)
     return w->stop_after && w->calls >= w->stop_after;
 }
 
-static void run_sample(const char *name, int size, int iterations, scaf_init init, double *e0, double *e1)
+static void run_sample(const char *name, int size, int iterations, scaf_init init, double *e0,
+                       double *e1)
 {
     mesh m;
     scaf_error err;
@@ -91,8 +95,9 @@ static void run_sample(const char *name, int size, int iterations, scaf_init ini
     o.tolerance = 0;
     scaf_param_t *p = scaf_param_new(&o);
     assert_non_null(p);
-    scaf_status st = mesh_has_uv(&m) ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
-                                     : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
+    scaf_status st = mesh_has_uv(&m)
+        ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
+        : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
     if (st != SCAF_OK) print_error("%s: %s\n", name, scaf_param_error(p));
     assert_int_equal(st, SCAF_OK);
     assert_int_equal(violations(param_loop(p)), 0);
@@ -115,7 +120,8 @@ static void run_sample(const char *name, int size, int iterations, scaf_init ini
     for (int f = 0; f < m.nf; f++)
         for (int j = 0; j < 3; j++) assert_true(FT[3 * f + j] >= 0 && FT[3 * f + j] < nuv);
     for (int f = 0; f < m.nf; f++)
-        assert_true(orient2d(UV + 2 * FT[3 * f], UV + 2 * FT[3 * f + 1], UV + 2 * FT[3 * f + 2]) > 0);
+        assert_true(orient2d(UV + 2 * FT[3 * f], UV + 2 * FT[3 * f + 1], UV + 2 * FT[3 * f + 2]) >
+                    0);
     free(UV);
     free(FT);
     scaf_param_destroy(p);
@@ -201,9 +207,14 @@ static void genus_and_non_manifold_are_rejected(void **state)
     int k = 0;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
-            int a = 3 * i + j, b = 3 * ((i + 1) % 3) + j, c = 3 * ((i + 1) % 3) + (j + 1) % 3, d = 3 * i + (j + 1) % 3;
-            TF[k++] = a; TF[k++] = b; TF[k++] = c;
-            TF[k++] = a; TF[k++] = c; TF[k++] = d;
+            int a = 3 * i + j, b = 3 * ((i + 1) % 3) + j, c = 3 * ((i + 1) % 3) + (j + 1) % 3,
+                d = 3 * i + (j + 1) % 3;
+            TF[k++] = a;
+            TF[k++] = b;
+            TF[k++] = c;
+            TF[k++] = a;
+            TF[k++] = c;
+            TF[k++] = d;
         }
     assert_int_equal(scaf_param_set_mesh(p, TV, 9, TF, 18, NULL, 0, NULL), SCAF_ERR_MESH);
     assert_non_null(strstr(scaf_param_error(p), "chart 0"));
@@ -264,7 +275,8 @@ static void defaults_are_documented_values(void **state)
     assert_true(o.min_angle_deg == 20.0);
     assert_int_equal(o.energy, SCAF_ENERGY_SYMMETRIC_DIRICHLET);
     assert_int_equal(o.init, SCAF_INIT_MVC);
-    for (int k = 0; k < SCAF_PHASE_COUNT; k++) assert_string_not_equal(scaf_phase_name((scaf_phase)k), "unknown");
+    for (int k = 0; k < SCAF_PHASE_COUNT; k++)
+        assert_string_not_equal(scaf_phase_name((scaf_phase)k), "unknown");
 }
 
 int main(void)

@@ -34,7 +34,8 @@ static int check_each(const scaf_iteration_info_t *info, void *user)
     checker *c = user;
     assert_int_equal(scaf_param_get_uv(c->p, c->uv, c->ft), SCAF_OK);
     bij_report rep;
-    if (bij_check(scaf_param_uv_count(c->p), c->uv, c->nf, c->ft, NULL, NULL, &rep, NULL) != SCAF_OK ||
+    if (bij_check(scaf_param_uv_count(c->p), c->uv, c->nf, c->ft, NULL, NULL, &rep, NULL) !=
+            SCAF_OK ||
         !rep.bijective)
         c->failures++;
     c->checked++;
@@ -43,8 +44,8 @@ static int check_each(const scaf_iteration_info_t *info, void *user)
 
 /* Run the grid scaled by s with the corner (UV index found by its 3D
  * vertex 0) pulled to s * target; the corner's final UV into out. */
-static void pulled_grid(double s, const double target[2], int iterations, double *corner, double *first_uv,
-                        int *handle_out)
+static void pulled_grid(double s, const double target[2], int iterations, double *corner,
+                        double *first_uv, int *handle_out)
 {
     mesh m;
     assert_int_equal(mesh_sample_make("grid", 6, &m, NULL), SCAF_OK);
@@ -53,7 +54,12 @@ static void pulled_grid(double s, const double target[2], int iterations, double
     assert_non_null(p);
     assert_int_equal(scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL), SCAF_OK);
     int nuv = scaf_param_uv_count(p);
-    checker c = {p, m.nf, 0, 0, malloc(sizeof(double) * 2 * (size_t)nuv), malloc(sizeof(int) * 3 * (size_t)m.nf)};
+    checker c = {p,
+                 m.nf,
+                 0,
+                 0,
+                 malloc(sizeof(double) * 2 * (size_t)nuv),
+                 malloc(sizeof(int) * 3 * (size_t)m.nf)};
     assert_true(c.uv && c.ft);
     assert_int_equal(scaf_param_get_uv(p, c.uv, c.ft), SCAF_OK);
     int h = c.ft[0]; /* corner of face 0: 3D vertex 0 */
@@ -102,7 +108,8 @@ static void handles_change_and_clear(void **state)
     assert_int_equal(scaf_param_set_handles(p, 1, &h, nan_t, 1.0), SCAF_ERR_USAGE);
     assert_int_equal(scaf_param_set_handles(p, 1, &h, t, -1.0), SCAF_ERR_USAGE);
     assert_int_equal(scaf_param_set_handles(p, 1, NULL, t, 1.0), SCAF_ERR_USAGE);
-    double *uv = malloc(sizeof(double) * 2 * (size_t)nuv), *uv2 = malloc(sizeof(double) * 2 * (size_t)nuv);
+    double *uv = malloc(sizeof(double) * 2 * (size_t)nuv),
+           *uv2 = malloc(sizeof(double) * 2 * (size_t)nuv);
     assert_true(uv && uv2);
     /* two targets in turn: the handle follows */
     assert_int_equal(scaf_param_set_handles(p, 1, &h, t, SCAF_HANDLE_WEIGHT_DEFAULT), SCAF_OK);
@@ -112,7 +119,8 @@ static void handles_change_and_clear(void **state)
     assert_int_equal(scaf_param_set_handles(p, 1, &h, t2, SCAF_HANDLE_WEIGHT_DEFAULT), SCAF_OK);
     assert_int_equal(scaf_param_run(p, 5, NULL, NULL), SCAF_OK);
     assert_int_equal(scaf_param_get_uv(p, uv2, NULL), SCAF_OK);
-    assert_true(hypot(uv2[2 * h] - t2[0], uv2[2 * h + 1] - t2[1]) < hypot(uv[2 * h] - t2[0], uv[2 * h + 1] - t2[1]));
+    assert_true(hypot(uv2[2 * h] - t2[0], uv2[2 * h + 1] - t2[1]) <
+                hypot(uv[2 * h] - t2[0], uv[2 * h + 1] - t2[1]));
     /* none: a zero-weight... n = 0 is accepted and the run goes on */
     assert_int_equal(scaf_param_set_handles(p, 0, NULL, NULL, SCAF_HANDLE_WEIGHT_DEFAULT), SCAF_OK);
     assert_int_equal(scaf_param_run(p, 2, NULL, NULL), SCAF_OK);

@@ -24,8 +24,8 @@
 
 /* param on m with its positions multiplied by s (ldexp by k when s == 0):
  * returns the status, *uv (malloc'd) the UVs, *E the energy. */
-static scaf_status param_scaled(const mesh *m, double s, int k, int iterations, double **uv, int *nuv, double *E,
-                                char *msg, size_t size)
+static scaf_status param_scaled(const mesh *m, double s, int k, int iterations, double **uv,
+                                int *nuv, double *E, char *msg, size_t size)
 {
     double *V = malloc(sizeof(double) * 3 * (size_t)m->nv);
     assert_non_null(V);
@@ -88,7 +88,8 @@ static void param_is_scale_free(void **state)
     double *uv, E;
     int n = 0;
     char msg[256];
-    assert_int_equal(param_scaled(&m, 0.0, -1060, 2, &uv, &n, &E, msg, sizeof msg), SCAF_ERR_NUMERIC);
+    assert_int_equal(param_scaled(&m, 0.0, -1060, 2, &uv, &n, &E, msg, sizeof msg),
+                     SCAF_ERR_NUMERIC);
     assert_non_null(strstr(msg, "subnormal"));
     free(uv);
     free(uv0);
@@ -154,11 +155,11 @@ static void one_verdict_on_degenerate_faces(void **state)
         double x, y, z, s;
         int degenerate;
     } c[] = {
-        {0, 1, 0, 1e-80, 0},  /* was "degenerate (zero 3D area)" in param */
-        {0, 1, 0, 1e80, 0},   /* was "chart has 3D area inf" */
+        {0, 1, 0, 1e-80, 0}, /* was "degenerate (zero 3D area)" in param */
+        {0, 1, 0, 1e80, 0},  /* was "chart has 3D area inf" */
         {0, 1, 0, 1e-300, 0},
         {0, 1, 0, 1e300, 0},
-        {-2, 2, 0, 1.0, 1},   /* collinear with vertices 0 and 4 */
+        {-2, 2, 0, 1.0, 1}, /* collinear with vertices 0 and 4 */
         {-2, 2, 0, 1e-300, 1},
         {-2, 2, 0x1p-1074, 1.0, 0}, /* not degenerate; area far below resolution */
     };
@@ -211,7 +212,8 @@ static void checker_picture_is_scale_free(void **state)
     scaf_error err;
     assert_int_equal(mesh_sample_make("hemisphere", 4, &m, &err), SCAF_OK);
     /* UVs: the xy projection (a valid picture input, bijectivity aside) */
-    double *uv = malloc(sizeof(double) * 2 * (size_t)m.nv), *V = malloc(sizeof(double) * 3 * (size_t)m.nv);
+    double *uv = malloc(sizeof(double) * 2 * (size_t)m.nv),
+           *V = malloc(sizeof(double) * 3 * (size_t)m.nv);
     unsigned *col = malloc(sizeof(unsigned) * (size_t)m.nf);
     assert_true(uv && V && col);
     for (int v = 0; v < m.nv; v++) uv[2 * v] = m.V[3 * v], uv[2 * v + 1] = m.V[3 * v + 1];
@@ -226,7 +228,8 @@ static void checker_picture_is_scale_free(void **state)
         for (int i = 0; i < 3 * m.nv; i++) V[i] = ldexp(m.V[i], k[t]);
         char path[512];
         test_tmp_path("scale_free_checker.png", path, sizeof path);
-        assert_int_equal(uv_png_write(path, m.nv, uv, m.nf, m.F, col, m.nv, V, m.F, &o, &err), SCAF_OK);
+        assert_int_equal(uv_png_write(path, m.nv, uv, m.nf, m.F, col, m.nv, V, m.F, &o, &err),
+                         SCAF_OK);
         long n;
         unsigned char *b = read_all(path, &n);
         if (!ref) {

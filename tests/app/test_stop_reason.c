@@ -133,16 +133,17 @@ static int on_atlas(const scaf_atlas_iteration_info_t *it, void *user)
 
 /* Run an atlas of a generated sample (its vt charts when it has UVs);
  * returns the run's status, the reasons of both phases in r[2]. */
-static scaf_status atlas_run_on(const char *sample, int size, const scaf_atlas_options_t *o, atlas_seen *s,
-                                scaf_stop_reason r[2])
+static scaf_status atlas_run_on(const char *sample, int size, const scaf_atlas_options_t *o,
+                                atlas_seen *s, scaf_stop_reason r[2])
 {
     mesh m;
     scaf_error err;
     assert_int_equal(mesh_sample_make(sample, size, &m, &err), SCAF_OK);
     scaf_atlas_t *a = scaf_atlas_new(o);
     assert_non_null(a);
-    assert_int_equal(mesh_has_uv(&m) ? scaf_atlas_set_mesh(a, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
-                                     : scaf_atlas_set_mesh(a, m.V, m.nv, m.F, m.nf, NULL, 0, NULL),
+    assert_int_equal(mesh_has_uv(&m)
+                         ? scaf_atlas_set_mesh(a, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
+                         : scaf_atlas_set_mesh(a, m.V, m.nv, m.F, m.nf, NULL, 0, NULL),
                      SCAF_OK);
     assert_int_equal(scaf_atlas_stop_reason(a, SCAF_ATLAS_SETTLE), SCAF_STOP_NONE);
     assert_int_equal(scaf_atlas_stop_reason(a, SCAF_ATLAS_COMPACT), SCAF_STOP_NONE);
@@ -239,9 +240,9 @@ static void atlas_reasons(void **state)
 static void names_are_distinct_words(void **state)
 {
     (void)state;
-    const scaf_stop_reason all[] = {SCAF_STOP_NONE,      SCAF_STOP_ITERATIONS, SCAF_STOP_TOLERANCE,
-                                    SCAF_STOP_ZERO_STEP, SCAF_STOP_CANCELLED,  SCAF_STOP_ERROR,
-                                    SCAF_STOP_DISTORTION, SCAF_STOP_PACKING_STALLED};
+    const scaf_stop_reason all[] = {
+        SCAF_STOP_NONE,      SCAF_STOP_ITERATIONS, SCAF_STOP_TOLERANCE,  SCAF_STOP_ZERO_STEP,
+        SCAF_STOP_CANCELLED, SCAF_STOP_ERROR,      SCAF_STOP_DISTORTION, SCAF_STOP_PACKING_STALLED};
     int n = (int)(sizeof all / sizeof all[0]);
     for (int i = 0; i < n; i++) {
         const char *a = scaf_stop_reason_name(all[i]);

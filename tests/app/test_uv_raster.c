@@ -31,7 +31,8 @@
 #include "support/support.h"
 
 /* Draw each triangle alone and add up, per pixel, how many covered it. */
-static int *coverage(int W, int H, const uv_raster_frame *fr, const double *uv, int nf, const int *F)
+static int *coverage(int W, int H, const uv_raster_frame *fr, const double *uv, int nf,
+                     const int *F)
 {
     int *count = calloc((size_t)W * H, sizeof(int));
     assert_non_null(count);
@@ -55,8 +56,8 @@ static void fan_covers_each_centre_once(void **state)
      * itself a pixel centre; the diagonals run through pixel centres. */
     const int W = 32, H = 32;
     uv_raster_frame fr = {0.0, 32.0, 1.0, 0.0, 0.0};
-    double px[9][2] = {{16.5, 16.5}, {2, 2.5}, {16.5, 2.5}, {29.5, 2.5}, {29.5, 16.5},
-                       {29.5, 30}, {16.5, 30}, {2, 30}, {2, 16.5}};
+    double px[9][2] = {{16.5, 16.5}, {2, 2.5},   {16.5, 2.5}, {29.5, 2.5}, {29.5, 16.5},
+                       {29.5, 30},   {16.5, 30}, {2, 30},     {2, 16.5}};
     double uv[18];
     for (int i = 0; i < 9; i++) uv[2 * i] = px[i][0], uv[2 * i + 1] = 32.0 - px[i][1];
     int F[24];
@@ -78,7 +79,8 @@ static void fan_covers_each_centre_once(void **state)
             int out = x < 2 || x > 29.5 || y < 2.5 || y > 30;
             if (strictly_in) {
                 inside++;
-                if (count[j * W + i] != 1) fail_msg("pixel (%d, %d) covered %d times", i, j, count[j * W + i]);
+                if (count[j * W + i] != 1)
+                    fail_msg("pixel (%d, %d) covered %d times", i, j, count[j * W + i]);
             }
             if (out) assert_int_equal(count[j * W + i], 0);
         }
@@ -124,7 +126,8 @@ static void jittered_grid_has_no_cracks(void **state)
             double u = (i + 0.5 - 1.7) / scale, v = 1.0 - (j + 0.5 - 1.9) / scale;
             /* a margin of 1e-9 keeps clear of rounding in this inverse map */
             if (u > 1e-9 && u < 1 - 1e-9 && v > 1e-9 && v < 1 - 1e-9) {
-                if (count[j * W + i] != 1) fail_msg("pixel (%d, %d) covered %d times", i, j, count[j * W + i]);
+                if (count[j * W + i] != 1)
+                    fail_msg("pixel (%d, %d) covered %d times", i, j, count[j * W + i]);
             } else if (u < -1e-9 || u > 1 + 1e-9 || v < -1e-9 || v > 1 + 1e-9) {
                 assert_int_equal(count[j * W + i], 0);
             }
@@ -133,7 +136,8 @@ static void jittered_grid_has_no_cracks(void **state)
 }
 
 /* Two charts in the unit square: quads [0.1, 0.4]^2 and [0.6, 0.9] x [0.1, 0.4]. */
-static const double two_uv[16] = {0.1, 0.1, 0.4, 0.1, 0.4, 0.4, 0.1, 0.4, 0.6, 0.1, 0.9, 0.1, 0.9, 0.4, 0.6, 0.4};
+static const double two_uv[16] = {0.1, 0.1, 0.4, 0.1, 0.4, 0.4, 0.1, 0.4,
+                                  0.6, 0.1, 0.9, 0.1, 0.9, 0.4, 0.6, 0.4};
 static const int two_F[12] = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
 
 static void png_two_charts_read_back(void **state)
@@ -142,13 +146,15 @@ static void png_two_charts_read_back(void **state)
     char path[512];
     test_tmp_path("raster_two_charts.png", path, sizeof path);
     remove(path);
-    unsigned col[4] = {atlas_chart_colour(0), atlas_chart_colour(0), atlas_chart_colour(1), atlas_chart_colour(1)};
+    unsigned col[4] = {atlas_chart_colour(0), atlas_chart_colour(0), atlas_chart_colour(1),
+                       atlas_chart_colour(1)};
     assert_int_not_equal(col[0], col[2]);
     uv_png_options o = uv_png_options_default();
     o.size = 100;
     o.unit_square = 1;
     scaf_error err;
-    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err), SCAF_OK);
+    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err),
+                     SCAF_OK);
     int w = 0, h = 0, a;
     unsigned char *buf = test_png_read(path, &w, &h);
     assert_non_null(buf);
@@ -182,7 +188,8 @@ static void png_two_charts_read_back(void **state)
 
     /* a fitted picture keeps the aspect ratio: 0.8 by 0.3 -> 100 by about 38 */
     o.unit_square = 0;
-    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err), SCAF_OK);
+    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err),
+                     SCAF_OK);
     buf = test_png_read(path, &w, &h);
     assert_non_null(buf);
     assert_int_equal(w, 100);
@@ -237,7 +244,8 @@ static void checker_follows_3d_cells(void **state)
                 else col_changes++;
             }
             prev = par;
-            if (dist_to_grid(x, c) < 1e-6 || dist_to_grid(y, c) < 1e-6) continue; /* on a cell face */
+            if (dist_to_grid(x, c) < 1e-6 || dist_to_grid(y, c) < 1e-6)
+                continue; /* on a cell face */
             checked++;
             if (par == 0) {
                 assert_int_equal(got, col[0]);
@@ -343,21 +351,26 @@ static void write_failures_leave_nothing(void **state)
     unsigned col[4] = {1, 2, 3, 4};
     uv_png_options o = uv_png_options_default();
     test_tmp_path("no_such_folder/y.png", path, sizeof path);
-    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err), SCAF_ERR_IO);
+    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err),
+                     SCAF_ERR_IO);
     assert_false(test_exists(path));
     test_tmp_path("raster_bad_size.png", path, sizeof path);
     remove(path);
     o.size = UV_PNG_MIN_SIZE - 1;
-    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err), SCAF_ERR_USAGE);
+    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err),
+                     SCAF_ERR_USAGE);
     o.size = UV_PNG_MAX_SIZE + 1;
-    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err), SCAF_ERR_USAGE);
+    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err),
+                     SCAF_ERR_USAGE);
     assert_false(test_exists(path));
     /* checker without 3D positions, index out of range */
     o = uv_png_options_default();
     o.checker = 10;
-    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err), SCAF_ERR_USAGE);
+    assert_int_equal(uv_png_write(path, 8, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err),
+                     SCAF_ERR_USAGE);
     o.checker = 0;
-    assert_int_equal(uv_png_write(path, 7, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err), SCAF_ERR_USAGE);
+    assert_int_equal(uv_png_write(path, 7, two_uv, 4, two_F, col, 0, NULL, NULL, &o, &err),
+                     SCAF_ERR_USAGE);
     assert_false(test_exists(path));
 }
 

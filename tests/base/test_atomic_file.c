@@ -89,7 +89,8 @@ static void links_are_written_through(void **state)
     (void)state;
     char p[600], q[600];
     scaf_error err;
-    assert_int_equal(test_run("cd '%s' && mkdir sub && echo old > sub/t.txt && ln -s sub/t.txt l1 && ln -s l1 l2 "
+    assert_int_equal(test_run("cd '%s' && mkdir sub && echo old > sub/t.txt && ln -s sub/t.txt l1 "
+                              "&& ln -s l1 l2 "
                               "&& ln -s ../new.txt sub/dangling && ln -s \"$PWD/sub/t.txt\" abs",
                               dir),
                      0);
@@ -106,7 +107,8 @@ static void links_are_written_through(void **state)
     /* the resolved target is absolute and canonical */
     char r[4096];
     int exists = -1;
-    assert_int_equal(atomic_resolve(at("sub/../l2", p, sizeof p), r, sizeof r, &exists, &err), SCAF_OK);
+    assert_int_equal(atomic_resolve(at("sub/../l2", p, sizeof p), r, sizeof r, &exists, &err),
+                     SCAF_OK);
     assert_int_equal(exists, 1);
     assert_int_equal(r[0], '/');
     assert_non_null(strstr(r, "/sub/t.txt"));
@@ -119,14 +121,15 @@ static void non_regular_targets_are_refused(void **state)
     (void)state;
     char p[600];
     scaf_error err;
-    assert_int_equal(test_run("cd '%s' && mkfifo fifo && mkdir folder && ln -s loop_b loop_a && ln -s loop_a loop_b "
+    assert_int_equal(test_run("cd '%s' && mkfifo fifo && mkdir folder && ln -s loop_b loop_a && ln "
+                              "-s loop_a loop_b "
                               "&& ln -s folder to_folder",
                               dir),
                      0);
     int before = entries();
     static const char *const refused[][2] = {
-        {"fifo", "FIFO"},        {"folder", "directory"},    {"to_folder", "directory"},
-        {"loop_a", "symbolic"},  {"missing/x.txt", "folder"}, {"folder/", "directory"},
+        {"fifo", "FIFO"},       {"folder", "directory"},     {"to_folder", "directory"},
+        {"loop_a", "symbolic"}, {"missing/x.txt", "folder"}, {"folder/", "directory"},
     };
     for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
         err.message[0] = '\0';

@@ -15,7 +15,8 @@ static void assert_sorted(const int *F, const int *order, int n)
 {
     for (int i = 1; i < n; i++) {
         int g = order[i - 1], h = order[i];
-        int lg = half_edge_lo(F, g), lh = half_edge_lo(F, h), hg = half_edge_hi(F, g), hh = half_edge_hi(F, h);
+        int lg = half_edge_lo(F, g), lh = half_edge_lo(F, h), hg = half_edge_hi(F, g),
+            hh = half_edge_hi(F, h);
         assert_true(lg < lh || (lg == lh && (hg < hh || (hg == hh && g < h))));
     }
 }

@@ -40,7 +40,8 @@ static void non_finite_numbers_are_null(void **state)
 static void finite_numbers_round_trip(void **state)
 {
     (void)state;
-    const double x[] = {0.0, -0.0, 1.0, 0.1, -2.5e-310, 4.9e-324, 1.7976931348623157e308, 1e155, 1.0 / 3.0};
+    const double x[] = {0.0,   -0.0,     1.0, 0.1, -2.5e-310, 4.9e-324, 1.7976931348623157e308,
+                        1e155, 1.0 / 3.0};
     for (size_t i = 0; i < sizeof x / sizeof *x; i++) {
         const char *t = number_text(x[i]);
         char *end;

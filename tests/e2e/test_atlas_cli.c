@@ -52,9 +52,10 @@ static void cli_atlas_on_generated_sample(void **state)
     test_tmp_path("e2e_atlas_check.json", chk, sizeof chk);
     remove(out);
     assert_int_equal(test_run("%s gen cubesphere --size 4 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(test_run("%s atlas %s -o %s --resolution 1024 --padding-texels 4 --iterations 4 "
-                         "--compact-iterations 4 --quiet --report %s --svg %s",
-                         SCAF_BINARY, in, out, rep, svg),
+    assert_int_equal(test_run("%s atlas %s -o %s --resolution 1024 --padding-texels 4 --iterations "
+                              "4 "
+                              "--compact-iterations 4 --quiet --report %s --svg %s",
+                              SCAF_BINARY, in, out, rep, svg),
                      0);
     assert_int_equal(test_run("%s check --json %s > %s", SCAF_BINARY, out, chk), 0);
     char *c = test_slurp(chk);
@@ -75,7 +76,8 @@ static void cli_atlas_on_generated_sample(void **state)
         assert_int_equal(chart_gap_labels(m.nuv, m.nf, m.FT, lab, &nc, &err), SCAF_OK);
         assert_true(nc > 1);
         assert_int_equal(chart_gap_segments(m.nf, m.FT, lab, &seg, &nseg, &err), SCAF_OK);
-        assert_int_equal(chart_gap_certify(m.UV, seg, nseg, 4.0 / 1024.0, &ok, NULL, &err), SCAF_OK);
+        assert_int_equal(chart_gap_certify(m.UV, seg, nseg, 4.0 / 1024.0, &ok, NULL, &err),
+                         SCAF_OK);
         assert_true(ok);
         free(seg);
         free(lab);
@@ -115,13 +117,20 @@ static void cli_atlas_errors(void **state)
     assert_int_equal(test_run("%s gen tetrahedron -o %s", SCAF_BINARY, in), 0);
     assert_int_equal(test_run("%s atlas %s -o %s --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
     assert_false(test_exists(out));
-    assert_int_equal(test_run("%s atlas %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY, SCAF_TEST_TMPDIR, out), 3);
+    assert_int_equal(test_run("%s atlas %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY,
+                              SCAF_TEST_TMPDIR, out),
+                     3);
     assert_int_equal(test_run("%s atlas %s 2> /dev/null", SCAF_BINARY, in), 2);
-    assert_int_equal(test_run("%s atlas %s -o %s --padding 0.01 --padding-texels 4 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(test_run("%s atlas %s -o %s --padding 0.01 --padding-texels 4 2> /dev/null",
+                              SCAF_BINARY, in, out),
+                     2);
     /* 512 texels of the default resolution 1024 is half the square */
-    assert_int_equal(test_run("%s atlas %s -o %s --padding-texels 512 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(test_run("%s atlas %s -o %s --padding 0.7 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(test_run("%s atlas %s -o %s --init nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(
+        test_run("%s atlas %s -o %s --padding-texels 512 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(test_run("%s atlas %s -o %s --padding 0.7 2> /dev/null", SCAF_BINARY, in, out),
+                     2);
+    assert_int_equal(
+        test_run("%s atlas %s -o %s --init nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
     assert_int_equal(test_run("%s atlas --help > /dev/null", SCAF_BINARY), 0);
     assert_false(test_exists(out));
 }
@@ -135,7 +144,8 @@ static void cli_init_input_refused(void **state)
     if (!p) skip();
     test_tmp_path("e2e_atlas_hn_input.obj", out, sizeof out);
     remove(out);
-    assert_int_equal(test_run("%s atlas %s -o %s --init input --quiet 2> /dev/null", SCAF_BINARY, p, out), 4);
+    assert_int_equal(
+        test_run("%s atlas %s -o %s --init input --quiet 2> /dev/null", SCAF_BINARY, p, out), 4);
     assert_false(test_exists(out));
 }
 
@@ -159,7 +169,8 @@ static int check_iteration(const atlas *a, const atlas_iteration *it, void *user
     assert_true(r.bijective);
     if (a->ncharts > 1) {
         double g;
-        assert_int_equal(chart_gap_min(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, 0.0, &g, NULL, &err), SCAF_OK);
+        assert_int_equal(
+            chart_gap_min(a->nw, a->loop.uv, a->nf, a->Fw, a->chart, 0.0, &g, NULL, &err), SCAF_OK);
         assert_true(g >= s->padding * atlas_side(a));
     }
     if (it->info.step > 0.0) assert_true(it->info.total_after < it->info.total_before);
@@ -197,7 +208,8 @@ static int atlas_shared(const char *rel, double min_efficiency)
     assert_int_equal(chart_gap_certify(UV, a.seg, a.nseg, o.padding, &ok, NULL, &err), SCAF_OK);
     assert_true(ok);
     double eff = chart_packing_efficiency(a.nw, UV, a.nf, a.Fw);
-    print_message("%s: %d charts, %d iterations, packing efficiency %.4f\n", rel, a.ncharts, s.iterations, eff);
+    print_message("%s: %d charts, %d iterations, packing efficiency %.4f\n", rel, a.ncharts,
+                  s.iterations, eff);
     assert_true(eff >= min_efficiency);
     /* every triangle keeps its chart: the output's UV charts (by shared
      * UV edges) are the input's charts (after splitting pinched vt) */
@@ -225,7 +237,8 @@ static void shared_seam_meshes(void **state)
                  {"seams/myles_knot1_seamed.obj", 0.0},
                  {"seams/myles_eight_seamed.obj", 0.0}};
     int ran = 0;
-    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) ran += atlas_shared(cases[i].name, cases[i].min_efficiency);
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++)
+        ran += atlas_shared(cases[i].name, cases[i].min_efficiency);
     if (!ran) skip();
 }
 

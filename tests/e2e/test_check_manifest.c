@@ -32,14 +32,18 @@ typedef struct result {
 
 static void run_check(const char *path, result *r)
 {
-    r->status = test_capture(r->out, sizeof r->out, "'%s' check --json '%s' 2>/dev/null", SCAF_BINARY, path);
+    r->status = test_capture(r->out, sizeof r->out, "'%s' check --json '%s' 2>/dev/null",
+                             SCAF_BINARY, path);
     assert_true(r->status >= 0);
 }
 
 /* The integer (or bool as 0/1) value of "key" in the JSON line. */
 static long long field(const result *r, const char *key) { return test_json_field(r->out, key); }
 
-static int have(const char *rel, char *buf, size_t n) { return test_data_path(rel, buf, n) != NULL; }
+static int have(const char *rel, char *buf, size_t n)
+{
+    return test_data_path(rel, buf, n) != NULL;
+}
 
 static void bijective_maps(void **state)
 {
@@ -212,10 +216,8 @@ static void exit_statuses(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(bijective_maps),
-        cmocka_unit_test(spot),
-        cmocka_unit_test(human_neutral),
-        cmocka_unit_test(myles_seamed),
+        cmocka_unit_test(bijective_maps), cmocka_unit_test(spot),
+        cmocka_unit_test(human_neutral),  cmocka_unit_test(myles_seamed),
         cmocka_unit_test(exit_statuses),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

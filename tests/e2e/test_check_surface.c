@@ -22,7 +22,8 @@ typedef struct result {
 
 static void run(const char *opts, const char *path, result *r)
 {
-    r->status = test_capture(r->out, sizeof r->out, "'%s' check %s '%s' 2>/dev/null", SCAF_BINARY, opts, path);
+    r->status = test_capture(r->out, sizeof r->out, "'%s' check %s '%s' 2>/dev/null", SCAF_BINARY,
+                             opts, path);
     assert_true(r->status >= 0);
 }
 
@@ -82,7 +83,9 @@ static void open_surfaces(void **state)
     result r;
     /* two crossing triangles, open: the UV check's "no UVs" unless --3d */
     test_tmp_path("check_open_crossing.obj", path, sizeof path);
-    write_file(path, "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0.5 0.5 -1\nv 0.5 0.5 1\nv 3 3 0.5\nf 1 2 3\nf 4 5 6\n");
+    write_file(path,
+               "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0.5 0.5 -1\nv 0.5 0.5 1\nv 3 3 0.5\nf 1 2 3\nf 4 5 "
+               "6\n");
     run("--json", path, &r);
     assert_int_equal(r.status, 4);
     run("--json --3d", path, &r);

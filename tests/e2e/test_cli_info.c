@@ -62,12 +62,15 @@ static void expect_fields(const char *what, const char *json, const json_field *
 {
     for (int i = 0; i < n; i++) {
         char v[256];
-        if (!json_value(json, f[i].key, v, sizeof v)) fail_msg("%s: key %s missing in:\n%s", what, f[i].key, json);
-        if (strcmp(v, f[i].value)) fail_msg("%s: %s: got %s, want %s", what, f[i].key, v, f[i].value);
+        if (!json_value(json, f[i].key, v, sizeof v))
+            fail_msg("%s: key %s missing in:\n%s", what, f[i].key, json);
+        if (strcmp(v, f[i].value))
+            fail_msg("%s: %s: got %s, want %s", what, f[i].key, v, f[i].value);
     }
 }
 
-#define EXPECT_FIELDS(what, json, fields) expect_fields(what, json, fields, (int)(sizeof fields / sizeof fields[0]))
+#define EXPECT_FIELDS(what, json, fields)                                                          \
+    expect_fields(what, json, fields, (int)(sizeof fields / sizeof fields[0]))
 
 /* Write text to path (the test's input file). */
 static void write_text(const char *path, const char *text)
@@ -88,8 +91,8 @@ static void info_json(const char *path, char *json, size_t size)
 
 /* `scaf gen <gen_args> -o <scratch file>` (exit 0 required), then its JSON
  * report into json; the file's path into path. */
-static void gen_then_info_json(const char *gen_args, const char *file, char *path, size_t path_size, char *json,
-                               size_t size)
+static void gen_then_info_json(const char *gen_args, const char *file, char *path, size_t path_size,
+                               char *json, size_t size)
 {
     char cmd[2048];
     test_tmp_path(file, path, path_size);
@@ -100,18 +103,28 @@ static void gen_then_info_json(const char *gen_args, const char *file, char *pat
 
 /* 6 faces of a 5 x 5 cube grid on a sphere: V = 6*25+2, F = 12*25 */
 static const json_field cubesphere5_fields[] = {
-    {"vertices", "152"}, {"faces", "300"},
-    {"components", "1"}, {"boundary_loops", "0"},
-    {"euler_characteristic", "2"}, {"genus", "0"},
-    {"manifold", "true"}, {"non_manifold_edges", "0"},
-    {"non_manifold_vertices", "0"}, {"misoriented_edges", "0"},
-    {"degenerate_faces", "0"}, {"unreferenced_vertices", "0"},
-    {"uv_charts", "6"}, {"seam_edges", "60"},
+    {"vertices", "152"},
+    {"faces", "300"},
+    {"components", "1"},
+    {"boundary_loops", "0"},
+    {"euler_characteristic", "2"},
+    {"genus", "0"},
+    {"manifold", "true"},
+    {"non_manifold_edges", "0"},
+    {"non_manifold_vertices", "0"},
+    {"misoriented_edges", "0"},
+    {"degenerate_faces", "0"},
+    {"unreferenced_vertices", "0"},
+    {"uv_charts", "6"},
+    {"seam_edges", "60"},
     {"duplicate_faces", "0"},
 };
 
 static const json_field holes_fields[] = {
-    {"boundary_loops", "7"}, {"euler_characteristic", "-5"}, {"genus", "0"}, {"uv_charts", "1"},
+    {"boundary_loops", "7"},
+    {"euler_characteristic", "-5"},
+    {"genus", "0"},
+    {"uv_charts", "1"},
 };
 
 static void info_json_on_generated_samples(void **state)
@@ -120,7 +133,8 @@ static void info_json_on_generated_samples(void **state)
     char path[1024], cmd[2048];
     static char json[1 << 16];
 
-    gen_then_info_json("cubesphere --size 5", "cli_info_cubesphere.obj", path, sizeof path, json, sizeof json);
+    gen_then_info_json("cubesphere --size 5", "cli_info_cubesphere.obj", path, sizeof path, json,
+                       sizeof json);
     EXPECT_FIELDS("cubesphere --size 5", json, cubesphere5_fields);
     assert_non_null(strstr(json, "\"chart_kinds\": {\"disk\": 6}"));
     assert_true(strlen(json) >= 2);
@@ -136,9 +150,15 @@ static void info_json_on_generated_samples(void **state)
 }
 
 static const json_field pinch_fields[] = {
-    {"vertices", "7"}, {"faces", "8"}, {"components", "1"},
-    {"boundary_loops", "0"}, {"euler_characteristic", "3"}, {"genus", "null"},
-    {"manifold", "false"}, {"non_manifold_vertices", "1"}, {"non_manifold_edges", "0"},
+    {"vertices", "7"},
+    {"faces", "8"},
+    {"components", "1"},
+    {"boundary_loops", "0"},
+    {"euler_characteristic", "3"},
+    {"genus", "null"},
+    {"manifold", "false"},
+    {"non_manifold_vertices", "1"},
+    {"non_manifold_edges", "0"},
     {"unreferenced_vertices", "1"},
 };
 
@@ -172,14 +192,17 @@ static void expect_exits(const char *table, const cli_case *c, int n, const char
 {
     for (int i = 0; i < n; i++) {
         char cmd[2048];
-        snprintf(cmd, sizeof cmd, "'%s' %s%s%s%s %s", SCAF_BINARY, c[i].args, c[i].with_path ? " '" : "",
-                 c[i].with_path ? path : "", c[i].with_path ? "'" : "", c[i].tail);
+        snprintf(cmd, sizeof cmd, "'%s' %s%s%s%s %s", SCAF_BINARY, c[i].args,
+                 c[i].with_path ? " '" : "", c[i].with_path ? path : "", c[i].with_path ? "'" : "",
+                 c[i].tail);
         int got = run(cmd);
-        if (got != c[i].want) fail_msg("%s, row %d: %s exits %d, expected %d", table, i, cmd, got, c[i].want);
+        if (got != c[i].want)
+            fail_msg("%s, row %d: %s exits %d, expected %d", table, i, cmd, got, c[i].want);
     }
 }
 
-#define EXPECT_EXITS(cases, path) expect_exits(#cases, cases, (int)(sizeof cases / sizeof cases[0]), path)
+#define EXPECT_EXITS(cases, path)                                                                  \
+    expect_exits(#cases, cases, (int)(sizeof cases / sizeof cases[0]), path)
 
 static const cli_case usage_cases[] = {
     {"info /nonexistent/dir/missing.obj", 0, "2>/dev/null", 3},
@@ -217,7 +240,7 @@ static void exit_codes(void **state)
     remove(path);
     EXPECT_EXITS(refused_gen_cases, path);
     struct stat st;
-    assert_int_not_equal(stat(path, &st), 0);  /* nothing written */
+    assert_int_not_equal(stat(path, &st), 0); /* nothing written */
     EXPECT_EXITS(unwritable_gen_cases, NULL);
 
     test_tmp_path("cli_info_bad.obj", path, sizeof path);

@@ -110,7 +110,8 @@ static void symlink_output_is_written_through(void **state)
     make_dir(dir, sizeof dir, "link");
     snprintf(p, sizeof p, "%s/target.obj", dir);
     write_text(p, "old\n");
-    assert_int_equal(test_run("cd '%s' && ln -s target.obj link.obj && mkdir sub && ln -s ../new.obj sub/dangling.obj",
+    assert_int_equal(test_run("cd '%s' && ln -s target.obj link.obj && mkdir sub && ln -s "
+                              "../new.obj sub/dangling.obj",
                               dir),
                      0);
     assert_int_equal(run_in(dir, NULL, "param in.obj -o link.obj -q --iterations 2"), 0);
@@ -245,8 +246,8 @@ static void extension_decides_the_format(void **state)
     (void)state;
     char dir[512], p[600];
     make_dir(dir, sizeof dir, "ext");
-    static const char *const refused[] = {"param in.obj -o ch.ply", "param in.obj -o ch.off",
-                                          "atlas in.obj -o ch.stl", "param in.obj -o ch.ply.gz",
+    static const char *const refused[] = {"param in.obj -o ch.ply",  "param in.obj -o ch.off",
+                                          "atlas in.obj -o ch.stl",  "param in.obj -o ch.ply.gz",
                                           "param in.obj -o ch.mesh", "gen hemisphere -o ch.off"};
     for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
         assert_int_equal(run_in(dir, NULL, refused[i]), 2);
@@ -257,7 +258,8 @@ static void extension_decides_the_format(void **state)
     }
     assert_int_equal(test_run("ls '%s' | grep -q '^ch'", dir), 1);
 
-    assert_int_equal(run_in(dir, NULL, "param in.obj -o out.obj.gz -q --iterations 2 --report r.json.gz"), 0);
+    assert_int_equal(
+        run_in(dir, NULL, "param in.obj -o out.obj.gz -q --iterations 2 --report r.json.gz"), 0);
     snprintf(p, sizeof p, "%s/out.obj.gz", dir);
     FILE *f = fopen(p, "rb");
     assert_non_null(f);
@@ -266,8 +268,9 @@ static void extension_decides_the_format(void **state)
     fclose(f);
     assert_int_equal(magic[0], 0x1f);
     assert_int_equal(magic[1], 0x8b);
-    assert_int_equal(test_run("cd '%s' && %s info out.obj.gz > /dev/null && %s check out.obj.gz > /dev/null", dir,
-                              SCAF_BINARY, SCAF_BINARY),
+    assert_int_equal(test_run("cd '%s' && %s info out.obj.gz > /dev/null && %s check out.obj.gz > "
+                              "/dev/null",
+                              dir, SCAF_BINARY, SCAF_BINARY),
                      0);
     assert_int_equal(test_run("cd '%s' && gzip -dc r.json.gz | grep -q '\"iterations\"'", dir), 0);
     /* the same map as the plain OBJ */
@@ -283,12 +286,16 @@ static void dash_is_standard_output(void **state)
     char dir[512], p[600];
     make_dir(dir, sizeof dir, "dash");
     assert_int_equal(test_run("mkdir '%s/tmp'", dir), 0);
-    assert_int_equal(run_in(dir, "TMPDIR=tmp", "param in.obj -o - -q --iterations 2 > piped.obj"), 0);
-    assert_int_equal(test_run("cd '%s' && %s check piped.obj > /dev/null", dir, SCAF_BINARY), 0);
-    assert_int_equal(run_in(dir, "TMPDIR=tmp", "atlas in.obj -o a.obj --report - -q --iterations 2 "
-                                               "--compact-iterations 2 > report.json"),
+    assert_int_equal(run_in(dir, "TMPDIR=tmp", "param in.obj -o - -q --iterations 2 > piped.obj"),
                      0);
-    assert_int_equal(test_run("cd '%s' && grep -q '\"command\": \"atlas\"' report.json && test -s a.obj", dir), 0);
+    assert_int_equal(test_run("cd '%s' && %s check piped.obj > /dev/null", dir, SCAF_BINARY), 0);
+    assert_int_equal(run_in(dir, "TMPDIR=tmp",
+                            "atlas in.obj -o a.obj --report - -q --iterations 2 "
+                            "--compact-iterations 2 > report.json"),
+                     0);
+    assert_int_equal(
+        test_run("cd '%s' && grep -q '\"command\": \"atlas\"' report.json && test -s a.obj", dir),
+        0);
     assert_int_equal(run_in(dir, NULL, "param in.obj -o - --report - > none.txt"), 2);
     snprintf(p, sizeof p, "%s/none.txt", dir);
     assert_file_is(p, "");
@@ -312,8 +319,9 @@ static void failed_write_commits_nothing(void **state)
      * (~10 KB) does not. Control: the OBJ alone is written. */
     const char *limit = "bash -c \"ulimit -f 6; trap '' XFSZ; exec \\\"\\$0\\\" \\\"\\$@\\\"\"";
     assert_int_equal(run_in(dir, limit, "param in.obj -o alone.obj -q --iterations 3"), 0);
-    assert_int_equal(run_in(dir, limit, "param in.obj -o out.obj --report r.json --svg s.svg --svg-scaffold -q "
-                                        "--iterations 3"),
+    assert_int_equal(run_in(dir, limit,
+                            "param in.obj -o out.obj --report r.json --svg s.svg --svg-scaffold -q "
+                            "--iterations 3"),
                      5);
     char *e = stderr_of(dir);
     assert_non_null(strstr(e, "s.svg"));
@@ -336,14 +344,19 @@ static void signal_stops_cleanly_with_exit_8(void **state)
     snprintf(q, sizeof q, "%s/r.json", dir);
     write_text(p, "old mesh\n");
     static const char *const runs[][2] = {
-        {"SCAF_TEST_RAISE_SIGNAL_AT=2", "param in.obj -o out.obj --report r.json --tolerance 0 --iterations 20"},
-        {"SCAF_TEST_RAISE_SIGNAL_AT=2:TERM", "param in.obj -o out.obj --tolerance 0 --iterations 20"},
-        {"SCAF_TEST_RAISE_SIGNAL_AT=write", "param in.obj -o out.obj --report r.json --svg s.svg --png p.png "
-                                            "--iterations 2"},
-        {"SCAF_TEST_RAISE_SIGNAL_AT=write:TERM", "param in.obj -o out.obj.gz --report r.json --iterations 2"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=2",
+         "param in.obj -o out.obj --report r.json --tolerance 0 --iterations 20"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=2:TERM",
+         "param in.obj -o out.obj --tolerance 0 --iterations 20"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=write",
+         "param in.obj -o out.obj --report r.json --svg s.svg --png p.png "
+         "--iterations 2"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=write:TERM",
+         "param in.obj -o out.obj.gz --report r.json --iterations 2"},
         {"SCAF_TEST_RAISE_SIGNAL_AT=3", "atlas in.obj -o out.obj --report r.json --iterations 5"},
-        {"SCAF_TEST_RAISE_SIGNAL_AT=write", "atlas in.obj -o out.obj --report r.json --svg s.svg --iterations 2 "
-                                            "--compact-iterations 2"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=write",
+         "atlas in.obj -o out.obj --report r.json --svg s.svg --iterations 2 "
+         "--compact-iterations 2"},
         {"SCAF_TEST_RAISE_SIGNAL_AT=write", "gen hemisphere -o out.obj"},
     };
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
@@ -358,9 +371,12 @@ static void signal_stops_cleanly_with_exit_8(void **state)
         assert_false(test_exists(q));
         assert_int_equal(hidden_files(dir), 0);
     }
-    assert_int_equal(test_run("ls '%s' | grep -qv -e '^in.obj$' -e '^out.obj$' -e '^err.txt$'", dir), 1);
+    assert_int_equal(
+        test_run("ls '%s' | grep -qv -e '^in.obj$' -e '^out.obj$' -e '^err.txt$'", dir), 1);
     /* the hook at an iteration the run never reaches: a normal run */
-    assert_int_equal(run_in(dir, "SCAF_TEST_RAISE_SIGNAL_AT=999", "param in.obj -o out.obj -q --iterations 2"), 0);
+    assert_int_equal(
+        run_in(dir, "SCAF_TEST_RAISE_SIGNAL_AT=999", "param in.obj -o out.obj -q --iterations 2"),
+        0);
     remove_dir(dir);
 }
 

@@ -23,7 +23,9 @@ static void param_says(const char *in, const char *args, const char *reason)
     test_tmp_path("e2e_stop_stderr.txt", log, sizeof log);
     char out[512];
     test_tmp_path("e2e_stop_out.obj", out, sizeof out);
-    assert_int_equal(test_run("%s param %s -o %s %s --report %s 2> %s", SCAF_BINARY, in, out, args, rep, log), 0);
+    assert_int_equal(
+        test_run("%s param %s -o %s %s --report %s 2> %s", SCAF_BINARY, in, out, args, rep, log),
+        0);
     char *r = test_slurp(rep), *e = test_slurp(log);
     assert_non_null(r);
     assert_non_null(e);
@@ -50,7 +52,8 @@ static void param_reasons(void **state)
     /* --quiet: no line, the report still has it */
     char log[512];
     test_tmp_path("e2e_stop_quiet.txt", log, sizeof log);
-    assert_int_equal(test_run("%s param %s -o %s.out.obj --quiet 2> %s", SCAF_BINARY, in, in, log), 0);
+    assert_int_equal(test_run("%s param %s -o %s.out.obj --quiet 2> %s", SCAF_BINARY, in, in, log),
+                     0);
     char *e = test_slurp(log);
     assert_non_null(e);
     assert_null(strstr(e, "stop reason"));
@@ -66,14 +69,17 @@ static void atlas_reasons(void **state)
     test_tmp_path("e2e_stop_atlas.json", rep, sizeof rep);
     test_tmp_path("e2e_stop_atlas.txt", log, sizeof log);
     assert_int_equal(test_run("%s gen cubesphere --size 3 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(test_run("%s atlas %s -o %s --iterations 1 --compact-iterations 0 --resolution 2048 --report %s 2> %s",
+    assert_int_equal(test_run("%s atlas %s -o %s --iterations 1 --compact-iterations 0 "
+                              "--resolution 2048 --report %s 2> %s",
                               SCAF_BINARY, in, out, rep, log),
                      0);
     char *r = test_slurp(rep), *e = test_slurp(log);
     assert_non_null(r);
     assert_non_null(e);
     assert_non_null(strstr(r, "\"stop_reason\": \"iteration_limit\""));
-    assert_non_null(strstr(r, "\"phase_stop_reasons\": {\"settle\": \"iteration_limit\", \"compact\": \"not_run\"}"));
+    assert_non_null(strstr(r,
+                           "\"phase_stop_reasons\": {\"settle\": \"iteration_limit\", \"compact\": "
+                           "\"not_run\"}"));
     assert_non_null(strstr(e, "stop reason: iteration_limit ("));
     /* --resolution alone: the default 4 texels of it */
     assert_non_null(strstr(r, "\"padding\": 0.001953125"));

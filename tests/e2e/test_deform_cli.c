@@ -34,7 +34,8 @@ static void spiral_end_to_end(void **state)
     test_tmp_path("e2e_deform_report.json", rep, sizeof rep);
     assert_int_equal(test_run("%s gen spiral -o %s", SCAF_BINARY, s), 0);
     assert_true(test_exists(t));
-    assert_int_equal(test_run("%s deform %s --targets %s -o %s --report %s --verify --quiet", SCAF_BINARY, s, t, out, rep),
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s --report %s --verify --quiet",
+                              SCAF_BINARY, s, t, out, rep),
                      0);
     assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
     char *r = test_slurp(rep);
@@ -57,13 +58,15 @@ static void spiral_end_to_end(void **state)
     free(o);
     /* interrupted during the run: exit 8, nothing written */
     remove(out);
-    assert_int_equal(test_run("SCAF_TEST_RAISE_SIGNAL_AT=2 %s deform %s --targets %s -o %s 2> /dev/null", SCAF_BINARY, s,
-                              t, out),
+    assert_int_equal(test_run("SCAF_TEST_RAISE_SIGNAL_AT=2 %s deform %s --targets %s -o %s 2> "
+                              "/dev/null",
+                              SCAF_BINARY, s, t, out),
                      8);
     assert_false(test_exists(out));
     /* frozen scaffold: locks */
-    assert_int_equal(
-        test_run("%s deform %s --targets %s -o %s --report %s --no-remesh --quiet", SCAF_BINARY, s, t, out, rep), 0);
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s --report %s --no-remesh --quiet",
+                              SCAF_BINARY, s, t, out, rep),
+                     0);
     r = test_slurp(rep);
     assert_non_null(r);
     assert_true(report_number(r, "max_handle_error") > 0.1);
@@ -82,7 +85,9 @@ static void bad_targets(const char *mesh_path, const char *text, int code, const
     fputs(text, f);
     fclose(f);
     remove(out);
-    assert_int_equal(test_run("%s deform %s --targets %s -o %s 2> %s", SCAF_BINARY, mesh_path, t, out, log), code);
+    assert_int_equal(
+        test_run("%s deform %s --targets %s -o %s 2> %s", SCAF_BINARY, mesh_path, t, out, log),
+        code);
     assert_int_equal(test_exists(out), code == 0);
     char *e = test_slurp(log);
     assert_non_null(e);
@@ -100,15 +105,20 @@ static void bad_input(void **state)
     test_tmp_path("e2e_deform_any.obj", out, sizeof out);
     assert_int_equal(test_run("%s gen grid --size 4 -o %s", SCAF_BINARY, g), 0);
     bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [1, 2]}]}", 0, "");
-    bad_targets(g, "{\"handles\": [\n{\"vertex\": 0, \"target\": [1, 2]},\n{\"vertex\": 1.5, \"target\": [0, 0]}]}", 3,
-                ":3: \"vertex\" must be an integer");
+    bad_targets(g,
+                "{\"handles\": [\n{\"vertex\": 0, \"target\": [1, 2]},\n{\"vertex\": 1.5, "
+                "\"target\": [0, 0]}]}",
+                3, ":3: \"vertex\" must be an integer");
     bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [1]}]}", 3, "two numbers");
     bad_targets(g, "{\"handles\": [], \"wieght\": 3}", 3, "unknown or repeated key \"wieght\"");
     bad_targets(g, "{\"handles\": []} x", 3, "unexpected text after the object");
     bad_targets(g, "{\"weight\": 1}", 3, "no \"handles\"");
-    bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [1, 2], \"path\": [[0, 0]]},\n"
-                   "{\"vertex\": 1, \"target\": [1, 2]}]}", 3, "handle 2 has a path of 0 points");
-    bad_targets(g, "{\"handles\": [{\"vertex\": 25, \"target\": [1, 2]}]}", 4, "vertex 25 is not one of the mesh's 25");
+    bad_targets(g,
+                "{\"handles\": [{\"vertex\": 0, \"target\": [1, 2], \"path\": [[0, 0]]},\n"
+                "{\"vertex\": 1, \"target\": [1, 2]}]}",
+                3, "handle 2 has a path of 0 points");
+    bad_targets(g, "{\"handles\": [{\"vertex\": 25, \"target\": [1, 2]}]}", 4,
+                "vertex 25 is not one of the mesh's 25");
     /* not planar, missing targets file, usage */
     assert_int_equal(test_run("%s gen hemisphere --size 2 -o %s", SCAF_BINARY, hs), 0);
     char t[512];
@@ -118,10 +128,15 @@ static void bad_input(void **state)
     fputs("{\"handles\": []}", f);
     fclose(f);
     remove(out);
-    assert_int_equal(test_run("%s deform %s --targets %s -o %s 2> /dev/null", SCAF_BINARY, hs, t, out), 4);
-    assert_int_equal(test_run("%s deform %s --targets %s.missing -o %s 2> /dev/null", SCAF_BINARY, g, t, out), 3);
+    assert_int_equal(
+        test_run("%s deform %s --targets %s -o %s 2> /dev/null", SCAF_BINARY, hs, t, out), 4);
+    assert_int_equal(
+        test_run("%s deform %s --targets %s.missing -o %s 2> /dev/null", SCAF_BINARY, g, t, out),
+        3);
     assert_int_equal(test_run("%s deform %s -o %s 2> /dev/null", SCAF_BINARY, g, out), 2);
-    assert_int_equal(test_run("%s deform %s --targets %s -o %s --iterations x 2> /dev/null", SCAF_BINARY, g, t, out), 2);
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s --iterations x 2> /dev/null",
+                              SCAF_BINARY, g, t, out),
+                     2);
     assert_int_equal(test_run("%s gen spiral -o - > /dev/null 2>&1", SCAF_BINARY), 2);
     assert_false(test_exists(out));
 }

@@ -27,7 +27,8 @@
     "python3 -c 'import json,sys\n"                                                                \
     "def bad(c): sys.exit(3)\n"                                                                    \
     "d = json.load(open(sys.argv[1]), parse_constant=bad)\n"                                       \
-    "ok = all(isinstance(d.get(k), (int, float)) and not isinstance(d.get(k), bool) for k in sys.argv[2:])\n" \
+    "ok = all(isinstance(d.get(k), (int, float)) and not isinstance(d.get(k), bool) for k in "     \
+    "sys.argv[2:])\n"                                                                              \
     "sys.exit(0 if ok else 4)'"
 
 /* One triangle with UVs (0,0) (s,0) (0,s), as text s. */
@@ -64,9 +65,10 @@ static void check_gap_of_two_far_charts_is_a_number(void **state)
     test_tmp_path("extreme_two.obj", obj, sizeof obj);
     FILE *f = fopen(obj, "w");
     assert_non_null(f);
-    fprintf(f, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nv 2 1 0\n"
-               "vt 0 0\nvt 1e154 0\nvt 0 1e154\nvt 4e154 0\nvt 5e154 0\nvt 4e154 1e154\n"
-               "f 1/1 2/2 3/3\nf 4/4 5/5 6/6\n");
+    fprintf(f,
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nv 3 0 0\nv 2 1 0\n"
+            "vt 0 0\nvt 1e154 0\nvt 0 1e154\nvt 4e154 0\nvt 5e154 0\nvt 4e154 1e154\n"
+            "f 1/1 2/2 3/3\nf 4/4 5/5 6/6\n");
     fclose(f);
     test_tmp_path("extreme_two.json", json, sizeof json);
     assert_int_equal(test_run("%s check --json %s > %s", SCAF_BINARY, obj, json), 0);
@@ -82,10 +84,12 @@ static void atlas_padding_range_checked_up_front(void **state)
     char out[512], err[512];
     test_tmp_path("extreme_out.obj", out, sizeof out);
     test_tmp_path("extreme_err.txt", err, sizeof err);
-    const char *opts[] = {"--padding 1e-61", "--resolution 1e300 --padding-texels 1", "--padding 0.5",
-                          "--padding-texels 512 --resolution 1024"};
+    const char *opts[] = {"--padding 1e-61", "--resolution 1e300 --padding-texels 1",
+                          "--padding 0.5", "--padding-texels 512 --resolution 1024"};
     for (size_t i = 0; i < sizeof opts / sizeof *opts; i++) {
-        assert_int_equal(test_run("%s atlas /nonexistent/in.obj -o %s %s 2> %s", SCAF_BINARY, out, opts[i], err), 2);
+        assert_int_equal(
+            test_run("%s atlas /nonexistent/in.obj -o %s %s 2> %s", SCAF_BINARY, out, opts[i], err),
+            2);
         char *msg = test_slurp(err);
         assert_non_null(msg);
         assert_non_null(strstr(msg, "must be 0 or in [2^-200, 0.5)"));
@@ -109,7 +113,8 @@ static void atlas_smallest_padding_runs(void **state)
 /* The hemisphere sample with every position times s, face 0 made
  * degenerate (its third vertex moved onto its first) when
  * degenerate is set; written as OBJ with round-trip precision. */
-static const char *write_scaled_hemisphere(const char *name, double s, int degenerate, char *path, size_t size)
+static const char *write_scaled_hemisphere(const char *name, double s, int degenerate, char *path,
+                                           size_t size)
 {
     mesh m;
     scaf_error err;
@@ -126,7 +131,8 @@ static const char *write_scaled_hemisphere(const char *name, double s, int degen
     assert_non_null(f);
     for (int v = 0; v < m.nv; v++)
         fprintf(f, "v %.17g %.17g %.17g\n", m.V[3 * v] * s, m.V[3 * v + 1] * s, m.V[3 * v + 2] * s);
-    for (int t = 0; t < m.nf; t++) fprintf(f, "f %d %d %d\n", m.F[3 * t] + 1, m.F[3 * t + 1] + 1, m.F[3 * t + 2] + 1);
+    for (int t = 0; t < m.nf; t++)
+        fprintf(f, "f %d %d %d\n", m.F[3 * t] + 1, m.F[3 * t + 1] + 1, m.F[3 * t + 2] + 1);
     fclose(f);
     mesh_free(&m);
     return path;
@@ -149,7 +155,8 @@ static void one_degeneracy_verdict_at_any_scale(void **state)
             char *info = test_slurp(txt);
             assert_non_null(info);
             /* faces 0 and 1 share the moved vertex: both degenerate */
-            assert_non_null(strstr(info, deg ? "\"degenerate_faces\": 2," : "\"degenerate_faces\": 0,"));
+            assert_non_null(
+                strstr(info, deg ? "\"degenerate_faces\": 2," : "\"degenerate_faces\": 0,"));
             free(info);
             const char *cmd[] = {"param", "atlas"};
             for (int c = 0; c < 2; c++) {
@@ -189,10 +196,13 @@ static void options_out_of_range_say_the_range(void **state)
     test_tmp_path("extreme_out.obj", out, sizeof out);
     test_tmp_path("extreme_err.txt", err, sizeof err);
     for (size_t i = 0; i < sizeof c / sizeof *c; i++) {
-        assert_int_equal(test_run("%s %s /nonexistent/in.obj -o %s %s 2> %s", SCAF_BINARY, c[i].cmd, out, c[i].opts, err), 2);
+        assert_int_equal(test_run("%s %s /nonexistent/in.obj -o %s %s 2> %s", SCAF_BINARY, c[i].cmd,
+                                  out, c[i].opts, err),
+                         2);
         char *msg = test_slurp(err);
         assert_non_null(msg);
-        if (!strstr(msg, c[i].want)) fail_msg("%s %s: '%s' does not say '%s'", c[i].cmd, c[i].opts, msg, c[i].want);
+        if (!strstr(msg, c[i].want))
+            fail_msg("%s %s: '%s' does not say '%s'", c[i].cmd, c[i].opts, msg, c[i].want);
         free(msg);
     }
 }

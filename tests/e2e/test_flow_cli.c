@@ -55,7 +55,9 @@ static void until_free(void **state)
     mesh m;
     write_pushed_sphere(in, &m);
     assert_int_equal(test_run("'%s' check '%s' >/dev/null", SCAF_BINARY, in), 1);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 30 --until-free --report '%s' 2>&1",
+    assert_int_equal(test_capture(out, sizeof out,
+                                  "'%s' flow '%s' -o '%s' --steps 30 --until-free --report '%s' "
+                                  "2>&1",
                                   SCAF_BINARY, in, res, rep),
                      0);
     char *json = test_slurp(rep);
@@ -82,7 +84,9 @@ static void until_free(void **state)
     /* too few steps: fails, nothing written */
     remove(res);
     remove(rep);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 2 --until-free --report '%s' 2>&1",
+    assert_int_equal(test_capture(out, sizeof out,
+                                  "'%s' flow '%s' -o '%s' --steps 2 --until-free --report '%s' "
+                                  "2>&1",
                                   SCAF_BINARY, in, res, rep),
                      6);
     assert_false(test_exists(rep));
@@ -97,16 +101,18 @@ static void fixed_steps_and_quiet(void **state)
     test_tmp_path("flow_cli_ico.obj", in, sizeof in);
     test_tmp_path("flow_cli_ico_flowed.obj", res, sizeof res);
     assert_int_equal(test_run("'%s' gen icosphere -s 3 -o '%s'", SCAF_BINARY, in), 0);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' -n 3 --delta 0.01 2>&1", SCAF_BINARY, in,
-                                  res),
+    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' -n 3 --delta 0.01 2>&1",
+                                  SCAF_BINARY, in, res),
                      0);
     assert_int_equal(count_lines_with(out, "scaf flow: step "), 3);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 3 -q 2>&1", SCAF_BINARY, in, res),
+    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 3 -q 2>&1",
+                                  SCAF_BINARY, in, res),
                      0);
     assert_string_equal(out, "");
     assert_true(test_exists(res));
     /* already free with --until-free: no step, written normalized */
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 3 --until-free 2>&1", SCAF_BINARY,
+    assert_int_equal(test_capture(out, sizeof out,
+                                  "'%s' flow '%s' -o '%s' --steps 3 --until-free 2>&1", SCAF_BINARY,
                                   in, res),
                      0);
     assert_non_null(strstr(out, "already free"));
@@ -121,7 +127,9 @@ static void refusals(void **state)
     test_tmp_path("flow_cli_refused.obj", res, sizeof res);
     remove(res);
     assert_int_equal(test_run("'%s' gen hemisphere -s 3 -o '%s'", SCAF_BINARY, in), 0);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 2 2>&1", SCAF_BINARY, in, res), 4);
+    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 2 2>&1",
+                                  SCAF_BINARY, in, res),
+                     4);
     assert_non_null(strstr(out, "the surface is open"));
     assert_false(test_exists(res));
     /* closed but not manifold: two tetrahedra sharing vertex 3 */
@@ -133,18 +141,28 @@ static void refusals(void **state)
           "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n3 3 5 4\n3 3 4 6\n3 4 5 6\n3 5 3 6\n",
           f);
     fclose(f);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 2 2>&1", SCAF_BINARY, nm, res), 4);
+    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 2 2>&1",
+                                  SCAF_BINARY, nm, res),
+                     4);
     assert_non_null(strstr(out, "not manifold"));
     assert_false(test_exists(res));
     /* usage */
-    const char *bad[] = {"",  "--steps 0", "--steps 2 --delta 0", "--steps 2 --delta x", "--steps x",
-                         "--steps 2 --frobnicate", "--steps"};
+    const char *bad[] = {"",
+                         "--steps 0",
+                         "--steps 2 --delta 0",
+                         "--steps 2 --delta x",
+                         "--steps x",
+                         "--steps 2 --frobnicate",
+                         "--steps"};
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++)
-        assert_int_equal(test_run("'%s' flow '%s' -o '%s' %s 2>/dev/null", SCAF_BINARY, in, res, bad[k]), 2);
+        assert_int_equal(
+            test_run("'%s' flow '%s' -o '%s' %s 2>/dev/null", SCAF_BINARY, in, res, bad[k]), 2);
     assert_int_equal(test_run("'%s' flow '%s' --steps 2 2>/dev/null", SCAF_BINARY, in), 2);
     assert_int_equal(test_run("'%s' flow -o '%s' --steps 2 2>/dev/null", SCAF_BINARY, res), 2);
-    assert_int_equal(test_run("'%s' flow '%s' -o '%s.ply' --steps 2 2>/dev/null", SCAF_BINARY, in, res), 2);
-    assert_int_equal(test_run("'%s' flow '%s.missing' -o '%s' --steps 2 2>/dev/null", SCAF_BINARY, in, res), 3);
+    assert_int_equal(
+        test_run("'%s' flow '%s' -o '%s.ply' --steps 2 2>/dev/null", SCAF_BINARY, in, res), 2);
+    assert_int_equal(
+        test_run("'%s' flow '%s.missing' -o '%s' --steps 2 2>/dev/null", SCAF_BINARY, in, res), 3);
     assert_false(test_exists(res));
 }
 
@@ -157,8 +175,9 @@ static void interrupted(void **state)
     remove(res);
     assert_int_equal(test_run("'%s' gen icosphere -s 3 -o '%s'", SCAF_BINARY, in), 0);
     assert_int_equal(test_capture(out, sizeof out,
-                                  "SCAF_TEST_RAISE_SIGNAL_AT=2 '%s' flow '%s' -o '%s' --steps 5 2>&1", SCAF_BINARY,
-                                  in, res),
+                                  "SCAF_TEST_RAISE_SIGNAL_AT=2 '%s' flow '%s' -o '%s' --steps 5 "
+                                  "2>&1",
+                                  SCAF_BINARY, in, res),
                      8);
     assert_non_null(strstr(out, "interrupted by SIGINT"));
     assert_int_equal(count_lines_with(out, "scaf flow: step "), 2);
@@ -186,8 +205,9 @@ static void leg_data(void **state)
     assert_true(test_max_vertex_diff_rel(a.nv, a.V, b.V) < 1e-9);
     mesh_free(&a);
     mesh_free(&b);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' flow '%s' -o '%s' --steps 20 --until-free 2>&1", SCAF_BINARY,
-                                  pin, res),
+    assert_int_equal(test_capture(out, sizeof out,
+                                  "'%s' flow '%s' -o '%s' --steps 20 --until-free 2>&1",
+                                  SCAF_BINARY, pin, res),
                      0);
     assert_non_null(strstr(out, "input: 239 intersecting face pairs"));
     assert_non_null(strstr(out, "free of self-intersections after 5 steps"));
@@ -197,10 +217,8 @@ static void leg_data(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(until_free),
-        cmocka_unit_test(fixed_steps_and_quiet),
-        cmocka_unit_test(refusals),
-        cmocka_unit_test(interrupted),
+        cmocka_unit_test(until_free), cmocka_unit_test(fixed_steps_and_quiet),
+        cmocka_unit_test(refusals),   cmocka_unit_test(interrupted),
         cmocka_unit_test(leg_data),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

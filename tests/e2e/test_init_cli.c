@@ -34,8 +34,8 @@ static void run_init_case(const init_case *c)
     test_tmp_path(name, rep, sizeof rep);
     remove(out);
     assert_int_equal(test_run("%s gen %s -o %s", SCAF_BINARY, c->sample, in), 0);
-    assert_int_equal(test_run("%s %s %s -o %s --init mvc %s --quiet --report %s", SCAF_BINARY, c->cmd, in, out, c->caps,
-                              rep),
+    assert_int_equal(test_run("%s %s %s -o %s --init mvc %s --quiet --report %s", SCAF_BINARY,
+                              c->cmd, in, out, c->caps, rep),
                      0);
     assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
     char *json = test_slurp(rep);
@@ -43,7 +43,9 @@ static void run_init_case(const init_case *c)
     assert_non_null(strstr(json, "\"mvc\""));
     free(json);
     remove(out);
-    assert_int_equal(test_run("%s %s %s -o %s --init %s --quiet 2> /dev/null", SCAF_BINARY, c->cmd, in, out, c->bad), 2);
+    assert_int_equal(test_run("%s %s %s -o %s --init %s --quiet 2> /dev/null", SCAF_BINARY, c->cmd,
+                              in, out, c->bad),
+                     2);
     assert_false(test_exists(out));
 }
 
@@ -57,7 +59,8 @@ static void param_init_mvc(void **state)
 static void atlas_init_mvc(void **state)
 {
     (void)state;
-    init_case c = {"atlas", "cubesphere --size 3", "atlas", "--iterations 2 --compact-iterations 2", "MVC"};
+    init_case c = {"atlas", "cubesphere --size 3", "atlas", "--iterations 2 --compact-iterations 2",
+                   "MVC"};
     run_init_case(&c);
 }
 

@@ -29,14 +29,14 @@
 #include "mesh/uv_charts.h"
 #include "support/support.h"
 
-#define NA (-1)          /* genus not defined ("n/a" in MANIFEST) */
-#define UNLISTED (-2)    /* MANIFEST gives no number */
+#define NA (-1)       /* genus not defined ("n/a" in MANIFEST) */
+#define UNLISTED (-2) /* MANIFEST gives no number */
 
 typedef struct expected {
     const char *file;
     int v, f, comps, loops, chi;
-    int genus;           /* sum over components, NA when any is undefined */
-    int charts, seams;   /* UNLISTED where MANIFEST says nothing */
+    int genus;         /* sum over components, NA when any is undefined */
+    int charts, seams; /* UNLISTED where MANIFEST says nothing */
     int nm_edges, nm_verts, misoriented, unreferenced;
 } expected;
 
@@ -104,10 +104,12 @@ static int check(const expected *x, mesh_topology *t, mesh_charts *c)
     if (!s) s = mesh_charts_compute(&m, c, &e);
     if (s) print_error("%s: %s\n", x->file, e.message);
     assert_int_equal(s, SCAF_OK);
-    print_message("%-34s V %d F %d comp %d loops %d chi %d genus %d charts %d seams %d nmE %d nmV %d mis %d unref %d\n",
-                  x->file, t->vertices, t->faces, t->components, t->boundary_loops, t->euler_characteristic,
-                  t->genus_sum, t->uv_charts, t->seam_edges, t->non_manifold_edges, t->non_manifold_vertices,
-                  t->misoriented_edges, t->unreferenced_vertices);
+    print_message("%-34s V %d F %d comp %d loops %d chi %d genus %d charts %d seams %d nmE %d nmV "
+                  "%d mis %d unref %d\n",
+                  x->file, t->vertices, t->faces, t->components, t->boundary_loops,
+                  t->euler_characteristic, t->genus_sum, t->uv_charts, t->seam_edges,
+                  t->non_manifold_edges, t->non_manifold_vertices, t->misoriented_edges,
+                  t->unreferenced_vertices);
     assert_int_equal(t->vertices, x->v);
     assert_int_equal(t->faces, x->f);
     assert_int_equal(t->components, x->comps);
@@ -206,7 +208,7 @@ static void bad(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(disk), cmocka_unit_test(seams), cmocka_unit_test(closed),
+        cmocka_unit_test(disk),  cmocka_unit_test(seams), cmocka_unit_test(closed),
         cmocka_unit_test(large), cmocka_unit_test(bad),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -21,11 +21,13 @@
 
 /* Python: print the nonzero defect counts of a check --json file as
  * "key n, key n" in the order of bij_report_defects. */
-#define DEFECTS_OF_CHECK_JSON                                                                            \
-    "python3 -c 'import json,sys\n"                                                                      \
-    "d = json.load(open(sys.argv[1]))\n"                                                                 \
-    "keys = [\"flipped\", \"degenerate\", \"mirrored_charts\", \"boundary_crossings\", \"boundary_touchings\",\n" \
-    "        \"boundary_foldbacks\", \"folded_edges\", \"nonmanifold_edges\", \"nested_loops\", \"corner_overlaps\"]\n" \
+#define DEFECTS_OF_CHECK_JSON                                                                      \
+    "python3 -c 'import json,sys\n"                                                                \
+    "d = json.load(open(sys.argv[1]))\n"                                                           \
+    "keys = [\"flipped\", \"degenerate\", \"mirrored_charts\", \"boundary_crossings\", "           \
+    "\"boundary_touchings\",\n"                                                                    \
+    "        \"boundary_foldbacks\", \"folded_edges\", \"nonmanifold_edges\", \"nested_loops\", "  \
+    "\"corner_overlaps\"]\n"                                                                       \
     "print(\", \".join(\"%%s %%d\" %% (k, d[k]) for k in keys if d[k]), end=\"\")'"
 
 static void spot_check_and_atlas_agree(void **state)
@@ -40,7 +42,8 @@ static void spot_check_and_atlas_agree(void **state)
     test_tmp_path("verdict_out.obj", out, sizeof out);
     assert_int_equal(test_run("%s check --json %s > %s", SCAF_BINARY, in, json), 1);
     assert_int_equal(test_run(DEFECTS_OF_CHECK_JSON " %s > %s", json, want), 0);
-    assert_int_equal(test_run("%s atlas --init input %s -o %s -q 2> %s", SCAF_BINARY, in, out, err), 4);
+    assert_int_equal(test_run("%s atlas --init input %s -o %s -q 2> %s", SCAF_BINARY, in, out, err),
+                     4);
     char *w = test_slurp(want), *e = test_slurp(err);
     assert_non_null(w);
     assert_non_null(e);

@@ -38,8 +38,9 @@ static void cli_param_on_generated_sample(void **state)
     test_tmp_path("e2e_param.svg", svg, sizeof svg);
     remove(out);
     assert_int_equal(test_run("%s gen hemisphere --size 6 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(test_run("%s param %s -o %s --iterations 4 --quiet --verify --report %s --svg %s --svg-scaffold", SCAF_BINARY,
-                         in, out, rep, svg),
+    assert_int_equal(test_run("%s param %s -o %s --iterations 4 --quiet --verify --report %s --svg "
+                              "%s --svg-scaffold",
+                              SCAF_BINARY, in, out, rep, svg),
                      0);
     assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
     /* v lines untouched, UVs present */
@@ -83,20 +84,26 @@ static void cli_bad_input_leaves_no_output(void **state)
     assert_int_equal(test_run("%s gen tetrahedron -o %s", SCAF_BINARY, in), 0);
     assert_int_equal(test_run("%s param %s -o %s --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
     assert_false(test_exists(out));
-    assert_int_equal(test_run("%s param %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY, SCAF_TEST_TMPDIR, out), 3);
+    assert_int_equal(test_run("%s param %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY,
+                              SCAF_TEST_TMPDIR, out),
+                     3);
     assert_false(test_exists(out));
     assert_int_equal(test_run("%s param %s 2> /dev/null", SCAF_BINARY, in), 2);
-    assert_int_equal(test_run("%s param %s -o %s --energy nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(test_run("%s param %s -o %s --iterations -3 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(test_run("%s param %s -o %s --box-scale 0.5 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(
+        test_run("%s param %s -o %s --energy nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(
+        test_run("%s param %s -o %s --iterations -3 2> /dev/null", SCAF_BINARY, in, out), 2);
+    assert_int_equal(
+        test_run("%s param %s -o %s --box-scale 0.5 2> /dev/null", SCAF_BINARY, in, out), 2);
     assert_int_equal(test_run("%s param --help > /dev/null", SCAF_BINARY), 0);
     assert_false(test_exists(out));
     /* output folder that does not exist: exit 5, nothing written */
     char hemi[512];
     test_tmp_path("e2e_param_hemi.obj", hemi, sizeof hemi);
     assert_int_equal(test_run("%s gen hemisphere --size 3 -o %s", SCAF_BINARY, hemi), 0);
-    assert_int_equal(test_run("%s param %s -o %s/missing-dir/x.obj --iterations 1 --quiet 2> /dev/null", SCAF_BINARY, hemi,
-                         SCAF_TEST_TMPDIR),
+    assert_int_equal(test_run("%s param %s -o %s/missing-dir/x.obj --iterations 1 --quiet 2> "
+                              "/dev/null",
+                              SCAF_BINARY, hemi, SCAF_TEST_TMPDIR),
                      5);
 }
 
@@ -128,8 +135,8 @@ static void disk_meshes_bijective_every_iteration(void **state)
 static void seam_meshes_by_charts(void **state)
 {
     (void)state;
-    const char *files[] = {"seams/myles_knot1_seamed.obj", "seams/myles_eight_seamed.obj", "seams/blub.obj",
-                           "seams/spot.obj", "seams/human_neutral.obj"};
+    const char *files[] = {"seams/myles_knot1_seamed.obj", "seams/myles_eight_seamed.obj",
+                           "seams/blub.obj", "seams/spot.obj", "seams/human_neutral.obj"};
     int ran = 0;
     for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
         /* Every seam mesh of the data set has charts that are disks once

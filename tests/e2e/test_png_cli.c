@@ -46,7 +46,8 @@ static long deep_pixel(const mesh *m, int f, const unsigned char *img, int S)
         c[1] += p[j][1] / 3;
     }
     double q[2] = {floor(c[0]) + 0.5, floor(c[1]) + 0.5};
-    double area2 = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    double area2 =
+        (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
     for (int j = 0; j < 3; j++) {
         const double *a = p[j], *b = p[(j + 1) % 3];
         double side = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]);
@@ -70,11 +71,13 @@ static void cli_atlas_png(void **state)
     remove(png);
     remove(chk);
     assert_int_equal(test_run("%s gen cubesphere --size 4 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(test_run("%s atlas %s -o %s --iterations 4 --compact-iterations 4 --quiet --png %s "
+    assert_int_equal(test_run("%s atlas %s -o %s --iterations 4 --compact-iterations 4 --quiet "
+                              "--png %s "
                               "--png-size 200",
                               SCAF_BINARY, in, out, png),
                      0);
-    assert_int_equal(test_run("%s atlas %s -o %s --iterations 4 --compact-iterations 4 --quiet --png %s "
+    assert_int_equal(test_run("%s atlas %s -o %s --iterations 4 --compact-iterations 4 --quiet "
+                              "--png %s "
                               "--png-size 200 --checker 12",
                               SCAF_BINARY, in, out, chk),
                      0);
@@ -119,7 +122,8 @@ static void cli_atlas_png(void **state)
     assert_true(sampled >= 6);
     for (int a = 0; a < nc; a++)
         for (int b = a + 1; b < nc; b++)
-            if (colour_of[a] >= 0 && colour_of[b] >= 0) assert_int_not_equal(colour_of[a], colour_of[b]);
+            if (colour_of[a] >= 0 && colour_of[b] >= 0)
+                assert_int_not_equal(colour_of[a], colour_of[b]);
     assert_true(light > 0 && dark > 0);
     /* outside the charts: the corners of the unit square hold no chart here, some pixel is transparent */
     int transparent = 0, alpha;
@@ -144,9 +148,10 @@ static void cli_param_png(void **state)
     test_tmp_path("e2e_png_param.png", png, sizeof png);
     remove(png);
     assert_int_equal(test_run("%s gen hemisphere --size 6 -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(
-        test_run("%s param %s -o %s --iterations 5 --quiet --png %s --png-size 200 --checker", SCAF_BINARY, in, out, png),
-        0);
+    assert_int_equal(test_run("%s param %s -o %s --iterations 5 --quiet --png %s --png-size 200 "
+                              "--checker",
+                              SCAF_BINARY, in, out, png),
+                     0);
     int w = 0, h = 0, alpha;
     unsigned char *img = test_png_read(png, &w, &h);
     assert_non_null(img);
@@ -171,13 +176,16 @@ static void cli_png_errors(void **state)
     remove(png);
     assert_int_equal(test_run("%s gen cubesphere --size 2 -o %s", SCAF_BINARY, in), 0);
     const char *cmds[] = {"atlas", "param"};
-    const char *bad[] = {"--png %s --png-size 15", "--png %s --png-size 16385", "--png %s --png-size abc",
-                         "--png %s --png-size", "--png-size 100", "--checker", "--png %s --checker 0"};
+    const char *bad[] = {"--png %s --png-size 15",  "--png %s --png-size 16385",
+                         "--png %s --png-size abc", "--png %s --png-size",
+                         "--png-size 100",          "--checker",
+                         "--png %s --checker 0"};
     for (int c = 0; c < 2; c++)
         for (size_t b = 0; b < sizeof bad / sizeof *bad; b++) {
             char opts[1024], cmd[4096];
             snprintf(opts, sizeof opts, bad[b], png);
-            snprintf(cmd, sizeof cmd, "%s %s %s -o %s --quiet %s 2> /dev/null", SCAF_BINARY, cmds[c], in, out, opts);
+            snprintf(cmd, sizeof cmd, "%s %s %s -o %s --quiet %s 2> /dev/null", SCAF_BINARY,
+                     cmds[c], in, out, opts);
             int rc = test_run("%s", cmd);
             if (rc != 2) fail_msg("exit %d, not 2: %s", rc, cmd);
             assert_false(test_exists(out));
@@ -186,8 +194,9 @@ static void cli_png_errors(void **state)
     /* the PNG's folder does not exist: exit 5, no PNG */
     test_tmp_path("no_such_folder/e2e.png", png, sizeof png);
     /* (param: the atlas has a fixed packing cost, slow under the sanitizers) */
-    assert_int_equal(
-        test_run("%s param %s -o %s --iterations 2 --quiet --png %s 2> /dev/null", SCAF_BINARY, in, out, png), 5);
+    assert_int_equal(test_run("%s param %s -o %s --iterations 2 --quiet --png %s 2> /dev/null",
+                              SCAF_BINARY, in, out, png),
+                     5);
     assert_false(test_exists(png));
     assert_int_equal(test_run("%s atlas --help | grep -q -- --checker", SCAF_BINARY), 0);
     assert_int_equal(test_run("%s param --help | grep -q -- --png-size", SCAF_BINARY), 0);

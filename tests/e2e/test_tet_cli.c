@@ -24,7 +24,8 @@ static void scaffold_and_check(void **state)
     test_tmp_path("tet_cli_ico.obj", surf, sizeof surf);
     test_tmp_path("tet_cli_ico.mesh", tets, sizeof tets);
     assert_int_equal(test_run("'%s' gen icosphere -s 3 -o '%s'", SCAF_BINARY, surf), 0);
-    assert_int_equal(test_run("'%s' tet '%s' -o '%s' --box-cells 4 --quiet", SCAF_BINARY, surf, tets), 0);
+    assert_int_equal(
+        test_run("'%s' tet '%s' -o '%s' --box-cells 4 --quiet", SCAF_BINARY, surf, tets), 0);
     assert_int_equal(test_capture(out, sizeof out, "'%s' check --json '%s'", SCAF_BINARY, tets), 0);
     long long nt = test_json_field(out, "tets");
     assert_true(nt > 0);
@@ -62,7 +63,8 @@ static void refusals(void **state)
     /* open */
     test_tmp_path("tet_cli_open.obj", surf, sizeof surf);
     assert_int_equal(test_run("'%s' gen hemisphere -s 3 -o '%s'", SCAF_BINARY, surf), 0);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' tet '%s' -o '%s' 2>&1", SCAF_BINARY, surf, tets), 4);
+    assert_int_equal(
+        test_capture(out, sizeof out, "'%s' tet '%s' -o '%s' 2>&1", SCAF_BINARY, surf, tets), 4);
     assert_non_null(strstr(out, "the surface is open"));
     assert_false(test_exists(tets));
     /* self-intersecting: an octahedron with its top pushed through a bottom face */
@@ -73,13 +75,16 @@ static void refusals(void **state)
           "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n",
           f);
     fclose(f);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' tet '%s' -o '%s' 2>&1", SCAF_BINARY, surf, tets), 4);
+    assert_int_equal(
+        test_capture(out, sizeof out, "'%s' tet '%s' -o '%s' 2>&1", SCAF_BINARY, surf, tets), 4);
     assert_non_null(strstr(out, "intersects itself"));
     assert_false(test_exists(tets));
     /* usage */
     assert_int_equal(test_run("'%s' tet '%s' 2>/dev/null", SCAF_BINARY, surf), 2);
-    assert_int_equal(test_run("'%s' tet '%s' -o '%s' --box-scale 1 2>/dev/null", SCAF_BINARY, surf, tets), 2);
-    assert_int_equal(test_run("'%s' tet '%s' -o '%s' --box-cells 65 2>/dev/null", SCAF_BINARY, surf, tets), 2);
+    assert_int_equal(
+        test_run("'%s' tet '%s' -o '%s' --box-scale 1 2>/dev/null", SCAF_BINARY, surf, tets), 2);
+    assert_int_equal(
+        test_run("'%s' tet '%s' -o '%s' --box-cells 65 2>/dev/null", SCAF_BINARY, surf, tets), 2);
     /* a malformed .mesh */
     f = fopen(tets, "w");
     assert_non_null(f);
@@ -94,7 +99,8 @@ static void shared_bunny(void **state)
     char surf[1024], tets[1024];
     if (!test_data_path("closed/bunny.obj", surf, sizeof surf)) skip();
     test_tmp_path("tet_cli_bunny.mesh", tets, sizeof tets);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' tet '%s' -o '%s' 2>&1", SCAF_BINARY, surf, tets), 0);
+    assert_int_equal(
+        test_capture(out, sizeof out, "'%s' tet '%s' -o '%s' 2>&1", SCAF_BINARY, surf, tets), 0);
     assert_non_null(strstr(out, "568 surface, 386 box"));
     assert_int_equal(test_capture(out, sizeof out, "'%s' check --json '%s'", SCAF_BINARY, tets), 0);
     assert_int_equal(test_json_field(out, "inverted") + test_json_field(out, "degenerate"), 0);

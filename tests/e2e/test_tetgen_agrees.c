@@ -33,7 +33,8 @@ static int tetgen_pairs(const char *src, const char *name, int (**pairs)[2])
     test_tmp_path(name, copy, sizeof copy);
     snprintf(log, sizeof log, "%s.tetgen.txt", copy);
     /* tetgen writes its output next to the input: work on a copy */
-    if (test_run("cp '%s' '%s' && tetgen -d '%s' > '%s' 2>&1", src, copy, copy, log) != 0) return -1;
+    if (test_run("cp '%s' '%s' && tetgen -d '%s' > '%s' 2>&1", src, copy, copy, log) != 0)
+        return -1;
     char *text = test_slurp(log);
     if (!text) return -1;
     int n = 0, cap = 64;
@@ -50,7 +51,8 @@ static int tetgen_pairs(const char *src, const char *name, int (**pairs)[2])
     qsort(*pairs, (size_t)n, sizeof **pairs, cmp_pair);
     int u = 0;
     for (int i = 0; i < n; i++)
-        if (u == 0 || cmp_pair((*pairs)[i], (*pairs)[u - 1]) != 0) memmove((*pairs)[u++], (*pairs)[i], sizeof **pairs);
+        if (u == 0 || cmp_pair((*pairs)[i], (*pairs)[u - 1]) != 0)
+            memmove((*pairs)[u++], (*pairs)[i], sizeof **pairs);
     return u;
 }
 
@@ -64,14 +66,15 @@ static void agree(const char *rel, const char *name, long long want)
     assert_int_equal(mesh_read(src, &m, &info, &e), SCAF_OK);
     si_report r;
     assert_int_equal(si_check(m.nv, m.V, m.nf, m.F, &r, &e), SCAF_OK);
-    int (*pairs)[2] = NULL;
+    int(*pairs)[2] = NULL;
     int n = tetgen_pairs(src, name, &pairs);
     assert_true(n >= 0);
     print_message("    %s: tetgen -d %d distinct pairs, scaf %lld\n", rel, n, r.pairs);
     assert_int_equal(r.pairs, want);
     assert_int_equal(n, r.pairs);
     for (int i = 0; i < n; i++)
-        assert_int_not_equal(si_classify_pair(m.V, m.F + 3 * pairs[i][0], m.F + 3 * pairs[i][1]), SI_PAIR_NONE);
+        assert_int_not_equal(si_classify_pair(m.V, m.F + 3 * pairs[i][0], m.F + 3 * pairs[i][1]),
+                             SI_PAIR_NONE);
     free(pairs);
     mesh_free(&m);
 }
@@ -80,7 +83,9 @@ static void tetgen_and_scaf_agree(void **state)
 {
     (void)state;
     char buf[1024];
-    if (test_run("command -v tetgen > /dev/null 2>&1") != 0 || !test_data_path("closed", buf, sizeof buf)) skip();
+    if (test_run("command -v tetgen > /dev/null 2>&1") != 0 ||
+        !test_data_path("closed", buf, sizeof buf))
+        skip();
     agree("closed/leg-intersect.off", "agree_leg_intersect.off", 239);
     agree("closed/leg-flow6.off", "agree_leg_flow6.off", 0);
     agree("closed/fertility.off", "agree_fertility.off", 0); /* tetgen reads OFF, not OBJ */

@@ -25,13 +25,16 @@ typedef struct threads_case {
 } threads_case;
 
 /* Run `ENV scaf CMD in -o TAG.obj CAPS EXTRA` and return the output's text. */
-static char *run_out(const threads_case *c, const char *in, const char *tag, const char *env, const char *extra)
+static char *run_out(const threads_case *c, const char *in, const char *tag, const char *env,
+                     const char *extra)
 {
     char out[512], name[256];
     snprintf(name, sizeof name, "e2e_threads_%s_%s.obj", c->name, tag);
     test_tmp_path(name, out, sizeof out);
     remove(out);
-    assert_int_equal(test_run("%s %s %s %s -o %s %s %s --quiet", env, SCAF_BINARY, c->cmd, in, out, c->caps, extra), 0);
+    assert_int_equal(test_run("%s %s %s %s -o %s %s %s --quiet", env, SCAF_BINARY, c->cmd, in, out,
+                              c->caps, extra),
+                     0);
     char *s = test_slurp(out);
     assert_non_null(s);
     remove(out);
@@ -64,12 +67,13 @@ static void run_threads_case(const threads_case *c)
     remove(out);
     static const char *const bad[] = {"0", "-1", "2x", ""};
     for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
-        assert_int_equal(test_run("%s %s %s -o %s %s --threads '%s' --quiet 2> /dev/null", SCAF_BINARY, c->cmd, in,
-                                  out, c->caps, bad[k]),
+        assert_int_equal(test_run("%s %s %s -o %s %s --threads '%s' --quiet 2> /dev/null",
+                                  SCAF_BINARY, c->cmd, in, out, c->caps, bad[k]),
                          2);
         assert_false(test_exists(out));
     }
-    assert_int_equal(test_run("%s %s %s -o %s --threads 2> /dev/null", SCAF_BINARY, c->cmd, in, out), 2);
+    assert_int_equal(
+        test_run("%s %s %s -o %s --threads 2> /dev/null", SCAF_BINARY, c->cmd, in, out), 2);
     assert_false(test_exists(out));
 }
 
@@ -83,7 +87,8 @@ static void param_threads(void **state)
 static void atlas_threads(void **state)
 {
     (void)state;
-    threads_case c = {"atlas", "cubesphere --size 40", "atlas", "--iterations 3 --compact-iterations 3"};
+    threads_case c = {"atlas", "cubesphere --size 40", "atlas",
+                      "--iterations 3 --compact-iterations 3"};
     run_threads_case(&c);
 }
 

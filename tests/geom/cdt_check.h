@@ -37,10 +37,7 @@ typedef struct cdt_builder {
     double chart_area; /* signed area enclosed by chart loops (holes negative) */
 } cdt_builder;
 
-static inline void cb_init(cdt_builder *b)
-{
-    memset(b, 0, sizeof *b);
-}
+static inline void cb_init(cdt_builder *b) { memset(b, 0, sizeof *b); }
 
 static inline void cb_free(cdt_builder *b)
 {
@@ -94,8 +91,7 @@ static inline void cb_loop(cdt_builder *b, const double *xy, int n)
         a += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
     }
     b->chart_area += 0.5 * a;
-    for (int i = 0; i < n; i++)
-        cb_segment(b, first + i, first + (i + 1) % n, 0, 1);
+    for (int i = 0; i < n; i++) cb_segment(b, first + i, first + (i + 1) % n, 0, 1);
 }
 
 /* An axis-aligned rectangle [x0, x1] x [y0, y1]: four new corners in
@@ -124,8 +120,7 @@ static inline void cb_box(cdt_builder *b, double factor, double *box_area)
     double c[2] = {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])};
     double h = 0.5 * factor * fmax(hi[0] - lo[0], hi[1] - lo[1]);
     cb_rect(b, c[0] - h, c[1] - h, c[0] + h, c[1] + h);
-    if (box_area)
-        *box_area = (2 * h) * (2 * h);
+    if (box_area) *box_area = (2 * h) * (2 * h);
 }
 
 static inline cdt_input cb_input(const cdt_builder *b)
@@ -144,7 +139,8 @@ static inline cdt_input cb_input(const cdt_builder *b)
 }
 
 /* A star-like wiggly polygon: n vertices on r(t) = r0 (1 + amp sin(k t)). */
-static inline void wiggly(double *xy, int n, double cx, double cy, double r0, double amp, int k, int cw)
+static inline void wiggly(double *xy, int n, double cx, double cy, double r0, double amp, int k,
+                          int cw)
 {
     for (int i = 0; i < n; i++) {
         double t = 2 * 3.14159265358979323846 * i / n * (cw ? -1 : 1);
@@ -155,8 +151,8 @@ static inline void wiggly(double *xy, int n, double cx, double cy, double r0, do
 }
 
 /* A wiggly chart loop (see wiggly; cw: clockwise, around a chart hole). */
-static inline void cb_wiggly_loop(cdt_builder *b, int n, double cx, double cy, double r0, double amp,
-                                  int k, int cw)
+static inline void cb_wiggly_loop(cdt_builder *b, int n, double cx, double cy, double r0,
+                                  double amp, int k, int cw)
 {
     double *xy = malloc((size_t)n * 2 * sizeof(double));
     if (!xy) {
@@ -171,8 +167,8 @@ static inline void cb_wiggly_loop(cdt_builder *b, int n, double cx, double cy, d
 /* The commonest test domain: b starts empty, gets one counter-clockwise
  * wiggly chart (see wiggly) and the 3x scaffold box (area into box_area
  * when given). */
-static inline void cb_wiggly_in_box(cdt_builder *b, int n, double cx, double cy, double r0, double amp,
-                                    int k, double *box_area)
+static inline void cb_wiggly_in_box(cdt_builder *b, int n, double cx, double cy, double r0,
+                                    double amp, int k, double *box_area)
 {
     cb_init(b);
     cb_wiggly_loop(b, n, cx, cy, r0, amp, k, 0);
@@ -184,11 +180,11 @@ static inline void cb_wiggly_in_box(cdt_builder *b, int n, double cx, double cy,
 typedef struct cdt_check_stats {
     int ok;
     char why[256];
-    double min_angle_all;    /* degrees, over all triangles */
-    double min_angle_free;   /* over triangles touching no unsplittable segment vertex */
-    int nfree, nfree_bad;    /* such triangles, and those below the bound */
-    double area;             /* sum of triangle areas */
-    int euler;               /* V - E + F */
+    double min_angle_all;  /* degrees, over all triangles */
+    double min_angle_free; /* over triangles touching no unsplittable segment vertex */
+    int nfree, nfree_bad;  /* such triangles, and those below the bound */
+    double area;           /* sum of triangle areas */
+    int euler;             /* V - E + F */
 } cdt_check_stats;
 
 static inline int cmp_u64(const void *a, const void *b)
@@ -212,11 +208,11 @@ static inline int has_key(const uint64_t *k, int n, uint64_t x)
     return bsearch(&x, k, (size_t)n, sizeof *k, cmp_u64) != NULL;
 }
 
-#define CDT_FAIL(...)                                                   \
-    do {                                                                \
-        snprintf(st->why, sizeof st->why, __VA_ARGS__);                 \
-        st->ok = 0;                                                     \
-        goto done;                                                      \
+#define CDT_FAIL(...)                                                                              \
+    do {                                                                                           \
+        snprintf(st->why, sizeof st->why, __VA_ARGS__);                                            \
+        st->ok = 0;                                                                                \
+        goto done;                                                                                 \
     } while (0)
 
 /* winding number of q with respect to the chart loops of b */
@@ -227,8 +223,7 @@ static inline int chart_winding(const cdt_builder *b, const double *q)
         for (int s = b->loop_start[l]; s < b->loop_start[l] + b->loop_len[l]; s++) {
             const double *pa = b->pts + 2 * b->seg[2 * s], *pb = b->pts + 2 * b->seg[2 * s + 1];
             if (pa[1] <= q[1]) {
-                if (pb[1] > q[1] && orient2d(pa, pb, q) > 0)
-                    wn++;
+                if (pb[1] > q[1] && orient2d(pa, pb, q) > 0) wn++;
             } else if (pb[1] <= q[1] && orient2d(pa, pb, q) < 0) {
                 wn--;
             }
@@ -244,9 +239,9 @@ static inline double tri_min_angle(const double *a, const double *b, const doubl
     for (int i = 0; i < 3; i++) {
         const double *o = p[i], *u = p[(i + 1) % 3], *w = p[(i + 2) % 3];
         double ux = u[0] - o[0], uy = u[1] - o[1], wx = w[0] - o[0], wy = w[1] - o[1];
-        double ang = atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / 3.14159265358979323846;
-        if (ang < best)
-            best = ang;
+        double ang =
+            atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / 3.14159265358979323846;
+        if (ang < best) best = ang;
     }
     return best;
 }
@@ -255,7 +250,7 @@ static inline double tri_min_angle(const double *a, const double *b, const doubl
  * characteristic (or INT32_MIN to skip); check_winding: test centroids
  * against the chart loops. */
 static inline cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options *opt,
-                                 const cdt_output *out, int expect_chi, int check_winding)
+                                        const cdt_output *out, int expect_chi, int check_winding)
 {
     cdt_check_stats s0;
     memset(&s0, 0, sizeof s0);
@@ -269,34 +264,30 @@ static inline cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options 
     int ne = 0;
 
     /* input points first, unchanged */
-    if (P < b->np)
-        CDT_FAIL("fewer output points (%d) than input points (%d)", P, b->np);
+    if (P < b->np) CDT_FAIL("fewer output points (%d) than input points (%d)", P, b->np);
     for (int i = 0; i < b->np; i++)
         if (out->points[2 * i] != b->pts[2 * i] || out->points[2 * i + 1] != b->pts[2 * i + 1])
             CDT_FAIL("output point %d moved", i);
     for (int s = 0; s < b->ns; s++)
-        if (!b->split[s])
-            chartv[b->seg[2 * s]] = chartv[b->seg[2 * s + 1]] = 1;
+        if (!b->split[s]) chartv[b->seg[2 * s]] = chartv[b->seg[2 * s + 1]] = 1;
 
     /* orientation, neighbours, edges */
     for (int t = 0; t < T; t++) {
         const int *v = out->triangles + 3 * t;
         for (int k = 0; k < 3; k++) {
-            if (v[k] < 0 || v[k] >= P)
-                CDT_FAIL("triangle %d has vertex %d out of range", t, v[k]);
+            if (v[k] < 0 || v[k] >= P) CDT_FAIL("triangle %d has vertex %d out of range", t, v[k]);
             used[v[k]] = 1;
             edges[ne++] = ekey(v[(k + 1) % 3], v[(k + 2) % 3]);
         }
         const double *a = out->points + 2 * v[0], *bb = out->points + 2 * v[1],
                      *c = out->points + 2 * v[2];
         if (!(orient2d(a, bb, c) > 0))
-            CDT_FAIL("triangle %d (%d %d %d) is not strictly counter-clockwise", t, v[0], v[1], v[2]);
+            CDT_FAIL("triangle %d (%d %d %d) is not strictly counter-clockwise", t, v[0], v[1],
+                     v[2]);
         for (int k = 0; k < 3; k++) {
             int n = out->neighbors[3 * t + k];
-            if (n < 0)
-                continue;
-            if (n >= T)
-                CDT_FAIL("triangle %d neighbour out of range", t);
+            if (n < 0) continue;
+            if (n >= T) CDT_FAIL("triangle %d neighbour out of range", t);
             int back = 0;
             for (int j = 0; j < 3; j++)
                 if (out->neighbors[3 * n + j] == t) {
@@ -313,10 +304,8 @@ static inline cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options 
         if (!chartv[v[0]] && !chartv[v[1]] && !chartv[v[2]]) {
             st->nfree++;
             st->min_angle_free = fmin(st->min_angle_free, ang);
-            if (opt && opt->min_angle_deg > 0 && ang < opt->min_angle_deg - 1e-9)
-                st->nfree_bad++;
-            if (opt && opt->max_area > 0 &&
-                0.5 * orient2d(a, bb, c) > opt->max_area * (1 + 1e-9))
+            if (opt && opt->min_angle_deg > 0 && ang < opt->min_angle_deg - 1e-9) st->nfree_bad++;
+            if (opt && opt->max_area > 0 && 0.5 * orient2d(a, bb, c) > opt->max_area * (1 + 1e-9))
                 CDT_FAIL("triangle %d exceeds the maximum area", t);
         }
         if (check_winding) {
@@ -326,13 +315,11 @@ static inline cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options 
         }
     }
     for (int i = 0; i < P; i++)
-        if (!used[i])
-            CDT_FAIL("output point %d is in no triangle", i);
+        if (!used[i]) CDT_FAIL("output point %d is in no triangle", i);
     qsort(edges, (size_t)ne, sizeof *edges, cmp_u64);
     int nu = 0;
     for (int i = 0; i < ne; i++)
-        if (nu == 0 || edges[i] != edges[nu - 1])
-            edges[nu++] = edges[i];
+        if (nu == 0 || edges[i] != edges[nu - 1]) edges[nu++] = edges[i];
     st->euler = P - nu + T;
     if (expect_chi != INT32_MIN && st->euler != expect_chi)
         CDT_FAIL("Euler characteristic V-E+F = %d-%d+%d = %d, expected %d", P, nu, T, st->euler,
@@ -341,12 +328,12 @@ static inline cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options 
     /* segments */
     for (int i = 0; i < out->nsubsegments; i++) {
         int u = out->subsegments[2 * i], w = out->subsegments[2 * i + 1], s = out->subsegment_of[i];
-        if (s < 0 || s >= b->ns)
-            CDT_FAIL("subsegment %d names segment %d", i, s);
+        if (s < 0 || s >= b->ns) CDT_FAIL("subsegment %d names segment %d", i, s);
         if (!has_key(edges, nu, ekey(u, w)))
             CDT_FAIL("subsegment %d (%d %d) is not an edge", i, u, w);
         const double *pa = b->pts + 2 * b->seg[2 * s], *pb = b->pts + 2 * b->seg[2 * s + 1];
-        if (orient2d(pa, pb, out->points + 2 * u) != 0 || orient2d(pa, pb, out->points + 2 * w) != 0)
+        if (orient2d(pa, pb, out->points + 2 * u) != 0 ||
+            orient2d(pa, pb, out->points + 2 * w) != 0)
             CDT_FAIL("subsegment %d is off its segment %d", i, s);
         subs[i] = ekey(u, w);
     }
@@ -358,8 +345,9 @@ static inline cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options 
                 CDT_FAIL("unsplittable segment %d (%d %d) is not an output edge", s, u, w);
         } else {
             /* the chain: subsegments of s must connect u to w */
-            double len = 0, want = hypot(b->pts[2 * w] - b->pts[2 * u],
-                                         b->pts[2 * w + 1] - b->pts[2 * u + 1]);
+            double len = 0,
+                   want =
+                       hypot(b->pts[2 * w] - b->pts[2 * u], b->pts[2 * w + 1] - b->pts[2 * u + 1]);
             for (int i = 0; i < out->nsubsegments; i++)
                 if (out->subsegment_of[i] == s) {
                     const double *p = out->points + 2 * out->subsegments[2 * i];
@@ -368,10 +356,8 @@ static inline cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options 
                 }
             int dup = 0; /* a segment given twice is kept (and reported) once */
             for (int s2 = 0; s2 < b->ns; s2++)
-                if (s2 != s && ekey(b->seg[2 * s2], b->seg[2 * s2 + 1]) == ekey(u, w))
-                    dup = 1;
-            if (dup && len == 0)
-                continue;
+                if (s2 != s && ekey(b->seg[2 * s2], b->seg[2 * s2 + 1]) == ekey(u, w)) dup = 1;
+            if (dup && len == 0) continue;
             if (fabs(len - want) > 1e-9 * want)
                 CDT_FAIL("splittable segment %d: chain length %.17g, segment %.17g", s, len, want);
         }
@@ -385,16 +371,13 @@ static inline cdt_check_stats cdt_check(const cdt_builder *b, const cdt_options 
             int u = v[(k + 1) % 3], w = v[(k + 2) % 3];
             int is_sub = has_key(subs, out->nsubsegments, ekey(u, w));
             if (n < 0) {
-                if (!is_sub)
-                    CDT_FAIL("triangle %d: boundary edge %d-%d is on no segment", t, u, w);
+                if (!is_sub) CDT_FAIL("triangle %d: boundary edge %d-%d is on no segment", t, u, w);
                 continue;
             }
-            if (is_sub)
-                continue;
+            if (is_sub) continue;
             int opp = -1;
             for (int j = 0; j < 3; j++)
-                if (out->neighbors[3 * n + j] == t)
-                    opp = out->triangles[3 * n + j];
+                if (out->neighbors[3 * n + j] == t) opp = out->triangles[3 * n + j];
             if (incircle(out->points + 2 * v[0], out->points + 2 * v[1], out->points + 2 * v[2],
                          out->points + 2 * opp) > 0)
                 CDT_FAIL("triangles %d and %d: edge %d-%d is not constrained Delaunay", t, n, u, w);

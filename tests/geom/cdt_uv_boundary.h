@@ -24,8 +24,7 @@ typedef struct cb_uv_side {
 static inline int cb_uv_side_cmp(const void *x, const void *y)
 {
     const cb_uv_side *p = x, *q = y;
-    if (p->lo != q->lo)
-        return p->lo < q->lo ? -1 : 1;
+    if (p->lo != q->lo) return p->lo < q->lo ? -1 : 1;
     return (p->hi > q->hi) - (p->hi < q->hi);
 }
 
@@ -54,14 +53,12 @@ static inline int cb_uv_boundary(const mesh *m, cdt_builder *b)
         }
     }
     qsort(e, (size_t)m->nf * 3, sizeof *e, cb_uv_side_cmp);
-    for (int i = 0; i < m->nuv; i++)
-        map[i] = -1;
+    for (int i = 0; i < m->nuv; i++) map[i] = -1;
     b->loop_start[0] = 0;
     b->nloops = 1;
     for (int i = 0; i < 3 * m->nf;) {
         int j = i;
-        while (j < 3 * m->nf && e[j].lo == e[i].lo && e[j].hi == e[i].hi)
-            j++;
+        while (j < 3 * m->nf && e[j].lo == e[i].lo && e[j].hi == e[i].hi) j++;
         if (j - i == 1) {
             int ends[2] = {e[i].ccw ? e[i].a : e[i].b, e[i].ccw ? e[i].b : e[i].a};
             for (int k = 0; k < 2; k++)

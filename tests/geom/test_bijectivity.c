@@ -32,9 +32,8 @@ static void ccw_triangle_is_bijective(void **state)
     double UV[] = {0, 0, 1, 0, 0, 1};
     int F[] = {0, 1, 2};
     bij_report r = run(3, UV, 1, F);
-    EXPECT_COUNTS("ccw_triangle_is_bijective",
-        HAS(r.triangles, 1), HAS(r.positive, 1), HAS(r.charts, 1), HAS(r.boundary_edges, 3),
-        HAS(r.boundary_loops, 1));
+    EXPECT_COUNTS("ccw_triangle_is_bijective", HAS(r.triangles, 1), HAS(r.positive, 1),
+                  HAS(r.charts, 1), HAS(r.boundary_edges, 3), HAS(r.boundary_loops, 1));
     assert_true(r.bijective);
 }
 
@@ -46,8 +45,8 @@ static void cw_triangle_is_a_mirrored_chart(void **state)
     signed char o[1];
     bij_report r;
     assert_int_equal(bij_check(3, UV, 1, F, NULL, o, &r, NULL), SCAF_OK);
-    EXPECT_COUNTS("cw_triangle_is_a_mirrored_chart",
-        HAS(o[0], -1), HAS(r.flipped, 1), HAS(r.mirrored_charts, 1), HAS(r.mixed_charts, 0));
+    EXPECT_COUNTS("cw_triangle_is_a_mirrored_chart", HAS(o[0], -1), HAS(r.flipped, 1),
+                  HAS(r.mirrored_charts, 1), HAS(r.mixed_charts, 0));
     assert_false(r.bijective);
 }
 
@@ -60,9 +59,8 @@ static void degenerate_triangles(void **state)
     signed char o[5];
     bij_report r;
     assert_int_equal(bij_check(6, UV, 5, F, NULL, o, &r, NULL), SCAF_OK);
-    EXPECT_COUNTS("degenerate_triangles",
-        HAS(o[3], 0), /* (0,0), (1,1), (2,2) */
-        HAS(o[4], 0), HAS(r.degenerate, 2), HAS(r.flipped, 0));
+    EXPECT_COUNTS("degenerate_triangles", HAS(o[3], 0), /* (0,0), (1,1), (2,2) */
+                  HAS(o[4], 0), HAS(r.degenerate, 2), HAS(r.flipped, 0));
     assert_false(r.bijective);
 }
 
@@ -97,9 +95,8 @@ static void two_triangles_crossing(void **state)
     double UV[] = {0, 4, -4, -2, 4, -2, 0, -4, 4, 2, -4, 2};
     int F[] = {0, 1, 2, 3, 4, 5};
     bij_report r = run(6, UV, 2, F);
-    EXPECT_COUNTS("two_triangles_crossing",
-        HAS(r.positive, 2), HAS(r.charts, 2), HAS(r.boundary_crossings, 6),
-        HAS(r.boundary_touchings, 0));
+    EXPECT_COUNTS("two_triangles_crossing", HAS(r.positive, 2), HAS(r.charts, 2),
+                  HAS(r.boundary_crossings, 6), HAS(r.boundary_touchings, 0));
     assert_false(r.bijective);
 }
 
@@ -110,9 +107,9 @@ static void touching_at_shared_vertex_index_is_fine(void **state)
     double UV[] = {0, 0, 1, -1, 1, 1, -1, 1, -1, -1};
     int F[] = {0, 1, 2, 0, 3, 4};
     bij_report r = run(5, UV, 2, F);
-    EXPECT_COUNTS("touching_at_shared_vertex_index_is_fine",
-        HAS(r.charts, 2), HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 0),
-        HAS(r.nested_loops, 0));
+    EXPECT_COUNTS("touching_at_shared_vertex_index_is_fine", HAS(r.charts, 2),
+                  HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 0),
+                  HAS(r.nested_loops, 0));
     assert_true(r.bijective);
 }
 
@@ -123,9 +120,9 @@ static void touching_at_coincident_distinct_vertices(void **state)
     double UV[] = {0, 0, 1, -1, 1, 1, -1, 1, -1, -1, 0, 0};
     int F[] = {0, 1, 2, 5, 3, 4};
     bij_report r = run(6, UV, 2, F);
-    EXPECT_COUNTS("touching_at_coincident_distinct_vertices",
-        HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 4), /* 2 segments at each copy */
-        HAS(r.nested_loops, 0));
+    EXPECT_COUNTS("touching_at_coincident_distinct_vertices", HAS(r.boundary_crossings, 0),
+                  HAS(r.boundary_touchings, 4), /* 2 segments at each copy */
+                  HAS(r.nested_loops, 0));
     assert_false(r.bijective);
 }
 
@@ -135,8 +132,7 @@ static void collinear_overlapping_edges(void **state)
     double UV[] = {0, 0, 2, 0, 1, 1, 1, 0, 2, -1, 3, 0};
     int F[] = {0, 1, 2, 3, 4, 5};
     bij_report r = run(6, UV, 2, F);
-    EXPECT_COUNTS("collinear_overlapping_edges",
-        HAS(r.positive, 2), HAS(r.boundary_crossings, 0));
+    EXPECT_COUNTS("collinear_overlapping_edges", HAS(r.positive, 2), HAS(r.boundary_crossings, 0));
     /* (0,0)-(2,0) overlaps (3,0)-(1,0); (1,0) lies on it; (2,0) lies on
      * (3,0)-(1,0) as the end of (2,0)-(1,1) */
     assert_int_equal(r.boundary_touchings, 3);
@@ -151,9 +147,9 @@ static void boundary_folding_back(void **state)
     double UV[] = {0, 0, 2, 0, 1, 1, 1, 0, 1, -1};
     int F[] = {0, 1, 2, 0, 4, 3};
     bij_report r = run(5, UV, 2, F);
-    EXPECT_COUNTS("boundary_folding_back",
-        HAS(r.positive, 2), HAS(r.boundary_crossings, 0), HAS(r.boundary_foldbacks, 1),
-        HAS(r.boundary_touchings, 1)); /* 4-3 ends at (1,0), inside 0-1 */
+    EXPECT_COUNTS("boundary_folding_back", HAS(r.positive, 2), HAS(r.boundary_crossings, 0),
+                  HAS(r.boundary_foldbacks, 1),
+                  HAS(r.boundary_touchings, 1)); /* 4-3 ends at (1,0), inside 0-1 */
     assert_false(r.bijective);
 }
 
@@ -164,8 +160,7 @@ static void folded_and_nonmanifold_edges(void **state)
     double UV[] = {0, 0, 2, 0, 1, 1, 1, 2, 1, -1};
     int F[] = {0, 1, 2, 0, 1, 3};
     bij_report r = run(5, UV, 2, F);
-    EXPECT_COUNTS("folded_and_nonmanifold_edges",
-        HAS(r.positive, 2), HAS(r.folded_edges, 1));
+    EXPECT_COUNTS("folded_and_nonmanifold_edges", HAS(r.positive, 2), HAS(r.folded_edges, 1));
     assert_false(r.bijective);
     int G[] = {0, 1, 2, 1, 0, 4, 0, 1, 3};
     r = run(5, UV, 3, G);
@@ -195,23 +190,22 @@ static void chart_nested_in_a_hole(void **state)
     memcpy(UV + 16, small, sizeof small);
     F[24] = 8, F[25] = 9, F[26] = 10;
     bij_report r = run(11, UV, 9, F);
-    EXPECT_COUNTS("small chart in the annulus hole",
-        HAS(r.positive, 9), HAS(r.charts, 2), HAS(r.boundary_loops, 3), HAS(r.nested_loops, 0),
-        HAS(r.boundary_crossings, 0));
+    EXPECT_COUNTS("small chart in the annulus hole", HAS(r.positive, 9), HAS(r.charts, 2),
+                  HAS(r.boundary_loops, 3), HAS(r.nested_loops, 0), HAS(r.boundary_crossings, 0));
     assert_true(r.bijective);
     /* the same chart moved into the annulus body: no contact, but overlap */
     for (int i = 0; i < 3; i++) UV[16 + 2 * i] -= 3.0;
     r = run(11, UV, 9, F);
-    EXPECT_COUNTS("small chart moved into the annulus body",
-        HAS(r.boundary_crossings, 0), HAS(r.boundary_touchings, 0), HAS(r.nested_loops, 1));
+    EXPECT_COUNTS("small chart moved into the annulus body", HAS(r.boundary_crossings, 0),
+                  HAS(r.boundary_touchings, 0), HAS(r.nested_loops, 1));
     assert_false(r.bijective);
     /* a chart covering the whole annulus hole and more: its loop encloses
      * the annulus' inner loop, which lands inside it */
     double big[] = {-20, -20, 30, -20, 5, 30};
     memcpy(UV + 16, big, sizeof big);
     r = run(11, UV, 9, F);
-    EXPECT_COUNTS("big chart around the annulus hole",
-        HAS(r.boundary_crossings, 0), HAS(r.nested_loops, 2)); /* both loops of the annulus */
+    EXPECT_COUNTS("big chart around the annulus hole", HAS(r.boundary_crossings, 0),
+                  HAS(r.nested_loops, 2)); /* both loops of the annulus */
     assert_false(r.bijective);
 }
 
@@ -221,16 +215,16 @@ static void chart_inside_a_triangle(void **state)
     double UV[] = {0, 0, 100, 0, 0, 100, 1, 1, 2, 1, 1, 2};
     int F[] = {0, 1, 2, 3, 4, 5};
     bij_report r = run(6, UV, 2, F);
-    EXPECT_COUNTS("chart inside a big triangle",
-        HAS(r.boundary_crossings, 0), HAS(r.nested_loops, 1));
+    EXPECT_COUNTS("chart inside a big triangle", HAS(r.boundary_crossings, 0),
+                  HAS(r.nested_loops, 1));
     assert_false(r.bijective);
     /* a square of two triangles; the small chart's vertex exactly on the
      * interior diagonal, the rest inside */
     double S[] = {0, 0, 4, 0, 4, 4, 0, 4, 2, 2, 3, 2, 3, 2.5};
     int G[] = {0, 1, 2, 0, 2, 3, 4, 5, 6};
     r = run(7, S, 3, G);
-    EXPECT_COUNTS("chart vertex on a square's diagonal",
-        HAS(r.boundary_touchings, 0), HAS(r.nested_loops, 1));
+    EXPECT_COUNTS("chart vertex on a square's diagonal", HAS(r.boundary_touchings, 0),
+                  HAS(r.nested_loops, 1));
     assert_false(r.bijective);
     /* same, with the small chart outside the square */
     for (int i = 4; i < 7; i++) S[2 * i] += 10;
@@ -259,21 +253,19 @@ static void overlap_at_a_pinch_point(void **state)
     assert_int_equal(r.positive, 7);
     assert_int_equal(r.folded_edges + r.nonmanifold_edges, 0);
     assert_int_equal(r.boundary_crossings + r.boundary_touchings + r.boundary_foldbacks, 0);
-    EXPECT_COUNTS("triangle on hexagon chords",
-        HAS(r.nested_loops, 0), HAS(r.corner_overlaps, 3));
+    EXPECT_COUNTS("triangle on hexagon chords", HAS(r.nested_loops, 0), HAS(r.corner_overlaps, 3));
     assert_false(r.bijective);
     /* three triangles around point 0 and a fourth one joined only there:
      * inside the fan's third triangle, then in the empty quadrant */
     double V[] = {0, 0, 4, 0, 0, 4, -4, 0, 0, -4, -1, -1, -3, -1};
     int G[] = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 6, 5};
     r = run(7, V, 4, G);
-    EXPECT_COUNTS("fourth triangle inside the fan",
-        HAS(r.positive, 4), HAS(r.corner_overlaps, 1));
+    EXPECT_COUNTS("fourth triangle inside the fan", HAS(r.positive, 4), HAS(r.corner_overlaps, 1));
     assert_false(r.bijective);
     V[10] = 3, V[11] = -1, V[12] = 1, V[13] = -3;
     r = run(7, V, 4, G);
-    EXPECT_COUNTS("fourth triangle in the empty quadrant",
-        HAS(r.positive, 4), HAS(r.corner_overlaps, 0));
+    EXPECT_COUNTS("fourth triangle in the empty quadrant", HAS(r.positive, 4),
+                  HAS(r.corner_overlaps, 0));
     assert_true(r.bijective);
 }
 
@@ -283,15 +275,14 @@ static void mirrored_chart_among_good_ones(void **state)
     double UV[] = {0, 0, 1, 0, 1, 1, 0, 1, 5, 0, 6, 0, 6, 1, 5, 1};
     int F[] = {0, 1, 2, 0, 2, 3, 4, 6, 5, 4, 7, 6};
     bij_report r = run(8, UV, 4, F);
-    EXPECT_COUNTS("mirrored chart among good ones",
-        HAS(r.charts, 2), HAS(r.flipped, 2), HAS(r.mirrored_charts, 1), HAS(r.mixed_charts, 0),
-        HAS(r.boundary_crossings, 0), HAS(r.nested_loops, 0));
+    EXPECT_COUNTS("mirrored chart among good ones", HAS(r.charts, 2), HAS(r.flipped, 2),
+                  HAS(r.mirrored_charts, 1), HAS(r.mixed_charts, 0), HAS(r.boundary_crossings, 0),
+                  HAS(r.nested_loops, 0));
     assert_false(r.bijective);
     /* given chart ids override the computed ones */
     int chart[] = {7, 7, 7, 7};
     assert_int_equal(bij_check(8, UV, 4, F, chart, NULL, &r, NULL), SCAF_OK);
-    EXPECT_COUNTS("given chart ids override",
-        HAS(r.charts, 1), HAS(r.mixed_charts, 1));
+    EXPECT_COUNTS("given chart ids override", HAS(r.charts, 1), HAS(r.mixed_charts, 1));
 }
 
 static void bad_input_is_an_error(void **state)
@@ -369,8 +360,8 @@ static void large_grid_layouts(void **state)
     (void)state;
     layout L = grid_layout(6, 5, 40, 12345);
     bij_report r = run(L.nuv, L.UV, L.nf, L.F);
-    EXPECT_COUNTS("large_grid_layouts",
-        HAS(r.charts, 30), HAS(r.boundary_loops, 30), HAS(r.boundary_edges, 30 * 160));
+    EXPECT_COUNTS("large_grid_layouts", HAS(r.charts, 30), HAS(r.boundary_loops, 30),
+                  HAS(r.boundary_edges, 30 * 160));
     assert_int_equal(r.flipped + r.degenerate, 0);
     assert_int_equal(r.boundary_crossings + r.boundary_touchings, 0);
     assert_true(r.bijective);
@@ -478,7 +469,7 @@ static void pair_counts_match_brute_force(void **state)
         char label[64];
         snprintf(label, sizeof label, "pair counts, round %d", round);
         EXPECT_COUNTS(label, HAS(r.boundary_crossings, cross), HAS(r.boundary_touchings, touch),
-            HAS(r.boundary_foldbacks, fold));
+                      HAS(r.boundary_foldbacks, fold));
         seen_cross += cross, seen_touch += touch, seen_fold += fold;
         free(E);
         free(UV);
@@ -522,7 +513,7 @@ static int conflict(const double *UV, const int *t1, const int *t2)
             if (!in1[i]) d = t2[i];
         }
         return sgn(orient2d(UV + 2 * a, UV + 2 * b, UV + 2 * c)) ==
-               sgn(orient2d(UV + 2 * a, UV + 2 * b, UV + 2 * d));
+            sgn(orient2d(UV + 2 * a, UV + 2 * b, UV + 2 * d));
     }
     for (int i = 0; i < 3; i++) {
         if (!in2[i] && in_closed(UV + 2 * t2[0], UV + 2 * t2[1], UV + 2 * t2[2], UV + 2 * t1[i]))
@@ -590,10 +581,8 @@ static void verdict_matches_brute_force_oracle(void **state)
                     if (ring && i == 1 && j == 1) continue;
                     int a = base + j * (w + 1) + i, b = a + 1, c = a + w + 2, d = a + w + 1;
                     int *t = F + 3 * nf;
-                    if (rnd(&s) & 1)
-                        t[0] = a, t[1] = b, t[2] = c, t[3] = a, t[4] = c, t[5] = d;
-                    else
-                        t[0] = a, t[1] = b, t[2] = d, t[3] = b, t[4] = c, t[5] = d;
+                    if (rnd(&s) & 1) t[0] = a, t[1] = b, t[2] = c, t[3] = a, t[4] = c, t[5] = d;
+                    else t[0] = a, t[1] = b, t[2] = d, t[3] = b, t[4] = c, t[5] = d;
                     nf += 2;
                 }
         }
@@ -615,13 +604,13 @@ static void verdict_matches_brute_force_oracle(void **state)
         assert_int_equal(bij_check(nuv, UV, nf, F, NULL, NULL, &r, NULL), SCAF_OK);
         int want = oracle_bijective(UV, nf, F);
         if (r.bijective != want) {
-            print_error("round %d: checker says %d, oracle %d (nf %d)\n", round, r.bijective,
-                        want, nf);
+            print_error("round %d: checker says %d, oracle %d (nf %d)\n", round, r.bijective, want,
+                        nf);
             for (int t = 0; t < nf; t++)
-                print_error("  t%d: %d(%g,%g) %d(%g,%g) %d(%g,%g)\n", t, F[3 * t],
-                            UV[2 * F[3 * t]], UV[2 * F[3 * t] + 1], F[3 * t + 1],
-                            UV[2 * F[3 * t + 1]], UV[2 * F[3 * t + 1] + 1], F[3 * t + 2],
-                            UV[2 * F[3 * t + 2]], UV[2 * F[3 * t + 2] + 1]);
+                print_error("  t%d: %d(%g,%g) %d(%g,%g) %d(%g,%g)\n", t, F[3 * t], UV[2 * F[3 * t]],
+                            UV[2 * F[3 * t] + 1], F[3 * t + 1], UV[2 * F[3 * t + 1]],
+                            UV[2 * F[3 * t + 1] + 1], F[3 * t + 2], UV[2 * F[3 * t + 2]],
+                            UV[2 * F[3 * t + 2] + 1]);
         }
         assert_int_equal(r.bijective, want);
         if (want) agree_yes++;
@@ -642,7 +631,8 @@ static void extreme_aspect_ratio(void **state)
     bij_report r;
     scaf_error err;
     for (int k = -16; k <= 16; k++) {
-        double UV[6] = {ldexp(1.4920950996161134e+34, k), ldexp(1.25e-321, k < 0 ? 0 : k), 0, 0, 0, 0};
+        double UV[6] = {
+            ldexp(1.4920950996161134e+34, k), ldexp(1.25e-321, k < 0 ? 0 : k), 0, 0, 0, 0};
         assert_int_equal(bij_check(3, UV, 1, F, NULL, NULL, &r, &err), SCAF_OK);
         assert_int_equal(r.triangles, 1);
     }

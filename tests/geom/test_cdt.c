@@ -19,8 +19,7 @@ static cdt_output run_ok(const cdt_builder *b, const cdt_options *opt)
     scaf_error err;
     err_clear(&err);
     scaf_status s = cdt_triangulate(&in, opt, &out, &err);
-    if (s != SCAF_OK)
-        fail_msg("cdt_triangulate failed: %s", err.message);
+    if (s != SCAF_OK) fail_msg("cdt_triangulate failed: %s", err.message);
     return out;
 }
 
@@ -28,16 +27,15 @@ static void assert_checked(const cdt_builder *b, const cdt_options *opt, const c
                            int chi)
 {
     cdt_check_stats st = cdt_check(b, opt, out, chi, 1);
-    if (!st.ok)
-        fail_msg("%s", st.why);
+    if (!st.ok) fail_msg("%s", st.why);
     if (opt && opt->min_angle_deg > 0 && st.nfree_bad > 0)
-        fail_msg("%d of %d triangles away from charts are below %g degrees (min %g)",
-                 st.nfree_bad, st.nfree, opt->min_angle_deg, st.min_angle_free);
+        fail_msg("%d of %d triangles away from charts are below %g degrees (min %g)", st.nfree_bad,
+                 st.nfree, opt->min_angle_deg, st.min_angle_free);
 }
 
 /* The triangles cover exactly the expected area (relative to `scale`). */
-static void assert_area(const cdt_builder *b, const cdt_options *opt, const cdt_output *out, int chi,
-                        double want, double scale)
+static void assert_area(const cdt_builder *b, const cdt_options *opt, const cdt_output *out,
+                        int chi, double want, double scale)
 {
     double got = cdt_check(b, opt, out, chi, 0).area;
     if (!(fabs(got - want) < 1e-9 * scale))
@@ -114,8 +112,7 @@ static void chart_with_hole_and_nested_chart(void **state)
     int inside = 0;
     for (int t = 0; t < out.ntriangles; t++) {
         const double *p = out.points + 2 * out.triangles[3 * t];
-        if (hypot(p[0], p[1]) < 1.0)
-            inside++;
+        if (hypot(p[0], p[1]) < 1.0) inside++;
     }
     assert_true(inside > 0);
     cdt_output_free(&out);
@@ -127,8 +124,7 @@ static void hole_seeds_work_like_flags(void **state)
     (void)state;
     cdt_builder b;
     cb_wiggly_in_box(&b, 50, 0, 0, 1.0, 0.1, 3, NULL);
-    for (int s = 0; s < b.ns; s++)
-        b.hole[s] = 0;
+    for (int s = 0; s < b.ns; s++) b.hole[s] = 0;
     b.seeds = malloc(2 * sizeof(double));
     b.seeds[0] = 0.01;
     b.seeds[1] = 0.02;
@@ -157,8 +153,7 @@ static void chart_edges_are_never_split(void **state)
     assert_checked(&b, NULL, &out, 0);
     int chart_subs = 0;
     for (int i = 0; i < out.nsubsegments; i++)
-        if (!b.split[out.subsegment_of[i]])
-            chart_subs++;
+        if (!b.split[out.subsegment_of[i]]) chart_subs++;
     assert_int_equal(chart_subs, 7);
     cdt_output_free(&out);
     cb_free(&b);
@@ -351,7 +346,8 @@ static void build_bad_segment_index(cdt_builder *b)
 
 static void build_overlapping_collinear(cdt_builder *b)
 {
-    int p0 = cb_point(b, 0, 0), p1 = cb_point(b, 2, 0), p2 = cb_point(b, 1, 0), p3 = cb_point(b, 3, 0);
+    int p0 = cb_point(b, 0, 0), p1 = cb_point(b, 2, 0), p2 = cb_point(b, 1, 0),
+        p3 = cb_point(b, 3, 0);
     cb_segment(b, p0, p1, 0, 0);
     cb_segment(b, p2, p3, 0, 0);
     cb_box(b, 3, NULL);
@@ -390,7 +386,9 @@ static void invalid_input_fails(void **state)
 
 /* one cmocka test per row, named after it */
 #define INVALID_CASE(i)                                                                            \
-    { invalid_cases[i].name, invalid_input_fails, NULL, NULL, (void *)&invalid_cases[i] }
+    {                                                                                              \
+        invalid_cases[i].name, invalid_input_fails, NULL, NULL, (void *)&invalid_cases[i]          \
+    }
 
 int main(void)
 {
@@ -407,8 +405,12 @@ int main(void)
         cmocka_unit_test(steiner_cap_is_respected),
         cmocka_unit_test(isolated_points_become_vertices),
         cmocka_unit_test(empty_and_trivial_inputs),
-        INVALID_CASE(0), INVALID_CASE(1), INVALID_CASE(2),
-        INVALID_CASE(3), INVALID_CASE(4), INVALID_CASE(5),
+        INVALID_CASE(0),
+        INVALID_CASE(1),
+        INVALID_CASE(2),
+        INVALID_CASE(3),
+        INVALID_CASE(4),
+        INVALID_CASE(5),
     };
     _Static_assert(sizeof invalid_cases / sizeof invalid_cases[0] == 6,
                    "one INVALID_CASE entry per row of invalid_cases");

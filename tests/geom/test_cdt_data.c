@@ -25,20 +25,17 @@
 static int uv_builder(const char *rel, cdt_builder *b)
 {
     char path[4096];
-    if (!test_data_path(rel, path, sizeof path))
-        return -1;
+    if (!test_data_path(rel, path, sizeof path)) return -1;
     mesh m;
     scaf_error err;
-    if (mesh_read(path, &m, NULL, &err) != SCAF_OK)
-        fail_msg("%s", err.message);
+    if (mesh_read(path, &m, NULL, &err) != SCAF_OK) fail_msg("%s", err.message);
     if (!mesh_has_uv(&m)) {
         mesh_free(&m);
         return 0;
     }
     int ok = cb_uv_boundary(&m, b);
     mesh_free(&m);
-    if (!ok)
-        fail_msg("%s: out of memory", rel);
+    if (!ok) fail_msg("%s: out of memory", rel);
     return 1;
 }
 
@@ -46,24 +43,20 @@ static void mesh_uv_scaffold(const char *rel)
 {
     cdt_builder b;
     int r = uv_builder(rel, &b);
-    if (r < 0)
-        skip();
+    if (r < 0) skip();
     assert_int_equal(r, 1);
     cdt_input in = cb_input(&b);
     cdt_options opt = cdt_default_options();
     cdt_output out;
     scaf_error err;
-    if (cdt_triangulate(&in, &opt, &out, &err) != SCAF_OK)
-        fail_msg("%s: %s", rel, err.message);
+    if (cdt_triangulate(&in, &opt, &out, &err) != SCAF_OK) fail_msg("%s: %s", rel, err.message);
     cdt_check_stats st = cdt_check(&b, &opt, &out, INT32_MIN, 1);
-    if (!st.ok)
-        fail_msg("%s: %s", rel, st.why);
+    if (!st.ok) fail_msg("%s: %s", rel, st.why);
     assert_false(out.capped);
     assert_true(out.nsteiner > 0);
     print_message("    %s: %d chart edges, %d triangles, %d Steiner, min angle %.2f "
                   "(away from chart vertices %.2f)\n",
-                  rel, b.ns - 4, out.ntriangles, out.nsteiner, st.min_angle_all,
-                  st.min_angle_free);
+                  rel, b.ns - 4, out.ntriangles, out.nsteiner, st.min_angle_all, st.min_angle_free);
     cdt_output_free(&out);
     cb_free(&b);
 }
@@ -91,8 +84,7 @@ static void knot_uv_boundary_crossings_are_refused(void **state)
     (void)state;
     cdt_builder b;
     int r = uv_builder("seams/myles_knot1_seamed.obj", &b);
-    if (r < 0)
-        skip();
+    if (r < 0) skip();
     assert_int_equal(r, 1); /* the knot has UVs */
     cdt_input in = cb_input(&b);
     cdt_output out;

@@ -29,8 +29,7 @@ static void run_and_check(cdt_builder *b, const cdt_options *opt, int chi, int s
     if (cdt_triangulate(&in, opt, &out, &err) != SCAF_OK)
         fail_msg("cdt_triangulate failed: %s", err.message);
     cdt_check_stats st = cdt_check(b, opt, &out, chi, 1);
-    if (!st.ok)
-        fail_msg("%s", st.why);
+    if (!st.ok) fail_msg("%s", st.why);
     if (strict_angles && st.nfree_bad > 0)
         fail_msg("%d of %d triangles away from charts below the bound (min %g)", st.nfree_bad,
                  st.nfree, st.min_angle_free);
@@ -93,21 +92,18 @@ static void random_charts_many_seeds(void **state)
         int g = 1 + (int)(rnd() * 5);
         for (int i = 0; i < g; i++)
             for (int j = 0; j < g; j++) {
-                if (rnd() < 0.3)
-                    continue;
+                if (rnd() < 0.3) continue;
                 double xy[2 * 64];
                 int n = 3 + (int)(rnd() * 60);
                 star(xy, n, i + 0.1 * rnd(), j + 0.1 * rnd(), 0.4 + 0.09 * rnd());
                 cb_loop(&b, xy, n);
                 k++;
             }
-        if (k == 0)
-            continue;
+        if (k == 0) continue;
         cb_box(&b, 2.0 + 2 * rnd(), NULL);
         cdt_options opt = cdt_default_options();
         opt.min_angle_deg = 10 + 20 * rnd();
-        if (seed % 3 == 0)
-            opt.max_area = 0.05;
+        if (seed % 3 == 0) opt.max_area = 0.05;
         run_and_check(&b, &opt, 1 - k, seed % 3 != 0);
         cb_free(&b);
     }
@@ -172,8 +168,7 @@ static void interleaved_combs_1e12_apart(void **state)
     xy[n++] = L, xy[n++] = -1;
     for (int i = teeth - 1; i >= 0; i--) {
         double x0 = 2 * i * (w + g), x1 = x0 + w;
-        if (i == teeth - 1)
-            xy[n++] = L, xy[n++] = 0;
+        if (i == teeth - 1) xy[n++] = L, xy[n++] = 0;
         xy[n++] = x1, xy[n++] = 0;
         for (int k = 1; k <= 7; k++) /* right side going up */
             xy[n++] = x1, xy[n++] = 5.0 * k / 7;
@@ -192,8 +187,7 @@ static void interleaved_combs_1e12_apart(void **state)
         xy[n++] = x0, xy[n++] = 6;
         for (int k = 1; k <= 3; k++) /* left side going down, facing the lower tooth */
             xy[n++] = x0, xy[n++] = 6 - 5.0 * k / 3;
-        for (int k = 9; k >= 1; k--)
-            xy[n++] = x1, xy[n++] = 6 - 5.0 * k / 9;
+        for (int k = 9; k >= 1; k--) xy[n++] = x1, xy[n++] = 6 - 5.0 * k / 9;
         xy[n++] = x1, xy[n++] = 6;
     }
     cb_loop(&b, xy, n / 2);
@@ -215,8 +209,7 @@ static void nearly_collinear_boundary(void **state)
         double y = (i % 3 == 0) ? 0 : (i % 3 == 1 ? 1e-17 * (i % 7) : -1e-17 * (i % 5));
         xy[n++] = i / 400.0, xy[n++] = y;
     }
-    for (int i = 400; i >= 0; i -= 2)
-        xy[n++] = i / 400.0, xy[n++] = 0.25;
+    for (int i = 400; i >= 0; i -= 2) xy[n++] = i / 400.0, xy[n++] = 0.25;
     cb_loop(&b, xy, n / 2);
     /* a second chart just below following the same wobble 1e-12 lower */
     int n2 = 0;
@@ -243,13 +236,11 @@ static void long_thin_gap(void **state)
     /* lower chart: top edge from (10, 0) back to (0, 0) with 1000 steps */
     xy[n++] = 0, xy[n++] = -1;
     xy[n++] = 10, xy[n++] = -1;
-    for (int i = 1000; i >= 0; i--)
-        xy[n++] = 10.0 * i / 1000, xy[n++] = 0;
+    for (int i = 1000; i >= 0; i--) xy[n++] = 10.0 * i / 1000, xy[n++] = 0;
     cb_loop(&b, xy, n / 2);
     n = 0;
     /* upper chart: bottom edge 1e-6 higher with 777 steps */
-    for (int i = 0; i <= 777; i++)
-        xy[n++] = 10.0 * i / 777 + 1e-3, xy[n++] = 1e-6;
+    for (int i = 0; i <= 777; i++) xy[n++] = 10.0 * i / 777 + 1e-3, xy[n++] = 1e-6;
     xy[n++] = 10 + 1e-3, xy[n++] = 1;
     xy[n++] = 1e-3, xy[n++] = 1;
     cb_loop(&b, xy, n / 2);
@@ -291,12 +282,10 @@ static void tiny_and_huge_coordinates(void **state)
  * does a point lie in a segment's interior? (brute force, exact) */
 static int on_open_segment(const double *a, const double *b, const double *p)
 {
-    if (orient2d(a, b, p) != 0)
-        return 0;
-    if ((p[0] == a[0] && p[1] == a[1]) || (p[0] == b[0] && p[1] == b[1]))
-        return 0;
+    if (orient2d(a, b, p) != 0) return 0;
+    if ((p[0] == a[0] && p[1] == a[1]) || (p[0] == b[0] && p[1] == b[1])) return 0;
     return fmin(a[0], b[0]) <= p[0] && p[0] <= fmax(a[0], b[0]) && fmin(a[1], b[1]) <= p[1] &&
-           p[1] <= fmax(a[1], b[1]);
+        p[1] <= fmax(a[1], b[1]);
 }
 
 static int invalid_soup(const cdt_builder *b)
@@ -304,8 +293,7 @@ static int invalid_soup(const cdt_builder *b)
     for (int s = 0; s < b->ns; s++) {
         const double *a = b->pts + 2 * b->seg[2 * s], *c = b->pts + 2 * b->seg[2 * s + 1];
         for (int i = 0; i < b->np; i++)
-            if (on_open_segment(a, c, b->pts + 2 * i))
-                return 1;
+            if (on_open_segment(a, c, b->pts + 2 * i)) return 1;
         for (int t = s + 1; t < b->ns; t++) {
             const double *p = b->pts + 2 * b->seg[2 * t], *q = b->pts + 2 * b->seg[2 * t + 1];
             double o1 = orient2d(a, c, p), o2 = orient2d(a, c, q);
@@ -330,8 +318,7 @@ static void random_segment_soup_matches_brute_force(void **state)
         int np = 6 + (int)(rnd() * 10);
         while (b.np < np) {
             int g = (int)(rnd() * 36);
-            if (used[g])
-                continue;
+            if (used[g]) continue;
             used[g] = 1;
             cb_point(&b, g % 6 + (trial % 2 ? 1e-13 * (g % 3) : 0), g / 6);
         }
@@ -354,11 +341,9 @@ static void random_segment_soup_matches_brute_force(void **state)
                 fail_msg("trial %u: invalid input accepted (status %d)", trial, (int)st);
             ninvalid++;
         } else {
-            if (st != SCAF_OK)
-                fail_msg("trial %u: valid input refused: %s", trial, err.message);
+            if (st != SCAF_OK) fail_msg("trial %u: valid input refused: %s", trial, err.message);
             cdt_check_stats cs = cdt_check(&b, NULL, &out, 1, 0);
-            if (!cs.ok)
-                fail_msg("trial %u: %s", trial, cs.why);
+            if (!cs.ok) fail_msg("trial %u: %s", trial, cs.why);
             cdt_output_free(&out);
             nvalid++;
         }

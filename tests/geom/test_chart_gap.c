@@ -108,7 +108,8 @@ static void random_layout_matches_brute_force(void **state)
     assert_int_equal(chart_gap_labels(4 * N, 2 * N, F, chart, &nc, &err), SCAF_OK);
     assert_int_equal(chart_gap_segments(2 * N, F, chart, &seg, &nseg, &err), SCAF_OK);
     assert_int_equal(nseg, 4 * N);
-    assert_int_equal(chart_gap_mark_close(UV, seg, nseg, best * 1.0000001, mark, &np, &err), SCAF_OK);
+    assert_int_equal(chart_gap_mark_close(UV, seg, nseg, best * 1.0000001, mark, &np, &err),
+                     SCAF_OK);
     assert_true(np >= 1);
     int marked = 0;
     for (int i = 0; i < N; i++) marked += mark[i];
@@ -131,7 +132,8 @@ static void packing_efficiency(void **state)
 static void segment_distance(void **state)
 {
     (void)state;
-    double a[2] = {0, 0}, b[2] = {2, 0}, c[2] = {1, -1}, d[2] = {1, 1}, e[2] = {3, 1}, f[2] = {4, 1};
+    double a[2] = {0, 0}, b[2] = {2, 0}, c[2] = {1, -1}, d[2] = {1, 1}, e[2] = {3, 1},
+           f[2] = {4, 1};
     assert_true(chart_segment_distance(a, b, c, d) == 0.0); /* crossing */
     assert_true(fabs(chart_segment_distance(a, b, e, f) - sqrt(2.0)) < 1e-15);
 }
@@ -170,7 +172,8 @@ static void certified_layouts(void **state)
     assert_int_equal(chart_gap_segments(4, F, chart, &seg, &nseg, &err), SCAF_OK);
     assert_int_equal(chart_gap_certify(UV, seg, nseg, 0.25, &ok, pair, &err), SCAF_OK);
     assert_true(ok);
-    assert_int_equal(chart_gap_certify(UV, seg, nseg, nextafter(0.25, 1.0), &ok, pair, &err), SCAF_OK);
+    assert_int_equal(chart_gap_certify(UV, seg, nseg, nextafter(0.25, 1.0), &ok, pair, &err),
+                     SCAF_OK);
     assert_false(ok);
     assert_int_equal(pair[0], 0);
     assert_int_equal(pair[1], 1);
@@ -239,14 +242,16 @@ static void scale_free_results(void **state)
         assert_int_equal(pair[1], pair0[1]);
         assert_true(chart_packing_efficiency(12, UV, 6, F) == eff0);
         /* a radius in the same units finds the same pair */
-        assert_int_equal(chart_gap_min(12, UV, 6, F, NULL, ldexp(2.0 * g0, k[t]), &g, NULL, &err), SCAF_OK);
+        assert_int_equal(chart_gap_min(12, UV, 6, F, NULL, ldexp(2.0 * g0, k[t]), &g, NULL, &err),
+                         SCAF_OK);
         assert_true(g == ldexp(g0, k[t]));
         unsigned char mark[3] = {0, 0, 0};
         int *seg, nseg, chart[6], nc;
         long np;
         assert_int_equal(chart_gap_labels(12, 6, F, chart, &nc, &err), SCAF_OK);
         assert_int_equal(chart_gap_segments(6, F, chart, &seg, &nseg, &err), SCAF_OK);
-        assert_int_equal(chart_gap_mark_close(UV, seg, nseg, ldexp(1.01 * g0, k[t]), mark, &np, &err), SCAF_OK);
+        assert_int_equal(
+            chart_gap_mark_close(UV, seg, nseg, ldexp(1.01 * g0, k[t]), mark, &np, &err), SCAF_OK);
         free(seg);
         assert_true(np > 0);
         assert_true(mark[pair0[0]] && mark[pair0[1]]);

@@ -16,8 +16,9 @@
 /* A w x h rectangle's corners, its edge midpoints and center, turned by a. */
 static int rectangle(double w, double h, double a, double *P)
 {
-    double pts[9][2] = {{0, 0}, {w, 0}, {w, h}, {0, h}, {0.5 * w, 0}, {w, 0.5 * h}, {0.5 * w, h}, {0, 0.5 * h},
-                        {0.5 * w, 0.5 * h}};
+    double pts[9][2] = {{0, 0},       {w, 0},       {w, h},
+                        {0, h},       {0.5 * w, 0}, {w, 0.5 * h},
+                        {0.5 * w, h}, {0, 0.5 * h}, {0.5 * w, 0.5 * h}};
     for (int i = 0; i < 9; i++) {
         P[2 * i] = cos(a) * pts[i][0] - sin(a) * pts[i][1];
         P[2 * i + 1] = sin(a) * pts[i][0] + cos(a) * pts[i][1];

@@ -56,7 +56,10 @@ static double unit(rng *r) /* [0, 1) with 53 random bits */
 
 static double sym(rng *r) { return 2.0 * unit(r) - 1.0; }
 
-static int irange(rng *r, int lo, int hi) { return lo + (int)(next_u64(r) % (uint64_t)(hi - lo + 1)); }
+static int irange(rng *r, int lo, int hi)
+{
+    return lo + (int)(next_u64(r) % (uint64_t)(hi - lo + 1));
+}
 
 /* A double with random sign, mantissa and exponent over the whole range
  * (subnormals included), zero now and then. */
@@ -112,10 +115,8 @@ static void to_ints(const double *p, int n, mpz_t *z)
         double m = frexp(p[i], &e);
         mpz_set_d(z[i], ldexp(m, 53)); /* exact: a 53-bit integer */
         int sh = e - 53 - emin;
-        if (sh >= 0)
-            mpz_mul_2exp(z[i], z[i], (mp_bitcnt_t)sh);
-        else
-            mpz_tdiv_q_2exp(z[i], z[i], (mp_bitcnt_t)(-sh)); /* exact */
+        if (sh >= 0) mpz_mul_2exp(z[i], z[i], (mp_bitcnt_t)sh);
+        else mpz_tdiv_q_2exp(z[i], z[i], (mp_bitcnt_t)(-sh)); /* exact */
     }
 }
 
@@ -275,8 +276,8 @@ static void check_ic(ref *R, tally *t, const double *a, const double *b, const d
 static void check_is(ref *R, tally *t, const double *a, const double *b, const double *c,
                      const double *d, const double *e)
 {
-    double p[15] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2],
-                    d[0], d[1], d[2], e[0], e[1], e[2]};
+    double p[15] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1],
+                    c[2], d[0], d[1], d[2], e[0], e[1], e[2]};
     record(t, "insphere", insphere(a, b, c, d, e), ref_insphere(R, p), p, 15);
 }
 
@@ -287,8 +288,8 @@ typedef void (*round_fn)(rng *r, ref *R, tally *t, const void *ctx);
 /* Runs scaled(rounds) rounds from the given seed and asserts zero
  * disagreements and that more than 1/zero_share of the cases were exactly
  * degenerate (the degenerate generators work). `what` names the run. */
-static void run_rounds(const char *what, uint64_t seed, long rounds, round_fn round, const void *ctx,
-                       long zero_share)
+static void run_rounds(const char *what, uint64_t seed, long rounds, round_fn round,
+                       const void *ctx, long zero_share)
 {
     rng r = {seed};
     ref R;
@@ -301,8 +302,8 @@ static void run_rounds(const char *what, uint64_t seed, long rounds, round_fn ro
             t.zeros, t.disagreements);
     if (t.disagreements != 0) fail_msg("%s: %ld disagreements with GMP", what, t.disagreements);
     if (!(t.zeros > t.cases / zero_share))
-        fail_msg("%s: only %ld of %ld cases exactly degenerate (need more than 1/%ld)", what, t.zeros,
-                 t.cases, zero_share);
+        fail_msg("%s: only %ld of %ld cases exactly degenerate (need more than 1/%ld)", what,
+                 t.zeros, t.cases, zero_share);
 }
 
 /* Values at the edges of the expansion stages' ranges. */
@@ -428,8 +429,8 @@ static void orient3d_matches_gmp(void **state)
 /* ---- incircle ---- */
 
 /* Integer points on the circle x^2 + y^2 = 65^2. */
-static const int circ65[][2] = {{65, 0}, {63, 16}, {60, 25}, {56, 33}, {52, 39}, {39, 52},
-                                {33, 56}, {25, 60}, {16, 63}, {0, 65}};
+static const int circ65[][2] = {{65, 0},  {63, 16}, {60, 25}, {56, 33}, {52, 39},
+                                {39, 52}, {33, 56}, {25, 60}, {16, 63}, {0, 65}};
 
 static void circle_point(rng *r, double *p, double ox, double oy, int k)
 {
@@ -622,8 +623,7 @@ static void orient3d_stages_round(rng *r, ref *R, tally *t, const void *ctx)
     /* exact differences: coplanar integer points offset by 2^20 */
     double o[3], e1[3], e2[3];
     for (int j = 0; j < 3; j++)
-        o[j] = 0x1p20 + irange(r, 0, 1000), e1[j] = irange(r, -50, 50),
-        e2[j] = irange(r, -50, 50);
+        o[j] = 0x1p20 + irange(r, 0, 1000), e1[j] = irange(r, -50, 50), e2[j] = irange(r, -50, 50);
     for (int q = 0; q < 4; q++) {
         int s1 = irange(r, -100, 100), s2 = irange(r, -100, 100);
         for (int j = 0; j < 3; j++) pts[q][j] = ldexp(o[j] + s1 * e1[j] + s2 * e2[j], k);

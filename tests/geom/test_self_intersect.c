@@ -43,8 +43,8 @@ static void crossing_triangles(void **state)
     double V[] = {0, 0, 0, 2, 0, 0, 0, 2, 0, 0.5, 0.5, -1, 0.5, 0.5, 1, 3, 3, 0.5};
     int F[] = {0, 1, 2, 3, 4, 5};
     si_report r = check(6, V, 2, F);
-    EXPECT_COUNTS("crossing", HAS(r.pairs, 1), HAS(r.crossing_pairs, 1), HAS(r.nfirst, 1), HAS(r.first[0][0], 0),
-                  HAS(r.first[0][1], 1), HAS(r.intersection_free, 0));
+    EXPECT_COUNTS("crossing", HAS(r.pairs, 1), HAS(r.crossing_pairs, 1), HAS(r.nfirst, 1),
+                  HAS(r.first[0][0], 0), HAS(r.first[0][1], 1), HAS(r.intersection_free, 0));
     /* moved up by 2: apart */
     for (int i = 3; i < 6; i++) V[3 * i + 2] += 2;
     r = check(6, V, 2, F);
@@ -143,7 +143,8 @@ static void duplicate_and_degenerate(void **state)
 /* ---- closed solids ---- */
 
 static const int tet_faces[] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
-static const int octa_faces[] = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+static const int octa_faces[] = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
+                                 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
 
 static void scaled(const double *V, int nv, double s, double *out)
 {
@@ -161,7 +162,8 @@ static void closed_tetrahedron_and_octahedron(void **state)
         double W[18];
         scaled(T, 4, scales[k], W);
         si_report r = check(4, W, 4, tet_faces);
-        EXPECT_COUNTS("tetrahedron", HAS(r.pairs, 0), HAS(r.degenerate_faces, 0), HAS(r.intersection_free, 1));
+        EXPECT_COUNTS("tetrahedron", HAS(r.pairs, 0), HAS(r.degenerate_faces, 0),
+                      HAS(r.intersection_free, 1));
         scaled(O, 6, scales[k], W);
         r = check(6, W, 8, octa_faces);
         EXPECT_COUNTS("octahedron", HAS(r.pairs, 0), HAS(r.intersection_free, 1));
@@ -212,7 +214,8 @@ static void grid_matches_brute_force(void **state)
         long long count[5] = {0};
         int first[SI_FIRST_MAX][2], nfirst = 0, ndeg = 0;
         for (int i = 0; i < nf; i++) {
-            const double *a = V + 3 * F[3 * i], *b = V + 3 * F[3 * i + 1], *c = V + 3 * F[3 * i + 2];
+            const double *a = V + 3 * F[3 * i], *b = V + 3 * F[3 * i + 1],
+                         *c = V + 3 * F[3 * i + 2];
             ndeg += tri3_degenerate(a, b, c);
         }
         for (int i = 0; i < nf; i++)
@@ -231,9 +234,10 @@ static void grid_matches_brute_force(void **state)
             }
         char label[64];
         snprintf(label, sizeof label, "random soup %d", round);
-        EXPECT_COUNTS(label, HAS(r.degenerate_faces, ndeg), HAS(r.crossing_pairs, count[SI_PAIR_CROSSING]),
-                      HAS(r.vertex_pairs, count[SI_PAIR_VERTEX]), HAS(r.edge_pairs, count[SI_PAIR_EDGE]),
-                      HAS(r.duplicate_pairs, count[SI_PAIR_DUPLICATE]), HAS(r.nfirst, nfirst));
+        EXPECT_COUNTS(
+            label, HAS(r.degenerate_faces, ndeg), HAS(r.crossing_pairs, count[SI_PAIR_CROSSING]),
+            HAS(r.vertex_pairs, count[SI_PAIR_VERTEX]), HAS(r.edge_pairs, count[SI_PAIR_EDGE]),
+            HAS(r.duplicate_pairs, count[SI_PAIR_DUPLICATE]), HAS(r.nfirst, nfirst));
         for (int i = 0; i < nfirst; i++) {
             assert_int_equal(r.first[i][0], first[i][0]);
             assert_int_equal(r.first[i][1], first[i][1]);
@@ -286,12 +290,13 @@ static void tet_orientation_counts(void **state)
 {
     (void)state;
     double V[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 0};
-    int T[] = {0, 1, 2, 3, /* positive */ 0, 2, 1, 3, /* inverted */ 0, 1, 2, 4, /* flat */ 0, 0, 1, 3};
+    int T[] = {0, 1, 2, 3, /* positive */ 0, 2, 1, 3, /* inverted */ 0, 1, 2, 4, /* flat */ 0,
+               0, 1, 3};
     tet_orient_report r;
     scaf_error e;
     assert_int_equal(tet_orient_check(5, V, 4, T, &r, &e), SCAF_OK);
-    EXPECT_COUNTS("tets", HAS(r.tets, 4), HAS(r.positive, 1), HAS(r.inverted, 1), HAS(r.degenerate, 2),
-                  HAS(r.first_bad, 1));
+    EXPECT_COUNTS("tets", HAS(r.tets, 4), HAS(r.positive, 1), HAS(r.inverted, 1),
+                  HAS(r.degenerate, 2), HAS(r.first_bad, 1));
     /* nearly flat at huge scale: still exact */
     double W[] = {1e300, 0, 0, 0, 1e300, 0, 0, 0, 1e300, 1e300 / 3, 1e300 / 3, 1e300 / 3};
     int U[] = {0, 1, 2, 3};
@@ -308,8 +313,9 @@ static void tet_orientation_counts(void **state)
 static void shared_closed_meshes(void **state)
 {
     (void)state;
-    static const char *names[] = {"leg-intersect.off", "leg-flow6.off", "bunny.obj", "bunnyx30.obj",
-                                  "fertility.off", "armadillo.obj", "nefertiti-lowres.obj"};
+    static const char *names[] = {"leg-intersect.off",   "leg-flow6.off", "bunny.obj",
+                                  "bunnyx30.obj",        "fertility.off", "armadillo.obj",
+                                  "nefertiti-lowres.obj"};
     int found = 0;
     for (size_t n = 0; n < sizeof names / sizeof *names; n++) {
         char rel[128], buf[4096];
@@ -329,7 +335,8 @@ static void shared_closed_meshes(void **state)
                           HAS(r.edge_pairs, 0), HAS(r.duplicate_pairs, 0), HAS(r.pairs, 239),
                           HAS(r.degenerate_faces, 0));
         } else {
-            EXPECT_COUNTS(names[n], HAS(r.pairs, 0), HAS(r.degenerate_faces, 0), HAS(r.intersection_free, 1));
+            EXPECT_COUNTS(names[n], HAS(r.pairs, 0), HAS(r.degenerate_faces, 0),
+                          HAS(r.intersection_free, 1));
         }
     }
     if (!found) skip();

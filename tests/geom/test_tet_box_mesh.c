@@ -27,7 +27,8 @@ static double tet_volume(const double *a, const double *b, const double *c, cons
     double u[3], v[3], w[3];
     for (int k = 0; k < 3; k++) u[k] = b[k] - a[k], v[k] = c[k] - a[k], w[k] = d[k] - a[k];
     return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-            u[2] * (v[0] * w[1] - v[1] * w[0])) / 6;
+            u[2] * (v[0] * w[1] - v[1] * w[0])) /
+        6;
 }
 
 /* Volume enclosed by a closed outward surface (divergence theorem). */
@@ -42,8 +43,8 @@ static double enclosed_volume(int nf, const int *F, const double *V)
 
 /* The properties every successful build promises, checked here
  * independently of the module's own checks. */
-static void check_mesh(const tet_box_mesh *tm, int nv, const double *V, int nf, const int *F, const double lo[3],
-                       const double hi[3])
+static void check_mesh(const tet_box_mesh *tm, int nv, const double *V, int nf, const int *F,
+                       const double lo[3], const double hi[3])
 {
     assert_true(tm->nt > 0);
     assert_int_equal(tm->nsurface, nv);
@@ -55,11 +56,10 @@ static void check_mesh(const tet_box_mesh *tm, int nv, const double *V, int nf, 
     int ninside = 0;
     for (int t = 0; t < tm->nt; t++) {
         const int *q = tm->T + 4 * t;
-        double v = tet_volume(tm->V + 3 * q[0], tm->V + 3 * q[1], tm->V + 3 * q[2], tm->V + 3 * q[3]);
-        if (tm->inside[t])
-            vin += v, ninside++;
-        else
-            vout += v;
+        double v =
+            tet_volume(tm->V + 3 * q[0], tm->V + 3 * q[1], tm->V + 3 * q[2], tm->V + 3 * q[3]);
+        if (tm->inside[t]) vin += v, ninside++;
+        else vout += v;
     }
     assert_int_equal(ninside, tm->ninside);
     double vs = enclosed_volume(nf, F, V);
@@ -147,14 +147,16 @@ static void refusals(void **state)
     assert_int_equal(mesh_sample_make("icosphere", 2, &m, &e), SCAF_OK);
     tet_box_around(m.nv, m.V, 3, lo, hi);
     /* open: one face removed */
-    assert_int_equal(tet_box_mesh_build(m.nv, m.V, m.nf - 1, m.F, lo, hi, 2, &tm, &e), SCAF_ERR_MESH);
+    assert_int_equal(tet_box_mesh_build(m.nv, m.V, m.nf - 1, m.F, lo, hi, 2, &tm, &e),
+                     SCAF_ERR_MESH);
     assert_non_null(strstr(e.message, "open"));
     assert_null(tm.T);
     /* non-manifold: a face repeated (its edges get three faces... and it duplicates) */
     int *F2 = malloc(sizeof(int) * 3 * (size_t)(m.nf + 1));
     memcpy(F2, m.F, sizeof(int) * 3 * (size_t)m.nf);
     memcpy(F2 + 3 * m.nf, m.F, sizeof(int) * 3);
-    assert_int_equal(tet_box_mesh_build(m.nv, m.V, m.nf + 1, F2, lo, hi, 2, &tm, &e), SCAF_ERR_MESH);
+    assert_int_equal(tet_box_mesh_build(m.nv, m.V, m.nf + 1, F2, lo, hi, 2, &tm, &e),
+                     SCAF_ERR_MESH);
     assert_non_null(strstr(e.message, "not manifold"));
     free(F2);
     /* self-intersecting: a vertex pushed through the opposite side */
@@ -166,7 +168,8 @@ static void refusals(void **state)
     memcpy(m.V, saved, sizeof saved);
     /* a box not containing the surface */
     double small_hi[3] = {0.5, 0.5, 0.5};
-    assert_int_equal(tet_box_mesh_build(m.nv, m.V, m.nf, m.F, lo, small_hi, 2, &tm, &e), SCAF_ERR_USAGE);
+    assert_int_equal(tet_box_mesh_build(m.nv, m.V, m.nf, m.F, lo, small_hi, 2, &tm, &e),
+                     SCAF_ERR_USAGE);
     assert_non_null(strstr(e.message, "not strictly inside the box"));
     assert_int_equal(tet_box_mesh_build(m.nv, m.V, m.nf, m.F, lo, hi, 0, &tm, &e), SCAF_ERR_USAGE);
     /* restored: meshes */
@@ -180,7 +183,8 @@ static void refusals(void **state)
 static void tetgen_throw_is_an_error(void **state)
 {
     (void)state;
-    double P[] = {0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0, 2, 0.5, 0.5, -1, 3, 0.5, 0.5, 0.5, 3, 0.5, 0.5, 0.5, 3};
+    double P[] = {0,   0,   0,  2, 0,   0,   0,   2, 0,   0,   0,   2,
+                  0.5, 0.5, -1, 3, 0.5, 0.5, 0.5, 3, 0.5, 0.5, 0.5, 3};
     int T[] = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2, 4, 6, 5, 4, 5, 7, 5, 6, 7, 4, 7, 6};
     tetgen_result r;
     scaf_error e;

@@ -21,7 +21,8 @@
 #include "support/support.h"
 
 /* Write bytes to the scratch file `name`; returns its path in buf. */
-static inline const char *write_tmp(const char *name, const void *bytes, size_t n, char *buf, size_t size)
+static inline const char *write_tmp(const char *name, const void *bytes, size_t n, char *buf,
+                                    size_t size)
 {
     test_tmp_path(name, buf, size);
     FILE *f = fopen(buf, "wb");
@@ -45,8 +46,9 @@ static inline void parse_ok(const char *text, mesh_format fmt, mesh *m, mesh_rea
  * message starting with "t:LINE:" and containing `needle` (may be NULL).
  * Returns 0 when all of that holds, else 1 with the first difference
  * written into why. */
-static inline int parse_failure_differs(const char *bytes, size_t n, mesh_format fmt, scaf_status code, long line,
-                                        const char *needle, char *why, size_t size)
+static inline int parse_failure_differs(const char *bytes, size_t n, mesh_format fmt,
+                                        scaf_status code, long line, const char *needle, char *why,
+                                        size_t size)
 {
     scaf_error e;
     err_clear(&e);
@@ -62,17 +64,17 @@ static inline int parse_failure_differs(const char *bytes, size_t n, mesh_format
         snprintf(why, size, "message: %s (wanted %s)", e.message, want);
     else if (needle && !strstr(e.message, needle))
         snprintf(why, size, "message: %s (wanted '%s')", e.message, needle);
-    else
-        return 0;
+    else return 0;
     return 1;
 }
 
 /* Asserts parse_failure_differs finds no difference. */
-static inline void parse_fails_n(const char *bytes, size_t n, mesh_format fmt, scaf_status code, long line,
-                                 const char *needle)
+static inline void parse_fails_n(const char *bytes, size_t n, mesh_format fmt, scaf_status code,
+                                 long line, const char *needle)
 {
     char why[2048];
-    if (parse_failure_differs(bytes, n, fmt, code, line, needle, why, sizeof why)) fail_msg("%s", why);
+    if (parse_failure_differs(bytes, n, fmt, code, line, needle, why, sizeof why))
+        fail_msg("%s", why);
 }
 
 /* One malformed text of a table: the line its error names and a phrase the
@@ -85,17 +87,20 @@ typedef struct parse_case {
 
 /* Every row of cases (n rows, format fmt) fails with SCAF_ERR_PARSE as
  * parse_fails_n expects; a failure names the table and the row. */
-static inline void parse_cases_fail(const char *table, mesh_format fmt, const parse_case *cases, int n)
+static inline void parse_cases_fail(const char *table, mesh_format fmt, const parse_case *cases,
+                                    int n)
 {
     for (int i = 0; i < n; i++) {
         char why[2048];
-        if (parse_failure_differs(cases[i].text, strlen(cases[i].text), fmt, SCAF_ERR_PARSE, cases[i].line,
-                                  cases[i].needle, why, sizeof why))
-            fail_msg("%s, row %d (needle '%s'): %s", table, i, cases[i].needle ? cases[i].needle : "", why);
+        if (parse_failure_differs(cases[i].text, strlen(cases[i].text), fmt, SCAF_ERR_PARSE,
+                                  cases[i].line, cases[i].needle, why, sizeof why))
+            fail_msg("%s, row %d (needle '%s'): %s", table, i,
+                     cases[i].needle ? cases[i].needle : "", why);
     }
 }
 
-#define PARSE_CASES_FAIL(fmt, cases) parse_cases_fail(#cases, fmt, cases, (int)(sizeof cases / sizeof cases[0]))
+#define PARSE_CASES_FAIL(fmt, cases)                                                               \
+    parse_cases_fail(#cases, fmt, cases, (int)(sizeof cases / sizeof cases[0]))
 
 static inline void parse_fails(const char *text, mesh_format fmt, long line, const char *needle)
 {

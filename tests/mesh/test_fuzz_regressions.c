@@ -28,7 +28,8 @@ static scaf_status check_input(const char *path)
     size_t n = fread(buf, 1, sizeof buf, f);
     fclose(f);
     if (n < 1) return SCAF_OK;
-    static const mesh_format formats[4] = {MESH_FORMAT_OBJ, MESH_FORMAT_OFF, MESH_FORMAT_PLY, MESH_FORMAT_UNKNOWN};
+    static const mesh_format formats[4] = {MESH_FORMAT_OBJ, MESH_FORMAT_OFF, MESH_FORMAT_PLY,
+                                           MESH_FORMAT_UNKNOWN};
     /* Copy to an exact-size block so ASan catches any overread. */
     char *data = malloc(n - 1 ? n - 1 : 1);
     assert_non_null(data);
@@ -63,7 +64,8 @@ static int for_each_file(const char *rel, int must_parse)
     struct dirent *ent;
     while ((ent = readdir(d)) != NULL) {
         size_t len = strlen(ent->d_name);
-        if (ent->d_name[0] == '.' || (len > 3 && strcmp(ent->d_name + len - 3, ".md") == 0)) continue;
+        if (ent->d_name[0] == '.' || (len > 3 && strcmp(ent->d_name + len - 3, ".md") == 0))
+            continue;
         snprintf(path, sizeof path, "%s/%s", dir, ent->d_name);
         scaf_status s = check_input(path);
         if (must_parse && s != SCAF_OK) print_error("seed %s does not parse\n", path);

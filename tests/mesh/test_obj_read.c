@@ -10,7 +10,8 @@ static void plain_triangles(void **state)
     (void)state;
     mesh m;
     mesh_read_info info;
-    parse_ok("# a comment\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n", MESH_FORMAT_OBJ, &m, &info);
+    parse_ok("# a comment\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n", MESH_FORMAT_OBJ,
+             &m, &info);
     assert_int_equal(m.nv, 4);
     assert_int_equal(m.nf, 2);
     assert_int_equal(m.nuv, 0);
@@ -27,8 +28,13 @@ static void every_index_form(void **state)
 {
     (void)state;
     const char *head = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n";
-    const char *faces[] = {"f 1 2 3\n", "f 1/1 2/2 3/3\n", "f 1//1 2//1 3//1\n", "f 1/1/1 2/2/1 3/3/1\n",
-                           "f -3/-3 -2/-2 -1/-1\n", "f -3//-1 -2//-1 -1//-1\n", "f 1/1/ 2/2/ 3/3/\n"};
+    const char *faces[] = {"f 1 2 3\n",
+                           "f 1/1 2/2 3/3\n",
+                           "f 1//1 2//1 3//1\n",
+                           "f 1/1/1 2/2/1 3/3/1\n",
+                           "f -3/-3 -2/-2 -1/-1\n",
+                           "f -3//-1 -2//-1 -1//-1\n",
+                           "f 1/1/ 2/2/ 3/3/\n"};
     const int has_uv[] = {0, 1, 0, 1, 1, 0, 1};
     for (size_t i = 0; i < sizeof faces / sizeof *faces; i++) {
         char text[256];
@@ -58,7 +64,8 @@ static void relative_indices_follow_the_file(void **state)
     (void)state;
     mesh m;
     /* -1 means the last vertex read so far, not the last of the file. */
-    parse_ok("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 5 5 5\nf -4 -3 -1\n", MESH_FORMAT_OBJ, &m, NULL);
+    parse_ok("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 5 5 5\nf -4 -3 -1\n", MESH_FORMAT_OBJ, &m,
+             NULL);
     assert_int_equal(m.nf, 2);
     const int F[6] = {0, 1, 2, 0, 1, 3};
     assert_memory_equal(m.F, F, sizeof F);
@@ -70,8 +77,8 @@ static void polygons_are_fanned(void **state)
     (void)state;
     mesh m;
     mesh_read_info info;
-    parse_ok("v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nf 1 2 3 4 5\nf 1 2 4 5\nf 1 2 3\n", MESH_FORMAT_OBJ, &m,
-             &info);
+    parse_ok("v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nf 1 2 3 4 5\nf 1 2 4 5\nf 1 2 3\n",
+             MESH_FORMAT_OBJ, &m, &info);
     assert_int_equal(m.nf, 3 + 2 + 1);
     assert_int_equal(info.polygons_triangulated, 2);
     char w[256];
@@ -87,8 +94,10 @@ static void ignored_statements_crlf_blanks(void **state)
     (void)state;
     mesh m;
     mesh_read_info info;
-    const char *text = "\xEF\xBB\xBF# exported\r\nmtllib x.mtl\r\no thing\r\ng group one\r\ns off\r\n"
-                       "usemtl mat\r\n\r\n   \r\n\tv 0 0 0 1.0\r\nv 1 0 0 0.5 0.5 0.5   \r\nv 0 1 0\t\r\n"
+    const char *text = "\xEF\xBB\xBF# exported\r\nmtllib x.mtl\r\no thing\r\ng group one\r\ns "
+                       "off\r\n"
+                       "usemtl mat\r\n\r\n   \r\n\tv 0 0 0 1.0\r\nv 1 0 0 0.5 0.5 0.5   \r\nv 0 1 "
+                       "0\t\r\n"
                        "vp 0.5\r\nl 1 2\r\np 1\r\nf 1 2 3   # trailing comment\r\n";
     parse_ok(text, MESH_FORMAT_OBJ, &m, &info);
     assert_int_equal(m.nv, 3);
@@ -114,16 +123,33 @@ static void no_final_newline(void **state)
 static void numbers_equal_strtod(void **state)
 {
     (void)state;
-    const char *nums[] = {"0.1", "-0.0", "1e-5", "1E+22", "123456789012345678", "0.30000000000000004",
-                          "1.7976931348623157e308", "4.9e-324", "2.2250738585072011e-308",
-                          "9007199254740993", "0.000000000000000000000000000001234567890123456789",
-                          "+3.25", "-.5", "5.", "1e23", "8.589973e9", "0.00817800034", "-0.0496510006",
-                          "12345678901234567890.5", "1.00000000000000011102230246251565404236316680908203125",
-                          "7.0e-10", "3"};
+    const char *nums[] = {"0.1",
+                          "-0.0",
+                          "1e-5",
+                          "1E+22",
+                          "123456789012345678",
+                          "0.30000000000000004",
+                          "1.7976931348623157e308",
+                          "4.9e-324",
+                          "2.2250738585072011e-308",
+                          "9007199254740993",
+                          "0.000000000000000000000000000001234567890123456789",
+                          "+3.25",
+                          "-.5",
+                          "5.",
+                          "1e23",
+                          "8.589973e9",
+                          "0.00817800034",
+                          "-0.0496510006",
+                          "12345678901234567890.5",
+                          "1.00000000000000011102230246251565404236316680908203125",
+                          "7.0e-10",
+                          "3"};
     size_t k = sizeof nums / sizeof *nums;
     char text[4096];
     size_t o = 0;
-    for (size_t i = 0; i < k; i++) o += (size_t)snprintf(text + o, sizeof text - o, "v %s 0 0\n", nums[i]);
+    for (size_t i = 0; i < k; i++)
+        o += (size_t)snprintf(text + o, sizeof text - o, "v %s 0 0\n", nums[i]);
     snprintf(text + o, sizeof text - o, "f 1 2 3\n");
     mesh m;
     parse_ok(text, MESH_FORMAT_OBJ, &m, NULL);
@@ -137,7 +163,7 @@ static void numbers_equal_strtod(void **state)
     srand(12345);
     char *big = malloc(1 << 20);
     assert_non_null(big);
-    char (*strs)[40] = malloc(3000 * sizeof *strs);
+    char(*strs)[40] = malloc(3000 * sizeof *strs);
     assert_non_null(strs);
     o = 0;
     for (int i = 0; i < 3000; i++) {
@@ -158,7 +184,8 @@ static void numbers_equal_strtod(void **state)
     assert_int_equal(m.nv, 3000);
     for (int i = 0; i < 3000; i++) {
         double want = strtod(strs[i], NULL);
-        if (memcmp(&m.V[3 * i], &want, sizeof want) != 0) print_error("mismatch on '%s'\n", strs[i]);
+        if (memcmp(&m.V[3 * i], &want, sizeof want) != 0)
+            print_error("mismatch on '%s'\n", strs[i]);
         assert_memory_equal(&m.V[3 * i], &want, sizeof want);
     }
     mesh_free(&m);
@@ -184,7 +211,8 @@ static void vt_with_one_or_three_values(void **state)
 {
     (void)state;
     mesh m;
-    parse_ok("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5\nvt 1 0 0\nvt 0 1\nf 1/1 2/2 3/3\n", MESH_FORMAT_OBJ, &m, NULL);
+    parse_ok("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5\nvt 1 0 0\nvt 0 1\nf 1/1 2/2 3/3\n",
+             MESH_FORMAT_OBJ, &m, NULL);
     assert_true(m.UV[0] == 0.5 && m.UV[1] == 0.0);
     mesh_free(&m);
 }
@@ -194,7 +222,8 @@ static void mixed_uv_faces_drop_uvs(void **state)
     (void)state;
     mesh m;
     mesh_read_info info;
-    parse_ok("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nf 2 4 3\nf 4 3 2\n",
+    parse_ok("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nf 2 4 "
+             "3\nf 4 3 2\n",
              MESH_FORMAT_OBJ, &m, &info);
     assert_int_equal(m.nf, 3);
     assert_int_equal(m.nuv, 0);

@@ -10,32 +10,31 @@
 #include "mesh/obj_rewrite.h"
 #include "mesh_test_util.h"
 
-static const char *const sample_obj =
-    "# a test file\n"
-    "mtllib ./thing.mtl\n"
-    "o thing\n"
-    "v 0 0 0\n"
-    "v 1.000 0 0\n"
-    "v 1 1 0.0\n"
-    "v 0 1 0   # trailing comment\n"
-    "v 2 0.5 0\n"
-    "vt 0 0\n"
-    "vt 1 0\n"
-    "vt 1 1\n"
-    "vt 0 1\n"
-    "vt 0.5 0.5\n"
-    "vn 0 0 1\n"
-    "vn 0 0.1 0.99\n"
-    "g part1\n"
-    "usemtl red\n"
-    "s 1\n"
-    "f -5/1/1 -4/2/2 -3/3/1 -2/4/2\n"
-    "\n"
-    "usemtl blue\n"
-    "s off\n"
-    "f 2//1 5//2 3//1\n"
-    "f 2/2 3/3 1/1\n"
-    "# the end, no final newline";
+static const char *const sample_obj = "# a test file\n"
+                                      "mtllib ./thing.mtl\n"
+                                      "o thing\n"
+                                      "v 0 0 0\n"
+                                      "v 1.000 0 0\n"
+                                      "v 1 1 0.0\n"
+                                      "v 0 1 0   # trailing comment\n"
+                                      "v 2 0.5 0\n"
+                                      "vt 0 0\n"
+                                      "vt 1 0\n"
+                                      "vt 1 1\n"
+                                      "vt 0 1\n"
+                                      "vt 0.5 0.5\n"
+                                      "vn 0 0 1\n"
+                                      "vn 0 0.1 0.99\n"
+                                      "g part1\n"
+                                      "usemtl red\n"
+                                      "s 1\n"
+                                      "f -5/1/1 -4/2/2 -3/3/1 -2/4/2\n"
+                                      "\n"
+                                      "usemtl blue\n"
+                                      "s off\n"
+                                      "f 2//1 5//2 3//1\n"
+                                      "f 2/2 3/3 1/1\n"
+                                      "# the end, no final newline";
 
 /* The lines of text that are neither vt nor f, in order, each with its
  * line terminator (as written). */
@@ -147,7 +146,8 @@ static void rewrite_and_check(const char *in_name, const char *text, const char 
     assert_non_null(got);
     int na, nb;
     const char *bom = "\xEF\xBB\xBF";
-    const char *ta = strncmp(text, bom, 3) ? text : text + 3, *tb = strncmp(got, bom, 3) ? got : got + 3;
+    const char *ta = strncmp(text, bom, 3) ? text : text + 3,
+               *tb = strncmp(got, bom, 3) ? got : got + 3;
     assert_int_equal(ta == text, tb == got); /* a BOM is kept */
     char **la = other_lines(ta, &na), **lb = other_lines(tb, &nb);
     assert_int_equal(nb, na + 1);
@@ -163,7 +163,8 @@ static void rewrite_and_check(const char *in_name, const char *text, const char 
     assert_non_null(strstr(got, "f 2/10 3/11 1/12"));
     if (crlf) {
         /* every line break is CRLF */
-        for (const char *q = strchr(got, '\n'); q; q = strchr(q + 1, '\n')) assert_int_equal(q[-1], '\r');
+        for (const char *q = strchr(got, '\n'); q; q = strchr(q + 1, '\n'))
+            assert_int_equal(q[-1], '\r');
     }
     free(got);
     free_with_uvs(&w);
@@ -283,12 +284,14 @@ static void cli_keeps_normals(void **state)
     o += (size_t)snprintf(text + o, sizeof text - o, "mtllib grid.mtl\nusemtl a\n");
     for (int j = 0; j < 4; j++)
         for (int i = 0; i < 4; i++)
-            o += (size_t)snprintf(text + o, sizeof text - o, "v %d %d %g\nvn 0 %g 1\n", i, j, 0.1 * i * j, 0.01 * j);
+            o += (size_t)snprintf(text + o, sizeof text - o, "v %d %d %g\nvn 0 %g 1\n", i, j,
+                                  0.1 * i * j, 0.01 * j);
     for (int j = 0; j < 3; j++)
         for (int i = 0; i < 3; i++) {
             int a = 4 * j + i + 1, b = a + 1, c = a + 4, d = c + 1;
-            o += (size_t)snprintf(text + o, sizeof text - o, "f %d//%d %d//%d %d//%d\nf %d//%d %d//%d %d//%d\n", a, a, b,
-                                  b, d, d, a, a, d, d, c, c);
+            o += (size_t)snprintf(text + o, sizeof text - o,
+                                  "f %d//%d %d//%d %d//%d\nf %d//%d %d//%d %d//%d\n", a, a, b, b, d,
+                                  d, a, a, d, d, c, c);
         }
     write_text(in, text);
     const char *cmds[] = {"param", "atlas"};
@@ -335,7 +338,8 @@ static void cli_reports_fanned_polygon(void **state)
         assert_non_null(strstr(text, "warning"));
         assert_non_null(strstr(text, "1 polygon with more than 3 corners fan-triangulated"));
         free(text);
-        assert_int_equal(test_run("%s %s %s -o %s --quiet 2> %s", SCAF_BINARY, cmds[k], in, out, log), 0);
+        assert_int_equal(
+            test_run("%s %s %s -o %s --quiet 2> %s", SCAF_BINARY, cmds[k], in, out, log), 0);
         text = test_slurp(log);
         assert_non_null(text);
         assert_null(strstr(text, "warning"));
@@ -348,7 +352,8 @@ static void cli_reports_fanned_polygon(void **state)
         for (const char *q = got; (q = strstr(q, "\nf ")); q++, faces++) {
             int v[3], t[3];
             assert_true(faces < 2);
-            assert_int_equal(sscanf(q + 3, "%d/%d %d/%d %d/%d", &v[0], &t[0], &v[1], &t[1], &v[2], &t[2]), 6);
+            assert_int_equal(
+                sscanf(q + 3, "%d/%d %d/%d %d/%d", &v[0], &t[0], &v[1], &t[1], &v[2], &t[2]), 6);
             for (int j = 0; j < 3; j++) assert_int_equal(v[j], want[faces][j]);
         }
         assert_int_equal(faces, 2);
@@ -359,12 +364,9 @@ static void cli_reports_fanned_polygon(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(keeps_everything_but_uvs),
-        cmocka_unit_test(crlf_and_bom),
-        cmocka_unit_test(gzip_input_and_in_place),
-        cmocka_unit_test(changed_file_is_refused),
-        cmocka_unit_test(cli_keeps_normals),
-        cmocka_unit_test(cli_reports_fanned_polygon),
+        cmocka_unit_test(keeps_everything_but_uvs), cmocka_unit_test(crlf_and_bom),
+        cmocka_unit_test(gzip_input_and_in_place),  cmocka_unit_test(changed_file_is_refused),
+        cmocka_unit_test(cli_keeps_normals),        cmocka_unit_test(cli_reports_fanned_polygon),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

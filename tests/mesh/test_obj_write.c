@@ -64,8 +64,8 @@ static void short_numbers_stay_short(void **state)
 {
     (void)state;
     mesh m;
-    parse_ok("v 0.1 -2.5 1e-7\nv 1 0 0\nv 0 1 0\nvt 0.25 0.75\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n", MESH_FORMAT_OBJ, &m,
-             NULL);
+    parse_ok("v 0.1 -2.5 1e-7\nv 1 0 0\nv 0 1 0\nvt 0.25 0.75\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n",
+             MESH_FORMAT_OBJ, &m, NULL);
     char path[512];
     test_tmp_path("write_short.obj", path, sizeof path);
     scaf_error e;
@@ -97,8 +97,8 @@ static void seams_roundtrip(void **state)
 static void shared_meshes_roundtrip(void **state)
 {
     (void)state;
-    const char *files[] = {"seams/spot.obj", "seams/human_neutral.obj", "disk/camel_b.obj", "disk/camelhead.off",
-                           "bad/stanford-bunny.obj"};
+    const char *files[] = {"seams/spot.obj", "seams/human_neutral.obj", "disk/camel_b.obj",
+                           "disk/camelhead.off", "bad/stanford-bunny.obj"};
     int any = 0;
     for (size_t i = 0; i < sizeof files / sizeof *files; i++) {
         char path[1024];
@@ -124,7 +124,8 @@ static void assert_no_temp_left(const char *base)
     snprintf(prefix, sizeof prefix, ".%s.tmp", base);
     struct dirent *ent;
     while ((ent = readdir(d)) != NULL) {
-        if (strncmp(ent->d_name, prefix, strlen(prefix)) == 0) print_error("left over: %s\n", ent->d_name);
+        if (strncmp(ent->d_name, prefix, strlen(prefix)) == 0)
+            print_error("left over: %s\n", ent->d_name);
         assert_false(strncmp(ent->d_name, prefix, strlen(prefix)) == 0);
     }
     closedir(d);

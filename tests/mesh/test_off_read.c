@@ -8,7 +8,8 @@ static void plain_off(void **state)
     (void)state;
     mesh m;
     mesh_read_info info;
-    parse_ok("OFF\n4 2 5\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n", MESH_FORMAT_OFF, &m, &info);
+    parse_ok("OFF\n4 2 5\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n", MESH_FORMAT_OFF, &m,
+             &info);
     assert_int_equal(m.nv, 4);
     assert_int_equal(m.nf, 2);
     const int F[6] = {0, 1, 2, 1, 3, 2};
@@ -23,7 +24,8 @@ static void comments_crlf_blank_lines(void **state)
 {
     (void)state;
     mesh m;
-    parse_ok("# leading comment\r\nOFF # trailing\r\n\r\n# counts next\r\n3 1 0\r\n0.5 0 0\r\n# mid\r\n"
+    parse_ok("# leading comment\r\nOFF # trailing\r\n\r\n# counts next\r\n3 1 0\r\n0.5 0 0\r\n# "
+             "mid\r\n"
              "1 0 0   \r\n\r\n0 1 0\r\n3 0 1 2\r\n",
              MESH_FORMAT_OFF, &m, NULL);
     assert_int_equal(m.nv, 3);
@@ -49,16 +51,18 @@ static void variants_and_extra_values(void **state)
     (void)state;
     mesh m;
     /* Colour per vertex (COFF), normals (NOFF), both, texture (STOFF): extra values ignored. */
-    parse_ok("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2 1 0 0\n",
+    parse_ok("COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2 1 0 "
+             "0\n",
              MESH_FORMAT_OFF, &m, NULL);
     assert_int_equal(m.nf, 1);
     assert_true(m.V[3] == 1.0 && m.V[4] == 0.0 && m.V[5] == 0.0);
     mesh_free(&m);
-    parse_ok("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n", MESH_FORMAT_OFF, &m, NULL);
+    parse_ok("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n", MESH_FORMAT_OFF, &m,
+             NULL);
     assert_int_equal(m.nf, 1);
     mesh_free(&m);
-    parse_ok("CNOFF\n3 1 0\n0 0 0 0 0 1 1 1 1\n1 0 0 0 0 1 1 1 1\n0 1 0 0 0 1 1 1 1\n3 0 1 2\n", MESH_FORMAT_OFF,
-             &m, NULL);
+    parse_ok("CNOFF\n3 1 0\n0 0 0 0 0 1 1 1 1\n1 0 0 0 0 1 1 1 1\n0 1 0 0 0 1 1 1 1\n3 0 1 2\n",
+             MESH_FORMAT_OFF, &m, NULL);
     mesh_free(&m);
     parse_ok("STOFF\n3 1 0\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n3 0 1 2\n", MESH_FORMAT_OFF, &m, NULL);
     mesh_free(&m);
@@ -72,7 +76,8 @@ static void polygons_fanned_with_face_colour(void **state)
     (void)state;
     mesh m;
     mesh_read_info info;
-    parse_ok("OFF\n5 2 0\n0 0 0\n1 0 0\n2 1 0\n1 2 0\n0 1 0\n5 0 1 2 3 4 0.1 0.2 0.3 1\n4 0 1 3 4\n",
+    parse_ok("OFF\n5 2 0\n0 0 0\n1 0 0\n2 1 0\n1 2 0\n0 1 0\n5 0 1 2 3 4 0.1 0.2 0.3 1\n4 0 1 3 "
+             "4\n",
              MESH_FORMAT_OFF, &m, &info);
     assert_int_equal(m.nf, 3 + 2);
     assert_int_equal(info.polygons_triangulated, 2);

@@ -89,11 +89,13 @@ static const parse_case off_cases[] = {
     {"OFF\n1000000000000 1 0\n0 0 0\n", 2, "bad vertex count"},
     {"OFF\n2000000000 2000000000 0\n0 0 0\n", 2, "truncated"},
     {"OFF\n3 1 0\n0 0 0\n1 0 0\n", 2, "truncated"},
-    {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n# no more faces here\n", 8, "truncated file: 1 of 2 faces"},
+    {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n# no more faces here\n", 8,
+     "truncated file: 1 of 2 faces"},
     {"OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", 2, "no faces"},
     {"OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", 4, "finite"},
     {"OFF\n3 1 0\n0 0 0\n10 0\n0 1 0\n3 0 1 2\n", 4, "has 2 coordinates"},
-    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", 6, "vertex index 3 out of range (the file has 3 vertices)"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", 6,
+     "vertex index 3 out of range (the file has 3 vertices)"},
     {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", 6, "-1 out of range"},
     {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 99999999999999999999\n", 6, "out of range"},
     {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n", 6, "more than once"},
@@ -111,20 +113,23 @@ static void off_errors(void **state)
     PARSE_CASES_FAIL(MESH_FORMAT_OFF, off_cases);
 }
 
-#define PLY_HEAD(fmt, nv, nf)                                                                              \
-    "ply\nformat " fmt " 1.0\nelement vertex " nv "\nproperty float x\nproperty float y\nproperty float z\n" \
+#define PLY_HEAD(fmt, nv, nf)                                                                      \
+    "ply\nformat " fmt " 1.0\nelement vertex " nv "\nproperty float x\nproperty float "            \
+    "y\nproperty float z\n"                                                                        \
     "element face " nf "\nproperty list uchar int vertex_indices\nend_header\n"
 
 static const parse_case ply_header_cases[] = {
     {"", 1, "truncated header"},
     {"plx\n", 1, "not a PLY file"},
     {"ply\nformat ascii 1.0\nelement vertex 3\n", 3, "no end_header"},
-    {"ply\nformat binary_middle_endian 1.0\nend_header\n", 2, "unknown PLY format 'binary_middle_endian'"},
-    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float128 x\nend_header\n",
-     4, "unknown PLY type 'float128'"},
+    {"ply\nformat binary_middle_endian 1.0\nend_header\n", 2,
+     "unknown PLY format 'binary_middle_endian'"},
+    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float128 x\nend_header\n", 4,
+     "unknown PLY type 'float128'"},
     {"ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\nend_header\n",
      4, "count type"},
-    {"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar float vertex_indices\nend_header\n",
+    {"ply\nformat ascii 1.0\nelement face 1\nproperty list uchar float "
+     "vertex_indices\nend_header\n",
      4, "integer type"},
     {"ply\nformat ascii 1.0\nproperty float x\nend_header\n", 3, "before any element"},
     {"ply\nformat ascii 1.0\nelement vertex x\nend_header\n", 3, "bad element count"},
@@ -134,10 +139,12 @@ static const parse_case ply_header_cases[] = {
     {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nend_header\n"
      "0 0\n1 0\n0 1\n",
      6, "lacks x, y or z"},
-    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+     "z\n"
      "end_header\n0 0 0\n1 0 0\n0 1 0\n",
      7, "no faces"},
-    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    {"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+     "z\n"
      "element face 1\nproperty list uchar int corners\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
      9, "lacks a 'vertex_indices'"},
 };
@@ -149,8 +156,8 @@ static void ply_header_errors(void **state)
 }
 
 static const parse_case ply_body_cases[] = {
-    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
-     13, "vertex index 3 out of range (the file has 3 vertices)"},
+    {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", 13,
+     "vertex index 3 out of range (the file has 3 vertices)"},
     {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", 13, "out of range"},
     {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n3 0 1 0\n", 13, "more than once"},
     {PLY_HEAD("ascii", "3", "1") "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", 13, "2 corners"},
@@ -176,7 +183,8 @@ static void ply_body_errors(void **state)
     memset(buf + n, 0, 12);
     n += 12;
     parse_fails_n(buf, n, MESH_FORMAT_PLY, SCAF_ERR_PARSE, 9, "truncated binary data: face 0");
-    parse_fails(PLY_HEAD("binary_big_endian", "1000000000000", "1"), MESH_FORMAT_PLY, 9, "truncated");
+    parse_fails(PLY_HEAD("binary_big_endian", "1000000000000", "1"), MESH_FORMAT_PLY, 9,
+                "truncated");
 }
 
 static void unreadable_files(void **state)
@@ -216,8 +224,10 @@ static void unreadable_files(void **state)
 static void line_numbers_with_crlf(void **state)
 {
     (void)state;
-    parse_fails("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\n\r\nf 1 2 7", MESH_FORMAT_OBJ, 5, "7 out of range");
-    parse_fails("OFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 5", MESH_FORMAT_OFF, 6, "5 out of range");
+    parse_fails("v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\n\r\nf 1 2 7", MESH_FORMAT_OBJ, 5,
+                "7 out of range");
+    parse_fails("OFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 5", MESH_FORMAT_OFF, 6,
+                "5 out of range");
 }
 
 int main(void)

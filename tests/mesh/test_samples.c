@@ -42,9 +42,11 @@ static double volume(const mesh *m)
 {
     double vol = 0;
     for (int f = 0; f < m->nf; f++) {
-        const double *a = m->V + 3 * m->F[3 * f], *b = m->V + 3 * m->F[3 * f + 1], *c = m->V + 3 * m->F[3 * f + 2];
+        const double *a = m->V + 3 * m->F[3 * f], *b = m->V + 3 * m->F[3 * f + 1],
+                     *c = m->V + 3 * m->F[3 * f + 2];
         vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-                a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+                a[2] * (b[0] * c[1] - b[1] * c[0])) /
+            6;
     }
     return vol;
 }
@@ -104,7 +106,7 @@ static void grid(void **state)
         assert_int_equal(t.uv_charts, 1);
         assert_int_equal(t.seam_edges, 0);
         assert_int_equal(mesh_chart_check(&c, 0, 0, NULL), SCAF_OK);
-        assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0.999);  /* unit square, CCW */
+        assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0.999); /* unit square, CCW */
         close_sample(&m, &t, &c);
     }
 }
@@ -126,13 +128,18 @@ static void hemisphere(void **state)
         assert_false(t.has_uv);
         assert_int_equal(t.uv_charts, 1);
         assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_DISK);
-        assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0);  /* seen from +z: CCW */
+        assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0); /* seen from +z: CCW */
         /* outward: each face normal points away from the centre */
         for (int f = 0; f < m.nf; f++) {
-            const double *a = m.V + 3 * m.F[3 * f], *b = m.V + 3 * m.F[3 * f + 1], *p = m.V + 3 * m.F[3 * f + 2];
-            double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-            double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-            assert_true(nrm[0] * (a[0] + b[0] + p[0]) + nrm[1] * (a[1] + b[1] + p[1]) + nrm[2] * (a[2] + b[2] + p[2]) > 0);
+            const double *a = m.V + 3 * m.F[3 * f], *b = m.V + 3 * m.F[3 * f + 1],
+                         *p = m.V + 3 * m.F[3 * f + 2];
+            double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                   w[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+            double nrm[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                             u[0] * w[1] - u[1] * w[0]};
+            assert_true(nrm[0] * (a[0] + b[0] + p[0]) + nrm[1] * (a[1] + b[1] + p[1]) +
+                            nrm[2] * (a[2] + b[2] + p[2]) >
+                        0);
         }
         close_sample(&m, &t, &c);
     }
@@ -185,14 +192,16 @@ static void cubesphere(void **state)
         for (int k = 0; k < 6; k++) {
             assert_int_equal(mesh_chart_check(&c, k, 0, NULL), SCAF_OK);
             assert_int_equal(c.cx.group_face_start[k + 1] - c.cx.group_face_start[k], 2 * n * n);
-            assert_int_equal(c.chart_vertex_start[k + 1] - c.chart_vertex_start[k], (n + 1) * (n + 1));
+            assert_int_equal(c.chart_vertex_start[k + 1] - c.chart_vertex_start[k],
+                             (n + 1) * (n + 1));
             assert_int_equal(c.cx.group_euler[k], 1);
         }
         /* UVs: every triangle CCW, inside [0,1]^2, each chart in its own
          * atlas cell (cells of side 1/3), no two charts in one cell */
         int cell_of[6] = {-1, -1, -1, -1, -1, -1};
         for (int f = 0; f < m.nf; f++) {
-            const double *a = m.UV + 2 * m.FT[3 * f], *b = m.UV + 2 * m.FT[3 * f + 1], *p = m.UV + 2 * m.FT[3 * f + 2];
+            const double *a = m.UV + 2 * m.FT[3 * f], *b = m.UV + 2 * m.FT[3 * f + 1],
+                         *p = m.UV + 2 * m.FT[3 * f + 2];
             assert_true((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) > 0);
             int chart = c.cx.face_group[f];
             for (int q = 0; q < 3; q++) {
@@ -246,7 +255,7 @@ static void deterministic(void **state)
         assert_int_equal(a.nf, b.nf);
         assert_memory_equal(a.V, b.V, sizeof(double) * 3 * (size_t)a.nv);
         assert_memory_equal(a.F, b.F, sizeof(int) * 3 * (size_t)a.nf);
-        for (int k = 0; k < 3 * a.nv; k++) assert_true(a.V[k] == a.V[k]);  /* no NaN */
+        for (int k = 0; k < 3 * a.nv; k++) assert_true(a.V[k] == a.V[k]); /* no NaN */
         mesh_free(&a);
         mesh_free(&b);
     }
@@ -258,7 +267,7 @@ static void bad_names_and_sizes(void **state)
     mesh m;
     scaf_error e;
     assert_int_equal(mesh_sample_make("nope", 0, &m, &e), SCAF_ERR_USAGE);
-    assert_non_null(strstr(e.message, "hemisphere"));  /* lists what exists */
+    assert_non_null(strstr(e.message, "hemisphere")); /* lists what exists */
     assert_int_equal(mesh_sample_make("hemisphere", -3, &m, &e), SCAF_ERR_USAGE);
     assert_int_equal(mesh_sample_make("cubesphere", 100000, &m, &e), SCAF_ERR_USAGE);
     assert_non_null(strstr(e.message, "outside"));

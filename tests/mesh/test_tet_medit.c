@@ -52,9 +52,10 @@ static void other_sections_and_comments(void **state)
     (void)state;
     char path[1024];
     test_tmp_path("medit_sections.mesh", path, sizeof path);
-    write_text(path, "MeshVersionFormatted 2\n# a comment\nDimension\n3\nVertices\n4\n0 0 0 1\n1 0 0 1\n"
-                     "0 1 0 1\n0 0 1 1\nEdges\n1\n1 2 0\nTriangles\n1\n1 2 3 7\nCorners\n1\n1\n"
-                     "Tetrahedra\n1\n1 2 3 4 9 # trailing\nEnd\n");
+    write_text(path,
+               "MeshVersionFormatted 2\n# a comment\nDimension\n3\nVertices\n4\n0 0 0 1\n1 0 0 1\n"
+               "0 1 0 1\n0 0 1 1\nEdges\n1\n1 2 0\nTriangles\n1\n1 2 3 7\nCorners\n1\n1\n"
+               "Tetrahedra\n1\n1 2 3 4 9 # trailing\nEnd\n");
     tet_medit m;
     scaf_error e;
     assert_int_equal(tet_medit_read(path, &m, &e), SCAF_OK);
@@ -70,7 +71,8 @@ static void malformed(void **state)
     static const struct {
         const char *text, *message;
     } cases[] = {
-        {"MeshVersionFormatted 1\nDimension 3\nVertices\n1\n0 0 0 0\nHexahedra\n0\nEnd\n", ":6: unsupported keyword 'Hexahedra'"},
+        {"MeshVersionFormatted 1\nDimension 3\nVertices\n1\n0 0 0 0\nHexahedra\n0\nEnd\n",
+         ":6: unsupported keyword 'Hexahedra'"},
         {"MeshVersionFormatted 1\nDimension 2\n", ":2: '2' is not the dimension"},
         {"Vertices\n2\n0 0 0 0\n1 1 x 0\nTetrahedra\n0\n", ":4: 'x' is not a finite number"},
         {"Vertices\n1\n0 0 0 0\nTetrahedra\n1\n1 1 1 2 0\n", ":6: '2' is not a vertex index"},
@@ -87,7 +89,8 @@ static void malformed(void **state)
         scaf_error e;
         err_clear(&e);
         assert_int_equal(tet_medit_read(path, &m, &e), SCAF_ERR_PARSE);
-        if (!strstr(e.message, cases[i].message)) fail_msg("case %zu: '%s' lacks '%s'", i, e.message, cases[i].message);
+        if (!strstr(e.message, cases[i].message))
+            fail_msg("case %zu: '%s' lacks '%s'", i, e.message, cases[i].message);
         assert_null(m.V);
     }
     tet_medit m;

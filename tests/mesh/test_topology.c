@@ -52,8 +52,8 @@ static void assert_chart_check(const mesh_charts *c, int k, int allow_holes, sca
     err_clear(&e);
     scaf_status s = mesh_chart_check(c, k, allow_holes, &e);
     if (s != want)
-        fail_msg("chart %d (holes %s): status %d, expected %d (%s)", k, allow_holes ? "allowed" : "refused",
-                 (int)s, (int)want, e.message);
+        fail_msg("chart %d (holes %s): status %d, expected %d (%s)", k,
+                 allow_holes ? "allowed" : "refused", (int)s, (int)want, e.message);
     if (needle && !strstr(e.message, needle))
         fail_msg("chart %d: message '%s' lacks '%s'", k, e.message, needle);
 }
@@ -88,15 +88,14 @@ static void single_triangle(void **state)
     mesh_topology t;
     topo(&m, &t);
     assert_true(t.manifold);
-    EXPECT_COUNTS("single_triangle",
-        HAS(t.vertices, 3), HAS(t.faces, 1), HAS(t.edges, 3), HAS(t.boundary_edges, 3),
-        HAS(t.components, 1), HAS(t.boundary_loops, 1), HAS(t.euler_characteristic, 1),
-        HAS(t.cx.group_genus[0], 0), HAS(t.genus_sum, 0),
-        HAS(t.non_manifold_edges + t.non_manifold_vertices + t.misoriented_edges, 0),
-        HAS(t.degenerate_faces + t.duplicate_faces + t.unreferenced_vertices, 0),
-        HAS(t.uv_charts, 1), HAS(t.cx.loop_start[1], 3));
+    EXPECT_COUNTS("single_triangle", HAS(t.vertices, 3), HAS(t.faces, 1), HAS(t.edges, 3),
+                  HAS(t.boundary_edges, 3), HAS(t.components, 1), HAS(t.boundary_loops, 1),
+                  HAS(t.euler_characteristic, 1), HAS(t.cx.group_genus[0], 0), HAS(t.genus_sum, 0),
+                  HAS(t.non_manifold_edges + t.non_manifold_vertices + t.misoriented_edges, 0),
+                  HAS(t.degenerate_faces + t.duplicate_faces + t.unreferenced_vertices, 0),
+                  HAS(t.uv_charts, 1), HAS(t.cx.loop_start[1], 3));
     assert_loop_closed(&m, &t.cx, 0);
-    assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0);  /* mesh on the left: CCW */
+    assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0); /* mesh on the left: CCW */
     mesh_topology_free(&t);
     mesh_free(&m);
 }
@@ -109,9 +108,9 @@ static void two_triangles(void **state)
     make(&m, 4, SQUARE_V, 2, F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    EXPECT_COUNTS("two_triangles",
-        HAS(t.vertices, 4), HAS(t.edges, 5), HAS(t.boundary_edges, 4), HAS(t.boundary_loops, 1),
-        HAS(t.euler_characteristic, 1), HAS(t.cx.loop_start[1], 4));
+    EXPECT_COUNTS("two_triangles", HAS(t.vertices, 4), HAS(t.edges, 5), HAS(t.boundary_edges, 4),
+                  HAS(t.boundary_loops, 1), HAS(t.euler_characteristic, 1),
+                  HAS(t.cx.loop_start[1], 4));
     assert_loop_closed(&m, &t.cx, 0);
     assert_true(test_loop_area_xy(&m, &t.cx, 0) > 0);
 
@@ -134,9 +133,9 @@ static void closed_tetrahedron(void **state)
     make(&m, 4, TET_V, 4, TET_F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    EXPECT_COUNTS("closed_tetrahedron",
-        HAS(t.edges, 6), HAS(t.boundary_edges, 0), HAS(t.boundary_loops, 0),
-        HAS(t.euler_characteristic, 2), HAS(t.cx.group_genus[0], 0));
+    EXPECT_COUNTS("closed_tetrahedron", HAS(t.edges, 6), HAS(t.boundary_edges, 0),
+                  HAS(t.boundary_loops, 0), HAS(t.euler_characteristic, 2),
+                  HAS(t.cx.group_genus[0], 0));
     assert_true(t.manifold);
     assert_true(t.orientable);
     assert_int_equal(t.misoriented_edges, 0);
@@ -160,10 +159,9 @@ static void non_manifold_edge(void **state)
     topo(&m, &t);
     assert_int_equal(t.non_manifold_edges, 1);
     assert_false(t.manifold);
-    EXPECT_COUNTS("non_manifold_edge",
-        HAS(t.cx.group_genus[0], -1), HAS(t.genus_sum, -1),
-        HAS(t.misoriented_edges, 1), /* 0->1 used by faces 0 and 2 */
-        HAS(t.edges, 7), HAS(t.euler_characteristic, 5 - 7 + 3));
+    EXPECT_COUNTS("non_manifold_edge", HAS(t.cx.group_genus[0], -1), HAS(t.genus_sum, -1),
+                  HAS(t.misoriented_edges, 1), /* 0->1 used by faces 0 and 2 */
+                  HAS(t.edges, 7), HAS(t.euler_characteristic, 5 - 7 + 3));
 
     mesh_charts c;
     charts(&m, &c);
@@ -181,10 +179,9 @@ static void non_manifold_vertex(void **state)
     make(&m, 5, V, 2, F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    EXPECT_COUNTS("non_manifold_vertex",
-        HAS(t.non_manifold_vertices, 1), HAS(t.non_manifold_edges, 0),
-        HAS(t.components, 1), /* joined through vertex 0 */
-        HAS(t.boundary_loops, 1)); /* boundary graph joined at 0 too */
+    EXPECT_COUNTS("non_manifold_vertex", HAS(t.non_manifold_vertices, 1),
+                  HAS(t.non_manifold_edges, 0), HAS(t.components, 1), /* joined through vertex 0 */
+                  HAS(t.boundary_loops, 1)); /* boundary graph joined at 0 too */
     assert_false(t.cx.loop_ordered[0]);      /* not a simple cycle */
     assert_int_equal(t.cx.loop_start[1], 6);
     assert_false(t.manifold);
@@ -207,7 +204,7 @@ static void misoriented(void **state)
     mesh_topology t;
     topo(&m, &t);
     assert_int_equal(t.misoriented_edges, 1);
-    assert_true(t.orientable);  /* flipping face 1 repairs it */
+    assert_true(t.orientable); /* flipping face 1 repairs it */
     assert_true(t.manifold);
     assert_int_equal(t.cx.group_genus[0], 0);
     assert_false(t.cx.loop_ordered[0]);
@@ -233,7 +230,7 @@ static void mobius_strip(void **state)
     for (int i = 0; i < N; i++) {
         int a = 2 * i, b = 2 * i + 1, c, d;
         if (i + 1 < N) c = 2 * i + 2, d = 2 * i + 3;
-        else c = 1, d = 0;  /* twist: bottom meets top */
+        else c = 1, d = 0; /* twist: bottom meets top */
         int q[6] = {a, c, d, a, d, b};
         memcpy(F + 6 * i, q, sizeof q);
     }
@@ -243,8 +240,8 @@ static void mobius_strip(void **state)
     topo(&m, &t);
     assert_false(t.orientable);
     assert_true(t.manifold);
-    EXPECT_COUNTS("mobius_strip",
-        HAS(t.boundary_loops, 1), HAS(t.euler_characteristic, 0), HAS(t.cx.group_genus[0], -1));
+    EXPECT_COUNTS("mobius_strip", HAS(t.boundary_loops, 1), HAS(t.euler_characteristic, 0),
+                  HAS(t.cx.group_genus[0], -1));
     mesh_charts c;
     charts(&m, &c);
     assert_int_equal(mesh_chart_classify(&c, 0), MESH_CHART_NON_ORIENTABLE);
@@ -274,16 +271,16 @@ static void hole(void **state)
     make(&m, 16, V, nf, F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    EXPECT_COUNTS("hole",
-        HAS(t.boundary_loops, 2), HAS(t.euler_characteristic, 0), HAS(t.cx.group_genus[0], 0));
+    EXPECT_COUNTS("hole", HAS(t.boundary_loops, 2), HAS(t.euler_characteristic, 0),
+                  HAS(t.cx.group_genus[0], 0));
     int outer = t.cx.loop_start[1] - t.cx.loop_start[0] == 12 ? 0 : 1;
     EXPECT_COUNTS("hole: loop lengths",
-        HAS(t.cx.loop_start[outer + 1] - t.cx.loop_start[outer], 12),
-        HAS(t.cx.loop_start[2 - outer] - t.cx.loop_start[1 - outer], 4));
+                  HAS(t.cx.loop_start[outer + 1] - t.cx.loop_start[outer], 12),
+                  HAS(t.cx.loop_start[2 - outer] - t.cx.loop_start[1 - outer], 4));
     assert_loop_closed(&m, &t.cx, 0);
     assert_loop_closed(&m, &t.cx, 1);
-    assert_true(test_loop_area_xy(&m, &t.cx, outer) > 0);      /* outer loop CCW */
-    assert_true(test_loop_area_xy(&m, &t.cx, 1 - outer) < 0);  /* hole CW: mesh on the left */
+    assert_true(test_loop_area_xy(&m, &t.cx, outer) > 0);     /* outer loop CCW */
+    assert_true(test_loop_area_xy(&m, &t.cx, 1 - outer) < 0); /* hole CW: mesh on the left */
 
     mesh_charts c;
     charts(&m, &c);
@@ -311,13 +308,12 @@ static void seams(void **state)
     mesh_topology t;
     topo(&m, &t);
     assert_true(t.has_uv);
-    EXPECT_COUNTS("seams: shared diagonal vt",
-        HAS(t.uv_charts, 1), HAS(t.seam_edges, 0));
+    EXPECT_COUNTS("seams: shared diagonal vt", HAS(t.uv_charts, 1), HAS(t.seam_edges, 0));
     mesh_topology_free(&t);
     memcpy(m.FT, FT2, sizeof FT2);
     topo(&m, &t);
-    EXPECT_COUNTS("seams: diagonal vt split",
-        HAS(t.uv_charts, 2), HAS(t.seam_edges, 1), HAS(t.components, 1));
+    EXPECT_COUNTS("seams: diagonal vt split", HAS(t.uv_charts, 2), HAS(t.seam_edges, 1),
+                  HAS(t.components, 1));
     mesh_topology_free(&t);
 
     mesh_charts c;
@@ -335,12 +331,10 @@ static void seams(void **state)
             assert_int_equal(c.loop_v[i], m.F[h]);
         }
     }
-    EXPECT_COUNTS("seams: face groups",
-        HAS(c.cx.face_group[0], 0), HAS(c.cx.face_group[1], 1));
+    EXPECT_COUNTS("seams: face groups", HAS(c.cx.face_group[0], 0), HAS(c.cx.face_group[1], 1));
     /* chart vertex lists: vt 0,1,2 and vt 3,4,5 */
-    EXPECT_COUNTS("seams: chart vertex lists",
-        HAS(c.chart_vertex_start[0], 0), HAS(c.chart_vertex_start[1], 3),
-        HAS(c.chart_vertex_start[2], 6));
+    EXPECT_COUNTS("seams: chart vertex lists", HAS(c.chart_vertex_start[0], 0),
+                  HAS(c.chart_vertex_start[1], 3), HAS(c.chart_vertex_start[2], 6));
     for (int i = 0; i < 6; i++) assert_int_equal(c.chart_vertices[i], i);
     mesh_charts_free(&c);
     mesh_free(&m);
@@ -376,8 +370,7 @@ static void faces_without_uv(void **state)
     make(&m, 4, SQUARE_V, 2, F, 3, UV, FT);
     mesh_topology t;
     topo(&m, &t);
-    EXPECT_COUNTS("faces_without_uv",
-        HAS(t.uv_charts, 2), HAS(t.seam_edges, 1));
+    EXPECT_COUNTS("faces_without_uv", HAS(t.uv_charts, 2), HAS(t.seam_edges, 1));
     mesh_topology_free(&t);
     mesh_charts c;
     charts(&m, &c);
@@ -402,19 +395,19 @@ static void degenerate_duplicate_unreferenced(void **state)
     (void)state;
     const double V[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0, 0, 7, 7, 7};
     const int F[] = {
-        0, 1, 2,  /* fine */
-        2, 1, 0,  /* duplicate of face 0 (reversed) */
-        0, 0, 3,  /* repeated index */
-        0, 1, 4,  /* collinear: zero area */
+        0, 1, 2, /* fine */
+        2, 1, 0, /* duplicate of face 0 (reversed) */
+        0, 0, 3, /* repeated index */
+        0, 1, 4, /* collinear: zero area */
     };
     mesh m;
     make(&m, 6, V, 4, F, 0, NULL, NULL);
     mesh_topology t;
     topo(&m, &t);
-    EXPECT_COUNTS("degenerate_duplicate_unreferenced",
-        HAS(t.duplicate_faces, 1), HAS(t.repeated_index_faces, 1), HAS(t.degenerate_faces, 2),
-        HAS(t.unreferenced_vertices, 1), /* vertex 5 */
-        HAS(t.vertices, 5));
+    EXPECT_COUNTS("degenerate_duplicate_unreferenced", HAS(t.duplicate_faces, 1),
+                  HAS(t.repeated_index_faces, 1), HAS(t.degenerate_faces, 2),
+                  HAS(t.unreferenced_vertices, 1), /* vertex 5 */
+                  HAS(t.vertices, 5));
     mesh_topology_free(&t);
     mesh_free(&m);
 }
@@ -437,8 +430,8 @@ static void huge_fans_are_handled(void **state)
     }
     mesh_topology t;
     topo(&m, &t);
-    EXPECT_COUNTS("huge fan at one vertex",
-        HAS(t.components, 1), HAS(t.non_manifold_vertices, 1), HAS(t.boundary_loops, 1));
+    EXPECT_COUNTS("huge fan at one vertex", HAS(t.components, 1), HAS(t.non_manifold_vertices, 1),
+                  HAS(t.boundary_loops, 1));
     assert_false(t.cx.loop_ordered[0]);
     assert_int_equal(t.boundary_edges, 3 * N);
     mesh_topology_free(&t);
@@ -449,10 +442,9 @@ static void huge_fans_are_handled(void **state)
         m.F[3 * i + 2] = 2 + i;
     }
     topo(&m, &t);
-    EXPECT_COUNTS("huge fan on one edge",
-        HAS(t.non_manifold_edges, 1), HAS(t.misoriented_edges, 2),
-        HAS(t.non_manifold_vertices, 0), /* one fan through the edge */
-        HAS(t.unreferenced_vertices, N));
+    EXPECT_COUNTS("huge fan on one edge", HAS(t.non_manifold_edges, 1), HAS(t.misoriented_edges, 2),
+                  HAS(t.non_manifold_vertices, 0), /* one fan through the edge */
+                  HAS(t.unreferenced_vertices, N));
     mesh_topology_free(&t);
     mesh_charts c;
     assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
@@ -500,9 +492,8 @@ static void empty_mesh(void **state)
     assert_int_equal(mesh_alloc(&m, 0, 0, 0, &e), SCAF_OK);
     mesh_topology t;
     topo(&m, &t);
-    EXPECT_COUNTS("empty_mesh",
-        HAS(t.faces, 0), HAS(t.components, 0), HAS(t.boundary_loops, 0),
-        HAS(t.euler_characteristic, 0));
+    EXPECT_COUNTS("empty_mesh", HAS(t.faces, 0), HAS(t.components, 0), HAS(t.boundary_loops, 0),
+                  HAS(t.euler_characteristic, 0));
     mesh_topology_free(&t);
     mesh_charts c;
     assert_int_equal(mesh_charts_compute(&m, &c, &e), SCAF_OK);
@@ -521,8 +512,9 @@ static void edge_table_is_sorted_and_complete(void **state)
     assert_int_equal(E.ne, 6);
     for (int k = 0; k < E.ne; k++) {
         assert_true(E.ev[2 * k] < E.ev[2 * k + 1]);
-        if (k) assert_true(E.ev[2 * k - 2] < E.ev[2 * k] ||
-                           (E.ev[2 * k - 2] == E.ev[2 * k] && E.ev[2 * k - 1] < E.ev[2 * k + 1]));
+        if (k)
+            assert_true(E.ev[2 * k - 2] < E.ev[2 * k] ||
+                        (E.ev[2 * k - 2] == E.ev[2 * k] && E.ev[2 * k - 1] < E.ev[2 * k + 1]));
         assert_int_equal(mesh_edge_valence(&E, k), 2);
     }
     for (int h = 0; h < 12; h++) {

@@ -31,20 +31,42 @@ static void grid_laplacian(opt_csc *A, int m, double shift, int extra)
     for (int y = 0; y < m; y++)
         for (int x = 0; x < m; x++) {
             int i = y * m + x;
-            I[nt] = i; J[nt] = i; V[nt++] = 4 + shift;
-            if (x + 1 < m) { I[nt] = i; J[nt] = i + 1; V[nt++] = -1; }
-            if (y + 1 < m) { I[nt] = i + m; J[nt] = i; V[nt++] = -1; } /* lower triangle on purpose */
+            I[nt] = i;
+            J[nt] = i;
+            V[nt++] = 4 + shift;
+            if (x + 1 < m) {
+                I[nt] = i;
+                J[nt] = i + 1;
+                V[nt++] = -1;
+            }
+            if (y + 1 < m) {
+                I[nt] = i + m;
+                J[nt] = i;
+                V[nt++] = -1;
+            } /* lower triangle on purpose */
         }
-    if (extra) { I[nt] = 0; J[nt] = n - 1; V[nt++] = -0.5; I[nt] = 0; J[nt] = 0; V[nt++] = 0.5; }
+    if (extra) {
+        I[nt] = 0;
+        J[nt] = n - 1;
+        V[nt++] = -0.5;
+        I[nt] = 0;
+        J[nt] = 0;
+        V[nt++] = 0.5;
+    }
     assert_int_equal(opt_csc_from_triplets(A, n, nt, I, J, V, NULL), SCAF_OK);
-    free(I); free(J); free(V);
+    free(I);
+    free(J);
+    free(V);
 }
 
 static double rel_residual(const opt_csc *A, const double *x, const double *b)
 {
     double *y = malloc(A->n * sizeof *y), num = 0, den = 0;
     opt_csc_symv(A, x, y);
-    for (int i = 0; i < A->n; i++) { num += (y[i] - b[i]) * (y[i] - b[i]); den += b[i] * b[i]; }
+    for (int i = 0; i < A->n; i++) {
+        num += (y[i] - b[i]) * (y[i] - b[i]);
+        den += b[i] * b[i];
+    }
     free(y);
     return sqrt(num / den);
 }
@@ -137,7 +159,9 @@ static void given_random_permutation(void **state)
     for (int i = n - 1; i > 0; i--) {
         int j = (int)rng_uniform(&r, 0, i + 1);
         if (j > i) j = i;
-        int t = perm[i]; perm[i] = perm[j]; perm[j] = t;
+        int t = perm[i];
+        perm[i] = perm[j];
+        perm[j] = t;
     }
     for (int i = 0; i < n; i++) b[i] = rng_uniform(&r, -1, 1);
     scaf_error e;
@@ -180,7 +204,8 @@ static void given_random_permutation(void **state)
 
 /* The solution of plain CHOLMOD calls (cholmod_analyze_p with perm,
  * cholmod_factorize of the upper-stored A, cholmod_solve). */
-static void plain_cholmod_solve(const opt_csc *A, const int *perm, int nrhs, const double *b, double *x)
+static void plain_cholmod_solve(const opt_csc *A, const int *perm, int nrhs, const double *b,
+                                double *x)
 {
     cholmod_common cm;
     assert_true(cholmod_start(&cm));
@@ -222,12 +247,15 @@ static void same_bits_as_plain_cholmod(void **state)
     int n = A.n;
     rng r = {11};
     int *perm = malloc(n * sizeof *perm);
-    double *b = malloc(3 * n * sizeof *b), *x = malloc(3 * n * sizeof *x), *y = malloc(3 * n * sizeof *y);
+    double *b = malloc(3 * n * sizeof *b), *x = malloc(3 * n * sizeof *x),
+           *y = malloc(3 * n * sizeof *y);
     for (int i = 0; i < n; i++) perm[i] = i;
     for (int i = n - 1; i > 0; i--) {
         int j = (int)rng_uniform(&r, 0, i + 1);
         if (j > i) j = i;
-        int t = perm[i]; perm[i] = perm[j]; perm[j] = t;
+        int t = perm[i];
+        perm[i] = perm[j];
+        perm[j] = t;
     }
     for (int i = 0; i < 3 * n; i++) b[i] = rng_uniform(&r, -1, 1);
     scaf_error e;
@@ -269,8 +297,11 @@ static void block_ordering_solves(void **state)
             for (int a = 0; a < 2; a++)
                 for (int b = 0; b < 2; b++) {
                     int r = 2 * G.rowidx[k] + a, cc = 2 * c + b;
-                    if (r > cc) continue; /* upper part only (the diagonal block's lower entry is its mirror) */
-                    I[nt] = r; J[nt] = cc; V[nt++] = G.val[k] * M[2 * a + b];
+                    if (r > cc)
+                        continue; /* upper part only (the diagonal block's lower entry is its mirror) */
+                    I[nt] = r;
+                    J[nt] = cc;
+                    V[nt++] = G.val[k] * M[2 * a + b];
                 }
     opt_csc A;
     assert_int_equal(opt_csc_from_triplets(&A, 2 * G.n, nt, I, J, V, NULL), SCAF_OK);
@@ -288,7 +319,11 @@ static void block_ordering_solves(void **state)
         for (int k = 0; k < G.n; k++) assert_int_equal(p[2 * k + 1], p[2 * k] + 1);
         opt_chol_destroy(c);
     }
-    free(I); free(J); free(V); free(b); free(x);
+    free(I);
+    free(J);
+    free(V);
+    free(b);
+    free(x);
     opt_csc_free(&A);
     opt_csc_free(&G);
 }
@@ -307,7 +342,8 @@ static void relaxed_supernodes_solve(void **state)
     opt_csc A;
     grid_laplacian(&A, 60, 0.01, 1);
     rng r = {11};
-    double *b = malloc(A.n * sizeof *b), *x0 = malloc(A.n * sizeof *x0), *x1 = malloc(A.n * sizeof *x1);
+    double *b = malloc(A.n * sizeof *b), *x0 = malloc(A.n * sizeof *x0),
+           *x1 = malloc(A.n * sizeof *x1);
     for (int i = 0; i < A.n; i++) b[i] = rng_uniform(&r, -1, 1);
     int lv = omp_get_max_active_levels ? omp_get_max_active_levels() : -1;
     if (lv >= 0) omp_set_max_active_levels(3); /* a value the solver must not keep */
@@ -318,12 +354,15 @@ static void relaxed_supernodes_solve(void **state)
         assert_int_equal(opt_chol_solve(c, 1, b, scale == 1 ? x0 : x1, NULL), SCAF_OK);
         assert_true(rel_residual(&A, scale == 1 ? x0 : x1, b) < 1e-10);
         if (scale > 1)
-            for (int i = 0; i < A.n; i++) assert_true(fabs(x1[i] - x0[i]) <= 1e-8 * (1 + fabs(x0[i])));
+            for (int i = 0; i < A.n; i++)
+                assert_true(fabs(x1[i] - x0[i]) <= 1e-8 * (1 + fabs(x0[i])));
         if (lv >= 0) assert_int_equal(omp_get_max_active_levels(), 3);
         opt_chol_destroy(c);
     }
     if (lv >= 0) omp_set_max_active_levels(lv);
-    free(b); free(x0); free(x1);
+    free(b);
+    free(x0);
+    free(x1);
     opt_csc_free(&A);
 }
 
@@ -403,7 +442,8 @@ static void *factor_rounds(void *arg)
     j->ok = 1;
     for (int r = 0; r < j->rounds && j->ok; r++) {
         opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
-        if (!c || opt_chol_factor(c, j->A, &e) != SCAF_OK || opt_chol_solve(c, 1, j->b, j->x, &e) != SCAF_OK)
+        if (!c || opt_chol_factor(c, j->A, &e) != SCAF_OK ||
+            opt_chol_solve(c, 1, j->b, j->x, &e) != SCAF_OK)
             j->ok = 0;
         opt_chol_destroy(c);
     }
@@ -448,14 +488,10 @@ static void concurrent_factorizations(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(triplets_sum_duplicates),
-        cmocka_unit_test(solves_and_reuses_analysis),
-        cmocka_unit_test(given_random_permutation),
-        cmocka_unit_test(same_bits_as_plain_cholmod),
-        cmocka_unit_test(block_ordering_solves),
-        cmocka_unit_test(relaxed_supernodes_solve),
-        cmocka_unit_test(upper_sorted_layout),
-        cmocka_unit_test(indefinite_is_an_error),
+        cmocka_unit_test(triplets_sum_duplicates),   cmocka_unit_test(solves_and_reuses_analysis),
+        cmocka_unit_test(given_random_permutation),  cmocka_unit_test(same_bits_as_plain_cholmod),
+        cmocka_unit_test(block_ordering_solves),     cmocka_unit_test(relaxed_supernodes_solve),
+        cmocka_unit_test(upper_sorted_layout),       cmocka_unit_test(indefinite_is_an_error),
         cmocka_unit_test(concurrent_factorizations),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -18,7 +18,11 @@
 /* L_ij from the upper storage (0 when not stored). */
 static double entry(const opt_csc *L, int i, int j)
 {
-    if (i > j) { int t = i; i = j; j = t; }
+    if (i > j) {
+        int t = i;
+        i = j;
+        j = t;
+    }
     for (int k = L->colptr[j]; k < L->colptr[j + 1]; k++)
         if (L->rowidx[k] == i) return L->val[k];
     return 0;
@@ -55,13 +59,21 @@ static void flat_grid(void **state)
     for (int y = 0; y <= n; y++)
         for (int x = 0; x <= n; x++) {
             int v = y * (n + 1) + x;
-            V[3 * v] = x; V[3 * v + 1] = y; V[3 * v + 2] = 0;
+            V[3 * v] = x;
+            V[3 * v + 1] = y;
+            V[3 * v + 2] = 0;
         }
     for (int y = 0; y < n; y++)
         for (int x = 0; x < n; x++) {
             int a = y * (n + 1) + x, b = a + 1, c = a + n + 2, d = a + n + 1;
-            F[3 * f] = a; F[3 * f + 1] = b; F[3 * f + 2] = c; f++;
-            F[3 * f] = a; F[3 * f + 1] = c; F[3 * f + 2] = d; f++;
+            F[3 * f] = a;
+            F[3 * f + 1] = b;
+            F[3 * f + 2] = c;
+            f++;
+            F[3 * f] = a;
+            F[3 * f + 1] = c;
+            F[3 * f + 2] = d;
+            f++;
         }
     opt_csc L;
     scaf_error e;
@@ -107,7 +119,8 @@ static void icosphere_properties(void **state)
     for (int k = 0; k < m.nv; k++) assert_true(fabs(y[k]) < 1e-12);
     for (int trial = 0; trial < 3; trial++) {
         double q = 0;
-        for (int k = 0; k < m.nv; k++) x[k] = sin(1.7 * k + trial) + m.V[3 * k + trial] * m.V[3 * k + trial];
+        for (int k = 0; k < m.nv; k++)
+            x[k] = sin(1.7 * k + trial) + m.V[3 * k + trial] * m.V[3 * k + trial];
         opt_csc_symv(&L, x, y);
         for (int k = 0; k < m.nv; k++) q += x[k] * y[k];
         assert_true(q < 0);
@@ -115,7 +128,8 @@ static void icosphere_properties(void **state)
     for (int k = 0; k < 3 * m.nv; k++) m.V[k] = 7 * m.V[k] + 1;
     assert_int_equal(opt_cotan_laplacian(m.nv, m.V, m.nf, m.F, &L2, &e), SCAF_OK);
     assert_int_equal(L2.nnz, L.nnz);
-    for (int k = 0; k < L.nnz; k++) assert_true(fabs(L2.val[k] - L.val[k]) < 1e-12 * (1 + fabs(L.val[k])));
+    for (int k = 0; k < L.nnz; k++)
+        assert_true(fabs(L2.val[k] - L.val[k]) < 1e-12 * (1 + fabs(L.val[k])));
     free(x);
     free(y);
     opt_csc_free(&L);

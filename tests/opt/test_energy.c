@@ -122,8 +122,10 @@ static void isometry_values(void **state)
         opt_term tt = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
         assert_true(fabs(opt_term_mean_energy(&tt, Y) - 4) < 1e-9);
         /* The weight is the 3D area. */
-        double e1[3] = {V[3] - V[0], V[4] - V[1], V[5] - V[2]}, e2[3] = {V[6] - V[0], V[7] - V[1], V[8] - V[2]};
-        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2], cz = e1[0] * e2[1] - e1[1] * e2[0];
+        double e1[3] = {V[3] - V[0], V[4] - V[1], V[5] - V[2]},
+               e2[3] = {V[6] - V[0], V[7] - V[1], V[8] - V[2]};
+        double cx = e1[1] * e2[2] - e1[2] * e2[1], cy = e1[2] * e2[0] - e1[0] * e2[2],
+               cz = e1[0] * e2[1] - e1[1] * e2[0];
         assert_true(fabs(S.weight[0] - 0.5 * sqrt(cx * cx + cy * cy + cz * cz)) < 1e-12);
         opt_simplices_free(&S);
     }
@@ -135,7 +137,10 @@ static void isometry_values(void **state)
         double sc = trial % 2 ? 1.0 : rng_uniform(&r, 0.2, 5);
         for (int i = 0; i < 4; i++)
             for (int a = 0; a < 3; a++)
-                Y[3 * i + a] = sc * (R[3 * a] * P[3 * i] + R[3 * a + 1] * P[3 * i + 1] + R[3 * a + 2] * P[3 * i + 2]) + 1.5;
+                Y[3 * i + a] = sc *
+                        (R[3 * a] * P[3 * i] + R[3 * a + 1] * P[3 * i + 1] +
+                         R[3 * a + 2] * P[3 * i + 2]) +
+                    1.5;
         opt_simplices S;
         one_simplex(&S, 3, P);
         double J[9];
@@ -174,14 +179,13 @@ static void rotation_invariance(void **state)
                 double ey = opt_term_energy(&t, Y), ez = opt_term_energy(&t, Z);
                 assert_true(fabs(ey - ez) <= 1e-10 * fabs(ey) + 1e-12);
                 /* Inverted maps: barriers are infinite, ARAP finite. */
-                for (int a = 0; a < d; a++) Z[a] = Y[a], Z[d + a] = Y[2 * d + a], Z[2 * d + a] = Y[d + a];
+                for (int a = 0; a < d; a++)
+                    Z[a] = Y[a], Z[d + a] = Y[2 * d + a], Z[2 * d + a] = Y[d + a];
                 for (int i = 3; i <= d; i++)
                     for (int a = 0; a < d; a++) Z[i * d + a] = Y[i * d + a];
                 double ei = opt_term_energy(&t, Z);
-                if (all_energies[e] == OPT_ENERGY_ARAP)
-                    assert_true(isfinite(ei));
-                else
-                    assert_true(isinf(ei));
+                if (all_energies[e] == OPT_ENERGY_ARAP) assert_true(isfinite(ei));
+                else assert_true(isinf(ei));
                 opt_simplices_free(&S);
             }
 }
@@ -221,7 +225,8 @@ static void slim_proxy_gradient_matches(void **state)
                 }
                 /* W symmetric positive definite. */
                 for (int a = 0; a < d; a++)
-                    for (int b = 0; b < d; b++) assert_true(fabs(W[a * d + b] - W[b * d + a]) < 1e-12);
+                    for (int b = 0; b < d; b++)
+                        assert_true(fabs(W[a * d + b] - W[b * d + a]) < 1e-12);
                 assert_true(det_d(d, M) > 0 && M[0] > 0);
             }
         }
@@ -237,12 +242,18 @@ static void proxy_2d_matches_svd(void **state)
         do {
             for (int k = 0; k < 4; k++) J[k] = rng_uniform(&r, -2, 2);
         } while (det_d(2, J) <= 1e-3);
-        if (trial == 0) { J[0] = 1.5; J[1] = 0; J[2] = 0; J[3] = 1.5; } /* equal singular values */
+        if (trial == 0) {
+            J[0] = 1.5;
+            J[1] = 0;
+            J[2] = 0;
+            J[3] = 1.5;
+        } /* equal singular values */
         svd2_signed(J, U, sv, V);
         for (int e = 0; e < 2; e++) {
             double w[2];
             for (int i = 0; i < 2; i++)
-                w[i] = e == 0 ? sqrt((sv[i] + 1) * (sv[i] * sv[i] + 1) / (sv[i] * sv[i] * sv[i])) : 1.0;
+                w[i] = e == 0 ? sqrt((sv[i] + 1) * (sv[i] * sv[i] + 1) / (sv[i] * sv[i] * sv[i]))
+                              : 1.0;
             opt_slim_proxy(e == 0 ? OPT_ENERGY_SYMMETRIC_DIRICHLET : OPT_ENERGY_ARAP, 2, J, W, T);
             for (int a = 0; a < 2; a++)
                 for (int b = 0; b < 2; b++) {

@@ -62,7 +62,11 @@ static void random_triangle_steps(void **state)
         double t = opt_max_step_triangle(x, x + 2, x + 4, d, d + 2, d + 4);
         assert_true(t > 0);
         double ts[3] = {t * (1 - 1e-7), t * 0.5, t * 1e-3};
-        if (isinf(t)) { ts[0] = 10; ts[1] = 1e3; ts[2] = 1e6; }
+        if (isinf(t)) {
+            ts[0] = 10;
+            ts[1] = 1e3;
+            ts[2] = 1e6;
+        }
         for (int s = 0; s < 3; s++) {
             for (int k = 0; k < 6; k++) y[k] = x[k] + ts[s] * d[k];
             assert_true(orient2d(y, y + 2, y + 4) > 0);
@@ -108,14 +112,26 @@ static void mesh_step_is_exact_minimum(void **state)
             D[i] = rng_uniform(&r, -1, 1) * (trial % 5 == 0 ? 1e-3 : 1.0);
         }
         for (int t = 0; t < NT; t++) {
-            int a = (int)rng_uniform(&r, 0, NV), b = (int)rng_uniform(&r, 0, NV), c = (int)rng_uniform(&r, 0, NV);
-            a = a % NV; b = b % NV; c = c % NV;
-            if (a == b || b == c || a == c) { b = (a + 1) % NV; c = (a + 2) % NV; }
+            int a = (int)rng_uniform(&r, 0, NV), b = (int)rng_uniform(&r, 0, NV),
+                c = (int)rng_uniform(&r, 0, NV);
+            a = a % NV;
+            b = b % NV;
+            c = c % NV;
+            if (a == b || b == c || a == c) {
+                b = (a + 1) % NV;
+                c = (a + 2) % NV;
+            }
             /* orient counter-clockwise so most triangles are valid */
             double o = (X[2 * b] - X[2 * a]) * (X[2 * c + 1] - X[2 * a + 1]) -
-                       (X[2 * b + 1] - X[2 * a + 1]) * (X[2 * c] - X[2 * a]);
-            if (o < 0) { int tmp = b; b = c; c = tmp; }
-            idx[3 * t] = a; idx[3 * t + 1] = b; idx[3 * t + 2] = c;
+                (X[2 * b + 1] - X[2 * a + 1]) * (X[2 * c] - X[2 * a]);
+            if (o < 0) {
+                int tmp = b;
+                b = c;
+                c = tmp;
+            }
+            idx[3 * t] = a;
+            idx[3 * t + 1] = b;
+            idx[3 * t + 2] = c;
         }
         double want = INFINITY;
         for (int t = 0; t < NT; t++) {
@@ -155,7 +171,11 @@ static void tet_steps(void **state)
         t = opt_max_step_tet(p, p + 3, p + 6, p + 9, dd, dd + 3, dd + 6, dd + 9);
         assert_true(t > 0);
         double ts[3] = {t * (1 - 1e-7), t * 0.5, t * 1e-3};
-        if (isinf(t)) { ts[0] = 10; ts[1] = 1e3; ts[2] = 1e6; }
+        if (isinf(t)) {
+            ts[0] = 10;
+            ts[1] = 1e3;
+            ts[2] = 1e6;
+        }
         for (int s = 0; s < 3; s++) {
             for (int k = 0; k < 12; k++) y[k] = p[k] + ts[s] * dd[k];
             assert_true(orient3d(y, y + 3, y + 6, y + 9) < 0); /* positive tet */
@@ -198,22 +218,27 @@ static void line_search_never_flips(void **state)
     int seg = 12;
     double X[2 * 13], D[2 * 13] = {0};
     int F[3 * 12];
-    X[0] = 0; X[1] = 0;
+    X[0] = 0;
+    X[1] = 0;
     for (int j = 0; j < seg; j++) {
         X[2 + 2 * j] = cos(2 * 3.14159265358979 * j / seg);
         X[3 + 2 * j] = sin(2 * 3.14159265358979 * j / seg);
-        F[3 * j] = 0; F[3 * j + 1] = 1 + j; F[3 * j + 2] = 1 + (j + 1) % seg;
+        F[3 * j] = 0;
+        F[3 * j + 1] = 1 + j;
+        F[3 * j + 2] = 1 + (j + 1) % seg;
     }
     opt_simplices S;
     /* Rest shape: the same fan with the center off to one side. */
     double R[2 * 13];
     memcpy(R, X, sizeof X);
-    R[0] = 0.5; R[1] = 0.2;
+    R[0] = 0.5;
+    R[1] = 0.2;
     assert_int_equal(opt_simplices_from_current(&S, 2, 13, R, seg, F, 0.0, NULL), SCAF_OK);
     opt_term t = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
     opt_simplex_term st = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET, NULL, 0};
     opt_obj_term ot = opt_simplex_term_make(&st);
-    D[0] = 5; D[1] = 1; /* far past the boundary */
+    D[0] = 5;
+    D[1] = 1; /* far past the boundary */
     opt_ls_result res;
     double e0 = opt_obj_energy(&ot, 1, X);
     assert_int_equal(opt_line_search(&ot, 1, 2, 13, X, D, NULL, &res, NULL), SCAF_OK);
@@ -226,7 +251,8 @@ static void line_search_never_flips(void **state)
     /* Ascent direction: no step, X unchanged. */
     double keep[26];
     memcpy(keep, X, sizeof keep);
-    D[0] = -D[0]; D[1] = -D[1];
+    D[0] = -D[0];
+    D[1] = -D[1];
     double g[26] = {0};
     opt_term_gradient(&t, X, g);
     for (int k = 0; k < 26; k++) D[k] = g[k];

@@ -110,9 +110,11 @@ static void newton_fill_is_exact(void **state)
             t.ops->energy_slope(&t, X, D, &e, &slope);
             size_t c = 2 * (size_t)dof[v] + a;
             assert_true(fabs(rhs[c] + slope) < 1e-12); /* rhs = -dE/dx */
-            if (diag[c] != 0.0) /* x + H^-1 (-g): the target */
+            if (diag[c] != 0.0)                        /* x + H^-1 (-g): the target */
                 assert_true(fabs(X[2 * v + a] + rhs[c] / diag[c] -
-                                 (v == 3 ? ht[a] : v == 0 ? ht[2 + a] : 0)) < 1e-12);
+                                 (v == 3       ? ht[a]
+                                      : v == 0 ? ht[2 + a]
+                                               : 0)) < 1e-12);
         }
     assert_true(diag[0] > 0 && diag[0] == diag[4] && diag[2] == 0); /* 2w on handles only */
     opt_obj_term_free(&t);
@@ -177,10 +179,8 @@ static void weight_and_errors(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(energy_and_slope),
-        cmocka_unit_test(proxy_solves_to_targets),
-        cmocka_unit_test(newton_fill_is_exact),
-        cmocka_unit_test(pattern_kept_while_vertices_stay),
+        cmocka_unit_test(energy_and_slope),     cmocka_unit_test(proxy_solves_to_targets),
+        cmocka_unit_test(newton_fill_is_exact), cmocka_unit_test(pattern_kept_while_vertices_stay),
         cmocka_unit_test(weight_and_errors),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

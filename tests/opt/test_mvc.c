@@ -46,7 +46,8 @@ static opt_chart_loops loops_of(const mesh *m, int **start, int **verts)
     for (int l = 0; l <= nl; l++) (*start)[l] = t.cx.loop_start[l];
     for (int l = 0; l < nl; l++) {
         assert_true(t.cx.loop_ordered[l]);
-        for (int k = t.cx.loop_start[l]; k < t.cx.loop_start[l + 1]; k++) (*verts)[k] = m->F[t.cx.loop_he[k]];
+        for (int k = t.cx.loop_start[l]; k < t.cx.loop_start[l + 1]; k++)
+            (*verts)[k] = m->F[t.cx.loop_he[k]];
     }
     mesh_topology_free(&t);
     opt_chart_loops L = {nl, *start, *verts, -1};
@@ -57,7 +58,8 @@ static int count_nonpositive(const mesh *m, const double *UV)
 {
     int bad = 0;
     for (int f = 0; f < m->nf; f++)
-        bad += !(orient2d(UV + 2 * m->F[3 * f], UV + 2 * m->F[3 * f + 1], UV + 2 * m->F[3 * f + 2]) > 0);
+        bad += !(
+            orient2d(UV + 2 * m->F[3 * f], UV + 2 * m->F[3 * f + 1], UV + 2 * m->F[3 * f + 2]) > 0);
     return bad;
 }
 
@@ -81,7 +83,8 @@ static void mvc_sample(const char *name, int size)
     double *UV = malloc(2 * (size_t)m.nv * sizeof *UV);
     assert_non_null(UV);
     int fb = -1;
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, UV, &fb, &e), SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, UV, &fb, &e),
+                     SCAF_OK);
     assert_int_equal(fb, 0);
     assert_int_equal(count_nonpositive(&m, UV), 0);
     assert_bijective(&m, UV);
@@ -91,9 +94,21 @@ static void mvc_sample(const char *name, int size)
     mesh_free(&m);
 }
 
-static void mvc_grid(void **state) { (void)state; mvc_sample("grid", 12); }
-static void mvc_hemisphere(void **state) { (void)state; mvc_sample("hemisphere", 10); }
-static void mvc_holes(void **state) { (void)state; mvc_sample("holes", 6); }
+static void mvc_grid(void **state)
+{
+    (void)state;
+    mvc_sample("grid", 12);
+}
+static void mvc_hemisphere(void **state)
+{
+    (void)state;
+    mvc_sample("hemisphere", 10);
+}
+static void mvc_holes(void **state)
+{
+    (void)state;
+    mvc_sample("holes", 6);
+}
 
 /* A fan around vertex 0 in the plane z = 0 with: a very obtuse corner at
  * the center (179.9 degrees), a sliver (angle ~1e-9 at the center), a
@@ -105,24 +120,21 @@ static void weights_positive_on_bad_triangles(void **state)
 {
     (void)state;
     const double V[] = {
-        0, 0, 0,              /* 0 center */
-        1, 0, 0,              /* 1 */
-        -1, 1e-3, 0,          /* 2: angle 1-0-2 is ~179.94 degrees */
-        -1, 1e-3 + 1e-9, 0,   /* 3: sliver 2-0-3 */
-        0, -1, 0,             /* 4 */
-        5, 5, 1,              /* 5: a well-shaped triangle 4-5-6 away from the center */
-        6, 4, 0,              /* 6 */
-        6, 4, 0,              /* 7: same position as 6 */
-        7, 3, -1,             /* 8: 6, 7, 8 collinear too */
+        0,  0,           0,  /* 0 center */
+        1,  0,           0,  /* 1 */
+        -1, 1e-3,        0,  /* 2: angle 1-0-2 is ~179.94 degrees */
+        -1, 1e-3 + 1e-9, 0,  /* 3: sliver 2-0-3 */
+        0,  -1,          0,  /* 4 */
+        5,  5,           1,  /* 5: a well-shaped triangle 4-5-6 away from the center */
+        6,  4,           0,  /* 6 */
+        6,  4,           0,  /* 7: same position as 6 */
+        7,  3,           -1, /* 8: 6, 7, 8 collinear too */
     };
     const int F[] = {
-        0, 1, 2, /* obtuse at 0 */
-        0, 2, 3, /* sliver at 0 */
-        0, 3, 4,
-        0, 4, 1,
-        4, 5, 6,
-        5, 7, 6, /* zero-length edge 6-7 */
-        6, 7, 8, /* zero area */
+        0, 1, 2,                            /* obtuse at 0 */
+        0, 2, 3,                            /* sliver at 0 */
+        0, 3, 4, 0, 4, 1, 4, 5, 6, 5, 7, 6, /* zero-length edge 6-7 */
+        6, 7, 8,                            /* zero area */
     };
     int nv = 9, nf = 7;
     double W[6 * 7];
@@ -164,7 +176,10 @@ static void mvc_degenerate_3d_triangles(void **state)
     scaf_error e;
     assert_int_equal(mesh_sample_make("grid", 8, &m, &e), SCAF_OK);
     double lo = INFINITY, hi = -INFINITY;
-    for (int v = 0; v < m.nv; v++) { lo = fmin(lo, m.V[3 * v]); hi = fmax(hi, m.V[3 * v]); }
+    for (int v = 0; v < m.nv; v++) {
+        lo = fmin(lo, m.V[3 * v]);
+        hi = fmax(hi, m.V[3 * v]);
+    }
     /* faces with all three vertices strictly inside */
     int picked[2] = {-1, -1}, np = 0;
     for (int f = 0; f < m.nf && np < 2; f++) {
@@ -198,7 +213,8 @@ static void mvc_degenerate_3d_triangles(void **state)
     double *UV = malloc(2 * (size_t)m.nv * sizeof *UV);
     assert_non_null(UV);
     int fb = -1;
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, UV, &fb, &e), SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, UV, &fb, &e),
+                     SCAF_OK);
     assert_int_equal(fb, 0);
     assert_int_equal(count_nonpositive(&m, UV), 0);
     assert_bijective(&m, UV);
@@ -228,8 +244,10 @@ static void mvc_reproduces_flat_irregular_grid(void **state)
     assert_non_null(X);
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
     for (int v = 0; v < m.nv; v++) {
-        xmin = fmin(xmin, m.V[3 * v]); xmax = fmax(xmax, m.V[3 * v]);
-        ymin = fmin(ymin, m.V[3 * v + 1]); ymax = fmax(ymax, m.V[3 * v + 1]);
+        xmin = fmin(xmin, m.V[3 * v]);
+        xmax = fmax(xmax, m.V[3 * v]);
+        ymin = fmin(ymin, m.V[3 * v + 1]);
+        ymax = fmax(ymax, m.V[3 * v + 1]);
     }
     double h = (xmax - xmin) / n;
     unsigned s = 12345u;
@@ -287,13 +305,16 @@ static void harmonic_falls_back_to_mvc(void **state)
     assert_non_null(Uh);
     assert_non_null(Um);
     int fbh = -1, fbm = -1;
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_HARMONIC, Uh, &fbh, NULL), SCAF_OK);
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, Um, &fbm, NULL), SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_HARMONIC, Uh, &fbh, NULL),
+                     SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, Um, &fbm, NULL),
+                     SCAF_OK);
     assert_int_equal(fbh, 1);
     assert_int_equal(fbm, 0);
     assert_memory_equal(Uh, Um, 2 * (size_t)m.nv * sizeof *Uh);
     for (int f = 0; f < m.nf; f++)
-        assert_true(orient2d(Um + 2 * m.F[3 * f], Um + 2 * m.F[3 * f + 1], Um + 2 * m.F[3 * f + 2]) > 0);
+        assert_true(
+            orient2d(Um + 2 * m.F[3 * f], Um + 2 * m.F[3 * f + 1], Um + 2 * m.F[3 * f + 2]) > 0);
     free(Uh);
     free(Um);
     polar_disk_free(&m);
@@ -316,8 +337,10 @@ static void plane_holes_mvc_beats_tutte(void **state)
     assert_non_null(Ut);
     assert_non_null(Um);
     int fb = -1;
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_TUTTE, Ut, &fb, &e), SCAF_OK);
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, Um, &fb, &e), SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_TUTTE, Ut, &fb, &e),
+                     SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, Um, &fb, &e),
+                     SCAF_OK);
     assert_int_equal(fb, 0);
     assert_int_equal(count_nonpositive(&m, Um), 0);
     assert_bijective(&m, Um);
@@ -368,24 +391,31 @@ static void best_outer_loop(void **state)
     for (int l = 0; l < L.nloops; l++) {
         opt_chart_loops one = L;
         one.outer = l;
-        assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &one, OPT_EMBED_MVC, U, NULL, &e), SCAF_OK);
+        assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &one, OPT_EMBED_MVC, U, NULL, &e),
+                         SCAF_OK);
         double E = mean_energy(&m, U);
         lowest = fmin(lowest, E);
         highest = fmax(highest, E);
     }
     double Eb = NAN;
-    assert_int_equal(opt_embed_chart_best(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, 32, B, NULL, &Eb, &e), SCAF_OK);
+    assert_int_equal(
+        opt_embed_chart_best(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, 32, B, NULL, &Eb, &e),
+        SCAF_OK);
     assert_int_equal(count_nonpositive(&m, B), 0);
     assert_bijective(&m, B);
     double E = mean_energy(&m, B);
-    print_message("holes: start E over the 7 loops %.6g .. %.6g, chosen %.6g\n", lowest, highest, E);
+    print_message("holes: start E over the 7 loops %.6g .. %.6g, chosen %.6g\n", lowest, highest,
+                  E);
     assert_true(E <= lowest * (1.0 + 1e-9));
     assert_true(fabs(Eb - E) <= 1e-9 * E); /* the reported energy is this one */
     /* one try: the longest loop, as opt_embed_chart with outer -1 */
     opt_chart_loops longest = L;
     longest.outer = -1;
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &longest, OPT_EMBED_MVC, U, NULL, &e), SCAF_OK);
-    assert_int_equal(opt_embed_chart_best(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, 1, B, NULL, NULL, &e), SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &longest, OPT_EMBED_MVC, U, NULL, &e),
+                     SCAF_OK);
+    assert_int_equal(
+        opt_embed_chart_best(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, 1, B, NULL, NULL, &e),
+        SCAF_OK);
     assert_memory_equal(B, U, 2 * (size_t)m.nv * sizeof *U);
     free(U);
     free(B);
@@ -400,11 +430,15 @@ static void best_outer_loop(void **state)
     U = malloc(2 * (size_t)m.nv * sizeof *U);
     B = malloc(2 * (size_t)m.nv * sizeof *B);
     L.outer = -1;
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, U, NULL, &e), SCAF_OK);
-    assert_int_equal(opt_embed_chart_best(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, 32, B, NULL, NULL, &e), SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, U, NULL, &e),
+                     SCAF_OK);
+    assert_int_equal(
+        opt_embed_chart_best(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_MVC, 32, B, NULL, NULL, &e),
+        SCAF_OK);
     assert_bijective(&m, B);
     double El = mean_energy(&m, U), Ebest = mean_energy(&m, B);
-    print_message("plane_holes start E: longest loop %.4g, best of %d loops %.4g\n", El, L.nloops, Ebest);
+    print_message("plane_holes start E: longest loop %.4g, best of %d loops %.4g\n", El, L.nloops,
+                  Ebest);
     assert_true(Ebest < El);
     free(U);
     free(B);

@@ -77,13 +77,15 @@ static void jittered_cube(problem *p, int cells, double amount, uint64_t seed)
     assert_int_equal(tet_grid_make(&g, cells), 0);
     p->d = 3;
     p->nv = g.nv;
-    assert_int_equal(opt_simplices_from_current(&p->S, 3, g.nv, g.X, g.nt, g.T, 0.0, NULL), SCAF_OK);
+    assert_int_equal(opt_simplices_from_current(&p->S, 3, g.nv, g.X, g.nt, g.T, 0.0, NULL),
+                     SCAF_OK);
     rng r = {seed};
     p->X = malloc(3 * (size_t)g.nv * sizeof *p->X);
     p->dof = malloc((size_t)g.nv * sizeof *p->dof);
     for (int v = 0; v < g.nv; v++)
         for (int a = 0; a < 3; a++)
-            p->X[3 * v + a] = g.X[3 * v + a] + (g.boundary[v] ? 0 : rng_uniform(&r, -amount, amount));
+            p->X[3 * v + a] =
+                g.X[3 * v + a] + (g.boundary[v] ? 0 : rng_uniform(&r, -amount, amount));
     p->nfree = opt_dof_numbering(g.nv, g.boundary, p->dof);
     double w = 0;
     for (int s = 0; s < p->S.n; s++) w += p->S.weight[s];
@@ -150,7 +152,10 @@ static void check_fill_against_dense(problem *p, int project)
     int nnz = b.A.nnz;
     opt_proxy_block_fill(&b, &t, p->dof, p->X, rhs);
     assert_int_equal(b.A.nnz, nnz);
-    free(M); free(Href); free(gref); free(rhs);
+    free(M);
+    free(Href);
+    free(gref);
+    free(rhs);
     opt_proxy_block_free(&b);
 }
 
@@ -213,7 +218,8 @@ static void newton_fill_refuses_bad_input(void **state)
     double *rhs = calloc((size_t)p.nfree * 2, sizeof *rhs);
     scaf_error e;
     opt_term arap = {&p.S, OPT_ENERGY_ARAP};
-    assert_int_equal(opt_newton_block_fill(&b, &arap, p.dof, p.X, 1, rhs, NULL, &e), SCAF_ERR_USAGE);
+    assert_int_equal(opt_newton_block_fill(&b, &arap, p.dof, p.X, 1, rhs, NULL, &e),
+                     SCAF_ERR_USAGE);
     assert_non_null(strstr(e.message, "arap"));
     /* Collapse the center onto a boundary vertex: inverted simplices named. */
     p.X[0] = 2 * p.X[2 * p.nv - 2];

@@ -50,29 +50,50 @@ static void run_file(const char *rel)
     for (int l = 0; l <= nl; l++) start[l] = t.cx.loop_start[l];
     for (int l = 0; l < nl; l++) {
         assert_true(t.cx.loop_ordered[l]);
-        for (int k = t.cx.loop_start[l]; k < t.cx.loop_start[l + 1]; k++) verts[k] = m.F[t.cx.loop_he[k]];
+        for (int k = t.cx.loop_start[l]; k < t.cx.loop_start[l + 1]; k++)
+            verts[k] = m.F[t.cx.loop_he[k]];
     }
     opt_chart_loops L = {nl, start, verts, -1};
     double *X = malloc(2 * m.nv * sizeof *X);
     int fb = 0;
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_HARMONIC, X, &fb, &e), SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &L, OPT_EMBED_HARMONIC, X, &fb, &e),
+                     SCAF_OK);
     assert_bijective(&m, X);
     opt_simplices S;
     assert_int_equal(opt_simplices_from_surface(&S, m.nv, m.V, m.nf, m.F, &e), SCAF_OK);
     opt_term term = {&S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
     double E0 = opt_term_mean_energy(&term, X);
-    print_message("%s: %s start E = %.4f\n", rel, fb ? "Tutte (harmonic fell back)" : "harmonic", E0);
+    print_message("%s: %s start E = %.4f\n", rel, fb ? "Tutte (harmonic fell back)" : "harmonic",
+                  E0);
     assert_true(isfinite(E0));
     opt_simplices_free(&S);
-    free(X); free(start); free(verts);
+    free(X);
+    free(start);
+    free(verts);
     mesh_topology_free(&t);
     mesh_free(&m);
 }
 
-static void hand(void **state) { (void)state; run_file("disk/hand_lowres.obj"); }
-static void camel_b(void **state) { (void)state; run_file("disk/camel_b.obj"); }
-static void camelhead(void **state) { (void)state; run_file("disk/camelhead.off"); }
-static void plane_with_27_holes(void **state) { (void)state; run_file("bad/plane_holes.obj"); }
+static void hand(void **state)
+{
+    (void)state;
+    run_file("disk/hand_lowres.obj");
+}
+static void camel_b(void **state)
+{
+    (void)state;
+    run_file("disk/camel_b.obj");
+}
+static void camelhead(void **state)
+{
+    (void)state;
+    run_file("disk/camelhead.off");
+}
+static void plane_with_27_holes(void **state)
+{
+    (void)state;
+    run_file("bad/plane_holes.obj");
+}
 
 int main(void)
 {

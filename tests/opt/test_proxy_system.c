@@ -39,7 +39,10 @@ static void make_problem(problem *p, int d)
         assert_int_equal(polar_disk_make(&m, 4, 9, 0.7, 0), 0);
         p->nv = m.nv;
         p->X = malloc(2 * m.nv * sizeof *p->X);
-        for (int v = 0; v < m.nv; v++) { p->X[2 * v] = m.V[3 * v] * 1.3; p->X[2 * v + 1] = m.V[3 * v + 1]; }
+        for (int v = 0; v < m.nv; v++) {
+            p->X[2 * v] = m.V[3 * v] * 1.3;
+            p->X[2 * v + 1] = m.V[3 * v + 1];
+        }
         assert_int_equal(opt_simplices_from_surface(&p->S, m.nv, m.V, m.nf, m.F, NULL), SCAF_OK);
         unsigned char *fixed = calloc(m.nv, 1);
         for (int k = 0; k < m.start[1]; k++) fixed[m.loops[k]] = 1;
@@ -51,11 +54,13 @@ static void make_problem(problem *p, int d)
         tet_grid g;
         assert_int_equal(tet_grid_make(&g, 3), 0);
         p->nv = g.nv;
-        assert_int_equal(opt_simplices_from_current(&p->S, 3, g.nv, g.X, g.nt, g.T, 0.0, NULL), SCAF_OK);
+        assert_int_equal(opt_simplices_from_current(&p->S, 3, g.nv, g.X, g.nt, g.T, 0.0, NULL),
+                         SCAF_OK);
         p->X = malloc(3 * g.nv * sizeof *p->X);
         for (int v = 0; v < g.nv; v++)
             for (int a = 0; a < 3; a++)
-                p->X[3 * v + a] = g.X[3 * v + a] + (g.boundary[v] ? 0 : rng_uniform(&r, -0.08, 0.08));
+                p->X[3 * v + a] =
+                    g.X[3 * v + a] + (g.boundary[v] ? 0 : rng_uniform(&r, -0.08, 0.08));
         p->dof = malloc(g.nv * sizeof *p->dof);
         p->nfree = opt_dof_numbering(g.nv, g.boundary, p->dof);
         tet_grid_free(&g);
@@ -102,7 +107,8 @@ static void matrix_is_the_proxy_quadratic(void **state)
             opt_proxy_block b = {0};
             assert_int_equal(opt_proxy_block_pattern(&b, &p.S, p.dof, p.nfree, NULL), SCAF_OK);
             int n = p.nfree * d;
-            double *rhs = calloc(n, sizeof *rhs), *y = malloc(n * sizeof *y), *Ay = malloc(n * sizeof *Ay);
+            double *rhs = calloc(n, sizeof *rhs), *y = malloc(n * sizeof *y),
+                   *Ay = malloc(n * sizeof *Ay);
             double *Y = malloc(p.nv * d * sizeof *Y);
             opt_proxy_block_fill(&b, &t, p.dof, p.X, rhs);
             /* Structure: upper, sorted. */
@@ -142,9 +148,14 @@ static void matrix_is_the_proxy_quadratic(void **state)
                     if (p.dof[v] >= 0)
                         for (int a = 0; a < d; a++) {
                             int i = p.dof[v] * d + a;
-                            assert_true(fabs(2 * (Ay[i] - rhs[i]) - g[v * d + a]) < 1e-8 * (1 + gmax));
+                            assert_true(fabs(2 * (Ay[i] - rhs[i]) - g[v * d + a]) <
+                                        1e-8 * (1 + gmax));
                         }
-            free(g); free(rhs); free(y); free(Ay); free(Y);
+            free(g);
+            free(rhs);
+            free(y);
+            free(Ay);
+            free(Y);
             opt_proxy_block_free(&b);
             free_problem(&p);
         }
@@ -167,13 +178,15 @@ static void blocks_sum_like_one(void **state)
         B.grad += (size_t)k * (d + 1) * d;
         B.vol += k;
         B.weight += k;
-        opt_term tall = {&p.S, OPT_ENERGY_SYMMETRIC_DIRICHLET}, ta = {&A, tall.energy}, tb = {&B, tall.energy};
+        opt_term tall = {&p.S, OPT_ENERGY_SYMMETRIC_DIRICHLET}, ta = {&A, tall.energy},
+                 tb = {&B, tall.energy};
         opt_proxy_block ball = {0}, ba = {0}, bb = {0};
         assert_int_equal(opt_proxy_block_pattern(&ball, &p.S, p.dof, p.nfree, NULL), SCAF_OK);
         assert_int_equal(opt_proxy_block_pattern(&ba, &A, p.dof, p.nfree, NULL), SCAF_OK);
         assert_int_equal(opt_proxy_block_pattern(&bb, &B, p.dof, p.nfree, NULL), SCAF_OK);
         double *r1 = calloc(n, sizeof *r1), *r2 = calloc(n, sizeof *r2);
-        double *y = malloc(n * sizeof *y), *y1 = malloc(n * sizeof *y1), *y2 = malloc(n * sizeof *y2);
+        double *y = malloc(n * sizeof *y), *y1 = malloc(n * sizeof *y1),
+               *y2 = malloc(n * sizeof *y2);
         opt_proxy_block_fill(&ball, &tall, p.dof, p.X, r1);
         opt_proxy_block_fill(&ba, &ta, p.dof, p.X, r2);
         opt_proxy_block_fill(&bb, &tb, p.dof, p.X, r2);
@@ -188,7 +201,8 @@ static void blocks_sum_like_one(void **state)
             for (int i = 0; i < n; i++) y[i] = rng_uniform(&r, -1, 1);
             opt_csc_symv(&ball.A, y, y1);
             opt_csc_symv(&sys.A, y, y2);
-            for (int i = 0; i < n; i++) assert_true(fabs(y1[i] - y2[i]) < 1e-10 * (1 + fabs(y1[i])));
+            for (int i = 0; i < n; i++)
+                assert_true(fabs(y1[i] - y2[i]) < 1e-10 * (1 + fabs(y1[i])));
         }
         /* Same patterns again: no union rebuild. */
         assert_int_equal(opt_proxy_system_sum(&sys, bl, 2, NULL), SCAF_OK);
@@ -220,7 +234,11 @@ static void blocks_sum_like_one(void **state)
         opt_proxy_block_free(&ball);
         opt_proxy_block_free(&ba);
         opt_proxy_block_free(&bb);
-        free(r1); free(r2); free(y); free(y1); free(y2);
+        free(r1);
+        free(r2);
+        free(y);
+        free(y1);
+        free(y2);
         free_problem(&p);
     }
 }
@@ -242,7 +260,8 @@ static void chart_block_survives_scaffold_renumbering(void **state)
     for (int s = 0; s < ns; s++) {
         int chart = 1;
         for (int i = 0; i < 3; i++) chart &= p.dof[p.S.idx[3 * s + i]] < m;
-        if (chart) ia[na++] = s; else ib[nb++] = s;
+        if (chart) ia[na++] = s;
+        else ib[nb++] = s;
     }
     assert_true(na > 0 && nb > 0);
     opt_simplices A, B;
@@ -251,12 +270,14 @@ static void chart_block_survives_scaffold_renumbering(void **state)
     for (int k = 0; k < na; k++) {
         memcpy(A.idx + 3 * k, p.S.idx + 3 * ia[k], 3 * sizeof(int));
         memcpy(A.grad + 6 * k, p.S.grad + 6 * ia[k], 6 * sizeof(double));
-        A.vol[k] = p.S.vol[ia[k]]; A.weight[k] = p.S.weight[ia[k]];
+        A.vol[k] = p.S.vol[ia[k]];
+        A.weight[k] = p.S.weight[ia[k]];
     }
     for (int k = 0; k < nb; k++) {
         memcpy(B.idx + 3 * k, p.S.idx + 3 * ib[k], 3 * sizeof(int));
         memcpy(B.grad + 6 * k, p.S.grad + 6 * ib[k], 6 * sizeof(double));
-        B.vol[k] = p.S.vol[ib[k]]; B.weight[k] = p.S.weight[ib[k]];
+        B.vol[k] = p.S.vol[ib[k]];
+        B.weight[k] = p.S.weight[ib[k]];
     }
     opt_term ta = {&A, OPT_ENERGY_SYMMETRIC_DIRICHLET}, tb = {&B, OPT_ENERGY_SYMMETRIC_DIRICHLET};
     opt_term tall = {&p.S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
@@ -266,7 +287,11 @@ static void chart_block_survives_scaffold_renumbering(void **state)
     /* New numbering: the highest-dof free vertex becomes fixed, the others
      * at or above m are numbered in reverse. */
     int *dof2 = malloc(p.nv * sizeof *dof2), top = -1, vtop = -1;
-    for (int v = 0; v < p.nv; v++) if (p.dof[v] > top) { top = p.dof[v]; vtop = v; }
+    for (int v = 0; v < p.nv; v++)
+        if (p.dof[v] > top) {
+            top = p.dof[v];
+            vtop = v;
+        }
     int n2 = p.nfree - 1;
     for (int v = 0; v < p.nv; v++) {
         int k = p.dof[v];
@@ -293,10 +318,20 @@ static void chart_block_survives_scaffold_renumbering(void **state)
         assert_true(fabs(y1[i] - y2[i]) < 1e-10 * (1 + fabs(y2[i])));
         assert_true(fabs(r1[i] - r2[i]) < 1e-10 * (1 + fabs(r2[i])));
     }
-    free(r1); free(r2); free(y); free(y1); free(y2); free(dof2); free(ia); free(ib);
+    free(r1);
+    free(r2);
+    free(y);
+    free(y1);
+    free(y2);
+    free(dof2);
+    free(ia);
+    free(ib);
     opt_proxy_system_free(&sys);
-    opt_proxy_block_free(&ba); opt_proxy_block_free(&bb); opt_proxy_block_free(&ball);
-    opt_simplices_free(&A); opt_simplices_free(&B);
+    opt_proxy_block_free(&ba);
+    opt_proxy_block_free(&bb);
+    opt_proxy_block_free(&ball);
+    opt_simplices_free(&A);
+    opt_simplices_free(&B);
     free_problem(&p);
 }
 

@@ -32,16 +32,12 @@ static void random_jacobian_svd(rng *r, int d, int family, double *J, double *R1
 {
     for (int i = 0; i < d; i++) sv[i] = rng_uniform(r, 0.3, 3);
     switch (family) {
-    case 1: /* near-degenerate */
-        sv[d - 1] = pow(10, rng_uniform(r, -4, -2));
-        break;
+    case 1: /* near-degenerate */ sv[d - 1] = pow(10, rng_uniform(r, -4, -2)); break;
     case 2: /* strongly anisotropic */
         sv[0] = pow(10, rng_uniform(r, 1, 3));
         sv[d - 1] = pow(10, rng_uniform(r, -2, -0.5));
         break;
-    case 3: /* repeated singular values (a similarity, or two equal) */
-        sv[1] = sv[0];
-        break;
+    case 3: /* repeated singular values (a similarity, or two equal) */ sv[1] = sv[0]; break;
     case 4: /* plain random entries, det made positive */
         for (;;) {
             for (int k = 0; k < d * d; k++) J[k] = rng_uniform(r, -2, 2);
@@ -162,8 +158,8 @@ static void anisotropic_simplices_have_negative_twists(void **state)
  * cancellation, so a Jacobian of condition number 1e5 still gets an
  * accurate reference. For entry k of J: fd_e = dPsi/dJ_k, fd_g (d by d) =
  * d(grad Psi)/dJ_k. */
-static void rotated_fd(int d, const double *R1, const double *sv, const double *R2, int k,
-                       double h, double *fd_e, double *fd_g)
+static void rotated_fd(int d, const double *R1, const double *sv, const double *R2, int k, double h,
+                       double *fd_e, double *fd_g)
 {
     double Jp[9], Jm[9], gp[9], gm[9];
     int a = k / d, b = k % d;
@@ -209,8 +205,8 @@ static void gradient_and_hessian_match_finite_differences(void **state)
                     }
                     for (int m = 0; m < dd; m++)
                         if (fabs(fd_g[m] - H[m * dd + k]) > 1e-7 * Hscale) {
-                            print_error("d=%d family=%d trial=%d H[%d][%d]: fd=%.12g H=%.12g\n",
-                                        d, f, trial, m, k, fd_g[m], H[m * dd + k]);
+                            print_error("d=%d family=%d trial=%d H[%d][%d]: fd=%.12g H=%.12g\n", d,
+                                        f, trial, m, k, fd_g[m], H[m * dd + k]);
                             fail();
                         }
                 }
@@ -255,7 +251,8 @@ static void projection_clamps_only_negative_modes(void **state)
                 for (int k = 0; k < dd; k++) {
                     double want = k < dd - nc ? 0.0 : cl[k - (dd - nc)];
                     if (fabs(w[k] - want) > 1e-12 * scale) {
-                        print_error("d=%d family=%d trial=%d: eig %d of H_proj - H is %.17g, want %.17g\n",
+                        print_error("d=%d family=%d trial=%d: eig %d of H_proj - H is %.17g, want "
+                                    "%.17g\n",
                                     d, f, trial, k, w[k], want);
                         fail();
                     }
@@ -366,7 +363,12 @@ static void check_corner_level(const opt_simplices *S, int nv, double *X, double
     }
     assert_int_equal(sym_eigenvalues(n, P, w), 0);
     assert_true(w[0] >= -1e-10 * Hscale);
-    free(g); free(H); free(P); free(gp); free(gm); free(w);
+    free(g);
+    free(H);
+    free(P);
+    free(gp);
+    free(gm);
+    free(w);
 }
 
 static void single_simplices_match_finite_differences(void **state)
@@ -392,7 +394,8 @@ static void single_simplices_match_finite_differences(void **state)
                         X[i * d + a] = acc;
                     }
                 opt_jacobian(&S, 0, X, Jm);
-                for (int k = 0; k < d * d; k++) assert_true(fabs(Jm[k] - J[k]) < 1e-9 * (1 + fabs(J[k])));
+                for (int k = 0; k < d * d; k++)
+                    assert_true(fabs(Jm[k] - J[k]) < 1e-9 * (1 + fabs(J[k])));
                 /* Corner positions of a Jacobian of condition 1e5 lose the
                  * small singular direction to cancellation under a finite
                  * difference; that family is checked through the chain rule

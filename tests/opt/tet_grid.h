@@ -7,14 +7,16 @@
 
 typedef struct tet_grid {
     int nv, nt;
-    double *X; /* nv by 3, in [0,1]^3 */
-    int *T;    /* nt by 4 */
+    double *X;               /* nv by 3, in [0,1]^3 */
+    int *T;                  /* nt by 4 */
     unsigned char *boundary; /* nv flags: on the cube's surface */
 } tet_grid;
 
 static inline void tet_grid_free(tet_grid *g)
 {
-    free(g->X); free(g->T); free(g->boundary);
+    free(g->X);
+    free(g->T);
+    free(g->boundary);
 }
 
 static inline int tet_grid_make(tet_grid *g, int m)
@@ -30,10 +32,13 @@ static inline int tet_grid_make(tet_grid *g, int m)
         for (int y = 0; y < s; y++)
             for (int x = 0; x < s; x++) {
                 int v = (z * s + y) * s + x;
-                g->X[3 * v] = (double)x / m; g->X[3 * v + 1] = (double)y / m; g->X[3 * v + 2] = (double)z / m;
+                g->X[3 * v] = (double)x / m;
+                g->X[3 * v + 1] = (double)y / m;
+                g->X[3 * v + 2] = (double)z / m;
                 g->boundary[v] = x == 0 || y == 0 || z == 0 || x == m || y == m || z == m;
             }
-    static const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    static const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                    {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
     int t = 0;
     for (int z = 0; z < m; z++)
         for (int y = 0; y < m; y++)
@@ -48,11 +53,16 @@ static inline int tet_grid_make(tet_grid *g, int m)
                     /* Orient positively. */
                     double e[3][3];
                     for (int k = 0; k < 3; k++)
-                        for (int a = 0; a < 3; a++) e[k][a] = g->X[3 * tt[k + 1] + a] - g->X[3 * tt[0] + a];
+                        for (int a = 0; a < 3; a++)
+                            e[k][a] = g->X[3 * tt[k + 1] + a] - g->X[3 * tt[0] + a];
                     double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                                 e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                                 e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-                    if (det < 0) { int k = tt[1]; tt[1] = tt[2]; tt[2] = k; }
+                        e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                        e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+                    if (det < 0) {
+                        int k = tt[1];
+                        tt[1] = tt[2];
+                        tt[2] = k;
+                    }
                 }
     return 0;
 }

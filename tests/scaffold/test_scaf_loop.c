@@ -39,8 +39,9 @@ static void disk_make(disk *k)
     k->uv = malloc(sizeof(double) * 2 * (size_t)k->m.nv);
     assert_non_null(k->uv);
     opt_chart_loops L = {1, k->m.start, k->m.loops, 0};
-    assert_int_equal(opt_embed_chart(k->m.nv, k->m.V, k->m.nf, k->m.F, &L, OPT_EMBED_TUTTE, k->uv, NULL, NULL),
-                     SCAF_OK);
+    assert_int_equal(
+        opt_embed_chart(k->m.nv, k->m.V, k->m.nf, k->m.F, &L, OPT_EMBED_TUTTE, k->uv, NULL, NULL),
+        SCAF_OK);
 }
 
 static void disk_free(disk *k)
@@ -54,7 +55,8 @@ static void loop_on_disk(disk *k, scaf_loop *L)
 {
     disk_make(k);
     scaf_error err;
-    assert_int_equal(scaf_loop_init(L, k->m.nv, k->m.V, k->m.nf, k->m.F, k->uv, NULL, &err), SCAF_OK);
+    assert_int_equal(scaf_loop_init(L, k->m.nv, k->m.V, k->m.nf, k->m.F, k->uv, NULL, &err),
+                     SCAF_OK);
 }
 
 static void assert_state_valid(const scaf_loop *L)
@@ -68,7 +70,8 @@ static void assert_state_valid(const scaf_loop *L)
 static void each_energy_descends_bijectively(void **state)
 {
     (void)state;
-    const opt_energy energies[3] = {OPT_ENERGY_SYMMETRIC_DIRICHLET, OPT_ENERGY_ARAP, OPT_ENERGY_CONFORMAL};
+    const opt_energy energies[3] = {OPT_ENERGY_SYMMETRIC_DIRICHLET, OPT_ENERGY_ARAP,
+                                    OPT_ENERGY_CONFORMAL};
     for (int e = 0; e < 3; e++) {
         disk k;
         disk_make(&k);
@@ -112,7 +115,8 @@ static double pin_energy(const opt_obj_term *t, const double *X)
     return q->w * (dx * dx + dy * dy);
 }
 
-static void pin_energy_slope(const opt_obj_term *t, const double *X, const double *D, double *e, double *slope)
+static void pin_energy_slope(const opt_obj_term *t, const double *X, const double *D, double *e,
+                             double *slope)
 {
     const pin *q = t->self;
     double dx = X[2 * q->v] - q->p[0], dy = X[2 * q->v + 1] - q->p[1];
@@ -147,7 +151,8 @@ static double pin_max_step(const opt_obj_term *t, const double *X, const double 
     return len > 0.0 ? q->cap / len : INFINITY;
 }
 
-static const opt_obj_term_ops pin_ops = {pin_energy, pin_energy_slope, pin_pattern, pin_fill, pin_max_step, NULL, NULL};
+static const opt_obj_term_ops pin_ops = {
+    pin_energy, pin_energy_slope, pin_pattern, pin_fill, pin_max_step, NULL, NULL};
 
 /* Distance of the pinned vertex to its target after `iterations`, with
  * the term (q != NULL) or without; *max_move: its largest move in one
@@ -199,8 +204,10 @@ static void extra_term_plugs_in(void **state)
      * (the line search takes at most step_fraction of the bound). */
     pin c = {v, {target[0], target[1]}, 50.0, 0.25 * move_pinned, 0, 0};
     double capped = run_pinned(&c, v, target, 8, &move_capped);
-    print_message("distance to target: start %.4f, free %.4f, pinned %.4f (max move %.4f), capped %.4f (max move "
-                  "%.4f, cap %.4f)\n", start, free_dist, pinned, move_pinned, capped, move_capped, c.cap);
+    print_message("distance to target: start %.4f, free %.4f, pinned %.4f (max move %.4f), capped "
+                  "%.4f (max move "
+                  "%.4f, cap %.4f)\n",
+                  start, free_dist, pinned, move_pinned, capped, move_capped, c.cap);
     assert_true(move_capped > 0.0);
     assert_true(move_capped <= 0.8 * c.cap * (1.0 + 1e-9));
 }
@@ -231,10 +238,12 @@ static void misoriented_start_is_internal(void **state)
     (void)state;
     disk k;
     disk_make(&k);
-    for (int i = 0; i < k.m.nv; i++) k.uv[2 * i] = -k.uv[2 * i]; /* mirror: every triangle clockwise */
+    for (int i = 0; i < k.m.nv; i++)
+        k.uv[2 * i] = -k.uv[2 * i]; /* mirror: every triangle clockwise */
     scaf_loop L;
     scaf_error err;
-    assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, k.m.nf, k.m.F, k.uv, NULL, &err), SCAF_ERR_INTERNAL);
+    assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, k.m.nf, k.m.F, k.uv, NULL, &err),
+                     SCAF_ERR_INTERNAL);
     assert_non_null(strstr(err.message, "not positively oriented"));
     disk_free(&k);
 }
@@ -278,7 +287,8 @@ typedef struct counting {
     double last_box_scale;
 } counting;
 
-static scaf_status counting_refresh(scaffold_provider *p, const double *X, const scaffold_options *o, scaf_error *err)
+static scaf_status counting_refresh(scaffold_provider *p, const double *X,
+                                    const scaffold_options *o, scaf_error *err)
 {
     counting *c = (counting *)p;
     c->refreshes++;
@@ -299,7 +309,8 @@ static void counting_destroy(scaffold_provider *p)
     c->destroyed++;
 }
 
-static const scaffold_provider_ops counting_ops = {counting_refresh, counting_view, counting_destroy};
+static const scaffold_provider_ops counting_ops = {counting_refresh, counting_view,
+                                                   counting_destroy};
 
 static void provider_plugs_in(void **state)
 {
@@ -339,7 +350,8 @@ static void frozen_provider_keeps_connectivity(void **state)
     scaf_loop L;
     scaf_error err;
     loop_on_disk(&k, &L);
-    scaffold_provider *p = scaffold_frozen_create(scaffold_cdt_create(L.nv, L.bedges, L.nbedges, &err), &err);
+    scaffold_provider *p =
+        scaffold_frozen_create(scaffold_cdt_create(L.nv, L.bedges, L.nbedges, &err), &err);
     assert_non_null(p);
     assert_int_equal(scaf_loop_set_scaffold_provider(&L, p, &err), SCAF_OK);
     scaf_iteration_info_t info;

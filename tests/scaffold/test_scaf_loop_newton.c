@@ -36,7 +36,8 @@ static void loop_on_disk(scaf_loop *L, scaf_solver solver, opt_energy energy)
     double *uv = malloc(sizeof(double) * 2 * (size_t)m.nv);
     assert_non_null(uv);
     opt_chart_loops cl = {1, m.start, m.loops, 0};
-    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &cl, OPT_EMBED_TUTTE, uv, NULL, NULL), SCAF_OK);
+    assert_int_equal(opt_embed_chart(m.nv, m.V, m.nf, m.F, &cl, OPT_EMBED_TUTTE, uv, NULL, NULL),
+                     SCAF_OK);
     scaf_loop_options o = scaf_loop_options_default();
     o.solver = solver;
     o.energy = energy;
@@ -97,7 +98,8 @@ static double no_energy(const opt_obj_term *t, const double *X)
     return 0.0;
 }
 
-static void no_slope(const opt_obj_term *t, const double *X, const double *D, double *e, double *slope)
+static void no_slope(const opt_obj_term *t, const double *X, const double *D, double *e,
+                     double *slope)
 {
     (void)t;
     (void)X;
@@ -127,7 +129,8 @@ static void no_fill(opt_obj_term *t, const int *dof, const double *X, double *rh
 static void term_without_hessian_disables_newton(void **state)
 {
     (void)state;
-    static const opt_obj_term_ops ops = {no_energy, no_slope, no_pattern, no_fill, NULL, NULL, NULL};
+    static const opt_obj_term_ops ops = {no_energy, no_slope, no_pattern, no_fill,
+                                         NULL,      NULL,     NULL};
     scaf_loop L;
     loop_on_disk(&L, SCAF_SOLVER_NEWTON, OPT_ENERGY_SYMMETRIC_DIRICHLET);
     opt_obj_term t;
@@ -220,7 +223,8 @@ static void strip_converges_deterministically(void **state)
 {
     (void)state;
     int nx = 1000, nv = 2 * (nx + 1);
-    double *a = malloc(sizeof(double) * 2 * (size_t)nv), *b = malloc(sizeof(double) * 2 * (size_t)nv);
+    double *a = malloc(sizeof(double) * 2 * (size_t)nv),
+           *b = malloc(sizeof(double) * 2 * (size_t)nv);
     scaf_stop_reason sa, sb;
     double E = run_strip(SCAF_SOLVER_AUTO, nx, a, &sa);
     assert_true(E <= 4.01); /* 4.00043 at the cap (50) */

@@ -33,8 +33,14 @@ static void add_annulus(double *uv, int *nv, int *F, int *nf, double cx, double 
     int k = *nf;
     for (int i = 0; i < n; i++) {
         int o0 = base + i, o1 = base + (i + 1) % n, i0 = base + n + i, i1 = base + n + (i + 1) % n;
-        F[3 * k] = o0; F[3 * k + 1] = o1; F[3 * k + 2] = i0; k++;
-        F[3 * k] = o1; F[3 * k + 1] = i1; F[3 * k + 2] = i0; k++;
+        F[3 * k] = o0;
+        F[3 * k + 1] = o1;
+        F[3 * k + 2] = i0;
+        k++;
+        F[3 * k] = o1;
+        F[3 * k + 1] = i1;
+        F[3 * k + 2] = i0;
+        k++;
     }
     *nf = k;
 }
@@ -89,7 +95,8 @@ static void check_scaffold(const double *uv, int nv, const int *F, int nf, doubl
         assert_true(orient2d(P + 2 * T[0], P + 2 * T[1], P + 2 * T[2]) > 0);
         area += tri_area(P + 2 * T[0], P + 2 * T[1], P + 2 * T[2]);
     }
-    for (int f = 0; f < nf; f++) area += tri_area(uv + 2 * F[3 * f], uv + 2 * F[3 * f + 1], uv + 2 * F[3 * f + 2]);
+    for (int f = 0; f < nf; f++)
+        area += tri_area(uv + 2 * F[3 * f], uv + 2 * F[3 * f + 1], uv + 2 * F[3 * f + 2]);
     /* 2. mesh + scaffold tile the box */
     double box_area = (box[2] - box[0]) * (box[3] - box[1]);
     assert_true(fabs(area - box_area) <= 1e-10 * box_area);
@@ -98,7 +105,8 @@ static void check_scaffold(const double *uv, int nv, const int *F, int nf, doubl
         int found = 0;
         for (int t = 0; t < sc.ntri; t++)
             for (int j = 0; j < 3; j++)
-                if (sc.T[3 * t + j] == E[2 * e + 1] && sc.T[3 * t + (j + 1) % 3] == E[2 * e]) found++;
+                if (sc.T[3 * t + j] == E[2 * e + 1] && sc.T[3 * t + (j + 1) % 3] == E[2 * e])
+                    found++;
         assert_int_equal(found, 1);
     }
     /* mesh vertex ids in the scaffold are boundary vertices only */
@@ -172,10 +180,19 @@ static void several_charts_close_together(void **state)
     /* a chart inside the hole of the first one */
     double s = 0.1;
     int b = nv;
-    uv[2 * nv] = -s; uv[2 * nv + 1] = -s; nv++;
-    uv[2 * nv] = s; uv[2 * nv + 1] = -s; nv++;
-    uv[2 * nv] = 0; uv[2 * nv + 1] = s; nv++;
-    F[3 * nf] = b; F[3 * nf + 1] = b + 1; F[3 * nf + 2] = b + 2; nf++;
+    uv[2 * nv] = -s;
+    uv[2 * nv + 1] = -s;
+    nv++;
+    uv[2 * nv] = s;
+    uv[2 * nv + 1] = -s;
+    nv++;
+    uv[2 * nv] = 0;
+    uv[2 * nv + 1] = s;
+    nv++;
+    F[3 * nf] = b;
+    F[3 * nf + 1] = b + 1;
+    F[3 * nf + 2] = b + 2;
+    nf++;
     check_scaffold(uv, nv, F, nf, 3.0, 0);
 }
 

@@ -11,5 +11,6 @@ void test_expect_counts(const char *label, const count_check *checks, int n)
 {
     for (int i = 0; i < n; i++)
         if (checks[i].got != checks[i].want)
-            fail_msg("%s: %s = %lld, expected %lld", label, checks[i].what, checks[i].got, checks[i].want);
+            fail_msg("%s: %s = %lld, expected %lld", label, checks[i].what, checks[i].got,
+                     checks[i].want);
 }

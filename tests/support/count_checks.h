@@ -14,7 +14,10 @@ typedef struct count_check {
     long long got, want;
 } count_check;
 
-#define HAS(expr, value) {#expr, (long long)(expr), (long long)(value)}
+#define HAS(expr, value)                                                                           \
+    {                                                                                              \
+#expr, (long long)(expr), (long long)(value)                                               \
+    }
 
 /* Asserts got == want for the n checks; label names the case. */
 void test_expect_counts(const char *label, const count_check *checks, int n);

@@ -7,7 +7,8 @@
 int test_loop_state_valid(const scaf_loop *L)
 {
     bij_report rep;
-    if (bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective) return 0;
+    if (bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, NULL) != SCAF_OK || !rep.bijective)
+        return 0;
     const scaffold_view *v = scaf_loop_scaffold_view(L);
     for (int s = 0; s < v->n; s++) {
         const double *p[3];

@@ -25,10 +25,10 @@ static int every_iteration(const scaf_iteration_info_t *info, void *user)
     const scaf_loop *L = param_loop(w->p);
     bij_report rep;
     scaf_error err;
-    if (bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, &err) != SCAF_OK || !rep.bijective || rep.flipped ||
-        rep.degenerate || rep.boundary_crossings) {
-        print_error("iteration %d: flipped %d degenerate %d crossings %lld\n", info->iteration, rep.flipped,
-                    rep.degenerate, rep.boundary_crossings);
+    if (bij_check(L->nv, L->uv, L->nf, L->F, NULL, NULL, &rep, &err) != SCAF_OK || !rep.bijective ||
+        rep.flipped || rep.degenerate || rep.boundary_crossings) {
+        print_error("iteration %d: flipped %d degenerate %d crossings %lld\n", info->iteration,
+                    rep.flipped, rep.degenerate, rep.boundary_crossings);
         w->not_bijective++;
     }
     if (info->step > 0 && !(info->total_after < info->total_before)) w->energy_rises++;
@@ -36,7 +36,8 @@ static int every_iteration(const scaf_iteration_info_t *info, void *user)
     return 0;
 }
 
-double param_run_watched(const char *rel, int iterations, scaf_init init, char *rejected, size_t size)
+double param_run_watched(const char *rel, int iterations, scaf_init init, char *rejected,
+                         size_t size)
 {
     char buf[1024];
     const char *path = test_data_path(rel, buf, sizeof buf);
@@ -49,8 +50,9 @@ double param_run_watched(const char *rel, int iterations, scaf_init init, char *
     o.tolerance = 0;
     scaf_param_t *p = scaf_param_new(&o);
     assert_non_null(p);
-    scaf_status st = mesh_has_uv(&m) ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
-                                     : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
+    scaf_status st = mesh_has_uv(&m)
+        ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
+        : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
     if (st == SCAF_ERR_MESH && rejected) {
         snprintf(rejected, size, "%s", scaf_param_error(p));
         scaf_param_destroy(p);
@@ -68,8 +70,8 @@ double param_run_watched(const char *rel, int iterations, scaf_init init, char *
     assert_int_equal(w.not_bijective, 0);
     assert_int_equal(w.energy_rises, 0);
     double e1 = scaf_param_energy(p);
-    print_message("%s: %d charts, E %.6g -> %.6f after %d iterations\n", rel, scaf_param_chart_count(p), e0, e1,
-                  w.calls);
+    print_message("%s: %d charts, E %.6g -> %.6f after %d iterations\n", rel,
+                  scaf_param_chart_count(p), e0, e1, w.calls);
     assert_true(e1 < e0);
     scaf_param_destroy(p);
     mesh_free(&m);

@@ -15,6 +15,7 @@
  * E below the initial E. Returns the final E, or NAN when the file is
  * absent (the caller skips) or, when `rejected` is given, when its charts
  * are refused (then `rejected` holds the message). */
-double param_run_watched(const char *rel, int iterations, scaf_init init, char *rejected, size_t size);
+double param_run_watched(const char *rel, int iterations, scaf_init init, char *rejected,
+                         size_t size);
 
 #endif

@@ -13,6 +13,7 @@ double test_max_vertex_diff_rel(int nv, const double *a, const double *b)
             hi[d] = fmax(hi[d], b[3 * v + d]);
             mx = fmax(mx, fabs(a[3 * v + d] - b[3 * v + d]));
         }
-    return mx / sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                     (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    return mx /
+        sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+             (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
