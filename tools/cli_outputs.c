@@ -18,7 +18,14 @@ void cli_outputs_init(cli_outputs *o, const char *cmd, const char *input)
 {
     memset(o, 0, sizeof *o);
     o->cmd = cmd;
-    o->input = input;
+    cli_outputs_add_input(o, "the input", input);
+}
+
+void cli_outputs_add_input(cli_outputs *o, const char *option, const char *path)
+{
+    if (!path || o->ninputs >= CLI_INPUTS_MAX) return;
+    o->input_option[o->ninputs] = option;
+    o->input[o->ninputs++] = path;
 }
 
 int cli_outputs_add(cli_outputs *o, const char *option, const char *path, cli_output_kind kind)
@@ -94,47 +101,51 @@ static void id_stat(file_id *id)
 
 int cli_outputs_check(cli_outputs *o)
 {
-    /* ids[0]: the input (when it exists); ids[1 + k]: output k */
+    /* ids[k]: output k; in[i]: input i (when it exists) */
     file_id *ids = calloc((size_t)o->n + 1, sizeof *ids);
+    file_id in[CLI_INPUTS_MAX];
+    int have[CLI_INPUTS_MAX] = {0};
     if (!ids) {
         fprintf(stderr, "scaf %s: out of memory\n", o->cmd);
         return EXIT_NOMEM;
     }
-    int rc = EXIT_OK, have_input = 0;
+    int rc = EXIT_OK;
     scaf_error err;
     err_clear(&err);
-    if (o->input) {
-        char *real = realpath(o->input, NULL);
-        if (real && strlen(real) < sizeof ids[0].path) {
-            strcpy(ids[0].path, real);
-            id_stat(&ids[0]);
-            have_input = 1;
+    for (int i = 0; i < o->ninputs; i++) {
+        memset(&in[i], 0, sizeof in[i]);
+        char *real = realpath(o->input[i], NULL);
+        if (real && strlen(real) < sizeof in[i].path) {
+            strcpy(in[i].path, real);
+            id_stat(&in[i]);
+            have[i] = 1;
         }
         free(real);
     }
     for (int k = 0; k < o->n && !rc; k++) {
         o->out[k].to_stdout = !strcmp(o->out[k].path, "-");
         if (o->out[k].to_stdout) {
-            strcpy(ids[1 + k].path, "-"); /* not a path: only another "-" is the same */
+            strcpy(ids[k].path, "-"); /* not a path: only another "-" is the same */
             rc = check_format(o, &o->out[k]);
-        } else if (atomic_resolve(o->out[k].path, ids[1 + k].path, sizeof ids[1 + k].path, NULL,
-                                  &err) != SCAF_OK) {
+        } else if (atomic_resolve(o->out[k].path, ids[k].path, sizeof ids[k].path, NULL, &err) !=
+                   SCAF_OK) {
             fprintf(stderr, "scaf %s: %s %s\n", o->cmd, o->out[k].option, err.message);
             rc = EXIT_OUTPUT;
         } else {
-            id_stat(&ids[1 + k]);
+            id_stat(&ids[k]);
             rc = check_format(o, &o->out[k]);
         }
     }
     for (int k = 0; k < o->n && !rc; k++) {
-        if (have_input && same_file(&ids[0], &ids[1 + k])) {
-            fprintf(stderr,
-                    "scaf %s: the input and %s name the same file (%s): it would be overwritten\n",
-                    o->cmd, o->out[k].option, o->out[k].path);
-            rc = EXIT_USAGE;
-        }
+        for (int i = 0; i < o->ninputs && !rc; i++)
+            if (have[i] && same_file(&in[i], &ids[k])) {
+                fprintf(stderr,
+                        "scaf %s: %s and %s name the same file (%s): it would be overwritten\n",
+                        o->cmd, o->input_option[i], o->out[k].option, o->out[k].path);
+                rc = EXIT_USAGE;
+            }
         for (int j = 0; j < k && !rc; j++)
-            if (same_file(&ids[1 + j], &ids[1 + k])) {
+            if (same_file(&ids[j], &ids[k])) {
                 fprintf(stderr,
                         "scaf %s: %s and %s name the same file (%s): give each output its own "
                         "file\n",

@@ -61,14 +61,22 @@ typedef struct cli_output {
     int to_stdout;      /* the path is "-" */
 } cli_output;
 
+#define CLI_INPUTS_MAX 4
+
 typedef struct cli_outputs {
-    const char *cmd;   /* "param", ... for messages */
-    const char *input; /* may be NULL */
+    const char *cmd; /* "param", ... for messages */
+    int ninputs;
+    const char *input[CLI_INPUTS_MAX];        /* files the run reads: never overwritten */
+    const char *input_option[CLI_INPUTS_MAX]; /* "the input", "--targets", ... */
     int n;
     cli_output out[CLI_OUTPUTS_MAX];
 } cli_outputs;
 
 void cli_outputs_init(cli_outputs *o, const char *cmd, const char *input);
+
+/* Another file the run reads (e.g. `--targets`): no output may name it.
+ * NULL is ignored. */
+void cli_outputs_add_input(cli_outputs *o, const char *option, const char *path);
 
 /* Declare an output; returns its index, or -1 when path is NULL (not
  * asked for: begin/end then do nothing). */

@@ -247,6 +247,7 @@ static int deform_main(int argc, char **argv)
 
     cli_outputs outs;
     cli_outputs_init(&outs, "deform", a.in);
+    cli_outputs_add_input(&outs, "--targets", a.targets);
     cli_uv_outputs k;
     rc = cli_outputs_uv(&outs, a.out, a.svg, a.png.path, a.report, &k);
     if (rc != EXIT_OK) return rc;

@@ -134,6 +134,19 @@ static void bad_input(void **state)
         test_run("%s deform %s --targets %s.missing -o %s 2> /dev/null", SCAF_BINARY, g, t, out),
         3);
     assert_int_equal(test_run("%s deform %s -o %s 2> /dev/null", SCAF_BINARY, g, out), 2);
+    /* the targets file is an input too: no output may overwrite it */
+    char *before = test_slurp(t);
+    assert_non_null(before);
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s --report %s 2> /dev/null",
+                              SCAF_BINARY, g, t, out, t),
+                     2);
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s 2> /dev/null", SCAF_BINARY, g, t, t),
+                     2);
+    char *after = test_slurp(t);
+    assert_non_null(after);
+    assert_string_equal(before, after);
+    free(before);
+    free(after);
     assert_int_equal(test_run("%s deform %s --targets %s -o %s --iterations x 2> /dev/null",
                               SCAF_BINARY, g, t, out),
                      2);
