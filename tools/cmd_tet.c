@@ -16,6 +16,8 @@
 
 #include "cli_args.h"
 #include "cli_mesh_io.h"
+#include "cli_outputs.h"
+#include "cli_signal.h"
 #include "exit_codes.h"
 #include "geom/tet_box_mesh.h"
 #include "mesh/tet_medit.h"
@@ -40,7 +42,7 @@ static void usage(FILE *out)
     exit_codes_print(out);
 }
 
-int cmd_tet(int argc, char **argv)
+static int tet_main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL;
     double scale = 3;
@@ -75,9 +77,15 @@ int cmd_tet(int argc, char **argv)
         fprintf(stderr, "scaf tet: %s\n", in ? "missing -o OUT.mesh" : "missing the input surface");
         return EXIT_USAGE;
     }
+    /* the output checked before any work (device, folder, same file as the input) */
+    cli_outputs outs;
+    cli_outputs_init(&outs, "tet", in);
+    int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_FILE);
+    int status = cli_outputs_check(&outs);
+    if (status != EXIT_OK) return status;
     mesh m;
     mesh_read_info info;
-    int status = cli_read_mesh("tet", in, quiet, &m, &info);
+    status = cli_read_mesh("tet", in, quiet, &m, &info);
     if (status != EXIT_OK) return status;
     double lo[3], hi[3];
     tet_box_around(m.nv, m.V, scale, lo, hi);
@@ -97,16 +105,19 @@ int cmd_tet(int argc, char **argv)
         return EXIT_NOMEM;
     }
     for (int t = 0; t < tm.nt; t++) label[t] = tm.inside[t] ? 1 : 2;
-    s = tet_medit_write(out, tm.nv, tm.V, tm.nt, tm.T, label, &err);
-    if (s == SCAF_OK && !quiet)
+    const char *path = cli_outputs_begin(&outs, k, &err);
+    s = path ? tet_medit_write(path, tm.nv, tm.V, tm.nt, tm.T, label, &err) : SCAF_ERR_IO;
+    int rc = cli_outputs_end(&outs, k, s, &err);
+    if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
+    cli_outputs_abort(&outs);
+    if (rc == EXIT_OK && !quiet)
         fprintf(stderr,
                 "scaf tet: %d vertices (%d surface, %d box, %d added), %d tets (%d inside)\n",
                 tm.nv, tm.nsurface, tm.nbox, tm.nv - tm.nsurface - tm.nbox, tm.nt, tm.ninside);
     free(label);
     tet_box_mesh_free(&tm);
-    if (s != SCAF_OK) {
-        fprintf(stderr, "scaf tet: %s\n", err.message);
-        return s == SCAF_ERR_NOMEM ? EXIT_NOMEM : EXIT_OUTPUT;
-    }
-    return EXIT_OK;
+    return rc;
 }
+
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_tet(int argc, char **argv) { return cli_signal_run(tet_main, argc, argv); }

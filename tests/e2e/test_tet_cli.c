@@ -85,6 +85,26 @@ static void refusals(void **state)
         test_run("'%s' tet '%s' -o '%s' --box-scale 1 2>/dev/null", SCAF_BINARY, surf, tets), 2);
     assert_int_equal(
         test_run("'%s' tet '%s' -o '%s' --box-cells 65 2>/dev/null", SCAF_BINARY, surf, tets), 2);
+    /* outputs: the shared checks before any work, nothing left on an interrupt */
+    char *before = test_slurp(surf);
+    assert_non_null(before);
+    assert_int_equal(test_run("'%s' tet '%s' -o '%s' 2>/dev/null", SCAF_BINARY, surf, surf), 2);
+    char *after = test_slurp(surf);
+    assert_non_null(after);
+    assert_string_equal(before, after); /* the input is never the output */
+    free(before);
+    free(after);
+    char dir[1024];
+    test_tmp_path("", dir, sizeof dir);
+    assert_int_equal(test_run("'%s' tet '%s' -o '%s' 2>/dev/null", SCAF_BINARY, surf, dir), 5);
+    remove(tets);
+    test_tmp_path("tet_cli_ico2.obj", surf, sizeof surf);
+    assert_int_equal(test_run("'%s' gen icosphere -s 2 -o '%s'", SCAF_BINARY, surf), 0);
+    assert_int_equal(test_capture(out, sizeof out,
+                                  "SCAF_TEST_RAISE_SIGNAL_AT=write '%s' tet '%s' -o '%s' 2>&1",
+                                  SCAF_BINARY, surf, tets),
+                     8);
+    assert_false(test_exists(tets));
     /* a malformed .mesh */
     f = fopen(tets, "w");
     assert_non_null(f);
