@@ -10,6 +10,11 @@ int cli_parse_int(const char *s, int *out);
 /* A whole finite floating-point number: 1 and *out set, or 0. */
 int cli_parse_double(const char *s, double *out);
 
+/* An argument that is no known option of command CMD: the input path when
+ * it is the first such and not an option ("-" alone is a path); otherwise
+ * a usage error naming it. Returns EXIT_OK (and *in set) or EXIT_USAGE. */
+int cli_take_input(const char *cmd, const char *a, const char **in);
+
 /* Inside an argument loop `for (i ...) { const char *a = argv[i], *v =
  * i + 1 < argc ? argv[i + 1] : NULL; ... }` of command CMD: take the
  * option's value (or fail with a usage error naming the option), and

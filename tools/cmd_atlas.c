@@ -210,13 +210,7 @@ static int atlas_main(int argc, char **argv)
         } else if (!strcmp(a, "--svg")) {
             NEED_VALUE();
             svg = v;
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "scaf atlas: unknown option '%s' (see --help)\n", a);
-            return EXIT_USAGE;
-        } else if (!in) {
-            in = a;
-        } else {
-            fprintf(stderr, "scaf atlas: more than one input ('%s', '%s')\n", in, a);
+        } else if (cli_take_input("atlas", a, &in) != EXIT_OK) {
             return EXIT_USAGE;
         }
 #undef NEED_VALUE

@@ -120,14 +120,8 @@ static int parse_args(int argc, char **argv, deform_args *o)
             o->verify = 1;
         } else if (!strcmp(a, "--quiet")) {
             o->quiet = 1;
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "scaf deform: unknown option '%s' (see --help)\n", a);
+        } else if (cli_take_input("deform", a, &o->in) != EXIT_OK) {
             return EXIT_USAGE;
-        } else if (o->in) {
-            fprintf(stderr, "scaf deform: one input only ('%s' and '%s' given)\n", o->in, a);
-            return EXIT_USAGE;
-        } else {
-            o->in = a;
         }
     }
     if (!o->in || !o->out || !o->targets) {

@@ -237,14 +237,8 @@ static int flow_main(int argc, char **argv)
             until_free = 1;
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             quiet = 1;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            fprintf(stderr, "scaf flow: unknown option '%s' (see --help)\n", a);
+        } else if (cli_take_input("flow", a, &in) != EXIT_OK) {
             return EXIT_USAGE;
-        } else if (in) {
-            fprintf(stderr, "scaf flow: one input only ('%s' and '%s')\n", in, a);
-            return EXIT_USAGE;
-        } else {
-            in = a;
         }
     }
     if (!in || !out || !steps) {

@@ -223,13 +223,7 @@ static int parse_args(int argc, char **argv, param_args *o)
             o->svg_scaffold = 1;
         } else if (!strcmp(a, "--verify")) {
             o->verify = 1;
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "scaf param: unknown option '%s' (see --help)\n", a);
-            return EXIT_USAGE;
-        } else if (!o->in) {
-            o->in = a;
-        } else {
-            fprintf(stderr, "scaf param: more than one input ('%s', '%s')\n", o->in, a);
+        } else if (cli_take_input("param", a, &o->in) != EXIT_OK) {
             return EXIT_USAGE;
         }
 #undef NEED_VALUE

@@ -63,14 +63,8 @@ static int tet_main(int argc, char **argv)
             if (!cli_parse_int(v, &cells) || cells < 1 || cells > 64) CLI_BAD_VALUE("tet");
         } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
             quiet = 1;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            fprintf(stderr, "scaf tet: unknown option '%s' (see --help)\n", a);
+        } else if (cli_take_input("tet", a, &in) != EXIT_OK) {
             return EXIT_USAGE;
-        } else if (in) {
-            fprintf(stderr, "scaf tet: one input only ('%s' and '%s')\n", in, a);
-            return EXIT_USAGE;
-        } else {
-            in = a;
         }
     }
     if (!in || !out) {
