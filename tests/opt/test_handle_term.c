@@ -45,31 +45,48 @@ static void energy_and_slope(void **state)
     opt_handle_term_free(&h);
 }
 
-/* Block and right-hand side of the term alone; dof: identity except -1s. */
-static void proxy_solves_to_targets(void **state)
+/* Three handles on a unit square's corners 3, 0 and 2; vertex 2 fixed
+ * (dof -1), so the pattern spans dofs 0..2. */
+static const int three_dof[4] = {0, 1, -1, 2};
+static const double three_X[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+static const double three_targets[6] = {5, 6, -1, 2, 9, 9};
+
+static opt_obj_term three_handles(opt_handle_term *h)
 {
-    (void)state;
-    int dof[4] = {0, 1, -1, 2};
-    double X[8] = {0, 0, 1, 0, 1, 1, 0, 1};
     int hv[3] = {3, 0, 2};
-    double ht[6] = {5, 6, -1, 2, 9, 9};
-    opt_handle_term h;
-    opt_handle_term_init(&h, 2, 4);
-    assert_int_equal(opt_handle_term_set(&h, 3, hv, ht, 2.0, NULL), SCAF_OK);
-    opt_obj_term t = opt_handle_term_make(&h);
-    assert_int_equal(t.ops->pattern(&t, dof, 3, NULL), SCAF_OK);
-    double rhs[6] = {0};
-    t.ops->fill(&t, dof, X, rhs);
-    /* diagonal: w on the handles' unknowns (dofs 0 and 2), nothing on dof 1;
-     * vertex 2 is fixed: skipped */
-    const opt_csc *A = &t.blk.A;
+    opt_handle_term_init(h, 2, 4);
+    assert_int_equal(opt_handle_term_set(h, 3, hv, three_targets, 2.0, NULL), SCAF_OK);
+    opt_obj_term t = opt_handle_term_make(h);
+    assert_int_equal(t.ops->pattern(&t, three_dof, 3, NULL), SCAF_OK);
+    return t;
+}
+
+/* The diagonal of a block (6 unknowns); off-diagonal entries must be 0. */
+static void block_diagonal(const opt_csc *A, double diag[6])
+{
     assert_int_equal(A->n, 6);
-    double diag[6] = {0};
+    for (int c = 0; c < 6; c++) diag[c] = 0.0;
     for (int c = 0; c < A->n; c++)
         for (int k = A->colptr[c]; k < A->colptr[c + 1]; k++) {
             if (A->rowidx[k] == c) diag[c] += A->val[k];
             else assert_true(A->val[k] == 0.0); /* w I: nothing off the diagonal */
         }
+}
+
+/* Block and right-hand side of the term alone; dof: identity except -1s. */
+static void proxy_solves_to_targets(void **state)
+{
+    (void)state;
+    const int *dof = three_dof;
+    const double *X = three_X;
+    opt_handle_term h;
+    opt_obj_term t = three_handles(&h);
+    double rhs[6] = {0};
+    t.ops->fill(&t, dof, X, rhs);
+    /* diagonal: w on the handles' unknowns (dofs 0 and 2), nothing on dof 1;
+     * vertex 2 is fixed: skipped */
+    double diag[6];
+    block_diagonal(&t.blk.A, diag);
     assert_true(diag[0] == 2 && diag[1] == 2 && diag[4] == 2 && diag[5] == 2);
     assert_true(diag[2] == 0 && diag[3] == 0);
     /* x = b / w: the targets */
@@ -85,23 +102,15 @@ static void proxy_solves_to_targets(void **state)
 static void newton_fill_is_exact(void **state)
 {
     (void)state;
-    int dof[4] = {0, 1, -1, 2};
-    double X[8] = {0, 0, 1, 0, 1, 1, 0, 1};
-    int hv[3] = {3, 0, 2};
-    double ht[6] = {5, 6, -1, 2, 9, 9};
+    const int *dof = three_dof;
+    const double *X = three_X, *ht = three_targets;
     opt_handle_term h;
-    opt_handle_term_init(&h, 2, 4);
-    assert_int_equal(opt_handle_term_set(&h, 3, hv, ht, 2.0, NULL), SCAF_OK);
-    opt_obj_term t = opt_handle_term_make(&h);
+    opt_obj_term t = three_handles(&h);
     assert_non_null(t.ops->hessian_fill);
-    assert_int_equal(t.ops->pattern(&t, dof, 3, NULL), SCAF_OK);
     double rhs[6] = {0};
     assert_int_equal(t.ops->hessian_fill(&t, dof, X, 1, rhs, NULL), SCAF_OK);
-    const opt_csc *A = &t.blk.A;
-    double diag[6] = {0};
-    for (int c = 0; c < A->n; c++)
-        for (int k = A->colptr[c]; k < A->colptr[c + 1]; k++)
-            if (A->rowidx[k] == c) diag[c] += A->val[k];
+    double diag[6];
+    block_diagonal(&t.blk.A, diag);
     for (int v = 0; v < 4; v++)
         for (int a = 0; a < 2; a++) {
             if (dof[v] < 0) continue;
@@ -116,7 +125,8 @@ static void newton_fill_is_exact(void **state)
                                       : v == 0 ? ht[2 + a]
                                                : 0)) < 1e-12);
         }
-    assert_true(diag[0] > 0 && diag[0] == diag[4] && diag[2] == 0); /* 2w on handles only */
+    assert_true(diag[0] == 4 && diag[4] == 4 &&
+                diag[2] == 0); /* 2w (w = 2, the proxy's diagonal) on handles only */
     opt_obj_term_free(&t);
     opt_handle_term_free(&h);
 }
