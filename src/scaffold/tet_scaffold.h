@@ -46,17 +46,26 @@ typedef struct tet_scaffold {
     signed char *region;  /* nt: 1 inside the surface, 0 outside */
 
     /* The last tet_improve's renumbering of vertices: nv_before entries,
-     * old id -> new id or -1 (removed). The identity after init. */
+     * id during the call (the ids before it, then the appended vertices)
+     * -> id after it, or -1 (removed). The identity after init. */
     int nv_before;
     int *vertex_map;
 
-    /* Internal (scaffold/tet_ops): adjacency and bookkeeping. */
-    int *nbr;                /* 4 nt: 4 t' + f' of the tet across face f of t
-                                (face f is opposite vertex f), -1 on the hull */
-    unsigned char *protect;  /* nt: bit f set = face f of t is protected */
-    int *vtet;               /* nv: one live tet holding the vertex, -1 none */
-    unsigned char *tet_dead; /* nt: 1 = a free slot (only inside tet_improve) */
-    int cap_v, cap_t;        /* allocated entries */
+    /* Internal (scaffold/tet_ops, scaffold/tet_improve): adjacency and
+     * bookkeeping, consistent between calls. Face f of a tet is the one
+     * opposite its corner f, its corners tet_face_corner[f] in order seen
+     * from outside. */
+    int *nbr;               /* 4 nt: 4 t' + f' of the tet across face f of t
+                               (t' holds the same face as its face f'), -1
+                               on the hull */
+    unsigned char *protect; /* nt: bit f set = face f of t is protected */
+    int *vtet;              /* nv: one live tet holding the vertex; -1 none,
+                               -2 removed (only inside tet_improve) */
+    unsigned char *dead;    /* nt: 1 = a free slot (only inside tet_improve) */
+    int *free_slots, nfree; /* dead slots, reused last freed first */
+    double *q;              /* nt: quality cache (inside tet_improve) */
+    int *mark, mark_now;    /* nt: visit stamps of the local searches */
+    int cap_v, cap_t;       /* allocated entries */
 } tet_scaffold;
 
 /* Build the scaffold from a tet mesh, checking it exactly.
@@ -85,5 +94,35 @@ scaf_status tet_scaffold_from_box_mesh(tet_scaffold *s, const tet_box_mesh *m, i
                                        const int *F, scaf_error *err);
 
 void tet_scaffold_free(tet_scaffold *s);
+
+/* ---- internal editing (scaffold/tet_ops, scaffold/tet_improve) ---- */
+
+/* Corners of face f (opposite corner f) of a positive tet, in the order
+ * that makes the face's normal point out of the tet. */
+extern const int tet_face_corner[4][3];
+
+/* Room for `tets` more tets and `vertices` more vertices, so the edits
+ * that follow cannot fail on memory. */
+scaf_status tet_scaffold_reserve(tet_scaffold *s, int tets, int vertices, scaf_error *err);
+
+/* Append a free scaffold-only vertex at p (room reserved); its id. */
+int tet_scaffold_add_vertex(tet_scaffold *s, const double p[3]);
+
+/* Replace the nold live tets old[] (one region, a cavity whose boundary
+ * faces are exactly those of the nnew tets newT[] (4 nnew ids, positive)
+ * not shared among them) by the new tets: adjacency, protected flags of
+ * the boundary faces and vertex->tet links follow; the new tets get the
+ * region of old[0] and their ids go to ids[] (may be NULL). Room for nnew
+ * tets must be reserved. SCAF_ERR_INTERNAL when the faces do not match
+ * (nothing changed then). */
+scaf_status tet_scaffold_replace(tet_scaffold *s, int nold, const int *old, int nnew,
+                                 const int *newT, int *ids, scaf_error *err);
+
+/* Mark vertex v removed (it must be in no live tet any more). */
+void tet_scaffold_remove_vertex(tet_scaffold *s, int v);
+
+/* Drop dead tets and removed vertices, renumbering as the header says
+ * (vertex_map); dense again. Allocates nothing, cannot fail. */
+void tet_scaffold_compact(tet_scaffold *s);
 
 #endif /* SCAF_SCAFFOLD_TET_SCAFFOLD_H */
