@@ -13,9 +13,9 @@
 
 void tet_improve_options_default(tet_improve_options *o)
 {
-    o->quality_goal = 0.35;
+    o->quality_goal = 0.2;
     o->max_passes = 3;
-    o->max_tries = 20000;
+    o->max_tries = 3000;
     o->ops = TET_OP_ALL;
 }
 

@@ -63,11 +63,11 @@ typedef struct tet_improve_stats {
     double min_before, p5_before; /* quality: worst, 5th percentile */
     double min_after, p5_after;
     int below_goal_before, below_goal_after; /* tets under quality_goal */
-    long long flip23, flip32;     /* 2-3 and 3-2 flips applied */
-    long long edge_removal;       /* edge removals with rings of 4 or more */
-    long long smooth;             /* vertex moves */
-    long long contract, split;    /* vertices removed, added */
-    long long tries;              /* operations evaluated */
+    long long flip23, flip32;                /* 2-3 and 3-2 flips applied */
+    long long edge_removal;                  /* edge removals with rings of 4 or more */
+    long long smooth;                        /* vertex moves */
+    long long contract, split;               /* vertices removed, added */
+    long long tries;                         /* operations evaluated */
     int passes;
 } tet_improve_stats;
 

@@ -14,8 +14,8 @@
 #include "geom/tet_orient.h"
 #include "geom/tet_quality.h"
 
-#define MAX_RING 12  /* longest edge ring removed or split */
-#define MAX_STAR 64  /* most tets around a vertex moved or removed */
+#define MAX_RING 12   /* longest edge ring removed or split */
+#define MAX_STAR 64   /* most tets around a vertex moved or removed */
 #define MIN_GAIN 1e-9 /* an operation must raise the worst quality by this */
 
 #define PT(s, v) ((s)->P + 3 * (size_t)(v))
@@ -47,6 +47,23 @@ static double min_quality(const tet_scaffold *s, const int *tets, int n)
     double m = INFINITY;
     for (int i = 0; i < n; i++) {
         double q = quality4(s, tets + 4 * i);
+        if (q < m) m = q;
+    }
+    return m;
+}
+
+/* The worst quality of the tets when it is above `bound`, else -inf as
+ * soon as one tet is at or below it (tet `first` looked at first: the
+ * likeliest to fail). */
+static double min_quality_above(const tet_scaffold *s, const int *tets, int n, int first,
+                                double bound)
+{
+    double m = quality4(s, tets + 4 * first);
+    if (!(m > bound)) return -INFINITY;
+    for (int i = 0; i < n; i++) {
+        if (i == first) continue;
+        double q = quality4(s, tets + 4 * i);
+        if (!(q > bound)) return -INFINITY;
         if (q < m) m = q;
     }
     return m;
@@ -270,14 +287,18 @@ static double smooth_point(tet_scaffold *s, int v, const int *tets, int n, doubl
                     if (meet < step) step = meet;
                 }
             }
+            /* halve until better than the best so far, then stop */
             for (int k = 0; k < 8; k++, step *= 0.5) {
                 for (int x = 0; x < 3; x++) p[x] = orig[x] + step * dir[x];
-                double m = min_quality(s, tets, n);
-                if (m > best) best = m, memcpy(bestp, p, sizeof bestp);
+                double m = min_quality_above(s, tets, n, worst, best);
+                if (m > best) {
+                    best = m, memcpy(bestp, p, sizeof bestp);
+                    break;
+                }
             }
         }
         memcpy(p, centroid, sizeof centroid);
-        double m = min_quality(s, tets, n);
+        double m = min_quality_above(s, tets, n, worst, best);
         if (m > best) best = m, memcpy(bestp, p, sizeof bestp);
         memcpy(p, bestp, sizeof bestp);
         if (!(best > qmin + MIN_GAIN) || !all_positive(s, tets, n)) {
@@ -404,16 +425,21 @@ int tet_ops_improve_tet(tet_ops *c, int t, unsigned ops)
     if (ops & TET_OP_CONTRACT)
         for (int k = 0; k < 4 && !tet_ops_exhausted(c); k++)
             if (tet_ops_contract(c, corner[k])) return 1;
-    if ((ops & TET_OP_SPLIT) && !tet_ops_exhausted(c)) {
-        int longest = 0;
-        double lmax = -1;
+    if (ops & TET_OP_SPLIT) {
+        /* the edges longest first: a surface edge cannot be split, the
+         * next may */
+        double len[6];
+        int order[6];
         for (int e = 0; e < 6; e++) {
             const double *p = PT(s, corner[edge[e][0]]), *q = PT(s, corner[edge[e][1]]);
-            double l = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+            len[e] = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
                 (p[2] - q[2]) * (p[2] - q[2]);
-            if (l > lmax) lmax = l, longest = e;
+            int k = e;
+            for (; k > 0 && len[order[k - 1]] < len[e]; k--) order[k] = order[k - 1];
+            order[k] = e;
         }
-        if (tet_ops_split(c, t, edge[longest][0], edge[longest][1])) return 1;
+        for (int k = 0; k < 6 && !tet_ops_exhausted(c); k++)
+            if (tet_ops_split(c, t, edge[order[k]][0], edge[order[k]][1])) return 1;
     }
     return 0;
 }

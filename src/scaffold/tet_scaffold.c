@@ -75,10 +75,7 @@ int tet_scaffold_add_vertex(tet_scaffold *s, const double p[3])
     return v;
 }
 
-void tet_scaffold_remove_vertex(tet_scaffold *s, int v)
-{
-    s->vtet[v] = -2;
-}
+void tet_scaffold_remove_vertex(tet_scaffold *s, int v) { s->vtet[v] = -2; }
 
 /* ---- faces ---- */
 
@@ -94,10 +91,7 @@ static void sorted3(const int *f, int out[3])
 /* 0 or 1: the parity of the permutation that sorts (a, b, c). Two tets
  * see a shared face from opposite sides iff their outward corner orders
  * have different parities. */
-static int parity3(const int *f)
-{
-    return ((f[0] > f[1]) + (f[0] > f[2]) + (f[1] > f[2])) & 1;
-}
+static int parity3(const int *f) { return ((f[0] > f[1]) + (f[0] > f[2]) + (f[1] > f[2])) & 1; }
 
 static void face_of(const int *q, int f, int out[3])
 {
@@ -161,8 +155,7 @@ static scaf_status build_faces(tet_scaffold *s, int nprot, const int *prot, scaf
             st = err_set(err, SCAF_ERR_MESH,
                          "tets %d and %d lie on the same side of their face (%d, %d, %d)", a / 4,
                          b / 4, fr[i].v[0], fr[i].v[1], fr[i].v[2]);
-        else
-            s->nbr[a] = b, s->nbr[b] = a;
+        else s->nbr[a] = b, s->nbr[b] = a;
     }
     for (int p = 0; p < nprot && st == SCAF_OK; p++) {
         int key[3];
@@ -209,9 +202,8 @@ scaf_status tet_scaffold_init(tet_scaffold *s, int nmesh, int nv, const double *
         const int *q = T + 4 * (size_t)t;
         if (tet_orientation(V + 3 * (size_t)q[0], V + 3 * (size_t)q[1], V + 3 * (size_t)q[2],
                             V + 3 * (size_t)q[3]) <= 0) {
-            st = err_set(err, SCAF_ERR_MESH,
-                         "tet %d (%d, %d, %d, %d) is not positively oriented", t, q[0], q[1],
-                         q[2], q[3]);
+            st = err_set(err, SCAF_ERR_MESH, "tet %d (%d, %d, %d, %d) is not positively oriented",
+                         t, q[0], q[1], q[2], q[3]);
             break;
         }
         for (int k = 0; k < 4; k++) s->vtet[q[k]] = t;
@@ -221,14 +213,14 @@ scaf_status tet_scaffold_init(tet_scaffold *s, int nmesh, int nv, const double *
     return st;
 }
 
-scaf_status tet_scaffold_from_box_mesh(tet_scaffold *s, const tet_box_mesh *m, int nf,
-                                       const int *F, scaf_error *err)
+scaf_status tet_scaffold_from_box_mesh(tet_scaffold *s, const tet_box_mesh *m, int nf, const int *F,
+                                       scaf_error *err)
 {
     unsigned char *fixed = calloc((size_t)(m->nv > 0 ? m->nv : 1), 1);
     if (!fixed) return err_nomem(err, "scaffold fixed flags");
     for (int v = m->nsurface; v < m->nsurface + m->nbox && v < m->nv; v++) fixed[v] = 1;
-    scaf_status st = tet_scaffold_init(s, m->nsurface, m->nv, m->V, fixed, m->nt, m->T,
-                                       m->inside, nf, F, err);
+    scaf_status st =
+        tet_scaffold_init(s, m->nsurface, m->nv, m->V, fixed, m->nt, m->T, m->inside, nf, F, err);
     free(fixed);
     return st;
 }

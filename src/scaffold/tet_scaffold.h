@@ -90,8 +90,8 @@ scaf_status tet_scaffold_init(tet_scaffold *s, int nmesh, int nv, const double *
 /* The same from geom/tet_box_mesh's output: mesh vertices are the surface's
  * (nmesh = m->nsurface), the box vertices fixed, region = m->inside, the
  * surface triangles nf, F (#F by 3, the ones m was built from) protected. */
-scaf_status tet_scaffold_from_box_mesh(tet_scaffold *s, const tet_box_mesh *m, int nf,
-                                       const int *F, scaf_error *err);
+scaf_status tet_scaffold_from_box_mesh(tet_scaffold *s, const tet_box_mesh *m, int nf, const int *F,
+                                       scaf_error *err);
 
 void tet_scaffold_free(tet_scaffold *s);
 

@@ -161,15 +161,15 @@ static void test_flip32_needles(void **state)
 /* A regular octahedron (fixed corners) coned to a free centre vertex. */
 static void octahedron(double *V, int *T)
 {
-    static const double C[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                   {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const double C[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     memcpy(V, C, sizeof C);
     for (int k = 0; k < 3; k++) V[18 + k] = 0;
     int n = 0;
     for (int x = 0; x < 2; x++)
         for (int y = 2; y < 4; y++)
-            for (int z = 4; z < 6; z++) T[4 * n] = 6, T[4 * n + 1] = x, T[4 * n + 2] = y,
-                                        T[4 * n + 3] = z, n++;
+            for (int z = 4; z < 6; z++)
+                T[4 * n] = 6, T[4 * n + 1] = x, T[4 * n + 2] = y, T[4 * n + 3] = z, n++;
 }
 
 /* The centre pushed almost onto a face: smoothing brings the worst tet
@@ -309,8 +309,8 @@ static invariants faces_check(const tet_scaffold *s, int nprot, const face_key *
 static void adjacency_check(const tet_scaffold *s, int nprot, const int *prot)
 {
     tet_scaffold r;
-    assert_int_equal(tet_scaffold_init(&r, s->nmesh, s->nv, s->P, s->fixed, s->nt, s->T,
-                                       s->region, nprot, prot, NULL),
+    assert_int_equal(tet_scaffold_init(&r, s->nmesh, s->nv, s->P, s->fixed, s->nt, s->T, s->region,
+                                       nprot, prot, NULL),
                      SCAF_OK);
     assert_memory_equal(r.nbr, s->nbr, sizeof(int) * 4 * (size_t)s->nt);
     assert_memory_equal(r.protect, s->protect, (size_t)s->nt);
@@ -323,17 +323,18 @@ static void adjacency_check(const tet_scaffold *s, int nprot, const int *prot)
     tet_scaffold_free(&r);
 }
 
-/* Random valid moves of the free scaffold vertices, each toward a random
- * neighbour by a random fraction up to `reach`, kept only when every tet
- * around the vertex stays positive (exact): a valid but badly shaped
- * scaffold, as a SLIM step leaves it. */
+/* Random valid moves of the vertices that are not fixed (mesh vertices
+ * included), each toward a random neighbour by a random fraction up to
+ * `reach`, kept only when every tet around the vertex stays positive
+ * (exact): a valid but badly shaped scaffold, as a step of the loop
+ * leaves it. */
 static void perturb(tet_scaffold *s, double reach, uint64_t seed)
 {
     rng r = {seed};
     for (int t = 0; t < s->nt; t++) {
         int v = s->T[4 * t + (int)rng_uniform(&r, 0, 4)];
         int u = s->T[4 * t + (int)rng_uniform(&r, 0, 4)];
-        if (v < s->nmesh || s->fixed[v] || u == v) continue;
+        if (s->fixed[v] || u == v) continue;
         double old[3], f = rng_uniform(&r, 0, reach);
         memcpy(old, s->P + 3 * v, sizeof old);
         for (int k = 0; k < 3; k++) s->P[3 * v + k] += f * (s->P[3 * u + k] - old[k]);
@@ -348,11 +349,67 @@ static void perturb(tet_scaffold *s, double reach, uint64_t seed)
     }
 }
 
-static void improve_and_check(const tet_box_mesh *tm, int nf, const int *F, double reach)
+/* One tet_improve call (mesh positions X), every promise checked against
+ * the scaffold before it. */
+static tet_improve_stats checked_call(tet_scaffold *s, const double *X, int nf, const int *F,
+                                      const face_key *prot)
 {
-    tet_scaffold s;
-    assert_int_equal(tet_scaffold_from_box_mesh(&s, tm, nf, F, NULL), SCAF_OK);
-    perturb(&s, reach, 11);
+    int nv0 = s->nv;
+    double *P0 = malloc(sizeof(double) * 3 * (size_t)nv0), *stale = s->P;
+    assert_non_null(P0);
+    memcpy(P0, s->P, sizeof(double) * 3 * (size_t)nv0);
+    if (X) memcpy(P0, X, sizeof(double) * 3 * (size_t)s->nmesh);
+    s->P = P0; /* the scaffold as the call should see it */
+    invariants before = faces_check(s, nf, prot);
+    s->P = stale;
+    tet_improve_stats st;
+    assert_int_equal(tet_improve(s, X, NULL, &st, NULL), SCAF_OK);
+    print_message("tets %d -> %d, vertices %d -> %d, min %.4f -> %.4f, p5 %.4f -> %.4f, below "
+                  "%d -> %d; flips 2-3 %lld 3-2 %lld, edge removals %lld, smoothing %lld, "
+                  "contractions %lld, splits %lld, tries %lld, passes %d\n",
+                  st.tets_before, st.tets_after, st.vertices_before, st.vertices_after,
+                  st.min_before, st.min_after, st.p5_before, st.p5_after, st.below_goal_before,
+                  st.below_goal_after, st.flip23, st.flip32, st.edge_removal, st.smooth,
+                  st.contract, st.split, st.tries, st.passes);
+    assert_int_equal(st.tets_after, s->nt);
+    assert_int_equal(st.vertices_after, s->nv);
+    /* every tet positive, exactly */
+    tet_orient_report r;
+    assert_int_equal(tet_orient_check(s->nv, s->P, s->nt, s->T, &r, NULL), SCAF_OK);
+    assert_int_equal(r.positive, s->nt);
+    /* the surface kept, regions separated by it only, same hull, volumes */
+    invariants after = faces_check(s, nf, prot);
+    assert_int_equal(after.nhull, before.nhull);
+    for (int i = 0; i < after.nhull; i++) {
+        int v[3];
+        for (int k = 0; k < 3; k++) v[k] = s->vertex_map[before.hull[i].v[k]];
+        sort3(v);
+        assert_memory_equal(v, after.hull[i].v, sizeof v);
+        assert_int_equal(after.hull[i].region, 0);
+    }
+    for (int g = 0; g < 2; g++)
+        assert_true(fabs(after.vol[g] - before.vol[g]) <= 1e-9 * (before.vol[0] + before.vol[1]));
+    /* mesh and box vertices unmoved, at their (mapped) ids */
+    assert_int_equal(s->nv_before, st.vertices_before + st.split);
+    for (int v = 0; v < nv0; v++) {
+        int u = s->vertex_map[v];
+        if (v < s->nmesh) assert_int_equal(u, v);
+        if (v < s->nmesh || s->fixed[u])
+            assert_memory_equal(s->P + 3 * (size_t)u, P0 + 3 * (size_t)v, 3 * sizeof(double));
+    }
+    adjacency_check(s, nf, F);
+    /* never worse */
+    assert_true(st.min_after >= st.min_before);
+    free(before.hull);
+    free(after.hull);
+    free(P0);
+    return st;
+}
+
+/* Improve TetGen's scaffold, move its vertices (the surface's through X),
+ * improve again; twice, for the same bytes. */
+static void improve_and_check(const tet_box_mesh *tm, int nf, const int *F)
+{
     face_key *prot = malloc(sizeof *prot * (size_t)nf);
     assert_non_null(prot);
     for (int f = 0; f < nf; f++) {
@@ -361,81 +418,35 @@ static void improve_and_check(const tet_box_mesh *tm, int nf, const int *F, doub
         prot[f].region = 0;
     }
     qsort(prot, (size_t)nf, sizeof *prot, cmp_key);
-    invariants before = faces_check(&s, nf, prot);
-    int nv0 = s.nv;
-    double *P0 = malloc(sizeof(double) * 3 * (size_t)nv0);
-    assert_non_null(P0);
-    memcpy(P0, s.P, sizeof(double) * 3 * (size_t)nv0);
-
-    /* a copy for the determinism check */
-    tet_scaffold s2;
-    assert_int_equal(tet_scaffold_init(&s2, s.nmesh, s.nv, s.P, s.fixed, s.nt, s.T, s.region, nf,
-                                       F, NULL),
-                     SCAF_OK);
-
-    tet_improve_options o;
-    tet_improve_options_default(&o);
-    tet_improve_stats st;
-    assert_int_equal(tet_improve(&s, P0, &o, &st, NULL), SCAF_OK);
-    print_message("tets %d -> %d, vertices %d -> %d, min %.4f -> %.4f, p5 %.4f -> %.4f, below "
-                  "%d -> %d; flips 2-3 %lld 3-2 %lld, edge removals %lld, smoothing %lld, "
-                  "contractions %lld, splits %lld, tries %lld, passes %d\n",
-                  st.tets_before, st.tets_after, st.vertices_before, st.vertices_after,
-                  st.min_before, st.min_after, st.p5_before, st.p5_after, st.below_goal_before,
-                  st.below_goal_after, st.flip23, st.flip32, st.edge_removal, st.smooth,
-                  st.contract, st.split, st.tries, st.passes);
-
-    /* every tet positive, exactly */
-    tet_orient_report r;
-    assert_int_equal(tet_orient_check(s.nv, s.P, s.nt, s.T, &r, NULL), SCAF_OK);
-    assert_int_equal(r.positive, s.nt);
-    /* the surface kept, regions separated by it only, same hull, volumes */
-    invariants after = faces_check(&s, nf, prot);
-    assert_int_equal(after.nhull, before.nhull);
-    for (int i = 0; i < after.nhull; i++) {
-        int v[3];
-        for (int k = 0; k < 3; k++) v[k] = s.vertex_map[before.hull[i].v[k]];
-        sort3(v);
-        assert_memory_equal(v, after.hull[i].v, sizeof v);
-        assert_int_equal(after.hull[i].region, 0);
+    tet_scaffold run[2];
+    for (int k = 0; k < 2; k++) {
+        tet_scaffold *s = &run[k];
+        assert_int_equal(tet_scaffold_from_box_mesh(s, tm, nf, F, NULL), SCAF_OK);
+        /* TetGen's scaffold has no free vertex: topology first, splits */
+        tet_improve_stats st = checked_call(s, NULL, nf, F, prot);
+        assert_true(st.min_after > 2 * st.min_before);
+        assert_true(st.flip32 + st.edge_removal > 0);
+        assert_true(st.split > 0);
+        /* the loop's step: mesh vertices move through X, free ones in s */
+        double *X = malloc(sizeof(double) * 3 * (size_t)s->nmesh);
+        assert_non_null(X);
+        perturb(s, 0.6, 11);
+        memcpy(X, s->P, sizeof(double) * 3 * (size_t)s->nmesh);
+        memcpy(s->P, tm->V, sizeof(double) * 3 * (size_t)s->nmesh); /* stale until the call */
+        st = checked_call(s, X, nf, F, prot);
+        assert_true(st.p5_after > 1.5 * st.p5_before);
+        assert_true(st.smooth > 0);
+        assert_true(st.flip32 + st.edge_removal > 0);
+        free(X);
     }
-    for (int g = 0; g < 2; g++)
-        assert_true(fabs(after.vol[g] - before.vol[g]) <= 1e-9 * (before.vol[0] + before.vol[1]));
-    /* mesh and box vertices unmoved, at their (mapped) ids */
-    for (int v = 0; v < nv0; v++) {
-        int u = s.vertex_map[v];
-        if (v < s.nmesh) assert_int_equal(u, v);
-        if (v < s.nmesh || s.fixed[u])
-            assert_memory_equal(s.P + 3 * (size_t)u, P0 + 3 * (size_t)v, 3 * sizeof(double));
-    }
-    adjacency_check(&s, nf, F);
-    /* better, and by the operations that must fire on such a scaffold */
-    assert_true(st.min_after > st.min_before);
-    assert_true(st.below_goal_after < st.below_goal_before);
-    assert_true(st.flip23 + st.flip32 + st.edge_removal > 0);
-    assert_true(st.smooth > 0);
-    assert_int_equal(st.tets_after, s.nt);
-
-    /* same input, same bytes */
-    tet_improve_stats st2;
-    assert_int_equal(tet_improve(&s2, P0, &o, &st2, NULL), SCAF_OK);
-    assert_int_equal(s2.nt, s.nt);
-    assert_int_equal(s2.nv, s.nv);
-    assert_memory_equal(s2.T, s.T, sizeof(int) * 4 * (size_t)s.nt);
-    assert_memory_equal(s2.P, s.P, sizeof(double) * 3 * (size_t)s.nv);
-    assert_memory_equal(s2.region, s.region, (size_t)s.nt);
-
-    /* a second call on the result works from the kept adjacency */
-    assert_int_equal(tet_improve(&s, NULL, &o, &st2, NULL), SCAF_OK);
-    assert_true(st2.min_after >= st.min_after);
-    adjacency_check(&s, nf, F);
-
-    free(before.hull);
-    free(after.hull);
+    assert_int_equal(run[0].nt, run[1].nt);
+    assert_int_equal(run[0].nv, run[1].nv);
+    assert_memory_equal(run[0].T, run[1].T, sizeof(int) * 4 * (size_t)run[0].nt);
+    assert_memory_equal(run[0].P, run[1].P, sizeof(double) * 3 * (size_t)run[0].nv);
+    assert_memory_equal(run[0].region, run[1].region, (size_t)run[0].nt);
+    tet_scaffold_free(&run[0]);
+    tet_scaffold_free(&run[1]);
     free(prot);
-    free(P0);
-    tet_scaffold_free(&s);
-    tet_scaffold_free(&s2);
 }
 
 static void box_mesh_of(const mesh *m, tet_box_mesh *tm)
@@ -452,7 +463,7 @@ static void test_icosphere_perturbed(void **state)
     assert_int_equal(mesh_sample_make("icosphere", 3, &m, NULL), SCAF_OK);
     tet_box_mesh tm;
     box_mesh_of(&m, &tm);
-    improve_and_check(&tm, m.nf, m.F, 0.8);
+    improve_and_check(&tm, m.nf, m.F);
     tet_box_mesh_free(&tm);
     mesh_free(&m);
 }
@@ -467,7 +478,7 @@ static void test_bunny_perturbed(void **state)
     assert_int_equal(mesh_read(path, &m, &info, NULL), SCAF_OK);
     tet_box_mesh tm;
     box_mesh_of(&m, &tm);
-    improve_and_check(&tm, m.nf, m.F, 0.8);
+    improve_and_check(&tm, m.nf, m.F);
     tet_box_mesh_free(&tm);
     mesh_free(&m);
 }
@@ -519,10 +530,14 @@ static void test_refusals(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_quality_measure),     cmocka_unit_test(test_quality_summary),
-        cmocka_unit_test(test_flip23_flat_bipyramid), cmocka_unit_test(test_flip32_needles),
-        cmocka_unit_test(test_smooth_centre),       cmocka_unit_test(test_contract_centre),
-        cmocka_unit_test(test_icosphere_perturbed), cmocka_unit_test(test_bunny_perturbed),
+        cmocka_unit_test(test_quality_measure),
+        cmocka_unit_test(test_quality_summary),
+        cmocka_unit_test(test_flip23_flat_bipyramid),
+        cmocka_unit_test(test_flip32_needles),
+        cmocka_unit_test(test_smooth_centre),
+        cmocka_unit_test(test_contract_centre),
+        cmocka_unit_test(test_icosphere_perturbed),
+        cmocka_unit_test(test_bunny_perturbed),
         cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
