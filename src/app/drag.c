@@ -116,6 +116,16 @@ scaf_drag_t *scaf_drag_new(const scaf_drag_options_t *options)
     return d;
 }
 
+scaf_status scaf_drag_set_options(scaf_drag_t *d, const scaf_drag_options_t *options)
+{
+    if (!d) return SCAF_ERR_USAGE;
+    err_clear(&d->err);
+    if (!options) return err_set(&d->err, SCAF_ERR_USAGE, "options is NULL");
+    scaf_status st = options_check(options, &d->err);
+    if (st == SCAF_OK) d->opt = *options;
+    return st;
+}
+
 /* ---- mesh ---------------------------------------------------------------------- */
 
 static void drop_stack(scaf_drag_t *d)

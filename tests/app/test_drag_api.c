@@ -475,7 +475,8 @@ static void test_measures(void **state)
         area += 0.5 * ((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
     }
     for (int v = 0; v < l.nw; v++)
-        for (int k = 0; k < 2; k++) lo[k] = fmin(lo[k], l.UV[2 * v + k]), hi[k] = fmax(hi[k], l.UV[2 * v + k]);
+        for (int k = 0; k < 2; k++)
+            lo[k] = fmin(lo[k], l.UV[2 * v + k]), hi[k] = fmax(hi[k], l.UV[2 * v + k]);
     double side = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     assert_true(fabs(scaf_drag_packing_efficiency(d) - area / (side * side)) < 1e-9);
     assert_true(scaf_drag_energy(d) >= 4.0);
