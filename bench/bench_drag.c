@@ -5,14 +5,16 @@
  * drag: frame after frame one chart's handle moves a little further
  * toward the middle of the layout (a rigid chart handle, translated and
  * turned) and one scaf_drag_step(1) runs, as an editor does on every
- * mouse move. Reported per mesh: the median, 10th and 90th percentile of
- * the step's wall time over all frames, and the median split into the
- * loop's phases (scaf_iteration_info_t.phase_seconds); the load average
- * at the end (the machine is shared). Every frame's layout is checked
+ * mouse move. Reported per mesh: the median CPU time of a step (all
+ * threads of the process: on a shared machine the wall time also counts
+ * the wait for a core), the median, 10th and 90th percentile of its wall
+ * time over all frames, and the median wall time split into the loop's
+ * phases (scaf_iteration_info_t.phase_seconds); the load average at the
+ * end. Every frame's layout is checked
  * with the exact checker afterwards (not timed). A second run drags a
  * single vertex handle.
  *
- *   build/bench/bench_drag [--frames N] [--mesh PATH] > out.txt
+ *   build/bench/bench_drag [--frames N] [--mesh PATH] [--box-scale S] [--padding P]
  * Data folder: SCAF_DATA_DIR (env) or the compiled default.
  */
 #include <math.h>
@@ -33,6 +35,15 @@ static double now(void)
 {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* CPU seconds of the process (all threads): on a shared, loaded machine
+ * the wall time also counts waiting for a core, this does not. */
+static double cpu_now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
@@ -103,6 +114,7 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
     for (int v = 0; v < nw && v0 < 0; v++)
         if (wc[v] == c) v0 = v;
     double *ms = malloc(sizeof(double) * (size_t)frames);
+    double *cpu = malloc(sizeof(double) * (size_t)frames);
     double(*ph)[SCAF_PHASE_COUNT] = malloc(sizeof *ph * (size_t)frames);
     int bad = 0, done = 0;
     scaf_drag_checkpoint(d);
@@ -113,9 +125,10 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
         else scaf_drag_move_vertex(d, v0, UV[2 * v0] + dx, UV[2 * v0 + 1] + dy);
         frame_log log;
         memset(&log, 0, sizeof log);
-        double t0 = now();
+        double t0 = now(), c0 = cpu_now();
         scaf_status st = scaf_drag_step(d, 1, keep_info, &log);
         ms[f] = 1e3 * (now() - t0);
+        cpu[f] = 1e3 * (cpu_now() - c0);
         for (int p = 0; p < SCAF_PHASE_COUNT; p++) ph[f][p] = 1e3 * log.info.phase_seconds[p];
         if (st != SCAF_OK) {
             fprintf(stderr, "%s: step failed: %s\n", name, scaf_drag_error(d));
@@ -125,8 +138,9 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
         done++;
     }
     if (done > 0) {
-        printf("| %s | %s | %d | %d | %.1f | %.1f | %.1f |", name, kind == 0 ? "chart" : "vertex",
-               nc, done, quantile(ms, done, 0.5), quantile(ms, done, 0.1), quantile(ms, done, 0.9));
+        printf("| %s | %s | %d | %d | %.1f | %.1f | %.1f | %.1f |", name,
+               kind == 0 ? "chart" : "vertex", nc, done, quantile(cpu, done, 0.5),
+               quantile(ms, done, 0.5), quantile(ms, done, 0.1), quantile(ms, done, 0.9));
         double *col = malloc(sizeof(double) * (size_t)done);
         for (int p = 0; p < SCAF_PHASE_COUNT; p++) {
             for (int f = 0; f < done; f++) col[f] = ph[f][p];
@@ -140,6 +154,7 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
     free(UV);
     free(wc);
     free(ms);
+    free(cpu);
     free(ph);
 }
 
@@ -147,11 +162,16 @@ int main(int argc, char **argv)
 {
     int frames = 40;
     const char *one = NULL;
+    scaf_drag_options_t o = scaf_drag_options_default();
+    o.start = SCAF_DRAG_START_ATLAS;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--mesh") && i + 1 < argc) one = argv[++i];
+        else if (!strcmp(argv[i], "--box-scale") && i + 1 < argc) o.box_scale = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--padding") && i + 1 < argc) o.padding = atof(argv[++i]);
         else {
-            fprintf(stderr, "usage: bench_drag [--frames N] [--mesh PATH]\n");
+            fprintf(stderr,
+                    "usage: bench_drag [--frames N] [--mesh PATH] [--box-scale S] [--padding P]\n");
             return 2;
         }
     }
@@ -159,9 +179,9 @@ int main(int argc, char **argv)
     const char *dir = getenv("SCAF_DATA_DIR") ? getenv("SCAF_DATA_DIR") : SCAF_DATA_DIR;
     const char *names[] = {"seams/human_neutral.obj", "seams/spot.obj", "seams/blub.obj"};
     int nmesh = one ? 1 : 3;
-    printf("| mesh | handle | charts | frames | median ms | p10 | p90 |");
+    printf("| mesh | handle | charts | frames | median CPU ms | median wall ms | p10 | p90 |");
     for (int p = 0; p < SCAF_PHASE_COUNT; p++) printf(" %s |", scaf_phase_name((scaf_phase)p));
-    printf(" handle error / side | bijective every frame |\n|---|---|---|---|---|---|---|");
+    printf(" handle error / side | bijective every frame |\n|---|---|---|---|---|---|---|---|");
     for (int p = 0; p < SCAF_PHASE_COUNT; p++) printf("---|");
     printf("---|---|\n");
     for (int k = 0; k < nmesh; k++) {
@@ -174,8 +194,6 @@ int main(int argc, char **argv)
             fprintf(stderr, "%s: skipped (%s)\n", path, err.message);
             continue;
         }
-        scaf_drag_options_t o = scaf_drag_options_default();
-        o.start = SCAF_DRAG_START_ATLAS;
         scaf_drag_t *d = scaf_drag_new(&o);
         double t0 = now();
         scaf_status st = scaf_drag_set_mesh(d, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT);
@@ -184,7 +202,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "%s: %s\n", path, scaf_drag_error(d));
         } else {
             const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
-            char label[256];
+            char label[4352];
             snprintf(label, sizeof label, "%s (%d faces, setup %.1f s)", base, m.nf, setup);
             drag_run(d, 0, frames, label);
             drag_run(d, 1, frames, label);

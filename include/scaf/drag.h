@@ -19,6 +19,14 @@
  * as that allows. Handles can change between steps at no rebuilding cost
  * beyond their own share of the system.
  *
+ * Padding and pushing: the padding is a hard constraint (the line search
+ * shortens a step until every two charts are at least the padding apart).
+ * Between charts farther apart a dragged chart pushes the others freely;
+ * in a layout packed to the padding (the output of scaf_atlas_run, whose
+ * compaction leaves charts squeezed below their distortion optimum, so
+ * every chart presses on its gaps) steps get short and drags slow
+ * (bench/RESULTS-drag.md); padding 0 drags freely there.
+ *
  * Units. Positions in and out (scaf_drag_get_uv, handle targets) are in
  * layout units: the mesh's 3D units divided by a power of two (exact; a
  * chart at rest has about its 3D size). They do not change from step to
