@@ -525,20 +525,15 @@ scaf_status scaf_drag_chart_info(const scaf_drag_t *d, int chart, scaf_drag_char
         return err_set(&m->err, SCAF_ERR_USAGE,
                        "chart %d does not exist: the layout has %d (0..%d)", chart, d->at.ncharts,
                        d->at.ncharts - 1);
+    double *E = malloc(sizeof(double) * (size_t)d->at.ncharts);
+    if (!E) return err_nomem(&m->err, "chart info");
+    atlas_chart_energy(&d->at, E); /* (all charts: one pass over the faces) */
     memset(info, 0, sizeof *info);
-    const scaf_loop *L = &d->at.loop;
-    double e = 0.0, w = 0.0;
-    for (int f = 0; f < d->at.nf; f++) {
-        if (d->at.chart[f] != chart) continue;
-        double J[9];
-        opt_jacobian(&L->chart, f, L->uv, J);
-        e += L->chart.weight[f] * opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J);
-        w += L->chart.weight[f];
-        info->faces++;
-    }
+    for (int f = 0; f < d->at.nf; f++) info->faces += d->at.chart[f] == chart;
     info->uvs = d->handles.cstart[chart + 1] - d->handles.cstart[chart];
-    chart_centroid(&d->at, chart, L->uv, info->centroid, &info->uv_area);
-    info->energy = w > 0.0 ? e / w : NAN;
+    chart_centroid(&d->at, chart, d->at.loop.uv, info->centroid, &info->uv_area);
+    info->energy = E[chart];
+    free(E);
     info->held = d->handles.cheld[chart];
     return SCAF_OK;
 }
