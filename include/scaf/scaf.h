@@ -332,5 +332,7 @@ SCAF_API void scaf_param_destroy(scaf_param_t *p);
 
 /* The multi-chart texture atlas (scaf_atlas_*). */
 #include "atlas.h"
+/* Interactive dragging of an atlas's charts and vertices (scaf_drag_*). */
+#include "drag.h"
 
 #endif /* SCAF_SCAF_H */

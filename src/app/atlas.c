@@ -704,6 +704,20 @@ static scaf_status one_iteration(atlas *a, atlas_phase ph, atlas_progress_fn pro
     return SCAF_OK;
 }
 
+void atlas_compact_begin(atlas *a)
+{
+    a->loop.opt.scaffold.box_scale = a->opt.compact_box_scale;
+    a->loop.opt.lambda_ratio = a->opt.compact_lambda_ratio;
+    a->loop.opt.scaffold.box_square = 0;
+    a->loop.hooks.prepare = compact_prepare;
+}
+
+void atlas_compact_end(atlas *a)
+{
+    a->loop.hooks.prepare = NULL;
+    a->loop.opt = param_loop_options(&a->opt.base);
+}
+
 scaf_stop_reason atlas_stop_reason(const atlas *a)
 {
     return a->compact_stop != SCAF_STOP_NONE ? a->compact_stop : a->settle_stop;
@@ -754,10 +768,7 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
     /* (one chart too: the box shrinks around it, its aspect nears the
      * square's within the distortion tolerance) */
     if (a->opt.compact_iterations > 0) {
-        a->loop.opt.scaffold.box_scale = a->opt.compact_box_scale;
-        a->loop.opt.lambda_ratio = a->opt.compact_lambda_ratio;
-        a->loop.opt.scaffold.box_square = 0;
-        a->loop.hooks.prepare = compact_prepare;
+        atlas_compact_begin(a);
         enum { MAXWIN = 64 };
         int win = a->opt.progress_window < 1  ? 1
             : a->opt.progress_window > MAXWIN ? MAXWIN
@@ -807,8 +818,7 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
             a->compact_restored = 1;
         }
         free(best);
-        a->loop.hooks.prepare = NULL;
-        a->loop.opt = param_loop_options(&a->opt.base);
+        atlas_compact_end(a);
         if (st != SCAF_OK) return st;
     }
     if (a->opt.rotate) {

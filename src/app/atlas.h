@@ -184,6 +184,13 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
  * nonzero return stops (SCAF_ERR_CANCELLED). */
 scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_error *err);
 
+/* Phase 2's setup of the loop (tight box, compaction scaffold weight,
+ * the prepare hook that pushes the box inward and stiffens close pairs)
+ * and back to the loop options of phase 1 (base). atlas_run brackets its
+ * compaction with them; app/drag runs compaction iterations on demand. */
+void atlas_compact_begin(atlas *a);
+void atlas_compact_end(atlas *a);
+
 /* Why the run stopped: the compaction's reason when it ran, else the
  * settle phase's. */
 scaf_stop_reason atlas_stop_reason(const atlas *a);

@@ -22,6 +22,13 @@ void opt_handle_term_init(opt_handle_term *h, int d, int nverts)
 scaf_status opt_handle_term_set(opt_handle_term *h, int n, const int *vertex, const double *target,
                                 double w, scaf_error *err)
 {
+    return opt_handle_term_set_scaled(h, n, vertex, target, NULL, w, err);
+}
+
+scaf_status opt_handle_term_set_scaled(opt_handle_term *h, int n, const int *vertex,
+                                       const double *target, const double *scale, double w,
+                                       scaf_error *err)
+{
     if (n < 0) return err_set(err, SCAF_ERR_USAGE, "handles: negative count %d", n);
     if (!isfinite(w) || w < 0.0)
         return err_set(err, SCAF_ERR_USAGE, "handles: weight %g is not a finite value >= 0", w);
@@ -33,23 +40,30 @@ scaf_status opt_handle_term_set(opt_handle_term *h, int n, const int *vertex, co
             if (!isfinite(target[(size_t)h->d * i + a]))
                 return err_set(err, SCAF_ERR_USAGE, "handle %d: target coordinate %d is not finite",
                                i, a);
+        if (scale && (!isfinite(scale[i]) || scale[i] < 0.0))
+            return err_set(err, SCAF_ERR_USAGE,
+                           "handle %d: weight factor %g is not a finite value >= 0", i, scale[i]);
     }
     if (n > h->cap) {
         int *v = malloc(sizeof(int) * (size_t)n);
         int *bd = malloc(sizeof(int) * (size_t)n);
         double *t = malloc(sizeof(double) * (size_t)h->d * (size_t)n);
-        if (!v || !bd || !t) {
+        double *sc = malloc(sizeof(double) * (size_t)n);
+        if (!v || !bd || !t || !sc) {
             free(v);
             free(bd);
             free(t);
+            free(sc);
             return err_nomem(err, "handles");
         }
         free(h->vertex);
         free(h->built_dof);
         free(h->target);
+        free(h->scale);
         h->vertex = v;
         h->built_dof = bd;
         h->target = t;
+        h->scale = sc;
         h->cap = n;
         h->built = 0;
     }
@@ -59,6 +73,7 @@ scaf_status opt_handle_term_set(opt_handle_term *h, int n, const int *vertex, co
         h->vertex[i] = vertex[i];
     }
     if (n > 0) memcpy(h->target, target, sizeof(double) * (size_t)h->d * (size_t)n);
+    for (int i = 0; i < n; i++) h->scale[i] = scale ? scale[i] : 1.0;
     h->n = n;
     h->w = w;
     return SCAF_OK;
@@ -83,6 +98,7 @@ void opt_handle_term_free(opt_handle_term *h)
     free(h->vertex);
     free(h->target);
     free(h->built_dof);
+    free(h->scale);
     memset(h, 0, sizeof *h);
 }
 
@@ -93,7 +109,7 @@ static double handle_energy(const opt_obj_term *t, const double *X)
     for (int i = 0; i < h->n; i++)
         for (int a = 0; a < h->d; a++) {
             double e = X[(size_t)h->d * h->vertex[i] + a] - h->target[(size_t)h->d * i + a];
-            s += e * e;
+            s += h->scale[i] * (e * e); /* scale 1: the bits of the plain sum */
         }
     return h->w * s;
 }
@@ -107,8 +123,8 @@ static void handle_energy_slope(const opt_obj_term *t, const double *X, const do
         for (int a = 0; a < h->d; a++) {
             size_t k = (size_t)h->d * h->vertex[i] + a;
             double r = X[k] - h->target[(size_t)h->d * i + a];
-            s += r * r;
-            g += r * D[k];
+            s += h->scale[i] * (r * r);
+            g += h->scale[i] * r * D[k];
         }
     *e += h->w * s;
     *slope += 2.0 * h->w * g;
@@ -138,9 +154,10 @@ static void handle_fill(opt_obj_term *t, const int *dof, const double *X, double
     for (int i = 0; i < h->n; i++) {
         int k = dof[h->vertex[i]];
         if (k < 0) continue; /* a fixed vertex: nothing to move */
-        opt_proxy_block_add_diagonal(&t->blk, k, h->w);
+        double wi = h->w * h->scale[i];
+        opt_proxy_block_add_diagonal(&t->blk, k, wi);
         for (int a = 0; a < h->d; a++)
-            rhs[(size_t)h->d * k + a] += h->w * h->target[(size_t)h->d * i + a];
+            rhs[(size_t)h->d * k + a] += wi * h->target[(size_t)h->d * i + a];
     }
 }
 
@@ -156,10 +173,11 @@ static scaf_status handle_hessian_fill(opt_obj_term *t, const int *dof, const do
     for (int i = 0; i < h->n; i++) {
         int k = dof[h->vertex[i]];
         if (k < 0) continue;
-        opt_proxy_block_add_diagonal(&t->blk, k, 2.0 * h->w);
+        double wi = h->w * h->scale[i];
+        opt_proxy_block_add_diagonal(&t->blk, k, 2.0 * wi);
         for (int a = 0; a < h->d; a++) {
             size_t v = (size_t)h->d * h->vertex[i] + a;
-            rhs[(size_t)h->d * k + a] -= 2.0 * h->w * (X[v] - h->target[(size_t)h->d * i + a]);
+            rhs[(size_t)h->d * k + a] -= 2.0 * wi * (X[v] - h->target[(size_t)h->d * i + a]);
         }
     }
     return SCAF_OK;

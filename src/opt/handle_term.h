@@ -43,6 +43,8 @@ typedef struct opt_handle_term {
     int *vertex;    /* n vertex indices (repeats allowed) */
     double *target; /* n by d */
     double w;       /* the weight (not the ratio) */
+    double *scale;  /* n: handle i weighs w * scale[i] (1 unless set with
+                       opt_handle_term_set_scaled) */
     int *built_dof; /* n: the dofs the block's pattern was built for */
     int built;      /* the pattern exists */
     int cap;        /* allocated handles */
@@ -60,6 +62,14 @@ void opt_handle_term_init(opt_handle_term *h, int d, int nverts);
  * weight w >= 0 (copied). On failure h is unchanged. */
 scaf_status opt_handle_term_set(opt_handle_term *h, int n, const int *vertex, const double *target,
                                 double w, scaf_error *err);
+
+/* The same with a weight per handle: handle i weighs w * scale[i]
+ * (scale: n finite values >= 0; NULL: all 1). A handle group (a chart
+ * held rigidly by all its vertices) spreads one handle's weight over its
+ * vertices this way. */
+scaf_status opt_handle_term_set_scaled(opt_handle_term *h, int n, const int *vertex,
+                                       const double *target, const double *scale, double w,
+                                       scaf_error *err);
 
 /* Largest distance of a handle to its target at X. 0 without handles. */
 double opt_handle_term_max_error(const opt_handle_term *h, const double *X);

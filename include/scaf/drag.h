@@ -1,0 +1,301 @@
+/* scaf/drag.h: the public C API for interactive dragging of an atlas.
+ *
+ * Included by scaf/scaf.h; it may also be included on its own. Same
+ * conventions as scaf.h: 0-based indices, row-major arrays ("UV #UV by 2"
+ * means UV[2*i+k]), every function that can fail returns a scaf_status and
+ * leaves a message readable by scaf_drag_error.
+ *
+ * What it does (the paper's Figure 1: charts dragged while nothing ever
+ * overlaps). A drag context holds one layout of a mesh's charts — one
+ * chart, or an atlas of many (connected components, or pieces cut along
+ * the UV seams, exactly as scaf_atlas_set_mesh finds them) — inside one
+ * scaffold, with the atlas's padding kept between charts. The caller sets
+ * soft handles (a UV vertex pulled to a target point, or a whole chart
+ * pulled to a rigid motion of itself), then runs SCAF iterations with
+ * scaf_drag_step: the handles pull, the charts in the way are pushed
+ * aside through the scaffold, and the layout stays bijective (no flipped
+ * triangle, no overlap, charts at least the padding apart) after every
+ * iteration, whatever the targets: handles get as close to their targets
+ * as that allows. Handles can change between steps at no rebuilding cost
+ * beyond their own share of the system.
+ *
+ * Padding and pushing: the padding is a hard constraint (the line search
+ * shortens a step until every two charts are at least the padding apart).
+ * Between charts farther apart a dragged chart pushes the others freely;
+ * in a layout packed to the padding (the output of scaf_atlas_run, whose
+ * compaction leaves charts squeezed below their distortion optimum, so
+ * every chart presses on its gaps) steps get short and drags slow
+ * (bench/RESULTS-drag.md); padding 0 drags freely there.
+ *
+ * Units. Positions in and out (scaf_drag_get_uv, handle targets) are in
+ * layout units: the mesh's 3D units divided by a power of two (exact; a
+ * chart at rest has about its 3D size). They do not change from step to
+ * step, so a viewer may fix its view transform once. The normalized output
+ * for saving (scaf_drag_get_output) is the layout scaled into the unit
+ * square like scaf_atlas_get_uv, certified exactly (bijective, padding).
+ *
+ * Typical use (an editor):
+ *
+ *     scaf_drag_options_t opt = scaf_drag_options_default();
+ *     opt.start = SCAF_DRAG_START_INPUT;        // edit an existing atlas
+ *     scaf_drag_t *d = scaf_drag_new(&opt);
+ *     if (scaf_drag_set_mesh(d, V, nv, F, nf, UV, nuv, FT) != SCAF_OK)
+ *         fprintf(stderr, "%s\n", scaf_drag_error(d));
+ *     scaf_drag_checkpoint(d);                   // mouse down on chart c
+ *     for (each mouse move)
+ *         scaf_drag_move_chart(d, c, dx, dy, angle),  // total since mouse down
+ *         scaf_drag_step(d, 2, NULL, NULL),
+ *         scaf_drag_get_uv(d, UV, NULL, NULL);   // draw
+ *     scaf_drag_clear_handles(d);                // mouse up
+ *     ...
+ *     scaf_drag_undo(d);                         // back to the checkpoint
+ *     scaf_drag_get_output(d, UVn, FT, chart);   // [0,1]^2, certified: save
+ *     scaf_drag_destroy(d);
+ */
+#ifndef SCAF_DRAG_H
+#define SCAF_DRAG_H
+
+#include "scaf.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Where the layout starts. */
+typedef enum scaf_drag_start {
+    SCAF_DRAG_START_LAYOUT = 0, /* the atlas's starting layout: every chart
+                                   a Tutte embedding on a circle of its 3D
+                                   area, the circles on a grid */
+    SCAF_DRAG_START_INPUT,      /* the input UVs (UV + FT of set_mesh),
+                                   accepted only when the exact checker
+                                   proves them bijective and the padding
+                                   holds there (the layout of `scaf atlas`
+                                   output does) */
+    SCAF_DRAG_START_ATLAS       /* the finished atlas: the starting layout
+                                   run through scaf_atlas_run's phases
+                                   (settle, re-placement, compaction) */
+} scaf_drag_start;
+
+/* Options. Always start from scaf_drag_options_default() so that fields
+ * added later get their defaults. */
+typedef struct scaf_drag_options {
+    scaf_drag_start start; /* (SCAF_DRAG_START_LAYOUT) */
+    double padding;        /* minimum distance between two charts,
+                              relative to the longest side of the layout's
+                              bounding box (the unit square of the
+                              normalized output); 0 or in [2^-200, 0.5)
+                              (4.0 / 1024, as scaf_atlas) */
+    double weight_ratio;   /* handle weight, dimensionless (see
+                              scaf_param_set_handles): each handle — one
+                              vertex, or one chart with its weight spread
+                              over its vertices — costs weight_ratio * A
+                              (A total 3D area) at a squared distance A to
+                              its target; the handles share it equally
+                              (SCAF_HANDLE_WEIGHT_DEFAULT, 1e4) */
+    scaf_solver solver;    /* step of each iteration (SCAF_SOLVER_SLIM:
+                              moving targets favour SLIM's long steps;
+                              AUTO switches to Newton once SLIM slows and
+                              stays there) */
+    double box_scale;      /* scaffold box, times the layout's bounding
+                              box, in [1, 1e6] (3) */
+    double lambda_ratio;   /* scaffold weight, > 0 (0.01, the paper's) */
+    int undo_depth;        /* checkpoints kept by scaf_drag_checkpoint,
+                              the oldest dropped beyond, in [1, 4096]
+                              (64) */
+} scaf_drag_options_t;
+
+/* The documented defaults above. */
+SCAF_API scaf_drag_options_t scaf_drag_options_default(void);
+
+/* Opaque drag context. Not thread-safe itself; two contexts may run in
+ * two threads. */
+typedef struct scaf_drag scaf_drag_t;
+
+/* A new context with a copy of the options (NULL: defaults). Returns NULL
+ * only when out of memory. Invalid options are replaced by the defaults
+ * and scaf_drag_error says which one was wrong. */
+SCAF_API scaf_drag_t *scaf_drag_new(const scaf_drag_options_t *options);
+
+/* Replace the options: SCAF_ERR_USAGE naming the first invalid value
+ * (the options are then unchanged). They take effect at the next
+ * scaf_drag_set_mesh. */
+SCAF_API scaf_status scaf_drag_set_options(scaf_drag_t *d, const scaf_drag_options_t *options);
+
+/* Set the mesh and compute the starting layout (options.start).
+ * Arguments as scaf_atlas_set_mesh:
+ *   V   #V by 3 vertex positions (nv rows), finite
+ *   F   #F by 3 vertex indices per triangle, counter-clockwise (nf rows)
+ *   UV  #UV by 2 texture coordinates, or NULL (nuv = 0, FT NULL): then
+ *       each connected component is one chart
+ *   FT  #F by 3 UV indices per corner: the charts are the pieces cut
+ *       along the UV seams (a UV index whose faces form several fans gets
+ *       one layout vertex per fan)
+ * Errors: those of scaf_atlas_set_mesh (SCAF_ERR_USAGE, SCAF_ERR_MESH
+ * naming the chart or face), SCAF_ERR_USAGE for START_INPUT without UVs
+ * or with a padding the input does not keep, SCAF_ERR_MESH when the input
+ * UVs are not bijective. Drops handles and checkpoints. On failure the
+ * context has no mesh. */
+SCAF_API scaf_status scaf_drag_set_mesh(scaf_drag_t *d, const double *V, int nv, const int *F,
+                                        int nf, const double *UV, int nuv, const int *FT);
+
+/* Sizes: charts; layout vertices (#UV: one per chart corner fan, the UV
+ * indices of scaf_drag_get_uv's FT); faces. 0 without a mesh. */
+SCAF_API int scaf_drag_chart_count(const scaf_drag_t *d);
+SCAF_API int scaf_drag_uv_count(const scaf_drag_t *d);
+SCAF_API int scaf_drag_face_count(const scaf_drag_t *d);
+
+/* The current layout, in layout units (see the banner):
+ *   UV     out, #UV by 2 positions
+ *   FT     out, #F by 3 layout vertex per corner of each input face (may
+ *          be NULL; it never changes for a mesh)
+ *   chart  out, #F chart id per face, 0..chart_count-1 (may be NULL)
+ * SCAF_ERR_USAGE without a mesh or with UV NULL. */
+SCAF_API scaf_status scaf_drag_get_uv(const scaf_drag_t *d, double *UV, int *FT, int *chart);
+
+/* The chart of every layout vertex: chart out, #UV ids. SCAF_ERR_USAGE
+ * without a mesh or with chart NULL. */
+SCAF_API scaf_status scaf_drag_uv_charts(const scaf_drag_t *d, int *chart);
+
+/* ---- handles --------------------------------------------------------------
+ * A handle is a vertex handle (one layout vertex, an absolute target) or
+ * a chart handle (every vertex of one chart, its targets the chart's pose
+ * when the handle was created moved rigidly). At most one handle per
+ * vertex and one per chart; a vertex of a held chart may have its own
+ * vertex handle too. Handles act from the next scaf_drag_step on and stay
+ * until cleared (scaf_drag_set_mesh drops them; undo and cancel do not
+ * touch them). Errors (SCAF_ERR_USAGE, nothing changed): no mesh, an
+ * index out of range (named with the valid range), a target or motion
+ * that is not finite. */
+
+/* Pull layout vertex uv (0..#UV-1) to (x, y), layout units. */
+SCAF_API scaf_status scaf_drag_move_vertex(scaf_drag_t *d, int uv, double x, double y);
+
+/* Pull chart c rigidly: the targets are the chart's vertices as they were
+ * when its handle was created (the first move_chart since it was cleared:
+ * the grab pose), rotated by `angle` radians counter-clockwise about the
+ * grab pose's centroid (area-weighted, UV triangles) and translated by
+ * (dx, dy) layout units. Calls while the handle exists give the motion
+ * from that same grab pose (an editor passes the total motion since the
+ * mouse went down), so repeated moves never drift. All the chart's
+ * vertices are held, each with 1 / (its vertex count) of a handle's
+ * weight: the chart follows as a whole and keeps its shape unless other
+ * charts block it (the pull is soft, it then bends as little as the
+ * distortion energy allows). */
+SCAF_API scaf_status scaf_drag_move_chart(scaf_drag_t *d, int chart, double dx, double dy,
+                                          double angle);
+
+/* Drop one vertex handle / one chart handle (no handle there: SCAF_OK,
+ * nothing changes) / every handle. */
+SCAF_API scaf_status scaf_drag_clear_vertex(scaf_drag_t *d, int uv);
+SCAF_API scaf_status scaf_drag_clear_chart(scaf_drag_t *d, int chart);
+SCAF_API scaf_status scaf_drag_clear_handles(scaf_drag_t *d);
+
+/* Number of handles (vertex handles + chart handles); 0 without a mesh. */
+SCAF_API int scaf_drag_handle_count(const scaf_drag_t *d);
+
+/* Largest distance of a handled vertex to its target (layout units); 0
+ * without handles, NAN without a mesh. */
+SCAF_API double scaf_drag_max_handle_error(const scaf_drag_t *d);
+
+/* ---- iterations ------------------------------------------------------------ */
+
+/* Run up to n >= 1 SCAF iterations with the current handles (SLIM or
+ * Newton as options.solver says; the scaffold re-meshed every iteration,
+ * the padding kept). Stops early, with SCAF_OK, when an iteration finds
+ * no step that lowers the energy (the layout is then a minimum and more
+ * iterations would not move it). After every iteration the layout is
+ * bijective and padded. progress (may be NULL) is called after each
+ * iteration; its nonzero return stops with SCAF_ERR_CANCELLED, keeping
+ * the last finished iteration. The layout before the call is kept for
+ * scaf_drag_cancel. Errors: SCAF_ERR_USAGE (no mesh, n < 1),
+ * SCAF_ERR_NUMERIC, SCAF_ERR_NOMEM (the layout of the last finished
+ * iteration stays). */
+SCAF_API scaf_status scaf_drag_step(scaf_drag_t *d, int n, scaf_param_progress_fn progress,
+                                    void *user);
+
+/* Iterations finished since scaf_drag_set_mesh (not counting those of
+ * SCAF_DRAG_START_ATLAS; lowered by cancel and undo to the count of the
+ * state they restore). */
+SCAF_API int scaf_drag_iterations(const scaf_drag_t *d);
+
+/* Restore the layout before the last scaf_drag_step (bit for bit); a
+ * second cancel without a step in between does nothing. SCAF_ERR_USAGE
+ * without a mesh or when no step was made since set_mesh / the last
+ * undo. */
+SCAF_API scaf_status scaf_drag_cancel(scaf_drag_t *d);
+
+/* Undo: scaf_drag_checkpoint saves the current layout on a stack (at
+ * most options.undo_depth, the oldest dropped); scaf_drag_undo restores
+ * the last saved layout bit for bit and removes it from the stack
+ * (SCAF_ERR_USAGE when the stack is empty). scaf_drag_undo_count: layouts
+ * on the stack. */
+SCAF_API scaf_status scaf_drag_checkpoint(scaf_drag_t *d);
+SCAF_API scaf_status scaf_drag_undo(scaf_drag_t *d);
+SCAF_API int scaf_drag_undo_count(const scaf_drag_t *d);
+
+/* Compaction, the atlas's second phase, from the current layout: n >= 1
+ * iterations with a contracting scaffold (the box pushed inward), charts
+ * packing tighter with the padding kept, handles ignored; stops early when
+ * no step is found. A checkpoint-able state like scaf_drag_step (cancel
+ * restores the layout before it). Same errors as scaf_drag_step. */
+SCAF_API scaf_status scaf_drag_compact(scaf_drag_t *d, int n, scaf_param_progress_fn progress,
+                                       void *user);
+
+/* ---- measures -------------------------------------------------------------- */
+
+/* The current energy E of all charts (see scaf_iteration_info_t; 4 at an
+ * isometry), NAN without a mesh. */
+SCAF_API double scaf_drag_energy(const scaf_drag_t *d);
+
+/* Packing efficiency of the current layout: chart UV area / (longest side
+ * of its bounding box)^2, as the normalized output would have it
+ * (floating point, cheap enough for every frame); NAN without a mesh. */
+SCAF_API double scaf_drag_packing_efficiency(const scaf_drag_t *d);
+
+/* Per-face distortion: E out, #F values ||J||^2 + ||J^-1||^2 (4 at an
+ * isometry). SCAF_ERR_USAGE without a mesh or with E NULL. */
+SCAF_API scaf_status scaf_drag_face_energy(const scaf_drag_t *d, double *E);
+
+/* One chart's numbers. */
+typedef struct scaf_drag_chart_info {
+    int faces;          /* its faces */
+    int uvs;            /* its layout vertices */
+    double centroid[2]; /* area-weighted centroid of its UV triangles
+                           (layout units): the pivot of move_chart */
+    double uv_area;     /* total UV area (layout units squared) */
+    double energy;      /* sum_f A_f (||J_f||^2 + ||J_f^-1||^2) / sum_f A_f
+                           over its faces (A_f 3D area) */
+    int held;           /* 1: it has a chart handle */
+} scaf_drag_chart_info_t;
+
+/* SCAF_ERR_USAGE without a mesh, info NULL or chart out of range. */
+SCAF_API scaf_status scaf_drag_chart_info(const scaf_drag_t *d, int chart,
+                                          scaf_drag_chart_info_t *info);
+
+/* ---- output ---------------------------------------------------------------- */
+
+/* The current layout normalized into [0,1]^2 (one uniform scale, as
+ * scaf_atlas_get_uv) and certified: bijective by the exact checker and
+ * every two charts at least options.padding apart, decided exactly on
+ * these doubles. What an editor saves.
+ *   UV     out, #UV by 2
+ *   FT     out, #F by 3 (may be NULL)
+ *   chart  out, #F chart id per face (may be NULL)
+ *   efficiency, gap  out (may be NULL): packing efficiency and smallest
+ *          chart distance of these coordinates (INFINITY with one chart)
+ * SCAF_ERR_USAGE without a mesh or with UV NULL; SCAF_ERR_INTERNAL (and
+ * nothing copied) when the certificate fails, which is a bug. */
+SCAF_API scaf_status scaf_drag_get_output(scaf_drag_t *d, double *UV, int *FT, int *chart,
+                                          double *efficiency, double *gap);
+
+/* The message of the last failure ("" when none). Valid until the next
+ * call on d. */
+SCAF_API const char *scaf_drag_error(const scaf_drag_t *d);
+
+/* Free everything. NULL is allowed. */
+SCAF_API void scaf_drag_destroy(scaf_drag_t *d);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* SCAF_DRAG_H */
