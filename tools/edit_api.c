@@ -19,6 +19,8 @@
 #define COMPACT_STEPS_DEFAULT 30
 #define STEPS_MAX 1000
 #define OPTIMIZE_TOLERANCE 1e-4 /* relative decrease of E per iteration */
+#define MAX_ANGLE 1000.0        /* radians of a chart drag */
+#define REACH_FACTOR 1000.0     /* drag targets: within this times the layout's size */
 
 void edit_response_free(edit_response *rs)
 {
@@ -265,6 +267,17 @@ static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
     }
     if (chart ? !check_chart(a, rs, f[0].value) : !check_vertex(a, rs, f[4].value)) return;
     if (!check_steps(rs, &f[7], DRAG_STEPS_MAX)) return;
+    /* a pointer stays on the screen: bounded motions keep the handle
+     * energy finite */
+    for (int k = 1; k < 7; k++) {
+        double limit = k == 3 ? MAX_ANGLE : a->reach;
+        if (k != 4 && f[k].seen && !(fabs(f[k].value) <= limit)) {
+            reply_error(rs, 400, "\"%s\" %g is out of range: at most %g in magnitude%s",
+                        f[k].key, f[k].value, limit,
+                        k == 3 ? " (radians)" : " (1000 times the layout's size)");
+            return;
+        }
+    }
     scaf_status st = chart ? scaf_drag_move_chart(a->drag, (int)f[0].value, f[1].value,
                                                   f[2].value, f[3].value)
                            : scaf_drag_move_vertex(a->drag, (int)f[4].value, f[5].value,
@@ -503,6 +516,15 @@ scaf_status edit_api_init(edit_api *a, scaf_drag_t *d, const mesh *m, const char
         edit_api_free(a);
         return st;
     }
+    double ulo[2] = {INFINITY, INFINITY}, uhi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < a->nuv; i++)
+        for (int c = 0; c < 2; c++) {
+            ulo[c] = fmin(ulo[c], a->uv[2 * i + c]);
+            uhi[c] = fmax(uhi[c], a->uv[2 * i + c]);
+        }
+    double size = fmax(fmax(uhi[0] - ulo[0], uhi[1] - ulo[1]),
+                       fmax(fmax(fabs(ulo[0]), fabs(uhi[0])), fmax(fabs(ulo[1]), fabs(uhi[1]))));
+    a->reach = REACH_FACTOR * (size > 0 ? size : 1.0);
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int i = 0; i < m->nv; i++)
         for (int c = 0; c < 3; c++) {

@@ -31,7 +31,7 @@
  * argument (compared in constant time). Refused requests get a 4xx and a
  * JSON {"error": "..."} that says why, before anything is touched:
  * 400 malformed JSON, unknown key, unknown chart or vertex, a value out
- * of range; 403 wrong Host, Origin or token; 404 unknown path; 405 wrong
+ * of range (a drag farther than 1000 times the layout's size); 403 wrong Host, Origin or token; 404 unknown path; 405 wrong
  * method; 409 nothing to undo; 413 a body over EDIT_MAX_BODY bytes.
  * 500: the library failed (its message; the layout of the last finished
  * iteration stays).
@@ -64,6 +64,8 @@ typedef struct edit_api {
     int *FT, *chart;       /* nf by 3, nf: fixed for the mesh */
     double *uv;            /* nuv by 2: scratch for the state */
     double diagonal;       /* of the 3D bounding box: the page's checker */
+    double reach;          /* largest |dx|, |dy|, |x|, |y| of a drag: 1000
+                              times the starting layout's extent */
     int saves;             /* files written */
 } edit_api;
 
