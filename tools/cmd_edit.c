@@ -122,13 +122,13 @@ static int make_layout(const char *in, const mesh *m, const char *start, double 
             return EXIT_NOMEM;
         }
         int uvs = opt.start == SCAF_DRAG_START_INPUT;
-        st = scaf_drag_set_mesh(d, m->V, m->nv, m->F, m->nf, uvs ? m->UV : NULL,
-                                uvs ? m->nuv : 0, uvs ? m->FT : NULL);
+        st = scaf_drag_set_mesh(d, m->V, m->nv, m->F, m->nf, uvs ? m->UV : NULL, uvs ? m->nuv : 0,
+                                uvs ? m->FT : NULL);
         if (st == SCAF_OK) {
             if (!quiet)
-                fprintf(stderr, "scaf edit: %s: %d faces, %d charts, starting from %s\n", in,
-                        m->nf, scaf_drag_chart_count(d),
-                        uvs                                   ? "its UVs"
+                fprintf(stderr, "scaf edit: %s: %d faces, %d charts, starting from %s\n", in, m->nf,
+                        scaf_drag_chart_count(d),
+                        uvs                                      ? "its UVs"
                             : opt.start == SCAF_DRAG_START_ATLAS ? "the atlas (`scaf atlas`)"
                                                                  : "circles on a grid");
             *out = d;
@@ -137,8 +137,7 @@ static int make_layout(const char *in, const mesh *m, const char *start, double 
         if (t + 1 < ntries && !quiet)
             fprintf(stderr, "scaf edit: %s: not starting from its UVs: %s\n", in,
                     scaf_drag_error(d));
-        else if (t + 1 == ntries)
-            fprintf(stderr, "scaf edit: %s: %s\n", in, scaf_drag_error(d));
+        else if (t + 1 == ntries) fprintf(stderr, "scaf edit: %s: %s\n", in, scaf_drag_error(d));
         scaf_drag_destroy(d);
     }
     return exit_code_for(st);

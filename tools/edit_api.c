@@ -247,14 +247,15 @@ static void grab(edit_api *a, const edit_request *rq, edit_response *rs)
 static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
 {
     edit_json_field f[] = {
-        {"chart", EDIT_JSON_INTEGER, 0, 0, 0}, {"dx", EDIT_JSON_NUMBER, 0, 0, 0},
-        {"dy", EDIT_JSON_NUMBER, 0, 0, 0},     {"angle", EDIT_JSON_NUMBER, 0, 0, 0},
+        {"chart", EDIT_JSON_INTEGER, 0, 0, 0},  {"dx", EDIT_JSON_NUMBER, 0, 0, 0},
+        {"dy", EDIT_JSON_NUMBER, 0, 0, 0},      {"angle", EDIT_JSON_NUMBER, 0, 0, 0},
         {"vertex", EDIT_JSON_INTEGER, 0, 0, 0}, {"x", EDIT_JSON_NUMBER, 0, 0, 0},
-        {"y", EDIT_JSON_NUMBER, 0, 0, 0},     {"steps", EDIT_JSON_INTEGER, 0, 0, 0}};
+        {"y", EDIT_JSON_NUMBER, 0, 0, 0},       {"steps", EDIT_JSON_INTEGER, 0, 0, 0}};
     if (!parse(rq, rs, f, 8)) return;
     int chart = f[0].seen, vertex = f[4].seen;
     if (chart == vertex) {
-        reply_error(rs, 400, "give either \"chart\" (with dx, dy, angle) or \"vertex\" (with x, y)");
+        reply_error(rs, 400,
+                    "give either \"chart\" (with dx, dy, angle) or \"vertex\" (with x, y)");
         return;
     }
     if (chart && (f[5].seen || f[6].seen)) {
@@ -272,16 +273,15 @@ static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
     for (int k = 1; k < 7; k++) {
         double limit = k == 3 ? MAX_ANGLE : a->reach;
         if (k != 4 && f[k].seen && !(fabs(f[k].value) <= limit)) {
-            reply_error(rs, 400, "\"%s\" %g is out of range: at most %g in magnitude%s",
-                        f[k].key, f[k].value, limit,
+            reply_error(rs, 400, "\"%s\" %g is out of range: at most %g in magnitude%s", f[k].key,
+                        f[k].value, limit,
                         k == 3 ? " (radians)" : " (1000 times the layout's size)");
             return;
         }
     }
-    scaf_status st = chart ? scaf_drag_move_chart(a->drag, (int)f[0].value, f[1].value,
-                                                  f[2].value, f[3].value)
-                           : scaf_drag_move_vertex(a->drag, (int)f[4].value, f[5].value,
-                                                   f[6].value);
+    scaf_status st = chart
+        ? scaf_drag_move_chart(a->drag, (int)f[0].value, f[1].value, f[2].value, f[3].value)
+        : scaf_drag_move_vertex(a->drag, (int)f[4].value, f[5].value, f[6].value);
     if (st != SCAF_OK) { /* nothing changed (a motion out of range) */
         reply_error(rs, 400, "%s", scaf_drag_error(a->drag));
         return;
@@ -311,8 +311,8 @@ static void run(edit_api *a, const edit_request *rq, edit_response *rs, int comp
 {
     edit_json_field f[] = {{"steps", EDIT_JSON_INTEGER, 0, 0, 0}};
     if (!parse(rq, rs, f, 1) || !check_steps(rs, &f[0], STEPS_MAX)) return;
-    int cap = f[0].seen ? (int)f[0].value
-                        : (compact ? COMPACT_STEPS_DEFAULT : OPTIMIZE_STEPS_DEFAULT);
+    int cap =
+        f[0].seen ? (int)f[0].value : (compact ? COMPACT_STEPS_DEFAULT : OPTIMIZE_STEPS_DEFAULT);
     if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_checkpoint(a->drag) != SCAF_OK) {
         reply_failure(a, rs, compact ? "compact" : "optimize");
         return;
@@ -379,10 +379,8 @@ static void save(edit_api *a, const edit_request *rq, edit_response *rs)
     err_clear(&err);
     mesh o = {a->m->nv, a->m->V, a->m->nf, a->m->F, a->nuv, UV, FT};
     const char *path = cli_outputs_begin(&outs, k, &err);
-    int rc = cli_outputs_end(&outs, k,
-                             path ? cli_write_uv("edit", a->in, a->rinfo, path, &o, &err)
-                                  : SCAF_ERR_IO,
-                             &err);
+    int rc = cli_outputs_end(
+        &outs, k, path ? cli_write_uv("edit", a->in, a->rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
     if (rc == 0) rc = cli_outputs_commit(&outs);
     cli_outputs_abort(&outs);
     free(UV);
@@ -531,10 +529,10 @@ scaf_status edit_api_init(edit_api *a, scaf_drag_t *d, const mesh *m, const char
             lo[c] = fmin(lo[c], m->V[3 * i + c]);
             hi[c] = fmax(hi[c], m->V[3 * i + c]);
         }
-    a->diagonal = m->nv ? sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
-                               (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                               (hi[2] - lo[2]) * (hi[2] - lo[2]))
-                        : 1.0;
+    a->diagonal = m->nv
+        ? sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+               (hi[2] - lo[2]) * (hi[2] - lo[2]))
+        : 1.0;
     return SCAF_OK;
 }
 

@@ -49,24 +49,24 @@
 #define EDIT_TOKEN_CHARS 32 /* 128 random bits, hex */
 
 typedef struct edit_api {
-    scaf_drag_t *drag;     /* the layout (not owned) */
-    const mesh *m;         /* the input as read (not owned) */
-    const char *in;        /* the input path, for cli_write_uv */
+    scaf_drag_t *drag; /* the layout (not owned) */
+    const mesh *m;     /* the input as read (not owned) */
+    const char *in;    /* the input path, for cli_write_uv */
     const mesh_read_info *rinfo;
-    const char *out;       /* where save writes (checked at start-up) */
-    const char *name;      /* shown by the page */
-    double padding;        /* the drag context's padding (for messages) */
+    const char *out;  /* where save writes (checked at start-up) */
+    const char *name; /* shown by the page */
+    double padding;   /* the drag context's padding (for messages) */
     char token[EDIT_TOKEN_CHARS + 1];
-    int port;              /* the server's port: Host and Origin checks */
-    const char *page;      /* the page, page_len bytes */
+    int port;         /* the server's port: Host and Origin checks */
+    const char *page; /* the page, page_len bytes */
     size_t page_len;
     int nuv, nf, ncharts;
-    int *FT, *chart;       /* nf by 3, nf: fixed for the mesh */
-    double *uv;            /* nuv by 2: scratch for the state */
-    double diagonal;       /* of the 3D bounding box: the page's checker */
-    double reach;          /* largest |dx|, |dy|, |x|, |y| of a drag: 1000
+    int *FT, *chart; /* nf by 3, nf: fixed for the mesh */
+    double *uv;      /* nuv by 2: scratch for the state */
+    double diagonal; /* of the 3D bounding box: the page's checker */
+    double reach;    /* largest |dx|, |dy|, |x|, |y| of a drag: 1000
                               times the starting layout's extent */
-    int saves;             /* files written */
+    int saves;       /* files written */
 } edit_api;
 
 /* Set up the handler for a drag context that has its mesh; the token,

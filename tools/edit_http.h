@@ -14,15 +14,15 @@
 #define EDIT_MAX_BODY 16384
 
 typedef struct edit_request {
-    const char *method;   /* "GET", "POST", ... */
-    const char *path;     /* the URL's path, without the query */
-    const char *token;    /* the X-Scaf-Token header, else the "token" query
+    const char *method; /* "GET", "POST", ... */
+    const char *path;   /* the URL's path, without the query */
+    const char *token;  /* the X-Scaf-Token header, else the "token" query
                              argument; NULL when neither */
-    const char *origin;   /* the Origin header, NULL when absent */
-    const char *host;     /* the Host header, NULL when absent */
-    const char *body;     /* body_len bytes, not NUL-terminated */
+    const char *origin; /* the Origin header, NULL when absent */
+    const char *host;   /* the Host header, NULL when absent */
+    const char *body;   /* body_len bytes, not NUL-terminated */
     size_t body_len;
-    int body_too_large;   /* the body exceeded EDIT_MAX_BODY (not kept) */
+    int body_too_large; /* the body exceeded EDIT_MAX_BODY (not kept) */
 } edit_request;
 
 typedef struct edit_response {
@@ -30,7 +30,7 @@ typedef struct edit_response {
     const char *content_type; /* static string */
     char *body;               /* len bytes */
     size_t len;
-    int body_static;          /* 1: body is not to be freed (the page) */
+    int body_static; /* 1: body is not to be freed (the page) */
 } edit_response;
 
 /* Free the body of a response (unless static) and clear it. */

@@ -24,8 +24,9 @@ static int fail(reader *r, const char *what)
 
 static void skip_ws(reader *r)
 {
-    while (r->at < r->len &&
-           (r->s[r->at] == ' ' || r->s[r->at] == '\t' || r->s[r->at] == '\r' || r->s[r->at] == '\n'))
+    while (
+        r->at < r->len &&
+        (r->s[r->at] == ' ' || r->s[r->at] == '\t' || r->s[r->at] == '\r' || r->s[r->at] == '\n'))
         r->at++;
 }
 

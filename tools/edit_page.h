@@ -4,7 +4,7 @@
 #ifndef SCAF_TOOLS_EDIT_PAGE_H
 #define SCAF_TOOLS_EDIT_PAGE_H
 
-extern const unsigned char edit_page_html[];       /* edit_page_html_len bytes, then a NUL */
+extern const unsigned char edit_page_html[]; /* edit_page_html_len bytes, then a NUL */
 extern const unsigned long edit_page_html_len;
 
 #endif

@@ -47,9 +47,8 @@ static enum MHD_Result send_response(struct MHD_Connection *c, const edit_respon
 }
 
 static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const char *url,
-                                  const char *method, const char *version,
-                                  const char *upload_data, size_t *upload_data_size,
-                                  void **con_cls)
+                                  const char *method, const char *version, const char *upload_data,
+                                  size_t *upload_data_size, void **con_cls)
 {
     (void)version;
     edit_server *s = cls;
@@ -111,8 +110,7 @@ scaf_status edit_server_start(edit_server *s, int port, edit_handler_fn handler,
     s->daemon = MHD_start_daemon(
         MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_POLL, (uint16_t)port, NULL, NULL, on_request, s,
         MHD_OPTION_SOCK_ADDR, (struct sockaddr *)&addr, MHD_OPTION_NOTIFY_COMPLETED, request_done,
-        NULL, MHD_OPTION_CONNECTION_TIMEOUT, 30u, MHD_OPTION_CONNECTION_LIMIT, 64u,
-        MHD_OPTION_END);
+        NULL, MHD_OPTION_CONNECTION_TIMEOUT, 30u, MHD_OPTION_CONNECTION_LIMIT, 64u, MHD_OPTION_END);
     if (!s->daemon)
         return err_set(err, SCAF_ERR_IO, "cannot listen on 127.0.0.1:%d: %s", port,
                        errno ? strerror(errno) : "the HTTP server did not start");

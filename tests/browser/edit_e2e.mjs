@@ -2,7 +2,7 @@
 //
 // usage: node edit_e2e.mjs SCAF_BINARY WORK_DIR CHROMIUM
 //
-// Writes a six-chart atlas (`scaf gen cubesphere`), starts `scaf edit` on
+// Writes a six-chart atlas (`scaf gen cubesphere`, `scaf atlas`), starts `scaf edit` on
 // it, reads the URL with its token from the program's standard output,
 // opens the page in headless Chromium (playwright-core, the system's
 // browser: nothing downloaded), drags one chart with the mouse onto its
@@ -43,11 +43,13 @@ function firstLine(stream) {
 }
 
 mkdirSync(work, { recursive: true });
-const input = path.join(work, "cubesphere.obj");
+const input = path.join(work, "atlas.obj");
 const saved = path.join(work, "edited.obj");
 const shot = path.join(work, "scaf-edit.png");
 for (const f of [saved, shot]) rmSync(f, { force: true });
-run(["gen", "cubesphere", "--size", "4", "-o", input]);
+const sphere = path.join(work, "cubesphere.obj");
+run(["gen", "cubesphere", "--size", "4", "-o", sphere]);
+run(["atlas", sphere, "-o", input, "--quiet"]);  // a packed atlas: a drag has to push
 
 const server = spawn(scaf, ["edit", input, "-o", saved], { stdio: ["ignore", "pipe", "inherit"] });
 const exited = new Promise(resolve => server.on("exit", (code, signal) => resolve({ code, signal })));
@@ -60,7 +62,7 @@ try {
     // as root (CI containers) Chromium runs only without its sandbox
     args: process.getuid && process.getuid() === 0 ? ["--no-sandbox"] : []
   });
-  const page = await browser.newPage({ viewport: { width: 960, height: 720 } });
+  const page = await browser.newPage({ viewport: { width: 880, height: 620 } });
   const errors = [];
   page.on("pageerror", e => errors.push(e.message));
   page.on("requestfailed", r => errors.push("request failed: " + r.url()));
@@ -71,6 +73,7 @@ try {
   const loadError = await page.evaluate(() => window.scafEditor.error);
   if (loadError) fail("the page did not load the atlas: " + loadError);
 
+  await page.check("#checker");  // the checkerboard on the 3D surface, drawn per pixel
   // drag chart 0 onto chart 1, in small mouse steps
   const before = await page.evaluate(() => window.scafEditor.state());
   const a = await page.evaluate(() => window.scafEditor.chartPoint(0));
@@ -87,14 +90,13 @@ try {
   await page.mouse.up();
   await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle() && window.scafEditor.state().handles === 0));
   const after = await page.evaluate(() => window.scafEditor.state());
+  await page.screenshot({ path: shot });  // released: the view fitted to the pushed charts
   if (!(after.iteration > before.iteration + 24)) fail(`only ${after.iteration - before.iteration} iterations ran`);
   // chart 0 followed the mouse toward chart 1 (pushing it aside: no overlap)
   // (layout units: the view is fitted anew on release)
   const ua2 = await page.evaluate(() => window.scafEditor.chartCentre(0));
   const dist = (p, q) => Math.hypot(p[0] - q[0], p[1] - q[1]);
   if (!(dist(ua2, ub) < 0.5 * dist(ua, ub))) fail(`chart 0 did not follow the drag: ${ua} -> ${ua2}, toward ${ub}`);
-  await page.check("#checker");  // the checkerboard on the 3D surface, drawn per pixel
-  await page.screenshot({ path: shot });
 
   await page.click("#save");
   await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.saved || window.scafEditor.error));

@@ -38,14 +38,14 @@ static int setup(void **state)
     scaf_drag_options_t opt = scaf_drag_options_default();
     opt.start = SCAF_DRAG_START_INPUT;
     x->d = scaf_drag_new(&opt);
-    assert_int_equal(scaf_drag_set_mesh(x->d, x->m.V, x->m.nv, x->m.F, x->m.nf, x->m.UV,
-                                        x->m.nuv, x->m.FT),
-                     SCAF_OK);
+    assert_int_equal(
+        scaf_drag_set_mesh(x->d, x->m.V, x->m.nv, x->m.F, x->m.nf, x->m.UV, x->m.nuv, x->m.FT),
+        SCAF_OK);
     test_tmp_path("edit_api_out.obj", x->out, sizeof x->out);
     remove(x->out);
-    assert_int_equal(edit_api_init(&x->api, x->d, &x->m, "cubesphere.obj", &x->rinfo, x->out,
-                                   opt.padding, &err),
-                     SCAF_OK);
+    assert_int_equal(
+        edit_api_init(&x->api, x->d, &x->m, "cubesphere.obj", &x->rinfo, x->out, opt.padding, &err),
+        SCAF_OK);
     strcpy(x->api.token, TOKEN);
     x->api.port = PORT;
     x->api.page = "<html></html>";
@@ -94,8 +94,14 @@ static int same(const snapshot *a, const snapshot *b)
 /* A request as the page sends it, then the fields a case changes. */
 static edit_request good(const char *method, const char *path, const char *body)
 {
-    edit_request rq = {method, path, TOKEN, "http://127.0.0.1:8123", "127.0.0.1:8123",
-                       body, body ? strlen(body) : 0, 0};
+    edit_request rq = {method,
+                       path,
+                       TOKEN,
+                       "http://127.0.0.1:8123",
+                       "127.0.0.1:8123",
+                       body,
+                       body ? strlen(body) : 0,
+                       0};
     return rq;
 }
 
@@ -121,7 +127,8 @@ static void bad_requests_change_nothing(void **state)
      * drop, move or pop something */
     edit_request g = good("POST", "/api/grab", "{\"chart\": 1}");
     assert_int_equal(send(x, &g, NULL), 200);
-    edit_request d = good("POST", "/api/drag", "{\"chart\": 1, \"dx\": 0.01, \"dy\": 0, \"angle\": 0}");
+    edit_request d =
+        good("POST", "/api/drag", "{\"chart\": 1, \"dx\": 0.01, \"dy\": 0, \"angle\": 0}");
     assert_int_equal(send(x, &d, NULL), 200);
     snapshot before = snap(x);
     assert_int_equal(before.handles, 1);
@@ -233,8 +240,8 @@ static void drag_undo_save(void **state)
     double x0 = chart_x(x, 2);
     edit_request g = good("POST", "/api/grab", "{\"chart\": 2}");
     assert_int_equal(send(x, &g, NULL), 200);
-    edit_request d =
-        good("POST", "/api/drag", "{\"chart\": 2, \"dx\": 0.05, \"dy\": 0, \"angle\": 0, \"steps\": 4}");
+    edit_request d = good("POST", "/api/drag",
+                          "{\"chart\": 2, \"dx\": 0.05, \"dy\": 0, \"angle\": 0, \"steps\": 4}");
     assert_int_equal(send(x, &d, &text), 200);
     assert_non_null(strstr(text, "\"handles\": 1"));
     free(text);
