@@ -31,6 +31,8 @@ void edit_response_free(edit_response *rs)
 
 /* ---- responses -------------------------------------------------------------- */
 
+static void reply_failure(edit_api *a, edit_response *rs, const char *what);
+
 /* A JSON response written with stdio into memory. */
 typedef struct json_out {
     FILE *f;
@@ -94,11 +96,16 @@ static void write_ints(FILE *f, const char *key, const int *x, size_t n)
     fputs("]", f);
 }
 
-/* Positions for drawing: 9 significant digits are far below a pixel. */
+/* Numbers for drawing: 9 significant digits are far below a pixel; null
+ * for what JSON cannot hold. */
 static void write_doubles(FILE *f, const char *key, const double *x, size_t n)
 {
     fprintf(f, "\"%s\": [", key);
-    for (size_t i = 0; i < n; i++) fprintf(f, i ? ",%.9g" : "%.9g", x[i]);
+    for (size_t i = 0; i < n; i++) {
+        if (i) fputc(',', f);
+        if (isfinite(x[i])) fprintf(f, "%.9g", x[i]);
+        else fputs("null", f);
+    }
     fputs("]", f);
 }
 
@@ -127,6 +134,29 @@ static void reply_state(edit_api *a, edit_response *rs, const char *extra_key, i
     write_doubles(j.f, "uv", a->uv, 2 * (size_t)a->nuv);
     fputs("}\n", j.f);
     json_end(&j, rs);
+}
+
+/* Per-face distortion ||J||^2 + ||J^-1||^2 (4 at an isometry), for the
+ * page's shading. */
+static void reply_distortion(edit_api *a, edit_response *rs)
+{
+    double *E = malloc(sizeof(double) * (size_t)(a->nf ? a->nf : 1));
+    if (!E) {
+        reply_error(rs, 500, "out of memory");
+        return;
+    }
+    json_out j;
+    if (scaf_drag_face_energy(a->drag, E) != SCAF_OK) {
+        reply_failure(a, rs, "distortion");
+    } else if (!json_begin(&j)) {
+        reply_error(rs, 500, "out of memory");
+    } else {
+        fprintf(j.f, "{\"iteration\": %d, ", scaf_drag_iterations(a->drag));
+        write_doubles(j.f, "face_energy", E, (size_t)a->nf);
+        fputs("}\n", j.f);
+        json_end(&j, rs);
+    }
+    free(E);
 }
 
 static void reply_mesh(edit_api *a, edit_response *rs)
@@ -416,13 +446,26 @@ typedef struct route {
     int kind;
 } route;
 
-enum { R_PAGE, R_MESH, R_STATE, R_GRAB, R_DRAG, R_RELEASE, R_OPTIMIZE, R_COMPACT, R_UNDO, R_SAVE };
+enum {
+    R_PAGE,
+    R_MESH,
+    R_STATE,
+    R_DISTORTION,
+    R_GRAB,
+    R_DRAG,
+    R_RELEASE,
+    R_OPTIMIZE,
+    R_COMPACT,
+    R_UNDO,
+    R_SAVE
+};
 
 static const route routes[] = {
     {"/", "GET", R_PAGE},
     {"/index.html", "GET", R_PAGE},
     {"/api/mesh", "GET", R_MESH},
     {"/api/state", "GET", R_STATE},
+    {"/api/distortion", "GET", R_DISTORTION},
     {"/api/grab", "POST", R_GRAB},
     {"/api/drag", "POST", R_DRAG},
     {"/api/release", "POST", R_RELEASE},
@@ -474,6 +517,7 @@ void edit_api_handle(void *user, const edit_request *rq, edit_response *rs)
         return;
     case R_MESH: reply_mesh(a, rs); return;
     case R_STATE: reply_state(a, rs, NULL, 0); return;
+    case R_DISTORTION: reply_distortion(a, rs); return;
     case R_GRAB: grab(a, rq, rs); return;
     case R_DRAG: drag_to(a, rq, rs); return;
     case R_RELEASE: release(a, rq, rs); return;

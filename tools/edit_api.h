@@ -7,6 +7,7 @@
  *   GET  /?token=T      the page
  *   GET  /api/mesh      faces, chart of each face, 3D positions (once)
  *   GET  /api/state     the layout: uv, E, packing efficiency, iterations
+ *   GET  /api/distortion  per-face ||J||^2 + ||J^-1||^2 (4: isometric)
  *   POST /api/grab      {"chart": c} | {"vertex": i}: mouse down; saves
  *                       the layout for undo, drops every handle
  *   POST /api/drag      {"chart": c, "dx", "dy", "angle", "steps"} |

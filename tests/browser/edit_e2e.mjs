@@ -98,6 +98,15 @@ try {
   const dist = (p, q) => Math.hypot(p[0] - q[0], p[1] - q[1]);
   if (!(dist(ua2, ub) < 0.5 * dist(ua, ub))) fail(`chart 0 did not follow the drag: ${ua} -> ${ua2}, toward ${ub}`);
 
+  // distortion shading: the server's per-face energies, >= 4 (isometry)
+  await page.check("#distortion");
+  const energies = await page.evaluate(() => window.scafEditor.when(() => {
+    const d = window.scafEditor.distortion();
+    return d && d.iteration === window.scafEditor.state().iteration;
+  }).then(() => window.scafEditor.distortion().face_energy));
+  if (energies.length !== 192 || !energies.every(e => e >= 4 - 1e-9))
+    fail("distortion: " + energies.length + " faces, min " + Math.min(...energies));
+
   await page.click("#save");
   await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.saved || window.scafEditor.error));
   const saveError = await page.evaluate(() => window.scafEditor.error);

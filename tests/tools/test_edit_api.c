@@ -235,6 +235,10 @@ static void drag_undo_save(void **state)
     assert_int_equal(send(x, &m, &text), 200);
     assert_non_null(strstr(text, "\"ncharts\": 6"));
     free(text);
+    edit_request dist = good("GET", "/api/distortion", NULL);
+    assert_int_equal(send(x, &dist, &text), 200);
+    assert_non_null(strstr(text, "\"face_energy\": ["));
+    free(text);
 
     snapshot start = snap(x);
     double x0 = chart_x(x, 2);
