@@ -59,8 +59,9 @@ try {
   if (!/^http:\/\/127\.0\.0\.1:\d+\/\?token=[0-9a-f]{32}$/.test(url)) fail("unexpected URL line: " + url);
   browser = await chromium.launch({
     executablePath: browserPath,
-    // as root (CI containers) Chromium runs only without its sandbox
-    args: process.getuid && process.getuid() === 0 ? ["--no-sandbox"] : []
+    // as root (CI containers) Chromium runs only without its sandbox;
+    // containers often have a tiny /dev/shm
+    args: ["--disable-dev-shm-usage"].concat(process.getuid && process.getuid() === 0 ? ["--no-sandbox"] : [])
   });
   const page = await browser.newPage({ viewport: { width: 880, height: 620 } });
   const errors = [];

@@ -90,7 +90,8 @@ static int http(const server *s, const char *head, const char *body, size_t body
     char spaces[4096];
     memset(spaces, ' ', sizeof spaces);
     for (size_t sent = 0; sent < body_len;) {
-        size_t k = body ? body_len - sent : (body_len - sent < sizeof spaces ? body_len - sent : sizeof spaces);
+        size_t k = body ? body_len - sent
+                        : (body_len - sent < sizeof spaces ? body_len - sent : sizeof spaces);
         ssize_t w = write(c, body ? body + sent : spaces, k);
         if (w <= 0) break; /* the server may answer and close early */
         sent += (size_t)w;
@@ -156,18 +157,17 @@ static void serves_and_refuses(void **state)
     snprintf(before, sizeof before, "%s", strstr(resp, "\r\n\r\n"));
 
     /* refused: each a 4xx */
-    assert_int_equal(request(&s, "POST", "/api/drag", "nope", NULL,
-                             "{\"chart\": 0, \"dx\": 0.1}", resp, 1 << 20),
+    assert_int_equal(request(&s, "POST", "/api/drag", "nope", NULL, "{\"chart\": 0, \"dx\": 0.1}",
+                             resp, 1 << 20),
                      403);
     assert_int_equal(request(&s, "POST", "/api/drag", s.token, "Origin: http://evil.example\r\n",
                              "{\"chart\": 0, \"dx\": 0.1}", resp, 1 << 20),
                      403);
-    assert_int_equal(request(&s, "POST", "/api/drag", s.token, NULL, "{\"chart\": 0, \"dx\": }",
-                             resp, 1 << 20),
-                     400);
-    assert_int_equal(request(&s, "POST", "/api/drag", s.token, NULL, "{\"chart\": 6}", resp,
-                             1 << 20),
-                     400);
+    assert_int_equal(
+        request(&s, "POST", "/api/drag", s.token, NULL, "{\"chart\": 0, \"dx\": }", resp, 1 << 20),
+        400);
+    assert_int_equal(
+        request(&s, "POST", "/api/drag", s.token, NULL, "{\"chart\": 6}", resp, 1 << 20), 400);
     char head[512];
     snprintf(head, sizeof head,
              "POST /api/drag HTTP/1.1\r\nHost: evil.example:%d\r\nX-Scaf-Token: %s\r\n"
@@ -244,8 +244,7 @@ static void bad_command_lines(void **state)
     test_tmp_path("edit_cli_missing.obj", missing, sizeof missing);
     remove(missing);
     assert_int_equal(test_run("%s edit 2> /dev/null", SCAF_BINARY), 2);
-    assert_int_equal(test_run("%s edit %s --port 65536 2> /dev/null", SCAF_BINARY, atlas_path),
-                     2);
+    assert_int_equal(test_run("%s edit %s --port 65536 2> /dev/null", SCAF_BINARY, atlas_path), 2);
     assert_int_equal(test_run("%s edit %s --port x 2> /dev/null", SCAF_BINARY, atlas_path), 2);
     assert_int_equal(test_run("%s edit %s --start nope 2> /dev/null", SCAF_BINARY, atlas_path), 2);
     assert_int_equal(test_run("%s edit %s -o - 2> /dev/null", SCAF_BINARY, atlas_path), 2);

@@ -254,14 +254,39 @@ static void drag_undo_save(void **state)
     edit_request r = good("POST", "/api/release", "{}");
     assert_int_equal(send(x, &r, NULL), 200);
     assert_int_equal(scaf_drag_handle_count(x->d), 0);
+    /* a rotation (about the chart's centroid): a vertex of it moves */
+    double before_rot[2];
+    int v0 = 0;
+    {
+        snapshot s0 = snap(x);
+        int *ch = malloc(sizeof(int) * (size_t)s0.n);
+        assert_int_equal(scaf_drag_uv_charts(x->d, ch), SCAF_OK);
+        while (ch[v0] != 3) v0++;
+        before_rot[0] = s0.uv[2 * v0];
+        before_rot[1] = s0.uv[2 * v0 + 1];
+        free(ch);
+        free(s0.uv);
+    }
+    edit_request g3 = good("POST", "/api/grab", "{\"chart\": 3}");
+    assert_int_equal(send(x, &g3, NULL), 200);
+    edit_request rot = good("POST", "/api/drag", "{\"chart\": 3, \"angle\": 0.5, \"steps\": 4}");
+    assert_int_equal(send(x, &rot, NULL), 200);
+    {
+        snapshot s1 = snap(x);
+        double dxy = hypot(s1.uv[2 * v0] - before_rot[0], s1.uv[2 * v0 + 1] - before_rot[1]);
+        assert_true(dxy > 0.01);
+        free(s1.uv);
+    }
+    assert_int_equal(send(x, &r, NULL), 200);
     /* a vertex drag */
     edit_request gv = good("POST", "/api/grab", "{\"vertex\": 0}");
     assert_int_equal(send(x, &gv, NULL), 200);
     edit_request dv = good("POST", "/api/drag", "{\"vertex\": 0, \"x\": 0, \"y\": 0}");
     assert_int_equal(send(x, &dv, NULL), 200);
     assert_int_equal(send(x, &r, NULL), 200);
-    /* two undos: back to the start, bit for bit */
+    /* three undos: back to the start, bit for bit */
     edit_request u = good("POST", "/api/undo", "{}");
+    assert_int_equal(send(x, &u, NULL), 200);
     assert_int_equal(send(x, &u, NULL), 200);
     assert_int_equal(send(x, &u, NULL), 200);
     snapshot back = snap(x);
