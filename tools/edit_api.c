@@ -40,14 +40,6 @@ typedef struct json_out {
     size_t len;
 } json_out;
 
-static int json_begin(json_out *j)
-{
-    j->buf = NULL;
-    j->len = 0;
-    j->f = open_memstream(&j->buf, &j->len);
-    return j->f != NULL;
-}
-
 static void reply(edit_response *rs, int status, const char *type, char *body, size_t len)
 {
     rs->status = status;
@@ -60,6 +52,14 @@ static void reply(edit_response *rs, int status, const char *type, char *body, s
 static void reply_error(edit_response *rs, int status, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
+static int json_open(json_out *j)
+{
+    j->buf = NULL;
+    j->len = 0;
+    j->f = open_memstream(&j->buf, &j->len);
+    return j->f != NULL;
+}
+
 static void reply_error(edit_response *rs, int status, const char *fmt, ...)
 {
     char msg[512];
@@ -68,7 +68,7 @@ static void reply_error(edit_response *rs, int status, const char *fmt, ...)
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
     json_out j;
-    if (!json_begin(&j)) {
+    if (!json_open(&j)) {
         reply(rs, 500, "text/plain", NULL, 0);
         return;
     }
@@ -77,6 +77,21 @@ static void reply_error(edit_response *rs, int status, const char *fmt, ...)
     fputs("}\n", j.f);
     fclose(j.f);
     reply(rs, status, JSON_TYPE, j.buf, j.len);
+}
+
+/* 1, or 0 after answering 500 (no memory for the stream). */
+static int json_begin(json_out *j, edit_response *rs)
+{
+    if (json_open(j)) return 1;
+    reply_error(rs, 500, "out of memory");
+    return 0;
+}
+
+/* , "key": x */
+static void json_key_number(FILE *f, const char *key, double x)
+{
+    fprintf(f, ", \"%s\": ", key);
+    json_write_number(f, x);
 }
 
 static void json_end(json_out *j, edit_response *rs)
@@ -117,19 +132,15 @@ static void reply_state(edit_api *a, edit_response *rs, const char *extra_key, i
         return;
     }
     json_out j;
-    if (!json_begin(&j)) {
-        reply_error(rs, 500, "out of memory");
-        return;
-    }
+    if (!json_begin(&j, rs)) return;
     fputc('{', j.f);
     if (extra_key) fprintf(j.f, "\"%s\": %d, ", extra_key, extra);
-    fprintf(j.f, "\"iteration\": %d, \"energy\": ", scaf_drag_iterations(a->drag));
-    json_write_number(j.f, scaf_drag_energy(a->drag));
-    fputs(", \"efficiency\": ", j.f);
-    json_write_number(j.f, scaf_drag_packing_efficiency(a->drag));
-    fprintf(j.f, ", \"handles\": %d, \"undo\": %d, \"max_handle_error\": ",
-            scaf_drag_handle_count(a->drag), scaf_drag_undo_count(a->drag));
-    json_write_number(j.f, scaf_drag_max_handle_error(a->drag));
+    fprintf(j.f, "\"iteration\": %d", scaf_drag_iterations(a->drag));
+    json_key_number(j.f, "energy", scaf_drag_energy(a->drag));
+    json_key_number(j.f, "efficiency", scaf_drag_packing_efficiency(a->drag));
+    fprintf(j.f, ", \"handles\": %d, \"undo\": %d", scaf_drag_handle_count(a->drag),
+            scaf_drag_undo_count(a->drag));
+    json_key_number(j.f, "max_handle_error", scaf_drag_max_handle_error(a->drag));
     fputs(", ", j.f);
     write_doubles(j.f, "uv", a->uv, 2 * (size_t)a->nuv);
     fputs("}\n", j.f);
@@ -148,9 +159,7 @@ static void reply_distortion(edit_api *a, edit_response *rs)
     json_out j;
     if (scaf_drag_face_energy(a->drag, E) != SCAF_OK) {
         reply_failure(a, rs, "distortion");
-    } else if (!json_begin(&j)) {
-        reply_error(rs, 500, "out of memory");
-    } else {
+    } else if (json_begin(&j, rs)) {
         fprintf(j.f, "{\"iteration\": %d, ", scaf_drag_iterations(a->drag));
         write_doubles(j.f, "face_energy", E, (size_t)a->nf);
         fputs("}\n", j.f);
@@ -162,18 +171,14 @@ static void reply_distortion(edit_api *a, edit_response *rs)
 static void reply_mesh(edit_api *a, edit_response *rs)
 {
     json_out j;
-    if (!json_begin(&j)) {
-        reply_error(rs, 500, "out of memory");
-        return;
-    }
+    if (!json_begin(&j, rs)) return;
     fputs("{\"name\": ", j.f);
     json_write_string(j.f, a->name);
     fputs(", \"output\": ", j.f);
     json_write_string(j.f, a->out);
-    fprintf(j.f, ", \"ncharts\": %d, \"nuv\": %d, \"padding\": ", a->ncharts, a->nuv);
-    json_write_number(j.f, a->padding);
-    fputs(", \"diagonal\": ", j.f);
-    json_write_number(j.f, a->diagonal);
+    fprintf(j.f, ", \"ncharts\": %d, \"nuv\": %d", a->ncharts, a->nuv);
+    json_key_number(j.f, "padding", a->padding);
+    json_key_number(j.f, "diagonal", a->diagonal);
     fputs(", ", j.f);
     write_ints(j.f, "faces", a->FT, 3 * (size_t)a->nf);
     fputs(", ", j.f);
@@ -422,18 +427,13 @@ static void save(edit_api *a, const edit_request *rq, edit_response *rs)
     }
     a->saves++;
     json_out j;
-    if (!json_begin(&j)) {
-        reply_error(rs, 500, "out of memory");
-        return;
-    }
+    if (!json_begin(&j, rs)) return;
     fputs("{\"path\": ", j.f);
     json_write_string(j.f, a->out);
-    fputs(", \"bijective\": true, \"padding\": ", j.f);
-    json_write_number(j.f, a->padding);
-    fputs(", \"gap\": ", j.f);
-    json_write_number(j.f, gap);
-    fputs(", \"efficiency\": ", j.f);
-    json_write_number(j.f, eff);
+    fputs(", \"bijective\": true", j.f);
+    json_key_number(j.f, "padding", a->padding);
+    json_key_number(j.f, "gap", gap);
+    json_key_number(j.f, "efficiency", eff);
     fprintf(j.f, ", \"saves\": %d}\n", a->saves);
     json_end(&j, rs);
 }
