@@ -59,13 +59,17 @@ static void usage(FILE *o)
             "  --quiet             no messages but errors\n"
             "  -h, --help          this text\n"
             "\n"
+            "Output: OUT ends in .obj, or .obj.gz (gzip-compressed); it is checked before\n"
+            "the start (a directory, FIFO or device, a missing or read-only folder, or the\n"
+            "input itself are refused) and every save replaces it atomically: a save that\n"
+            "fails or is interrupted leaves the previous file as it was.\n"
             "Stopping: Ctrl-C (SIGINT) or SIGTERM stops the server cleanly (an iteration\n"
-            "run is finished first) with exit status 0; files saved stay, a save under way\n"
-            "is either complete or not there.\n"
+            "run is finished first) with exit status 0; files saved stay. Before the\n"
+            "server runs: 2 for a bad command line or a port that cannot be listened on,\n"
+            "3, 4, 5, 7 and 8 as below (a save that fails later is reported on the page).\n"
             "Security: the server listens on 127.0.0.1 only; every request needs the\n"
             "token, a Host of 127.0.0.1 or localhost at this port, and no foreign Origin.\n"
-            "Bad requests get a 4xx answer and change nothing.\n");
-    fputs(CLI_OUTPUTS_HELP "\n", o);
+            "Bad requests get a 4xx answer and change nothing.\n\n");
     exit_codes_print(o);
 }
 
