@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Bounded fuzz smoke run of every fuzz/fuzz_* target (libFuzzer, clang):
-# mesh readers, topology, CDT, the optimizer on tiny binary meshes, and
+# mesh readers, topology, CDT, the optimizer on tiny binary meshes, the
+# `scaf deform --targets` JSON reader, and
 # the `scaf` commands' option values on meshes with extreme coordinates.
 # By default the run is deterministic (what CI needs: the same inputs every
 # run, so a red run is never the luck of the draw): libFuzzer with a fixed
@@ -31,6 +32,7 @@ runs_of() {
     fuzz_cdt) echo 8000 ;;
     fuzz_mesh_parse) echo 1000000 ;;
     fuzz_topology) echo 700000 ;;
+    fuzz_deform_targets) echo 1000000 ;;
     *) echo 10000 ;;
   esac
 }
@@ -62,6 +64,9 @@ for t in "${targets[@]}"; do
   seeds=fuzz/corpus
   [ -d "fuzz/corpus_${name#fuzz_}" ] && seeds="fuzz/corpus_${name#fuzz_}"
   cp "$seeds"/* "$work"/ 2>/dev/null || true
+  # a target's own dictionary (fuzz/NAME.dict) or the mesh keywords
+  dict=fuzz/mesh.dict
+  [ -f "fuzz/${name#fuzz_}.dict" ] && dict="fuzz/${name#fuzz_}.dict"
   time_s=$per
   extra=()
   if [ "$name" = fuzz_cli ]; then
@@ -81,7 +86,7 @@ for t in "${targets[@]}"; do
   fi
   if ! ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
       "$t" ${extra[@]+"${extra[@]}"} "${budget[@]}" -max_len=4096 -rss_limit_mb=2048 -timeout=10 \
-      -artifact_prefix="$art/$name-" -print_final_stats=1 -dict=fuzz/mesh.dict "$work" fuzz/regressions \
+      -artifact_prefix="$art/$name-" -print_final_stats=1 -dict="$dict" "$work" fuzz/regressions \
       2>build-fuzz/"$name".log; then
     echo "fuzz_smoke: $name FAILED; log: build-fuzz/$name.log, inputs in $art/" >&2
     tail -n 40 build-fuzz/"$name".log >&2

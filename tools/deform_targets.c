@@ -68,6 +68,11 @@ static scaf_status number(reader *r, double *v, const char *what)
     if (errno == ERANGE || !isfinite(*v))
         return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s: number out of range", r->path, r->line,
                        what);
+    /* strtod also reads C's hexadecimal floats (0x1p3): not JSON */
+    for (const char *q = r->s; q < end; q++)
+        if (!isdigit((unsigned char)*q) && !strchr(".eE+-", *q))
+            return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s: not a JSON number", r->path, r->line,
+                           what);
     r->s = end;
     return SCAF_OK;
 }
@@ -215,13 +220,19 @@ scaf_status deform_targets_read(const char *path, deform_targets *t, scaf_error 
         return err_set(err, SCAF_ERR_IO, "cannot read '%s'", path);
     }
     buf[n] = '\0';
-    if (strlen(buf) != n) {
-        free(buf);
-        return err_set(err, SCAF_ERR_PARSE, "%s: contains a NUL byte (not a JSON text)", path);
-    }
-    reader r = {buf, path, 1, 0, NULL, -1, t, err};
-    scaf_status st = document(&r);
+    scaf_status st = deform_targets_parse(buf, n, path, t, err);
     free(buf);
+    return st;
+}
+
+scaf_status deform_targets_parse(const char *text, size_t size, const char *name, deform_targets *t,
+                                 scaf_error *err)
+{
+    memset(t, 0, sizeof *t);
+    if (memchr(text, '\0', size) || text[size] != '\0')
+        return err_set(err, SCAF_ERR_PARSE, "%s: contains a NUL byte (not a JSON text)", name);
+    reader r = {text, name, 1, 0, NULL, -1, t, err};
+    scaf_status st = document(&r);
     if (st == SCAF_OK && r.path_len > 0) { /* handle-major -> frame-major */
         t->frames = malloc(sizeof(double) * 2 * (size_t)r.path_len * (size_t)t->n);
         if (!t->frames) st = err_nomem(err, "handle paths");

@@ -17,6 +17,8 @@
 #ifndef SCAF_TOOLS_DEFORM_TARGETS_H
 #define SCAF_TOOLS_DEFORM_TARGETS_H
 
+#include <stddef.h>
+
 #include "base/error.h"
 
 typedef struct deform_targets {
@@ -32,6 +34,11 @@ typedef struct deform_targets {
 /* Read path into *t (free with deform_targets_free); SCAF_ERR_IO when it
  * cannot be read, SCAF_ERR_PARSE on bad content, SCAF_ERR_NOMEM. */
 scaf_status deform_targets_read(const char *path, deform_targets *t, scaf_error *err);
+
+/* The same on text[0..size) (text[size] must be the NUL that ends it; a
+ * NUL before it is a parse error), name for the messages. */
+scaf_status deform_targets_parse(const char *text, size_t size, const char *name, deform_targets *t,
+                                 scaf_error *err);
 
 /* Write n handles (vertex i -> T[2i..2i+1] for i < n), each with the
  * path of nframes waypoints (frames as in deform_targets; NULL when 0). */

@@ -108,6 +108,11 @@ typedef struct scaf_drag scaf_drag_t;
  * and scaf_drag_error says which one was wrong. */
 SCAF_API scaf_drag_t *scaf_drag_new(const scaf_drag_options_t *options);
 
+/* Replace the options: SCAF_ERR_USAGE naming the first invalid value
+ * (the options are then unchanged). They take effect at the next
+ * scaf_drag_set_mesh. */
+SCAF_API scaf_status scaf_drag_set_options(scaf_drag_t *d, const scaf_drag_options_t *options);
+
 /* Set the mesh and compute the starting layout (options.start).
  * Arguments as scaf_atlas_set_mesh:
  *   V   #V by 3 vertex positions (nv rows), finite

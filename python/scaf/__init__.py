@@ -12,7 +12,9 @@ it, inputs and outputs are nested lists (one list per row).
     p = scaf.param(V, F, iterations=20, progress=lambda i: print(i.energy))
 
 One-call functions: param, atlas. Handles mirroring the C contexts
-(context managers that free the C object on exit): Param, Atlas.
+(context managers that free the C object on exit): Param, Atlas, and
+Drag (interactive: handles pulled by SCAF iterations, undo, certified
+output).
 Exceptions: Error and its subclasses UsageError (also a ValueError),
 InputError, MeshError, NumericError, OutOfMemory, Cancelled,
 InternalError. The library is found through SCAF_LIBRARY, the install
@@ -25,6 +27,7 @@ from ._errors import (Cancelled, Error, InputError, InternalError, MeshError, Nu
 from ._core import (Atlas, AtlasIterationInfo, AtlasResult, IterationInfo, Param, ParamResult,
                     __version__, atlas, default_atlas_options, default_options, library_path,
                     param, set_threads)
+from ._drag import Drag, DragChartInfo, DragOutput, default_drag_options
 from . import _lib
 from .obj import read_obj
 
@@ -35,7 +38,8 @@ __all__ = [
     "param", "atlas", "Param", "Atlas", "ParamResult", "AtlasResult", "IterationInfo",
     "AtlasIterationInfo", "default_options", "default_atlas_options", "read_obj", "Error",
     "UsageError", "InputError", "MeshError", "NumericError", "OutOfMemory", "Cancelled",
-    "InternalError", "library_path", "__version__", "ENERGIES", "INITS", "set_threads",
+    "InternalError", "library_path", "__version__", "ENERGIES", "INITS", "set_threads", "Drag",
+    "DragChartInfo", "DragOutput", "default_drag_options",
 ]
 
 # Show the public names as scaf.X (in tracebacks and reprs), not scaf._core.X.

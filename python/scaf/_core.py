@@ -86,6 +86,8 @@ def _fill(struct, options):
             value = _enum_value(value, _lib.INITS, "init")
         elif key == "solver":
             value = _enum_value(value, _lib.SOLVERS, "solver")
+        elif key == "start":
+            value = _enum_value(value, _lib.DRAG_STARTS, "start")
         elif key in _BOOL_FIELDS:
             value = 1 if value else 0
         ctype = dict(struct._fields_)[key]
@@ -113,6 +115,8 @@ def _as_dict(struct):
             v = _enum_name(v, _lib.INITS)
         elif key == "solver":
             v = _enum_name(v, _lib.SOLVERS)
+        elif key == "start":
+            v = _enum_name(v, _lib.DRAG_STARTS)
         elif key in _BOOL_FIELDS:
             v = bool(v)
         out[key] = v

@@ -1,7 +1,7 @@
 """scaf._lib: finds libscaf.so and declares the C API to ctypes.
 
 Nothing here computes anything: it loads the shared library, mirrors the
-structs of include/scaf/scaf.h and include/scaf/atlas.h field by field
+structs of include/scaf/scaf.h, atlas.h and drag.h field by field
 (same order, same C types; a test compares every ctypes.sizeof and field
 offset with the C compiler's), and declares argtypes/restype of every
 function the package calls.
@@ -45,6 +45,7 @@ SOLVERS = {"auto": 0, "slim": 1, "newton": 2}
 PHASES = ("assembly", "analysis", "factorization", "solve", "line_search", "scaffold", "other")
 PHASE_COUNT = len(PHASES)  # SCAF_PHASE_COUNT
 ATLAS_PHASES = ("settle", "compact")  # SCAF_ATLAS_SETTLE, SCAF_ATLAS_COMPACT
+DRAG_STARTS = {"layout": 0, "input": 1, "atlas": 2}  # scaf_drag_start
 
 c_enum = ctypes.c_int
 
@@ -122,12 +123,41 @@ class AtlasIterationInfo(ctypes.Structure):
     ]
 
 
+class DragOptions(ctypes.Structure):
+    """scaf_drag_options_t"""
+
+    _fields_ = [
+        ("start", c_enum),
+        ("padding", ctypes.c_double),
+        ("weight_ratio", ctypes.c_double),
+        ("solver", c_enum),
+        ("box_scale", ctypes.c_double),
+        ("lambda_ratio", ctypes.c_double),
+        ("undo_depth", ctypes.c_int),
+    ]
+
+
+class DragChartInfo(ctypes.Structure):
+    """scaf_drag_chart_info_t"""
+
+    _fields_ = [
+        ("faces", ctypes.c_int),
+        ("uvs", ctypes.c_int),
+        ("centroid", ctypes.c_double * 2),
+        ("uv_area", ctypes.c_double),
+        ("energy", ctypes.c_double),
+        ("held", ctypes.c_int),
+    ]
+
+
 # The C names of the mirrored structs, for the layout test.
 STRUCTS = {
     "scaf_options_t": Options,
     "scaf_iteration_info_t": IterationInfo,
     "scaf_atlas_options_t": AtlasOptions,
     "scaf_atlas_iteration_info_t": AtlasIterationInfo,
+    "scaf_drag_options_t": DragOptions,
+    "scaf_drag_chart_info_t": DragChartInfo,
 }
 
 PARAM_PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.POINTER(IterationInfo), ctypes.c_void_p)
@@ -174,6 +204,36 @@ SIGNATURES = {
     "scaf_atlas_chart_distortion": (c_enum, [_P, _D]),
     "scaf_atlas_error": (ctypes.c_char_p, [_P]),
     "scaf_atlas_destroy": (None, [_P]),
+    "scaf_drag_options_default": (DragOptions, []),
+    "scaf_drag_new": (_P, [ctypes.POINTER(DragOptions)]),
+    "scaf_drag_set_options": (c_enum, [_P, ctypes.POINTER(DragOptions)]),
+    "scaf_drag_set_mesh": (c_enum, [_P, _D, _int, _I, _int, _D, _int, _I]),
+    "scaf_drag_chart_count": (_int, [_P]),
+    "scaf_drag_uv_count": (_int, [_P]),
+    "scaf_drag_face_count": (_int, [_P]),
+    "scaf_drag_get_uv": (c_enum, [_P, _D, _I, _I]),
+    "scaf_drag_uv_charts": (c_enum, [_P, _I]),
+    "scaf_drag_move_vertex": (c_enum, [_P, _int, ctypes.c_double, ctypes.c_double]),
+    "scaf_drag_move_chart": (c_enum, [_P, _int, ctypes.c_double, ctypes.c_double, ctypes.c_double]),
+    "scaf_drag_clear_vertex": (c_enum, [_P, _int]),
+    "scaf_drag_clear_chart": (c_enum, [_P, _int]),
+    "scaf_drag_clear_handles": (c_enum, [_P]),
+    "scaf_drag_handle_count": (_int, [_P]),
+    "scaf_drag_max_handle_error": (ctypes.c_double, [_P]),
+    "scaf_drag_step": (c_enum, [_P, _int, PARAM_PROGRESS, ctypes.c_void_p]),
+    "scaf_drag_compact": (c_enum, [_P, _int, PARAM_PROGRESS, ctypes.c_void_p]),
+    "scaf_drag_iterations": (_int, [_P]),
+    "scaf_drag_cancel": (c_enum, [_P]),
+    "scaf_drag_checkpoint": (c_enum, [_P]),
+    "scaf_drag_undo": (c_enum, [_P]),
+    "scaf_drag_undo_count": (_int, [_P]),
+    "scaf_drag_energy": (ctypes.c_double, [_P]),
+    "scaf_drag_packing_efficiency": (ctypes.c_double, [_P]),
+    "scaf_drag_face_energy": (c_enum, [_P, _D]),
+    "scaf_drag_chart_info": (c_enum, [_P, _int, ctypes.POINTER(DragChartInfo)]),
+    "scaf_drag_get_output": (c_enum, [_P, _D, _I, _I, _D, _D]),
+    "scaf_drag_error": (ctypes.c_char_p, [_P]),
+    "scaf_drag_destroy": (None, [_P]),
 }
 
 

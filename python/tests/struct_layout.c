@@ -1,7 +1,8 @@
 /* python/tests/struct_layout: prints the C layout of the public structs.
  *
  * The Python package mirrors scaf_options_t, scaf_iteration_info_t,
- * scaf_atlas_options_t and scaf_atlas_iteration_info_t as ctypes
+ * scaf_atlas_options_t, scaf_atlas_iteration_info_t, scaf_drag_options_t
+ * and scaf_drag_chart_info_t as ctypes
  * structures. This test-only program prints, for each, one line
  * "STRUCT sizeof N" and one line "STRUCT FIELD OFFSET SIZE" per field, as
  * the C compiler lays them out; python/tests/test_scaf.py compares them
@@ -72,6 +73,23 @@ int main(void)
     FIELD(scaf_atlas_iteration_info_t, seconds);
     FIELD(scaf_atlas_iteration_info_t, loop);
 
+    SIZE(scaf_drag_options_t);
+    FIELD(scaf_drag_options_t, start);
+    FIELD(scaf_drag_options_t, padding);
+    FIELD(scaf_drag_options_t, weight_ratio);
+    FIELD(scaf_drag_options_t, solver);
+    FIELD(scaf_drag_options_t, box_scale);
+    FIELD(scaf_drag_options_t, lambda_ratio);
+    FIELD(scaf_drag_options_t, undo_depth);
+
+    SIZE(scaf_drag_chart_info_t);
+    FIELD(scaf_drag_chart_info_t, faces);
+    FIELD(scaf_drag_chart_info_t, uvs);
+    FIELD(scaf_drag_chart_info_t, centroid);
+    FIELD(scaf_drag_chart_info_t, uv_area);
+    FIELD(scaf_drag_chart_info_t, energy);
+    FIELD(scaf_drag_chart_info_t, held);
+
     /* enum values the binding names (it passes other ints through) */
     printf("enum SCAF_PHASE_COUNT %d\n", (int)SCAF_PHASE_COUNT);
     printf("enum SCAF_ERR_INTERNAL %d\n", (int)SCAF_ERR_INTERNAL);
@@ -80,6 +98,7 @@ int main(void)
     printf("enum SCAF_INIT_HARMONIC %d\n", (int)SCAF_INIT_HARMONIC);
     printf("enum SCAF_INIT_MVC %d\n", (int)SCAF_INIT_MVC);
     printf("enum SCAF_ATLAS_COMPACT %d\n", (int)SCAF_ATLAS_COMPACT);
+    printf("enum SCAF_DRAG_START_ATLAS %d\n", (int)SCAF_DRAG_START_ATLAS);
     printf("enum sizeof %zu\n", sizeof(scaf_init));
     return 0;
 }

@@ -693,6 +693,118 @@ class AtlasTest(unittest.TestCase):
 
 
 @unittest.skipIf(np is None, "numpy absent: the whole suite already runs without it")
+class DragTest(unittest.TestCase):
+    """scaf.Drag on two hemispheres side by side (two charts, no UVs)."""
+
+    @classmethod
+    def setUpClass(cls):
+        V, F, _, _ = scaf.read_obj(gen("hemisphere", 4))
+        cls.V = rows(V) + [[x + 5.0, y, z] for x, y, z in rows(V)]
+        cls.F = rows(F) + [[a + len(V), b + len(V), c + len(V)] for a, b, c in rows(F)]
+
+    def valid(self, d):
+        """Positive areas in layout units; the certified output recomputed:
+        in [0,1]^2, positive areas, every chart gap >= the padding."""
+        uv, ft, chart = d.get_uv()
+        self.assertGreater(min(signed_areas(uv, ft)), 0.0)
+        out = d.output()
+        self.assertTrue(all(0.0 <= x <= 1.0 for p in rows(out.uv) for x in p))
+        self.assertGreater(min(signed_areas(out.uv, out.ft)), 0.0)
+        pad = d.options["padding"]
+        self.assertGreaterEqual(min_chart_gap(out.uv, out.ft, rows(out.chart)), pad * (1 - 1e-9))
+        self.assertAlmostEqual(sum(signed_areas(out.uv, out.ft)), out.efficiency, delta=1e-9)
+
+    def test_drag_chart_onto_the_other(self):
+        with scaf.Drag() as d:
+            d.set_mesh(self.V, self.F)
+            self.assertEqual((d.chart_count, d.face_count), (2, len(self.F)))
+            if np is not None:
+                self.assertIsInstance(d.uv, np.ndarray)
+                self.assertEqual(d.uv.shape, (d.uv_count, 2))
+            c0, c1 = d.chart_info(0).centroid, d.chart_info(1).centroid
+            d.move_chart(0, c1[0] - c0[0], c1[1] - c0[1])
+            self.assertTrue(d.chart_info(0).held)
+            err0 = d.max_handle_error
+            seen = []
+            for _ in range(6):
+                d.step(1, progress=seen.append)
+                self.valid(d)
+            self.assertEqual([i.iteration for i in seen], list(range(1, 7)))
+            self.assertLess(d.max_handle_error, 0.8 * err0)
+            n0 = d.chart_info(0).centroid
+            self.assertLess(math.dist(n0, c1), 0.8 * math.dist(c0, c1))
+            self.assertGreater(math.dist(d.chart_info(1).centroid, c1), 0.0)  # pushed
+
+    def test_vertex_rotation_cancel_undo(self):
+        with scaf.Drag() as d:
+            d.set_mesh(self.V, self.F)
+            before = rows(d.uv)
+            d.checkpoint()
+            x, y = before[0]
+            d.move_vertices([0], [[x + 0.05, y]])
+            d.move_chart(1, angle=0.3)
+            self.assertEqual(d.handle_count, 2)
+            d.step(2)
+            mid = rows(d.uv)
+            self.assertNotEqual(mid, before)
+            d.step(2)
+            self.assertEqual(d.iterations, 4)
+            d.cancel()
+            self.assertEqual(rows(d.uv), mid)  # bit for bit
+            d.undo()
+            self.assertEqual(rows(d.uv), before)
+            self.assertEqual((d.iterations, d.undo_count), (0, 0))
+            with self.assertRaises(scaf.UsageError):
+                d.undo()
+            d.clear_handles()
+            self.assertEqual(d.handle_count, 0)
+            d.compact(3)
+            self.valid(d)
+            # energy = area-weighted mean of the face energies
+            fe = rows(d.face_energy())
+            uv, ft, _ = d.get_uv()
+            areas = []
+            for f in range(len(self.F)):
+                p0, p1, p2 = (self.V[i] for i in self.F[f])
+                e1 = [p1[k] - p0[k] for k in range(3)]
+                e2 = [p2[k] - p0[k] for k in range(3)]
+                cx = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]]
+                areas.append(0.5 * math.sqrt(sum(c * c for c in cx)))
+            mean = sum(a * e for a, e in zip(areas, fe)) / sum(areas)
+            self.assertAlmostEqual(mean, d.energy, delta=1e-9 * d.energy)
+
+    def test_errors(self):
+        d = scaf.Drag(start="input")
+        self.assertEqual(d.options["start"], "input")
+        with self.assertRaises(scaf.UsageError) as cm:
+            d.set_mesh(self.V, self.F)  # no UVs to start from
+        self.assertIn("START_INPUT", str(cm.exception))
+        with self.assertRaises(scaf.UsageError):
+            d.step(1)
+        d.set_options(start="layout")
+        d.set_mesh(self.V, self.F)
+        with self.assertRaises(scaf.UsageError) as cm:
+            d.move_chart(2, 1.0)
+        self.assertIn("chart 2 does not exist", str(cm.exception))
+        with self.assertRaises(scaf.UsageError):
+            d.move_vertex(d.uv_count, 0.0, 0.0)
+        with self.assertRaises(scaf.UsageError) as cm:
+            d.move_vertex(0, math.nan, 0.0)
+        self.assertIn("not finite", str(cm.exception))
+        with self.assertRaises(ValueError):
+            d.move_vertex("a", 0.0, 0.0)
+        with self.assertRaises(scaf.UsageError):
+            d.step(0)
+        with self.assertRaises(scaf.UsageError):
+            d.set_options(undo_depth=0)
+        with self.assertRaises(ValueError):
+            d.set_options(start="nowhere")
+        self.assertEqual(d.handle_count, 0)
+        d.close()
+        with self.assertRaises(scaf.UsageError):
+            d.uv
+
+
 class WithoutNumpyTest(unittest.TestCase):
     """The package with numpy hidden: lists in, lists out."""
 

@@ -38,13 +38,13 @@ struct scaf_drag {
     scaf_drag_options_t opt;
     scaf_error err;
     int has_mesh;
-    atlas at;                 /* layout, loop, padding hooks */
-    opt_handle_term term;     /* in at.loop once has_mesh */
+    atlas at;             /* layout, loop, padding hooks */
+    opt_handle_term term; /* in at.loop once has_mesh */
     drag_handles handles;
-    int handles_dirty;        /* the term does not reflect the handle set */
-    drag_state before;        /* the layout before the last step */
+    int handles_dirty; /* the term does not reflect the handle set */
+    drag_state before; /* the layout before the last step */
     int has_before;
-    drag_state *stack;        /* checkpoints, oldest first */
+    drag_state *stack; /* checkpoints, oldest first */
     int nstack;
     /* the verified output of the current layout (out_state: 0 not
      * computed, 1 verified, -1 failed with out_err) */
@@ -86,8 +86,8 @@ static scaf_status options_check(const scaf_drag_options_t *o, scaf_error *err)
 {
     if (o->start != SCAF_DRAG_START_LAYOUT && o->start != SCAF_DRAG_START_INPUT &&
         o->start != SCAF_DRAG_START_ATLAS)
-        return err_set(err, SCAF_ERR_USAGE, "invalid drag option: start %d is not a scaf_drag_start",
-                       (int)o->start);
+        return err_set(err, SCAF_ERR_USAGE,
+                       "invalid drag option: start %d is not a scaf_drag_start", (int)o->start);
     if (!(o->weight_ratio >= 0.0) || !isfinite(o->weight_ratio))
         return err_set(err, SCAF_ERR_USAGE,
                        "invalid drag option: weight_ratio %g must be a finite number >= 0",
@@ -97,8 +97,8 @@ static scaf_status options_check(const scaf_drag_options_t *o, scaf_error *err)
         return err_set(err, SCAF_ERR_USAGE, "invalid drag option: solver %d is not a scaf_solver",
                        (int)o->solver);
     if (o->undo_depth < 1 || o->undo_depth > 4096)
-        return err_set(err, SCAF_ERR_USAGE, "invalid drag option: undo_depth %d must be in [1, 4096]",
-                       o->undo_depth);
+        return err_set(err, SCAF_ERR_USAGE,
+                       "invalid drag option: undo_depth %d must be in [1, 4096]", o->undo_depth);
     atlas_options in = to_atlas(o);
     char msg[256];
     if (atlas_options_check(&in, msg, sizeof msg) != SCAF_OK)
@@ -114,6 +114,16 @@ scaf_drag_t *scaf_drag_new(const scaf_drag_options_t *options)
     d->opt = scaf_drag_options_default();
     if (options && options_check(options, &d->err) == SCAF_OK) d->opt = *options;
     return d;
+}
+
+scaf_status scaf_drag_set_options(scaf_drag_t *d, const scaf_drag_options_t *options)
+{
+    if (!d) return SCAF_ERR_USAGE;
+    err_clear(&d->err);
+    if (!options) return err_set(&d->err, SCAF_ERR_USAGE, "options is NULL");
+    scaf_status st = options_check(options, &d->err);
+    if (st == SCAF_OK) d->opt = *options;
+    return st;
 }
 
 /* ---- mesh ---------------------------------------------------------------------- */
@@ -195,8 +205,8 @@ scaf_status scaf_drag_set_mesh(scaf_drag_t *d, const double *V, int nv, const in
     }
     size_t n2 = 2 * (size_t)d->at.nw;
     opt_handle_term_init(&d->term, 2, d->at.nw);
-    if (st == SCAF_OK) st = drag_handles_init(&d->handles, d->at.nw, d->at.wchart, d->at.ncharts,
-                                              &d->err);
+    if (st == SCAF_OK)
+        st = drag_handles_init(&d->handles, d->at.nw, d->at.wchart, d->at.ncharts, &d->err);
     if (st == SCAF_OK) {
         opt_obj_term t = opt_handle_term_make(&d->term);
         st = scaf_loop_add_term(&d->at.loop, &t, &d->err);
@@ -226,8 +236,7 @@ scaf_status scaf_drag_get_uv(const scaf_drag_t *d, double *UV, int *FT, int *cha
     err_clear(&m->err);
     scaf_status st = need_mesh(m);
     if (st != SCAF_OK) return st;
-    if (!UV)
-        return err_set(&m->err, SCAF_ERR_USAGE, "UV is NULL (give %d by 2 doubles)", d->at.nw);
+    if (!UV) return err_set(&m->err, SCAF_ERR_USAGE, "UV is NULL (give %d by 2 doubles)", d->at.nw);
     memcpy(UV, d->at.loop.uv, sizeof(double) * 2 * (size_t)d->at.nw);
     if (FT) memcpy(FT, d->at.Fw, sizeof(int) * 3 * (size_t)d->at.nf);
     if (chart) memcpy(chart, d->at.chart, sizeof(int) * (size_t)d->at.nf);
@@ -241,8 +250,7 @@ scaf_status scaf_drag_uv_charts(const scaf_drag_t *d, int *chart)
     err_clear(&m->err);
     scaf_status st = need_mesh(m);
     if (st != SCAF_OK) return st;
-    if (!chart)
-        return err_set(&m->err, SCAF_ERR_USAGE, "chart is NULL (give %d ints)", d->at.nw);
+    if (!chart) return err_set(&m->err, SCAF_ERR_USAGE, "chart is NULL (give %d ints)", d->at.nw);
     memcpy(chart, d->at.wchart, sizeof(int) * (size_t)d->at.nw);
     return SCAF_OK;
 }
@@ -292,8 +300,8 @@ scaf_status scaf_drag_move_chart(scaf_drag_t *d, int chart, double dx, double dy
     double cen[2] = {0.0, 0.0};
     if (chart >= 0 && chart < d->at.ncharts && !d->handles.cheld[chart])
         chart_centroid(&d->at, chart, d->at.loop.uv, cen, NULL);
-    return handles_changed(d, drag_handles_move_chart(&d->handles, chart, d->at.loop.uv, cen, dx,
-                                                      dy, angle, &d->err));
+    return handles_changed(
+        d, drag_handles_move_chart(&d->handles, chart, d->at.loop.uv, cen, dx, dy, angle, &d->err));
 }
 
 scaf_status scaf_drag_clear_vertex(scaf_drag_t *d, int uv)
@@ -417,7 +425,10 @@ scaf_status scaf_drag_undo(scaf_drag_t *d)
 
 int scaf_drag_undo_count(const scaf_drag_t *d) { return d && d->has_mesh ? d->nstack : 0; }
 
-int scaf_drag_iterations(const scaf_drag_t *d) { return d && d->has_mesh ? d->at.loop.iterations : 0; }
+int scaf_drag_iterations(const scaf_drag_t *d)
+{
+    return d && d->has_mesh ? d->at.loop.iterations : 0;
+}
 
 /* ---- steps ------------------------------------------------------------------------ */
 
@@ -511,8 +522,9 @@ scaf_status scaf_drag_chart_info(const scaf_drag_t *d, int chart, scaf_drag_char
     if (st != SCAF_OK) return st;
     if (!info) return err_set(&m->err, SCAF_ERR_USAGE, "info is NULL");
     if (chart < 0 || chart >= d->at.ncharts)
-        return err_set(&m->err, SCAF_ERR_USAGE, "chart %d does not exist: the layout has %d (0..%d)",
-                       chart, d->at.ncharts, d->at.ncharts - 1);
+        return err_set(&m->err, SCAF_ERR_USAGE,
+                       "chart %d does not exist: the layout has %d (0..%d)", chart, d->at.ncharts,
+                       d->at.ncharts - 1);
     memset(info, 0, sizeof *info);
     const scaf_loop *L = &d->at.loop;
     double e = 0.0, w = 0.0;

@@ -65,8 +65,8 @@ static scaf_status check_vertex(const drag_handles *h, int v, scaf_error *err)
 static scaf_status check_chart(const drag_handles *h, int c, scaf_error *err)
 {
     if (c < 0 || c >= h->ncharts)
-        return err_set(err, SCAF_ERR_USAGE, "chart %d does not exist: the layout has %d (0..%d)",
-                       c, h->ncharts, h->ncharts - 1);
+        return err_set(err, SCAF_ERR_USAGE, "chart %d does not exist: the layout has %d (0..%d)", c,
+                       h->ncharts, h->ncharts - 1);
     return SCAF_OK;
 }
 
@@ -91,8 +91,7 @@ scaf_status drag_handles_move_chart(drag_handles *h, int c, const double *uv,
     if (st != SCAF_OK) return st;
     if (!isfinite(dx) || !isfinite(dy) || !isfinite(angle))
         return err_set(err, SCAF_ERR_USAGE,
-                       "chart %d: motion (dx %g, dy %g, angle %g) is not finite", c, dx, dy,
-                       angle);
+                       "chart %d: motion (dx %g, dy %g, angle %g) is not finite", c, dx, dy, angle);
     if (!h->cheld[c]) {
         for (int k = h->cstart[c]; k < h->cstart[c + 1]; k++) {
             size_t v = (size_t)h->cverts[k];

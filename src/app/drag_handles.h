@@ -24,16 +24,16 @@
 
 typedef struct drag_handles {
     int nw, ncharts;
-    int *cstart, *cverts;  /* chart c's vertices: cverts[cstart[c] .. cstart[c+1]) */
-    unsigned char *vheld;  /* nw: vertex handle there */
-    double *vtarget;       /* nw by 2 */
+    int *cstart, *cverts; /* chart c's vertices: cverts[cstart[c] .. cstart[c+1]) */
+    unsigned char *vheld; /* nw: vertex handle there */
+    double *vtarget;      /* nw by 2 */
     int nvheld;
-    unsigned char *cheld;  /* ncharts: chart handle there */
-    double *grab;          /* nw by 2: grab pose of held charts' vertices */
-    double *pivot;         /* ncharts by 2: grab pose centroid */
-    double *motion;        /* ncharts by 3: dx, dy, angle */
+    unsigned char *cheld; /* ncharts: chart handle there */
+    double *grab;         /* nw by 2: grab pose of held charts' vertices */
+    double *pivot;        /* ncharts by 2: grab pose centroid */
+    double *motion;       /* ncharts by 3: dx, dy, angle */
     int ncheld;
-    int *hv;               /* scratch of build: vertices, targets, weight factors */
+    int *hv; /* scratch of build: vertices, targets, weight factors */
     double *ht, *hs;
 } drag_handles;
 

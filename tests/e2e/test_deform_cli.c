@@ -113,6 +113,8 @@ static void bad_input(void **state)
     bad_targets(g, "{\"handles\": [], \"wieght\": 3}", 3, "unknown or repeated key \"wieght\"");
     bad_targets(g, "{\"handles\": []} x", 3, "unexpected text after the object");
     bad_targets(g, "{\"weight\": 1}", 3, "no \"handles\"");
+    bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [0x1p3, 2]}]}", 3,
+                "\"target\" x: not a JSON number");
     bad_targets(g,
                 "{\"handles\": [{\"vertex\": 0, \"target\": [1, 2], \"path\": [[0, 0]]},\n"
                 "{\"vertex\": 1, \"target\": [1, 2]}]}",

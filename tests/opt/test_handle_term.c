@@ -6,7 +6,9 @@
  *   - moving targets or the weight keeps the pattern (block version),
  *     other vertices or dofs rebuild it; fixed handles add nothing;
  *   - the weight is scale-free (w = ratio / n, whatever the area) and bad
- *     input is refused with h unchanged. */
+ *     input is refused with h unchanged;
+ *   - per-handle weight factors (opt_handle_term_set_scaled) scale energy,
+ *     slope, proxy and Newton blocks handle by handle. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -186,12 +188,53 @@ static void weight_and_errors(void **state)
     opt_handle_term_free(&h);
 }
 
+/* Handle i weighs w * scale[i]: the energy, the slope, the proxy and
+ * Newton diagonals and right-hand sides of each handle scale alone. */
+static void scaled_handles(void **state)
+{
+    (void)state;
+    double X[8] = {0, 0, 1, 0, 1, 1, 0, 1}, D[8] = {0.3, -0.2, 0, 0, 1, 2, -1, 0.5};
+    int hv[2] = {0, 2}, dof[4] = {0, 1, 2, 3};
+    double ht[4] = {1, 1, 2, 1}, sc[2] = {0.25, 3.0};
+    opt_handle_term h;
+    opt_handle_term_init(&h, 2, 4);
+    assert_int_equal(opt_handle_term_set_scaled(&h, 2, hv, ht, sc, 2.0, NULL), SCAF_OK);
+    opt_obj_term t = opt_handle_term_make(&h);
+    double want = 2.0 * (0.25 * (1 + 1) + 3.0 * (1 + 0));
+    assert_true(fabs(t.ops->energy(&t, X) - want) < 1e-14);
+    double e = 0.0, slope = 0.0;
+    t.ops->energy_slope(&t, X, D, &e, &slope);
+    const double eps = 1e-4;
+    double Xp[8], Xm[8];
+    for (int i = 0; i < 8; i++) Xp[i] = X[i] + eps * D[i], Xm[i] = X[i] - eps * D[i];
+    double fd = (t.ops->energy(&t, Xp) - t.ops->energy(&t, Xm)) / (2 * eps);
+    assert_true(fabs(slope - fd) < 1e-9);
+    assert_int_equal(t.ops->pattern(&t, dof, 4, NULL), SCAF_OK);
+    double rhs[8] = {0};
+    t.ops->fill(&t, dof, X, rhs);
+    assert_true(rhs[0] == 0.5 && rhs[1] == 0.5 && rhs[4] == 12.0 && rhs[5] == 6.0);
+    double nrhs[8] = {0};
+    assert_int_equal(t.ops->hessian_fill(&t, dof, X, 1, nrhs, NULL), SCAF_OK);
+    assert_true(nrhs[0] == -2.0 * 0.5 * (0 - 1) && nrhs[4] == -2.0 * 6.0 * (1 - 2));
+    /* a bad factor is refused, h unchanged */
+    double bad[2] = {1.0, -1.0};
+    scaf_error err;
+    assert_int_equal(opt_handle_term_set_scaled(&h, 2, hv, ht, bad, 2.0, &err), SCAF_ERR_USAGE);
+    assert_non_null(strstr(err.message, "handle 1"));
+    assert_true(h.scale[1] == 3.0);
+    /* no factors: all 1 again */
+    assert_int_equal(opt_handle_term_set(&h, 2, hv, ht, 2.0, NULL), SCAF_OK);
+    assert_true(fabs(t.ops->energy(&t, X) - 2.0 * 3.0) < 1e-14);
+    opt_obj_term_free(&t);
+    opt_handle_term_free(&h);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(energy_and_slope),     cmocka_unit_test(proxy_solves_to_targets),
         cmocka_unit_test(newton_fill_is_exact), cmocka_unit_test(pattern_kept_while_vertices_stay),
-        cmocka_unit_test(weight_and_errors),
+        cmocka_unit_test(weight_and_errors),    cmocka_unit_test(scaled_handles),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
