@@ -7,7 +7,9 @@
 // opens the page in headless Chromium (playwright-core, the system's
 // browser: nothing downloaded), drags one chart with the mouse onto its
 // neighbour, waits until the server has answered every request (the page's
-// own counters, never a sleep), screenshots the page into WORK_DIR, clicks
+// own counters, never a sleep), screenshots the page into WORK_DIR, shades
+// distortion, turns a chart (shift + drag), drags a vertex, undoes both
+// (the layout comes back number for number), optimizes and compacts, clicks
 // save and checks the saved file with `scaf check`: bijective, every two
 // charts at least the padding apart. Then a request with a wrong token is
 // refused (403) and changes nothing, and SIGTERM stops the server with
@@ -107,6 +109,47 @@ try {
   }).then(() => window.scafEditor.distortion().face_energy));
   if (energies.length !== 192 || !energies.every(e => e >= 4 - 1e-9))
     fail("distortion: " + energies.length + " faces, min " + Math.min(...energies));
+
+  // a rotation (shift + drag) and a vertex drag (the radio button), then
+  // undo twice with the button: back to the layout after the first drag,
+  // number for number
+  const kept = JSON.stringify((await page.evaluate(() => window.scafEditor.state())).uv);
+  const settled = () => page.evaluate(() => window.scafEditor.when(
+    () => window.scafEditor.idle() && window.scafEditor.state().handles === 0));
+  async function mouseDrag(from, to, n) {
+    await page.mouse.move(from[0], from[1]);
+    await page.mouse.down();
+    for (let i = 1; i <= n; i++) {
+      await page.mouse.move(from[0] + (to[0] - from[0]) * i / n, from[1] + (to[1] - from[1]) * i / n);
+      await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.caughtUp()));
+    }
+    await page.mouse.up();
+    await settled();
+  }
+  const c2 = await page.evaluate(() => window.scafEditor.chartPoint(2));
+  await page.keyboard.down("Shift");
+  await mouseDrag([c2[0] + 30, c2[1]], [c2[0], c2[1] - 30], 6);  // a quarter turn
+  await page.keyboard.up("Shift");
+  const turned = await page.evaluate(() => window.scafEditor.state());
+  if (JSON.stringify(turned.uv) === kept) fail("the rotation moved nothing");
+  await page.check("input[value=vertex]");
+  const c3 = await page.evaluate(() => window.scafEditor.chartPoint(3));
+  await mouseDrag(c3, [c3[0] + 12, c3[1] + 12], 3);
+  await page.check("input[value=move]");
+  const undoOnce = async () => {
+    await page.click("#undo");
+    await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle()));
+  };
+  await undoOnce();
+  await undoOnce();
+  if (JSON.stringify((await page.evaluate(() => window.scafEditor.state())).uv) !== kept)
+    fail("two undos did not restore the layout after the first drag");
+  for (const button of ["#optimize", "#compact"]) {
+    await page.click(button);
+    await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle()));
+  }
+  const buttonError = await page.evaluate(() => window.scafEditor.error);
+  if (buttonError) fail(buttonError);
 
   await page.click("#save");
   await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.saved || window.scafEditor.error));
