@@ -237,6 +237,33 @@ static void sigterm_stops(void **state)
     assert_false(test_exists(out));
 }
 
+/* Input UVs that overlap (two triangles on the same spot) are not a start:
+ * `auto` says why and starts from the atlas; --start input refuses (4). */
+static void overlapping_uvs_start_from_the_atlas(void **state)
+{
+    (void)state;
+    char in[512], out[512], args[1200];
+    test_tmp_path("edit_cli_overlap.obj", in, sizeof in);
+    test_tmp_path("edit_cli_overlap_out.obj", out, sizeof out);
+    FILE *f = fopen(in, "w");
+    assert_non_null(f);
+    fputs("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 3 0 0\nv 4 0 0\nv 3 1 0\n"
+          "vt 0 0\nvt 1 0\nvt 0 1\n"
+          "f 1/1 2/2 3/3\nf 4/1 5/2 6/3\n",
+          f);
+    fclose(f);
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", in, out);
+    assert_true(start(&s, args));
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    char *err = test_slurp(s.err);
+    assert_non_null(strstr(err, "not starting from its UVs"));
+    assert_non_null(strstr(err, "2 charts, starting from the atlas"));
+    free(err);
+    assert_int_equal(test_run("%s edit %s -o %s --start input 2> /dev/null", SCAF_BINARY, in, out),
+                     4);
+}
+
 static void bad_command_lines(void **state)
 {
     (void)state;
@@ -272,6 +299,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_teardown(serves_and_refuses, stop_running),
         cmocka_unit_test_teardown(sigterm_stops, stop_running),
+        cmocka_unit_test_teardown(overlapping_uvs_start_from_the_atlas, stop_running),
         cmocka_unit_test(bad_command_lines),
     };
     return cmocka_run_group_tests(tests, make_atlas, NULL);
