@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Install every Debian package scaf needs to build, test, fuzz and benchmark.
-# Works as root on a fresh Debian 12; uses sudo otherwise.
+# Works as root on a fresh Debian 12; uses sudo otherwise. Also installs the
+# npm packages of tests/browser (npm ci).
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -15,6 +16,8 @@ PACKAGES=(
   tetgen                                            # tests/checks: `tetgen -d`, an independent self-intersection check
   valgrind                                          # bench: instruction counts
   python3 python3-numpy                             # the Python package and its tests
+  libmicrohttpd-dev                                 # `scaf edit`: the local HTTP server
+  chromium nodejs                                   # tests/browser: `scaf edit` in headless Chromium
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -24,3 +27,11 @@ if [ "${#missing[@]}" -gt 0 ]; then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+# npm: part of some nodejs builds (NodeSource), a package of its own in Debian
+if ! command -v npm >/dev/null; then
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends npm
+fi
+# tests/browser drives the system's Chromium with playwright-core (exact
+# versions of package-lock.json; no browser is downloaded)
+(cd "$(dirname "$0")/../tests/browser" && npm ci --no-audit --no-fund --loglevel=error)

@@ -20,6 +20,7 @@ int cmd_atlas(int argc, char **argv);
 int cmd_tet(int argc, char **argv);
 int cmd_deform(int argc, char **argv);
 int cmd_flow(int argc, char **argv);
+int cmd_edit(int argc, char **argv);
 
 const command scaf_commands[] = {
     {"check",
@@ -32,6 +33,7 @@ const command scaf_commands[] = {
      cmd_atlas},
     {"deform", "deform a planar mesh towards handle targets, bijectively (soft constraints)",
      cmd_deform},
+    {"edit", "interactive atlas editor in the browser: drag charts, nothing overlaps", cmd_edit},
     {"flow",
      "conformalized mean curvature flow of a closed surface (until free of self-intersections)",
      cmd_flow},

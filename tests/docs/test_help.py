@@ -3,8 +3,8 @@
 
 The ctest docs/test_help. The exit codes are read from the enum of
 tools/exit_codes.h (the source, not the table the help prints), then:
-  - `scaf --help`, `scaf param --help`, `scaf atlas --help` and
-    `scaf check --help` list every code on a line of its own ("  CODE  meaning");
+  - `scaf --help` and the help of param, atlas, check, deform, flow and
+    edit list every code on a line of its own ("  CODE  meaning");
   - README.md's exit status table has exactly these codes;
   - `scaf param --help` and `scaf atlas --help` name the input formats
     (OBJ, OFF, PLY, .gz) and the stopping rules (stop_reason names);
@@ -31,7 +31,7 @@ def main(argv):
         errors.append("tools/exit_codes.h: expected codes 8 and 70 among %s" % codes)
 
     helps = {}
-    for cmd in ([], ["param"], ["atlas"], ["check"], ["deform"], ["flow"]):
+    for cmd in ([], ["param"], ["atlas"], ["check"], ["deform"], ["flow"], ["edit"]):
         r = subprocess.run([scaf] + cmd + ["--help"], capture_output=True, text=True)
         name = " ".join(["scaf"] + cmd)
         if r.returncode != 0:

@@ -1,0 +1,188 @@
+// tests/browser/edit_e2e.mjs: `scaf edit` in a real browser, end to end.
+//
+// usage: node edit_e2e.mjs SCAF_BINARY WORK_DIR CHROMIUM
+//
+// Writes a six-chart atlas (`scaf gen cubesphere`, `scaf atlas`), starts `scaf edit` on
+// it, reads the URL with its token from the program's standard output,
+// opens the page in headless Chromium (playwright-core, the system's
+// browser: nothing downloaded), drags one chart with the mouse onto its
+// neighbour, waits until the server has answered every request (the page's
+// own counters, never a sleep), screenshots the page into WORK_DIR, shades
+// distortion, turns a chart (shift + drag), drags a vertex, undoes both
+// (the layout comes back number for number), optimizes and compacts, clicks
+// save and checks the saved file with `scaf check`: bijective, every two
+// charts at least the padding apart. Then a request with a wrong token is
+// refused (403) and changes nothing, and SIGTERM stops the server with
+// exit status 0. Exit 0 pass, 1 fail.
+import { spawn, spawnSync } from "node:child_process";
+import { mkdirSync, rmSync, existsSync } from "node:fs";
+import { createInterface } from "node:readline";
+import path from "node:path";
+import { chromium } from "playwright-core";
+
+const [scaf, work, browserPath] = process.argv.slice(2);
+const PADDING = 4 / 1024;
+
+function fail(msg) {
+  console.error("FAIL: " + msg);
+  process.exitCode = 1;
+  throw new Error(msg);
+}
+
+function run(args) {
+  const r = spawnSync(scaf, args, { encoding: "utf8" });
+  if (r.status !== 0) fail(`scaf ${args.join(" ")}: exit ${r.status}\n${r.stderr}`);
+  return r.stdout;
+}
+
+// The first line `scaf edit` prints: its URL.
+function firstLine(stream) {
+  return new Promise((resolve, reject) => {
+    const rl = createInterface({ input: stream });
+    rl.once("line", line => resolve(line));
+    stream.once("end", () => reject(new Error("scaf edit printed no URL")));
+  });
+}
+
+mkdirSync(work, { recursive: true });
+const input = path.join(work, "atlas.obj");
+const saved = path.join(work, "edited.obj");
+const shot = path.join(work, "scaf-edit.png");
+for (const f of [saved, shot]) rmSync(f, { force: true });
+const sphere = path.join(work, "cubesphere.obj");
+run(["gen", "cubesphere", "--size", "4", "-o", sphere]);
+run(["atlas", sphere, "-o", input, "--quiet"]);  // a packed atlas: a drag has to push
+
+const server = spawn(scaf, ["edit", input, "-o", saved], { stdio: ["ignore", "pipe", "inherit"] });
+const exited = new Promise(resolve => server.on("exit", (code, signal) => resolve({ code, signal })));
+let browser = null;
+try {
+  const url = await firstLine(server.stdout);
+  if (!/^http:\/\/127\.0\.0\.1:\d+\/\?token=[0-9a-f]{32}$/.test(url)) fail("unexpected URL line: " + url);
+  browser = await chromium.launch({
+    executablePath: browserPath,
+    // as root (CI containers) Chromium runs only without its sandbox;
+    // containers often have a tiny /dev/shm
+    args: ["--disable-dev-shm-usage"].concat(process.getuid && process.getuid() === 0 ? ["--no-sandbox"] : [])
+  });
+  const page = await browser.newPage({ viewport: { width: 880, height: 620 } });
+  const errors = [];
+  page.on("pageerror", e => errors.push(e.message));
+  page.on("requestfailed", r => errors.push("request failed: " + r.url()));
+  await page.goto(url);
+  // waits happen in the page, on the answers of the server (no sleeps; no
+  // waitForFunction: the page's Content-Security-Policy forbids its eval)
+  await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.ready || window.scafEditor.error));
+  const loadError = await page.evaluate(() => window.scafEditor.error);
+  if (loadError) fail("the page did not load the atlas: " + loadError);
+
+  await page.check("#checker");  // the checkerboard on the 3D surface, drawn per pixel
+  // drag chart 0 onto chart 1, in small mouse steps
+  const before = await page.evaluate(() => window.scafEditor.state());
+  const a = await page.evaluate(() => window.scafEditor.chartPoint(0));
+  const b = await page.evaluate(() => window.scafEditor.chartPoint(1));
+  const ua = await page.evaluate(() => window.scafEditor.chartCentre(0));
+  const ub = await page.evaluate(() => window.scafEditor.chartCentre(1));
+  await page.mouse.move(a[0], a[1]);
+  await page.mouse.down();
+  for (let i = 1; i <= 24; i++) {
+    await page.mouse.move(a[0] + (b[0] - a[0]) * i / 24, a[1] + (b[1] - a[1]) * i / 24);
+    // wait until the server has answered the drag to this very position
+    await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.caughtUp()));
+  }
+  await page.mouse.up();
+  await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle() && window.scafEditor.state().handles === 0));
+  const after = await page.evaluate(() => window.scafEditor.state());
+  await page.screenshot({ path: shot });  // released: the view fitted to the pushed charts
+  if (!(after.iteration > before.iteration)) fail("no iteration ran while dragging");
+  // chart 0 followed the mouse toward chart 1 (pushing it aside: no overlap)
+  // (layout units: the view is fitted anew on release)
+  const ua2 = await page.evaluate(() => window.scafEditor.chartCentre(0));
+  const dist = (p, q) => Math.hypot(p[0] - q[0], p[1] - q[1]);
+  if (!(dist(ua2, ub) < 0.5 * dist(ua, ub))) fail(`chart 0 did not follow the drag: ${ua} -> ${ua2}, toward ${ub}`);
+
+  // distortion shading: the server's per-face energies, >= 4 (isometry)
+  await page.check("#distortion");
+  const energies = await page.evaluate(() => window.scafEditor.when(() => {
+    const d = window.scafEditor.distortion();
+    return d && d.iteration === window.scafEditor.state().iteration;
+  }).then(() => window.scafEditor.distortion().face_energy));
+  if (energies.length !== 192 || !energies.every(e => e >= 4 - 1e-9))
+    fail("distortion: " + energies.length + " faces, min " + Math.min(...energies));
+
+  // a rotation (shift + drag) and a vertex drag (the radio button), then
+  // undo twice with the button: back to the layout after the first drag,
+  // number for number
+  const kept = JSON.stringify((await page.evaluate(() => window.scafEditor.state())).uv);
+  const settled = () => page.evaluate(() => window.scafEditor.when(
+    () => window.scafEditor.idle() && window.scafEditor.state().handles === 0));
+  async function mouseDrag(from, to, n) {
+    await page.mouse.move(from[0], from[1]);
+    await page.mouse.down();
+    for (let i = 1; i <= n; i++) {
+      await page.mouse.move(from[0] + (to[0] - from[0]) * i / n, from[1] + (to[1] - from[1]) * i / n);
+      await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.caughtUp()));
+    }
+    await page.mouse.up();
+    await settled();
+  }
+  const c2 = await page.evaluate(() => window.scafEditor.chartPoint(2));
+  await page.keyboard.down("Shift");
+  await mouseDrag([c2[0] + 30, c2[1]], [c2[0], c2[1] - 30], 6);  // a quarter turn
+  await page.keyboard.up("Shift");
+  const turned = await page.evaluate(() => window.scafEditor.state());
+  if (JSON.stringify(turned.uv) === kept) fail("the rotation moved nothing");
+  await page.check("input[value=vertex]");
+  const c3 = await page.evaluate(() => window.scafEditor.chartPoint(3));
+  await mouseDrag(c3, [c3[0] + 12, c3[1] + 12], 3);
+  await page.check("input[value=move]");
+  const undoOnce = async () => {
+    await page.click("#undo");
+    await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle()));
+  };
+  await undoOnce();
+  await undoOnce();
+  if (JSON.stringify((await page.evaluate(() => window.scafEditor.state())).uv) !== kept)
+    fail("two undos did not restore the layout after the first drag");
+  for (const button of ["#optimize", "#compact"]) {
+    await page.click(button);
+    await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle()));
+  }
+  const buttonError = await page.evaluate(() => window.scafEditor.error);
+  if (buttonError) fail(buttonError);
+
+  await page.click("#save");
+  await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.saved || window.scafEditor.error));
+  const saveError = await page.evaluate(() => window.scafEditor.error);
+  if (saveError) fail("save: " + saveError);
+  if (!existsSync(saved)) fail("save reported success but " + saved + " is missing");
+  const check = spawnSync(scaf, ["check", saved], { encoding: "utf8" });
+  if (check.status !== 0) fail(`scaf check ${saved}: exit ${check.status}\n${check.stdout}`);
+  const gap = Number((/min chart gap\s+(\S+)/.exec(check.stdout) || [])[1]);
+  if (!(gap >= PADDING)) fail(`saved atlas: min chart gap ${gap} below the padding ${PADDING}`);
+  if (!/charts\s+6\b/.test(check.stdout)) fail("saved atlas does not have 6 charts:\n" + check.stdout);
+
+  // a request without the token is refused and changes nothing
+  const refused = await page.evaluate(async () => {
+    const s0 = JSON.stringify(window.scafEditor.state().uv);
+    const r = await fetch("/api/drag", { method: "POST", body: '{"chart": 0, "dx": 1, "dy": 0, "angle": 0}' });
+    const s1 = await (await fetch("/api/state", { headers: { "X-Scaf-Token": new URLSearchParams(location.search).get("token") } })).json();
+    return { status: r.status, same: JSON.stringify(s1.uv.map(x => Number(x))) === s0 };
+  });
+  if (refused.status !== 403 || !refused.same) fail("a request without token: " + JSON.stringify(refused));
+  if (errors.length) fail("page errors: " + errors.join("; "));
+  console.log(`scaf edit in ${await browser.version()}: ${after.iteration - before.iteration} iterations ` +
+              `while dragging, saved ${saved} (bijective, min chart gap ${gap} >= ${PADDING}), ` +
+              `screenshot ${shot}`);
+} catch (e) {
+  if (!process.exitCode) console.error("FAIL: " + (e.stack || e));
+  process.exitCode = 1;
+} finally {
+  if (browser) await browser.close();
+  server.kill("SIGTERM");
+  const { code, signal } = await exited;
+  if (code !== 0) {
+    console.error(`FAIL: scaf edit ended with ${code === null ? "signal " + signal : "exit " + code} after SIGTERM`);
+    process.exitCode = 1;
+  }
+}

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# tests/browser/run_edit_e2e.sh: the ctest browser/edit_e2e (label
+# `browser`): runs edit_e2e.mjs with node and Debian's chromium.
+#   run_edit_e2e.sh SCAF_BINARY WORK_DIR
+# Skips (exit 77, with the reason) only when node or chromium is not
+# installed (scripts/setup.sh installs both); fails when they are but
+# playwright-core is not (scripts/setup.sh runs `npm ci` here).
+# SCAF_CHROMIUM names another Chromium binary.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+scaf="$1"
+work="$2"
+browser="${SCAF_CHROMIUM:-$(command -v chromium || true)}"
+if ! command -v node >/dev/null; then
+  echo "SKIP: node is not installed (scripts/setup.sh installs it)"
+  exit 77
+fi
+if [ -z "$browser" ] || [ ! -x "$browser" ]; then
+  echo "SKIP: chromium is not installed (scripts/setup.sh installs it)"
+  exit 77
+fi
+if [ ! -f "$here/node_modules/playwright-core/package.json" ]; then
+  echo "FAIL: playwright-core is missing: run \`npm ci\` in $here (scripts/setup.sh does)"
+  exit 1
+fi
+exec node "$here/edit_e2e.mjs" "$scaf" "$work" "$browser"

@@ -1,0 +1,590 @@
+/* tools/edit_api: the requests `scaf edit` answers (see edit_api.h). */
+#include "edit_api.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/json_write.h"
+#include "cli_mesh_io.h"
+#include "cli_outputs.h"
+#include "cli_signal.h"
+#include "edit_json.h"
+
+#define JSON_TYPE "application/json"
+#define DRAG_STEPS_MAX 20
+#define OPTIMIZE_STEPS_DEFAULT 100
+#define COMPACT_STEPS_DEFAULT 30
+#define STEPS_MAX 1000
+#define OPTIMIZE_TOLERANCE 1e-4 /* relative decrease of E per iteration */
+#define MAX_ANGLE 1000.0        /* radians of a chart drag */
+#define REACH_FACTOR 1000.0     /* drag targets: within this times the layout's size */
+
+void edit_response_free(edit_response *rs)
+{
+    if (!rs->body_static) free(rs->body);
+    rs->body = NULL;
+    rs->len = 0;
+}
+
+/* ---- responses -------------------------------------------------------------- */
+
+static void reply_failure(edit_api *a, edit_response *rs, const char *what);
+
+/* A JSON response written with stdio into memory. */
+typedef struct json_out {
+    FILE *f;
+    char *buf;
+    size_t len;
+} json_out;
+
+static void reply(edit_response *rs, int status, const char *type, char *body, size_t len)
+{
+    rs->status = status;
+    rs->content_type = type;
+    rs->body = body;
+    rs->len = len;
+    rs->body_static = 0;
+}
+
+static void reply_error(edit_response *rs, int status, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static int json_open(json_out *j)
+{
+    j->buf = NULL;
+    j->len = 0;
+    j->f = open_memstream(&j->buf, &j->len);
+    return j->f != NULL;
+}
+
+static void reply_error(edit_response *rs, int status, const char *fmt, ...)
+{
+    char msg[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    json_out j;
+    if (!json_open(&j)) {
+        reply(rs, 500, "text/plain", NULL, 0);
+        return;
+    }
+    fputs("{\"error\": ", j.f);
+    json_write_string(j.f, msg);
+    fputs("}\n", j.f);
+    fclose(j.f);
+    reply(rs, status, JSON_TYPE, j.buf, j.len);
+}
+
+/* 1, or 0 after answering 500 (no memory for the stream). */
+static int json_begin(json_out *j, edit_response *rs)
+{
+    if (json_open(j)) return 1;
+    reply_error(rs, 500, "out of memory");
+    return 0;
+}
+
+/* , "key": x */
+static void json_key_number(FILE *f, const char *key, double x)
+{
+    fprintf(f, ", \"%s\": ", key);
+    json_write_number(f, x);
+}
+
+static void json_end(json_out *j, edit_response *rs)
+{
+    if (fclose(j->f) != 0) {
+        free(j->buf);
+        reply_error(rs, 500, "out of memory");
+        return;
+    }
+    reply(rs, 200, JSON_TYPE, j->buf, j->len);
+}
+
+static void write_ints(FILE *f, const char *key, const int *x, size_t n)
+{
+    fprintf(f, "\"%s\": [", key);
+    for (size_t i = 0; i < n; i++) fprintf(f, i ? ",%d" : "%d", x[i]);
+    fputs("]", f);
+}
+
+/* Numbers for drawing: 9 significant digits are far below a pixel; null
+ * for what JSON cannot hold. */
+static void write_doubles(FILE *f, const char *key, const double *x, size_t n)
+{
+    fprintf(f, "\"%s\": [", key);
+    for (size_t i = 0; i < n; i++) {
+        if (i) fputc(',', f);
+        if (isfinite(x[i])) fprintf(f, "%.9g", x[i]);
+        else fputs("null", f);
+    }
+    fputs("]", f);
+}
+
+/* The layout and its numbers; extra (may be NULL) adds fields first. */
+static void reply_state(edit_api *a, edit_response *rs, const char *extra_key, int extra)
+{
+    if (scaf_drag_get_uv(a->drag, a->uv, NULL, NULL) != SCAF_OK) {
+        reply_error(rs, 500, "%s", scaf_drag_error(a->drag));
+        return;
+    }
+    json_out j;
+    if (!json_begin(&j, rs)) return;
+    fputc('{', j.f);
+    if (extra_key) fprintf(j.f, "\"%s\": %d, ", extra_key, extra);
+    fprintf(j.f, "\"iteration\": %d", scaf_drag_iterations(a->drag));
+    json_key_number(j.f, "energy", scaf_drag_energy(a->drag));
+    json_key_number(j.f, "efficiency", scaf_drag_packing_efficiency(a->drag));
+    fprintf(j.f, ", \"handles\": %d, \"undo\": %d", scaf_drag_handle_count(a->drag),
+            scaf_drag_undo_count(a->drag));
+    json_key_number(j.f, "max_handle_error", scaf_drag_max_handle_error(a->drag));
+    fputs(", ", j.f);
+    write_doubles(j.f, "uv", a->uv, 2 * (size_t)a->nuv);
+    fputs("}\n", j.f);
+    json_end(&j, rs);
+}
+
+/* Per-face distortion ||J||^2 + ||J^-1||^2 (4 at an isometry), for the
+ * page's shading. */
+static void reply_distortion(edit_api *a, edit_response *rs)
+{
+    double *E = malloc(sizeof(double) * (size_t)(a->nf ? a->nf : 1));
+    if (!E) {
+        reply_error(rs, 500, "out of memory");
+        return;
+    }
+    json_out j;
+    if (scaf_drag_face_energy(a->drag, E) != SCAF_OK) {
+        reply_failure(a, rs, "distortion");
+    } else if (json_begin(&j, rs)) {
+        fprintf(j.f, "{\"iteration\": %d, ", scaf_drag_iterations(a->drag));
+        write_doubles(j.f, "face_energy", E, (size_t)a->nf);
+        fputs("}\n", j.f);
+        json_end(&j, rs);
+    }
+    free(E);
+}
+
+static void reply_mesh(edit_api *a, edit_response *rs)
+{
+    json_out j;
+    if (!json_begin(&j, rs)) return;
+    fputs("{\"name\": ", j.f);
+    json_write_string(j.f, a->name);
+    fputs(", \"output\": ", j.f);
+    json_write_string(j.f, a->out);
+    fprintf(j.f, ", \"ncharts\": %d, \"nuv\": %d", a->ncharts, a->nuv);
+    json_key_number(j.f, "padding", a->padding);
+    json_key_number(j.f, "diagonal", a->diagonal);
+    fputs(", ", j.f);
+    write_ints(j.f, "faces", a->FT, 3 * (size_t)a->nf);
+    fputs(", ", j.f);
+    write_ints(j.f, "face_chart", a->chart, (size_t)a->nf);
+    fputs(", ", j.f);
+    write_ints(j.f, "faces3d", a->m->F, 3 * (size_t)a->nf);
+    fputs(", ", j.f);
+    write_doubles(j.f, "xyz", a->m->V, 3 * (size_t)a->m->nv);
+    fputs("}\n", j.f);
+    json_end(&j, rs);
+}
+
+/* ---- checks ----------------------------------------------------------------- */
+
+/* Equal strings, in a time that does not tell where they differ. */
+static int same_secret(const char *given, const char *secret)
+{
+    size_t n = strlen(secret);
+    if (!given || strlen(given) != n) return 0;
+    unsigned char d = 0;
+    for (size_t i = 0; i < n; i++) d |= (unsigned char)(given[i] ^ secret[i]);
+    return d == 0;
+}
+
+/* "127.0.0.1:PORT" or "localhost:PORT" (after prefix, e.g. "http://"). */
+static int is_our_address(const char *s, const char *prefix, int port)
+{
+    if (!s) return 0;
+    size_t p = strlen(prefix);
+    if (strncmp(s, prefix, p)) return 0;
+    s += p;
+    char want[64];
+    snprintf(want, sizeof want, "127.0.0.1:%d", port);
+    if (!strcmp(s, want)) return 1;
+    snprintf(want, sizeof want, "localhost:%d", port);
+    return !strcmp(s, want);
+}
+
+/* ---- actions ---------------------------------------------------------------- */
+
+static int parse(const edit_request *rq, edit_response *rs, edit_json_field *f, int n)
+{
+    char msg[256];
+    if (edit_json_parse(rq->body, rq->body_len, f, n, msg, sizeof msg)) return 1;
+    reply_error(rs, 400, "%s %s: %s", rq->method, rq->path, msg);
+    return 0;
+}
+
+static int check_chart(edit_api *a, edit_response *rs, double c)
+{
+    if (c < a->ncharts) return 1;
+    reply_error(rs, 400, "unknown chart %.0f: the atlas has charts 0..%d", c, a->ncharts - 1);
+    return 0;
+}
+
+static int check_vertex(edit_api *a, edit_response *rs, double v)
+{
+    if (v < a->nuv) return 1;
+    reply_error(rs, 400, "unknown vertex %.0f: the layout has vertices 0..%d", v, a->nuv - 1);
+    return 0;
+}
+
+static int check_steps(edit_response *rs, const edit_json_field *f, int max)
+{
+    if (!f->seen || (f->value >= 1 && f->value <= max)) return 1;
+    reply_error(rs, 400, "\"steps\" %.0f is out of range: it must be in 1..%d", f->value, max);
+    return 0;
+}
+
+/* A library failure: 500 with its message (the layout of the last
+ * finished iteration stays). */
+static void reply_failure(edit_api *a, edit_response *rs, const char *what)
+{
+    reply_error(rs, 500, "%s: %s", what, scaf_drag_error(a->drag));
+}
+
+/* SIGINT / SIGTERM stop long runs at the next iteration. */
+static int stop_on_signal(const scaf_iteration_info_t *info, void *user)
+{
+    (void)info, (void)user;
+    return cli_signal_caught() != 0;
+}
+
+static void grab(edit_api *a, const edit_request *rq, edit_response *rs)
+{
+    edit_json_field f[] = {{"chart", EDIT_JSON_INTEGER, 0, 0, 0},
+                           {"vertex", EDIT_JSON_INTEGER, 0, 0, 0}};
+    if (!parse(rq, rs, f, 2)) return;
+    if (f[0].seen == f[1].seen) {
+        reply_error(rs, 400, "give either \"chart\" or \"vertex\"");
+        return;
+    }
+    if (f[0].seen ? !check_chart(a, rs, f[0].value) : !check_vertex(a, rs, f[1].value)) return;
+    if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_checkpoint(a->drag) != SCAF_OK) {
+        reply_failure(a, rs, "grab");
+        return;
+    }
+    reply_state(a, rs, NULL, 0);
+}
+
+static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
+{
+    edit_json_field f[] = {
+        {"chart", EDIT_JSON_INTEGER, 0, 0, 0},  {"dx", EDIT_JSON_NUMBER, 0, 0, 0},
+        {"dy", EDIT_JSON_NUMBER, 0, 0, 0},      {"angle", EDIT_JSON_NUMBER, 0, 0, 0},
+        {"vertex", EDIT_JSON_INTEGER, 0, 0, 0}, {"x", EDIT_JSON_NUMBER, 0, 0, 0},
+        {"y", EDIT_JSON_NUMBER, 0, 0, 0},       {"steps", EDIT_JSON_INTEGER, 0, 0, 0}};
+    if (!parse(rq, rs, f, 8)) return;
+    int chart = f[0].seen, vertex = f[4].seen;
+    if (chart == vertex) {
+        reply_error(rs, 400,
+                    "give either \"chart\" (with dx, dy, angle) or \"vertex\" (with x, y)");
+        return;
+    }
+    if (chart && (f[5].seen || f[6].seen)) {
+        reply_error(rs, 400, "a chart drag takes dx, dy and angle, not x and y");
+        return;
+    }
+    if (vertex && (f[1].seen || f[2].seen || f[3].seen || !f[5].seen || !f[6].seen)) {
+        reply_error(rs, 400, "a vertex drag takes x and y (both), not dx, dy or angle");
+        return;
+    }
+    if (chart ? !check_chart(a, rs, f[0].value) : !check_vertex(a, rs, f[4].value)) return;
+    if (!check_steps(rs, &f[7], DRAG_STEPS_MAX)) return;
+    /* a pointer stays on the screen: bounded motions keep the handle
+     * energy finite */
+    for (int k = 1; k < 7; k++) {
+        double limit = k == 3 ? MAX_ANGLE : a->reach;
+        if (k != 4 && f[k].seen && !(fabs(f[k].value) <= limit)) {
+            reply_error(rs, 400, "\"%s\" %g is out of range: at most %g in magnitude%s", f[k].key,
+                        f[k].value, limit,
+                        k == 3 ? " (radians)" : " (1000 times the layout's size)");
+            return;
+        }
+    }
+    scaf_status st = chart
+        ? scaf_drag_move_chart(a->drag, (int)f[0].value, f[1].value, f[2].value, f[3].value)
+        : scaf_drag_move_vertex(a->drag, (int)f[4].value, f[5].value, f[6].value);
+    if (st != SCAF_OK) { /* nothing changed (a motion out of range) */
+        reply_error(rs, 400, "%s", scaf_drag_error(a->drag));
+        return;
+    }
+    int steps = f[7].seen ? (int)f[7].value : 1;
+    st = scaf_drag_step(a->drag, steps, stop_on_signal, NULL);
+    if (st != SCAF_OK && st != SCAF_ERR_CANCELLED) {
+        reply_failure(a, rs, "step");
+        return;
+    }
+    reply_state(a, rs, NULL, 0);
+}
+
+static void release(edit_api *a, const edit_request *rq, edit_response *rs)
+{
+    if (!parse(rq, rs, NULL, 0)) return;
+    if (scaf_drag_clear_handles(a->drag) != SCAF_OK) {
+        reply_failure(a, rs, "release");
+        return;
+    }
+    reply_state(a, rs, NULL, 0);
+}
+
+/* Optimize (compact = 0) or compact: a checkpoint, no handles, then
+ * iterations; the state with "iterations_run". */
+static void run(edit_api *a, const edit_request *rq, edit_response *rs, int compact)
+{
+    edit_json_field f[] = {{"steps", EDIT_JSON_INTEGER, 0, 0, 0}};
+    if (!parse(rq, rs, f, 1) || !check_steps(rs, &f[0], STEPS_MAX)) return;
+    int cap =
+        f[0].seen ? (int)f[0].value : (compact ? COMPACT_STEPS_DEFAULT : OPTIMIZE_STEPS_DEFAULT);
+    if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_checkpoint(a->drag) != SCAF_OK) {
+        reply_failure(a, rs, compact ? "compact" : "optimize");
+        return;
+    }
+    int before = scaf_drag_iterations(a->drag);
+    scaf_status st = SCAF_OK;
+    if (compact) {
+        st = scaf_drag_compact(a->drag, cap, stop_on_signal, NULL);
+    } else {
+        /* one iteration at a time: stop once E barely moves */
+        for (int i = 0; i < cap && st == SCAF_OK && !cli_signal_caught(); i++) {
+            double e0 = scaf_drag_energy(a->drag);
+            int n0 = scaf_drag_iterations(a->drag);
+            st = scaf_drag_step(a->drag, 1, stop_on_signal, NULL);
+            if (scaf_drag_iterations(a->drag) == n0) break; /* a minimum */
+            if (e0 - scaf_drag_energy(a->drag) < OPTIMIZE_TOLERANCE * e0) break;
+        }
+    }
+    if (st != SCAF_OK && st != SCAF_ERR_CANCELLED) {
+        reply_failure(a, rs, compact ? "compact" : "optimize");
+        return;
+    }
+    reply_state(a, rs, "iterations_run", scaf_drag_iterations(a->drag) - before);
+}
+
+static void undo(edit_api *a, const edit_request *rq, edit_response *rs)
+{
+    if (!parse(rq, rs, NULL, 0)) return;
+    if (scaf_drag_undo_count(a->drag) == 0) {
+        reply_error(rs, 409, "nothing to undo");
+        return;
+    }
+    if (scaf_drag_undo(a->drag) != SCAF_OK) {
+        reply_failure(a, rs, "undo");
+        return;
+    }
+    reply_state(a, rs, NULL, 0);
+}
+
+/* Normalize, certify exactly (scaf_drag_get_output), write atomically
+ * through tools/cli_outputs like `scaf atlas`. */
+static void save(edit_api *a, const edit_request *rq, edit_response *rs)
+{
+    if (!parse(rq, rs, NULL, 0)) return;
+    double *UV = malloc(sizeof(double) * 2 * (size_t)(a->nuv ? a->nuv : 1));
+    int *FT = malloc(sizeof(int) * 3 * (size_t)(a->nf ? a->nf : 1));
+    if (!UV || !FT) {
+        free(UV);
+        free(FT);
+        reply_error(rs, 500, "save: out of memory");
+        return;
+    }
+    double eff = NAN, gap = NAN;
+    if (scaf_drag_get_output(a->drag, UV, FT, NULL, &eff, &gap) != SCAF_OK) {
+        reply_error(rs, 500, "save: %s; nothing written", scaf_drag_error(a->drag));
+        free(UV);
+        free(FT);
+        return;
+    }
+    cli_outputs outs;
+    cli_outputs_init(&outs, "edit", a->in);
+    int k = cli_outputs_add(&outs, "-o", a->out, CLI_OUTPUT_MESH);
+    scaf_error err;
+    err_clear(&err);
+    mesh o = {a->m->nv, a->m->V, a->m->nf, a->m->F, a->nuv, UV, FT};
+    const char *path = cli_outputs_begin(&outs, k, &err);
+    int rc = cli_outputs_end(
+        &outs, k, path ? cli_write_uv("edit", a->in, a->rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
+    if (rc == 0) rc = cli_outputs_commit(&outs);
+    cli_outputs_abort(&outs);
+    free(UV);
+    free(FT);
+    if (rc != 0) {
+        reply_error(rs, 500, "save: %s; nothing written",
+                    err.message[0] ? err.message : "interrupted");
+        return;
+    }
+    a->saves++;
+    json_out j;
+    if (!json_begin(&j, rs)) return;
+    fputs("{\"path\": ", j.f);
+    json_write_string(j.f, a->out);
+    fputs(", \"bijective\": true", j.f);
+    json_key_number(j.f, "padding", a->padding);
+    json_key_number(j.f, "gap", gap);
+    json_key_number(j.f, "efficiency", eff);
+    fprintf(j.f, ", \"saves\": %d}\n", a->saves);
+    json_end(&j, rs);
+}
+
+/* ---- routing ---------------------------------------------------------------- */
+
+typedef struct route {
+    const char *path;
+    const char *method;
+    int kind;
+} route;
+
+enum {
+    R_PAGE,
+    R_MESH,
+    R_STATE,
+    R_DISTORTION,
+    R_GRAB,
+    R_DRAG,
+    R_RELEASE,
+    R_OPTIMIZE,
+    R_COMPACT,
+    R_UNDO,
+    R_SAVE
+};
+
+static const route routes[] = {
+    {"/", "GET", R_PAGE},
+    {"/index.html", "GET", R_PAGE},
+    {"/api/mesh", "GET", R_MESH},
+    {"/api/state", "GET", R_STATE},
+    {"/api/distortion", "GET", R_DISTORTION},
+    {"/api/grab", "POST", R_GRAB},
+    {"/api/drag", "POST", R_DRAG},
+    {"/api/release", "POST", R_RELEASE},
+    {"/api/optimize", "POST", R_OPTIMIZE},
+    {"/api/compact", "POST", R_COMPACT},
+    {"/api/undo", "POST", R_UNDO},
+    {"/api/save", "POST", R_SAVE},
+};
+
+void edit_api_handle(void *user, const edit_request *rq, edit_response *rs)
+{
+    edit_api *a = user;
+    memset(rs, 0, sizeof *rs);
+    if (!is_our_address(rq->host, "", a->port)) {
+        reply_error(rs, 403, "Host must be 127.0.0.1:%d or localhost:%d", a->port, a->port);
+        return;
+    }
+    if (rq->origin && !is_our_address(rq->origin, "http://", a->port)) {
+        reply_error(rs, 403, "requests from another origin are refused");
+        return;
+    }
+    if (!same_secret(rq->token, a->token)) {
+        reply_error(rs, 403, "wrong or missing token: open the URL `scaf edit` printed");
+        return;
+    }
+    if (rq->body_too_large) {
+        reply_error(rs, 413, "request body over %d bytes", EDIT_MAX_BODY);
+        return;
+    }
+    const route *r = NULL;
+    int path_known = 0;
+    for (size_t i = 0; i < sizeof routes / sizeof routes[0]; i++)
+        if (!strcmp(rq->path, routes[i].path)) {
+            path_known = 1;
+            if (!strcmp(rq->method, routes[i].method)) r = &routes[i];
+        }
+    if (!r) {
+        if (path_known) reply_error(rs, 405, "%s is not allowed on %s", rq->method, rq->path);
+        else reply_error(rs, 404, "no such path: %s", rq->path);
+        return;
+    }
+    switch (r->kind) {
+    case R_PAGE:
+        rs->status = 200;
+        rs->content_type = "text/html; charset=utf-8";
+        rs->body = (char *)a->page;
+        rs->len = a->page_len;
+        rs->body_static = 1;
+        return;
+    case R_MESH: reply_mesh(a, rs); return;
+    case R_STATE: reply_state(a, rs, NULL, 0); return;
+    case R_DISTORTION: reply_distortion(a, rs); return;
+    case R_GRAB: grab(a, rq, rs); return;
+    case R_DRAG: drag_to(a, rq, rs); return;
+    case R_RELEASE: release(a, rq, rs); return;
+    case R_OPTIMIZE: run(a, rq, rs, 0); return;
+    case R_COMPACT: run(a, rq, rs, 1); return;
+    case R_UNDO: undo(a, rq, rs); return;
+    case R_SAVE: save(a, rq, rs); return;
+    }
+    reply_error(rs, 500, "internal error: route %d", r->kind);
+}
+
+/* ---- set-up ----------------------------------------------------------------- */
+
+scaf_status edit_api_init(edit_api *a, scaf_drag_t *d, const mesh *m, const char *in,
+                          const mesh_read_info *rinfo, const char *out, double padding,
+                          scaf_error *err)
+{
+    memset(a, 0, sizeof *a);
+    a->drag = d;
+    a->m = m;
+    a->in = in;
+    a->rinfo = rinfo;
+    a->out = out;
+    a->name = in;
+    a->padding = padding;
+    a->nuv = scaf_drag_uv_count(d);
+    a->nf = scaf_drag_face_count(d);
+    a->ncharts = scaf_drag_chart_count(d);
+    a->FT = malloc(sizeof(int) * 3 * (size_t)(a->nf ? a->nf : 1));
+    a->chart = malloc(sizeof(int) * (size_t)(a->nf ? a->nf : 1));
+    a->uv = malloc(sizeof(double) * 2 * (size_t)(a->nuv ? a->nuv : 1));
+    if (!a->FT || !a->chart || !a->uv) {
+        edit_api_free(a);
+        return err_nomem(err, "the editor's arrays");
+    }
+    if (scaf_drag_get_uv(d, a->uv, a->FT, a->chart) != SCAF_OK) {
+        scaf_status st = err_set(err, SCAF_ERR_INTERNAL, "%s", scaf_drag_error(d));
+        edit_api_free(a);
+        return st;
+    }
+    double ulo[2] = {INFINITY, INFINITY}, uhi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < a->nuv; i++)
+        for (int c = 0; c < 2; c++) {
+            ulo[c] = fmin(ulo[c], a->uv[2 * i + c]);
+            uhi[c] = fmax(uhi[c], a->uv[2 * i + c]);
+        }
+    double size = fmax(fmax(uhi[0] - ulo[0], uhi[1] - ulo[1]),
+                       fmax(fmax(fabs(ulo[0]), fabs(uhi[0])), fmax(fabs(ulo[1]), fabs(uhi[1]))));
+    a->reach = REACH_FACTOR * (size > 0 ? size : 1.0);
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < m->nv; i++)
+        for (int c = 0; c < 3; c++) {
+            lo[c] = fmin(lo[c], m->V[3 * i + c]);
+            hi[c] = fmax(hi[c], m->V[3 * i + c]);
+        }
+    a->diagonal = m->nv
+        ? sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+               (hi[2] - lo[2]) * (hi[2] - lo[2]))
+        : 1.0;
+    return SCAF_OK;
+}
+
+void edit_api_free(edit_api *a)
+{
+    free(a->FT);
+    free(a->chart);
+    free(a->uv);
+    a->FT = a->chart = NULL;
+    a->uv = NULL;
+}

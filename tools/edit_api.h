@@ -1,0 +1,84 @@
+/* tools/edit_api: the requests `scaf edit` answers, on one drag context.
+ *
+ * The whole protocol between the page (tools/edit_page.html) and the
+ * program, without sockets: tools/edit_server hands each request over as
+ * an edit_request and sends back the edit_response filled here.
+ *
+ *   GET  /?token=T      the page
+ *   GET  /api/mesh      faces, chart of each face, 3D positions (once)
+ *   GET  /api/state     the layout: uv, E, packing efficiency, iterations
+ *   GET  /api/distortion  per-face ||J||^2 + ||J^-1||^2 (4: isometric)
+ *   POST /api/grab      {"chart": c} | {"vertex": i}: mouse down; saves
+ *                       the layout for undo, drops every handle
+ *   POST /api/drag      {"chart": c, "dx", "dy", "angle", "steps"} |
+ *                       {"vertex": i, "x", "y", "steps"}: the total motion
+ *                       since the grab as soft handles, then `steps`
+ *                       SCAF iterations (1..20, default 1); the new state
+ *   POST /api/release   {}: mouse up: drops the handles
+ *   POST /api/optimize  {"steps"?}: iterations without handles until E
+ *                       decreases by less than 1e-4 relatively (cap
+ *                       `steps`, default 100)
+ *   POST /api/compact   {"steps"?}: compaction iterations (default 30)
+ *   POST /api/undo      {}: back to the layout before the last grab,
+ *                       optimize or compact (409 when there is none)
+ *   POST /api/save      {}: the layout normalized into the unit square,
+ *                       proved bijective with the padding kept (exact),
+ *                       written atomically to the output OBJ
+ *
+ * Every request must come from this server's page: the Host header names
+ * 127.0.0.1 or localhost at this port (a DNS-rebinding page cannot), an
+ * Origin header, when sent, is this server's own, and the token printed
+ * at start-up comes as the X-Scaf-Token header or the token query
+ * argument (compared in constant time). Refused requests get a 4xx and a
+ * JSON {"error": "..."} that says why, before anything is touched:
+ * 400 malformed JSON, unknown key, unknown chart or vertex, a value out
+ * of range (a drag farther than 1000 times the layout's size); 403 wrong Host, Origin or token; 404 unknown path; 405 wrong
+ * method; 409 nothing to undo; 413 a body over EDIT_MAX_BODY bytes.
+ * 500: the library failed (its message; the layout of the last finished
+ * iteration stays).
+ */
+#ifndef SCAF_TOOLS_EDIT_API_H
+#define SCAF_TOOLS_EDIT_API_H
+
+#include <stddef.h>
+
+#include "edit_http.h"
+#include "mesh/mesh.h"
+#include "mesh/mesh_io.h"
+#include "scaf/drag.h"
+
+#define EDIT_TOKEN_CHARS 32 /* 128 random bits, hex */
+
+typedef struct edit_api {
+    scaf_drag_t *drag; /* the layout (not owned) */
+    const mesh *m;     /* the input as read (not owned) */
+    const char *in;    /* the input path, for cli_write_uv */
+    const mesh_read_info *rinfo;
+    const char *out;  /* where save writes (checked at start-up) */
+    const char *name; /* shown by the page */
+    double padding;   /* the drag context's padding (for messages) */
+    char token[EDIT_TOKEN_CHARS + 1];
+    int port;         /* the server's port: Host and Origin checks */
+    const char *page; /* the page, page_len bytes */
+    size_t page_len;
+    int nuv, nf, ncharts;
+    int *FT, *chart; /* nf by 3, nf: fixed for the mesh */
+    double *uv;      /* nuv by 2: scratch for the state */
+    double diagonal; /* of the 3D bounding box: the page's checker */
+    double reach;    /* largest |dx|, |dy|, |x|, |y| of a drag: 1000
+                              times the starting layout's extent */
+    int saves;       /* files written */
+} edit_api;
+
+/* Set up the handler for a drag context that has its mesh; the token,
+ * port and page are filled by the caller. SCAF_ERR_NOMEM. */
+scaf_status edit_api_init(edit_api *a, scaf_drag_t *d, const mesh *m, const char *in,
+                          const mesh_read_info *rinfo, const char *out, double padding,
+                          scaf_error *err);
+
+void edit_api_free(edit_api *a);
+
+/* Answer one request (user: the edit_api). Always fills rs. */
+void edit_api_handle(void *user, const edit_request *rq, edit_response *rs);
+
+#endif
