@@ -57,16 +57,17 @@ static void usage(FILE *out)
             "  --report FILE      a JSON report: delta, steps done, whether the result is\n"
             "                     free, and per step its seconds (with --until-free its\n"
             "                     defects: intersecting face pairs + zero-area "
-            "faces)\n" CLI_SURFACE_PNG_HELP(
-                "the input and the flowed surface side by side\n"
-                "                     (both in the normalized frame)") "  -q, --quiet        no "
-                                                                       "per-step lines on stderr "
-                                                                       "(step, seconds, and with\n"
-                                                                       "                     "
-                                                                       "--until-free the "
-                                                                       "intersecting face "
-                                                                       "pairs)\n" CLI_OUTPUTS_HELP
-                                                                       "\n",
+            "faces)\n" CLI_SURFACE_PNG_HELP("input | flowed") "  -q, --quiet        "
+                                                              "no "
+                                                              "per-step lines on "
+                                                              "stderr "
+                                                              "(step, seconds, and "
+                                                              "with\n"
+                                                              "                     "
+                                                              "--until-free the "
+                                                              "intersecting face "
+                                                              "pairs)"
+                                                              "\n" CLI_OUTPUTS_HELP "\n",
             FLOW_MAX_STEPS);
     exit_codes_print(out);
 }

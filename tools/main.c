@@ -20,6 +20,7 @@ int cmd_atlas(int argc, char **argv);
 int cmd_tet(int argc, char **argv);
 int cmd_deform(int argc, char **argv);
 int cmd_flow(int argc, char **argv);
+int cmd_untangle(int argc, char **argv);
 
 const command scaf_commands[] = {
     {"check",
@@ -35,6 +36,9 @@ const command scaf_commands[] = {
     {"flow",
      "conformalized mean curvature flow of a closed surface (until free of self-intersections)",
      cmd_flow},
+    {"untangle",
+     "remove the self-intersections of a closed genus-0 surface (flow out, SCAF loop back)",
+     cmd_untangle},
     {"tet", "tetrahedralize a box around a closed surface (TetGen, surface kept, checked exactly)",
      cmd_tet},
     {NULL, NULL, NULL}};
