@@ -27,8 +27,8 @@ static int tets_positive(const volume_deform *vd)
     memcpy(P, volume_deform_positions(vd), sizeof(double) * 3 * (size_t)v->nmesh);
     memcpy(P + 3 * (size_t)v->nmesh, v->extra, sizeof(double) * 3 * (size_t)v->nextra);
     tet_orient_report r;
-    int ok = tet_orient_check(n, P, v->n, v->simplices, &r, NULL) == SCAF_OK &&
-        r.positive == r.tets;
+    int ok =
+        tet_orient_check(n, P, v->n, v->simplices, &r, NULL) == SCAF_OK && r.positive == r.tets;
     free(P);
     return ok;
 }
@@ -43,6 +43,7 @@ int main(int argc, char **argv)
     volume_deform_options o = volume_deform_options_default();
     if (argc > 4) o.lambda_ratio = atof(argv[4]);
     if (argc > 5 && !strcmp(argv[5], "newton")) o.solver = SCAF_SOLVER_NEWTON;
+    if (getenv("BOX_SCALE")) o.box_scale = atof(getenv("BOX_SCALE"));
     mesh m;
     mesh_read_info info;
     scaf_error e;
@@ -72,8 +73,7 @@ int main(int argc, char **argv)
         t_iter += it.seconds;
         all_positive = all_positive && tets_positive(&vd);
         printf("| %d | %.6g | %.3g | %d | %d | %.3g | %.3g | %.4f |\n", it.iteration, it.energy,
-               it.step, it.tets, it.scaffold_vertices, it.quality_min, it.quality_p5,
-               it.seconds);
+               it.step, it.tets, it.scaffold_vertices, it.quality_min, it.quality_p5, it.seconds);
     }
     const double *X = volume_deform_positions(&vd);
     const scaffold_view *v = volume_deform_scaffold(&vd);
@@ -88,7 +88,8 @@ int main(int argc, char **argv)
            t_iter, t_iter / iters);
     printf("bbox diagonal x%.3f (%.1f%% of the box diagonal, box/initial %.3f)\n", diag / diag0,
            100.0 * diag / box_diag, box_diag / diag0);
-    printf("every tet positive at every iteration: %s; surface intersection-free: %s (%lld pairs)\n",
+    printf("every tet positive at every iteration: %s; surface intersection-free: %s (%lld "
+           "pairs)\n",
            all_positive ? "yes" : "NO", r.intersection_free ? "yes" : "NO", r.pairs);
     if (argc > 6) { /* write the surface */
         memcpy(m.V, X, sizeof(double) * 3 * (size_t)m.nv);

@@ -20,6 +20,7 @@ int cmd_atlas(int argc, char **argv);
 int cmd_tet(int argc, char **argv);
 int cmd_deform(int argc, char **argv);
 int cmd_flow(int argc, char **argv);
+int cmd_inflate(int argc, char **argv);
 
 const command scaf_commands[] = {
     {"check",
@@ -35,6 +36,9 @@ const command scaf_commands[] = {
     {"flow",
      "conformalized mean curvature flow of a closed surface (until free of self-intersections)",
      cmd_flow},
+    {"inflate",
+     "grow a closed surface toward K times its size in a box, never self-intersecting (3D SCAF)",
+     cmd_inflate},
     {"tet", "tetrahedralize a box around a closed surface (TetGen, surface kept, checked exactly)",
      cmd_tet},
     {NULL, NULL, NULL}};

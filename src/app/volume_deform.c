@@ -11,11 +11,11 @@ volume_deform_options volume_deform_options_default(void)
 {
     volume_deform_options o;
     memset(&o, 0, sizeof o);
-    o.box_scale = 4.0;
+    o.box_scale = 3.76;
     o.box_cells = 8;
     o.lambda_ratio = VOLUME_DEFORM_LAMBDA_RATIO_DEFAULT;
     o.weight_ratio = 1.0;
-    o.solver = SCAF_SOLVER_SLIM;
+    o.solver = SCAF_SOLVER_NEWTON;
     return o;
 }
 
@@ -88,8 +88,8 @@ scaf_status volume_deform_step(volume_deform *vd, volume_deform_iteration *it, s
     r.step = I.step;
     r.tets = I.scaffold_triangles;
     r.scaffold_vertices = I.scaffold_vertices;
-    st = scaffold_tet_quality_stats(scaf_loop_scaffold_view(&vd->loop), vd->loop.uv,
-                                    &r.quality_min, &r.quality_p5, err);
+    st = scaffold_tet_quality_stats(scaf_loop_scaffold_view(&vd->loop), vd->loop.uv, &r.quality_min,
+                                    &r.quality_p5, err);
     r.seconds = timer_now() - t0;
     if (it) *it = r;
     return st;

@@ -90,8 +90,8 @@ static scaf_status tet_refresh(scaffold_provider *p, const double *X, const scaf
     for (int k = 0; k < t->s.n; k++) {
         const int *q = t->s.T + 4 * (size_t)k;
         if (!(orient3d(pos(t, X, q[0]), pos(t, X, q[1]), pos(t, X, q[2]), pos(t, X, q[3])) < 0))
-            return err_set(err, SCAF_ERR_INTERNAL, "tet scaffold: tet %d is not positively oriented",
-                           k);
+            return err_set(err, SCAF_ERR_INTERNAL,
+                           "tet scaffold: tet %d is not positively oriented", k);
     }
     double l2 = INFINITY;
     for (int f = 0; f < t->nf; f++)
