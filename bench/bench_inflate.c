@@ -4,7 +4,8 @@
  * the growth of the bounding-box diagonal, the bounding box against the
  * fixed box, and the exact checks (every tet positive at every iteration,
  * the surface free of self-intersections at the end).
- * usage: bench_inflate [FILE [K [ITERATIONS [LAMBDA_RATIO [newton]]]]] */
+ * usage: bench_inflate [FILE [K [ITERATIONS [LAMBDA_RATIO [newton|slim [OUT.obj]]]]]]
+ * (BOX_SCALE=S in the environment: another box scale). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -42,7 +43,7 @@ int main(int argc, char **argv)
     int iters = argc > 3 ? atoi(argv[3]) : 50;
     volume_deform_options o = volume_deform_options_default();
     if (argc > 4) o.lambda_ratio = atof(argv[4]);
-    if (argc > 5 && !strcmp(argv[5], "newton")) o.solver = SCAF_SOLVER_NEWTON;
+    if (argc > 5) o.solver = strcmp(argv[5], "slim") ? SCAF_SOLVER_NEWTON : SCAF_SOLVER_SLIM;
     if (getenv("BOX_SCALE")) o.box_scale = atof(getenv("BOX_SCALE"));
     mesh m;
     mesh_read_info info;
