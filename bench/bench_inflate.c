@@ -45,6 +45,7 @@ int main(int argc, char **argv)
     if (argc > 4) o.lambda_ratio = atof(argv[4]);
     if (argc > 5) o.solver = strcmp(argv[5], "slim") ? SCAF_SOLVER_NEWTON : SCAF_SOLVER_SLIM;
     if (getenv("BOX_SCALE")) o.box_scale = atof(getenv("BOX_SCALE"));
+    scaf_set_threads(1); /* as `scaf inflate` */
     mesh m;
     mesh_read_info info;
     scaf_error e;

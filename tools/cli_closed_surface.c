@@ -37,4 +37,3 @@ int cli_check_closed_surface(const char *cmd, const char *in, const mesh *m, con
             who);
     return EXIT_MESH;
 }
-

@@ -86,8 +86,10 @@ static scaf_status tet_refresh(scaffold_provider *p, const double *X, const scaf
             return st;
         }
     }
-    /* every tet positive, exactly (Shewchuk's orient3d < 0) */
-    for (int k = 0; k < t->s.n; k++) {
+    /* every tet positive, exactly (Shewchuk's orient3d < 0), after an
+     * improvement pass (TetGen's output is checked by tet_box_mesh; the
+     * loop's line search checks every tet of an accepted step) */
+    for (int k = 0; t->improve && k < t->s.n; k++) {
         const int *q = t->s.T + 4 * (size_t)k;
         if (!(orient3d(pos(t, X, q[0]), pos(t, X, q[1]), pos(t, X, q[2]), pos(t, X, q[3])) < 0))
             return err_set(err, SCAF_ERR_INTERNAL,

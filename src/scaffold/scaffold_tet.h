@@ -15,8 +15,9 @@
  * (scaffold_tet_set_improver: local operations on the worst tets that
  * never touch a surface triangle); without one the scaffold only deforms
  * (the line search keeps every tet positive; the run may lock as tets
- * flatten). Every tet is checked positive (exact orient3d) after each
- * refresh: SCAF_ERR_INTERNAL otherwise.
+ * flatten). After an improvement pass every tet is checked positive
+ * (exact orient3d): SCAF_ERR_INTERNAL otherwise (TetGen's tets are checked
+ * by geom/tet_box_mesh, the loop's steps by its line search).
  *
  * eps (the rest-volume guard): l^3 / (6 sqrt 6), l the shortest surface
  * edge at X: the volume of a regular tet of edge l divided by sqrt 3, as

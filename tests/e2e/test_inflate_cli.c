@@ -65,9 +65,8 @@ static void grows_and_writes(void **state)
     mesh_free(&a);
     mesh_free(&b);
     /* deterministic, also quiet */
-    assert_int_equal(test_capture(out, sizeof out,
-                                  "'%s' inflate '%s' -o '%s' -k 3 -n 8 -q 2>&1", SCAF_BINARY, in,
-                                  res2),
+    assert_int_equal(test_capture(out, sizeof out, "'%s' inflate '%s' -o '%s' -k 3 -n 8 -q 2>&1",
+                                  SCAF_BINARY, in, res2),
                      0);
     assert_string_equal(out, "");
     char *x = test_slurp(res), *y = test_slurp(res2);
@@ -119,8 +118,14 @@ static void refusals(void **state)
     assert_non_null(strstr(out, "intersects itself"));
     assert_false(test_exists(res));
     /* usage */
-    const char *bad[] = {"",          "-k 0",       "-k x",          "-k 2 -n 0",
-                         "-k 2 -n x", "-k 2 --box-scale 1", "-k 2 --solver cg", "-k 2 --frobnicate",
+    const char *bad[] = {"",
+                         "-k 0",
+                         "-k x",
+                         "-k 2 -n 0",
+                         "-k 2 -n x",
+                         "-k 2 --box-scale 1",
+                         "-k 2 --solver cg",
+                         "-k 2 --frobnicate",
                          "-k"};
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++)
         assert_int_equal(
