@@ -5,7 +5,8 @@
  * fixed box, and the exact checks (every tet positive at every iteration,
  * the surface free of self-intersections at the end).
  * usage: bench_inflate [FILE [K [ITERATIONS [LAMBDA_RATIO [newton|slim [OUT.obj]]]]]]
- * (BOX_SCALE=S in the environment: another box scale). */
+ * Environment: BOX_SCALE=S another box scale; IMPROVE=0 no improvement
+ * pass, IMPROVE_TRIES / _GOAL / _PASSES its options. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -45,6 +46,10 @@ int main(int argc, char **argv)
     if (argc > 4) o.lambda_ratio = atof(argv[4]);
     if (argc > 5) o.solver = strcmp(argv[5], "slim") ? SCAF_SOLVER_NEWTON : SCAF_SOLVER_SLIM;
     if (getenv("BOX_SCALE")) o.box_scale = atof(getenv("BOX_SCALE"));
+    if (getenv("IMPROVE_TRIES")) o.improve_opt.max_tries = atoll(getenv("IMPROVE_TRIES"));
+    if (getenv("IMPROVE_GOAL")) o.improve_opt.quality_goal = atof(getenv("IMPROVE_GOAL"));
+    if (getenv("IMPROVE_PASSES")) o.improve_opt.max_passes = atoi(getenv("IMPROVE_PASSES"));
+    if (getenv("IMPROVE")) o.improve = atoi(getenv("IMPROVE"));
     scaf_set_threads(1); /* as `scaf inflate` */
     mesh m;
     mesh_read_info info;

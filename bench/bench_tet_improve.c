@@ -37,7 +37,8 @@ static uint64_t rng_next(uint64_t *s)
 static void perturb(tet_scaffold *s, double reach, uint64_t seed)
 {
     int *start = calloc((size_t)s->nv + 1, sizeof(int));
-    int *list = malloc(sizeof(int) * 4 * (size_t)s->nt), *fill = malloc(sizeof(int) * (size_t)s->nv);
+    int *list = malloc(sizeof(int) * 4 * (size_t)s->nt),
+        *fill = malloc(sizeof(int) * (size_t)s->nv);
     if (!start || !list || !fill) exit(1);
     for (int i = 0; i < 4 * s->nt; i++) start[s->T[i] + 1]++;
     for (int v = 0; v < s->nv; v++) start[v + 1] += start[v];
@@ -68,7 +69,8 @@ static void perturb(tet_scaffold *s, double reach, uint64_t seed)
 static void report(const char *name, const char *what, double secs, const tet_improve_stats *st,
                    int tets_first)
 {
-    printf("| %s | %s | %.4f | %d -> %d | %.3f -> %.3f | %.3f -> %.3f | %lld / %lld / %lld / %lld / "
+    printf("| %s | %s | %.4f | %d -> %d | %.3f -> %.3f | %.3f -> %.3f | %lld / %lld / %lld / %lld "
+           "/ "
            "%lld / %lld | %lld |\n",
            name, what, secs, tets_first, st->tets_after, st->min_before, st->min_after,
            st->p5_before, st->p5_after, st->flip23, st->flip32, st->edge_removal, st->smooth,
@@ -137,7 +139,8 @@ int main(int argc, char **argv)
     printf("options: goal %.2f, passes %d, tries %lld, ops %u\n\n", o.quality_goal, o.max_passes,
            o.max_tries, o.ops);
     printf("| mesh | scaffold | s per pass | tets | min quality | 5th percentile | 2-3 / 3-2 / "
-           "edge removal / smooth / contract / split | tries |\n|---|---|---|---|---|---|---|---|\n");
+           "edge removal / smooth / contract / split | tries "
+           "|\n|---|---|---|---|---|---|---|---|\n");
     mesh m;
     if (mesh_sample_make("icosphere", 10, &m, NULL) == SCAF_OK) {
         run("icosphere 10", &m, &o);

@@ -173,7 +173,7 @@ static int run_inflate(const char *in, mesh *m, double K, int iterations,
 static scaf_status write_tets(const char *path, const volume_deform *vd, scaf_error *err)
 {
     const scaffold_view *v = volume_deform_scaffold(vd);
-    const scaffold_tets *s = scaffold_tet_get(vd->scaffold);
+    const signed char *inside = scaffold_tet_inside(vd->scaffold);
     int nv = v->nmesh + v->nextra;
     double *P = malloc(sizeof(double) * 3 * (size_t)nv);
     int *label = malloc(sizeof(int) * (size_t)(v->n > 0 ? v->n : 1));
@@ -181,7 +181,7 @@ static scaf_status write_tets(const char *path, const volume_deform *vd, scaf_er
     if (st == SCAF_OK) {
         memcpy(P, volume_deform_positions(vd), sizeof(double) * 3 * (size_t)v->nmesh);
         memcpy(P + 3 * (size_t)v->nmesh, v->extra, sizeof(double) * 3 * (size_t)v->nextra);
-        for (int t = 0; t < v->n; t++) label[t] = s->inside[t] ? 1 : 2;
+        for (int t = 0; t < v->n; t++) label[t] = inside[t] ? 1 : 2;
         st = tet_medit_write(path, nv, P, v->n, v->simplices, label, err);
     }
     free(P);

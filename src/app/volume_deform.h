@@ -40,16 +40,21 @@
 
 #include "opt/surface_arap_term.h"
 #include "scaffold/scaf_loop.h"
+#include "scaffold/tet_improve.h"
 
 #define VOLUME_DEFORM_LAMBDA_RATIO_DEFAULT 0.003
 
 typedef struct volume_deform_options {
-    double box_scale;    /* 3.76 (> 1) */
-    int box_cells;       /* 8 (1..64) */
-    double lambda_ratio; /* VOLUME_DEFORM_LAMBDA_RATIO_DEFAULT (> 0) */
-    double weight_ratio; /* 1 (> 0) */
-    scaf_solver solver;  /* SCAF_SOLVER_NEWTON (falls back to SLIM when a
+    double box_scale;                /* 3.76 (> 1) */
+    int box_cells;                   /* 8 (1..64) */
+    double lambda_ratio;             /* VOLUME_DEFORM_LAMBDA_RATIO_DEFAULT (> 0) */
+    double weight_ratio;             /* 1 (> 0) */
+    scaf_solver solver;              /* SCAF_SOLVER_NEWTON (falls back to SLIM when a
                             Newton step fails) or SCAF_SOLVER_SLIM */
+    int improve;                     /* 1: the scaffold improvement pass every iteration
+                            (scaffold/scaffold_tet) */
+    tet_improve_options improve_opt; /* its options (tet_improve's
+                                        defaults, at most 1000 tries) */
 } volume_deform_options;
 
 volume_deform_options volume_deform_options_default(void);
