@@ -10,7 +10,8 @@
  * normalized positions. Exit status: 0 written, 2 usage, 3 input
  * unreadable, 4 not a closed manifold surface without zero-area faces,
  * 5 output not written, 6 the flow failed or did not free the surface,
- * 7 out of memory, 8 interrupted. --report writes a JSON of the steps.
+ * 7 out of memory, 8 interrupted. --report writes a JSON of the steps,
+ * --png a picture of the input and the flowed surface side by side.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,6 +25,7 @@
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
+#include "cli_surface_png.h"
 #include "exit_codes.h"
 #include "geom/self_intersect.h"
 #include "mesh/mesh_io.h"
@@ -36,7 +38,7 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: scaf flow IN -o OUT.obj --steps N [--delta D] [--until-free] [--report "
             "R.json]\n"
-            "                 [--quiet]\n"
+            "                 [--png P.png [--png-size N]] [--quiet]\n"
             "\n"
             "Conformalized mean curvature flow (Kazhdan, Solomon, Ben-Chen 2012) of the\n"
             "closed surface IN: it becomes rounder at every step and, after a few, free of\n"
@@ -54,10 +56,17 @@ static void usage(FILE *out)
             "                     fail (exit 6) if none of the N steps is\n"
             "  --report FILE      a JSON report: delta, steps done, whether the result is\n"
             "                     free, and per step its seconds (with --until-free its\n"
-            "                     defects: intersecting face pairs + zero-area faces)\n"
-            "  -q, --quiet        no per-step lines on stderr (step, seconds, and with\n"
-            "                     --until-free the intersecting face pairs)\n" CLI_OUTPUTS_HELP
-            "\n",
+            "                     defects: intersecting face pairs + zero-area "
+            "faces)\n" CLI_SURFACE_PNG_HELP(
+                "the input and the flowed surface side by side\n"
+                "                     (both in the normalized frame)") "  -q, --quiet        no "
+                                                                       "per-step lines on stderr "
+                                                                       "(step, seconds, and with\n"
+                                                                       "                     "
+                                                                       "--until-free the "
+                                                                       "intersecting face "
+                                                                       "pairs)\n" CLI_OUTPUTS_HELP
+                                                                       "\n",
             FLOW_MAX_STEPS);
     exit_codes_print(out);
 }
@@ -118,8 +127,10 @@ static scaf_status write_report(const char *path, const char *in, double delta, 
     return atomic_commit(&a, err);
 }
 
-/* Flow m->V in place. 0, or the exit status after printing why. */
-static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet, flow_log *g)
+/* Flow m->V in place; the normalized input is copied to start (NULL: not
+ * kept). 0, or the exit status after printing why. */
+static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet, flow_log *g,
+                    double *start)
 {
     scaf_error err;
     err_clear(&err);
@@ -131,6 +142,7 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet,
         cmcf_free(&f);
         return exit_code_for(st);
     }
+    if (start) memcpy(start, m->V, sizeof(double) * 3 * (size_t)m->nv);
     int rc = EXIT_OK;
     long long defects = -1;
     char what[128] = "";
@@ -181,8 +193,13 @@ static int flow_main(int argc, char **argv)
     const char *in = NULL, *out = NULL, *report = NULL;
     double delta = 1e-3;
     int steps = 0, until_free = 0, quiet = 0;
+    cli_surface_png png;
+    cli_surface_png_init(&png);
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int taken = cli_surface_png_option("flow", argc, argv, &i, &png);
+        if (taken < 0) return EXIT_USAGE;
+        if (taken) continue;
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             usage(stdout);
             return EXIT_OK;
@@ -215,10 +232,12 @@ static int flow_main(int argc, char **argv)
                            : "missing --steps N");
         return EXIT_USAGE;
     }
+    if (cli_surface_png_finish("flow", &png) < 0) return EXIT_USAGE;
     cli_outputs outs;
     cli_outputs_init(&outs, "flow", in);
     int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
     int kr = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
+    int kp = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
     int rc = cli_outputs_check(&outs);
     if (rc != EXIT_OK) return rc;
     mesh m;
@@ -226,11 +245,12 @@ static int flow_main(int argc, char **argv)
     if ((rc = cli_read_mesh("flow", in, quiet, &m, &info)) != EXIT_OK) return rc;
     flow_log g = {0, malloc(sizeof(double) * (size_t)steps),
                   malloc(sizeof(long long) * (size_t)steps), -1};
-    if (!g.seconds || !g.defects) {
+    double *start = kp >= 0 ? malloc(sizeof(double) * 3 * (size_t)(m.nv > 0 ? m.nv : 1)) : NULL;
+    if (!g.seconds || !g.defects || (kp >= 0 && !start)) {
         fprintf(stderr, "scaf flow: out of memory\n");
         rc = EXIT_NOMEM;
     } else if ((rc = cli_check_closed_surface("flow", in, &m, "the flow")) == EXIT_OK) {
-        rc = run_flow(&m, steps, delta, until_free, quiet, &g);
+        rc = run_flow(&m, steps, delta, until_free, quiet, &g, start);
     }
     if (rc == EXIT_OK && cli_signal_report("flow")) rc = EXIT_CANCELLED;
     if (rc == EXIT_OK) {
@@ -244,11 +264,14 @@ static int flow_main(int argc, char **argv)
                 &outs, kr, path ? write_report(path, in, delta, until_free, &g, &err) : SCAF_ERR_IO,
                 &err);
         }
+        surface_view panels[2] = {{m.nv, start, m.nf, m.F}, {m.nv, m.V, m.nf, m.F}};
+        if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, 2, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }
     cli_outputs_abort(&outs);
     free(g.seconds);
     free(g.defects);
+    free(start);
     mesh_free(&m);
     return rc;
 }
