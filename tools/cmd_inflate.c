@@ -9,7 +9,8 @@
  * every tet stays positively oriented (exact), so the surface stays free
  * of self-intersections. Writes the input's vertices and faces at the new
  * positions; --tets the final tet mesh (MEDIT .mesh, label 1 inside the
- * surface, 2 outside); --report the iterations. Exit status: 0 written,
+ * surface, 2 outside); --report the iterations; --png the input and the
+ * result side by side (app/surface_render). Exit status: 0 written,
  * 2 usage, 3 input unreadable, 4 not a closed manifold surface free of
  * self-intersections (nothing to mesh), 5 output not written, 6 numerical
  * failure, 7 out of memory, 8 interrupted.
@@ -27,6 +28,7 @@
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
+#include "cli_surface_png.h"
 #include "exit_codes.h"
 #include "mesh/mesh_io.h"
 #include "mesh/tet_medit.h"
@@ -39,8 +41,8 @@ static void usage(FILE *out)
     volume_deform_options d = volume_deform_options_default();
     fprintf(out,
             "usage: scaf inflate IN -o OUT.obj --scale K [--iterations N] [--tets OUT.mesh]\n"
-            "                    [--report R.json] [--box-scale S] [--solver slim|newton]\n"
-            "                    [--quiet]\n"
+            "                    [--report R.json] [--png P.png [--png-size N]] [--box-scale S]\n"
+            "                    [--solver slim|newton] [--quiet]\n"
             "\n"
             "Grow the closed surface IN toward K times its size (scaled about its centroid)\n"
             "inside a fixed box around it: the 3D SCAF loop, with tetrahedra filling the box\n"
@@ -58,12 +60,21 @@ static void usage(FILE *out)
             "  --report FILE      a JSON report: the box, the bounding-box diagonal before\n"
             "                     and after, and per iteration the surface energy, step,\n"
             "                     scaffold tets and vertices, tet quality (minimum and 5th\n"
-            "                     percentile of 6 sqrt(2) V / l_rms^3) and seconds\n"
-            "  --box-scale S      the box: the bounding box scaled S times about its\n"
-            "                     centre, > 1 (default %g)\n"
-            "  --solver NAME      newton (default: projected Newton, falls back to SLIM\n"
-            "                     when its step fails) or slim\n"
-            "  -q, --quiet        no per-iteration lines on stderr\n" CLI_OUTPUTS_HELP "\n",
+            "                     percentile of 6 sqrt(2) V / l_rms^3) and "
+            "seconds\n" CLI_SURFACE_PNG_HELP(
+                "the input and the inflated surface side by side") "  --box-scale S      the box: "
+                                                                   "the bounding box scaled S "
+                                                                   "times about its\n"
+                                                                   "                     centre, > "
+                                                                   "1 (default %g)\n"
+                                                                   "  --solver NAME      newton "
+                                                                   "(default: projected Newton, "
+                                                                   "falls back to SLIM\n"
+                                                                   "                     when its "
+                                                                   "step fails) or slim\n"
+                                                                   "  -q, --quiet        no "
+                                                                   "per-iteration lines on "
+                                                                   "stderr\n" CLI_OUTPUTS_HELP "\n",
             INFLATE_MAX_ITERATIONS, d.box_scale);
     exit_codes_print(out);
 }
@@ -195,8 +206,13 @@ static int inflate_main(int argc, char **argv)
     double K = 0.0;
     int iterations = 50, quiet = 0;
     volume_deform_options o = volume_deform_options_default();
+    cli_surface_png png;
+    cli_surface_png_init(&png);
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int taken = cli_surface_png_option("inflate", argc, argv, &i, &png);
+        if (taken < 0) return EXIT_USAGE;
+        if (taken) continue;
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             usage(stdout);
             return EXIT_OK;
@@ -241,11 +257,13 @@ static int inflate_main(int argc, char **argv)
                            : "missing --scale K");
         return EXIT_USAGE;
     }
+    if (cli_surface_png_finish("inflate", &png) < 0) return EXIT_USAGE;
     cli_outputs outs;
     cli_outputs_init(&outs, "inflate", in);
     int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
     int kt = cli_outputs_add(&outs, "--tets", tets, CLI_OUTPUT_FILE);
     int kr = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
+    int kp = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
     int rc = cli_outputs_check(&outs);
     if (rc != EXIT_OK) return rc;
     /* one BLAS thread: the 3D systems are small next to their assembly and
@@ -258,9 +276,11 @@ static int inflate_main(int argc, char **argv)
     inflate_log g;
     memset(&g, 0, sizeof g);
     g.it = malloc(sizeof *g.it * (size_t)iterations);
+    double *start = kp >= 0 ? malloc(sizeof(double) * 3 * (size_t)(m.nv > 0 ? m.nv : 1)) : NULL;
+    if (start) memcpy(start, m.V, sizeof(double) * 3 * (size_t)m.nv);
     volume_deform vd;
     memset(&vd, 0, sizeof vd);
-    if (!g.it) {
+    if (!g.it || (kp >= 0 && !start)) {
         fprintf(stderr, "scaf inflate: out of memory\n");
         rc = EXIT_NOMEM;
     } else if ((rc = cli_check_closed_surface("inflate", in, &m, "inflate")) == EXIT_OK) {
@@ -281,9 +301,12 @@ static int inflate_main(int argc, char **argv)
             rc = cli_outputs_end(&outs, kr,
                                  path ? write_report(path, in, K, &g, &err) : SCAF_ERR_IO, &err);
         }
+        surface_view panels[2] = {{m.nv, start, m.nf, m.F}, {m.nv, m.V, m.nf, m.F}};
+        if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, 2, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }
     cli_outputs_abort(&outs);
+    free(start);
     volume_deform_free(&vd);
     free(g.it);
     mesh_free(&m);

@@ -103,8 +103,8 @@ static scaf_status check_surface(const surface_view *s, int panel, scaf_error *e
             const double *p = s->V + 3 * (size_t)v;
             if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2]))
                 return err_set(err, SCAF_ERR_MESH,
-                               "picture panel %d: vertex %d has a non-finite coordinate",
-                               panel + 1, v);
+                               "picture panel %d: vertex %d has a non-finite coordinate", panel + 1,
+                               v);
         }
     return SCAF_OK;
 }
@@ -221,7 +221,8 @@ static void draw_panel(const camera *c, const surface_view *s, const surface_ren
                 double depth = 0.0;
                 for (int k = 0; k < 3; k++) {
                     const double *a = p[(k + 1) % 3], *b = p[(k + 2) % 3];
-                    double w = ((b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])) / area;
+                    double w =
+                        ((b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])) / area;
                     depth += w * z[k];
                 }
                 double *zb = zbuf + (size_t)j * W + i;

@@ -46,7 +46,10 @@ static const unsigned char *px(const unsigned char *img, int W, int i, int j)
     return img + 3 * ((size_t)j * W + i);
 }
 
-static int is_background(const unsigned char *p) { return p[0] == 255 && p[1] == 255 && p[2] == 255; }
+static int is_background(const unsigned char *p)
+{
+    return p[0] == 255 && p[1] == 255 && p[2] == 255;
+}
 
 static int brightness(const unsigned char *p) { return p[0] + p[1] + p[2]; }
 
@@ -214,9 +217,9 @@ static void refuses_bad_input(void **state)
     }
     surface_render_options o = opts();
     assert_int_equal(surface_render_panels(0, &v, &o, &img, &W, &H, &err), SCAF_ERR_USAGE);
-    assert_int_equal(surface_render_panels(SURFACE_RENDER_MAX_PANELS + 1, &v, &o, &img, &W, &H,
-                                           &err),
-                     SCAF_ERR_USAGE);
+    assert_int_equal(
+        surface_render_panels(SURFACE_RENDER_MAX_PANELS + 1, &v, &o, &img, &W, &H, &err),
+        SCAF_ERR_USAGE);
     o.elevation = 90;
     assert_int_equal(surface_render_panels(1, &v, &o, &img, &W, &H, &err), SCAF_ERR_USAGE);
     o = opts();

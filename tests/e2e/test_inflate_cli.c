@@ -1,8 +1,8 @@
 /* End-to-end: `scaf inflate` grows an icosphere inside its box, writes the
  * input's connectivity at new positions that `scaf check` finds free of
  * self-intersections, the final tets that `scaf check` finds positive and
- * a report with one entry per iteration; the same run twice writes the
- * same bytes; an open, a non-manifold and a self-intersecting surface are
+ * a report with one entry per iteration and a --png picture; the same
+ * run twice writes the same bytes; an open, a non-manifold and a self-intersecting surface are
  * refused (exit 4) and bad command lines (exit 2), nothing written;
  * interrupted, nothing is left (exit 8). */
 #include <setjmp.h>
@@ -69,6 +69,23 @@ static void grows_and_writes(void **state)
                                   SCAF_BINARY, in, res2),
                      0);
     assert_string_equal(out, "");
+    /* --png: the input and the result side by side */
+    char png[1024];
+    test_tmp_path("inflate_cli_big.png", png, sizeof png);
+    remove(png);
+    assert_int_equal(test_run("'%s' inflate '%s' -o '%s' -k 3 -n 2 -q --png '%s' --png-size 64",
+                              SCAF_BINARY, in, res2, png),
+                     0);
+    FILE *pf = fopen(png, "rb");
+    assert_non_null(pf);
+    unsigned char sig[8];
+    assert_int_equal(fread(sig, 1, 8, pf), 8);
+    fclose(pf);
+    assert_memory_equal(sig, "\x89PNG\r\n\x1a\n", 8);
+    assert_int_equal(test_run("'%s' inflate '%s' -o '%s' -k 3 -q --png-size 64 2>/dev/null",
+                              SCAF_BINARY, in, res2),
+                     2);
+    assert_int_equal(test_run("'%s' inflate '%s' -o '%s' -k 3 -n 8 -q", SCAF_BINARY, in, res2), 0);
     char *x = test_slurp(res), *y = test_slurp(res2);
     assert_non_null(x);
     assert_non_null(y);
