@@ -69,17 +69,17 @@ static void perturb(tet_scaffold *s, double reach, uint64_t seed)
 static void report(const char *name, const char *what, double secs, const tet_improve_stats *st,
                    int tets_first)
 {
-    printf("| %s | %s | %.4f | %d -> %d | %.3f -> %.3f | %.3f -> %.3f | %lld / %lld / %lld / %lld "
-           "/ "
-           "%lld / %lld | %lld |\n",
+    printf("| %s | %s | %.4f | %d -> %d | %.3f -> %.3f | %.3f -> %.3f "
+           "| %lld / %lld / %lld / %lld / %lld / %lld / %lld | %lld |\n",
            name, what, secs, tets_first, st->tets_after, st->min_before, st->min_after,
-           st->p5_before, st->p5_after, st->flip23, st->flip32, st->edge_removal, st->smooth,
-           st->contract, st->split, st->tries);
+           st->p5_before, st->p5_after, st->flip23, st->flip32, st->edge_removal, st->multi_face,
+           st->smooth, st->contract, st->split, st->tries);
 }
 
 static void add_counts(tet_improve_stats *sum, const tet_improve_stats *st)
 {
     sum->flip23 += st->flip23, sum->flip32 += st->flip32, sum->edge_removal += st->edge_removal;
+    sum->multi_face += st->multi_face;
     sum->smooth += st->smooth, sum->contract += st->contract, sum->split += st->split;
     sum->tries += st->tries;
 }
@@ -139,7 +139,7 @@ int main(int argc, char **argv)
     printf("options: goal %.2f, passes %d, tries %lld, ops %u\n\n", o.quality_goal, o.max_passes,
            o.max_tries, o.ops);
     printf("| mesh | scaffold | s per pass | tets | min quality | 5th percentile | 2-3 / 3-2 / "
-           "edge removal / smooth / contract / split | tries "
+           "edge removal / multi-face / smooth / contract / split | tries "
            "|\n|---|---|---|---|---|---|---|---|\n");
     mesh m;
     if (mesh_sample_make("icosphere", 10, &m, NULL) == SCAF_OK) {

@@ -10,6 +10,9 @@
  *                  programming); m = 3 is the 3-2 flip
  *   2-3 flip       two tets sharing a face replaced by three around the
  *                  edge joining their apexes
+ *   multi-face     the same for k >= 2 faces sandwiched between two
+ *   removal        apexes: 2k tets replaced by k + 2 (grown greedily from
+ *                  the bad tet's face)
  *   smoothing      a free scaffold-only vertex moved to raise the worst
  *                  quality of the tets around it (gradient of the worst,
  *                  then of the near-worst, then the centroid; line search)
@@ -43,7 +46,8 @@ enum {
     TET_OP_SMOOTH = 4,
     TET_OP_CONTRACT = 8,
     TET_OP_SPLIT = 16,
-    TET_OP_ALL = 31
+    TET_OP_MULTI_FACE = 32,
+    TET_OP_ALL = 63
 };
 
 typedef struct tet_improve_options {
@@ -65,6 +69,7 @@ typedef struct tet_improve_stats {
     int below_goal_before, below_goal_after; /* tets under quality_goal */
     long long flip23, flip32;                /* 2-3 and 3-2 flips applied */
     long long edge_removal;                  /* edge removals with rings of 4 or more */
+    long long multi_face;                    /* multi-face removals (2 faces or more) */
     long long smooth;                        /* vertex moves */
     long long contract, split;               /* vertices removed, added */
     long long tries;                         /* operations evaluated */

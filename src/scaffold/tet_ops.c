@@ -203,6 +203,103 @@ int tet_ops_flip23(tet_ops *c, int t, int f)
     return 1;
 }
 
+/* ---- multi-face removal ---- */
+
+#define MAX_SANDWICH 10 /* most faces removed at once */
+
+/* The faces sandwiched between two apexes a and b: a triangulated polygon
+ * w[0..m-1] (m = faces + 2), each of its faces g with the tets (g, a)
+ * and (g, b); removing them leaves the m tets (a, b, w[i], w[i+1]) around
+ * the new edge a-b. ta[i], tb[i]: the tets on the a and b sides of the
+ * face holding the polygon edge (w[i], w[i+1]). */
+typedef struct sandwich {
+    int m, nold;
+    int w[MAX_SANDWICH + 2], ta[MAX_SANDWICH + 2], tb[MAX_SANDWICH + 2];
+    int old[2 * MAX_SANDWICH];
+    double qold; /* worst of the old tets */
+} sandwich;
+
+/* The tet across the face of tet t made of u, v and apex (all corners of
+ * t), when it is live, of the same region and the face is not protected;
+ * its corner off that face goes to *x. -1 otherwise. */
+static int across(const tet_scaffold *s, int t, int u, int v, int apex, int *x)
+{
+    const int *q = s->T + 4 * t;
+    int f = 0;
+    while (q[f] == u || q[f] == v || q[f] == apex) f++;
+    int n = s->nbr[4 * t + f];
+    if (n < 0 || (s->protect[t] >> f) & 1 || s->region[n / 4] != s->region[t]) return -1;
+    *x = s->T[4 * (n / 4) + n % 4];
+    return n / 4;
+}
+
+/* Grow the sandwich of face f of tet t (a 2-3 flip's two tets) one face at
+ * a time, across the polygon edge that leaves the best new tets, keeping
+ * the best sandwich of two or more faces whose new tets beat its old
+ * ones; apply it. */
+int tet_ops_multi_face(tet_ops *c, int t, int f)
+{
+    tet_scaffold *s = c->s;
+    int n = s->nbr[4 * t + f];
+    if (n < 0 || (s->protect[t] >> f) & 1) return 0;
+    int u = n / 4;
+    if (s->region[u] != s->region[t]) return 0;
+    c->st->tries++;
+    int a = s->T[4 * t + f], b = s->T[4 * u + n % 4];
+    sandwich cur, best;
+    cur.m = 3, cur.nold = 2, cur.old[0] = t, cur.old[1] = u;
+    cur.qold = s->q[t] < s->q[u] ? s->q[t] : s->q[u];
+    for (int k = 0; k < 3; k++)
+        cur.w[k] = s->T[4 * t + tet_face_corner[f][k]], cur.ta[k] = t, cur.tb[k] = u;
+    double best_q = -INFINITY;
+    while (cur.nold < 2 * MAX_SANDWICH) {
+        int pick = -1, pick_x = -1, pick_a = -1, pick_b = -1;
+        double pick_q = -INFINITY;
+        for (int i = 0; i < cur.m; i++) {
+            int w0 = cur.w[i], w1 = cur.w[(i + 1) % cur.m], xa, xb;
+            int na = across(s, cur.ta[i], w0, w1, a, &xa);
+            int nb = na < 0 ? -1 : across(s, cur.tb[i], w0, w1, b, &xb);
+            if (nb < 0 || xa != xb || xa == a || xa == b) continue;
+            /* the sandwiched face (w0, w1, x), opposite a in na */
+            if ((s->protect[na] >> local_index(s->T + 4 * na, a)) & 1) continue;
+            int in_polygon = 0;
+            for (int k = 0; k < cur.m; k++) in_polygon |= cur.w[k] == xa;
+            if (in_polygon) continue;
+            /* the new tets with (w0, w1) replaced by (w0, x), (x, w1) */
+            int q1[4] = {a, b, w0, xa}, q2[4] = {a, b, xa, w1};
+            double q = fmin(quality4(s, q1), quality4(s, q2));
+            for (int k = 0; k < cur.m && q > pick_q; k++) {
+                if (k == i) continue;
+                int q3[4] = {a, b, cur.w[k], cur.w[(k + 1) % cur.m]};
+                q = fmin(q, quality4(s, q3));
+            }
+            if (q > pick_q) pick_q = q, pick = i, pick_x = xa, pick_a = na, pick_b = nb;
+        }
+        if (pick < 0) break;
+        /* insert x after w[pick] */
+        for (int k = cur.m; k > pick + 1; k--)
+            cur.w[k] = cur.w[k - 1], cur.ta[k] = cur.ta[k - 1], cur.tb[k] = cur.tb[k - 1];
+        cur.w[pick + 1] = pick_x;
+        cur.ta[pick] = cur.ta[pick + 1] = pick_a;
+        cur.tb[pick] = cur.tb[pick + 1] = pick_b;
+        cur.m++;
+        cur.old[cur.nold++] = pick_a;
+        cur.old[cur.nold++] = pick_b;
+        cur.qold = fmin(cur.qold, fmin(s->q[pick_a], s->q[pick_b]));
+        if (pick_q > cur.qold + MIN_GAIN && pick_q > best_q) best_q = pick_q, best = cur;
+    }
+    if (best_q == -INFINITY) return 0;
+    int newT[4 * (MAX_SANDWICH + 2)];
+    for (int i = 0; i < best.m; i++) {
+        int q[4] = {a, b, best.w[i], best.w[(i + 1) % best.m]};
+        memcpy(newT + 4 * i, q, sizeof q);
+    }
+    if (!all_positive(s, newT, best.m)) return 0;
+    if (!apply(c, best.nold, best.old, best.m, newT)) return 0;
+    c->st->multi_face++;
+    return 1;
+}
+
 /* ---- vertex stars ---- */
 
 /* The tets holding vertex v (at most MAX_STAR; -1 beyond), and whether v
@@ -417,6 +514,9 @@ int tet_ops_improve_tet(tet_ops *c, int t, unsigned ops)
     if (ops & TET_OP_FLIP23)
         for (int f = 0; f < 4 && !tet_ops_exhausted(c); f++)
             if (tet_ops_flip23(c, t, f)) return 1;
+    if (ops & TET_OP_MULTI_FACE)
+        for (int f = 0; f < 4 && !tet_ops_exhausted(c); f++)
+            if (tet_ops_multi_face(c, t, f)) return 1;
     int corner[4];
     memcpy(corner, s->T + 4 * t, sizeof corner);
     if (ops & TET_OP_SMOOTH)

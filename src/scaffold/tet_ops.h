@@ -31,6 +31,11 @@ int tet_ops_edge_removal(tet_ops *c, int t, int i, int j);
 /* 2-3 flip of face f of tet t. */
 int tet_ops_flip23(tet_ops *c, int t, int f);
 
+/* Multi-face removal: the faces sandwiched between the apexes of the two
+ * tets at face f of tet t (two or more, grown from face f) replaced by
+ * the tets around the edge joining the apexes. */
+int tet_ops_multi_face(tet_ops *c, int t, int f);
+
 /* Move the free scaffold-only vertex v. */
 int tet_ops_smooth(tet_ops *c, int v);
 
@@ -43,7 +48,8 @@ int tet_ops_contract(tet_ops *c, int v);
 int tet_ops_split(tet_ops *c, int t, int i, int j);
 
 /* Try the allowed operations (TET_OP_* mask) on tet t, in the order
- * edge removal, 2-3 flip, smoothing, contraction, split; 1 when one was
+ * edge removal, 2-3 flip, multi-face removal, smoothing, contraction,
+ * split; 1 when one was
  * applied. */
 int tet_ops_improve_tet(tet_ops *c, int t, unsigned ops);
 

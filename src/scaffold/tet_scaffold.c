@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "geom/simplex_arrays.h"
+#include "geom/tet_faces.h"
 #include "geom/tet_orient.h"
 
 const int tet_face_corner[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
@@ -79,15 +80,6 @@ void tet_scaffold_remove_vertex(tet_scaffold *s, int v) { s->vtet[v] = -2; }
 
 /* ---- faces ---- */
 
-static void sorted3(const int *f, int out[3])
-{
-    int a = f[0], b = f[1], c = f[2], t;
-    if (a > b) t = a, a = b, b = t;
-    if (b > c) t = b, b = c, c = t;
-    if (a > b) t = a, a = b, b = t;
-    out[0] = a, out[1] = b, out[2] = c;
-}
-
 /* 0 or 1: the parity of the permutation that sorts (a, b, c). Two tets
  * see a shared face from opposite sides iff their outward corner orders
  * have different parities. */
@@ -98,54 +90,21 @@ static void face_of(const int *q, int f, int out[3])
     for (int k = 0; k < 3; k++) out[k] = q[tet_face_corner[f][k]];
 }
 
-typedef struct face_ref {
-    int v[3]; /* sorted corners */
-    int at;   /* 4 tet + face */
-} face_ref;
-
-static int cmp_face(const void *pa, const void *pb)
-{
-    const face_ref *a = pa, *b = pb;
-    for (int k = 0; k < 3; k++)
-        if (a->v[k] != b->v[k]) return a->v[k] < b->v[k] ? -1 : 1;
-    return (a->at > b->at) - (a->at < b->at);
-}
-
-static int find_face(const face_ref *fr, int n, const int key[3])
-{
-    int lo = 0, hi = n;
-    face_ref probe = {{key[0], key[1], key[2]}, -1};
-    while (lo < hi) {
-        int mid = lo + (hi - lo) / 2;
-        if (cmp_face(&fr[mid], &probe) < 0) lo = mid + 1;
-        else hi = mid;
-    }
-    return lo < n && !memcmp(fr[lo].v, key, sizeof key[0] * 3) ? lo : -1;
-}
-
 /* Adjacency and protected flags from scratch. */
 static scaf_status build_faces(tet_scaffold *s, int nprot, const int *prot, scaf_error *err)
 {
     size_t nref = 4 * (size_t)s->nt;
-    face_ref *fr = malloc(sizeof *fr * (nref > 0 ? nref : 1));
+    tet_face_ref *fr = tet_faces_sorted(s->nt, s->T);
     if (!fr) return err_nomem(err, "scaffold faces");
-    for (int t = 0; t < s->nt; t++)
-        for (int f = 0; f < 4; f++) {
-            int c[3];
-            face_of(s->T + 4 * (size_t)t, f, c);
-            sorted3(c, fr[4 * (size_t)t + f].v);
-            fr[4 * (size_t)t + f].at = 4 * t + f;
-        }
-    qsort(fr, nref, sizeof *fr, cmp_face);
     scaf_status st = SCAF_OK;
     for (size_t i = 0, j; i < nref && st == SCAF_OK; i = j) {
         for (j = i + 1; j < nref && !memcmp(fr[j].v, fr[i].v, sizeof fr[0].v); j++) {}
-        int a = fr[i].at;
+        int a = 4 * fr[i].tet + fr[i].side;
         if (j - i == 1) {
             s->nbr[a] = -1;
             continue;
         }
-        int b = fr[i + 1].at, ca[3], cb[3];
+        int b = 4 * fr[i + 1].tet + fr[i + 1].side, ca[3], cb[3];
         face_of(s->T + 4 * (size_t)(a / 4), a % 4, ca);
         face_of(s->T + 4 * (size_t)(b / 4), b % 4, cb);
         if (j - i > 2)
@@ -158,17 +117,17 @@ static scaf_status build_faces(tet_scaffold *s, int nprot, const int *prot, scaf
         else s->nbr[a] = b, s->nbr[b] = a;
     }
     for (int p = 0; p < nprot && st == SCAF_OK; p++) {
-        int key[3];
-        sorted3(prot + 3 * (size_t)p, key);
-        int at = find_face(fr, (int)nref, key);
+        int key[3], count;
+        tet_face_key(prot + 3 * (size_t)p, key);
+        int at = tet_faces_find(fr, nref, key, &count);
         if (at < 0) {
             st = err_set(err, SCAF_ERR_MESH,
                          "protected triangle %d (%d, %d, %d) is no face of the tet mesh", p,
                          prot[3 * (size_t)p], prot[3 * (size_t)p + 1], prot[3 * (size_t)p + 2]);
             break;
         }
-        for (; at < (int)nref && !memcmp(fr[at].v, key, sizeof key); at++)
-            s->protect[fr[at].at / 4] |= (unsigned char)(1u << (fr[at].at % 4));
+        for (int k = at; k < at + count; k++)
+            s->protect[fr[k].tet] |= (unsigned char)(1u << fr[k].side);
     }
     free(fr);
     return st;
@@ -256,7 +215,7 @@ scaf_status tet_scaffold_replace(tet_scaffold *s, int nold, const int *old, int 
             if (n >= 0 && in_list(n / 4, old, nold)) continue;
             int c[3];
             face_of(s->T + 4 * (size_t)o, f, c);
-            sorted3(c, bf[nbf].key);
+            tet_face_key(c, bf[nbf].key);
             bf[nbf].outside = n;
             bf[nbf].protect = (unsigned char)((s->protect[o] >> f) & 1);
             bf[nbf].used = 0;
@@ -270,7 +229,7 @@ scaf_status tet_scaffold_replace(tet_scaffold *s, int nold, const int *old, int 
         for (int f = 0; f < 4; f++) {
             int c[3];
             face_of(newT + 4 * i, f, c);
-            sorted3(c, keys[4 * i + f]);
+            tet_face_key(c, keys[4 * i + f]);
         }
     int inner = 0;
     for (int a = 0; a < 4 * nnew; a++) {
@@ -331,7 +290,13 @@ void tet_scaffold_compact(tet_scaffold *s)
 {
     /* the visit stamps and the vertex map have the room: no allocation */
     int *tmap = s->mark, *vmap = s->vertex_map;
-    int nt = 0, nv = 0;
+    int nt = 0, nv = 0, removed = 0;
+    for (int v = 0; v < s->nv; v++) removed += s->vtet[v] == -2;
+    s->nv_before = s->nv;
+    if (s->nfree == 0 && removed == 0) { /* every dead slot was refilled: dense */
+        for (int v = 0; v < s->nv; v++) vmap[v] = v;
+        return;
+    }
     for (int t = 0; t < s->nt; t++) tmap[t] = s->dead[t] ? -1 : nt++;
     for (int v = 0; v < s->nv; v++) vmap[v] = s->vtet[v] == -2 ? -1 : nv++;
     for (int t = 0; t < s->nt; t++) {
@@ -356,6 +321,5 @@ void tet_scaffold_compact(tet_scaffold *s)
     }
     memset(s->mark, 0, sizeof(int) * (size_t)s->cap_t);
     s->mark_now = 0;
-    s->nv_before = s->nv;
     s->nt = nt, s->nv = nv, s->nfree = 0;
 }

@@ -158,6 +158,30 @@ static void test_flip32_needles(void **state)
     tet_scaffold_free(&s);
 }
 
+/* A flat square bipyramid cut into four tets by the diagonal face: the
+ * two faces sandwiched between the apexes go, four tets around the axis
+ * come (0.23 -> 0.54); a 2-3 flip alone would leave a flat tet. */
+static void test_multi_face_square(void **state)
+{
+    (void)state;
+    const double h = 0.15;
+    double V[] = {0.5, 0.5,  0, -0.5, 0.5,  0, -0.5,  -0.5, 0,
+                  0.5, -0.5, 0, 0.05, 0.02, h, -0.03, 0.01, -h};
+    int T[] = {0, 1, 2, 4, 0, 2, 3, 4, 0, 1, 2, 5, 0, 2, 3, 5};
+    tet_scaffold s;
+    tet_improve_stats st = run_small(6, V, NULL, 4, T, TET_OP_FLIP23 | TET_OP_MULTI_FACE, &s);
+    assert_int_equal(st.multi_face, 1);
+    assert_int_equal(st.flip23, 0);
+    assert_int_equal(s.nt, 4);
+    assert_true(st.min_before < 0.24 && st.min_after > 0.5);
+    for (int t = 0; t < 4; t++) { /* all around the edge 4-5 */
+        const int *q = s.T + 4 * t;
+        assert_true(q[0] == 4 || q[1] == 4 || q[2] == 4 || q[3] == 4);
+        assert_true(q[0] == 5 || q[1] == 5 || q[2] == 5 || q[3] == 5);
+    }
+    tet_scaffold_free(&s);
+}
+
 /* A regular octahedron (fixed corners) coned to a free centre vertex. */
 static void octahedron(double *V, int *T)
 {
@@ -365,12 +389,13 @@ static tet_improve_stats checked_call(tet_scaffold *s, const double *X, int nf, 
     tet_improve_stats st;
     assert_int_equal(tet_improve(s, X, NULL, &st, NULL), SCAF_OK);
     print_message("tets %d -> %d, vertices %d -> %d, min %.4f -> %.4f, p5 %.4f -> %.4f, below "
-                  "%d -> %d; flips 2-3 %lld 3-2 %lld, edge removals %lld, smoothing %lld, "
+                  "%d -> %d; flips 2-3 %lld 3-2 %lld, edge removals %lld, multi-face %lld, "
+                  "smoothing %lld, "
                   "contractions %lld, splits %lld, tries %lld, passes %d\n",
                   st.tets_before, st.tets_after, st.vertices_before, st.vertices_after,
                   st.min_before, st.min_after, st.p5_before, st.p5_after, st.below_goal_before,
-                  st.below_goal_after, st.flip23, st.flip32, st.edge_removal, st.smooth,
-                  st.contract, st.split, st.tries, st.passes);
+                  st.below_goal_after, st.flip23, st.flip32, st.edge_removal, st.multi_face,
+                  st.smooth, st.contract, st.split, st.tries, st.passes);
     assert_int_equal(st.tets_after, s->nt);
     assert_int_equal(st.vertices_after, s->nv);
     /* every tet positive, exactly */
@@ -530,15 +555,11 @@ static void test_refusals(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_quality_measure),
-        cmocka_unit_test(test_quality_summary),
-        cmocka_unit_test(test_flip23_flat_bipyramid),
-        cmocka_unit_test(test_flip32_needles),
-        cmocka_unit_test(test_smooth_centre),
-        cmocka_unit_test(test_contract_centre),
-        cmocka_unit_test(test_icosphere_perturbed),
-        cmocka_unit_test(test_bunny_perturbed),
-        cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_quality_measure),       cmocka_unit_test(test_quality_summary),
+        cmocka_unit_test(test_flip23_flat_bipyramid), cmocka_unit_test(test_flip32_needles),
+        cmocka_unit_test(test_multi_face_square),     cmocka_unit_test(test_smooth_centre),
+        cmocka_unit_test(test_contract_centre),       cmocka_unit_test(test_icosphere_perturbed),
+        cmocka_unit_test(test_bunny_perturbed),       cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
