@@ -4,6 +4,7 @@
  * pass changed something, compact. */
 #include "scaffold/tet_improve.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -56,6 +57,10 @@ scaf_status tet_improve(tet_scaffold *s, const double *X, const tet_improve_opti
         tet_improve_options_default(&def);
         o = &def;
     }
+    if (!isfinite(o->quality_goal) || (o->ops & ~(unsigned)TET_OP_ALL))
+        return err_set(err, SCAF_ERR_USAGE,
+                       "tet_improve: quality goal %g must be finite, ops %#x within %#x",
+                       o->quality_goal, o->ops, (unsigned)TET_OP_ALL);
     tet_improve_stats local;
     tet_improve_stats *st = stats ? stats : &local;
     memset(st, 0, sizeof *st);

@@ -26,12 +26,21 @@
  * visited again in the next pass.
  * What no operation ever does: change a tet's region (every operation
  * replaces tets of one region by tets of that region), remove or change a
- * protected face, move, remove or re-connect a mesh vertex beyond its tets'
- * replacement, move a fixed vertex, or touch a hull (box) face. So after
- * the call every tet is positive (exactly), the protected triangles are
- * still faces, the inside and the outside each cover the same region as
- * before (same hull faces, same volume up to rounding).
- * Deterministic: no clock, no randomness; the budget counts operations.
+ * protected face or remove an edge of one, move or remove a mesh vertex or
+ * a fixed one (mesh vertices may gain or lose tets around them), or remove
+ * a hull (box) face. So after the call every tet is positive (exactly),
+ * the protected triangles are still faces, the inside and the outside
+ * each cover the same region as before (same hull faces, same volume up
+ * to rounding).
+ * Deterministic: no clock, no randomness; the budget counts operations
+ * (one try: one operation evaluated on one edge, face or vertex).
+ *
+ * Use: TetGen's scaffold has no free vertex (surface and box only) and
+ * many slivers; improve it once thoroughly (max_tries 0, max_passes 20:
+ * bunny 0.1 s, quality 0.002 -> 0.13, 4.7k -> 6.6k tets; see
+ * bench/RESULTS-tet.md), then once per iteration with the defaults (bunny:
+ * 2-6 ms). Splits make the mesh grow; leave TET_OP_SPLIT out of ops to
+ * keep the vertex count.
  */
 #ifndef SCAF_SCAFFOLD_TET_IMPROVE_H
 #define SCAF_SCAFFOLD_TET_IMPROVE_H
@@ -51,11 +60,11 @@ enum {
 };
 
 typedef struct tet_improve_options {
-    double quality_goal; /* tets below this are worked on (default 0.35) */
+    double quality_goal; /* tets below this are worked on (default 0.2) */
     int max_passes;      /* sweeps over the tets below the goal (default 3) */
     long long max_tries; /* budget: operations evaluated per call, counted
                             deterministically; <= 0 unlimited (default
-                            20000) */
+                            3000, about 5 ms) */
     unsigned ops;        /* TET_OP_* allowed (default TET_OP_ALL) */
 } tet_improve_options;
 
@@ -84,8 +93,9 @@ typedef struct tet_improve_stats {
  *   o      options (NULL: defaults)
  *   stats  filled when not NULL
  * Every tet must be positively oriented at entry (checked exactly).
- * Errors: SCAF_ERR_MESH (a tet not positive at entry: the message names
- * it; s unchanged), SCAF_ERR_NOMEM (s still valid: the operations applied
+ * Errors: SCAF_ERR_USAGE (a goal not finite, unknown ops bits; s
+ * unchanged), SCAF_ERR_MESH (a tet not positive at entry: the message
+ * names it; s unchanged), SCAF_ERR_NOMEM (s still valid: the operations applied
  * so far are kept, each of them whole). */
 scaf_status tet_improve(tet_scaffold *s, const double *X, const tet_improve_options *o,
                         tet_improve_stats *stats, scaf_error *err);

@@ -383,6 +383,9 @@ static tet_improve_stats checked_call(tet_scaffold *s, const double *X, int nf, 
     assert_non_null(P0);
     memcpy(P0, s->P, sizeof(double) * 3 * (size_t)nv0);
     if (X) memcpy(P0, X, sizeof(double) * 3 * (size_t)s->nmesh);
+    unsigned char *fixed0 = malloc((size_t)nv0);
+    assert_non_null(fixed0);
+    memcpy(fixed0, s->fixed, (size_t)nv0);
     s->P = P0; /* the scaffold as the call should see it */
     invariants before = faces_check(s, nf, prot);
     s->P = stale;
@@ -419,9 +422,13 @@ static tet_improve_stats checked_call(tet_scaffold *s, const double *X, int nf, 
     for (int v = 0; v < nv0; v++) {
         int u = s->vertex_map[v];
         if (v < s->nmesh) assert_int_equal(u, v);
-        if (v < s->nmesh || s->fixed[u])
+        if (v < s->nmesh || fixed0[v]) {
+            assert_true(u >= 0);
+            assert_int_equal(s->fixed[u], fixed0[v]);
             assert_memory_equal(s->P + 3 * (size_t)u, P0 + 3 * (size_t)v, 3 * sizeof(double));
+        }
     }
+    free(fixed0);
     adjacency_check(s, nf, F);
     /* never worse */
     assert_true(st.min_after >= st.min_before);
@@ -549,6 +556,15 @@ static void test_refusals(void **state)
     assert_int_equal(tet_improve(&s, X, NULL, NULL, &e), SCAF_ERR_MESH);
     assert_non_null(strstr(e.message, "not positively oriented"));
     assert_memory_equal(s.P, V, sizeof V);
+    /* options out of range */
+    tet_improve_options o;
+    tet_improve_options_default(&o);
+    o.quality_goal = NAN;
+    assert_int_equal(tet_improve(&s, NULL, &o, NULL, &e), SCAF_ERR_USAGE);
+    tet_improve_options_default(&o);
+    o.ops = 1u << 10;
+    assert_int_equal(tet_improve(&s, NULL, &o, NULL, &e), SCAF_ERR_USAGE);
+    assert_non_null(strstr(e.message, "ops"));
     tet_scaffold_free(&s);
 }
 
