@@ -48,6 +48,18 @@ static scaf_status tet_refresh(scaffold_provider *p, const double *X, const scaf
         st = build(t, X, err);
         if (st != SCAF_OK) return st;
         t->built = 1;
+        if (t->improve) {
+            /* TetGen's tets: many slivers, no free vertex; improve them
+             * once thoroughly (tet_improve.h: no budget, up to 20 passes) */
+            tet_improve_options thorough = t->improve_opt;
+            thorough.max_tries = 0;
+            thorough.max_passes = 20;
+            st = tet_improve(&t->s, X, &thorough, &t->stats, err);
+            if (st != SCAF_OK) {
+                err_prefix(err, "tet scaffold improvement");
+                return st;
+            }
+        }
     } else if (t->improve) {
         /* checks every tet exactly at entry and every operation it applies */
         st = tet_improve(&t->s, X, &t->improve_opt, &t->stats, err);

@@ -10,8 +10,9 @@
  * (scaffold/tet_scaffold: the surface triangles protected, the box
  * vertices fixed); the box is then fixed for the whole run: its vertices
  * are held by the loop. TetGen is not run again: it fails when parts of
- * the surface come close, which is where a run goes. Every later refresh
- * runs the improvement pass (scaffold/tet_improve: Klingner-style local
+ * the surface come close, which is where a run goes. TetGen's tets are
+ * improved once thoroughly (no budget, up to 20 passes), and every later
+ * refresh runs the improvement pass (scaffold/tet_improve: Klingner-style local
  * operations on the worst tets, each checked exactly, never touching a
  * surface triangle, a surface vertex or the box) on the tets as the
  * loop's accepted steps left them, unless it was turned off
