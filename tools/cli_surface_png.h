@@ -16,10 +16,9 @@ typedef struct cli_surface_png {
 
 /* The lines of --help for the two options; WHAT says what the panels show. */
 #define CLI_SURFACE_PNG_HELP(what)                                                                 \
-    "  --png FILE         a picture, " what " side by side, one camera:\n"                         \
-    "                     flat shaded, seen from the front-top-right (y up), faces\n"              \
-    "                     seen from inside (where the surface passes through\n"                    \
-    "                     itself) in orange\n"                                                     \
+    "  --png FILE         a picture: " what ",\n"                                                  \
+    "                     flat shaded, seen from the front-top-right (y up), inside\n"             \
+    "                     faces (where the surface passes through itself) in orange\n"             \
     "  --png-size N       pixels of each square panel, 16..4096 (default 512)\n"
 
 void cli_surface_png_init(cli_surface_png *p);

@@ -21,6 +21,7 @@
 #include "base/json_write.h"
 #include "base/timer.h"
 #include "cli_args.h"
+#include "cli_closed_surface.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
@@ -28,7 +29,6 @@
 #include "exit_codes.h"
 #include "geom/self_intersect.h"
 #include "mesh/mesh_io.h"
-#include "mesh/topology.h"
 #include "opt/cmcf.h"
 
 #define FLOW_MAX_STEPS 100000
@@ -57,52 +57,20 @@ static void usage(FILE *out)
             "  --report FILE      a JSON report: delta, steps done, whether the result is\n"
             "                     free, and per step its seconds (with --until-free its\n"
             "                     defects: intersecting face pairs + zero-area "
-            "faces)\n" CLI_SURFACE_PNG_HELP("input | flowed") "  -q, --quiet        "
-                                                              "no "
-                                                              "per-step lines on "
-                                                              "stderr "
-                                                              "(step, seconds, and "
-                                                              "with\n"
-                                                              "                     "
-                                                              "--until-free the "
-                                                              "intersecting face "
-                                                              "pairs)"
-                                                              "\n" CLI_OUTPUTS_HELP "\n",
+            "faces)\n" CLI_SURFACE_PNG_HELP(
+                "the input and the flowed surface side by side") "  -q, --quiet        "
+                                                                 "no "
+                                                                 "per-step lines on "
+                                                                 "stderr "
+                                                                 "(step, seconds, and "
+                                                                 "with\n"
+                                                                 "                     "
+                                                                 "--until-free the "
+                                                                 "intersecting face "
+                                                                 "pairs)"
+                                                                 "\n" CLI_OUTPUTS_HELP "\n",
             FLOW_MAX_STEPS);
     exit_codes_print(out);
-}
-
-/* 0 when m is a closed manifold surface the flow can run on, else the
- * exit status after printing why. */
-static int check_closed_manifold(const char *in, const mesh *m)
-{
-    mesh_topology t;
-    scaf_error err;
-    err_clear(&err);
-    scaf_status st = mesh_topology_compute(m, &t, &err);
-    if (st != SCAF_OK) {
-        fprintf(stderr, "scaf flow: %s: %s\n", in, err.message);
-        return exit_code_for(st);
-    }
-    char why[256] = "";
-    if (t.faces == 0) snprintf(why, sizeof why, "it has no face");
-    else if (t.boundary_edges > 0)
-        snprintf(why, sizeof why, "the surface is open: %d boundary edges in %d loops",
-                 t.boundary_edges, t.boundary_loops);
-    else if (!t.manifold)
-        snprintf(why, sizeof why,
-                 "the surface is not manifold: %d non-manifold edges, %d non-manifold vertices",
-                 t.non_manifold_edges, t.non_manifold_vertices);
-    else if (t.degenerate_faces > 0)
-        snprintf(why, sizeof why, "%d faces have zero area (no cotangent weights)",
-                 t.degenerate_faces);
-    else if (t.unreferenced_vertices > 0)
-        snprintf(why, sizeof why, "%d vertices belong to no face", t.unreferenced_vertices);
-    mesh_topology_free(&t);
-    if (!why[0]) return EXIT_OK;
-    fprintf(stderr, "scaf flow: %s: %s; the flow needs a closed manifold triangle surface\n", in,
-            why);
-    return EXIT_MESH;
 }
 
 /* The exact check of the current surface: its defects (intersecting face
@@ -283,7 +251,7 @@ static int flow_main(int argc, char **argv)
     if (!g.seconds || !g.defects || (kp >= 0 && !start)) {
         fprintf(stderr, "scaf flow: out of memory\n");
         rc = EXIT_NOMEM;
-    } else if ((rc = check_closed_manifold(in, &m)) == EXIT_OK) {
+    } else if ((rc = cli_check_closed_surface("flow", in, &m, "the flow")) == EXIT_OK) {
         rc = run_flow(&m, steps, delta, until_free, quiet, &g, start);
     }
     if (rc == EXIT_OK && cli_signal_report("flow")) rc = EXIT_CANCELLED;

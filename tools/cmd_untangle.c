@@ -65,8 +65,10 @@ static void usage(FILE *out)
           "                     RMS and maximum distance of the vertices to their input\n"
           "                     positions (relative to the bounding-box diagonal),\n"
           "                     scaffold tets and quality, seconds\n" CLI_SURFACE_PNG_HELP(
-              "input | flowed | final") "  -q, --quiet        no progress lines "
-                                                         "on stderr\n" CLI_OUTPUTS_HELP "\n",
+              "the input, flowed and final surface side by side") "  -q, --quiet        no "
+                                                                  "progress lines "
+                                                                  "on stderr\n" CLI_OUTPUTS_HELP
+                                                                  "\n",
           out);
     exit_codes_print(out);
 }
@@ -131,8 +133,9 @@ static scaf_status write_report(const char *path, const char *in, const untangle
     json_write_string(o, in);
     fprintf(o, ",\n  \"vertices\": %d,\n  \"faces\": %d,\n  \"diagonal\": ", nv, nf);
     json_write_number(o, r->diagonal);
-    fprintf(o, ",\n  \"input_pairs\": %lld,\n  \"already_free\": %s,\n  \"delta\": ",
-            r->input_pairs, r->stop == UNTANGLE_ALREADY_FREE ? "true" : "false");
+    fprintf(o,
+            ",\n  \"input_pairs\": %lld,\n  \"already_free\": %s,\n  \"delta\": ", r->input_pairs,
+            r->stop == UNTANGLE_ALREADY_FREE ? "true" : "false");
     json_write_number(o, opt->delta);
     fprintf(o, ",\n  \"flow_steps\": %d,\n  \"flowed_rms\": ", r->flow_steps);
     json_write_number(o, r->flowed_rms);
@@ -140,8 +143,10 @@ static scaf_status write_report(const char *path, const char *in, const untangle
     json_write_number(o, r->flowed_max);
     fputs(",\n  \"anchor\": ", o);
     json_write_number(o, opt->anchor_ratio);
-    fprintf(o, ",\n  \"iterations\": %d,\n  \"best_iteration\": %d,\n  \"stop_reason\": \"%s\",\n  \"rms\": ", r->iterations,
-            r->best_iteration, untangle_stop_name(r->stop));
+    fprintf(o,
+            ",\n  \"iterations\": %d,\n  \"best_iteration\": %d,\n  \"stop_reason\": \"%s\",\n  "
+            "\"rms\": ",
+            r->iterations, r->best_iteration, untangle_stop_name(r->stop));
     json_write_number(o, r->rms);
     fputs(",\n  \"max\": ", o);
     json_write_number(o, r->max);
@@ -235,14 +240,16 @@ static int untangle_main(int argc, char **argv)
     scaf_status st = untangle_run(m.nv, m.V, m.nf, m.F, &opt, on_step, &ps, &r, &err);
     double seconds = timer_now() - t0;
     if (st != SCAF_OK) {
-        if (!cli_signal_report("untangle")) fprintf(stderr, "scaf untangle: %s: %s\n", in, err.message);
+        if (!cli_signal_report("untangle"))
+            fprintf(stderr, "scaf untangle: %s: %s\n", in, err.message);
         mesh_free(&m);
         return exit_code_for(st);
     }
     if (!quiet) {
         if (r.stop == UNTANGLE_ALREADY_FREE)
-            fprintf(stderr, "scaf untangle: %s is already free of self-intersections: written "
-                            "unchanged\n",
+            fprintf(stderr,
+                    "scaf untangle: %s is already free of self-intersections: written "
+                    "unchanged\n",
                     in);
         else
             fprintf(stderr,

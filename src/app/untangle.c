@@ -123,9 +123,9 @@ static scaf_status record(untangle_result *r, int *cap, const untangle_event *e,
 }
 
 /* Flow r->flowed (a copy of V) until it is free in V's frame. */
-static scaf_status flow_out(int nv, const double *V, int nf, const int *F, const untangle_options *o,
-                            untangle_progress progress, void *user, untangle_result *r, int *cap,
-                            scaf_error *err)
+static scaf_status flow_out(int nv, const double *V, int nf, const int *F,
+                            const untangle_options *o, untangle_progress progress, void *user,
+                            untangle_result *r, int *cap, scaf_error *err)
 {
     double c[3], area;
     cmcf f;

@@ -48,12 +48,12 @@
 #define UNTANGLE_ANCHOR_DEFAULT 1000.0
 
 typedef struct untangle_options {
-    double delta;     /* flow time step (unit-area frame), default 1e-3 */
-    int flow_steps;   /* at most this many flow steps, default 1000 */
-    int iterations;   /* at most this many flow-back iterations, default 300 */
-    double tolerance; /* relative decrease over UNTANGLE_WINDOW iterations
+    double delta;        /* flow time step (unit-area frame), default 1e-3 */
+    int flow_steps;      /* at most this many flow steps, default 1000 */
+    int iterations;      /* at most this many flow-back iterations, default 300 */
+    double tolerance;    /* relative decrease over UNTANGLE_WINDOW iterations
                          below which the flow back stops; default 1e-2 */
-    int verify;       /* 1: exact self-intersection check after every iteration */
+    int verify;          /* 1: exact self-intersection check after every iteration */
     double anchor_ratio; /* weight of the anchor (see above), default UNTANGLE_ANCHOR_DEFAULT */
     volume_deform_options deform; /* the flow back's box, weights, solver */
 } untangle_options;
@@ -71,15 +71,15 @@ typedef enum untangle_phase {
 /* One step of either phase. */
 typedef struct untangle_event {
     untangle_phase phase;
-    int step;         /* 1-based within its phase */
-    double seconds;   /* wall time (flow: the step and its exact check) */
-    long long pairs;  /* intersecting face pairs after it (back: -1 without verify) */
-    double energy;    /* back: surface energy after the iteration (ARAP + anchor) */
-    double arap;      /* back: its ARAP part */
-    double rms, max;  /* distance to the input, relative to its diagonal */
-    int tets;         /* back: scaffold tets */
-    double quality;   /* back: minimum scaffold tet quality */
-    const double *X;  /* the positions after it (#V by 3, input's frame); valid
+    int step;        /* 1-based within its phase */
+    double seconds;  /* wall time (flow: the step and its exact check) */
+    long long pairs; /* intersecting face pairs after it (back: -1 without verify) */
+    double energy;   /* back: surface energy after the iteration (ARAP + anchor) */
+    double arap;     /* back: its ARAP part */
+    double rms, max; /* distance to the input, relative to its diagonal */
+    int tets;        /* back: scaffold tets */
+    double quality;  /* back: minimum scaffold tet quality */
+    const double *X; /* the positions after it (#V by 3, input's frame); valid
                          during the callback only (NULL in the result's log) */
 } untangle_event;
 
@@ -97,17 +97,17 @@ typedef enum untangle_stop {
 const char *untangle_stop_name(untangle_stop s);
 
 typedef struct untangle_result {
-    long long input_pairs; /* intersecting face pairs of the input */
-    int flow_steps;        /* steps the flow needed (0: already free) */
-    double *flowed;        /* nv by 3, the freed surface in the input's frame
+    long long input_pairs;                   /* intersecting face pairs of the input */
+    int flow_steps;                          /* steps the flow needed (0: already free) */
+    double *flowed;                          /* nv by 3, the freed surface in the input's frame
                               (a copy of the input when already free) */
-    double *X;             /* nv by 3, the result */
-    double diagonal;       /* of the input's bounding box */
+    double *X;                               /* nv by 3, the result */
+    double diagonal;                         /* of the input's bounding box */
     double flowed_rms, flowed_max, rms, max; /* relative distances */
-    int iterations;        /* flow-back iterations done */
-    int best_iteration;    /* the one whose positions are X (lowest energy) */
+    int iterations;                          /* flow-back iterations done */
+    int best_iteration;                      /* the one whose positions are X (lowest energy) */
     untangle_stop stop;
-    int nlog;              /* entries of log: the flow steps, then the iterations */
+    int nlog; /* entries of log: the flow steps, then the iterations */
     untangle_event *log;
 } untangle_result;
 

@@ -9,6 +9,7 @@
 
 #include "base/sort_u64.h"
 #include "geom/self_intersect.h"
+#include "geom/tet_faces.h"
 #include "geom/tet_orient.h"
 #include "geom/tetgen_call.h"
 
@@ -151,64 +152,6 @@ static scaf_status build_box(int nv, const double lo[3], const double hi[3], int
 
 /* ---- output checks ---- */
 
-typedef struct face_ref {
-    int v[3]; /* sorted */
-    int tet;
-    int side; /* the face of tet opposite its corner `side` */
-} face_ref;
-
-static int cmp_face(const void *pa, const void *pb)
-{
-    const face_ref *a = pa, *b = pb;
-    for (int k = 0; k < 3; k++)
-        if (a->v[k] != b->v[k]) return a->v[k] < b->v[k] ? -1 : 1;
-    return (a->tet > b->tet) - (a->tet < b->tet);
-}
-
-static void sorted3(const int *f, int out[3])
-{
-    int a = f[0], b = f[1], c = f[2], t;
-    if (a > b) t = a, a = b, b = t;
-    if (b > c) t = b, b = c, c = t;
-    if (a > b) t = a, a = b, b = t;
-    out[0] = a, out[1] = b, out[2] = c;
-}
-
-/* Index of the first entry with vertices key, and how many (0 if none). */
-static int find_face(const face_ref *fr, int n, const int key[3], int *count)
-{
-    int lo = 0, hi = n;
-    face_ref probe = {{key[0], key[1], key[2]}, -1, 0};
-    while (lo < hi) {
-        int mid = lo + (hi - lo) / 2;
-        if (cmp_face(&fr[mid], &probe) < 0) lo = mid + 1;
-        else hi = mid;
-    }
-    int c = 0;
-    while (lo + c < n && !memcmp(fr[lo + c].v, key, sizeof fr[0].v)) c++;
-    *count = c;
-    return lo;
-}
-
-/* Faces of all tets, sorted by vertex triple (NULL when out of memory). */
-static face_ref *sorted_faces(const tet_box_mesh *m)
-{
-    size_t nref = 4 * (size_t)m->nt;
-    face_ref *fr = malloc(sizeof *fr * (nref > 0 ? nref : 1));
-    if (!fr) return NULL;
-    for (int t = 0; t < m->nt; t++)
-        for (int k = 0; k < 4; k++) {
-            int f[3], o = 0;
-            for (int l = 0; l < 4; l++)
-                if (l != k) f[o++] = m->T[4 * (size_t)t + l];
-            sorted3(f, fr[4 * (size_t)t + k].v);
-            fr[4 * (size_t)t + k].tet = t;
-            fr[4 * (size_t)t + k].side = k;
-        }
-    qsort(fr, nref, sizeof *fr, cmp_face);
-    return fr;
-}
-
 /* Face structure and labels. nb[4t + k]: the tet across face k of tet t
  * (-1 on the hull); cross[4t + k]: that face is a surface triangle. The
  * labels come from a walk from the hull tets (outside, 0) flipping at
@@ -220,7 +163,7 @@ static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const 
                                    scaf_error *err)
 {
     size_t nref = 4 * (size_t)m->nt;
-    face_ref *fr = sorted_faces(m);
+    tet_face_ref *fr = tet_faces_sorted(m->nt, m->T);
     int *nb = malloc(sizeof(int) * (nref > 0 ? nref : 1));
     int *queue = malloc(sizeof(int) * (size_t)(m->nt > 0 ? m->nt : 1));
     signed char *cross = calloc(nref > 0 ? nref : 1, 1);
@@ -251,8 +194,8 @@ static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const 
     /* every input triangle: a face of two tets; every box triangle: of one */
     for (int f = 0; f < nf && s == SCAF_OK; f++) {
         int key[3], c;
-        sorted3(F + 3 * (size_t)f, key);
-        int at = find_face(fr, (int)nref, key, &c);
+        tet_face_key(F + 3 * (size_t)f, key);
+        int at = tet_faces_find(fr, nref, key, &c);
         if (c != 2)
             s = err_set(err, SCAF_ERR_INTERNAL,
                         "TetGen lost surface face %d (%d, %d, %d): it bounds %d tets, not 2", f,
@@ -262,8 +205,8 @@ static scaf_status label_and_check(tet_box_mesh *m, int nf, const int *F, const 
     }
     for (int f = 0; f < m->nbox_faces && s == SCAF_OK; f++) {
         int key[3], c;
-        sorted3(m->box_F + 3 * (size_t)f, key);
-        find_face(fr, (int)nref, key, &c);
+        tet_face_key(m->box_F + 3 * (size_t)f, key);
+        tet_faces_find(fr, nref, key, &c);
         if (c != 1)
             s = err_set(err, SCAF_ERR_INTERNAL, "TetGen lost box face %d: it bounds %d tets, not 1",
                         f, c);

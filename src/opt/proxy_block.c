@@ -90,6 +90,26 @@ static scaf_status expand_scalar(opt_proxy_block *b, scaf_error *err)
     return SCAF_OK;
 }
 
+/* The end of a pattern build: entries ent bucketed by column (b->vcolptr)
+ * sorted, deduplicated and mapped (sort_columns), the row indices stored
+ * and the scalar pattern expanded. Frees ent and fill; frees the block on
+ * failure. */
+static scaf_status finish_pattern(opt_proxy_block *b, row_id *ent, int *fill, scaf_error *err)
+{
+    sort_columns(b, ent, fill);
+    free(fill);
+    int out = b->vcolptr[b->nfree];
+    b->vrowidx = malloc(((size_t)out + 1) * sizeof *b->vrowidx);
+    if (!b->vrowidx) {
+        free(ent);
+        opt_proxy_block_free(b);
+        return err_nomem(err, "proxy system pattern");
+    }
+    for (int k = 0; k < out; k++) b->vrowidx[k] = ent[k].row;
+    free(ent);
+    return expand_scalar(b, err);
+}
+
 scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, const int *dof,
                                     int nfree, scaf_error *err)
 {
@@ -144,18 +164,7 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
                 ent[fill[col]++].id = (int)id;
             }
     }
-    /* Sort each column, deduplicate, record the map. */
-    sort_columns(b, ent, fill);
-    int out = b->vcolptr[nfree];
-    b->vrowidx = malloc(((size_t)out + 1) * sizeof *b->vrowidx);
-    if (!b->vrowidx) {
-        free(ent);
-        opt_proxy_block_free(b);
-        return err_nomem(err, "proxy system pattern");
-    }
-    for (int k = 0; k < out; k++) b->vrowidx[k] = ent[k].row;
-    free(ent);
-    return expand_scalar(b, err);
+    return finish_pattern(b, ent, fill, err);
 }
 
 scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, const int *verts,
@@ -239,17 +248,7 @@ scaf_status opt_proxy_block_pattern_pairs(opt_proxy_block *b, int d, int n, cons
         ent[fill[c]++].id = n + c;
     }
     free(used);
-    sort_columns(b, ent, fill);
-    int out = b->vcolptr[nfree];
-    b->vrowidx = malloc(((size_t)out + 1) * sizeof *b->vrowidx);
-    if (!b->vrowidx) {
-        free(ent);
-        opt_proxy_block_free(b);
-        return err_nomem(err, "proxy system pattern");
-    }
-    for (int k = 0; k < out; k++) b->vrowidx[k] = ent[k].row;
-    free(ent);
-    return expand_scalar(b, err);
+    return finish_pattern(b, ent, fill, err);
 }
 
 void opt_proxy_block_add_pair(opt_proxy_block *b, int k, const int *dof, const int *pairs, double w)

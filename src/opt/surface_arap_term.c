@@ -50,8 +50,9 @@ scaf_status opt_surface_arap_init(opt_surface_arap *s, int nv, int nf, const int
                        nv, nf, weight_ratio);
     for (size_t k = 0; k < 3 * (size_t)nf; k++)
         if (F[k] < 0 || F[k] >= nv)
-            return err_set(err, SCAF_ERR_USAGE, "surface ARAP term: face %zu: vertex %d not in [0, %d)",
-                           k / 3, F[k], nv);
+            return err_set(err, SCAF_ERR_USAGE,
+                           "surface ARAP term: face %zu: vertex %d not in [0, %d)", k / 3, F[k],
+                           nv);
     size_t n3 = 3 * (size_t)nf;
     s->nv = nv;
     s->nf = nf;
@@ -120,7 +121,8 @@ static void update_mdt(opt_surface_arap *s)
             double dt[3];
             sub3(s->target + 3 * (size_t)i, s->target + 3 * (size_t)j, dt);
             double *o = s->Mdt + 9 * (size_t)f + 3 * e;
-            for (int a = 0; a < 3; a++) o[a] = M[3 * a] * dt[0] + M[3 * a + 1] * dt[1] + M[3 * a + 2] * dt[2];
+            for (int a = 0; a < 3; a++)
+                o[a] = M[3 * a] * dt[0] + M[3 * a + 1] * dt[1] + M[3 * a + 2] * dt[2];
         }
     }
 }
@@ -158,7 +160,8 @@ void opt_surface_arap_fit(opt_surface_arap *s, const double *X)
         int finite = 1;
         for (int a = 0; a < 3; a++)
             for (int b = 0; b < 3; b++) {
-                double r = U[3 * a] * V[3 * b] + U[3 * a + 1] * V[3 * b + 1] + U[3 * a + 2] * V[3 * b + 2];
+                double r =
+                    U[3 * a] * V[3 * b] + U[3 * a + 1] * V[3 * b + 1] + U[3 * a + 2] * V[3 * b + 2];
                 finite = finite && isfinite(r);
                 R[3 * a + b] = r;
             }
@@ -276,8 +279,8 @@ static scaf_status arap_hessian_fill(opt_obj_term *t, const int *dof, const doub
     return SCAF_OK;
 }
 
-static const opt_obj_term_ops arap_ops = {arap_energy, arap_energy_slope, arap_pattern, arap_fill,
-                                          NULL,        NULL,              arap_hessian_fill};
+static const opt_obj_term_ops arap_ops = {
+    arap_energy, arap_energy_slope, arap_pattern, arap_fill, NULL, NULL, arap_hessian_fill};
 
 opt_obj_term opt_surface_arap_make(opt_surface_arap *s)
 {

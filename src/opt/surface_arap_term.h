@@ -24,6 +24,11 @@
  * the Hessian), the right-hand side w c M_f dt (half the negative gradient
  * at 0); Newton doubles the matrix and takes -gradient at x. Re-fitting
  * only lowers E, so the loop's energy decreases across iterations.
+ * Where target triangles are obtuse (negative cotangents), a vertex's
+ * sum c dt dt^T may be indefinite and its best rotation at the target
+ * itself not the identity: E at the target is then slightly above 0
+ * (3e-5 of the floor on the dimpled sphere of tests/app); the local step
+ * is kept exact so that E never rises.
  *
  * Weight: w = weight_ratio / A (A the target's area) makes E dimensionless
  * (the same for a scaled problem); E / w / A <= about 2 * 3 for a surface

@@ -88,8 +88,12 @@ static scaf_status boundary_edges(int nv, int nf, const int *F, int **out, int *
 /* ---- the loop's own state --------------------------------------------- */
 
 struct scaf_loop_work {
-    int mesh_k, scaf_k;          /* term indices (mesh_k -1 in a volume loop) */
-    double energy_floor;         /* volume loop: see scaf_loop_init_volume */
+    int mesh_k, scaf_k;  /* term indices (mesh_k -1 in a volume loop) */
+    double energy_floor; /* volume loop: see scaf_loop_init_volume */
+    int *kept;           /* volume loop: the last iteration's scaffold
+                                    (n by 4 ids, then nextra fixed flags), to
+                                    keep its pattern when it did not change */
+    int kept_n, kept_nextra;
     scaffold_provider *scaffold; /* refreshed every iteration */
     scaffold_view view;          /* its current scaffold */
     opt_simplices scaf;          /* its rest frames (current shape), weight = lambda */
@@ -145,6 +149,7 @@ void scaf_loop_free(scaf_loop *L)
         free(w->rhs);
         free(w->sol);
         free(w->dir);
+        free(w->kept);
         free(w);
     }
     memset(L, 0, sizeof *L);
@@ -635,6 +640,27 @@ static inline double triangle_area(const double *X, const int *t)
     return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
 }
 
+/* Volume loop: a 3D scaffold usually keeps its tets from one iteration to
+ * the next (scaffold/scaffold_tet), and then so does the term's pattern
+ * (and CHOLMOD's analysis): tell the scaffold term to keep it. */
+static scaf_status keep_same_pattern(scaf_loop_work *w, const scaffold_view *v, scaf_error *err)
+{
+    size_t nt = 4 * (size_t)v->n, need = nt + (size_t)v->nextra;
+    int same = w->kept && w->kept_n == v->n && w->kept_nextra == v->nextra &&
+        !memcmp(w->kept, v->simplices, nt * sizeof(int));
+    for (int i = 0; same && i < v->nextra; i++) same = w->kept[nt + i] == v->extra_fixed[i];
+    w->scaf_def.keep_pattern = same;
+    if (same) return SCAF_OK;
+    int *k = realloc(w->kept, (need ? need : 1) * sizeof *k);
+    if (!k) return err_nomem(err, "SCAF volume loop");
+    w->kept = k;
+    memcpy(k, v->simplices, nt * sizeof(int));
+    for (int i = 0; i < v->nextra; i++) k[nt + i] = v->extra_fixed[i];
+    w->kept_n = v->n;
+    w->kept_nextra = v->nextra;
+    return SCAF_OK;
+}
+
 /* Rest shapes of the scaffold = current shapes (eps guard), energy weight
  * lambda, proxy weight lambda / 4 except on guarded simplices (banner). */
 static scaf_status scaffold_term(scaf_loop *L, int nall, const double *X, double lambda,
@@ -703,6 +729,10 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     if (st != SCAF_OK) goto done;
     const scaffold_view *sc = &w->view;
     int nall = L->nv + sc->nextra;
+    if (w->mesh_k < 0) {
+        st = keep_same_pattern(w, sc, err);
+        if (st != SCAF_OK) goto done;
+    }
     size_t nx = (size_t)d * (size_t)nall;
     t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_SCAFFOLD] += t1 - t0;

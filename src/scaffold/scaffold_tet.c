@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "geom/predicates.h"
 #include "geom/tet_box_mesh.h"
+#include "geom/tet_quality.h"
 
 typedef struct tet_provider {
     scaffold_provider base;
@@ -15,29 +15,13 @@ typedef struct tet_provider {
     double box_scale;
     int box_cells;
     int built;
-    scaffold_tets s;
+    tet_scaffold s;
     double eps;
     double lo[3], hi[3];
-    scaffold_tet_improver improve;
-    void *improve_user;
+    int improve;
+    tet_improve_options improve_opt;
+    tet_improve_stats stats;
 } tet_provider;
-
-static void tets_free(scaffold_tets *s)
-{
-    free(s->T);
-    free(s->inside);
-    free(s->extra);
-    free(s->extra_fixed);
-    int nmesh = s->nmesh;
-    memset(s, 0, sizeof *s);
-    s->nmesh = nmesh;
-}
-
-static inline const double *pos(const tet_provider *t, const double *X, int id)
-{
-    int nm = t->base.nmesh;
-    return id < nm ? X + 3 * (size_t)id : t->s.extra + 3 * (size_t)(id - nm);
-}
 
 /* The first refresh: TetGen around the surface at X. */
 static scaf_status build(tet_provider *t, const double *X, scaf_error *err)
@@ -47,26 +31,10 @@ static scaf_status build(tet_provider *t, const double *X, scaf_error *err)
     tet_box_mesh m;
     scaf_status st = tet_box_mesh_build(nm, X, t->nf, t->F, t->lo, t->hi, t->box_cells, &m, err);
     if (st != SCAF_OK) return st;
-    scaffold_tets *s = &t->s;
-    s->n = s->cap_tets = m.nt;
-    s->nextra = s->cap_extra = m.nv - nm;
-    s->T = m.T;
-    s->inside = m.inside;
-    s->extra = malloc(sizeof(double) * 3 * (size_t)(s->nextra ? s->nextra : 1));
-    s->extra_fixed = malloc((size_t)(s->nextra ? s->nextra : 1));
-    m.T = NULL;
-    m.inside = NULL;
-    if (!s->extra || !s->extra_fixed) {
-        tet_box_mesh_free(&m);
-        tets_free(s);
-        return err_nomem(err, "tet scaffold");
-    }
-    memcpy(s->extra, m.V + 3 * (size_t)nm, sizeof(double) * 3 * (size_t)s->nextra);
-    /* the box's vertices come right after the surface's; TetGen's own
-     * points (if any) after them are free */
-    for (int i = 0; i < s->nextra; i++) s->extra_fixed[i] = i < m.nbox;
+    st = tet_scaffold_from_box_mesh(&t->s, &m, t->nf, t->F, err);
     tet_box_mesh_free(&m);
-    return SCAF_OK;
+    if (st != SCAF_OK) err_prefix(err, "tet scaffold");
+    return st;
 }
 
 static scaf_status tet_refresh(scaffold_provider *p, const double *X, const scaffold_options *o,
@@ -75,23 +43,30 @@ static scaf_status tet_refresh(scaffold_provider *p, const double *X, const scaf
     (void)o;
     tet_provider *t = (tet_provider *)p;
     scaf_status st;
+    memset(&t->stats, 0, sizeof t->stats);
     if (!t->built) {
         st = build(t, X, err);
         if (st != SCAF_OK) return st;
         t->built = 1;
+        if (t->improve) {
+            /* TetGen's tets: many slivers, no free vertex; improve them
+             * once thoroughly (tet_improve.h: no budget, up to 20 passes) */
+            tet_improve_options thorough = t->improve_opt;
+            thorough.max_tries = 0;
+            thorough.max_passes = 20;
+            st = tet_improve(&t->s, X, &thorough, &t->stats, err);
+            if (st != SCAF_OK) {
+                err_prefix(err, "tet scaffold improvement");
+                return st;
+            }
+        }
     } else if (t->improve) {
-        st = t->improve(t->improve_user, &t->s, X, err);
+        /* checks every tet exactly at entry and every operation it applies */
+        st = tet_improve(&t->s, X, &t->improve_opt, &t->stats, err);
         if (st != SCAF_OK) {
             err_prefix(err, "tet scaffold improvement");
             return st;
         }
-    }
-    /* every tet positive, exactly (Shewchuk's orient3d < 0) */
-    for (int k = 0; k < t->s.n; k++) {
-        const int *q = t->s.T + 4 * (size_t)k;
-        if (!(orient3d(pos(t, X, q[0]), pos(t, X, q[1]), pos(t, X, q[2]), pos(t, X, q[3])) < 0))
-            return err_set(err, SCAF_ERR_INTERNAL, "tet scaffold: tet %d is not positively oriented",
-                           k);
     }
     double l2 = INFINITY;
     for (int f = 0; f < t->nf; f++)
@@ -114,11 +89,12 @@ static void tet_view(const scaffold_provider *p, scaffold_view *v)
     v->d = 3;
     v->nmesh = p->nmesh;
     if (!t->built) return;
-    v->n = t->s.n;
+    int nm = p->nmesh;
+    v->n = t->s.nt;
     v->simplices = t->s.T;
-    v->nextra = t->s.nextra;
-    v->extra = t->s.extra;
-    v->extra_fixed = t->s.extra_fixed;
+    v->nextra = t->s.nv - nm;
+    v->extra = t->s.P + 3 * (size_t)nm; /* the loop writes its steps here */
+    v->extra_fixed = t->s.fixed + nm;
     v->eps = t->eps;
     for (int a = 0; a < 3; a++) {
         v->box_lo[a] = t->lo[a];
@@ -130,7 +106,7 @@ static void tet_destroy(scaffold_provider *p)
 {
     tet_provider *t = (tet_provider *)p;
     if (!t) return;
-    tets_free(&t->s);
+    tet_scaffold_free(&t->s);
     free(t->F);
     free(t);
 }
@@ -163,63 +139,27 @@ scaffold_provider *scaffold_tet_create(int nmesh, int nf, const int *F, double b
     t->F = Fc;
     t->box_scale = box_scale;
     t->box_cells = box_cells;
-    t->s.nmesh = nmesh;
+    t->improve = 1;
+    tet_improve_options_default(&t->improve_opt);
     return &t->base;
 }
 
-void scaffold_tet_set_improver(scaffold_provider *p, scaffold_tet_improver fn, void *user)
+void scaffold_tet_set_improve(scaffold_provider *p, int enable, const tet_improve_options *o)
 {
     tet_provider *t = (tet_provider *)p;
-    t->improve = fn;
-    t->improve_user = user;
+    t->improve = enable;
+    if (o) t->improve_opt = *o;
+    else tet_improve_options_default(&t->improve_opt);
 }
 
-const scaffold_tets *scaffold_tet_get(const scaffold_provider *p)
+const tet_improve_stats *scaffold_tet_improve_stats(const scaffold_provider *p)
 {
-    return &((const tet_provider *)p)->s;
+    return &((const tet_provider *)p)->stats;
 }
 
-double scaffold_tet_quality(const double *a, const double *b, const double *c, const double *d)
+const signed char *scaffold_tet_inside(const scaffold_provider *p)
 {
-    double u[3], v[3], w[3];
-    for (int k = 0; k < 3; k++) {
-        u[k] = b[k] - a[k];
-        v[k] = c[k] - a[k];
-        w[k] = d[k] - a[k];
-    }
-    double vol = (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                  u[2] * (v[0] * w[1] - v[1] * w[0])) /
-        6.0;
-    const double *P[4] = {a, b, c, d};
-    double ms = 0.0;
-    for (int i = 0; i < 4; i++)
-        for (int j = i + 1; j < 4; j++)
-            for (int k = 0; k < 3; k++) ms += (P[i][k] - P[j][k]) * (P[i][k] - P[j][k]);
-    double lrms = sqrt(ms / 6.0);
-    return lrms > 0.0 ? 6.0 * sqrt(2.0) * vol / (lrms * lrms * lrms) : 0.0;
-}
-
-/* The k-th smallest of q[0..n-1] (0-based; q is reordered). */
-static double select_kth(double *q, int n, int k)
-{
-    int lo = 0, hi = n - 1;
-    while (lo < hi) {
-        double pivot = q[lo + (hi - lo) / 2];
-        int i = lo, j = hi;
-        while (i <= j) {
-            while (q[i] < pivot) i++;
-            while (q[j] > pivot) j--;
-            if (i <= j) {
-                double x = q[i];
-                q[i++] = q[j];
-                q[j--] = x;
-            }
-        }
-        if (k <= j) hi = j;
-        else if (k >= i) lo = i;
-        else return q[k];
-    }
-    return q[k];
+    return ((const tet_provider *)p)->s.region;
 }
 
 scaf_status scaffold_tet_quality_stats(const scaffold_view *v, const double *X, double *qmin,
@@ -229,18 +169,15 @@ scaf_status scaffold_tet_quality_stats(const scaffold_view *v, const double *X, 
     if (v->n <= 0) return SCAF_OK;
     double *q = malloc(sizeof(double) * (size_t)v->n);
     if (!q) return err_nomem(err, "tet quality");
-    double lo = INFINITY;
     for (int k = 0; k < v->n; k++) {
         const double *P[4];
         for (int i = 0; i < 4; i++) {
             int id = v->simplices[4 * (size_t)k + i];
             P[i] = id < v->nmesh ? X + 3 * (size_t)id : v->extra + 3 * (size_t)(id - v->nmesh);
         }
-        q[k] = scaffold_tet_quality(P[0], P[1], P[2], P[3]);
-        if (q[k] < lo) lo = q[k];
+        q[k] = tet_quality(P[0], P[1], P[2], P[3]);
     }
-    *qmin = lo;
-    *qp5 = select_kth(q, v->n, (int)((long long)(v->n - 1) * 5 / 100));
+    int rc = tet_quality_summary(v->n, q, qmin, qp5);
     free(q);
-    return SCAF_OK;
+    return rc == 0 ? SCAF_OK : err_nomem(err, "tet quality");
 }

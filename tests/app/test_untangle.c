@@ -51,7 +51,7 @@ static int on_event(const untangle_event *e, void *user)
         w->last_flow_free = p == 0;
     } else {
         assert_int_equal(e->step, ++w->back_events);
-        assert_int_equal(p, 0); /* free at every iteration */
+        assert_int_equal(p, 0);                       /* free at every iteration */
         assert_true(e->pairs == 0 || e->pairs == -1); /* -1: no verify */
         assert_true(isfinite(e->energy) && e->energy >= e->arap && e->arap >= 0);
         assert_true(e->tets > 0 && e->quality > 0);
@@ -208,8 +208,10 @@ static void refusals(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(dented),   cmocka_unit_test(cancelled),
-        cmocka_unit_test(already_free), cmocka_unit_test(refusals),
+        cmocka_unit_test(dented),
+        cmocka_unit_test(cancelled),
+        cmocka_unit_test(already_free),
+        cmocka_unit_test(refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -173,9 +173,8 @@ static void refusals(void **state)
     test_tmp_path("untangle_torus.obj", tor, sizeof tor);
     remove(res);
     assert_int_equal(test_run("'%s' gen hemisphere -s 3 -o '%s'", SCAF_BINARY, in), 0);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' untangle '%s' -o '%s' 2>&1", SCAF_BINARY,
-                                  in, res),
-                     4);
+    assert_int_equal(
+        test_capture(out, sizeof out, "'%s' untangle '%s' -o '%s' 2>&1", SCAF_BINARY, in, res), 4);
     assert_non_null(strstr(out, "open"));
     assert_false(test_exists(res));
     /* a torus of 8 x 8 quads */
@@ -192,9 +191,8 @@ static void refusals(void **state)
             fprintf(f, "f %d %d %d %d\n", 1 + i * 8 + j, 1 + (i + 1) % 8 * 8 + j,
                     1 + (i + 1) % 8 * 8 + (j + 1) % 8, 1 + i * 8 + (j + 1) % 8);
     fclose(f);
-    assert_int_equal(test_capture(out, sizeof out, "'%s' untangle '%s' -o '%s' 2>&1", SCAF_BINARY,
-                                  tor, res),
-                     4);
+    assert_int_equal(
+        test_capture(out, sizeof out, "'%s' untangle '%s' -o '%s' 2>&1", SCAF_BINARY, tor, res), 4);
     assert_non_null(strstr(out, "genus 1"));
     assert_false(test_exists(res));
     const char *bad[] = {"",
@@ -212,9 +210,8 @@ static void refusals(void **state)
                          2);
     assert_int_equal(test_run("'%s' untangle '%s' -o '%s.ply' 2>/dev/null", SCAF_BINARY, tor, res),
                      2);
-    assert_int_equal(test_run("'%s' untangle '%s.missing' -o '%s' 2>/dev/null", SCAF_BINARY, tor,
-                              res),
-                     3);
+    assert_int_equal(
+        test_run("'%s' untangle '%s.missing' -o '%s' 2>/dev/null", SCAF_BINARY, tor, res), 3);
     assert_false(test_exists(res));
 }
 
