@@ -6,9 +6,8 @@
  * panels are computed, then each panel's faces are drawn into its own
  * columns of the picture with its own z-buffer. Pixel positions of a
  * vertex are computed once per corner with one formula, so the two faces
- * of an edge see bitwise the same endpoints and the exact orient2d plus
- * the antisymmetric ownership rule give each pixel centre on the edge to
- * exactly one of them.
+ * of an edge see bitwise the same endpoints and app/pixel_cover gives
+ * each pixel centre on the edge to exactly one of them.
  */
 #include "app/surface_render.h"
 
@@ -16,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/pixel_cover.h"
 #include "app/png_write.h"
 #include "geom/predicates.h"
 
@@ -137,23 +137,6 @@ static void camera_frame(camera *c, int n, const surface_view *s, const surface_
     c->oy = 0.5 * o->height;
 }
 
-/* First and last pixel index whose centre lies in [lo, hi], clamped to [0, n). */
-static int span(double lo, double hi, int n, int *first, int *last)
-{
-    double a = ceil(lo - 0.5), b = floor(hi - 0.5);
-    if (!(a <= b) || b < 0.0 || a > n - 1) return 0;
-    *first = a < 0.0 ? 0 : (int)a;
-    *last = b > n - 1 ? n - 1 : (int)b;
-    return 1;
-}
-
-/* Edge a -> b owns the pixel centres lying on it (antisymmetric in a, b). */
-static int owns(const double a[2], const double b[2])
-{
-    double dx = b[0] - a[0], dy = b[1] - a[1];
-    return dy > 0.0 || (dy == 0.0 && dx < 0.0);
-}
-
 /* The shaded colour of face f (x its three corners) and whether it draws:
  * 0 for a zero-area face or one seen edge-on. p receives the pixel
  * positions counter-clockwise on screen, z their depths (larger = nearer). */
@@ -197,34 +180,14 @@ static void draw_panel(const camera *c, const surface_view *s, const surface_ren
         double p[3][2], z[3];
         unsigned char col[3];
         if (!face_setup(c, x, p, z, col)) continue;
-        double lo[2] = {p[0][0], p[0][1]}, hi[2] = {p[0][0], p[0][1]};
-        for (int k = 1; k < 3; k++)
-            for (int d = 0; d < 2; d++) {
-                if (p[k][d] < lo[d]) lo[d] = p[k][d];
-                if (p[k][d] > hi[d]) hi[d] = p[k][d];
-            }
-        int i0, i1, j0, j1;
-        if (!span(lo[0], hi[0], W, &i0, &i1) || !span(lo[1], hi[1], H, &j0, &j1)) continue;
-        int own[3];
-        for (int k = 0; k < 3; k++) own[k] = owns(p[k], p[(k + 1) % 3]);
-        double area =
-            (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
-        for (int j = j0; j <= j1; j++)
-            for (int i = i0; i <= i1; i++) {
-                double q[2] = {i + 0.5, j + 0.5};
-                int in = 1;
-                for (int k = 0; k < 3 && in; k++) {
-                    double side = orient2d(p[k], p[(k + 1) % 3], q);
-                    in = side > 0.0 || (side == 0.0 && own[k]);
-                }
-                if (!in) continue;
-                double depth = 0.0;
-                for (int k = 0; k < 3; k++) {
-                    const double *a = p[(k + 1) % 3], *b = p[(k + 2) % 3];
-                    double w =
-                        ((b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])) / area;
-                    depth += w * z[k];
-                }
+        pixel_cover cov;
+        if (!pixel_cover_init(&cov, (const double(*)[2])p, W, H)) continue;
+        for (int j = cov.j0; j <= cov.j1; j++)
+            for (int i = cov.i0; i <= cov.i1; i++) {
+                if (!pixel_cover_has(&cov, i, j)) continue;
+                double w[3];
+                pixel_cover_weights(&cov, i, j, w);
+                double depth = w[0] * z[0] + w[1] * z[1] + w[2] * z[2];
                 double *zb = zbuf + (size_t)j * W + i;
                 if (!(depth > *zb)) continue; /* the first of equal depths stays */
                 *zb = depth;
