@@ -12,10 +12,10 @@
 #define SCAF_APP_PIXEL_COVER_H
 
 typedef struct pixel_cover {
-    double p[3][2];         /* the corners, counter-clockwise (orient2d > 0) */
-    int own[3];             /* edge p[k] -> p[k+1] owns its centres */
-    double area2;           /* twice the signed area (floating point) */
-    int i0, i1, j0, j1;     /* pixel range of the bounding box, clamped */
+    double p[3][2];     /* the corners, counter-clockwise (orient2d > 0) */
+    int own[3];         /* edge p[k] -> p[k+1] owns its centres */
+    double area2;       /* twice the signed area (floating point) */
+    int i0, i1, j0, j1; /* pixel range of the bounding box, clamped */
 } pixel_cover;
 
 /* Set up the counter-clockwise triangle p over a width by height picture:
