@@ -82,9 +82,8 @@ int main(int argc, char **argv)
     printf("flow steps %d, flowed rms %.5f max %.4f; %d iterations (%s, best %d): rms %.5f max "
            "%.4f (%.3f of the flowed); %.3f s CPU per iteration; total CPU %.2f s; result %s\n",
            r.flow_steps, r.flowed_rms, r.flowed_max, r.iterations, untangle_stop_name(r.stop),
-           r.best_iteration, r.rms, r.max, r.rms / r.flowed_rms,
-           c.back ? c.back_cpu / c.back : 0.0, cpu_now() - t0,
-           free_ok ? "intersection-free" : "INTERSECTING");
+           r.best_iteration, r.rms, r.max, r.rms / r.flowed_rms, c.back ? c.back_cpu / c.back : 0.0,
+           cpu_now() - t0, free_ok ? "intersection-free" : "INTERSECTING");
     untangle_result_free(&r);
     mesh_free(&m);
     return free_ok ? 0 : 1;
