@@ -219,21 +219,6 @@ static void leg_data(void **state)
     assert_int_equal(test_run("'%s' check '%s' >/dev/null", SCAF_BINARY, res), 0);
 }
 
-/* Pixels of columns [x0, x0 + w) that show the inside (orange: red above
- * blue), and that show anything but the white background. */
-static void count_pixels(const unsigned char *rgba, int W, int H, int x0, int w, int *inside,
-                         int *drawn)
-{
-    *inside = *drawn = 0;
-    for (int j = 0; j < H; j++)
-        for (int i = x0; i < x0 + w; i++) {
-            unsigned c = test_png_pixel(rgba, W, i, j, NULL);
-            if (c == 0xffffffu) continue;
-            ++*drawn;
-            *inside += (c >> 16) > (c & 0xffu);
-        }
-}
-
 static void dented_sample(void **state)
 {
     (void)state;
@@ -263,10 +248,10 @@ static void dented_sample(void **state)
     assert_non_null(rgba);
     assert_int_equal(W, 256);
     assert_int_equal(H, 128);
-    count_pixels(rgba, W, H, 0, 128, &inside, &drawn);
+    test_png_surface_pixels(rgba, W, H, 0, 128, &inside, &drawn);
     assert_true(drawn > 128 * 128 / 3);
     assert_true(inside > 20);
-    count_pixels(rgba, W, H, 128, 128, &inside, &drawn);
+    test_png_surface_pixels(rgba, W, H, 128, 128, &inside, &drawn);
     assert_true(drawn > 128 * 128 / 3);
     assert_true(inside <= 2);
     free(rgba);

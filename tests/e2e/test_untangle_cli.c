@@ -42,19 +42,6 @@ static double json_number(const char *json, const char *key)
     return strtod(p + strlen(k), NULL);
 }
 
-/* Pixels of columns [x0, x0 + w) seen from inside (orange) and drawn. */
-static void panel(const unsigned char *rgba, int W, int H, int x0, int w, int *inside, int *drawn)
-{
-    *inside = *drawn = 0;
-    for (int j = 0; j < H; j++)
-        for (int i = x0; i < x0 + w; i++) {
-            unsigned c = test_png_pixel(rgba, W, i, j, NULL);
-            if (c == 0xffffffu) continue;
-            ++*drawn;
-            *inside += (c >> 16) > (c & 0xffu);
-        }
-}
-
 static void dented(void **state)
 {
     (void)state;
@@ -102,10 +89,10 @@ static void dented(void **state)
     assert_non_null(rgba);
     assert_int_equal(W, 3 * 96);
     assert_int_equal(H, 96);
-    panel(rgba, W, H, 0, 96, &inside, &drawn);
+    test_png_surface_pixels(rgba, W, H, 0, 96, &inside, &drawn);
     assert_true(drawn > 96 * 96 / 4 && inside > 0);
     for (int p = 1; p < 3; p++) {
-        panel(rgba, W, H, 96 * p, 96, &inside, &drawn);
+        test_png_surface_pixels(rgba, W, H, 96 * p, 96, &inside, &drawn);
         assert_true(drawn > 96 * 96 / 4 && inside <= 2);
     }
     free(rgba);
