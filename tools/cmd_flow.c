@@ -10,7 +10,8 @@
  * normalized positions. Exit status: 0 written, 2 usage, 3 input
  * unreadable, 4 not a closed manifold surface without zero-area faces,
  * 5 output not written, 6 the flow failed or did not free the surface,
- * 7 out of memory, 8 interrupted. --report writes a JSON of the steps.
+ * 7 out of memory, 8 interrupted. --report writes a JSON of the steps,
+ * --png a picture of the input and the flowed surface side by side.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,13 +21,14 @@
 #include "base/json_write.h"
 #include "base/timer.h"
 #include "cli_args.h"
+#include "cli_closed_surface.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
+#include "cli_surface_png.h"
 #include "exit_codes.h"
 #include "geom/self_intersect.h"
 #include "mesh/mesh_io.h"
-#include "mesh/topology.h"
 #include "opt/cmcf.h"
 
 #define FLOW_MAX_STEPS 100000
@@ -36,7 +38,7 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: scaf flow IN -o OUT.obj --steps N [--delta D] [--until-free] [--report "
             "R.json]\n"
-            "                 [--quiet]\n"
+            "                 [--png P.png [--png-size N]] [--quiet]\n"
             "\n"
             "Conformalized mean curvature flow (Kazhdan, Solomon, Ben-Chen 2012) of the\n"
             "closed surface IN: it becomes rounder at every step and, after a few, free of\n"
@@ -54,45 +56,21 @@ static void usage(FILE *out)
             "                     fail (exit 6) if none of the N steps is\n"
             "  --report FILE      a JSON report: delta, steps done, whether the result is\n"
             "                     free, and per step its seconds (with --until-free its\n"
-            "                     defects: intersecting face pairs + zero-area faces)\n"
-            "  -q, --quiet        no per-step lines on stderr (step, seconds, and with\n"
-            "                     --until-free the intersecting face pairs)\n" CLI_OUTPUTS_HELP
-            "\n",
+            "                     defects: intersecting face pairs + zero-area "
+            "faces)\n" CLI_SURFACE_PNG_HELP(
+                "the input and the flowed surface side by side") "  -q, --quiet        "
+                                                                 "no "
+                                                                 "per-step lines on "
+                                                                 "stderr "
+                                                                 "(step, seconds, and "
+                                                                 "with\n"
+                                                                 "                     "
+                                                                 "--until-free the "
+                                                                 "intersecting face "
+                                                                 "pairs)"
+                                                                 "\n" CLI_OUTPUTS_HELP "\n",
             FLOW_MAX_STEPS);
     exit_codes_print(out);
-}
-
-/* 0 when m is a closed manifold surface the flow can run on, else the
- * exit status after printing why. */
-static int check_closed_manifold(const char *in, const mesh *m)
-{
-    mesh_topology t;
-    scaf_error err;
-    err_clear(&err);
-    scaf_status st = mesh_topology_compute(m, &t, &err);
-    if (st != SCAF_OK) {
-        fprintf(stderr, "scaf flow: %s: %s\n", in, err.message);
-        return exit_code_for(st);
-    }
-    char why[256] = "";
-    if (t.faces == 0) snprintf(why, sizeof why, "it has no face");
-    else if (t.boundary_edges > 0)
-        snprintf(why, sizeof why, "the surface is open: %d boundary edges in %d loops",
-                 t.boundary_edges, t.boundary_loops);
-    else if (!t.manifold)
-        snprintf(why, sizeof why,
-                 "the surface is not manifold: %d non-manifold edges, %d non-manifold vertices",
-                 t.non_manifold_edges, t.non_manifold_vertices);
-    else if (t.degenerate_faces > 0)
-        snprintf(why, sizeof why, "%d faces have zero area (no cotangent weights)",
-                 t.degenerate_faces);
-    else if (t.unreferenced_vertices > 0)
-        snprintf(why, sizeof why, "%d vertices belong to no face", t.unreferenced_vertices);
-    mesh_topology_free(&t);
-    if (!why[0]) return EXIT_OK;
-    fprintf(stderr, "scaf flow: %s: %s; the flow needs a closed manifold triangle surface\n", in,
-            why);
-    return EXIT_MESH;
 }
 
 /* The exact check of the current surface: its defects (intersecting face
@@ -151,8 +129,10 @@ static scaf_status write_report(const char *path, const char *in, double delta, 
     return atomic_commit(&a, err);
 }
 
-/* Flow m->V in place. 0, or the exit status after printing why. */
-static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet, flow_log *g)
+/* Flow m->V in place; the normalized input is copied to start (NULL: not
+ * kept). 0, or the exit status after printing why. */
+static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet, flow_log *g,
+                    double *start)
 {
     scaf_error err;
     err_clear(&err);
@@ -164,6 +144,7 @@ static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet,
         cmcf_free(&f);
         return exit_code_for(st);
     }
+    if (start) memcpy(start, m->V, sizeof(double) * 3 * (size_t)m->nv);
     int rc = EXIT_OK;
     long long defects = -1;
     char what[128] = "";
@@ -214,8 +195,13 @@ static int flow_main(int argc, char **argv)
     const char *in = NULL, *out = NULL, *report = NULL;
     double delta = 1e-3;
     int steps = 0, until_free = 0, quiet = 0;
+    cli_surface_png png;
+    cli_surface_png_init(&png);
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int taken = cli_surface_png_option("flow", argc, argv, &i, &png);
+        if (taken < 0) return EXIT_USAGE;
+        if (taken) continue;
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             usage(stdout);
             return EXIT_OK;
@@ -248,10 +234,12 @@ static int flow_main(int argc, char **argv)
                            : "missing --steps N");
         return EXIT_USAGE;
     }
+    if (cli_surface_png_finish("flow", &png) < 0) return EXIT_USAGE;
     cli_outputs outs;
     cli_outputs_init(&outs, "flow", in);
     int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
     int kr = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
+    int kp = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
     int rc = cli_outputs_check(&outs);
     if (rc != EXIT_OK) return rc;
     mesh m;
@@ -259,11 +247,12 @@ static int flow_main(int argc, char **argv)
     if ((rc = cli_read_mesh("flow", in, quiet, &m, &info)) != EXIT_OK) return rc;
     flow_log g = {0, malloc(sizeof(double) * (size_t)steps),
                   malloc(sizeof(long long) * (size_t)steps), -1};
-    if (!g.seconds || !g.defects) {
+    double *start = kp >= 0 ? malloc(sizeof(double) * 3 * (size_t)(m.nv > 0 ? m.nv : 1)) : NULL;
+    if (!g.seconds || !g.defects || (kp >= 0 && !start)) {
         fprintf(stderr, "scaf flow: out of memory\n");
         rc = EXIT_NOMEM;
-    } else if ((rc = check_closed_manifold(in, &m)) == EXIT_OK) {
-        rc = run_flow(&m, steps, delta, until_free, quiet, &g);
+    } else if ((rc = cli_check_closed_surface("flow", in, &m, "the flow")) == EXIT_OK) {
+        rc = run_flow(&m, steps, delta, until_free, quiet, &g, start);
     }
     if (rc == EXIT_OK && cli_signal_report("flow")) rc = EXIT_CANCELLED;
     if (rc == EXIT_OK) {
@@ -277,11 +266,14 @@ static int flow_main(int argc, char **argv)
                 &outs, kr, path ? write_report(path, in, delta, until_free, &g, &err) : SCAF_ERR_IO,
                 &err);
         }
+        surface_view panels[2] = {{m.nv, start, m.nf, m.F}, {m.nv, m.V, m.nf, m.F}};
+        if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, 2, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }
     cli_outputs_abort(&outs);
     free(g.seconds);
     free(g.defects);
+    free(start);
     mesh_free(&m);
     return rc;
 }

@@ -21,6 +21,8 @@ int cmd_tet(int argc, char **argv);
 int cmd_deform(int argc, char **argv);
 int cmd_flow(int argc, char **argv);
 int cmd_edit(int argc, char **argv);
+int cmd_untangle(int argc, char **argv);
+int cmd_inflate(int argc, char **argv);
 
 const command scaf_commands[] = {
     {"check",
@@ -37,6 +39,12 @@ const command scaf_commands[] = {
     {"flow",
      "conformalized mean curvature flow of a closed surface (until free of self-intersections)",
      cmd_flow},
+    {"untangle",
+     "remove the self-intersections of a closed genus-0 surface (flow out, SCAF loop back)",
+     cmd_untangle},
+    {"inflate",
+     "grow a closed surface toward K times its size in a box, never self-intersecting (3D SCAF)",
+     cmd_inflate},
     {"tet", "tetrahedralize a box around a closed surface (TetGen, surface kept, checked exactly)",
      cmd_tet},
     {NULL, NULL, NULL}};

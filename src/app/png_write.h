@@ -16,4 +16,8 @@
 scaf_status png_write_rgba(const char *path, int width, int height, const unsigned char *rgba,
                            scaf_error *err);
 
+/* The same for an opaque picture: rgb holds 3 bytes R G B per pixel. */
+scaf_status png_write_rgb(const char *path, int width, int height, const unsigned char *rgb,
+                          scaf_error *err);
+
 #endif /* SCAF_APP_PNG_WRITE_H */

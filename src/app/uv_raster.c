@@ -2,10 +2,8 @@
  *
  * Pixel positions of the vertices are computed once per corner with the
  * same formula, so two triangles sharing an edge see bitwise the same
- * endpoints; orient2d then gives each pixel centre an exact side, and the
- * ownership rule (edge direction d owns its points when d.y > 0, or d.y
- * == 0 and d.x < 0) is antisymmetric, so exactly one of the two
- * triangles of an edge takes the centres lying on it. Barycentric weights
+ * endpoints, and app/pixel_cover gives each pixel centre on the edge to
+ * exactly one of them. Barycentric weights
  * for the 3D checker are plain floating point: they only pick a shade.
  */
 #include "app/uv_raster.h"
@@ -14,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/pixel_cover.h"
 #include "geom/predicates.h"
 
 scaf_status uv_raster_new(uv_raster *r, int width, int height, scaf_error *err)
@@ -68,12 +67,6 @@ unsigned uv_raster_checker_dark(unsigned rgb)
     return out;
 }
 
-static int owns(const double a[2], const double b[2])
-{
-    double dx = b[0] - a[0], dy = b[1] - a[1];
-    return dy > 0.0 || (dy == 0.0 && dx < 0.0);
-}
-
 static void put(uv_raster *r, int i, int j, unsigned rgb)
 {
     unsigned char *p = r->rgba + 4 * ((size_t)j * (size_t)r->width + (size_t)i);
@@ -87,16 +80,6 @@ static void to_pixel(const uv_raster_frame *fr, const double *uv, double p[2])
 {
     p[0] = fr->ox + (uv[0] - fr->u0) * fr->scale;
     p[1] = fr->oy + (fr->v1 - uv[1]) * fr->scale;
-}
-
-/* First and last pixel index whose centre lies in [lo, hi], clamped to [0, n). */
-static int span(double lo, double hi, int n, int *first, int *last)
-{
-    double a = ceil(lo - 0.5), b = floor(hi - 0.5);
-    if (!(a <= b) || b < 0.0 || a > n - 1) return 0;
-    *first = a < 0.0 ? 0 : (int)a;
-    *last = b > n - 1 ? n - 1 : (int)b;
-    return 1;
 }
 
 void uv_raster_fill(uv_raster *r, const uv_raster_frame *fr, const uv_raster_mesh *m)
@@ -120,39 +103,17 @@ void uv_raster_fill(uv_raster *r, const uv_raster_frame *fr, const uv_raster_mes
             x[1] = x[2];
             x[2] = tx;
         }
-        double lo[2] = {p[0][0], p[0][1]}, hi[2] = {p[0][0], p[0][1]};
-        for (int k = 1; k < 3; k++)
-            for (int d = 0; d < 2; d++) {
-                if (p[k][d] < lo[d]) lo[d] = p[k][d];
-                if (p[k][d] > hi[d]) hi[d] = p[k][d];
-            }
-        int i0, i1, j0, j1;
-        if (!span(lo[0], hi[0], r->width, &i0, &i1) || !span(lo[1], hi[1], r->height, &j0, &j1))
-            continue;
-        int own[3];
-        for (int k = 0; k < 3; k++) own[k] = owns(p[k], p[(k + 1) % 3]);
+        pixel_cover cov;
+        if (!pixel_cover_init(&cov, (const double(*)[2])p, r->width, r->height)) continue;
         unsigned light = m->colour[f], dark = uv_raster_checker_dark(light);
-        /* twice the signed area, for barycentric weights */
-        double area =
-            (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
-        for (int j = j0; j <= j1; j++)
-            for (int i = i0; i <= i1; i++) {
-                double c[2] = {i + 0.5, j + 0.5};
-                int in = 1;
-                for (int k = 0; k < 3 && in; k++) {
-                    double s = orient2d(p[k], p[(k + 1) % 3], c);
-                    in = s > 0.0 || (s == 0.0 && own[k]);
-                }
-                if (!in) continue;
+        for (int j = cov.j0; j <= cov.j1; j++)
+            for (int i = cov.i0; i <= cov.i1; i++) {
+                if (!pixel_cover_has(&cov, i, j)) continue;
                 unsigned col = light;
                 if (checker) {
                     int parity = 0;
                     double w[3];
-                    for (int k = 0; k < 3; k++) {
-                        const double *a = p[(k + 1) % 3], *b = p[(k + 2) % 3];
-                        w[k] =
-                            ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / area;
-                    }
+                    pixel_cover_weights(&cov, i, j, w);
                     for (int d = 0; d < 3; d++) {
                         double X = w[0] * x[0][d] + w[1] * x[1][d] + w[2] * x[2][d];
                         /* fmod, not an integer cast: far from the origin floor() can overflow an int */

@@ -6,6 +6,7 @@
  * unknown name, a size out of range, or allocation.
  */
 #include "mesh/samples.h"
+#include "mesh/dented_sphere.h"
 #include "mesh/spiral_strip.h"
 
 #include <math.h>
@@ -30,6 +31,10 @@ static const mesh_sample_info SAMPLES[] = {
     {"icosphere",
      "closed unit geodesic sphere, each icosahedron face cut n x n: 20n^2 faces, no UVs", 4, 1,
      200},
+    {"dented",
+     "closed sphere whose top cap is pushed down through its bottom: intersects itself "
+     "(20n^2 faces)",
+     6, 2, 200},
 };
 
 int mesh_sample_count(void) { return (int)(sizeof SAMPLES / sizeof SAMPLES[0]); }
@@ -419,5 +424,10 @@ scaf_status mesh_sample_make(const char *name, int size, mesh *m, scaf_error *er
     if (!strcmp(info->name, "cubesphere")) return make_cubesphere(size, m, err);
     if (!strcmp(info->name, "spiral")) return spiral_strip_make(size, m, err);
     if (!strcmp(info->name, "icosphere")) return make_icosphere(size, m, err);
+    if (!strcmp(info->name, "dented")) {
+        scaf_status st = make_icosphere(size, m, err);
+        if (st == SCAF_OK) dented_sphere_push(m);
+        return st;
+    }
     return err_set(err, SCAF_ERR_INTERNAL, "sample '%s' has no generator", info->name);
 }

@@ -7,20 +7,31 @@
 
 #include "opt/cotan_laplacian.h"
 
-scaf_status cmcf_normalize(int nv, double *U, int nf, const int *F, scaf_error *err)
+scaf_status cmcf_frame(int nv, const double *U, int nf, const int *F, double centre[3],
+                       double *area, scaf_error *err)
 {
-    double area = 0, c[3] = {0, 0, 0};
+    (void)nv;
+    double A = 0, c[3] = {0, 0, 0};
     for (int f = 0; f < nf; f++) {
         const double *p[3];
         for (int k = 0; k < 3; k++) p[k] = U + 3 * (size_t)F[3 * f + k];
         double a = opt_tri_area3(p[0], p[1], p[2]);
-        area += a;
+        A += a;
         for (int d = 0; d < 3; d++) c[d] += a * (p[0][d] + p[1][d] + p[2][d]) / 3;
     }
-    if (!(area > 0) || !isfinite(area))
-        return err_set(err, SCAF_ERR_NUMERIC, "the surface has area %g: cannot normalize it", area);
+    if (!(A > 0) || !isfinite(A))
+        return err_set(err, SCAF_ERR_NUMERIC, "the surface has area %g: cannot normalize it", A);
+    for (int d = 0; d < 3; d++) centre[d] = c[d] / A;
+    *area = A;
+    return SCAF_OK;
+}
+
+scaf_status cmcf_normalize(int nv, double *U, int nf, const int *F, scaf_error *err)
+{
+    double c[3], area;
+    scaf_status st = cmcf_frame(nv, U, nf, F, c, &area, err);
+    if (st != SCAF_OK) return st;
     double s = 1 / sqrt(area);
-    for (int d = 0; d < 3; d++) c[d] /= area;
     for (int v = 0; v < nv; v++)
         for (int d = 0; d < 3; d++) U[3 * (size_t)v + d] = (U[3 * (size_t)v + d] - c[d]) * s;
     return SCAF_OK;

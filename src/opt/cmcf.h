@@ -43,6 +43,13 @@ typedef struct cmcf {
     int steps; /* steps done */
 } cmcf;
 
+/* The frame cmcf_normalize takes away: the area-weighted centroid of the
+ * surface U (#V by 3) and its area (SCAF_ERR_NUMERIC when zero or not
+ * finite). A normalized shape N is back in U's frame as centre +
+ * sqrt(area) N. */
+scaf_status cmcf_frame(int nv, const double *U, int nf, const int *F, double centre[3],
+                       double *area, scaf_error *err);
+
 /* Normalize U in place: area-weighted centroid at the origin, total area
  * 1. Fails with SCAF_ERR_NUMERIC when the area is zero or not finite. */
 scaf_status cmcf_normalize(int nv, double *U, int nf, const int *F, scaf_error *err);

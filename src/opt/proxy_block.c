@@ -44,6 +44,38 @@ static int cmp_row_id(const void *pa, const void *pb)
     return (a->row > b->row) - (a->row < b->row);
 }
 
+/* Entries ent, bucketed by column (b->vcolptr: bucket starts, nfree + 1),
+ * sorted by row and deduplicated in place; b->map[id] gets the vertex-level
+ * entry of each, b->vcolptr the deduplicated column starts. fill: scratch
+ * of nfree + 1. */
+static void sort_columns(opt_proxy_block *b, row_id *ent, int *fill)
+{
+    int nfree = b->nfree, out = 0;
+    for (int c = 0; c < nfree; c++) {
+        int lo = b->vcolptr[c], hi = b->vcolptr[c + 1];
+        if (hi - lo > 24) {
+            qsort(ent + lo, (size_t)(hi - lo), sizeof *ent, cmp_row_id);
+        } else {
+            for (int i = lo + 1; i < hi; i++) {
+                row_id x = ent[i];
+                int j = i - 1;
+                while (j >= lo && ent[j].row > x.row) {
+                    ent[j + 1] = ent[j];
+                    j--;
+                }
+                ent[j + 1] = x;
+            }
+        }
+        fill[c] = out;
+        for (int i = lo; i < hi; i++) {
+            if (i == lo || ent[i].row != ent[i - 1].row) ent[out++].row = ent[i].row;
+            b->map[ent[i].id] = out - 1;
+        }
+    }
+    fill[nfree] = out;
+    memcpy(b->vcolptr, fill, ((size_t)nfree + 1) * sizeof *fill);
+}
+
 /* The scalar upper CSC of the vertex-level pattern, values zeroed; frees
  * the block on failure. */
 static scaf_status expand_scalar(opt_proxy_block *b, scaf_error *err)
@@ -56,6 +88,26 @@ static scaf_status expand_scalar(opt_proxy_block *b, scaf_error *err)
     }
     b->version++;
     return SCAF_OK;
+}
+
+/* The end of a pattern build: entries ent bucketed by column (b->vcolptr)
+ * sorted, deduplicated and mapped (sort_columns), the row indices stored
+ * and the scalar pattern expanded. Frees ent and fill; frees the block on
+ * failure. */
+static scaf_status finish_pattern(opt_proxy_block *b, row_id *ent, int *fill, scaf_error *err)
+{
+    sort_columns(b, ent, fill);
+    free(fill);
+    int out = b->vcolptr[b->nfree];
+    b->vrowidx = malloc(((size_t)out + 1) * sizeof *b->vrowidx);
+    if (!b->vrowidx) {
+        free(ent);
+        opt_proxy_block_free(b);
+        return err_nomem(err, "proxy system pattern");
+    }
+    for (int k = 0; k < out; k++) b->vrowidx[k] = ent[k].row;
+    free(ent);
+    return expand_scalar(b, err);
 }
 
 scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, const int *dof,
@@ -112,41 +164,7 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
                 ent[fill[col]++].id = (int)id;
             }
     }
-    /* Sort each column, deduplicate, record the map. */
-    int out = 0;
-    for (int c = 0; c < nfree; c++) {
-        int lo = b->vcolptr[c], hi = b->vcolptr[c + 1];
-        if (hi - lo > 24) {
-            qsort(ent + lo, (size_t)(hi - lo), sizeof *ent, cmp_row_id);
-        } else {
-            for (int i = lo + 1; i < hi; i++) {
-                row_id x = ent[i];
-                int j = i - 1;
-                while (j >= lo && ent[j].row > x.row) {
-                    ent[j + 1] = ent[j];
-                    j--;
-                }
-                ent[j + 1] = x;
-            }
-        }
-        fill[c] = out;
-        for (int i = lo; i < hi; i++) {
-            if (i == lo || ent[i].row != ent[i - 1].row) ent[out++].row = ent[i].row;
-            b->map[ent[i].id] = out - 1;
-        }
-    }
-    fill[nfree] = out;
-    memcpy(b->vcolptr, fill, ((size_t)nfree + 1) * sizeof *fill);
-    free(fill);
-    b->vrowidx = malloc(((size_t)out + 1) * sizeof *b->vrowidx);
-    if (!b->vrowidx) {
-        free(ent);
-        opt_proxy_block_free(b);
-        return err_nomem(err, "proxy system pattern");
-    }
-    for (int k = 0; k < out; k++) b->vrowidx[k] = ent[k].row;
-    free(ent);
-    return expand_scalar(b, err);
+    return finish_pattern(b, ent, fill, err);
 }
 
 scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, const int *verts,
@@ -176,6 +194,71 @@ scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, c
         b->vcolptr[c + 1] += b->vcolptr[c];
     }
     return expand_scalar(b, err);
+}
+
+scaf_status opt_proxy_block_pattern_pairs(opt_proxy_block *b, int d, int n, const int *pairs,
+                                          const int *dof, int nfree, scaf_error *err)
+{
+    opt_proxy_block_free(b);
+    int top = -1;
+    for (size_t k = 0; k < 2 * (size_t)n; k++) {
+        int v = dof[pairs[k]];
+        if (v >= nfree)
+            return err_set(err, SCAF_ERR_INTERNAL, "pair %zu: dof %d outside [0, %d)", k / 2, v,
+                           nfree);
+        if (v > top) top = v;
+    }
+    nfree = top + 1;
+    /* entries: the n pairs, then the diagonal of every free vertex they touch */
+    size_t ne = (size_t)n + (size_t)nfree;
+    b->d = d;
+    b->nfree = nfree;
+    b->vcolptr = calloc((size_t)nfree + 1, sizeof *b->vcolptr);
+    b->map = malloc((ne ? ne : 1) * sizeof *b->map);
+    row_id *ent = malloc((ne ? ne : 1) * sizeof *ent);
+    int *fill = malloc(((size_t)nfree + 1) * sizeof *fill);
+    unsigned char *used = calloc((size_t)nfree + 1, 1);
+    if (!b->vcolptr || !b->map || !ent || !fill || !used) {
+        free(ent);
+        free(fill);
+        free(used);
+        opt_proxy_block_free(b);
+        return err_nomem(err, "proxy system pattern");
+    }
+    for (int k = 0; k < n; k++) {
+        int di = dof[pairs[2 * k]], dj = dof[pairs[2 * k + 1]];
+        if (di < 0 || dj < 0) continue;
+        b->vcolptr[(di > dj ? di : dj) + 1]++;
+        used[di] = used[dj] = 1;
+    }
+    for (int c = 0; c < nfree; c++) b->vcolptr[c + 1] += b->vcolptr[c] + used[c];
+    memcpy(fill, b->vcolptr, ((size_t)nfree + 1) * sizeof *fill);
+    for (int k = 0; k < n; k++) {
+        int di = dof[pairs[2 * k]], dj = dof[pairs[2 * k + 1]];
+        b->map[k] = -1;
+        if (di < 0 || dj < 0) continue;
+        int col = di > dj ? di : dj;
+        ent[fill[col]].row = di < dj ? di : dj;
+        ent[fill[col]++].id = k;
+    }
+    for (int c = 0; c < nfree; c++) {
+        b->map[n + c] = -1;
+        if (!used[c]) continue;
+        ent[fill[c]].row = c;
+        ent[fill[c]++].id = n + c;
+    }
+    free(used);
+    return finish_pattern(b, ent, fill, err);
+}
+
+void opt_proxy_block_add_pair(opt_proxy_block *b, int k, const int *dof, const int *pairs, double w)
+{
+    int e = b->map[k];
+    if (e < 0) return;
+    int di = dof[pairs[2 * k]], dj = dof[pairs[2 * k + 1]], col = di > dj ? di : dj;
+    int d = b->d, off = (e - b->vcolptr[col]) * d;
+    int *cp = b->A.colptr;
+    for (int a = 0; a < d; a++) b->A.val[cp[col * d + a] + off + a] += w;
 }
 
 void opt_proxy_block_add_diagonal(opt_proxy_block *b, int k, double w)

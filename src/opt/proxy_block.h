@@ -60,6 +60,22 @@ scaf_status opt_proxy_block_pattern(opt_proxy_block *b, const opt_simplices *S, 
 scaf_status opt_proxy_block_pattern_vertices(opt_proxy_block *b, int d, int n, const int *verts,
                                              const int *dof, int nfree, scaf_error *err);
 
+/* A block of vertex-pair couplings (a surface term's edges): its pattern
+ * holds, for each pair k of pairs (n by 2 vertex ids; (v, v) allowed) whose
+ * two vertices are free, the d by d block coupling them, plus the diagonal
+ * block of every free vertex a pair touches. b->map gets n + nfree
+ * entries, the first n the pairs' vertex-level entries (-1 when a vertex
+ * is fixed). Values are zeroed; add them with opt_proxy_block_add_pair
+ * and opt_proxy_block_add_diagonal. */
+scaf_status opt_proxy_block_pattern_pairs(opt_proxy_block *b, int d, int n, const int *pairs,
+                                          const int *dof, int nfree, scaf_error *err);
+
+/* Add w * I (d by d) to the block of pair k (the pattern's pairs and
+ * dof); nothing when one of its vertices is fixed. A pair (v, v) adds to
+ * the diagonal block. Values accumulate. */
+void opt_proxy_block_add_pair(opt_proxy_block *b, int k, const int *dof, const int *pairs,
+                              double w);
+
 /* Add w * I (d by d) to the diagonal block of the free vertex with dof k,
  * which must be in the pattern (any block: the diagonal sorts last in its
  * column). Values accumulate: a term refilling a kept pattern zeroes

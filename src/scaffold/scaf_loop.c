@@ -87,9 +87,13 @@ static scaf_status boundary_edges(int nv, int nf, const int *F, int **out, int *
 
 /* ---- the loop's own state --------------------------------------------- */
 
-enum { MESH_TERM = 0, SCAFFOLD_TERM = 1 };
-
 struct scaf_loop_work {
+    int mesh_k, scaf_k;  /* term indices (mesh_k -1 in a volume loop) */
+    double energy_floor; /* volume loop: see scaf_loop_init_volume */
+    int *kept;           /* volume loop: the last iteration's scaffold
+                                    (n by 4 ids, then nextra fixed flags), to
+                                    keep its pattern when it did not change */
+    int kept_n, kept_nextra;
     scaffold_provider *scaffold; /* refreshed every iteration */
     scaffold_view view;          /* its current scaffold */
     opt_simplices scaf;          /* its rest frames (current shape), weight = lambda */
@@ -145,6 +149,7 @@ void scaf_loop_free(scaf_loop *L)
         free(w->rhs);
         free(w->sol);
         free(w->dir);
+        free(w->kept);
         free(w);
     }
     memset(L, 0, sizeof *L);
@@ -203,9 +208,53 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
     opt_chol_set_relax(w->chol, 4); /* bigger supernodes: faster (bench_factor) */
     w->mesh_def = (opt_simplex_term){&L->chart, L->opt.energy, NULL, 1};
     w->scaf_def = (opt_simplex_term){&w->scaf, OPT_ENERGY_SYMMETRIC_DIRICHLET, NULL, 0};
-    w->terms[MESH_TERM] = opt_simplex_term_make(&w->mesh_def);
-    w->terms[SCAFFOLD_TERM] = opt_simplex_term_make(&w->scaf_def);
+    w->mesh_k = 0;
+    w->scaf_k = 1;
+    w->terms[w->mesh_k] = opt_simplex_term_make(&w->mesh_def);
+    w->terms[w->scaf_k] = opt_simplex_term_make(&w->scaf_def);
     w->nterms = 2;
+    return SCAF_OK;
+}
+
+scaf_status scaf_loop_init_volume(scaf_loop *L, int nv, const double *X0, scaffold_provider *p,
+                                  double energy_floor, const scaf_loop_options *opt,
+                                  scaf_error *err)
+{
+    memset(L, 0, sizeof *L);
+    if (!p || p->d != 3 || p->nmesh != nv || nv < 1 || !(energy_floor > 0.0) ||
+        !isfinite(energy_floor)) {
+        scaffold_provider_destroy(p);
+        return err_set(err, SCAF_ERR_USAGE,
+                       "SCAF volume loop: a 3D scaffold provider over %d vertices and an energy "
+                       "floor > 0 (%g) are needed",
+                       nv, energy_floor);
+    }
+    L->d = 3;
+    L->nv = nv;
+    L->opt = opt ? *opt : scaf_loop_options_default();
+    L->uv = malloc(sizeof(double) * 3 * (size_t)nv);
+    L->work = calloc(1, sizeof *L->work);
+    if (!L->uv || !L->work) {
+        scaffold_provider_destroy(p);
+        scaf_loop_free(L);
+        return err_nomem(err, "SCAF volume loop");
+    }
+    memcpy(L->uv, X0, sizeof(double) * 3 * (size_t)nv);
+    scaf_loop_work *w = L->work;
+    w->scaffold = p;
+    w->chol = opt_chol_create(OPT_ORDER_AMD, err);
+    if (!w->chol) {
+        scaf_loop_free(L);
+        return err && err->code ? err->code : SCAF_ERR_NOMEM;
+    }
+    opt_chol_set_block(w->chol, 3);
+    opt_chol_set_relax(w->chol, 4);
+    w->mesh_k = -1;
+    w->scaf_k = 0;
+    w->energy_floor = energy_floor;
+    w->scaf_def = (opt_simplex_term){&w->scaf, OPT_ENERGY_SYMMETRIC_DIRICHLET, NULL, 0};
+    w->terms[w->scaf_k] = opt_simplex_term_make(&w->scaf_def);
+    w->nterms = 1;
     return SCAF_OK;
 }
 
@@ -247,7 +296,7 @@ const int *scaf_loop_mesh_ordering(const scaf_loop *L) { return L->work->mesh_pe
 int scaf_loop_newton_available(const scaf_loop *L)
 {
     const scaf_loop_work *w = L->work;
-    if (L->opt.energy != OPT_ENERGY_SYMMETRIC_DIRICHLET) return 0;
+    if (w->mesh_k >= 0 && L->opt.energy != OPT_ENERGY_SYMMETRIC_DIRICHLET) return 0;
     for (int k = 0; k < w->nterms; k++)
         if (w->terms[k].ops->fill && !w->terms[k].ops->hessian_fill) return 0;
     return 1;
@@ -255,8 +304,19 @@ int scaf_loop_newton_available(const scaf_loop *L)
 
 /* ---- energies ---------------------------------------------------------- */
 
+/* Volume loop: the added terms' energy at the mesh positions. */
+static double terms_energy(const scaf_loop *L)
+{
+    const scaf_loop_work *w = L->work;
+    double e = 0.0;
+    for (int k = 0; k < w->nterms; k++)
+        if (k != w->scaf_k) e += w->terms[k].ops->energy(&w->terms[k], L->uv);
+    return e;
+}
+
 double scaf_loop_energy(const scaf_loop *L)
 {
+    if (L->work->mesh_k < 0) return terms_energy(L);
     opt_term t = {&L->chart, OPT_ENERGY_SYMMETRIC_DIRICHLET};
     return opt_term_energy(&t, L->uv) / L->total_area;
 }
@@ -580,6 +640,27 @@ static inline double triangle_area(const double *X, const int *t)
     return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
 }
 
+/* Volume loop: a 3D scaffold usually keeps its tets from one iteration to
+ * the next (scaffold/scaffold_tet), and then so does the term's pattern
+ * (and CHOLMOD's analysis): tell the scaffold term to keep it. */
+static scaf_status keep_same_pattern(scaf_loop_work *w, const scaffold_view *v, scaf_error *err)
+{
+    size_t nt = 4 * (size_t)v->n, need = nt + (size_t)v->nextra;
+    int same = w->kept && w->kept_n == v->n && w->kept_nextra == v->nextra &&
+        !memcmp(w->kept, v->simplices, nt * sizeof(int));
+    for (int i = 0; same && i < v->nextra; i++) same = w->kept[nt + i] == v->extra_fixed[i];
+    w->scaf_def.keep_pattern = same;
+    if (same) return SCAF_OK;
+    int *k = realloc(w->kept, (need ? need : 1) * sizeof *k);
+    if (!k) return err_nomem(err, "SCAF volume loop");
+    w->kept = k;
+    memcpy(k, v->simplices, nt * sizeof(int));
+    for (int i = 0; i < v->nextra; i++) k[nt + i] = v->extra_fixed[i];
+    w->kept_n = v->n;
+    w->kept_nextra = v->nextra;
+    return SCAF_OK;
+}
+
 /* Rest shapes of the scaffold = current shapes (eps guard), energy weight
  * lambda, proxy weight lambda / 4 except on guarded simplices (banner). */
 static scaf_status scaffold_term(scaf_loop *L, int nall, const double *X, double lambda,
@@ -618,13 +699,25 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     int *dof = NULL;
     unsigned char *fixed = NULL;
 
-    w->mesh_def.energy = L->opt.energy;
-    const opt_obj_term *mesh_term = &w->terms[MESH_TERM];
-    double EM = mesh_term->ops->energy(mesh_term, L->uv);
-    /* The reported E is symmetric Dirichlet: reuse EM when that is the
-     * optimized energy too. */
-    I.energy_before =
-        L->opt.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET ? EM / L->total_area : scaf_loop_energy(L);
+    double EM;
+    if (w->mesh_k >= 0) {
+        w->mesh_def.energy = L->opt.energy;
+        const opt_obj_term *mesh_term = &w->terms[w->mesh_k];
+        EM = mesh_term->ops->energy(mesh_term, L->uv);
+        /* The reported E is symmetric Dirichlet: reuse EM when that is the
+         * optimized energy too. */
+        I.energy_before = L->opt.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET ? EM / L->total_area
+                                                                          : scaf_loop_energy(L);
+    } else {
+        /* Volume loop: the scaffold weight follows the terms' energy plus
+         * the floor, so it stays positive (scaf_loop_init_volume). */
+        I.energy_before = terms_energy(L);
+        EM = I.energy_before + w->energy_floor;
+        if (!isfinite(EM)) {
+            st = err_set(err, SCAF_ERR_NUMERIC, "SCAF volume loop: the energy is not finite");
+            goto done;
+        }
+    }
     t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_OTHER] += t1 - t0;
     t0 = t1;
@@ -636,6 +729,10 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     if (st != SCAF_OK) goto done;
     const scaffold_view *sc = &w->view;
     int nall = L->nv + sc->nextra;
+    if (w->mesh_k < 0) {
+        st = keep_same_pattern(w, sc, err);
+        if (st != SCAF_OK) goto done;
+    }
     size_t nx = (size_t)d * (size_t)nall;
     t1 = timer_now();
     I.phase_seconds[SCAF_PHASE_SCAFFOLD] += t1 - t0;

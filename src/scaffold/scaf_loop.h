@@ -116,7 +116,7 @@ typedef struct scaf_loop {
     scaf_loop_options opt;
     scaf_loop_hooks hooks; /* zero = none (see above) */
     /* the problem (read only) */
-    int d; /* vertex dimension of the map (2) */
+    int d; /* vertex dimension of the map (2; 3: scaf_loop_init_volume) */
     int nv, nf;
     int *F;              /* nf by 3 working faces */
     opt_simplices chart; /* rest frames of the mesh triangles, weight = 3D area */
@@ -139,6 +139,29 @@ typedef struct scaf_loop {
  * callers' starts are bijective by construction). */
 scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const int *F,
                            const double *uv0, const scaf_loop_options *opt, scaf_error *err);
+
+/* Set up the loop in 3D (d = 3) on a "mesh" that is only a set of nv
+ * vertices (a closed triangle surface's, typically) with positions X0
+ * (nv by 3, copied): there is no chart term; the mesh energy comes from
+ * the terms added with scaf_loop_add_term (a surface term toward a target
+ * shape, opt/surface_arap_term), and p (taken: owned by the loop, also on
+ * failure) provides the scaffold of tets (scaffold/scaffold_tet). Each
+ * iteration is the 2D one over tets: SLIM (Newton where every term has a
+ * Hessian), the flip-free line search over every tet (a cubic per tet),
+ * exact orient3d confirmation, the provider's eps guard.
+ * Scaffold weight: lambda = opt.lambda_ratio * (E_terms + energy_floor) /
+ * |S|, with E_terms the added terms' energy at the iteration's start. In
+ * 2D lambda follows the chart's symmetric Dirichlet energy, which is at
+ * least 2d times the area; a surface ARAP energy is 0 at its target, and
+ * the authors' (E / area - 2d) weight turns negative with it. The floor
+ * (> 0, e.g. 2d * the surface term's weight * the target area, the
+ * analogue of 2D's minimum) keeps lambda positive and finite; a
+ * non-finite energy fails with SCAF_ERR_NUMERIC. scaf_loop_energy is then
+ * E_terms. Fails with SCAF_ERR_USAGE (provider not 3D over nv vertices,
+ * floor not > 0) or SCAF_ERR_NOMEM. */
+scaf_status scaf_loop_init_volume(scaf_loop *L, int nv, const double *X0, scaffold_provider *p,
+                                  double energy_floor, const scaf_loop_options *opt,
+                                  scaf_error *err);
 
 /* Replace the scaffold provider (by default, for d = 2, the CDT scaffold
  * of scaffold/scaffold_cdt around the mesh's boundary edges) by p, which
@@ -164,7 +187,8 @@ int scaf_loop_newton_available(const scaf_loop *L);
  * step in the same iteration. */
 scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error *err);
 
-/* Reported energy E = sum A_f SD(J_f) / sum A_f of the current map. */
+/* Reported energy E = sum A_f SD(J_f) / sum A_f of the current map (a
+ * volume loop: the added terms' energy). */
 double scaf_loop_energy(const scaf_loop *L);
 
 /* Per-triangle symmetric Dirichlet energy of the current map (nf values). */

@@ -31,7 +31,8 @@ def main(argv):
         errors.append("tools/exit_codes.h: expected codes 8 and 70 among %s" % codes)
 
     helps = {}
-    for cmd in ([], ["param"], ["atlas"], ["check"], ["deform"], ["flow"], ["edit"]):
+    for cmd in ([], ["param"], ["atlas"], ["check"], ["deform"], ["flow"], ["edit"], ["untangle"],
+                ["inflate"]):
         r = subprocess.run([scaf] + cmd + ["--help"], capture_output=True, text=True)
         name = " ".join(["scaf"] + cmd)
         if r.returncode != 0:

@@ -4,7 +4,11 @@
  * when the steps do not suffice, refuses an open surface (exit 4) and bad
  * command lines (exit 2), leaves nothing when interrupted (exit 8), and
  * reproduces the authors' leg-flow6.off from leg-intersect.off (skipped
- * without ../shared/data). */
+ * without ../shared/data). The generated `dented` sample (cap pushed
+ * through the sphere) is found self-intersecting by `scaf check --3d`
+ * and freed within 6 steps; --png draws input | flowed: the input panel
+ * shows the inside colour where the cap comes out below, the flowed
+ * (free, outward) one almost none; a bad --png path writes nothing. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -17,6 +21,7 @@
 
 #include "mesh/mesh_io.h"
 #include "mesh/samples.h"
+#include "support/png_read.h"
 #include "support/cli_capture.h"
 #include "support/support.h"
 #include "support/vertex_diff.h"
@@ -214,12 +219,68 @@ static void leg_data(void **state)
     assert_int_equal(test_run("'%s' check '%s' >/dev/null", SCAF_BINARY, res), 0);
 }
 
+static void dented_sample(void **state)
+{
+    (void)state;
+    char in[1024], res[1024], rep[1024], png[1024];
+    test_tmp_path("flow_cli_dented.obj", in, sizeof in);
+    test_tmp_path("flow_cli_dented_free.obj", res, sizeof res);
+    test_tmp_path("flow_cli_dented.json", rep, sizeof rep);
+    test_tmp_path("flow_cli_dented.png", png, sizeof png);
+    remove(res);
+    remove(png);
+    assert_int_equal(test_run("'%s' gen dented -o '%s'", SCAF_BINARY, in), 0);
+    assert_int_equal(test_capture(out, sizeof out, "'%s' check --3d --json '%s'", SCAF_BINARY, in),
+                     1);
+    assert_true(test_json_field(out, "crossing_pairs") > 0);
+    assert_int_equal(test_json_field(out, "intersection_free"), 0);
+    assert_int_equal(test_run("'%s' flow '%s' -o '%s' --steps 20 --until-free -q --report '%s' "
+                              "--png '%s' --png-size 128",
+                              SCAF_BINARY, in, res, rep, png),
+                     0);
+    char *json = test_slurp(rep);
+    assert_non_null(json);
+    assert_true(test_json_field(json, "steps") <= 6);
+    free(json);
+    assert_int_equal(test_run("'%s' check --3d '%s' >/dev/null", SCAF_BINARY, res), 0);
+    int W, H, inside, drawn;
+    unsigned char *rgba = test_png_read(png, &W, &H);
+    assert_non_null(rgba);
+    assert_int_equal(W, 256);
+    assert_int_equal(H, 128);
+    test_png_surface_pixels(rgba, W, H, 0, 128, &inside, &drawn);
+    assert_true(drawn > 128 * 128 / 3);
+    assert_true(inside > 20);
+    test_png_surface_pixels(rgba, W, H, 128, 128, &inside, &drawn);
+    assert_true(drawn > 128 * 128 / 3);
+    assert_true(inside <= 2);
+    free(rgba);
+    /* all or none: an unwritable picture leaves no OBJ, no report */
+    remove(res);
+    remove(rep);
+    char bad[1024];
+    test_tmp_path("no_such_folder/flow.png", bad, sizeof bad);
+    assert_int_equal(test_run("'%s' flow '%s' -o '%s' --steps 2 -q --report '%s' --png '%s' "
+                              "2>/dev/null",
+                              SCAF_BINARY, in, res, rep, bad),
+                     5);
+    assert_false(test_exists(res));
+    assert_false(test_exists(rep));
+    const char *usage[] = {"--png-size 64", "--png x.png --png-size 8", "--png x.png --png-size",
+                           "--png"};
+    for (size_t k = 0; k < sizeof usage / sizeof usage[0]; k++)
+        assert_int_equal(test_run("'%s' flow '%s' -o '%s' --steps 2 %s 2>/dev/null", SCAF_BINARY,
+                                  in, res, usage[k]),
+                         2);
+    assert_false(test_exists(res));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(until_free), cmocka_unit_test(fixed_steps_and_quiet),
         cmocka_unit_test(refusals),   cmocka_unit_test(interrupted),
-        cmocka_unit_test(leg_data),
+        cmocka_unit_test(leg_data),   cmocka_unit_test(dented_sample),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

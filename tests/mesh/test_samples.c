@@ -9,6 +9,7 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "mesh/dented_sphere.h"
 #include "mesh/samples.h"
 #include "mesh/topology.h"
 #include "mesh/uv_charts.h"
@@ -243,6 +244,52 @@ static void icosphere(void **state)
     }
 }
 
+/* The icosphere turned so that a corner is the top pole, with its cap
+ * pushed down by the documented amount: same faces, the vertices outside
+ * the cap only turned, the pole at 1 - depth, below the sphere. */
+static void dented(void **state)
+{
+    (void)state;
+    for (int n = 2; n <= 8; n += 3) {
+        mesh m, ico;
+        mesh_topology t;
+        mesh_charts c;
+        open_sample("dented", n, &m, &t, &c);
+        make("icosphere", n, &ico);
+        assert_int_equal(t.euler_characteristic, 2);
+        assert_int_equal(t.genus_sum, 0);
+        assert_int_equal(t.boundary_loops, 0);
+        assert_int_equal(m.nv, ico.nv);
+        assert_memory_equal(m.F, ico.F, sizeof(int) * 3 * (size_t)m.nf);
+        int moved = 0, pole = 0;
+        double g = (1 + sqrt(5.0)) / 2, turn = atan2(1, g);
+        assert_true(fabs(turn - DENTED_SPHERE_TURN) < 1e-15);
+        for (int v = 0; v < m.nv; v++) {
+            const double *p = m.V + 3 * v, *o = ico.V + 3 * v;
+            double q[3] = {cos(turn) * o[0] - sin(turn) * o[1], sin(turn) * o[0] + cos(turn) * o[1],
+                           o[2]};
+            double cap = cos(DENTED_SPHERE_CAP * 3.14159265358979323846 / 180);
+            assert_true(fabs(p[0] - q[0]) < 1e-15 && p[2] == q[2]);
+            if (q[1] <= cap) assert_true(fabs(p[1] - q[1]) < 1e-15);
+            else assert_true(p[1] < q[1]), moved++;
+            if (fabs(q[1] - 1.0) < 1e-15) {
+                assert_true(fabs(p[1] - (1 - DENTED_SPHERE_DEPTH)) < 1e-12);
+                pole++;
+            }
+            assert_true(fabs(q[1] - p[1] - dented_sphere_push_of(q)) < 1e-15);
+        }
+        assert_true(moved > 0);
+        assert_int_equal(pole, 1);
+        /* the pole lies below the sphere's bottom */
+        double low = 0;
+        for (int v = 0; v < m.nv; v++)
+            if (m.V[3 * v + 1] < low) low = m.V[3 * v + 1];
+        assert_true(low < -1.2);
+        mesh_free(&ico);
+        close_sample(&m, &t, &c);
+    }
+}
+
 static void deterministic(void **state)
 {
     (void)state;
@@ -284,6 +331,7 @@ int main(void)
         cmocka_unit_test(holes),
         cmocka_unit_test(cubesphere),
         cmocka_unit_test(icosphere),
+        cmocka_unit_test(dented),
         cmocka_unit_test(deterministic),
         cmocka_unit_test(bad_names_and_sizes),
     };

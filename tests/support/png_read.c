@@ -32,3 +32,16 @@ unsigned test_png_pixel(const unsigned char *rgba, int width, int i, int j, int 
     if (alpha) *alpha = p[3];
     return (unsigned)p[0] << 16 | (unsigned)p[1] << 8 | p[2];
 }
+
+void test_png_surface_pixels(const unsigned char *rgba, int width, int height, int x0, int w,
+                             int *inside, int *drawn)
+{
+    *inside = *drawn = 0;
+    for (int j = 0; j < height; j++)
+        for (int i = x0; i < x0 + w; i++) {
+            unsigned c = test_png_pixel(rgba, width, i, j, NULL);
+            if (c == 0xffffffu) continue;
+            ++*drawn;
+            *inside += (c >> 16) > (c & 0xffu);
+        }
+}

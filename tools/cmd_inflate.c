@@ -1,0 +1,317 @@
+/* tools/cmd_inflate: `scaf inflate IN -o OUT.obj --scale K`, a closed
+ * surface grown toward K times its size inside a fixed box of tets,
+ * never passing through itself or the box (app/volume_deform, the 3D SCAF
+ * loop; the paper's Figure 10).
+ *
+ * The target is the surface scaled K times about its area-weighted
+ * centroid (app/inflate); each of the N iterations pulls the surface
+ * toward it (spokes-and-rims ARAP) as far as the scaffold allows, and
+ * every tet stays positively oriented (exact), so the surface stays free
+ * of self-intersections. Writes the input's vertices and faces at the new
+ * positions; --tets the final tet mesh (MEDIT .mesh, label 1 inside the
+ * surface, 2 outside); --report the iterations; --png the input and the
+ * result side by side (app/surface_render). Exit status: 0 written,
+ * 2 usage, 3 input unreadable, 4 not a closed manifold surface free of
+ * self-intersections (nothing to mesh), 5 output not written, 6 numerical
+ * failure, 7 out of memory, 8 interrupted.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/inflate.h"
+#include "app/volume_deform.h"
+#include "base/atomic_file.h"
+#include "base/json_write.h"
+#include "cli_args.h"
+#include "cli_closed_surface.h"
+#include "cli_mesh_io.h"
+#include "cli_outputs.h"
+#include "cli_signal.h"
+#include "cli_surface_png.h"
+#include "exit_codes.h"
+#include "mesh/mesh_io.h"
+#include "mesh/tet_medit.h"
+#include "scaffold/scaffold_tet.h"
+
+#define INFLATE_MAX_ITERATIONS 100000
+
+static void usage(FILE *out)
+{
+    volume_deform_options d = volume_deform_options_default();
+    fprintf(out,
+            "usage: scaf inflate IN -o OUT.obj --scale K [--iterations N] [--tets OUT.mesh]\n"
+            "                    [--report R.json] [--png P.png [--png-size N]] [--box-scale S]\n"
+            "                    [--solver slim|newton] [--quiet]\n"
+            "\n"
+            "Grow the closed surface IN toward K times its size (scaled about its centroid)\n"
+            "inside a fixed box around it: the 3D SCAF loop, with tetrahedra filling the box\n"
+            "inside and outside the surface. The surface presses against the box and against\n"
+            "itself but never passes through either: every tet stays positively oriented\n"
+            "(checked exactly) at every iteration. Writes the input's vertices and faces at\n"
+            "the new positions. IN must be a closed manifold triangle surface free of\n"
+            "self-intersections.\n"
+            "\n"
+            "  -o, --output FILE  the OBJ to write (nothing is left on failure)\n"
+            "  -k, --scale K      the target's size factor, > 0 (< 1 shrinks)\n"
+            "  -n, --iterations N iterations, 1..%d (default 50)\n"
+            "  --tets FILE        also write the final tets (MEDIT .mesh; label 1 inside\n"
+            "                     the surface, 2 outside)\n"
+            "  --report FILE      a JSON report: the box, the bounding-box diagonal before\n"
+            "                     and after, and per iteration the surface energy, step,\n"
+            "                     scaffold tets and vertices, tet quality (minimum and 5th\n"
+            "                     percentile of 6 sqrt(2) V / l_rms^3) and "
+            "seconds\n" CLI_SURFACE_PNG_HELP(
+                "the input and the inflated surface side by side") "  --box-scale S      the box: "
+                                                                   "the bounding box scaled S "
+                                                                   "times about its\n"
+                                                                   "                     centre, > "
+                                                                   "1 (default %g)\n"
+                                                                   "  --solver NAME      newton "
+                                                                   "(default: projected Newton, "
+                                                                   "falls back to SLIM\n"
+                                                                   "                     when its "
+                                                                   "step fails) or slim\n"
+                                                                   "  -q, --quiet        no "
+                                                                   "per-iteration lines on "
+                                                                   "stderr\n" CLI_OUTPUTS_HELP "\n",
+            INFLATE_MAX_ITERATIONS, d.box_scale);
+    exit_codes_print(out);
+}
+
+typedef struct inflate_log {
+    int n; /* iterations done */
+    volume_deform_iteration *it;
+    double diag0, diag1, box_lo[3], box_hi[3];
+} inflate_log;
+
+static scaf_status write_report(const char *path, const char *in, double K, const inflate_log *g,
+                                scaf_error *err)
+{
+    atomic_file a;
+    scaf_status st = atomic_open(&a, path, err);
+    if (st != SCAF_OK) return st;
+    FILE *o = a.f;
+    fputs("{\n  \"input\": ", o);
+    json_write_string(o, in);
+    fputs(",\n  \"scale\": ", o);
+    json_write_number(o, K);
+    fprintf(o, ",\n  \"iterations\": %d,\n  \"box_lo\": [", g->n);
+    for (int k = 0; k < 3; k++) {
+        if (k) fputs(", ", o);
+        json_write_number(o, g->box_lo[k]);
+    }
+    fputs("],\n  \"box_hi\": [", o);
+    for (int k = 0; k < 3; k++) {
+        if (k) fputs(", ", o);
+        json_write_number(o, g->box_hi[k]);
+    }
+    fputs("],\n  \"bbox_diagonal_before\": ", o);
+    json_write_number(o, g->diag0);
+    fputs(",\n  \"bbox_diagonal_after\": ", o);
+    json_write_number(o, g->diag1);
+    fputs(",\n  \"per_iteration\": [", o);
+    for (int i = 0; i < g->n; i++) {
+        const volume_deform_iteration *r = &g->it[i];
+        fprintf(o, "%s\n    {\"iteration\": %d, \"energy\": ", i ? "," : "", r->iteration);
+        json_write_number(o, r->energy);
+        fputs(", \"step\": ", o);
+        json_write_number(o, r->step);
+        fprintf(o, ", \"tets\": %d, \"scaffold_vertices\": %d, \"quality_min\": ", r->tets,
+                r->scaffold_vertices);
+        json_write_number(o, r->quality_min);
+        fputs(", \"quality_p5\": ", o);
+        json_write_number(o, r->quality_p5);
+        fputs(", \"seconds\": ", o);
+        json_write_number(o, r->seconds);
+        fputc('}', o);
+    }
+    fputs("\n  ]\n}\n", o);
+    return atomic_commit(&a, err);
+}
+
+/* Run the iterations on m->V (updated). 0, or the exit status after
+ * printing why. */
+static int run_inflate(const char *in, mesh *m, double K, int iterations,
+                       const volume_deform_options *o, int quiet, inflate_log *g, volume_deform *vd)
+{
+    scaf_error err;
+    err_clear(&err);
+    double *target = malloc(sizeof(double) * 3 * (size_t)m->nv);
+    if (!target) {
+        fprintf(stderr, "scaf inflate: out of memory\n");
+        return EXIT_NOMEM;
+    }
+    inflate_target(m->nv, m->V, m->nf, m->F, K, target);
+    scaf_status st = volume_deform_init(vd, m->nv, m->V, m->nf, m->F, target, o, &err);
+    free(target);
+    if (st != SCAF_OK) {
+        fprintf(stderr, "scaf inflate: %s: %s\n", in, err.message);
+        return st == SCAF_ERR_USAGE ? EXIT_MESH : exit_code_for(st);
+    }
+    g->diag0 = inflate_bbox_diagonal(m->nv, m->V);
+    const scaffold_view *v = volume_deform_scaffold(vd);
+    for (int i = 0; i < iterations; i++) {
+        st = volume_deform_step(vd, &g->it[g->n], &err);
+        if (st != SCAF_OK) {
+            fprintf(stderr, "scaf inflate: iteration %d: %s\n", i + 1, err.message);
+            return exit_code_for(st);
+        }
+        const volume_deform_iteration *r = &g->it[g->n++];
+        if (!quiet)
+            fprintf(stderr,
+                    "scaf inflate: iteration %d: energy %.6g, step %.3g, %d tets, quality min "
+                    "%.3g p5 %.3g, %.3f s\n",
+                    r->iteration, r->energy, r->step, r->tets, r->quality_min, r->quality_p5,
+                    r->seconds);
+        cli_signal_test_point(i + 1);
+        if (cli_signal_caught()) break;
+    }
+    v = volume_deform_scaffold(vd);
+    for (int k = 0; k < 3; k++) {
+        g->box_lo[k] = v->box_lo[k];
+        g->box_hi[k] = v->box_hi[k];
+    }
+    memcpy(m->V, volume_deform_positions(vd), sizeof(double) * 3 * (size_t)m->nv);
+    g->diag1 = inflate_bbox_diagonal(m->nv, m->V);
+    if (!quiet)
+        fprintf(stderr, "scaf inflate: bounding-box diagonal x%.4g after %d iterations\n",
+                g->diag0 > 0 ? g->diag1 / g->diag0 : 0.0, g->n);
+    return EXIT_OK;
+}
+
+/* The final tets: surface vertices at X, then the scaffold's own. */
+static scaf_status write_tets(const char *path, const volume_deform *vd, scaf_error *err)
+{
+    const scaffold_view *v = volume_deform_scaffold(vd);
+    const signed char *inside = scaffold_tet_inside(vd->scaffold);
+    int nv = v->nmesh + v->nextra;
+    double *P = malloc(sizeof(double) * 3 * (size_t)nv);
+    int *label = malloc(sizeof(int) * (size_t)(v->n > 0 ? v->n : 1));
+    scaf_status st = P && label ? SCAF_OK : err_nomem(err, "tet output");
+    if (st == SCAF_OK) {
+        memcpy(P, volume_deform_positions(vd), sizeof(double) * 3 * (size_t)v->nmesh);
+        memcpy(P + 3 * (size_t)v->nmesh, v->extra, sizeof(double) * 3 * (size_t)v->nextra);
+        for (int t = 0; t < v->n; t++) label[t] = inside[t] ? 1 : 2;
+        st = tet_medit_write(path, nv, P, v->n, v->simplices, label, err);
+    }
+    free(P);
+    free(label);
+    return st;
+}
+
+static int inflate_main(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL, *report = NULL, *tets = NULL;
+    double K = 0.0;
+    int iterations = 50, quiet = 0;
+    volume_deform_options o = volume_deform_options_default();
+    cli_surface_png png;
+    cli_surface_png_init(&png);
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int taken = cli_surface_png_option("inflate", argc, argv, &i, &png);
+        if (taken < 0) return EXIT_USAGE;
+        if (taken) continue;
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            usage(stdout);
+            return EXIT_OK;
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            CLI_NEED_VALUE("inflate");
+            out = v;
+        } else if (!strcmp(a, "-k") || !strcmp(a, "--scale")) {
+            CLI_NEED_VALUE("inflate");
+            if (!cli_parse_double(v, &K)) CLI_BAD_VALUE("inflate");
+            if (!(K > 0) || K > 1e6) CLI_OUT_OF_RANGE("inflate", "> 0 and <= 1e6");
+        } else if (!strcmp(a, "-n") || !strcmp(a, "--iterations")) {
+            CLI_NEED_VALUE("inflate");
+            if (!cli_parse_int(v, &iterations)) CLI_BAD_VALUE("inflate");
+            if (iterations < 1 || iterations > INFLATE_MAX_ITERATIONS)
+                CLI_OUT_OF_RANGE("inflate", "in 1..100000");
+        } else if (!strcmp(a, "--box-scale")) {
+            CLI_NEED_VALUE("inflate");
+            if (!cli_parse_double(v, &o.box_scale)) CLI_BAD_VALUE("inflate");
+            if (!(o.box_scale > 1) || o.box_scale > 1e6)
+                CLI_OUT_OF_RANGE("inflate", "> 1 and <= 1e6");
+        } else if (!strcmp(a, "--solver")) {
+            CLI_NEED_VALUE("inflate");
+            if (!strcmp(v, "slim")) o.solver = SCAF_SOLVER_SLIM;
+            else if (!strcmp(v, "newton")) o.solver = SCAF_SOLVER_NEWTON;
+            else CLI_OUT_OF_RANGE("inflate", "slim or newton");
+        } else if (!strcmp(a, "--tets")) {
+            CLI_NEED_VALUE("inflate");
+            tets = v;
+        } else if (!strcmp(a, "--report")) {
+            CLI_NEED_VALUE("inflate");
+            report = v;
+        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
+            quiet = 1;
+        } else if (cli_take_input("inflate", a, &in) != EXIT_OK) {
+            return EXIT_USAGE;
+        }
+    }
+    if (!in || !out || !(K > 0)) {
+        fprintf(stderr, "scaf inflate: %s (see --help)\n",
+                !in        ? "missing the input surface"
+                    : !out ? "missing -o OUT.obj"
+                           : "missing --scale K");
+        return EXIT_USAGE;
+    }
+    if (cli_surface_png_finish("inflate", &png) < 0) return EXIT_USAGE;
+    cli_outputs outs;
+    cli_outputs_init(&outs, "inflate", in);
+    int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
+    int kt = cli_outputs_add(&outs, "--tets", tets, CLI_OUTPUT_FILE);
+    int kr = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
+    int kp = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
+    int rc = cli_outputs_check(&outs);
+    if (rc != EXIT_OK) return rc;
+    /* one BLAS thread: the 3D systems are small next to their assembly and
+     * line search, and idle OpenBLAS threads spin (bunny x30: 12% of the
+     * time in sched_yield with two); one thread also fixes the bits */
+    scaf_set_threads(1);
+    mesh m;
+    mesh_read_info info;
+    if ((rc = cli_read_mesh("inflate", in, quiet, &m, &info)) != EXIT_OK) return rc;
+    inflate_log g;
+    memset(&g, 0, sizeof g);
+    g.it = malloc(sizeof *g.it * (size_t)iterations);
+    double *start = kp >= 0 ? malloc(sizeof(double) * 3 * (size_t)(m.nv > 0 ? m.nv : 1)) : NULL;
+    if (start) memcpy(start, m.V, sizeof(double) * 3 * (size_t)m.nv);
+    volume_deform vd;
+    memset(&vd, 0, sizeof vd);
+    if (!g.it || (kp >= 0 && !start)) {
+        fprintf(stderr, "scaf inflate: out of memory\n");
+        rc = EXIT_NOMEM;
+    } else if ((rc = cli_check_closed_surface("inflate", in, &m, "inflate")) == EXIT_OK) {
+        rc = run_inflate(in, &m, K, iterations, &o, quiet, &g, &vd);
+    }
+    if (rc == EXIT_OK && cli_signal_report("inflate")) rc = EXIT_CANCELLED;
+    if (rc == EXIT_OK) {
+        scaf_error err;
+        err_clear(&err);
+        const char *path = cli_outputs_begin(&outs, k, &err);
+        rc = cli_outputs_end(&outs, k, path ? mesh_write_obj(path, &m, &err) : SCAF_ERR_IO, &err);
+        if (rc == EXIT_OK && kt >= 0) {
+            path = cli_outputs_begin(&outs, kt, &err);
+            rc = cli_outputs_end(&outs, kt, path ? write_tets(path, &vd, &err) : SCAF_ERR_IO, &err);
+        }
+        if (rc == EXIT_OK && kr >= 0) {
+            path = cli_outputs_begin(&outs, kr, &err);
+            rc = cli_outputs_end(&outs, kr,
+                                 path ? write_report(path, in, K, &g, &err) : SCAF_ERR_IO, &err);
+        }
+        surface_view panels[2] = {{m.nv, start, m.nf, m.F}, {m.nv, m.V, m.nf, m.F}};
+        if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, 2, panels, &png);
+        if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
+    }
+    cli_outputs_abort(&outs);
+    free(start);
+    volume_deform_free(&vd);
+    free(g.it);
+    mesh_free(&m);
+    return rc;
+}
+
+/* SIGINT / SIGTERM: exit 8 at the next safe point (tools/cli_signal) */
+int cmd_inflate(int argc, char **argv) { return cli_signal_run(inflate_main, argc, argv); }
