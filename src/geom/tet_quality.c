@@ -62,9 +62,8 @@ double tet_quality_grad(const double a[3], const double b[3], const double c[3],
     return q;
 }
 
-/* The k-th smallest of x[0..n-1] (reorders x). Deterministic quickselect,
- * median-of-three pivots. */
-static double select_kth(double *x, int n, int k)
+/* Median-of-three pivots. */
+double tet_quality_kth(double *x, int n, int k)
 {
     int lo = 0, hi = n - 1;
     while (hi > lo) {
@@ -99,7 +98,7 @@ int tet_quality_summary(int n, const double *q, double *min, double *p5)
     for (int i = 1; i < n; i++)
         if (x[i] < m) m = x[i];
     *min = m;
-    *p5 = select_kth(x, n, (int)(0.05 * n));
+    *p5 = tet_quality_kth(x, n, (int)(0.05 * n));
     free(x);
     return 0;
 }

@@ -22,6 +22,10 @@ double tet_quality(const double a[3], const double b[3], const double c[3], cons
 double tet_quality_grad(const double a[3], const double b[3], const double c[3], const double d[3],
                         double grad_a[3]);
 
+/* The k-th smallest (0-based, 0 <= k < n) of x[0..n-1], reordering x.
+ * Deterministic quickselect, O(n) expected. */
+double tet_quality_kth(double *x, int n, int k);
+
 /* Summary of a set of qualities: the minimum and the 5th percentile (the
  * value below which 5% of the tets lie: element floor(0.05 n) in increasing
  * order). n may be 0 (both 0). Writes no input; O(n) (selection in a

@@ -105,6 +105,23 @@ scaf_status tet_improve(tet_scaffold *s, const double *X, const tet_improve_opti
         for (int t = 0; t < s->nt; t++)
             if (!s->dead[t] && s->q[t] < o->quality_goal) bad[nbad].q = s->q[t], bad[nbad++].t = t;
         if (nbad == 0) break;
+        /* with a budget only the worst few can be visited: sort those (the
+         * tets at or below the k-th worst quality, k the tries left) */
+        long long left = o->max_tries > 0 ? o->max_tries - st->tries : nbad;
+        if (left < nbad / 2) {
+            double *x = malloc(sizeof *x * (size_t)nbad);
+            if (!x) {
+                c.status = err_nomem(err, "scaffold worklist");
+                break;
+            }
+            for (int i = 0; i < nbad; i++) x[i] = bad[i].q;
+            double qk = tet_quality_kth(x, nbad, (int)left);
+            free(x);
+            int keep = 0;
+            for (int i = 0; i < nbad; i++)
+                if (bad[i].q <= qk) bad[keep++] = bad[i];
+            nbad = keep;
+        }
         qsort(bad, (size_t)nbad, sizeof *bad, cmp_bad);
         st->passes++;
         int applied = 0;

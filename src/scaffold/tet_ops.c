@@ -181,15 +181,23 @@ int tet_ops_edge_removal(tet_ops *c, int t, int i, int j)
     return 1;
 }
 
+/* The tet u across face f of tet t and the two apexes (t's corner d off
+ * the face, u's corner e), when the face may go: not on the hull, not
+ * protected, between tets of one region. */
+static int face_pair(const tet_scaffold *s, int t, int f, int *u, int *d, int *e)
+{
+    int n = s->nbr[4 * t + f];
+    if (n < 0 || (s->protect[t] >> f) & 1 || s->region[n / 4] != s->region[t]) return 0;
+    *u = n / 4, *d = s->T[4 * t + f], *e = s->T[n];
+    return 1;
+}
+
 int tet_ops_flip23(tet_ops *c, int t, int f)
 {
     tet_scaffold *s = c->s;
-    int n = s->nbr[4 * t + f];
-    if (n < 0 || (s->protect[t] >> f) & 1) return 0;
-    int u = n / 4;
-    if (s->region[u] != s->region[t]) return 0;
+    int u, d, e, p[3];
+    if (!face_pair(s, t, f, &u, &d, &e)) return 0;
     c->st->tries++;
-    int d = s->T[4 * t + f], e = s->T[4 * u + n % 4], p[3];
     for (int k = 0; k < 3; k++) p[k] = s->T[4 * t + tet_face_corner[f][k]];
     /* p is seen from outside t, so (p0, p1, p2, e) is positive and the
      * three new tets turn around the edge d-e */
@@ -229,7 +237,7 @@ static int across(const tet_scaffold *s, int t, int u, int v, int apex, int *x)
     while (q[f] == u || q[f] == v || q[f] == apex) f++;
     int n = s->nbr[4 * t + f];
     if (n < 0 || (s->protect[t] >> f) & 1 || s->region[n / 4] != s->region[t]) return -1;
-    *x = s->T[4 * (n / 4) + n % 4];
+    *x = s->T[n]; /* the corner of the tet across, off the face */
     return n / 4;
 }
 
@@ -240,12 +248,9 @@ static int across(const tet_scaffold *s, int t, int u, int v, int apex, int *x)
 int tet_ops_multi_face(tet_ops *c, int t, int f)
 {
     tet_scaffold *s = c->s;
-    int n = s->nbr[4 * t + f];
-    if (n < 0 || (s->protect[t] >> f) & 1) return 0;
-    int u = n / 4;
-    if (s->region[u] != s->region[t]) return 0;
+    int u, a, b;
+    if (!face_pair(s, t, f, &u, &a, &b)) return 0;
     c->st->tries++;
-    int a = s->T[4 * t + f], b = s->T[4 * u + n % 4];
     sandwich cur, best;
     cur.m = 3, cur.nold = 2, cur.old[0] = t, cur.old[1] = u;
     cur.qold = s->q[t] < s->q[u] ? s->q[t] : s->q[u];

@@ -15,7 +15,9 @@
  * fixed[nmesh + i]. Vertex numbering after tet_improve: new vertices are
  * appended, then removed ones are compacted away keeping the survivors in
  * order; vertex_map (nv_before entries) says old id -> new id, -1 for a
- * removed vertex. Mesh vertices keep their ids always.
+ * removed vertex. Mesh vertices keep their ids always. Tet ids are not
+ * kept: new tets fill the slots of replaced ones, then the rest close up
+ * (per-tet data of the caller does not survive a call).
  *
  * Every tet carries a region label (1 inside the surface, 0 outside) that
  * no operation changes: operations replace tets by tets of one region only.

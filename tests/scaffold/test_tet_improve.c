@@ -515,6 +515,43 @@ static void test_bunny_perturbed(void **state)
     mesh_free(&m);
 }
 
+/* The budget is a hard count; the goal and the mask are obeyed. */
+static void test_budget_goal_mask(void **state)
+{
+    (void)state;
+    mesh m;
+    assert_int_equal(mesh_sample_make("icosphere", 3, &m, NULL), SCAF_OK);
+    tet_box_mesh tm;
+    box_mesh_of(&m, &tm);
+    tet_improve_options o;
+    tet_improve_stats st;
+    for (int k = 0; k < 4; k++) {
+        tet_scaffold s;
+        assert_int_equal(tet_scaffold_from_box_mesh(&s, &tm, m.nf, m.F, NULL), SCAF_OK);
+        tet_improve_options_default(&o);
+        if (k == 0) o.max_tries = 50;
+        if (k == 1) o.quality_goal = 0;                      /* nothing is below it */
+        if (k == 2) o.ops = TET_OP_SMOOTH | TET_OP_CONTRACT; /* TetGen's: no free vertex */
+        if (k == 3) o.max_passes = 0;
+        assert_int_equal(tet_improve(&s, NULL, &o, &st, NULL), SCAF_OK);
+        if (k == 0) {
+            assert_int_equal(st.tries, 50);
+            assert_true(st.min_after > st.min_before);
+        } else {
+            assert_int_equal(st.flip23 + st.flip32 + st.edge_removal + st.multi_face + st.smooth +
+                                 st.contract + st.split,
+                             0);
+            assert_int_equal(s.nt, tm.nt);
+            assert_memory_equal(s.T, tm.T, sizeof(int) * 4 * (size_t)tm.nt);
+            assert_memory_equal(s.P, tm.V, sizeof(double) * 3 * (size_t)tm.nv);
+            assert_true(st.min_after == st.min_before && st.p5_after == st.p5_before);
+        }
+        tet_scaffold_free(&s);
+    }
+    tet_box_mesh_free(&tm);
+    mesh_free(&m);
+}
+
 /* ---- refusals ---- */
 
 static void test_refusals(void **state)
@@ -571,11 +608,17 @@ static void test_refusals(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_quality_measure),       cmocka_unit_test(test_quality_summary),
-        cmocka_unit_test(test_flip23_flat_bipyramid), cmocka_unit_test(test_flip32_needles),
-        cmocka_unit_test(test_multi_face_square),     cmocka_unit_test(test_smooth_centre),
-        cmocka_unit_test(test_contract_centre),       cmocka_unit_test(test_icosphere_perturbed),
-        cmocka_unit_test(test_bunny_perturbed),       cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_quality_measure),
+        cmocka_unit_test(test_quality_summary),
+        cmocka_unit_test(test_flip23_flat_bipyramid),
+        cmocka_unit_test(test_flip32_needles),
+        cmocka_unit_test(test_multi_face_square),
+        cmocka_unit_test(test_smooth_centre),
+        cmocka_unit_test(test_contract_centre),
+        cmocka_unit_test(test_icosphere_perturbed),
+        cmocka_unit_test(test_bunny_perturbed),
+        cmocka_unit_test(test_budget_goal_mask),
+        cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
