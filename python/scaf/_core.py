@@ -148,7 +148,8 @@ class IterationInfo:
     C field `lambda` (the scaffold weight); phase_seconds maps each phase
     name ("assembly", "factorization", ...) to its share of `seconds`;
     solver is "slim" or "newton" (the step this iteration took) and
-    decrement the relative Newton decrement (0 for SLIM steps)."""
+    decrement the relative Newton decrement (0 for SLIM steps); criterion
+    the estimated relative distance to the minimum (inf until judged)."""
 
     iteration: int
     energy: float
@@ -163,13 +164,14 @@ class IterationInfo:
     phase_seconds: Dict[str, float]
     solver: str
     decrement: float
+    criterion: float
 
     @classmethod
     def _from_c(cls, c):
         return cls(c.iteration, c.energy, c.energy_before, c.total_before, c.total_after, c.lambda_,
                    c.step, c.scaffold_triangles, c.scaffold_vertices, c.seconds,
                    dict(zip(_lib.PHASES, list(c.phase_seconds))), _enum_name(c.solver, _lib.SOLVERS),
-                   c.decrement)
+                   c.decrement, c.criterion)
 
 
 @dataclass

@@ -261,6 +261,12 @@ double scaf_loop_energy(const scaf_loop *L)
     return opt_term_energy(&t, L->uv) / L->total_area;
 }
 
+double scaf_loop_mesh_energy(const scaf_loop *L)
+{
+    const opt_obj_term *t = &L->work->terms[MESH_TERM];
+    return t->ops->energy(t, L->uv) / L->total_area;
+}
+
 void scaf_loop_face_energy(const scaf_loop *L, double *E)
 {
     for (int f = 0; f < L->nf; f++) {
