@@ -58,7 +58,10 @@ static void usage(FILE *o)
             "                         projected Newton), slim, or newton (from the start);\n"
             "                         Newton needs --energy symmetric-dirichlet, otherwise\n"
             "                         SLIM runs\n"
-            "  --energy NAME          symmetric-dirichlet (default), arap, conformal\n"
+            "  --energy NAME          symmetric-dirichlet (default), arap, conformal; arap\n"
+            "                         has a barrier below det J = 0.1 so triangles cannot\n"
+            "                         collapse; arap and conformal run SLIM (slower to\n"
+            "                         converge: the criterion then says how far they are)\n"
             "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n"
             "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
             "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01;\n"
@@ -263,11 +266,6 @@ static int param_main(int argc, char **argv)
     int out_rc = cli_outputs_uv(&outs, out, svg, png.path, report, &k);
     if (out_rc != EXIT_OK) return out_rc;
 
-    if (opt.energy == SCAF_ENERGY_ARAP && !quiet)
-        fprintf(stderr,
-                "scaf param: warning: ARAP is not a barrier energy: triangles pushed towards "
-                "inversion are only held by the line search and may become very thin "
-                "(symmetric-dirichlet is the default for that reason)\n");
     double t_start = timer_now();
     mesh m;
     scaf_error err;

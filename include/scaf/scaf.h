@@ -84,12 +84,15 @@ SCAF_API int scaf_set_threads(int n);
 /* Distortion energies. */
 typedef enum scaf_energy {
     SCAF_ENERGY_SYMMETRIC_DIRICHLET = 0, /* ||J||^2 + ||J^-1||^2 */
-    SCAF_ENERGY_ARAP,                    /* ||J - R||^2; not a barrier:
-                                            triangles the solver pushes
-                                            towards inversion are only
-                                            stopped by the line search and
-                                            can become very thin */
-    SCAF_ENERGY_CONFORMAL                /* MIPS: ||J||^2 / det J */
+    SCAF_ENERGY_ARAP,                    /* ||J - R||^2 + b(det J): ARAP alone is
+                                            no barrier (triangles it pushes
+                                            towards inversion were crushed to
+                                            det J ~ 1e-8); b = (0.1/det - 1)^3
+                                            below det J = 0.1, 0 above, keeps
+                                            them away from collapse. SLIM only */
+    SCAF_ENERGY_CONFORMAL                /* MIPS: ||J||^2 / (2 det J), a barrier;
+                                            scale-free, so areas may vary
+                                            widely; SLIM only */
 } scaf_energy;
 
 /* Initial embedding of each chart. */

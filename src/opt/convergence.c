@@ -12,8 +12,7 @@ void opt_convergence_reset(opt_convergence *c)
     c->criterion = INFINITY;
 }
 
-double opt_convergence_update(opt_convergence *c, double e_before, double e_after,
-                              double decrement)
+double opt_convergence_update(opt_convergence *c, double e_before, double e_after, double decrement)
 {
     enum { W = OPT_CONV_WINDOW + 1 };
     /* a rise (the objective of the iteration also holds its scaffold) is
