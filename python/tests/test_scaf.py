@@ -643,7 +643,8 @@ class AtlasTest(unittest.TestCase):
         self.assertIn("padding", str(cm.exception))
 
     def test_stop_reasons(self):
-        known = {"iteration_limit", "tolerance", "zero_step", "distortion_limit", "packing_stalled"}
+        known = {"iteration_limit", "tolerance", "converged", "zero_step", "distortion_limit",
+                 "packing_stalled"}
         self.assertEqual(set(self.r.stop_reasons), {"settle", "compact"})
         self.assertIn(self.r.stop_reasons["settle"], known)
         self.assertIn(self.r.stop_reasons["compact"], known)

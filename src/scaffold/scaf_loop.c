@@ -618,6 +618,7 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     int d = L->d;
     scaf_iteration_info_t I;
     memset(&I, 0, sizeof I);
+    I.criterion = INFINITY; /* judged by the caller (opt/convergence) */
     double t_start = timer_now(), t0 = t_start, t1;
     scaf_status st = SCAF_OK;
     double *X = NULL, *X0 = NULL;

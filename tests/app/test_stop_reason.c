@@ -192,7 +192,7 @@ static void atlas_reasons(void **state)
     assert_int_equal(atlas_run_on("hemisphere", 4, &o, &s, r), SCAF_OK);
     assert_true(s.settle < o.settle_iterations);
     assert_int_equal(s.compact, 0);
-    assert_int_equal(r[0], SCAF_STOP_TOLERANCE);
+    assert_int_equal(r[0], SCAF_STOP_CONVERGED);
     assert_int_equal(r[1], SCAF_STOP_NONE);
 
     /* settle with tolerance 0 on a mesh that converges: a zero step */
