@@ -26,6 +26,7 @@
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "cli_threads.h"
+#include "cli_uv_job.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "geom/chart_gap.h"
@@ -140,6 +141,12 @@ static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
     return 0;
 }
 
+/* --png: face f in its chart's colour (ctx: the atlas) */
+static unsigned chart_colour(int f, const void *ctx)
+{
+    return atlas_chart_colour(((const atlas *)ctx)->chart[f]);
+}
+
 static int atlas_main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
@@ -250,23 +257,14 @@ static int atlas_main(int argc, char **argv)
     }
     cli_threads_apply(threads);
     /* every output checked before any work; written all together at the end */
-    cli_outputs outs;
-    cli_uv_outputs k;
-    cli_outputs_init(&outs, "atlas", in);
-    int out_rc = cli_outputs_uv(&outs, out, svg, png.path, report, &k);
-    if (out_rc != EXIT_OK) return out_rc;
-
     double t_start = timer_now();
+    cli_uv_job job;
+    cli_uv_job_paths paths = {out, svg, png.path, report, NULL, NULL};
     mesh m;
+    int read_rc = cli_uv_job_start(&job, "atlas", in, &paths, quiet, &m);
+    if (read_rc != EXIT_OK) return read_rc;
     scaf_error err;
     err_clear(&err);
-    mesh_read_info rinfo;
-    int read_rc = cli_read_mesh("atlas", in, quiet, &m, &rinfo);
-    if (read_rc != EXIT_OK) return read_rc;
-    if (cli_signal_report("atlas")) {
-        mesh_free(&m);
-        return EXIT_CANCELLED;
-    }
     int rc = EXIT_OK;
     atlas a;
     progress_state ps = {0};
@@ -315,41 +313,29 @@ static int atlas_main(int argc, char **argv)
     }
     double gap = ao.gap, eff = ao.efficiency;
     mesh o = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
-    const char *path = cli_outputs_begin(&outs, k.mesh, &err);
-    rc = cli_outputs_end(&outs, k.mesh,
-                         path ? cli_write_uv("atlas", in, &rinfo, path, &o, &err) : SCAF_ERR_IO,
-                         &err);
-    if (rc != EXIT_OK) goto done;
+    if ((rc = cli_uv_job_write_map(&job, &o)) != EXIT_OK) goto done;
+    const char *path;
     if (svg) {
         char title[256];
         snprintf(title, sizeof title,
                  "%s: %d charts, packing efficiency %.3f, min gap %.4f, E = %.4f", in, a.ncharts,
                  eff, gap, atlas_energy(&a));
-        path = cli_outputs_begin(&outs, k.svg, &err);
+        path = cli_outputs_begin(&job.outs, job.k.svg, &err);
         st = path ? atlas_svg_write(path, &a, UV, title, &err) : SCAF_ERR_IO;
-        if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&job.outs, job.k.svg, st, &err)) != EXIT_OK) goto done;
     }
-    if (png.path) {
-        unsigned *col = malloc(sizeof(unsigned) * (size_t)(a.nf ? a.nf : 1));
-        st = col ? SCAF_OK : err_nomem(&err, "picture colours");
-        for (int f = 0; col && f < a.nf; f++) col[f] = atlas_chart_colour(a.chart[f]);
-        if (st == SCAF_OK) {
-            path = cli_outputs_begin(&outs, k.png, &err);
-            st = path
-                ? uv_png_write(path, a.nw, UV, a.nf, a.Fw, col, m.nv, m.V, m.F, &png.opt, &err)
-                : SCAF_ERR_IO;
-        }
-        free(col);
-        if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
-    }
+    if (png.path &&
+        (rc = cli_uv_job_png(&job, a.nw, UV, a.nf, a.Fw, chart_colour, &a, m.nv, m.V, m.F,
+                             &png.opt)) != EXIT_OK)
+        goto done;
     double total = timer_now() - t_start;
     if (report) {
         atlas_report r = {in, out, &a, resolution, setup, total, gap, eff, ps.n, ps.it};
-        path = cli_outputs_begin(&outs, k.report, &err);
+        path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? atlas_report_write(path, &r, &err) : SCAF_ERR_IO;
-        if ((rc = cli_outputs_end(&outs, k.report, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
-    rc = cli_outputs_commit(&outs);
+    rc = cli_outputs_commit(&job.outs);
     if (rc == EXIT_OK && !quiet) {
         fprintf(stderr,
                 "scaf atlas: %d charts, %d+%d iterations, E %.5f, packing efficiency %.3f -> %.3f, "
@@ -362,7 +348,7 @@ static int atlas_main(int argc, char **argv)
                 scaf_stop_reason_name(a.settle_stop), scaf_stop_reason_name(a.compact_stop));
     }
 done:
-    cli_outputs_abort(&outs);
+    cli_outputs_abort(&job.outs);
     free(UV);
     free(ps.it);
     atlas_free(&a);

@@ -22,6 +22,7 @@
 #include "cli_outputs.h"
 #include "cli_png.h"
 #include "cli_signal.h"
+#include "cli_uv_job.h"
 #include "deform_targets.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
@@ -232,6 +233,13 @@ static int planar_mesh(const mesh *m, const char *in, int *nv, double **P, const
     return EXIT_OK;
 }
 
+/* --png: every face in the colour of an undistorted one */
+static unsigned rest_colour(int f, const void *ctx)
+{
+    (void)f, (void)ctx;
+    return uv_svg_colour(4.0);
+}
+
 static int deform_main(int argc, char **argv)
 {
     deform_args a;
@@ -239,23 +247,18 @@ static int deform_main(int argc, char **argv)
     if (rc < 0) return EXIT_OK;
     if (rc != EXIT_OK) return rc;
 
-    cli_outputs outs;
-    cli_outputs_init(&outs, "deform", a.in);
-    cli_outputs_add_input(&outs, "--targets", a.targets);
-    cli_uv_outputs k;
-    rc = cli_outputs_uv(&outs, a.out, a.svg, a.png.path, a.report, &k);
-    if (rc != EXIT_OK) return rc;
-
+    /* every output checked before any work; written all together at the end */
+    cli_uv_job job;
+    cli_uv_job_paths paths = {a.out, a.svg, a.png.path, a.report, "--targets", a.targets};
+    mesh m;
+    if ((rc = cli_uv_job_start(&job, "deform", a.in, &paths, a.quiet, &m)) != EXIT_OK) return rc;
     scaf_error err;
     err_clear(&err);
-    mesh m = {0};
-    mesh_read_info rinfo;
     deform_targets t = {0};
     double *P = NULL, *X = NULL, *V3 = NULL;
     step_record *rec = NULL;
     opt_handle_term h;
     opt_handle_term_init(&h, 2, 0);
-    if ((rc = cli_read_mesh("deform", a.in, a.quiet, &m, &rinfo)) != EXIT_OK) return rc;
     scaf_status st = deform_targets_read(a.targets, &t, &err);
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf deform: %s\n", err.message);
@@ -329,38 +332,30 @@ static int deform_main(int argc, char **argv)
     for (int v = 0; v < nv; v++)
         V3[3 * v] = X[2 * v], V3[3 * v + 1] = X[2 * v + 1], V3[3 * v + 2] = 0.0;
     mesh out = {nv, V3, m.nf, (int *)F, nv, X, (int *)F};
-    const char *path = cli_outputs_begin(&outs, k.mesh, &err);
-    if ((rc = cli_outputs_end(&outs, k.mesh, path ? mesh_write_obj(path, &out, &err) : SCAF_ERR_IO,
-                              &err)) != EXIT_OK)
+    const char *path = cli_outputs_begin(&job.outs, job.k.mesh, &err);
+    if ((rc = cli_outputs_end(&job.outs, job.k.mesh,
+                              path ? mesh_write_obj(path, &out, &err) : SCAF_ERR_IO, &err)) !=
+        EXIT_OK)
         goto done;
     if (a.svg) {
         char title[256];
         snprintf(title, sizeof title, "%s: max handle error %.3g after %d iterations", a.in,
                  r.max_handle_error, r.iterations);
-        path = cli_outputs_begin(&outs, k.svg, &err);
+        path = cli_outputs_begin(&job.outs, job.k.svg, &err);
         st = path ? uv_svg_write(path, nv, X, m.nf, F, NULL, NULL, title, &err) : SCAF_ERR_IO;
-        if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&job.outs, job.k.svg, st, &err)) != EXIT_OK) goto done;
     }
-    if (a.png.path) {
-        unsigned *col = malloc(sizeof(unsigned) * (size_t)(m.nf > 0 ? m.nf : 1));
-        st = col ? SCAF_OK : err_nomem(&err, "picture colours");
-        if (st == SCAF_OK) {
-            for (int f = 0; f < m.nf; f++) col[f] = uv_svg_colour(4.0);
-            path = cli_outputs_begin(&outs, k.png, &err);
-            st = path ? uv_png_write(path, nv, X, m.nf, F, col, nv, V3, F, &a.png.opt, &err)
-                      : SCAF_ERR_IO;
-        }
-        free(col);
-        if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
-    }
+    if ((rc = cli_uv_job_png(&job, nv, X, m.nf, F, rest_colour, NULL, nv, V3, F, &a.png.opt)) !=
+        EXIT_OK)
+        goto done;
     if (a.report) {
-        path = cli_outputs_begin(&outs, k.report, &err);
+        path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? write_report(path, &a, t.n, &r, &ps, &err) : SCAF_ERR_IO;
-        if ((rc = cli_outputs_end(&outs, k.report, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
-    rc = cli_outputs_commit(&outs);
+    rc = cli_outputs_commit(&job.outs);
 done:
-    cli_outputs_abort(&outs);
+    cli_outputs_abort(&job.outs);
     opt_handle_term_free(&h);
     deform_targets_free(&t);
     mesh_free(&m);

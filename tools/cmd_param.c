@@ -24,6 +24,7 @@
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "cli_threads.h"
+#include "cli_uv_job.h"
 #include "exit_codes.h"
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
@@ -249,6 +250,12 @@ static int parse_args(int argc, char **argv, param_args *o)
     return PARSED_RUN;
 }
 
+/* --png: the SVG's colour of face f's energy (ctx: the energies) */
+static unsigned energy_colour(int f, const void *ctx)
+{
+    return uv_svg_colour(((const double *)ctx)[f]);
+}
+
 static int param_main(int argc, char **argv)
 {
     param_args args;
@@ -259,24 +266,15 @@ static int param_main(int argc, char **argv)
     int quiet = args.quiet, svg_scaffold = args.svg_scaffold, verify = args.verify;
     scaf_options_t opt = args.opt;
     cli_png png = args.png;
-    /* every output checked before any work; written all together at the end */
-    cli_outputs outs;
-    cli_uv_outputs k;
-    cli_outputs_init(&outs, "param", in);
-    int out_rc = cli_outputs_uv(&outs, out, svg, png.path, report, &k);
-    if (out_rc != EXIT_OK) return out_rc;
-
     double t_start = timer_now();
+    /* every output checked before any work; written all together at the end */
+    cli_uv_job job;
+    cli_uv_job_paths paths = {out, svg, png.path, report, NULL, NULL};
     mesh m;
+    int read_rc = cli_uv_job_start(&job, "param", in, &paths, quiet, &m);
+    if (read_rc != EXIT_OK) return read_rc;
     scaf_error err;
     err_clear(&err);
-    mesh_read_info rinfo;
-    int read_rc = cli_read_mesh("param", in, quiet, &m, &rinfo);
-    if (read_rc != EXIT_OK) return read_rc;
-    if (cli_signal_report("param")) {
-        mesh_free(&m);
-        return EXIT_CANCELLED;
-    }
     int rc = EXIT_OK;
     scaf_param_t *p = scaf_param_new(&opt);
     progress_state ps = {0};
@@ -352,11 +350,8 @@ static int param_main(int argc, char **argv)
         goto done;
     }
     mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
-    const char *path = cli_outputs_begin(&outs, k.mesh, &err);
-    rc = cli_outputs_end(&outs, k.mesh,
-                         path ? cli_write_uv("param", in, &rinfo, path, &o, &err) : SCAF_ERR_IO,
-                         &err);
-    if (rc != EXIT_OK) goto done;
+    if ((rc = cli_uv_job_write_map(&job, &o)) != EXIT_OK) goto done;
+    const char *path;
     if (svg) {
         param_map pm;
         param_working_map(p, &pm);
@@ -374,31 +369,28 @@ static int param_main(int argc, char **argv)
         snprintf(title, sizeof title, "%s: E = %.5f after %d iterations (4 = isometry)", in, e1,
                  scaf_param_iterations(p));
         /* Working vertex ids are the UV ids: draw with the loop's faces. */
-        path = cli_outputs_begin(&outs, k.svg, &err);
+        path = cli_outputs_begin(&job.outs, job.k.svg, &err);
         st = path
             ? uv_svg_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, E, ss.ntri ? &ss : NULL, title, &err)
             : SCAF_ERR_IO;
         free(E);
-        if ((rc = cli_outputs_end(&outs, k.svg, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&job.outs, job.k.svg, st, &err)) != EXIT_OK) goto done;
     }
     if (png.path) {
         /* same colours as the SVG; the loop's first nf faces are the mesh's, in order */
         param_map pm;
         param_working_map(p, &pm);
         double *E = malloc(sizeof(double) * (size_t)(pm.nf ? pm.nf : 1));
-        unsigned *col = malloc(sizeof(unsigned) * (size_t)(pm.nf ? pm.nf : 1));
-        st = E && col ? SCAF_OK : err_nomem(&err, "picture colours");
-        if (st == SCAF_OK) {
-            param_face_energy(p, E);
-            for (int f = 0; f < pm.nf; f++) col[f] = uv_svg_colour(E[f]);
-            path = cli_outputs_begin(&outs, k.png, &err);
-            st = path ? uv_png_write(path, pm.nuv, pm.uv, pm.nf, pm.FT, col, m.nv, m.V, m.F,
-                                     &png.opt, &err)
-                      : SCAF_ERR_IO;
+        if (!E) {
+            fprintf(stderr, "scaf param: out of memory\n");
+            rc = EXIT_NOMEM;
+            goto done;
         }
+        param_face_energy(p, E);
+        rc = cli_uv_job_png(&job, pm.nuv, pm.uv, pm.nf, pm.FT, energy_colour, E, m.nv, m.V, m.F,
+                            &png.opt);
         free(E);
-        free(col);
-        if ((rc = cli_outputs_end(&outs, k.png, st, &err)) != EXIT_OK) goto done;
+        if (rc != EXIT_OK) goto done;
     }
     if (report) {
         param_report r = {in,
@@ -414,13 +406,13 @@ static int param_main(int argc, char **argv)
                           scaf_param_stop_reason(p),
                           ps.n,
                           ps.it};
-        path = cli_outputs_begin(&outs, k.report, &err);
+        path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? param_report_write(path, &r, &err) : SCAF_ERR_IO;
-        if ((rc = cli_outputs_end(&outs, k.report, st, &err)) != EXIT_OK) goto done;
+        if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
-    rc = cli_outputs_commit(&outs);
+    rc = cli_outputs_commit(&job.outs);
 done:
-    cli_outputs_abort(&outs);
+    cli_outputs_abort(&job.outs);
     free(UV);
     free(FT);
     free(ps.it);
