@@ -7,7 +7,7 @@
 void opt_convergence_reset(opt_convergence *c)
 {
     for (int i = 0; i <= OPT_CONV_WINDOW; i++) c->dec[i] = 0.0;
-    for (int i = 0; i <= OPT_CONV_STALL; i++) c->best[i] = INFINITY;
+    for (int i = 0; i <= OPT_CONV_STALL; i++) c->low[i] = INFINITY;
     c->n = 0;
     c->criterion = INFINITY;
 }
@@ -20,11 +20,11 @@ double opt_convergence_update(opt_convergence *c, double e_before, double e_afte
     double d = fabs(e_before - e_after);
     if (!(d > 0.0)) d = 0.0;
     c->dec[c->n % W] = d;
-    /* the lowest energy so far, per iteration (slot n % (S + 1)) */
+    /* the lowest energy so far after each iteration (slot n % (S + 1)) */
     enum { S = OPT_CONV_STALL + 1 };
-    double low = c->n > 0 ? c->best[(c->n - 1) % S] : e_before;
+    double low = c->n > 0 ? c->low[(c->n - 1) % S] : e_before;
     if (e_after < low) low = e_after;
-    c->best[c->n % S] = low;
+    c->low[c->n % S] = low;
     c->n++;
     if (c->n < W || !(e_after > 0.0)) return c->criterion = INFINITY;
     /* the largest ratio of consecutive decreases in the window; a decrease
@@ -46,9 +46,11 @@ double opt_convergence_update(opt_convergence *c, double e_before, double e_afte
     double tail = due / e_after * rho / (1.0 - rho);
     double dn = decrement > 0.0 ? decrement : 0.0;
     double crit = tail > dn ? tail : dn;
-    if (c->n >= S) { /* the lowest energy now and OPT_CONV_STALL iterations ago */
-        double then = c->best[c->n % S], now = c->best[(c->n - 1) % S];
-        double stall = (then - now) / now;
+    if (c->n >= S) {
+        /* the lowest energy's progress over the window, and how far above
+         * it the run is now (a rising energy is no stall) */
+        double then = c->low[c->n % S], now = c->low[(c->n - 1) % S];
+        double stall = (then - now > e_after - now ? then - now : e_after - now) / e_after;
         if (stall < crit) crit = stall;
     }
     return c->criterion = crit;

@@ -23,9 +23,10 @@
  * can go back and forth at a noise floor (bull_1: Newton decrements of
  * 5e-5 for 180 iterations while E moves by 1e-5 up and down, within 3e-5
  * of the best energy of 1000 iterations). So from OPT_CONV_STALL
- * iterations on, the criterion is at most the relative decrease of the
- * LOWEST energy over the last OPT_CONV_STALL iterations: no progress over
- * that window is convergence to the loop's resolution. Pure arithmetic;
+ * iterations on, the criterion is at most the larger of the relative
+ * progress of the LOWEST energy over the last OPT_CONV_STALL iterations
+ * and the current energy's height above it: no progress over that window,
+ * and no rise either, is convergence to the loop's resolution. Pure arithmetic;
  * nothing fails.
  */
 #ifndef SCAF_OPT_CONVERGENCE_H
@@ -37,8 +38,9 @@ enum { OPT_CONV_WINDOW = 3, OPT_CONV_STALL = 10 };
 typedef struct opt_convergence {
     double dec[OPT_CONV_WINDOW + 1]; /* the last decreases, newest at [(n - 1) % (W + 1)] */
     int n;                           /* decreases recorded */
-    double best[OPT_CONV_STALL + 1]; /* the lowest energy after each of the
-                                        last iterations, newest at [n % (S + 1)] */
+    double low[OPT_CONV_STALL + 1];  /* the lowest energy so far after each of
+                                        the last iterations, newest at
+                                        [(n - 1) % (S + 1)] */
     double criterion;                /* the last value returned (+INFINITY at first) */
 } opt_convergence;
 
