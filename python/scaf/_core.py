@@ -259,8 +259,9 @@ class ParamResult:
     index of each corner of each input face); energy: the reported E (4 at
     an isometry with the symmetric Dirichlet energy); iterations: finished
     iterations; chart_count: number of charts; stop_reason: why the run
-    stopped, "iteration_limit", "tolerance", "zero_step" (no step lowers
-    the energy any more: converged, also with tolerance 0), "cancelled",
+    stopped, "iteration_limit", "converged" (the estimated relative
+    distance to the minimum below the tolerance), "zero_step" (no step
+    lowers the energy any more: converged, also with tolerance 0), "cancelled",
     "error", or "not_run" before a run."""
 
     uv: Any
@@ -284,7 +285,7 @@ class AtlasResult:
     area / area of the unit square; min_gap: smallest distance between two
     charts (inf with one chart); iterations: finished iterations per phase
     {"settle": n, "compact": m}; stop_reasons: why each phase stopped
-    {"settle": ..., "compact": ...} ("iteration_limit", "tolerance",
+    {"settle": ..., "compact": ...} ("iteration_limit", "converged",
     "zero_step", "distortion_limit", "packing_stalled", "cancelled",
     "error", "not_run" for a phase that did not take place); stop_reason:
     the reason of the last phase that ran."""
