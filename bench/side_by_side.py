@@ -27,7 +27,17 @@ over the rounds where both runs had a core, the summary table, and scaf's
 phase split (mean of iterations 2..N of its median run).
 
     bench/side_by_side.py [--reference BIN] [--scaf BIN] [--data DIR]
-                          [--rounds N] [--cpu] [MESH[:ITERATIONS] ...]
+                          [--rounds N] [--cpu] [--to-energy] [MESH[:ITERATIONS] ...]
+
+--to-energy measures time to energy instead: libigl runs ITERATIONS
+iterations from its tutorial start and its final E is the target; scaf runs
+with its own defaults (mean-value start, auto solver) but --tolerance 0 and
+--iterations --scaf-iterations (default 60), and the time each needs to
+reach E <= target is compared: libigl the sum of its iteration seconds up
+to the first iteration at or below the target, scaf its setup (embedding)
+plus its iteration seconds up to that point (scaf's setup is counted,
+libigl's is not: the comparison leans towards libigl). Also interleaved,
+alternating which program goes first.
 
 --cpu adds CPU seconds per iteration (2..N): each program is run once more
 per round, stopped after iteration 1, and the difference of the two
@@ -136,6 +146,73 @@ def per_iteration(secs):
 
 def fmt_s(x):
     return "%.4g" % x
+
+
+def time_to(target, secs, energies, setup=0.0):
+    """(seconds, iterations) until the first E <= target, or (None, None).
+    E is compared as the harness prints it (6 decimals): aphrodite's
+    libigl target 6.372086 is below scaf's minimum 6.3720864 by less than
+    that precision."""
+    t = setup
+    for k, (s_k, e_k) in enumerate(zip(secs, energies)):
+        t += s_k
+        if round(e_k, 6) <= target:
+            return t, k + 1
+    return None, None
+
+
+def bench_to_energy(args, rel, iterations, env, tmp):
+    """Time to libigl's ITERATIONS-iteration energy, both programs (see --to-energy)."""
+    path = os.path.join(args.data, rel)
+    if not os.path.exists(path):
+        print("### %s: missing (%s), skipped\n" % (rel, path))
+        return None
+    report = os.path.join(tmp, "report.json")
+    ref_cmd = [args.reference, path, str(iterations), "-"] + ([repr(args.scale)] if args.scale != 1.0 else [])
+    scaf_cmd = [args.scaf, "param", path, "-o", os.path.join(tmp, "out.obj"), "--tolerance", "0",
+                "--iterations", str(args.scaf_iterations), "--quiet", "--report", report]
+    rows = []
+    load_before = loadavg()
+    for rnd in range(args.rounds):
+        order = ["libigl", "scaf"] if rnd % 2 == 0 else ["scaf", "libigl"]
+        got = {}
+        for who in order:
+            if who == "libigl":
+                out, wall = run_timed(ref_cmd, env)
+                got[who] = parse_reference(out)
+                got[who]["wall"] = wall
+            else:
+                _, wall = run_timed(scaf_cmd, env)
+                with open(report) as f:
+                    r = json.load(f)
+                got[who] = {"secs": [it["seconds"] for it in r["iterations"]],
+                            "E": [it["energy"] for it in r["iterations"]], "setup": r["setup_seconds"],
+                            "wall": wall}
+        target = got["libigl"]["E"][-1]
+        tl, kl = time_to(target, got["libigl"]["secs"], got["libigl"]["E"])
+        ts, ks = time_to(target, got["scaf"]["secs"], got["scaf"]["E"], got["scaf"]["setup"])
+        rows.append({"target": target, "libigl": (tl, kl), "scaf": (ts, ks),
+                     "scaf_best": min(got["scaf"]["E"])})
+        print("side_by_side: %s round %d: target %.6f; libigl %s s (%s its), scaf %s s (%s its)"
+              % (rel, rnd + 1, target, tl, kl, ts, ks), file=sys.stderr)
+    load_after = loadavg()
+    print("### %s: time to libigl's %d-iteration energy (%d rounds)\n" % (rel, iterations, args.rounds))
+    print("load before %s, after %s\n" % (load_before, load_after))
+    print("| round | target E (libigl after %d) | libigl s (its) | scaf s incl. setup (its) | ratio |" % iterations)
+    print("|---|---|---|---|---|")
+    ratios = []
+    for i, r in enumerate(rows):
+        (tl, kl), (ts, ks) = r["libigl"], r["scaf"]
+        q = tl / ts if tl and ts else None
+        if q:
+            ratios.append(q)
+        print("| %d | %.6f | %s (%s) | %s (%s) | %s |"
+              % (i + 1, r["target"], fmt_s(tl) if tl else "-", kl, fmt_s(ts) if ts else "not reached", ks,
+                 "%.1f" % q if q else "-"))
+    if ratios:
+        print("\nmedian ratio libigl / scaf: **%.1f** (range %.1f-%.1f)\n"
+              % (statistics.median(ratios), min(ratios), max(ratios)))
+    return ratios
 
 
 def bench_mesh(args, rel, iterations, env, tmp):
@@ -318,6 +395,10 @@ def main():
     ap.add_argument("--rounds", type=int, default=5, help="interleaved rounds per mesh (default 5)")
     ap.add_argument("--cpu", action="store_true",
                     help="also measure CPU seconds per iteration (one more 1-iteration run of each program per round)")
+    ap.add_argument("--to-energy", action="store_true",
+                    help="time to libigl's ITERATIONS-iteration energy instead of seconds per iteration")
+    ap.add_argument("--scaf-iterations", type=int, default=60,
+                    help="--to-energy: scaf's iteration cap (default 60)")
     ap.add_argument("--scale", type=float, default=1.0,
                     help="reference only: scale the mesh (libigl's SCAF is not scale-invariant; E is)")
     args = ap.parse_args()
@@ -342,6 +423,10 @@ def main():
     tmp = tempfile.mkdtemp(prefix="side_by_side.")
     try:
         for rel, its in meshes:
+            if args.to_energy:
+                bench_to_energy(args, rel, its, env, tmp)
+                sys.stdout.flush()
+                continue
             s = bench_mesh(args, rel, its, env, tmp)
             if s:
                 print_mesh(s)

@@ -46,19 +46,23 @@ static void usage(FILE *o)
             "\n"
             "options:\n"
             "  -o, --output FILE      output OBJ (required)\n"
-            "  --iterations N         iteration cap (default 50)\n"
-            "  --tolerance T          converged when a full Newton step leaves a relative\n"
-            "                         Newton decrement -g.p / 2(E_M + lambda E_S) (the\n"
-            "                         decrease to the minimum the quadratic model still\n"
-            "                         predicts) below T; SLIM only: stop when E, or E_M +\n"
-            "                         lambda E_S, decreases by less than T relatively in\n"
-            "                         one iteration (default 1e-6; 0 = no test, see Stopping)\n"
+            "  --iterations N         iteration cap (default 200)\n"
+            "  --tolerance T          converged when the estimated relative distance of the\n"
+            "                         energy to its minimum, (E - E_min) / E, is below T:\n"
+            "                         the larger of the last Newton decrement and the\n"
+            "                         linear tail d rho / (1 - rho) of the last decreases d\n"
+            "                         (rho: their largest ratio over 3 iterations), judged\n"
+            "                         from the 4th iteration on (default 1e-5; 0 = no\n"
+            "                         test, see Stopping)\n"
             "  --solver NAME          auto (default: SLIM until one iteration lowers the\n"
             "                         objective by less than 1e-2 relatively, then\n"
             "                         projected Newton), slim, or newton (from the start);\n"
             "                         Newton needs --energy symmetric-dirichlet, otherwise\n"
             "                         SLIM runs\n"
-            "  --energy NAME          symmetric-dirichlet (default), arap, conformal\n"
+            "  --energy NAME          symmetric-dirichlet (default), arap, conformal; arap\n"
+            "                         has a barrier below det J = 0.1 so triangles cannot\n"
+            "                         collapse; arap and conformal run SLIM (slower to\n"
+            "                         converge: the criterion then says how far they are)\n"
             "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n"
             "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
             "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01;\n"
@@ -87,11 +91,11 @@ static void usage(FILE *o)
             "mesh triangles (A_f: 3D area); 4 at an isometry.\n"
             "\n"
             "Stopping: the run ends at the first of: --iterations done (iteration_limit);\n"
-            "the tolerance test above (converged for Newton steps, tolerance for SLIM\n"
-            "only; one slow Newton step never ends the run); no step lowers the energy any more,\n"
-            "also with --tolerance 0 (zero_step: converged to floating-point precision,\n"
-            "more iterations would not change the map). The reason is printed at the end\n"
-            "(stop reason) and in the report (stop_reason).\n");
+            "the tolerance test above (converged; one slow iteration never ends the run);\n"
+            "no step lowers the energy any more, also with --tolerance 0 (zero_step:\n"
+            "converged to floating-point precision, more iterations would not change the\n"
+            "map). The reason and the last criterion are printed at the end (stop reason)\n"
+            "and in the report (stop_reason, final_criterion, per iteration criterion).\n");
     fputs(CLI_OUTPUTS_HELP "\n", o);
     exit_codes_print(o);
 }
@@ -105,6 +109,7 @@ typedef struct progress_state {
     scaf_iteration_info_t *it;
     int n, size;
     int oom;
+    double criterion; /* of the last iteration (INFINITY before any) */
 } progress_state;
 
 static int on_iteration(const scaf_iteration_info_t *info, void *user)
@@ -121,6 +126,7 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
         s->size = size;
     }
     s->it[s->n++] = *info;
+    s->criterion = info->criterion;
     cli_signal_test_point(info->iteration);
     if (cli_signal_caught()) return 1; /* SIGINT / SIGTERM: stop after this iteration */
     if (s->verify) {
@@ -260,11 +266,6 @@ static int param_main(int argc, char **argv)
     int quiet = args.quiet, svg_scaffold = args.svg_scaffold, verify = args.verify;
     scaf_options_t opt = args.opt;
     cli_png png = args.png;
-    if (opt.energy == SCAF_ENERGY_ARAP && !quiet)
-        fprintf(stderr,
-                "scaf param: warning: ARAP is not a barrier energy: triangles pushed towards "
-                "inversion are only held by the line search and may become very thin "
-                "(symmetric-dirichlet is the default for that reason)\n");
     double t_start = timer_now();
     /* every output checked before any work; written all together at the end */
     cli_uv_job job;
@@ -277,6 +278,7 @@ static int param_main(int argc, char **argv)
     int rc = EXIT_OK;
     scaf_param_t *p = scaf_param_new(&opt);
     progress_state ps = {0};
+    ps.criterion = INFINITY;
     double *UV = NULL;
     int *FT = NULL;
     if (!p) {
@@ -330,8 +332,8 @@ static int param_main(int argc, char **argv)
                 scaf_param_iterations(p), e0, e1, timer_now() - t_start,
                 verify ? " (bijective after every iteration: verified)" : "");
         scaf_stop_reason why = scaf_param_stop_reason(p);
-        fprintf(stderr, "scaf param: stop reason: %s (%s)\n", scaf_stop_reason_name(why),
-                stop_reason_explained(why));
+        fprintf(stderr, "scaf param: stop reason: %s (%s), criterion %.3g\n",
+                scaf_stop_reason_name(why), stop_reason_explained(why), ps.criterion);
     }
 
     int nuv = scaf_param_uv_count(p);

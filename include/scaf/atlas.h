@@ -55,11 +55,16 @@ typedef struct scaf_atlas_options {
                                     scaf_atlas_set_mesh instead, accepted
                                     only when the exact checker proves them
                                     bijective (0) */
-    int settle_iterations;       /* cap of the settle phase, >= 0 (30) */
-    double settle_tolerance;     /* the settle phase ends below this
-                                    relative decrease of E per iteration,
-                                    >= 0; 0 disables this test (a zero
-                                    step still ends the phase) (1e-3) */
+    int settle_iterations;       /* cap of the settle phase, >= 0 (200) */
+    double settle_tolerance;     /* the settle phase runs to convergence:
+                                    it ends when the estimated relative
+                                    distance of E to its minimum (the
+                                    criterion of scaf_param_run, see
+                                    scaf_options_t.tolerance) is below
+                                    this, >= 0; 0 disables this test (a
+                                    zero step still ends the phase) (1e-4).
+                                    It runs SLIM then Newton (auto), the
+                                    compaction SLIM */
     int compact_iterations;      /* cap of the compact phase, >= 0; 0: no
                                     compaction (150) */
     double distortion_tolerance; /* the compact phase stops when E exceeds
@@ -161,8 +166,8 @@ SCAF_API int scaf_atlas_iterations(const scaf_atlas_t *a, scaf_atlas_phase phase
  * chart or compact_iterations 0, or after a cancel or failure in the
  * settle phase).
  *   settle:  SCAF_STOP_ITERATIONS (settle_iterations done),
- *            SCAF_STOP_TOLERANCE (E decreased by less than
- *            settle_tolerance relatively in one iteration),
+ *            SCAF_STOP_CONVERGED (the estimated distance to the
+ *            minimum fell below settle_tolerance),
  *            SCAF_STOP_ZERO_STEP, SCAF_STOP_CANCELLED, SCAF_STOP_ERROR;
  *   compact: SCAF_STOP_ITERATIONS (compact_iterations done),
  *            SCAF_STOP_DISTORTION, SCAF_STOP_PACKING_STALLED,

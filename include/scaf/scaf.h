@@ -84,12 +84,15 @@ SCAF_API int scaf_set_threads(int n);
 /* Distortion energies. */
 typedef enum scaf_energy {
     SCAF_ENERGY_SYMMETRIC_DIRICHLET = 0, /* ||J||^2 + ||J^-1||^2 */
-    SCAF_ENERGY_ARAP,                    /* ||J - R||^2; not a barrier:
-                                            triangles the solver pushes
-                                            towards inversion are only
-                                            stopped by the line search and
-                                            can become very thin */
-    SCAF_ENERGY_CONFORMAL                /* MIPS: ||J||^2 / det J */
+    SCAF_ENERGY_ARAP,                    /* ||J - R||^2 + b(det J): ARAP alone is
+                                            no barrier (triangles it pushes
+                                            towards inversion were crushed to
+                                            det J ~ 1e-8); b = (0.1/det - 1)^3
+                                            below det J = 0.1, 0 above, keeps
+                                            them away from collapse. SLIM only */
+    SCAF_ENERGY_CONFORMAL                /* MIPS: ||J||^2 / (2 det J), a barrier;
+                                            scale-free, so areas may vary
+                                            widely; SLIM only */
 } scaf_energy;
 
 /* Initial embedding of each chart. */
@@ -120,20 +123,21 @@ typedef struct scaf_options {
     scaf_energy energy;      /* mesh distortion energy
                                 (SCAF_ENERGY_SYMMETRIC_DIRICHLET) */
     scaf_init init;          /* initial embedding (SCAF_INIT_MVC) */
-    int max_iterations;      /* iteration cap of scaf_param_run (50) */
-    double tolerance;        /* convergence test (0 disables it; a zero
-                                step still ends the run: see
-                                scaf_param_run) (1e-6). Newton steps: stop
-                                when the Newton decrement relative to the
-                                objective, -g.p / (2 (E_M + lambda E_S)) —
-                                the relative decrease the quadratic model
-                                still predicts to the minimum — is below
-                                this after a full step (SCAF_STOP_CONVERGED).
-                                SLIM steps (solver slim, or auto without
-                                Newton): stop when the relative decrease
-                                over one iteration of the reported energy E,
-                                or of E_M + lambda E_S, is below this
-                                (SCAF_STOP_TOLERANCE) */
+    int max_iterations;      /* iteration cap of scaf_param_run (200: the
+                                tolerance ends the run first on every
+                                measured mesh; bench/RESULTS-newton.md) */
+    double tolerance;        /* convergence test: stop when the estimated
+                                relative distance of the minimized mesh
+                                energy to its minimum, (E - E_min) / E, is
+                                below this (SCAF_STOP_CONVERGED). The
+                                estimate (the iteration's `criterion`) is
+                                the larger of the Newton decrement of the
+                                last step and the linear tail
+                                d rho / (1 - rho) of the last decreases d,
+                                rho their largest ratio over 3 iterations;
+                                it is judged from the 4th iteration on. 0
+                                disables it (a zero step still ends the
+                                run: see scaf_param_run) (1e-5) */
     double box_scale;        /* scaffold box = this times the current UV
                                 bounding box, same center; recomputed
                                 before each iteration and fixed during its
@@ -194,6 +198,10 @@ typedef struct scaf_iteration_info {
     double decrement;                       /* Newton steps: -g.p / (2 total_before), the
                                  relative decrease the model predicted (the
                                  convergence criterion); SLIM steps: 0 */
+    double criterion;                       /* the estimated relative distance of the
+                                 minimized mesh energy to its minimum
+                                 after this iteration (see `tolerance`);
+                                 +INFINITY while not yet judged */
 } scaf_iteration_info_t;
 
 /* Why a run (or a phase of the atlas) stopped. Values never change
@@ -203,7 +211,9 @@ typedef enum scaf_stop_reason {
                                  or the phase did not take place */
     SCAF_STOP_ITERATIONS,      /* the iteration cap was reached */
     SCAF_STOP_TOLERANCE,       /* the relative decrease of the energy over
-                                 one iteration fell below the tolerance */
+                                 one iteration fell below the tolerance
+                                 (no longer given by scaf_param_run, which
+                                 stops SCAF_STOP_CONVERGED) */
     SCAF_STOP_ZERO_STEP,       /* no step lowers the energy any more (the
                                  line search accepted none): converged to
                                  floating-point precision */
@@ -214,10 +224,10 @@ typedef enum scaf_stop_reason {
     SCAF_STOP_PACKING_STALLED, /* atlas compaction: the layout's side shrank
                                  by less than 0.15% over the last 4
                                  iterations */
-    SCAF_STOP_CONVERGED        /* a full Newton step whose relative Newton
-                                 decrement is below the tolerance: the
-                                 objective is within about that (relative)
-                                 of its minimum */
+    SCAF_STOP_CONVERGED        /* the estimated relative distance to the
+                                 minimum (the iteration's criterion: Newton
+                                 decrement or linear tail, see the
+                                 tolerance) is below the tolerance */
 } scaf_stop_reason;
 
 /* A short, static name of a stop reason, one word in snake case
@@ -264,9 +274,8 @@ SCAF_API scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int n
 /* Run up to `iterations` SCAF iterations (<= 0: options.max_iterations).
  * It stops at the first of (scaf_param_stop_reason tells which):
  *   - the cap: `iterations` done (SCAF_STOP_ITERATIONS);
- *   - the tolerance (when > 0): the relative decrease over one iteration
- *     of E, or of the objective E_M + lambda E_S, is below it
- *     (SCAF_STOP_TOLERANCE);
+ *   - the tolerance (when > 0): the iteration's criterion, the estimated
+ *     relative distance to the minimum, is below it (SCAF_STOP_CONVERGED);
  *   - a zero step, whatever the tolerance (also 0): the line search found
  *     no step that lowers the objective and keeps every triangle
  *     positive; the map is a minimum to floating-point precision and

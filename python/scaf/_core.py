@@ -152,7 +152,8 @@ class IterationInfo:
     C field `lambda` (the scaffold weight); phase_seconds maps each phase
     name ("assembly", "factorization", ...) to its share of `seconds`;
     solver is "slim" or "newton" (the step this iteration took) and
-    decrement the relative Newton decrement (0 for SLIM steps)."""
+    decrement the relative Newton decrement (0 for SLIM steps); criterion
+    the estimated relative distance to the minimum (inf until judged)."""
 
     iteration: int
     energy: float
@@ -167,13 +168,14 @@ class IterationInfo:
     phase_seconds: Dict[str, float]
     solver: str
     decrement: float
+    criterion: float
 
     @classmethod
     def _from_c(cls, c):
         return cls(c.iteration, c.energy, c.energy_before, c.total_before, c.total_after, c.lambda_,
                    c.step, c.scaffold_triangles, c.scaffold_vertices, c.seconds,
                    dict(zip(_lib.PHASES, list(c.phase_seconds))), _enum_name(c.solver, _lib.SOLVERS),
-                   c.decrement)
+                   c.decrement, c.criterion)
 
 
 @dataclass
@@ -261,8 +263,9 @@ class ParamResult:
     index of each corner of each input face); energy: the reported E (4 at
     an isometry with the symmetric Dirichlet energy); iterations: finished
     iterations; chart_count: number of charts; stop_reason: why the run
-    stopped, "iteration_limit", "tolerance", "zero_step" (no step lowers
-    the energy any more: converged, also with tolerance 0), "cancelled",
+    stopped, "iteration_limit", "converged" (the estimated relative
+    distance to the minimum below the tolerance), "zero_step" (no step
+    lowers the energy any more: converged, also with tolerance 0), "cancelled",
     "error", or "not_run" before a run."""
 
     uv: Any
@@ -286,7 +289,7 @@ class AtlasResult:
     area / area of the unit square; min_gap: smallest distance between two
     charts (inf with one chart); iterations: finished iterations per phase
     {"settle": n, "compact": m}; stop_reasons: why each phase stopped
-    {"settle": ..., "compact": ...} ("iteration_limit", "tolerance",
+    {"settle": ..., "compact": ...} ("iteration_limit", "converged",
     "zero_step", "distortion_limit", "packing_stalled", "cancelled",
     "error", "not_run" for a phase that did not take place); stop_reason:
     the reason of the last phase that ran."""

@@ -85,6 +85,7 @@ class IterationInfo(ctypes.Structure):
         ("phase_seconds", ctypes.c_double * PHASE_COUNT),
         ("solver", c_enum),
         ("decrement", ctypes.c_double),
+        ("criterion", ctypes.c_double),
     ]
 
 

@@ -47,6 +47,7 @@ int main(void)
     FIELD(scaf_iteration_info_t, phase_seconds);
     FIELD(scaf_iteration_info_t, solver);
     FIELD(scaf_iteration_info_t, decrement);
+    FIELD(scaf_iteration_info_t, criterion);
 
     SIZE(scaf_atlas_options_t);
     FIELD(scaf_atlas_options_t, padding);

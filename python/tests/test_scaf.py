@@ -331,7 +331,7 @@ class ParamTest(unittest.TestCase):
     def test_stop_reason(self):
         V, F, _, _ = scaf.read_obj(gen("hemisphere", 4))
         self.assertEqual(scaf.param(V, F, iterations=2).stop_reason, "iteration_limit")
-        self.assertEqual(scaf.param(V, F, iterations=100, tolerance=1e-2, solver="slim").stop_reason, "tolerance")
+        self.assertEqual(scaf.param(V, F, iterations=100, tolerance=1e-2, solver="slim").stop_reason, "converged")
         self.assertEqual(scaf.param(V, F, iterations=100, tolerance=1e-2).stop_reason, "converged")
         # tolerance 0 does not mean "all iterations": a converged map ends
         # the run with a zero step, and the result says so
@@ -643,7 +643,8 @@ class AtlasTest(unittest.TestCase):
         self.assertIn("padding", str(cm.exception))
 
     def test_stop_reasons(self):
-        known = {"iteration_limit", "tolerance", "zero_step", "distortion_limit", "packing_stalled"}
+        known = {"iteration_limit", "tolerance", "converged", "zero_step", "distortion_limit",
+                 "packing_stalled"}
         self.assertEqual(set(self.r.stop_reasons), {"settle", "compact"})
         self.assertIn(self.r.stop_reasons["settle"], known)
         self.assertIn(self.r.stop_reasons["compact"], known)

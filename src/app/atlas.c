@@ -24,6 +24,7 @@
 #include "geom/coord_scale.h"
 #include "geom/predicates.h"
 #include "mesh/uv_verdict.h"
+#include "opt/convergence.h"
 #include "opt/flip_free_step.h"
 
 /* Margin on the padding so rounding in the final normalization cannot
@@ -38,13 +39,13 @@ atlas_options atlas_options_default(void)
     /* The atlas keeps the Tutte start: mean-value settles faster but packs
      * 1-4 points less densely on the seams meshes (bench/RESULTS-init.md). */
     o.base.init = SCAF_INIT_TUTTE;
-    /* SLIM only: the settle/compaction phases and their hooks were tuned
-     * and measured with it (Newton for the atlas: issue 11, item 4). */
-    o.base.solver = SCAF_SOLVER_SLIM;
+    /* Settling: SLIM, then Newton (auto), run to convergence; compaction
+     * keeps SLIM (its hooks were tuned and measured with it). */
+    o.base.solver = SCAF_SOLVER_AUTO;
     o.padding = 0.0;
     o.init_input = 0;
-    o.settle_iterations = 30;
-    o.settle_tolerance = 1e-3;
+    o.settle_iterations = 200;
+    o.settle_tolerance = 1e-4;
     o.compact_iterations = 150;
     o.compact_box_scale = 1.05;
     o.compact_fraction = 0.65;
@@ -684,12 +685,19 @@ static scaf_status turn_layout(atlas *a, scaf_error *err)
     return st;
 }
 
-static scaf_status one_iteration(atlas *a, atlas_phase ph, atlas_progress_fn progress, void *user,
-                                 atlas_iteration *it, scaf_error *err)
+/* One iteration of phase ph; conv (may be NULL) judges the mesh energy's
+ * distance to its minimum: it->info.criterion. */
+static scaf_status one_iteration(atlas *a, atlas_phase ph, opt_convergence *conv,
+                                 atlas_progress_fn progress, void *user, atlas_iteration *it,
+                                 scaf_error *err)
 {
     memset(it, 0, sizeof *it);
+    double e_before = conv ? scaf_loop_mesh_energy(&a->loop) : 0.0;
     scaf_status st = scaf_loop_step(&a->loop, &it->info, err);
     if (st != SCAF_OK) return st;
+    if (conv)
+        it->info.criterion = opt_convergence_update(conv, e_before, scaf_loop_mesh_energy(&a->loop),
+                                                    it->info.decrement);
     /* counted before the callback: a cancel keeps this step */
     if (ph == ATLAS_COMPACT) a->compact_done++;
     else a->settle_done++;
@@ -709,6 +717,7 @@ void atlas_compact_begin(atlas *a)
     a->loop.opt.scaffold.box_scale = a->opt.compact_box_scale;
     a->loop.opt.lambda_ratio = a->opt.compact_lambda_ratio;
     a->loop.opt.scaffold.box_square = 0;
+    a->loop.opt.solver = SCAF_SOLVER_SLIM; /* the hooks were tuned with SLIM */
     a->loop.hooks.prepare = compact_prepare;
 }
 
@@ -732,8 +741,12 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
     a->loop.hooks.prepare = NULL;
     a->settle_stop = a->opt.settle_iterations > 0 ? SCAF_STOP_ITERATIONS : SCAF_STOP_NONE;
     a->compact_stop = SCAF_STOP_NONE;
+    /* to convergence: the estimated relative distance to the minimum
+     * (opt/convergence, as scaf_param_run) below settle_tolerance */
+    opt_convergence conv;
+    opt_convergence_reset(&conv);
     for (int k = 0; k < a->opt.settle_iterations; k++) {
-        st = one_iteration(a, ATLAS_SETTLE, progress, user, &it, err);
+        st = one_iteration(a, ATLAS_SETTLE, &conv, progress, user, &it, err);
         if (st != SCAF_OK) {
             a->settle_stop = st == SCAF_ERR_CANCELLED ? SCAF_STOP_CANCELLED : SCAF_STOP_ERROR;
             return st;
@@ -742,9 +755,8 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
             a->settle_stop = SCAF_STOP_ZERO_STEP;
             break;
         }
-        double dec = (it.info.energy_before - it.info.energy) / it.info.energy_before;
-        if (dec >= 0.0 && dec < a->opt.settle_tolerance) {
-            a->settle_stop = SCAF_STOP_TOLERANCE;
+        if (a->opt.settle_tolerance > 0.0 && it.info.criterion < a->opt.settle_tolerance) {
+            a->settle_stop = SCAF_STOP_CONVERGED;
             break;
         }
     }
@@ -788,7 +800,7 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
         double e_max = (1.0 + a->opt.distortion_tolerance) * a->settled_energy;
         a->compact_stop = SCAF_STOP_ITERATIONS;
         for (int k = 0; k < a->opt.compact_iterations; k++) {
-            st = one_iteration(a, ATLAS_COMPACT, progress, user, &it, err);
+            st = one_iteration(a, ATLAS_COMPACT, NULL, progress, user, &it, err);
             if (st != SCAF_OK) {
                 a->compact_stop = st == SCAF_ERR_CANCELLED ? SCAF_STOP_CANCELLED : SCAF_STOP_ERROR;
                 break;

@@ -13,8 +13,9 @@
  *
  * Then the SCAF loop (scaffold/scaf_loop) runs on all charts at once in
  * two phases:
- *   1. settle: plain SCAF iterations until the relative decrease of E is
- *      below settle_tolerance;
+ *   1. settle: SCAF iterations (SLIM, then Newton) to convergence: until
+ *      the estimated relative distance of E to its minimum
+ *      (opt/convergence) is below settle_tolerance;
  *   1b. re-placement (repack): the settled charts are moved rigidly (a
  *      translation and a multiple of 45 degrees, from their settled
  *      orientation and, with rotate, also from each chart turned to its
@@ -75,9 +76,10 @@ typedef struct atlas_options {
     double padding;              /* minimum gap between charts in the unit
                                     square (0: charts only never overlap) */
     int init_input;              /* 1: start from the input UVs (0) */
-    int settle_iterations;       /* cap of phase 1 (30) */
-    double settle_tolerance;     /* phase 1 ends below this relative
-                                    decrease of E per iteration (1e-3) */
+    int settle_iterations;       /* cap of phase 1 (200) */
+    double settle_tolerance;     /* phase 1 ends when the estimated
+                                    relative distance to the minimum is
+                                    below this (1e-4) */
     int compact_iterations;      /* cap of phase 2; 0 = no compaction (150) */
     double compact_box_scale;    /* box during compaction (1.05) */
     double compact_fraction;     /* fraction of the box's flip-free step

@@ -23,6 +23,7 @@
 #include "mesh/mesh.h"
 #include "geom/coord_scale.h"
 #include "mesh/uv_charts.h"
+#include "opt/convergence.h"
 #include "opt/embed.h"
 #include "opt/handle_term.h"
 #include "scaffold/scaffold_defaults.h"
@@ -53,8 +54,8 @@ scaf_options_t scaf_options_default(void)
     memset(&o, 0, sizeof o);
     o.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
     o.init = SCAF_INIT_MVC; /* fewest iterations on every measured mesh: bench/RESULTS-init.md */
-    o.max_iterations = 50;
-    o.tolerance = 1e-6;
+    o.max_iterations = 200;
+    o.tolerance = 1e-5;
     o.box_scale = SCAFFOLD_DEFAULT_BOX_SCALE;
     o.box_square = 0;
     o.box_points_per_side = SCAFFOLD_DEFAULT_BOX_POINTS_PER_SIDE;
@@ -519,6 +520,12 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
     int n = iterations > 0 ? iterations : p->opt.max_iterations;
     p->stop =
         n > 0 ? SCAF_STOP_ITERATIONS : SCAF_STOP_NONE; /* unless a rule below stops it first */
+    /* The criterion judges the energy being minimized (the mesh term's
+     * own: symmetric Dirichlet, ARAP or conformal); the objective of one
+     * iteration also holds its re-rested scaffold (opt/convergence). */
+    opt_convergence conv;
+    opt_convergence_reset(&conv);
+    double e_mesh = scaf_loop_mesh_energy(&p->loop);
     for (int it = 0; it < n; it++) {
         scaf_iteration_info_t info;
         scaf_status st = scaf_loop_step(&p->loop, &info, &p->err);
@@ -526,6 +533,11 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
             p->stop = SCAF_STOP_ERROR;
             return st;
         }
+        double e_next = p->loop.opt.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET
+            ? info.energy
+            : scaf_loop_mesh_energy(&p->loop);
+        info.criterion = opt_convergence_update(&conv, e_mesh, e_next, info.decrement);
+        e_mesh = e_next;
         if (progress && progress(&info, user)) {
             p->stop = SCAF_STOP_CANCELLED;
             return err_set(&p->err, SCAF_ERR_CANCELLED,
@@ -535,26 +547,11 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
             p->stop = SCAF_STOP_ZERO_STEP;
             break;
         }
-        /* Newton: converged when a full step leaves a relative Newton
-         * decrement (the model's remaining relative decrease) below the
-         * tolerance; a short Newton step never stops the run. */
-        if (info.solver == SCAF_SOLVER_NEWTON) {
-            if (p->opt.tolerance > 0.0 && info.step == 1.0 && info.decrement < p->opt.tolerance) {
-                p->stop = SCAF_STOP_CONVERGED;
-                break;
-            }
-            continue;
-        }
-        /* A slow SLIM step hands over to Newton when Newton can run (auto:
-         * from the next iteration; newton: this was a fallback step). */
-        if (p->opt.solver != SCAF_SOLVER_SLIM && scaf_loop_newton_available(&p->loop)) continue;
-        /* SLIM only: stop when the objective (mesh + scaffold, the energy
-         * being minimized) or the reported E stops decreasing noticeably. */
-        double dec = (info.energy_before - info.energy) / info.energy_before;
-        double tdec = (info.total_before - info.total_after) / info.total_before;
-        if (p->opt.tolerance > 0.0 &&
-            ((dec >= 0.0 && dec < p->opt.tolerance) || tdec < p->opt.tolerance)) {
-            p->stop = SCAF_STOP_TOLERANCE;
+        /* converged: the estimated relative distance to the minimum (the
+         * larger of the Newton decrement and the linear tail of the last
+         * decreases) is below the tolerance */
+        if (p->opt.tolerance > 0.0 && info.criterion < p->opt.tolerance) {
+            p->stop = SCAF_STOP_CONVERGED;
             break;
         }
     }

@@ -86,9 +86,14 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
     fputs(",\n  \"final_energy\": ", o);
     json_write_number(o, r->final_energy);
     fprintf(o, ",\n  \"iteration_count\": %d", r->niterations);
-    /* the convergence criterion of the last step (see scaf_options_t) */
+    /* the convergence criterion of the last step (see scaf_options_t) and
+     * its Newton part */
+    const scaf_iteration_info_t *last =
+        r->niterations > 0 ? &r->iterations[r->niterations - 1] : NULL;
+    fputs(",\n  \"final_criterion\": ", o);
+    json_write_number(o, last ? last->criterion : INFINITY);
     fputs(",\n  \"final_decrement\": ", o);
-    json_write_number(o, r->niterations > 0 ? r->iterations[r->niterations - 1].decrement : 0.0);
+    json_write_number(o, last ? last->decrement : 0.0);
     fputs(",\n  \"median_seconds_per_iteration\": ", o);
     json_write_number(o, param_report_median_seconds(r->iterations, r->niterations));
 
@@ -126,6 +131,8 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
         json_write_number(o, it->step);
         fprintf(o, ", \"solver\": \"%s\", \"decrement\": ", solver_name(it->solver));
         json_write_number(o, it->decrement);
+        fputs(", \"criterion\": ", o);
+        json_write_number(o, it->criterion);
         fprintf(o, ", \"scaffold_triangles\": %d, \"scaffold_vertices\": %d, \"seconds\": ",
                 it->scaffold_triangles, it->scaffold_vertices);
         json_write_number(o, it->seconds);

@@ -21,7 +21,8 @@ static const stop_reason_entry TABLE[] = {
     {SCAF_STOP_DISTORTION, "distortion_limit", "E exceeded the distortion tolerance"},
     {SCAF_STOP_PACKING_STALLED, "packing_stalled", "the layout stopped shrinking"},
     {SCAF_STOP_CONVERGED, "converged",
-     "a full Newton step left a relative Newton decrement below the tolerance"},
+     "the estimated relative distance to the minimum (Newton decrement, linear tail) fell below "
+     "the tolerance"},
 };
 
 static const stop_reason_entry *find(scaf_stop_reason reason)

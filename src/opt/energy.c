@@ -73,6 +73,55 @@ static double frob2(int d, const double *A)
     return s;
 }
 
+/* ARAP's barrier b(det J) (see energy.h): u^3 with u = xh / x - 1 below
+ * xh = OPT_ARAP_BARRIER_DET, 0 above (twice continuously differentiable
+ * there, so ARAP's minimum is unchanged where no simplex is squeezed that
+ * far), +INFINITY at x <= 0. */
+static inline double arap_barrier(double x)
+{
+    const double xh = OPT_ARAP_BARRIER_DET;
+    if (!(x > 0)) return INFINITY;
+    double u = xh / x - 1.0;
+    return x < xh ? u * u * u : 0.0;
+}
+
+/* Its derivative b'(x) (<= 0). */
+static inline double arap_barrier_slope(double x)
+{
+    const double xh = OPT_ARAP_BARRIER_DET;
+    double u = xh / x - 1.0;
+    return x < xh ? -3.0 * u * u * xh / (x * x) : 0.0;
+}
+
+/* Its second derivative b''(x) (>= 0). */
+static inline double arap_barrier_curvature(double x)
+{
+    const double xh = OPT_ARAP_BARRIER_DET;
+    double u = xh / x - 1.0;
+    return x < xh ? 6.0 * u * xh * xh / (x * x * x * x) + 6.0 * u * u * xh / (x * x * x) : 0.0;
+}
+
+/* SLIM weight and target of ARAP with its barrier along signed singular
+ * value s (det the product of all, s > 0): the squared weight is the
+ * largest of 1 (ARAP's own), the secant g / (2 (s - 1)) and half the
+ * curvature f'' = 2 + b''(det) (det / s)^2 (the barrier's stiffness, which
+ * the secant misses away from the squeezed direction: without it the
+ * proxy lets a step squeeze a simplex into the barrier and the line
+ * search cuts every step short), and the target t = s - g / (2 w^2)
+ * keeps the proxy's gradient exact (g = 2 (s - 1) + b'(det) det / s). */
+static inline void arap_weight_target(double s, double det, double *w2, double *t)
+{
+    double g = 2.0 * (s - 1.0) + arap_barrier_slope(det) * det / s;
+    double o = det / s, w = 0.5 * (2.0 + arap_barrier_curvature(det) * o * o);
+    if (w < 1.0) w = 1.0;
+    if (s < 1.0) {
+        double sec = g / (2.0 * (s - 1.0));
+        if (sec > w) w = sec;
+    }
+    *w2 = w;
+    *t = s - g / (2.0 * w);
+}
+
 /* Closest rotation U V^T and the signed singular values. */
 static void closest_rotation(int d, const double *J, double *R, double *sv)
 {
@@ -96,10 +145,12 @@ static inline double density_d(opt_energy e, int d, const double *J)
         return frob2(d, J) + frob2(d, Ji);
     }
     case OPT_ENERGY_ARAP: {
+        double det = opt_det(d, J);
+        if (!(det > 0)) return INFINITY;
         double R[9], sv[3], acc = 0;
         closest_rotation(d, J, R, sv);
         for (int k = 0; k < d; k++) acc += (sv[k] - 1) * (sv[k] - 1);
-        return acc;
+        return acc + arap_barrier(det);
     }
     case OPT_ENERGY_CONFORMAL: {
         double det = opt_det(d, J);
@@ -137,11 +188,21 @@ static inline double density_grad_d(opt_energy e, int d, const double *J, double
         return frob2(d, J) + frob2(d, Ji);
     }
     case OPT_ENERGY_ARAP: {
+        double Ji[9];
+        double det = inverse(d, J, Ji);
+        if (!(det > 0)) {
+            for (int k = 0; k < d * d; k++) G[k] = NAN;
+            return INFINITY;
+        }
         double R[9], sv[3], acc = 0;
         closest_rotation(d, J, R, sv);
         for (int k = 0; k < d; k++) acc += (sv[k] - 1) * (sv[k] - 1);
-        for (int k = 0; k < d * d; k++) G[k] = 2.0 * (J[k] - R[k]);
-        return acc;
+        /* d det / dJ = det J^-T */
+        double c = arap_barrier_slope(det) * det;
+        for (int a = 0; a < d; a++)
+            for (int b = 0; b < d; b++)
+                G[a * d + b] = 2.0 * (J[a * d + b] - R[a * d + b]) + c * Ji[b * d + a];
+        return acc + arap_barrier(det);
     }
     case OPT_ENERGY_CONFORMAL: {
         double Ji[9];
@@ -217,7 +278,10 @@ static double proxy2_rotation_target(opt_energy e, const double *J, double w2_ca
 double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap, double *W,
                              double *T)
 {
-    if (d == 2 && (e == OPT_ENERGY_SYMMETRIC_DIRICHLET || e == OPT_ENERGY_ARAP))
+    /* (ARAP inside its barrier's range needs the general targets below) */
+    if (d == 2 &&
+        (e == OPT_ENERGY_SYMMETRIC_DIRICHLET ||
+         (e == OPT_ENERGY_ARAP && opt_det(2, J) >= OPT_ARAP_BARRIER_DET)))
         return proxy2_rotation_target(e, J, w2_cap, W, T);
     double U[9], V[9], s[3], w2[3], t[3];
     svd_signed(d, J, U, s, V);
@@ -229,12 +293,15 @@ double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap
             w2[i] = sd_w2(s[i]);
         }
         break;
-    case OPT_ENERGY_ARAP:
+    case OPT_ENERGY_ARAP: {
+        double det = s[0] * s[1] * (d == 3 ? s[2] : 1.0);
         for (int i = 0; i < d; i++) {
             t[i] = 1.0;
             w2[i] = 1.0;
+            if (det > 0 && det < OPT_ARAP_BARRIER_DET) arap_weight_target(s[i], det, &w2[i], &t[i]);
         }
         break;
+    }
     case OPT_ENERGY_CONFORMAL: {
         double det = s[0] * s[1] * (d == 3 ? s[2] : 1.0);
         double c = det > 0 ? pow(det, 1.0 / d) : 1.0;

@@ -2,10 +2,20 @@
  *
  * Densities of the d by d Jacobian J (row-major), d = 2 or 3:
  *   symmetric Dirichlet  ||J||_F^2 + ||J^-1||_F^2     (2d at a rotation)
- *   ARAP                 ||J - R||_F^2, R closest rotation  (0 at a rotation)
+ *   ARAP                 ||J - R||_F^2 + b(det J), R closest rotation
+ *                        (0 at a rotation)
  *   conformal (AMIPS)    ||J||_F^2 / (d det(J)^(2/d))  (1 at a similarity)
- * Symmetric Dirichlet and conformal are +INFINITY when det J <= 0 (they are
- * barriers); ARAP is finite everywhere. Each has its derivative dE/dJ and
+ * All three are +INFINITY when det J <= 0 (barriers). ARAP alone is not
+ * one: a simplex can be squeezed to zero area at a finite cost, and where
+ * the unconstrained ARAP minimum would invert simplices the SCAF loop then
+ * crushes them (its line search stops each step at a fraction of the
+ * flip-free bound, so the simplex loses most of its area every iteration
+ * and the steps of the whole map shrink with it: camelhead, hand_lowres
+ * ended with smallest singular values of 1e-8 after 7-10 iterations). b
+ * is the barrier that prevents it: b(x) = -(x - xh)^2 ln(x / xh) for
+ * x < xh = OPT_ARAP_BARRIER_DET, 0 above (C2 at xh), so the energy is
+ * ARAP itself wherever no simplex is squeezed below a tenth of its rest
+ * area, and infinite at zero area. Each has its derivative dE/dJ and
  * its SLIM proxy (Rabinovich et al. 2017): a symmetric weight matrix W and
  * target T with the property that the gradient of ||W (J - T)||^2 at the
  * current J equals dE/dJ. An opt_term pairs a simplex set with an energy;
@@ -16,6 +26,9 @@
 #define SCAF_OPT_ENERGY_H
 
 #include "opt/simplices.h"
+
+/* ARAP's barrier acts below this det J (area or volume ratio). */
+#define OPT_ARAP_BARRIER_DET 0.1
 
 typedef enum opt_energy {
     OPT_ENERGY_SYMMETRIC_DIRICHLET = 0, /* default */

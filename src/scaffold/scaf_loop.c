@@ -321,6 +321,12 @@ double scaf_loop_energy(const scaf_loop *L)
     return opt_term_energy(&t, L->uv) / L->total_area;
 }
 
+double scaf_loop_mesh_energy(const scaf_loop *L)
+{
+    const opt_obj_term *t = &L->work->terms[MESH_TERM];
+    return t->ops->energy(t, L->uv) / L->total_area;
+}
+
 void scaf_loop_face_energy(const scaf_loop *L, double *E)
 {
     for (int f = 0; f < L->nf; f++) {
@@ -693,6 +699,7 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     int d = L->d;
     scaf_iteration_info_t I;
     memset(&I, 0, sizeof I);
+    I.criterion = INFINITY; /* judged by the caller (opt/convergence) */
     double t_start = timer_now(), t0 = t_start, t1;
     scaf_status st = SCAF_OK;
     double *X = NULL, *X0 = NULL;

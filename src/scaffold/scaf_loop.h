@@ -191,6 +191,11 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
  * volume loop: the added terms' energy). */
 double scaf_loop_energy(const scaf_loop *L);
 
+/* The mesh term's own energy (opt.energy, the one being minimized) of the
+ * current map, per unit of 3D area: scaf_loop_energy for symmetric
+ * Dirichlet. */
+double scaf_loop_mesh_energy(const scaf_loop *L);
+
 /* Per-triangle symmetric Dirichlet energy of the current map (nf values). */
 void scaf_loop_face_energy(const scaf_loop *L, double *E);
 

@@ -269,7 +269,8 @@ static void defaults_are_documented_values(void **state)
 {
     (void)state;
     scaf_options_t o = scaf_options_default();
-    assert_int_equal(o.max_iterations, 50);
+    assert_int_equal(o.max_iterations, 200);
+    assert_true(o.tolerance == 1e-5);
     assert_true(o.box_scale == 3.0);
     assert_true(o.lambda_ratio == 0.01);
     assert_true(o.min_angle_deg == 20.0);

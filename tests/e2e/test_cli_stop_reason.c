@@ -46,7 +46,7 @@ static void param_reasons(void **state)
     test_tmp_path("e2e_stop_hemisphere.obj", in, sizeof in);
     assert_int_equal(test_run("%s gen hemisphere --size 4 -o %s", SCAF_BINARY, in), 0);
     param_says(in, "--iterations 2", "iteration_limit");
-    param_says(in, "--tolerance 1e-2 --solver slim", "tolerance");
+    param_says(in, "--tolerance 1e-2 --solver slim", "converged");
     param_says(in, "--tolerance 1e-2", "converged");
     param_says(in, "--iterations 1000 --tolerance 0", "zero_step");
     /* --quiet: no line, the report still has it */

@@ -178,14 +178,14 @@ static void rotation_invariance(void **state)
                 opt_term t = {&S, all_energies[e]};
                 double ey = opt_term_energy(&t, Y), ez = opt_term_energy(&t, Z);
                 assert_true(fabs(ey - ez) <= 1e-10 * fabs(ey) + 1e-12);
-                /* Inverted maps: barriers are infinite, ARAP finite. */
+                /* Inverted maps: every energy is a barrier (ARAP through
+                 * its b(det J)): infinite. */
                 for (int a = 0; a < d; a++)
                     Z[a] = Y[a], Z[d + a] = Y[2 * d + a], Z[2 * d + a] = Y[d + a];
                 for (int i = 3; i <= d; i++)
                     for (int a = 0; a < d; a++) Z[i * d + a] = Y[i * d + a];
                 double ei = opt_term_energy(&t, Z);
-                if (all_energies[e] == OPT_ENERGY_ARAP) assert_true(isfinite(ei));
-                else assert_true(isinf(ei));
+                assert_true(isinf(ei));
                 opt_simplices_free(&S);
             }
 }
@@ -224,9 +224,11 @@ static void slim_proxy_gradient_matches(void **state)
                     }
                 }
                 /* W symmetric positive definite. */
+                double wmax = 0;
+                for (int k = 0; k < d * d; k++) wmax = fmax(wmax, fabs(W[k]));
                 for (int a = 0; a < d; a++)
                     for (int b = 0; b < d; b++)
-                        assert_true(fabs(W[a * d + b] - W[b * d + a]) < 1e-12);
+                        assert_true(fabs(W[a * d + b] - W[b * d + a]) < 1e-12 * (1 + wmax));
                 assert_true(det_d(d, M) > 0 && M[0] > 0);
             }
         }
@@ -250,6 +252,8 @@ static void proxy_2d_matches_svd(void **state)
         } /* equal singular values */
         svd2_signed(J, U, sv, V);
         for (int e = 0; e < 2; e++) {
+            /* (ARAP's barrier changes its weights below det OPT_ARAP_BARRIER_DET) */
+            if (e == 1 && det_d(2, J) < OPT_ARAP_BARRIER_DET) continue;
             double w[2];
             for (int i = 0; i < 2; i++)
                 w[i] = e == 0 ? sqrt((sv[i] + 1) * (sv[i] * sv[i] + 1) / (sv[i] * sv[i] * sv[i]))

@@ -193,7 +193,8 @@ static void strip(int nx, double h, double **V, int **F, int *nv, int *nf)
 
 /* Runs scaf param on the strip; returns E, fills the UV (2 nv) and the
  * stop reason. */
-static double run_strip(scaf_solver solver, int nx, double *uv, scaf_stop_reason *stop)
+static double run_strip_capped(scaf_solver solver, int nx, int iterations, double *uv,
+                               scaf_stop_reason *stop)
 {
     double *V;
     int *F, nv, nf;
@@ -203,7 +204,7 @@ static double run_strip(scaf_solver solver, int nx, double *uv, scaf_stop_reason
     scaf_param_t *p = scaf_param_new(&o);
     assert_non_null(p);
     assert_int_equal(scaf_param_set_mesh(p, V, nv, F, nf, NULL, 0, NULL), SCAF_OK);
-    assert_int_equal(scaf_param_run(p, 0, NULL, NULL), SCAF_OK);
+    assert_int_equal(scaf_param_run(p, iterations, NULL, NULL), SCAF_OK);
     *stop = scaf_param_stop_reason(p);
     assert_int_equal(scaf_param_uv_count(p), nv);
     int *FT = malloc(sizeof(int) * 3 * (size_t)nf);
@@ -214,6 +215,11 @@ static double run_strip(scaf_solver solver, int nx, double *uv, scaf_stop_reason
     free(V);
     free(F);
     return E;
+}
+
+static double run_strip(scaf_solver solver, int nx, double *uv, scaf_stop_reason *stop)
+{
+    return run_strip_capped(solver, nx, 0, uv, stop);
 }
 
 /* The issue's strip (2000 triangles) reaches E <= 4.01 within the default
@@ -264,16 +270,21 @@ static void newton_scales_lambda(void **state)
     assert_true(scaf_loop_options_default().newton_lambda_scale == 0.1);
 }
 
-/* SLIM only: the old one-iteration rule, never "converged". */
-static void slim_never_converged(void **state)
+/* One slow iteration never ends a run as converged: SLIM on a strip of
+ * 200 quads (minimum E = 4) creeps; the old one-iteration rule stopped it
+ * at iteration 49 with E = 4.00167, 4e-4 above the minimum, as
+ * "tolerance". Now a run that says it converged is within a few times the
+ * tolerance of the minimum; this one is still at it at the cap. */
+static void slim_stops_only_near_the_minimum(void **state)
 {
     (void)state;
-    int nx = 50, nv = 2 * (nx + 1);
+    int nx = 200, nv = 2 * (nx + 1);
     double *a = malloc(sizeof(double) * 2 * (size_t)nv);
     scaf_stop_reason s;
-    double E = run_strip(SCAF_SOLVER_SLIM, nx, a, &s);
+    double E = run_strip_capped(SCAF_SOLVER_SLIM, nx, 60, a, &s);
+    double tol = scaf_options_default().tolerance;
     assert_true(E >= 4.0);
-    assert_int_not_equal(s, SCAF_STOP_CONVERGED);
+    if (s != SCAF_STOP_ITERATIONS) assert_true((E - 4.0) / E <= 10.0 * tol);
     assert_string_equal(scaf_stop_reason_name(SCAF_STOP_CONVERGED), "converged");
     free(a);
 }
@@ -286,7 +297,7 @@ int main(void)
         cmocka_unit_test(term_without_hessian_disables_newton),
         cmocka_unit_test(auto_switches_to_newton),
         cmocka_unit_test(strip_converges_deterministically),
-        cmocka_unit_test(slim_never_converged),
+        cmocka_unit_test(slim_stops_only_near_the_minimum),
         cmocka_unit_test(newton_scales_lambda),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
