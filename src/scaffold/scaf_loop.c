@@ -323,7 +323,8 @@ double scaf_loop_energy(const scaf_loop *L)
 
 double scaf_loop_mesh_energy(const scaf_loop *L)
 {
-    const opt_obj_term *t = &L->work->terms[MESH_TERM];
+    if (L->work->mesh_k < 0) return terms_energy(L);
+    const opt_obj_term *t = &L->work->terms[L->work->mesh_k];
     return t->ops->energy(t, L->uv) / L->total_area;
 }
 

@@ -193,7 +193,7 @@ double scaf_loop_energy(const scaf_loop *L);
 
 /* The mesh term's own energy (opt.energy, the one being minimized) of the
  * current map, per unit of 3D area: scaf_loop_energy for symmetric
- * Dirichlet. */
+ * Dirichlet (a volume loop: the added terms' energy, as scaf_loop_energy). */
 double scaf_loop_mesh_energy(const scaf_loop *L);
 
 /* Per-triangle symmetric Dirichlet energy of the current map (nf values). */
