@@ -28,6 +28,7 @@
  */
 #include "opt/cholmod_solver.h"
 
+#include "opt/block_symbolic.h"
 #include "opt/cholmod_view.h"
 
 #include <assert.h>
@@ -112,35 +113,25 @@ void opt_chol_set_relax(opt_chol *c, int scale)
     for (int k = 0; k < 3; k++) c->cm.nrelax[k] = base[k] * (size_t)scale;
 }
 
-/* Fill-reducing permutation of A computed on its vertex graph: vertex J's
- * neighbours are the row groups of its last scalar column (which holds
- * every row of the block column for the interleaved layout). perm: n. */
+/* Fill-reducing permutation of the vertex graph G (nb vertices): pv. */
+static int graph_ordering(opt_chol *c, int nb, int *cp, int *ri, int *pv)
+{
+    cholmod_sparse G = opt_cholmod_pattern_view(nb, cp, ri, 1);
+    return c->ordering == OPT_ORDER_METIS ? cholmod_metis(&G, NULL, 0, 1, pv, &c->cm)
+                                          : cholmod_amd(&G, NULL, 0, pv, &c->cm);
+}
+
+/* Fill-reducing permutation of A computed on its vertex graph
+ * (opt/block_symbolic) and expanded. perm: n. */
 static int block_ordering(opt_chol *c, const opt_csc *A, int *perm)
 {
     int b = c->block, nb = A->n / b;
-    int *cp = malloc(((size_t)nb + 1) * sizeof *cp);
-    int *ri = malloc(((size_t)A->nnz / b + (size_t)nb + 1) * sizeof *ri);
+    int *cp = NULL, *ri = NULL;
     int *pv = malloc(((size_t)nb + 1) * sizeof *pv);
-    int ok = cp && ri && pv;
-    if (ok) {
-        int out = 0;
-        for (int J = 0; J < nb; J++) {
-            cp[J] = out;
-            int col = J * b + b - 1, prev = -1;
-            for (int k = A->colptr[col]; k < A->colptr[col + 1]; k++) {
-                int I = A->rowidx[k] / b;
-                if (I != prev) ri[out++] = I;
-                prev = I;
-            }
-        }
-        cp[nb] = out;
-        cholmod_sparse G = opt_cholmod_pattern_view(nb, cp, ri, 1);
-        ok = c->ordering == OPT_ORDER_METIS ? cholmod_metis(&G, NULL, 0, 1, pv, &c->cm)
-                                            : cholmod_amd(&G, NULL, 0, pv, &c->cm);
-        if (ok)
-            for (int k = 0; k < nb; k++)
-                for (int a = 0; a < b; a++) perm[k * b + a] = pv[k] * b + a;
-    }
+    int ok = pv && opt_block_graph(A, b, &cp, &ri) && graph_ordering(c, nb, cp, ri, pv);
+    if (ok)
+        for (int k = 0; k < nb; k++)
+            for (int a = 0; a < b; a++) perm[k * b + a] = pv[k] * b + a;
     free(cp);
     free(ri);
     free(pv);
@@ -205,10 +196,10 @@ int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A) { return same_
  * patterns) is the same. Returns NULL with cm->status set when out of
  * memory, or with status OK when perm is not a permutation (the caller
  * then lets CHOLMOD handle and report it). */
-static cholmod_factor *analyze_given_fast(opt_chol *c, const opt_csc *A, const int *perm)
+static cholmod_factor *analyze_given_fast(cholmod_common *cm, int nn, const int *colptr,
+                                          const int *rowidx, const int *perm)
 {
-    cholmod_common *cm = &c->cm;
-    size_t n = (size_t)A->n, nz = (size_t)A->nnz;
+    size_t n = (size_t)nn, nz = (size_t)colptr[nn];
     int *iw = malloc((8 * n + 2) * sizeof *iw);
     int *si = malloc((nz ? nz : 1) * sizeof *si);
     int *si2 = malloc((nz ? nz : 1) * sizeof *si2);
@@ -232,8 +223,8 @@ static cholmod_factor *analyze_given_fast(opt_chol *c, const opt_csc *A, const i
     memset(sp, 0, (n + 1) * sizeof *sp);
     for (size_t col = 0; col < n; col++) {
         int pc = pinv[col];
-        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
-            int r = A->rowidx[q];
+        for (int q = colptr[col]; q < colptr[col + 1]; q++) {
+            int r = rowidx[q];
             if ((size_t)r > col) continue;
             int pr = pinv[r];
             sp[(pr > pc ? pr : pc) + 1]++;
@@ -243,8 +234,8 @@ static cholmod_factor *analyze_given_fast(opt_chol *c, const opt_csc *A, const i
     memcpy(first, sp, n * sizeof *first); /* fill cursors */
     for (size_t col = 0; col < n; col++) {
         int pc = pinv[col];
-        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
-            int r = A->rowidx[q];
+        for (int q = colptr[col]; q < colptr[col + 1]; q++) {
+            int r = rowidx[q];
             if ((size_t)r > col) continue;
             int pr = pinv[r];
             if (pr > pc) si[first[pr]++] = pc;
@@ -303,6 +294,40 @@ done:
     return L;
 }
 
+/* The symbolic factor from the vertex graph (opt/block_symbolic), for
+ * unknowns in blocks of c->block, with the vertex order behind perm or,
+ * without perm, the solver's ordering of the vertex graph. The relaxation
+ * thresholds count vertex columns there, hence divided by the block size.
+ * NULL with status OK when perm splits a block (the caller then analyses
+ * the scalar pattern), NULL with an error status on failure. */
+static cholmod_factor *analyze_blocks(opt_chol *c, const opt_csc *A, const int *perm)
+{
+    cholmod_common *cm = &c->cm;
+    int b = c->block, nb = A->n / b;
+    int *cp = NULL, *ri = NULL, *pv = malloc(((size_t)nb + 1) * sizeof *pv);
+    cholmod_factor *Lv = NULL, *L = NULL;
+    if (!pv || !opt_block_graph(A, b, &cp, &ri)) {
+        cm->status = CHOLMOD_OUT_OF_MEMORY;
+        goto done;
+    }
+    if (perm ? !opt_block_perm_compress(A->n, b, perm, pv) : !graph_ordering(c, nb, cp, ri, pv))
+        goto done;
+    size_t relax[3];
+    for (int k = 0; k < 3; k++) {
+        relax[k] = cm->nrelax[k];
+        cm->nrelax[k] = (relax[k] + (size_t)b - 1) / (size_t)b;
+    }
+    Lv = analyze_given_fast(cm, nb, cp, ri, pv);
+    for (int k = 0; k < 3; k++) cm->nrelax[k] = relax[k];
+    if (Lv) L = opt_block_expand_symbolic(Lv, b, cm);
+done:
+    if (Lv) cholmod_free_factor(&Lv, cm);
+    free(cp);
+    free(ri);
+    free(pv);
+    return L;
+}
+
 scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm, scaf_error *err)
 {
     if (A->n < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD: empty system (no free unknowns)");
@@ -313,24 +338,21 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     c->factored = 0;
     c->n = c->nnz = 0;
     cholmod_sparse S = opt_csc_cholmod_view(A);
-    int *own = NULL;
-    if (!perm && c->block > 1 && c->ordering != OPT_ORDER_CHOLMOD_DEFAULT && A->n % c->block == 0) {
-        own = malloc((size_t)A->n * sizeof *own);
-        if (!own) return err_nomem(err, "CHOLMOD ordering");
-        if (!block_ordering(c, A, own)) {
-            free(own);
-            return fail(c, "block ordering", err);
-        }
-        perm = own;
-    }
     int lv = omp_serial_begin();
-    if (perm) {
+    c->cm.status = CHOLMOD_OK;
+    /* the solver is supernodal (opt_chol_create) */
+    if (c->block > 1 && A->n % c->block == 0 && (perm || c->ordering != OPT_ORDER_CHOLMOD_DEFAULT))
+        c->L = analyze_blocks(c, A, perm);
+    int by_blocks = c->L != NULL;
+    if (c->L || c->cm.status != CHOLMOD_OK) {
+        /* done by blocks, or failed */
+    } else if (perm) {
         /* A given permutation: use it as the only method. */
         int save_n = c->cm.nmethods, save_ord = c->cm.method[0].ordering;
         c->cm.nmethods = 1;
         c->cm.method[0].ordering = CHOLMOD_GIVEN;
         c->cm.status = CHOLMOD_OK;
-        c->L = c->cm.supernodal == CHOLMOD_SUPERNODAL ? analyze_given_fast(c, A, perm) : NULL;
+        c->L = analyze_given_fast(&c->cm, A->n, A->colptr, A->rowidx, perm);
         if (!c->L && c->cm.status == CHOLMOD_OK)
             c->L = cholmod_analyze_p(&S, (int *)perm, NULL, 0, &c->cm);
         c->cm.nmethods = save_n;
@@ -339,7 +361,6 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
         c->L = cholmod_analyze(&S, &c->cm);
     }
     omp_serial_end(lv);
-    free(own);
     if (!c->L) return fail(c, "analysis", err);
     int *cp = realloc(c->colptr, ((size_t)A->n + 1) * sizeof *cp);
     if (!cp) return err_nomem(err, "CHOLMOD pattern copy");
@@ -352,6 +373,7 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     c->n = A->n;
     c->nnz = A->nnz;
     c->st.analyses++;
+    c->st.block_analyses += by_blocks;
     c->st.t_analyze += timer_now() - t0;
     return SCAF_OK;
 }

@@ -28,6 +28,8 @@ typedef enum opt_ordering {
 
 typedef struct opt_chol_stats {
     int analyses;       /* symbolic analyses done */
+    int block_analyses; /* of which done on the vertex graph and expanded
+                              (opt_chol_set_block, opt/block_symbolic) */
     int factorizations; /* numerical factorizations done */
     int not_posdef;     /* factorizations that found the matrix not
                               positive definite (the caller's recovery,
@@ -52,7 +54,11 @@ void opt_chol_destroy(opt_chol *c);
  * the AMD / METIS ordering on the compressed vertex graph (block^2 times
  * fewer edges) and expand it, which is cheaper and orders each vertex's
  * coordinates together. block = 1 (the default) orders scalars. Ignored
- * for OPT_ORDER_CHOLMOD_DEFAULT and when n is not a multiple of block. */
+ * for OPT_ORDER_CHOLMOD_DEFAULT and when n is not a multiple of block.
+ * The symbolic analysis (supernodal) is then done on the vertex graph too
+ * and expanded (opt/block_symbolic: b^2 times fewer entries to analyse),
+ * whenever the permutation keeps each vertex's unknowns together; a
+ * given permutation that splits them gets the scalar analysis. */
 void opt_chol_set_block(opt_chol *c, int block);
 
 /* Supernode amalgamation: CHOLMOD's relaxation thresholds (nrelax: merge
