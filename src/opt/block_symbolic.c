@@ -90,8 +90,7 @@ cholmod_factor *opt_block_expand_symbolic(const cholmod_factor *Lv, int b, cholm
     for (size_t k = 0; k <= ns; k++) {
         super[k] = vsuper[k] * b;
         pi[k] = vpi[k] * b;
-        if (k > 0)
-            px[k] = px[k - 1] + (super[k] - super[k - 1]) * (pi[k] - pi[k - 1]);
+        if (k > 0) px[k] = px[k - 1] + (super[k] - super[k - 1]) * (pi[k] - pi[k - 1]);
     }
     for (int q = 0; q < vpi[ns]; q++)
         for (int a = 0; a < b; a++) s[(size_t)q * (size_t)b + (size_t)a] = vs[q] * b + a;
