@@ -14,6 +14,10 @@
  * refactorization after a failed one): a sample is attributed to a
  * neighbouring phase at worst.
  *
+ * K = 0 runs to convergence instead (the default tolerance, cap 200
+ * iterations), for scale runs; the map is then checked with the exact
+ * bijectivity checker (geom/bijectivity) and the verdict printed.
+ *
  *   build/bench/bench_memory MESH [K]    (default K = 3; OPENBLAS_NUM_THREADS=1 advised)
  *
  * Exit status 0, 1 when the mesh cannot be read or a step fails.
@@ -26,6 +30,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
 #include "scaf/scaf.h"
 
@@ -94,11 +99,10 @@ static double window_max(sampler *s, double t0, double t1)
     return m;
 }
 
-static const int order[SCAF_PHASE_COUNT] = {SCAF_PHASE_SCAFFOLD,      SCAF_PHASE_ASSEMBLY,
-                                            SCAF_PHASE_ANALYSIS,      SCAF_PHASE_FACTORIZATION,
-                                            SCAF_PHASE_SOLVE,         SCAF_PHASE_LINE_SEARCH,
-                                            SCAF_PHASE_OTHER};
-static const char *names[SCAF_PHASE_COUNT] = {"assembly", "analysis", "factorization", "solve",
+static const int order[SCAF_PHASE_COUNT] = {
+    SCAF_PHASE_SCAFFOLD, SCAF_PHASE_ASSEMBLY,    SCAF_PHASE_ANALYSIS, SCAF_PHASE_FACTORIZATION,
+    SCAF_PHASE_SOLVE,    SCAF_PHASE_LINE_SEARCH, SCAF_PHASE_OTHER};
+static const char *names[SCAF_PHASE_COUNT] = {"assembly",    "analysis", "factorization", "solve",
                                               "line search", "scaffold", "other"};
 
 typedef struct run {
@@ -130,7 +134,7 @@ int main(int argc, char **argv)
         return 1;
     }
     int K = argc > 2 ? atoi(argv[2]) : 3;
-    if (K < 1) K = 1;
+    if (K < 0) K = 3;
     sampler s = {malloc(sizeof(double) * MAX_SAMPLES), malloc(sizeof(double) * MAX_SAMPLES), 0, 0};
     if (!s.t || !s.rss) return 1;
     pthread_t th;
@@ -145,9 +149,11 @@ int main(int argc, char **argv)
     double t_read = now(), hwm_read = hwm_bytes();
     scaf_options_t o = scaf_options_default();
     o.init = SCAF_INIT_HARMONIC;
-    o.tolerance = 0;
+    if (K > 0) o.tolerance = 0;
+    else o.max_iterations = 200;
     scaf_param_t *p = scaf_param_new(&o);
-    scaf_status st = p ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL) : SCAF_ERR_NOMEM;
+    scaf_status st =
+        p ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL) : SCAF_ERR_NOMEM;
     double t_setup = now(), hwm_setup = hwm_bytes();
     printf("%s: %d vertices, %d faces; resident memory, GB (sampled every ms; VmHWM: the kernel's "
            "high-water mark)\n\n",
@@ -164,6 +170,28 @@ int main(int argc, char **argv)
     run r = {&s};
     if (st == SCAF_OK) st = scaf_param_run(p, K, on_iteration, &r);
     if (st != SCAF_OK) fprintf(stderr, "failed: %s\n", p ? scaf_param_error(p) : "out of memory");
+    if (st == SCAF_OK) {
+        printf("\n%d iterations, E = %.9f, stop reason %s, %.1f s since the start\n",
+               scaf_param_iterations(p), scaf_param_energy(p),
+               scaf_stop_reason_name(scaf_param_stop_reason(p)), now() - t_start);
+        fflush(stdout);
+    }
+    if (st == SCAF_OK && K == 0) {
+        int nuv = scaf_param_uv_count(p);
+        double *UV = malloc(sizeof(double) * 2 * (size_t)nuv);
+        int *FT = malloc(sizeof(int) * 3 * (size_t)m.nf);
+        bij_report rep;
+        scaf_error e2;
+        if (!UV || !FT || scaf_param_get_uv(p, UV, FT) != SCAF_OK ||
+            bij_check(nuv, UV, m.nf, FT, NULL, NULL, &rep, &e2) != SCAF_OK)
+            st = SCAF_ERR_NOMEM;
+        else
+            printf("exact check: %s (%lld flipped, %lld degenerate, %lld crossings)\n",
+                   rep.bijective ? "bijective" : "NOT bijective", (long long)rep.flipped,
+                   (long long)rep.degenerate, rep.boundary_crossings);
+        free(UV);
+        free(FT);
+    }
     atomic_store(&s.stop, 1);
     pthread_join(th, NULL);
     printf("\nVmHWM at the end: %.2f GB\n", hwm_bytes() / 1e9);

@@ -1,6 +1,7 @@
 /* opt/block_symbolic: see block_symbolic.h. */
 #include "opt/block_symbolic.h"
 
+#include <limits.h>
 #include <stdlib.h>
 
 int opt_block_graph(const opt_csc *A, int b, int **cp_out, int **ri_out)
@@ -63,6 +64,10 @@ int opt_block_perm_compress(int n, int b, const int *perm, int *vperm)
 cholmod_factor *opt_block_expand_symbolic(const cholmod_factor *Lv, int b, cholmod_common *cm)
 {
     size_t nv = Lv->n, n = nv * (size_t)b, ns = Lv->nsuper, bb = (size_t)b * (size_t)b;
+    if (Lv->xsize > (size_t)INT_MAX / bb || Lv->ssize > (size_t)INT_MAX / (size_t)b) {
+        cm->status = CHOLMOD_TOO_LARGE; /* CHOLMOD's int indices */
+        return NULL;
+    }
     cholmod_factor *L = cholmod_allocate_factor(n, cm);
     if (!L) return NULL;
     const int *vperm = Lv->Perm, *vcount = Lv->ColCount;

@@ -423,6 +423,128 @@ static void block_symbolic_analysis(void **state)
     free(y);
 }
 
+/* kron(Laplacian of a vertex graph + I, M) with M 2x2 SPD: the edges
+ * (ea[e], eb[e]) between nvtx vertices, unknowns interleaved by vertex. */
+static void block_laplacian(opt_csc *A, int nvtx, int ne, const int *ea, const int *eb)
+{
+    const double M[4] = {2, 0.5, 0.5, 1};
+    int cap = 4 * (ne + nvtx), nt = 0;
+    int *I = malloc(cap * sizeof *I), *J = malloc(cap * sizeof *J);
+    double *V = malloc(cap * sizeof *V), *deg = calloc(nvtx, sizeof *deg);
+    for (int e = 0; e < ne; e++) {
+        deg[ea[e]] += 1;
+        deg[eb[e]] += 1;
+    }
+    for (int pass = 0; pass < 2; pass++)
+        for (int e = 0; e < (pass ? ne : nvtx); e++) {
+            int u = pass ? ea[e] : e, v = pass ? eb[e] : e;
+            double w = pass ? -1.0 : deg[e] + 1.0;
+            if (u > v) {
+                int t = u;
+                u = v;
+                v = t;
+            }
+            for (int a = 0; a < 2; a++)
+                for (int b = 0; b < 2; b++) {
+                    if (2 * u + a > 2 * v + b) continue; /* upper */
+                    I[nt] = 2 * u + a;
+                    J[nt] = 2 * v + b;
+                    V[nt++] = w * M[2 * a + b];
+                }
+        }
+    assert_int_equal(opt_csc_from_triplets(A, 2 * nvtx, nt, I, J, V, NULL), SCAF_OK);
+    free(I);
+    free(J);
+    free(V);
+    free(deg);
+}
+
+/* A fixed part (two separate grids: two roots) in a fixed order and a
+ * variable part whose size and couplings change every round: with the
+ * fixed part declared, every analysis reuses the fixed part's (the split
+ * counter), the solutions agree with plain CHOLMOD's on the same
+ * permutation to rounding; a permutation whose variable part is not in
+ * natural order gets the whole analysis. */
+static void split_symbolic_analysis(void **state)
+{
+    (void)state;
+    const int m = 14, nf = 2 * m * m;
+    rng r = {71};
+    int cap = 4 * nf + 400;
+    int *ea = malloc(cap * sizeof *ea), *eb = malloc(cap * sizeof *eb);
+    int *fperm = malloc(nf * sizeof *fperm);
+    for (int i = 0; i < nf; i++) fperm[i] = i;
+    for (int i = nf - 1; i > 0; i--) {
+        int j = (int)rng_uniform(&r, 0, i + 1);
+        if (j > i) j = i;
+        int t = fperm[i];
+        fperm[i] = fperm[j];
+        fperm[j] = t;
+    }
+    scaf_error e;
+    opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+    assert_non_null(c);
+    opt_chol_set_block(c, 2);
+    opt_chol_set_relax(c, 4);
+    opt_chol_set_fixed_part(c, 2 * nf);
+    for (int round = 0; round < 4; round++) {
+        int ne = 0, nw = 20 + 7 * round, nv = nf + nw;
+        for (int g = 0; g < 2; g++)
+            for (int y = 0; y < m; y++)
+                for (int x = 0; x < m; x++) {
+                    int v = g * m * m + y * m + x;
+                    if (x + 1 < m) ea[ne] = v, eb[ne++] = v + 1;
+                    if (y + 1 < m) ea[ne] = v, eb[ne++] = v + m;
+                }
+        for (int j = 0; j < nw; j++) {
+            int J = nf + j;
+            if (j % 5 != 4) /* a few variable vertices touch no fixed one */
+                for (int k = 0; k < 3; k++) {
+                    int f = (int)rng_uniform(&r, 0, nf);
+                    ea[ne] = f < nf ? f : nf - 1;
+                    eb[ne++] = J;
+                }
+            if (j > 0) ea[ne] = J - 1, eb[ne++] = J;
+        }
+        opt_csc A;
+        block_laplacian(&A, nv, ne, ea, eb);
+        int n = A.n, *perm = malloc(n * sizeof *perm);
+        double *b = malloc(n * sizeof *b), *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
+        for (int k = 0; k < nv; k++) {
+            int v = k < nf ? fperm[k] : (round == 3 ? nv - 1 - (k - nf) : k);
+            perm[2 * k] = 2 * v;
+            perm[2 * k + 1] = 2 * v + 1;
+        }
+        for (int i = 0; i < n; i++) b[i] = rng_uniform(&r, -1, 1);
+        opt_chol_stats s0 = opt_chol_get_stats(c);
+        assert_int_equal(opt_chol_analyze_given(c, &A, perm, &e), SCAF_OK);
+        opt_chol_stats s1 = opt_chol_get_stats(c);
+        assert_int_equal(s1.split_analyses - s0.split_analyses, round == 3 ? 0 : 1);
+        assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+        assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+        assert_true(rel_residual(&A, x, b) < 1e-12);
+        const int *lp = opt_chol_permutation(c);
+        if (round < 3) /* the fixed unknowns first */
+            for (int k = 0; k < 2 * nf; k++) assert_true(lp[k] < 2 * nf);
+        plain_cholmod_solve(&A, lp, 1, b, y);
+        double num = 0, den = 0;
+        for (int i = 0; i < n; i++) {
+            num += (x[i] - y[i]) * (x[i] - y[i]);
+            den += y[i] * y[i];
+        }
+        assert_true(sqrt(num / den) < 1e-12);
+        free(perm);
+        free(b);
+        free(x);
+        free(y);
+        opt_csc_free(&A);
+    }
+    opt_chol_destroy(c);
+    free(ea);
+    free(eb);
+    free(fperm);
+}
+
 /* libgomp, when loaded (through CHOLMOD): the solver must leave it as it
  * found it. */
 extern int omp_get_max_active_levels(void) __attribute__((weak));
@@ -588,6 +710,7 @@ int main(void)
         cmocka_unit_test(block_ordering_solves),     cmocka_unit_test(relaxed_supernodes_solve),
         cmocka_unit_test(upper_sorted_layout),       cmocka_unit_test(indefinite_is_an_error),
         cmocka_unit_test(concurrent_factorizations), cmocka_unit_test(block_symbolic_analysis),
+        cmocka_unit_test(split_symbolic_analysis),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
