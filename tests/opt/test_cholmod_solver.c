@@ -59,6 +59,19 @@ static void grid_laplacian(opt_csc *A, int m, double shift, int extra)
     free(V);
 }
 
+/* p = a uniformly random permutation of 0..n-1 (Fisher-Yates). */
+static void random_permutation(int *p, int n, rng *r)
+{
+    for (int i = 0; i < n; i++) p[i] = i;
+    for (int i = n - 1; i > 0; i--) {
+        int j = (int)rng_uniform(r, 0, i + 1);
+        if (j > i) j = i;
+        int t = p[i];
+        p[i] = p[j];
+        p[j] = t;
+    }
+}
+
 static double rel_residual(const opt_csc *A, const double *x, const double *b)
 {
     double *y = malloc(A->n * sizeof *y), num = 0, den = 0;
@@ -155,14 +168,7 @@ static void given_random_permutation(void **state)
     rng r = {7};
     int *perm = malloc(n * sizeof *perm), *seen = calloc(n, sizeof *seen);
     double *b = malloc(n * sizeof *b), *x = malloc(n * sizeof *x);
-    for (int i = 0; i < n; i++) perm[i] = i;
-    for (int i = n - 1; i > 0; i--) {
-        int j = (int)rng_uniform(&r, 0, i + 1);
-        if (j > i) j = i;
-        int t = perm[i];
-        perm[i] = perm[j];
-        perm[j] = t;
-    }
+    random_permutation(perm, n, &r);
     for (int i = 0; i < n; i++) b[i] = rng_uniform(&r, -1, 1);
     scaf_error e;
     for (int relax = 1; relax <= 4; relax += 3) {
@@ -249,14 +255,7 @@ static void same_bits_as_plain_cholmod(void **state)
     int *perm = malloc(n * sizeof *perm);
     double *b = malloc(3 * n * sizeof *b), *x = malloc(3 * n * sizeof *x),
            *y = malloc(3 * n * sizeof *y);
-    for (int i = 0; i < n; i++) perm[i] = i;
-    for (int i = n - 1; i > 0; i--) {
-        int j = (int)rng_uniform(&r, 0, i + 1);
-        if (j > i) j = i;
-        int t = perm[i];
-        perm[i] = perm[j];
-        perm[j] = t;
-    }
+    random_permutation(perm, n, &r);
     for (int i = 0; i < 3 * n; i++) b[i] = rng_uniform(&r, -1, 1);
     scaf_error e;
     opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
@@ -378,14 +377,7 @@ static void block_symbolic_analysis(void **state)
     int *vperm = malloc(nb * sizeof *vperm), *perm = malloc(n * sizeof *perm);
     double *b = malloc(n * sizeof *b), *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
     for (int i = 0; i < n; i++) b[i] = rng_uniform(&r, -1, 1);
-    for (int i = 0; i < nb; i++) vperm[i] = i;
-    for (int i = nb - 1; i > 0; i--) {
-        int j = (int)rng_uniform(&r, 0, i + 1);
-        if (j > i) j = i;
-        int t = vperm[i];
-        vperm[i] = vperm[j];
-        vperm[j] = t;
-    }
+    random_permutation(vperm, nb, &r);
     scaf_error e;
     for (int variant = 0; variant < 3; variant++) {
         /* 0: the solver's own ordering, 1: given by blocks, 2: split */
@@ -473,14 +465,7 @@ static void split_symbolic_analysis(void **state)
     int cap = 4 * nf + 400;
     int *ea = malloc(cap * sizeof *ea), *eb = malloc(cap * sizeof *eb);
     int *fperm = malloc(nf * sizeof *fperm);
-    for (int i = 0; i < nf; i++) fperm[i] = i;
-    for (int i = nf - 1; i > 0; i--) {
-        int j = (int)rng_uniform(&r, 0, i + 1);
-        if (j > i) j = i;
-        int t = fperm[i];
-        fperm[i] = fperm[j];
-        fperm[j] = t;
-    }
+    random_permutation(fperm, nf, &r);
     scaf_error e;
     opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
     assert_non_null(c);
