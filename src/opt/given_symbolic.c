@@ -116,4 +116,3 @@ done:
     free(si2);
     return L;
 }
-
