@@ -8,7 +8,10 @@
  * With a given permutation the symbolic analysis runs CHOLMOD's own steps
  * (etree, column counts, weighted postorder, supernodes) on matrices built
  * here with three passes instead of cholmod_analyze_p's four transposes;
- * the factor it produces is the same (opt/given_symbolic).
+ * the factor it produces is the same (opt/given_symbolic). With unknowns
+ * in vertex blocks the analysis runs on the vertex graph and is expanded
+ * (opt/block_symbolic); a declared fixed leading part keeps its analysis
+ * across patterns (opt/split_symbolic).
  *
  * OpenMP: the Debian CHOLMOD runs small loops of its supernodal
  * factorization (zeroing and scattering each supernode) in OpenMP regions
@@ -194,8 +197,11 @@ int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A) { return same_
  * unknowns in blocks of c->block, with the vertex order behind perm or,
  * without perm, the solver's ordering of the vertex graph. The relaxation
  * thresholds count vertex columns there, hence divided by the block size.
- * NULL with status OK when perm splits a block (the caller then analyses
- * the scalar pattern), NULL with an error status on failure. */
+ * When the fixed part (opt_chol_set_fixed_part) comes first in perm and
+ * the rest in natural order, the fixed part's analysis is kept and reused
+ * (opt/split_symbolic; *by_split set). NULL with status OK when perm
+ * splits a block (the caller then analyses the scalar pattern), NULL with
+ * an error status on failure. */
 static cholmod_factor *analyze_blocks(opt_chol *c, const opt_csc *A, const int *perm, int *by_split)
 {
     cholmod_common *cm = &c->cm;
