@@ -50,6 +50,12 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+static int cmp_ll(const void *a, const void *b)
+{
+    long long x = *(const long long *)a, y = *(const long long *)b;
+    return (x > y) - (x < y);
+}
+
 typedef struct dedge {
     long long key;
     int a, b;
@@ -219,6 +225,32 @@ int main(int argc, char **argv)
         free(ring);
     }
     printf("scaffold vertices next to the chart: %d of %zu\n", nring, ((size_t)A->n - nm) / 2);
+    /* Mesh-mesh couplings that only the scaffold makes (a scaffold
+     * triangle with two boundary vertices that share no mesh edge): they
+     * change the elimination tree of the mesh block, which is why the
+     * mesh block's symbolic factor cannot simply be kept while the
+     * scaffold changes. */
+    {
+        size_t ne = 3 * (size_t)m.nf, extra = 0, mm = 0;
+        long long *key = malloc(sizeof *key * ne);
+        if (!key) return 1;
+        for (int f = 0; f < m.nf; f++)
+            for (int j = 0; j < 3; j++) {
+                long long a = m.F[3 * f + j], b = m.F[3 * f + (j + 1) % 3];
+                key[3 * (size_t)f + j] = a < b ? a * m.nv + b : b * m.nv + a;
+            }
+        qsort(key, ne, sizeof *key, cmp_ll);
+        for (int J = 0; J < L.nv; J++)
+            for (int k = A->colptr[2 * J + 1]; k < A->colptr[2 * J + 2]; k++) {
+                int I = A->rowidx[k] / 2;
+                if (I >= J || A->rowidx[k] % 2) continue;
+                long long q = (long long)I * m.nv + J;
+                mm++;
+                if (!bsearch(&q, key, ne, sizeof *key, cmp_ll)) extra++;
+            }
+        free(key);
+        printf("mesh-mesh vertex couplings: %zu, of which %zu from the scaffold only\n", mm, extra);
+    }
     cholmod_common cm;
     cholmod_start(&cm);
     cm.print = 0;

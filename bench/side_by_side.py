@@ -27,7 +27,8 @@ over the rounds where both runs had a core, the summary table, and scaf's
 phase split (mean of iterations 2..N of its median run).
 
     bench/side_by_side.py [--reference BIN] [--scaf BIN] [--data DIR]
-                          [--rounds N] [--cpu] [--to-energy] [MESH[:ITERATIONS] ...]
+                          [--rounds N] [--cpu] [--to-energy] [--scaf-args ARGS]
+                          [MESH[:ITERATIONS] ...]
 
 --to-energy measures time to energy instead: libigl runs ITERATIONS
 iterations from its tutorial start and its final E is the target; scaf runs
@@ -38,6 +39,12 @@ to the first iteration at or below the target, scaf its setup (embedding)
 plus its iteration seconds up to that point (scaf's setup is counted,
 libigl's is not: the comparison leans towards libigl). Also interleaved,
 alternating which program goes first.
+
+--scaf-args: more `scaf param` options for the per-iteration mode, default
+`--solver slim` (libigl's SCAF iterates SLIM; scaf's default solver, auto,
+turns to Newton steps after a few iterations, a different method per
+iteration). MESH may be absolute
+(e.g. an upsampled mesh from bench/subdivide.py).
 
 --cpu adds CPU seconds per iteration (2..N): each program is run once more
 per round, stopped after iteration 1, and the difference of the two
@@ -227,7 +234,7 @@ def bench_mesh(args, rel, iterations, env, tmp):
 
     def scaf_cmd(n):
         return [args.scaf, "param", path, "-o", os.path.join(tmp, "out.obj"), "--init", "harmonic",
-                "--iterations", str(n), "--tolerance", "0", "--quiet", "--report", report]
+                "--iterations", str(n), "--tolerance", "0", "--quiet", "--report", report] + args.scaf_args.split()
     runs = {"libigl": [], "scaf": []}
     load_before = loadavg()
     loads = []
@@ -399,6 +406,9 @@ def main():
                     help="time to libigl's ITERATIONS-iteration energy instead of seconds per iteration")
     ap.add_argument("--scaf-iterations", type=int, default=60,
                     help="--to-energy: scaf's iteration cap (default 60)")
+    ap.add_argument("--scaf-args", default="--solver slim",
+                    help="more scaf param options (default '--solver slim': libigl iterates SLIM, and scaf's "
+                         "default solver, auto, turns to Newton steps after a few iterations)")
     ap.add_argument("--scale", type=float, default=1.0,
                     help="reference only: scale the mesh (libigl's SCAF is not scale-invariant; E is)")
     args = ap.parse_args()
@@ -415,9 +425,10 @@ def main():
     meshes = args.meshes or [parse_mesh_arg(m) for m in DEFAULT_MESHES]
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
     print("## Side by side: scaf vs libigl SCAF, %s\n" % time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()))
-    print("`bench/side_by_side.py --rounds %d%s %s` (scaf %s, %s; reference %s; %d CPUs; "
+    print("`bench/side_by_side.py --rounds %d%s --scaf-args '%s' %s` (scaf %s, %s; reference %s; %d CPUs; "
           "OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1)\n"
-          % (args.rounds, " --cpu" if args.cpu else "", " ".join("%s:%d" % m for m in meshes), git_head(), os.path.relpath(args.scaf, REPO),
+          % (args.rounds, " --cpu" if args.cpu else "", args.scaf_args, " ".join("%s:%d" % m for m in meshes),
+             git_head(), os.path.relpath(args.scaf, REPO),
              args.reference, os.cpu_count() or 0))
     results = []
     tmp = tempfile.mkdtemp(prefix="side_by_side.")

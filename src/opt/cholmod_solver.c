@@ -8,7 +8,10 @@
  * With a given permutation the symbolic analysis runs CHOLMOD's own steps
  * (etree, column counts, weighted postorder, supernodes) on matrices built
  * here with three passes instead of cholmod_analyze_p's four transposes;
- * the factor it produces is the same (see analyze_given_fast).
+ * the factor it produces is the same (opt/given_symbolic). With unknowns
+ * in vertex blocks the analysis runs on the vertex graph and is expanded
+ * (opt/block_symbolic); a declared fixed leading part keeps its analysis
+ * across patterns (opt/split_symbolic).
  *
  * OpenMP: the Debian CHOLMOD runs small loops of its supernodal
  * factorization (zeroing and scattering each supernode) in OpenMP regions
@@ -28,7 +31,10 @@
  */
 #include "opt/cholmod_solver.h"
 
+#include "opt/block_symbolic.h"
 #include "opt/cholmod_view.h"
+#include "opt/given_symbolic.h"
+#include "opt/split_symbolic.h"
 
 #include <assert.h>
 #include <stdatomic.h>
@@ -63,9 +69,11 @@ struct opt_chol {
     opt_ordering ordering;
     int n, nnz; /* analyzed pattern */
     int *colptr, *rowidx;
-    int factored;             /* L holds a valid numerical factor */
-    cholmod_dense *X, *Y, *E; /* cholmod_solve2's result and workspaces, kept */
-    int block;                /* unknowns per vertex for compressed ordering */
+    int factored;              /* L holds a valid numerical factor */
+    cholmod_dense *X, *Y, *E;  /* cholmod_solve2's result and workspaces, kept */
+    int block;                 /* unknowns per vertex for compressed ordering */
+    int nfixed;                /* leading unknowns of a fixed pattern and order */
+    opt_split_symbolic *split; /* their analysis, kept (opt/split_symbolic) */
     opt_chol_stats st;
 };
 
@@ -105,6 +113,8 @@ opt_chol *opt_chol_create(opt_ordering ordering, scaf_error *err)
 
 void opt_chol_set_block(opt_chol *c, int block) { c->block = block > 1 ? block : 1; }
 
+void opt_chol_set_fixed_part(opt_chol *c, int nfixed) { c->nfixed = nfixed > 0 ? nfixed : 0; }
+
 void opt_chol_set_relax(opt_chol *c, int scale)
 {
     static const size_t base[3] = {4, 16, 48}; /* CHOLMOD's defaults */
@@ -112,35 +122,25 @@ void opt_chol_set_relax(opt_chol *c, int scale)
     for (int k = 0; k < 3; k++) c->cm.nrelax[k] = base[k] * (size_t)scale;
 }
 
-/* Fill-reducing permutation of A computed on its vertex graph: vertex J's
- * neighbours are the row groups of its last scalar column (which holds
- * every row of the block column for the interleaved layout). perm: n. */
+/* Fill-reducing permutation of the vertex graph G (nb vertices): pv. */
+static int graph_ordering(opt_chol *c, int nb, int *cp, int *ri, int *pv)
+{
+    cholmod_sparse G = opt_cholmod_pattern_view(nb, cp, ri, 1);
+    return c->ordering == OPT_ORDER_METIS ? cholmod_metis(&G, NULL, 0, 1, pv, &c->cm)
+                                          : cholmod_amd(&G, NULL, 0, pv, &c->cm);
+}
+
+/* Fill-reducing permutation of A computed on its vertex graph
+ * (opt/block_symbolic) and expanded. perm: n. */
 static int block_ordering(opt_chol *c, const opt_csc *A, int *perm)
 {
     int b = c->block, nb = A->n / b;
-    int *cp = malloc(((size_t)nb + 1) * sizeof *cp);
-    int *ri = malloc(((size_t)A->nnz / b + (size_t)nb + 1) * sizeof *ri);
+    int *cp = NULL, *ri = NULL;
     int *pv = malloc(((size_t)nb + 1) * sizeof *pv);
-    int ok = cp && ri && pv;
-    if (ok) {
-        int out = 0;
-        for (int J = 0; J < nb; J++) {
-            cp[J] = out;
-            int col = J * b + b - 1, prev = -1;
-            for (int k = A->colptr[col]; k < A->colptr[col + 1]; k++) {
-                int I = A->rowidx[k] / b;
-                if (I != prev) ri[out++] = I;
-                prev = I;
-            }
-        }
-        cp[nb] = out;
-        cholmod_sparse G = opt_cholmod_pattern_view(nb, cp, ri, 1);
-        ok = c->ordering == OPT_ORDER_METIS ? cholmod_metis(&G, NULL, 0, 1, pv, &c->cm)
-                                            : cholmod_amd(&G, NULL, 0, pv, &c->cm);
-        if (ok)
-            for (int k = 0; k < nb; k++)
-                for (int a = 0; a < b; a++) perm[k * b + a] = pv[k] * b + a;
-    }
+    int ok = pv && opt_block_graph(A, b, &cp, &ri) && graph_ordering(c, nb, cp, ri, pv);
+    if (ok)
+        for (int k = 0; k < nb; k++)
+            for (int a = 0; a < b; a++) perm[k * b + a] = pv[k] * b + a;
     free(cp);
     free(ri);
     free(pv);
@@ -151,6 +151,7 @@ void opt_chol_destroy(opt_chol *c)
 {
     if (!c) return;
     if (c->L) cholmod_free_factor(&c->L, &c->cm);
+    opt_split_destroy(c->split);
     cholmod_free_dense(&c->X, &c->cm);
     cholmod_free_dense(&c->Y, &c->cm);
     cholmod_free_dense(&c->E, &c->cm);
@@ -192,114 +193,54 @@ static int same_pattern(const opt_chol *c, const opt_csc *A)
 
 int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A) { return same_pattern(c, A); }
 
-/* The symbolic analysis of A with the given permutation, as
- * cholmod_analyze_p does it for a supernodal factor (etree, column counts,
- * weighted postorder, supernodes) but with two fewer passes over the
- * matrix: CHOLMOD forms triu(A(p,p)) by two transposes, then, after the
- * postorder, forms it again from A by two more. Here triu(A(p,p)) is built
- * in one pass (columns unsorted: the etree and the supernodal analysis
- * accept that), its transpose (sorted, as cholmod_rowcolcounts wants) by
- * one CHOLMOD transpose, and the postordered matrix by relabelling the
- * first one. Every CHOLMOD routine sees the same patterns as inside
- * cholmod_analyze_p, so the factor (Perm, ColCount, supernodes, row
- * patterns) is the same. Returns NULL with cm->status set when out of
- * memory, or with status OK when perm is not a permutation (the caller
- * then lets CHOLMOD handle and report it). */
-static cholmod_factor *analyze_given_fast(opt_chol *c, const opt_csc *A, const int *perm)
+/* The symbolic factor from the vertex graph (opt/block_symbolic), for
+ * unknowns in blocks of c->block, with the vertex order behind perm or,
+ * without perm, the solver's ordering of the vertex graph. The relaxation
+ * thresholds count vertex columns there, hence divided by the block size.
+ * When the fixed part (opt_chol_set_fixed_part) comes first in perm and
+ * the rest in natural order, the fixed part's analysis is kept and reused
+ * (opt/split_symbolic; *by_split set). NULL with status OK when perm
+ * splits a block (the caller then analyses the scalar pattern), NULL with
+ * an error status on failure. */
+static cholmod_factor *analyze_blocks(opt_chol *c, const opt_csc *A, const int *perm, int *by_split)
 {
     cholmod_common *cm = &c->cm;
-    size_t n = (size_t)A->n, nz = (size_t)A->nnz;
-    int *iw = malloc((8 * n + 2) * sizeof *iw);
-    int *si = malloc((nz ? nz : 1) * sizeof *si);
-    int *si2 = malloc((nz ? nz : 1) * sizeof *si2);
-    cholmod_sparse *F = NULL;
-    cholmod_factor *L = NULL;
-    if (!iw || !si || !si2) {
+    int b = c->block, nb = A->n / b;
+    int *cp = NULL, *ri = NULL, *pv = malloc(((size_t)nb + 1) * sizeof *pv);
+    cholmod_factor *Lv = NULL, *L = NULL;
+    if (!pv || !opt_block_graph(A, b, &cp, &ri)) {
         cm->status = CHOLMOD_OUT_OF_MEMORY;
         goto done;
     }
-    int *pinv = iw, *parent = iw + n, *post = iw + 2 * n, *colcount = iw + 3 * n;
-    int *first = iw + 4 * n, *level = iw + 5 * n, *sp = iw + 6 * n, *sp2 = iw + 7 * n + 1;
-    for (size_t k = 0; k < n; k++) pinv[k] = -1;
-    for (size_t k = 0; k < n; k++) {
-        int v = perm[k];
-        if (v < 0 || (size_t)v >= n || pinv[v] >= 0) goto done; /* not a permutation */
-        pinv[v] = (int)k;
-    }
-    /* S = triu(A(p,p)): entry (r, col) of triu(A) goes to column
-     * max(pinv r, pinv col), row min (lower entries are ignored, as CHOLMOD
-     * does for an upper-stored matrix). */
-    memset(sp, 0, (n + 1) * sizeof *sp);
-    for (size_t col = 0; col < n; col++) {
-        int pc = pinv[col];
-        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
-            int r = A->rowidx[q];
-            if ((size_t)r > col) continue;
-            int pr = pinv[r];
-            sp[(pr > pc ? pr : pc) + 1]++;
-        }
-    }
-    for (size_t k = 0; k < n; k++) sp[k + 1] += sp[k];
-    memcpy(first, sp, n * sizeof *first); /* fill cursors */
-    for (size_t col = 0; col < n; col++) {
-        int pc = pinv[col];
-        for (int q = A->colptr[col]; q < A->colptr[col + 1]; q++) {
-            int r = A->rowidx[q];
-            if ((size_t)r > col) continue;
-            int pr = pinv[r];
-            if (pr > pc) si[first[pr]++] = pc;
-            else si[first[pc]++] = pr;
-        }
-    }
-    cholmod_sparse S = opt_cholmod_pattern_view((int)n, sp, si, 0);
-    F = cholmod_transpose(&S, 0, cm); /* tril(A(p,p)) by columns, sorted */
-    if (!F) goto done;
-    if (!cholmod_etree(&S, parent, cm)) goto done;
-    if (cholmod_postorder(parent, n, NULL, post, cm) != (long)n) goto done;
-    if (!cholmod_rowcolcounts(F, NULL, 0, parent, post, NULL, colcount, first, level, cm))
+    if (perm ? !opt_block_perm_compress(A->n, b, perm, pv) : !graph_ordering(c, nb, cp, ri, pv))
         goto done;
-    double fl = cm->fl, lnz = cm->lnz;
-    L = cholmod_allocate_factor(n, cm);
-    if (!L) goto done;
-    int *lperm = L->Perm, *lcount = L->ColCount;
-    cholmod_sparse *T = &S;
-    cholmod_sparse S2 = S;
-    if (cm->postorder && cholmod_postorder(parent, n, colcount, post, cm) == (long)n) {
-        /* combine the permutation with the weighted postorder (as CHOLMOD
-         * does) and relabel S accordingly: a postorder keeps every entry
-         * upper (its column is an etree ancestor of its row). */
-        int *inv = first, *lparent = level;
-        for (size_t k = 0; k < n; k++) inv[post[k]] = (int)k;
-        sp2[0] = 0;
-        for (size_t k = 0; k < n; k++) {
-            int o = post[k];
-            lperm[k] = perm[o];
-            lcount[k] = colcount[o];
-            lparent[k] = parent[o] < 0 ? -1 : inv[parent[o]];
-            int out = sp2[k];
-            for (int q = sp[o]; q < sp[o + 1]; q++) si2[out++] = inv[si[q]];
-            sp2[k + 1] = out;
-        }
-        S2.p = sp2;
-        S2.i = si2;
-        T = &S2;
-        parent = lparent;
-    } else {
-        memcpy(lperm, perm, n * sizeof *lperm);
-        memcpy(lcount, colcount, n * sizeof *lcount);
+    size_t relax[3];
+    for (int k = 0; k < 3; k++) {
+        relax[k] = cm->nrelax[k];
+        cm->nrelax[k] = (relax[k] + (size_t)b - 1) / (size_t)b;
     }
-    L->ordering = CHOLMOD_GIVEN;
-    if (!cholmod_super_symbolic(T, NULL, parent, L, cm)) {
-        cholmod_free_factor(&L, cm);
-        goto done;
+    /* a fixed leading part in its own order, the rest in natural order:
+     * the fixed part's analysis is kept (opt/split_symbolic) */
+    int nfv = c->nfixed / b, split = perm && c->nfixed % b == 0 && nfv > 0 && nfv < nb;
+    for (int k = nfv; k < nb && split; k++) split = pv[k] == k;
+    if (split && !opt_split_matches(c->split, nfv, cp, ri, pv)) {
+        opt_split_destroy(c->split);
+        c->split = opt_split_create(cm, nfv, cp, ri, pv);
+        split = c->split != NULL;
     }
-    cm->fl = fl;
-    cm->lnz = lnz;
+    if (split) {
+        Lv = opt_split_factor(c->split, cm, nb, cp, ri);
+        *by_split = Lv != NULL;
+    } else if (cm->status == CHOLMOD_OK) {
+        Lv = opt_given_symbolic(cm, nb, cp, ri, pv);
+    }
+    for (int k = 0; k < 3; k++) cm->nrelax[k] = relax[k];
+    if (Lv) L = opt_block_expand_symbolic(Lv, b, cm);
 done:
-    if (F) cholmod_free_sparse(&F, cm);
-    free(iw);
-    free(si);
-    free(si2);
+    if (Lv) cholmod_free_factor(&Lv, cm);
+    free(cp);
+    free(ri);
+    free(pv);
     return L;
 }
 
@@ -313,24 +254,22 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     c->factored = 0;
     c->n = c->nnz = 0;
     cholmod_sparse S = opt_csc_cholmod_view(A);
-    int *own = NULL;
-    if (!perm && c->block > 1 && c->ordering != OPT_ORDER_CHOLMOD_DEFAULT && A->n % c->block == 0) {
-        own = malloc((size_t)A->n * sizeof *own);
-        if (!own) return err_nomem(err, "CHOLMOD ordering");
-        if (!block_ordering(c, A, own)) {
-            free(own);
-            return fail(c, "block ordering", err);
-        }
-        perm = own;
-    }
     int lv = omp_serial_begin();
-    if (perm) {
+    c->cm.status = CHOLMOD_OK;
+    /* the solver is supernodal (opt_chol_create) */
+    int by_split = 0;
+    if (c->block > 1 && A->n % c->block == 0 && (perm || c->ordering != OPT_ORDER_CHOLMOD_DEFAULT))
+        c->L = analyze_blocks(c, A, perm, &by_split);
+    int by_blocks = c->L != NULL;
+    if (c->L || c->cm.status != CHOLMOD_OK) {
+        /* done by blocks, or failed */
+    } else if (perm) {
         /* A given permutation: use it as the only method. */
         int save_n = c->cm.nmethods, save_ord = c->cm.method[0].ordering;
         c->cm.nmethods = 1;
         c->cm.method[0].ordering = CHOLMOD_GIVEN;
         c->cm.status = CHOLMOD_OK;
-        c->L = c->cm.supernodal == CHOLMOD_SUPERNODAL ? analyze_given_fast(c, A, perm) : NULL;
+        c->L = opt_given_symbolic(&c->cm, A->n, A->colptr, A->rowidx, perm);
         if (!c->L && c->cm.status == CHOLMOD_OK)
             c->L = cholmod_analyze_p(&S, (int *)perm, NULL, 0, &c->cm);
         c->cm.nmethods = save_n;
@@ -339,7 +278,6 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
         c->L = cholmod_analyze(&S, &c->cm);
     }
     omp_serial_end(lv);
-    free(own);
     if (!c->L) return fail(c, "analysis", err);
     int *cp = realloc(c->colptr, ((size_t)A->n + 1) * sizeof *cp);
     if (!cp) return err_nomem(err, "CHOLMOD pattern copy");
@@ -352,6 +290,8 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     c->n = A->n;
     c->nnz = A->nnz;
     c->st.analyses++;
+    c->st.block_analyses += by_blocks;
+    c->st.split_analyses += by_split;
     c->st.t_analyze += timer_now() - t0;
     return SCAF_OK;
 }

@@ -28,6 +28,10 @@ typedef enum opt_ordering {
 
 typedef struct opt_chol_stats {
     int analyses;       /* symbolic analyses done */
+    int block_analyses; /* of which done on the vertex graph and expanded
+                              (opt_chol_set_block, opt/block_symbolic) */
+    int split_analyses; /* of which reused the fixed part's analysis
+                              (opt_chol_set_fixed_part, opt/split_symbolic) */
     int factorizations; /* numerical factorizations done */
     int not_posdef;     /* factorizations that found the matrix not
                               positive definite (the caller's recovery,
@@ -52,8 +56,23 @@ void opt_chol_destroy(opt_chol *c);
  * the AMD / METIS ordering on the compressed vertex graph (block^2 times
  * fewer edges) and expand it, which is cheaper and orders each vertex's
  * coordinates together. block = 1 (the default) orders scalars. Ignored
- * for OPT_ORDER_CHOLMOD_DEFAULT and when n is not a multiple of block. */
+ * for OPT_ORDER_CHOLMOD_DEFAULT and when n is not a multiple of block.
+ * The symbolic analysis (supernodal) is then done on the vertex graph too
+ * and expanded (opt/block_symbolic: b^2 times fewer entries to analyse),
+ * whenever the permutation keeps each vertex's unknowns together; a
+ * given permutation that splits them gets the scalar analysis. */
 void opt_chol_set_block(opt_chol *c, int block);
+
+/* Declare that the first nfixed unknowns (a multiple of the block size)
+ * keep their pattern -- the leading nfixed x nfixed block of every system
+ * -- and, in given permutations, their order, while the other unknowns
+ * and their couplings change from one analysis to the next (SCAF: mesh,
+ * then scaffold). An analysis with a given permutation that orders the
+ * fixed unknowns first (by blocks) and the rest in natural order then
+ * reuses the fixed part's analysis (opt/split_symbolic) instead of
+ * analysing the whole pattern; the rest is ordered after the fixed part
+ * (natural order, postordered). 0 (the default) turns it off. */
+void opt_chol_set_fixed_part(opt_chol *c, int nfixed);
 
 /* Supernode amalgamation: CHOLMOD's relaxation thresholds (nrelax: merge
  * supernodes below 4 / 16 / 48 columns, within the zero-fraction limits

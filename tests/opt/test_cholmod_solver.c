@@ -59,6 +59,19 @@ static void grid_laplacian(opt_csc *A, int m, double shift, int extra)
     free(V);
 }
 
+/* p = a uniformly random permutation of 0..n-1 (Fisher-Yates). */
+static void random_permutation(int *p, int n, rng *r)
+{
+    for (int i = 0; i < n; i++) p[i] = i;
+    for (int i = n - 1; i > 0; i--) {
+        int j = (int)rng_uniform(r, 0, i + 1);
+        if (j > i) j = i;
+        int t = p[i];
+        p[i] = p[j];
+        p[j] = t;
+    }
+}
+
 static double rel_residual(const opt_csc *A, const double *x, const double *b)
 {
     double *y = malloc(A->n * sizeof *y), num = 0, den = 0;
@@ -155,14 +168,7 @@ static void given_random_permutation(void **state)
     rng r = {7};
     int *perm = malloc(n * sizeof *perm), *seen = calloc(n, sizeof *seen);
     double *b = malloc(n * sizeof *b), *x = malloc(n * sizeof *x);
-    for (int i = 0; i < n; i++) perm[i] = i;
-    for (int i = n - 1; i > 0; i--) {
-        int j = (int)rng_uniform(&r, 0, i + 1);
-        if (j > i) j = i;
-        int t = perm[i];
-        perm[i] = perm[j];
-        perm[j] = t;
-    }
+    random_permutation(perm, n, &r);
     for (int i = 0; i < n; i++) b[i] = rng_uniform(&r, -1, 1);
     scaf_error e;
     for (int relax = 1; relax <= 4; relax += 3) {
@@ -249,14 +255,7 @@ static void same_bits_as_plain_cholmod(void **state)
     int *perm = malloc(n * sizeof *perm);
     double *b = malloc(3 * n * sizeof *b), *x = malloc(3 * n * sizeof *x),
            *y = malloc(3 * n * sizeof *y);
-    for (int i = 0; i < n; i++) perm[i] = i;
-    for (int i = n - 1; i > 0; i--) {
-        int j = (int)rng_uniform(&r, 0, i + 1);
-        if (j > i) j = i;
-        int t = perm[i];
-        perm[i] = perm[j];
-        perm[j] = t;
-    }
+    random_permutation(perm, n, &r);
     for (int i = 0; i < 3 * n; i++) b[i] = rng_uniform(&r, -1, 1);
     scaf_error e;
     opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
@@ -326,6 +325,209 @@ static void block_ordering_solves(void **state)
     free(x);
     opt_csc_free(&A);
     opt_csc_free(&G);
+}
+
+/* Two coupled grid Laplacians in interleaved 2-blocks: unknown 2v is
+ * vertex v's x, 2v+1 its y. The x part has every grid edge, the y part only
+ * every other vertical one (so the last column of a group lacks row groups
+ * the first has), and the two couple on the diagonal block (0.5). */
+static void uneven_blocks(opt_csc *A, int m)
+{
+    opt_csc G;
+    grid_laplacian(&G, m, 1.0, 0); /* diagonal 5: the 0.5 coupling keeps it definite */
+    int cap = 3 * G.nnz, nt = 0;
+    int *I = malloc(cap * sizeof *I), *J = malloc(cap * sizeof *J);
+    double *V = malloc(cap * sizeof *V);
+    for (int c = 0; c < G.n; c++)
+        for (int k = G.colptr[c]; k < G.colptr[c + 1]; k++) {
+            int r = G.rowidx[k];
+            I[nt] = 2 * r;
+            J[nt] = 2 * c;
+            V[nt++] = G.val[k];
+            if (r == c) {
+                I[nt] = 2 * r;
+                J[nt] = 2 * c + 1;
+                V[nt++] = 0.5;
+            }
+            if (r == c || c - r != m || (c / m) % 2 == 0) {
+                I[nt] = 2 * r + 1;
+                J[nt] = 2 * c + 1;
+                V[nt++] = G.val[k];
+            }
+        }
+    assert_int_equal(opt_csc_from_triplets(A, 2 * G.n, nt, I, J, V, NULL), SCAF_OK);
+    free(I);
+    free(J);
+    free(V);
+    opt_csc_free(&G);
+}
+
+/* With blocks declared, the analysis runs on the vertex graph and is
+ * expanded (opt/block_symbolic) whenever the permutation keeps blocks
+ * together: computed, given by blocks, and on a pattern whose blocks are
+ * not full; the solutions agree with plain CHOLMOD's to rounding. A
+ * permutation that splits a block gets the scalar analysis. */
+static void block_symbolic_analysis(void **state)
+{
+    (void)state;
+    opt_csc A;
+    uneven_blocks(&A, 24);
+    int n = A.n, nb = n / 2;
+    rng r = {53};
+    int *vperm = malloc(nb * sizeof *vperm), *perm = malloc(n * sizeof *perm);
+    double *b = malloc(n * sizeof *b), *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
+    for (int i = 0; i < n; i++) b[i] = rng_uniform(&r, -1, 1);
+    random_permutation(vperm, nb, &r);
+    scaf_error e;
+    for (int variant = 0; variant < 3; variant++) {
+        /* 0: the solver's own ordering, 1: given by blocks, 2: split */
+        for (int k = 0; k < nb; k++) {
+            perm[2 * k] = 2 * vperm[k] + (variant == 2 && k % 7 == 3);
+            perm[2 * k + 1] = 2 * vperm[k] + !(variant == 2 && k % 7 == 3);
+        }
+        opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+        assert_non_null(c);
+        opt_chol_set_block(c, 2);
+        opt_chol_set_relax(c, 4);
+        assert_int_equal(opt_chol_analyze_given(c, &A, variant ? perm : NULL, &e), SCAF_OK);
+        assert_int_equal(opt_chol_get_stats(c).block_analyses, variant == 2 ? 0 : 1);
+        for (int round = 0; round < 2; round++) {
+            assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+            assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+            assert_true(rel_residual(&A, x, b) < 1e-12);
+            plain_cholmod_solve(&A, opt_chol_permutation(c), 1, b, y);
+            double num = 0, den = 0;
+            for (int i = 0; i < n; i++) {
+                num += (x[i] - y[i]) * (x[i] - y[i]);
+                den += y[i] * y[i];
+            }
+            assert_true(sqrt(num / den) < 1e-12);
+            for (int q = 0; q < A.nnz; q++) A.val[q] *= 1.0 + 0.01 * rng_uniform(&r, 0, 1);
+        }
+        assert_int_equal(opt_chol_get_stats(c).analyses, 1);
+        opt_chol_destroy(c);
+    }
+    opt_csc_free(&A);
+    free(vperm);
+    free(perm);
+    free(b);
+    free(x);
+    free(y);
+}
+
+/* kron(Laplacian of a vertex graph + I, M) with M 2x2 SPD: the edges
+ * (ea[e], eb[e]) between nvtx vertices, unknowns interleaved by vertex. */
+static void block_laplacian(opt_csc *A, int nvtx, int ne, const int *ea, const int *eb)
+{
+    const double M[4] = {2, 0.5, 0.5, 1};
+    int cap = 4 * (ne + nvtx), nt = 0;
+    int *I = malloc(cap * sizeof *I), *J = malloc(cap * sizeof *J);
+    double *V = malloc(cap * sizeof *V), *deg = calloc(nvtx, sizeof *deg);
+    for (int e = 0; e < ne; e++) {
+        deg[ea[e]] += 1;
+        deg[eb[e]] += 1;
+    }
+    for (int pass = 0; pass < 2; pass++)
+        for (int e = 0; e < (pass ? ne : nvtx); e++) {
+            int u = pass ? ea[e] : e, v = pass ? eb[e] : e;
+            double w = pass ? -1.0 : deg[e] + 1.0;
+            if (u > v) {
+                int t = u;
+                u = v;
+                v = t;
+            }
+            for (int a = 0; a < 2; a++)
+                for (int b = 0; b < 2; b++) {
+                    if (2 * u + a > 2 * v + b) continue; /* upper */
+                    I[nt] = 2 * u + a;
+                    J[nt] = 2 * v + b;
+                    V[nt++] = w * M[2 * a + b];
+                }
+        }
+    assert_int_equal(opt_csc_from_triplets(A, 2 * nvtx, nt, I, J, V, NULL), SCAF_OK);
+    free(I);
+    free(J);
+    free(V);
+    free(deg);
+}
+
+/* A fixed part (two separate grids: two roots) in a fixed order and a
+ * variable part whose size and couplings change every round: with the
+ * fixed part declared, every analysis reuses the fixed part's (the split
+ * counter), the solutions agree with plain CHOLMOD's on the same
+ * permutation to rounding; a permutation whose variable part is not in
+ * natural order gets the whole analysis. */
+static void split_symbolic_analysis(void **state)
+{
+    (void)state;
+    const int m = 14, nf = 2 * m * m;
+    rng r = {71};
+    int cap = 4 * nf + 400;
+    int *ea = malloc(cap * sizeof *ea), *eb = malloc(cap * sizeof *eb);
+    int *fperm = malloc(nf * sizeof *fperm);
+    random_permutation(fperm, nf, &r);
+    scaf_error e;
+    opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+    assert_non_null(c);
+    opt_chol_set_block(c, 2);
+    opt_chol_set_relax(c, 4);
+    opt_chol_set_fixed_part(c, 2 * nf);
+    for (int round = 0; round < 4; round++) {
+        int ne = 0, nw = 20 + 7 * round, nv = nf + nw;
+        for (int g = 0; g < 2; g++)
+            for (int y = 0; y < m; y++)
+                for (int x = 0; x < m; x++) {
+                    int v = g * m * m + y * m + x;
+                    if (x + 1 < m) ea[ne] = v, eb[ne++] = v + 1;
+                    if (y + 1 < m) ea[ne] = v, eb[ne++] = v + m;
+                }
+        for (int j = 0; j < nw; j++) {
+            int J = nf + j;
+            if (j % 5 != 4) /* a few variable vertices touch no fixed one */
+                for (int k = 0; k < 3; k++) {
+                    int f = (int)rng_uniform(&r, 0, nf);
+                    ea[ne] = f < nf ? f : nf - 1;
+                    eb[ne++] = J;
+                }
+            if (j > 0) ea[ne] = J - 1, eb[ne++] = J;
+        }
+        opt_csc A;
+        block_laplacian(&A, nv, ne, ea, eb);
+        int n = A.n, *perm = malloc(n * sizeof *perm);
+        double *b = malloc(n * sizeof *b), *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
+        for (int k = 0; k < nv; k++) {
+            int v = k < nf ? fperm[k] : (round == 3 ? nv - 1 - (k - nf) : k);
+            perm[2 * k] = 2 * v;
+            perm[2 * k + 1] = 2 * v + 1;
+        }
+        for (int i = 0; i < n; i++) b[i] = rng_uniform(&r, -1, 1);
+        opt_chol_stats s0 = opt_chol_get_stats(c);
+        assert_int_equal(opt_chol_analyze_given(c, &A, perm, &e), SCAF_OK);
+        opt_chol_stats s1 = opt_chol_get_stats(c);
+        assert_int_equal(s1.split_analyses - s0.split_analyses, round == 3 ? 0 : 1);
+        assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+        assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+        assert_true(rel_residual(&A, x, b) < 1e-12);
+        const int *lp = opt_chol_permutation(c);
+        if (round < 3) /* the fixed unknowns first */
+            for (int k = 0; k < 2 * nf; k++) assert_true(lp[k] < 2 * nf);
+        plain_cholmod_solve(&A, lp, 1, b, y);
+        double num = 0, den = 0;
+        for (int i = 0; i < n; i++) {
+            num += (x[i] - y[i]) * (x[i] - y[i]);
+            den += y[i] * y[i];
+        }
+        assert_true(sqrt(num / den) < 1e-12);
+        free(perm);
+        free(b);
+        free(x);
+        free(y);
+        opt_csc_free(&A);
+    }
+    opt_chol_destroy(c);
+    free(ea);
+    free(eb);
+    free(fperm);
 }
 
 /* libgomp, when loaded (through CHOLMOD): the solver must leave it as it
@@ -492,7 +694,8 @@ int main(void)
         cmocka_unit_test(given_random_permutation),  cmocka_unit_test(same_bits_as_plain_cholmod),
         cmocka_unit_test(block_ordering_solves),     cmocka_unit_test(relaxed_supernodes_solve),
         cmocka_unit_test(upper_sorted_layout),       cmocka_unit_test(indefinite_is_an_error),
-        cmocka_unit_test(concurrent_factorizations),
+        cmocka_unit_test(concurrent_factorizations), cmocka_unit_test(block_symbolic_analysis),
+        cmocka_unit_test(split_symbolic_analysis),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
