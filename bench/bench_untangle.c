@@ -5,8 +5,9 @@
  * turns), then the flow-back's CPU seconds per iteration, the final
  * distances and the exact check of the result.
  * usage: bench_untangle [FILE [ITERATIONS [newton|slim [ANCHOR]]]]
- * Environment: IMPROVE=0 no scaffold improvement pass; VERIFY=1 the exact
- * check after every iteration (not timed by the loop). */
+ * Environment: IMPROVE=0|1 the scaffold improvement pass off/on,
+ * IMPROVE_TRIES / IMPROVE_OPS (tet_improve's TET_OP_* mask) its options;
+ * VERIFY=1 the exact check after every iteration (not timed by the loop). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -58,6 +59,8 @@ int main(int argc, char **argv)
     if (argc > 3) o.deform.solver = strcmp(argv[3], "slim") ? SCAF_SOLVER_NEWTON : SCAF_SOLVER_SLIM;
     if (argc > 4) o.anchor_ratio = atof(argv[4]);
     if (getenv("IMPROVE")) o.deform.improve = atoi(getenv("IMPROVE"));
+    if (getenv("IMPROVE_TRIES")) o.deform.improve_opt.max_tries = atoll(getenv("IMPROVE_TRIES"));
+    if (getenv("IMPROVE_OPS")) o.deform.improve_opt.ops = (unsigned)atoi(getenv("IMPROVE_OPS"));
     if (getenv("VERIFY")) o.verify = atoi(getenv("VERIFY"));
     mesh m;
     mesh_read_info info;
