@@ -56,8 +56,9 @@ typedef struct untangle_options {
     int verify;          /* 1: exact self-intersection check after every iteration */
     double anchor_ratio; /* weight of the anchor (see above), default UNTANGLE_ANCHOR_DEFAULT */
     volume_deform_options deform; /* the flow back's box, weights, solver: app/volume_deform's
-                                     defaults but SLIM and no scaffold improvement pass
-                                     (faster and nearer here: bench/RESULTS-untangle.md) */
+                                     defaults but SLIM, and the scaffold improvement
+                                     pass without splits (faster and nearer here:
+                                     bench/RESULTS-untangle.md) */
 } untangle_options;
 
 untangle_options untangle_options_default(void);
