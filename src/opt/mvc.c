@@ -108,9 +108,11 @@ scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F, const u
     int *dof = malloc((nv > 0 ? (size_t)nv : 1) * sizeof *dof);
     double *W = malloc((nf > 0 ? 6 * (size_t)nf : 1) * sizeof *W);
     size_t cap = 9 * (size_t)nf + 1;
-    int *Ti = malloc(cap * sizeof *Ti), *Tj = malloc(cap * sizeof *Tj);
+    /* 64-bit indices (umfpack_dl_*): the int version runs out of its
+     * int-indexed workspace on millions of unknowns (7.1M faces) */
+    SuiteSparse_long *Ti = malloc(cap * sizeof *Ti), *Tj = malloc(cap * sizeof *Tj);
     double *Tx = malloc(cap * sizeof *Tx);
-    int *Ap = NULL, *Ai = NULL;
+    SuiteSparse_long *Ap = NULL, *Ai = NULL;
     double *Ax = NULL, *b = NULL, *x = NULL;
     void *sym = NULL, *num = NULL;
     if (!dof || !W || !Ti || !Tj || !Tx) {
@@ -157,7 +159,7 @@ scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F, const u
                 b[n + di] += wl * UV[2 * (size_t)l + 1];
             }
         }
-    int rc = umfpack_di_triplet_to_col(n, n, nt, Ti, Tj, Tx, Ap, Ai, Ax, NULL);
+    int rc = umfpack_dl_triplet_to_col(n, n, nt, Ti, Tj, Tx, Ap, Ai, Ax, NULL);
     if (rc == UMFPACK_ERROR_out_of_memory) {
         st = err_nomem(err, "mean-value system");
         goto done;
@@ -168,10 +170,10 @@ scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F, const u
         goto done;
     }
     double info[UMFPACK_INFO];
-    rc = umfpack_di_symbolic(n, n, Ap, Ai, Ax, &sym, NULL, info);
-    if (rc == UMFPACK_OK) rc = umfpack_di_numeric(Ap, Ai, Ax, sym, &num, NULL, info);
+    rc = umfpack_dl_symbolic(n, n, Ap, Ai, Ax, &sym, NULL, info);
+    if (rc == UMFPACK_OK) rc = umfpack_dl_numeric(Ap, Ai, Ax, sym, &num, NULL, info);
     for (int c = 0; c < 2 && rc == UMFPACK_OK; c++)
-        rc = umfpack_di_solve(UMFPACK_A, Ap, Ai, Ax, x + (size_t)c * n, b + (size_t)c * n, num,
+        rc = umfpack_dl_solve(UMFPACK_A, Ap, Ai, Ax, x + (size_t)c * n, b + (size_t)c * n, num,
                               NULL, info);
     if (rc == UMFPACK_ERROR_out_of_memory) {
         st = err_nomem(err, "mean-value factorization");
@@ -198,8 +200,8 @@ scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F, const u
             UV[2 * (size_t)v + 1] = u1;
         }
 done:
-    if (num) umfpack_di_free_numeric(&num);
-    if (sym) umfpack_di_free_symbolic(&sym);
+    if (num) umfpack_dl_free_numeric(&num);
+    if (sym) umfpack_dl_free_symbolic(&sym);
     free(dof);
     free(W);
     free(Ti);

@@ -217,7 +217,7 @@ static void atlas_reasons(void **state)
     /* compaction with room for distortion: the layout stops shrinking */
     o = small_atlas();
     o.distortion_tolerance = 10.0;
-    assert_int_equal(atlas_run_on("cubesphere", 4, &o, &s, r), SCAF_OK);
+    assert_int_equal(atlas_run_on("cubesphere", 6, &o, &s, r), SCAF_OK);
     assert_true(s.compact < o.compact_iterations);
     assert_int_equal(r[1], SCAF_STOP_PACKING_STALLED);
 
