@@ -42,8 +42,8 @@ static void sv_second_derivatives(opt_energy e, int d, const double *s, double *
                 switch (e) {
                 case OPT_ENERGY_SYMMETRIC_DIRICHLET: *bij = 0.0; break;
                 case OPT_ENERGY_ARAP:
-                    *bij = arap_barrier_curvature(D) * other[i] * other[j] +
-                        arap_barrier_slope(D) * o;
+                    *bij =
+                        arap_barrier_curvature(D) * other[i] * other[j] + arap_barrier_slope(D) * o;
                     break;
                 case OPT_ENERGY_CONFORMAL:
                     *bij = c * (-(4.0 / d) * (s[i] / s[j] + s[j] / s[i]) + 4.0 * N / (d * d * p));
