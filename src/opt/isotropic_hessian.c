@@ -37,19 +37,12 @@ static void sv_second_derivatives(opt_energy e, int d, const double *s, double *
             /* det / (s_i s_j): 1 in 2D, the third singular value in 3D */
             double o = d == 2 ? 1.0 : s[3 - i - j];
             double p = s[i] * s[j];
-            for (int m = 0; m < 2; m++) { /* B is symmetric: (i, j) and (j, i) */
-                double *bij = m == 0 ? &B[i * d + j] : &B[j * d + i];
-                switch (e) {
-                case OPT_ENERGY_SYMMETRIC_DIRICHLET: *bij = 0.0; break;
-                case OPT_ENERGY_ARAP:
-                    *bij =
-                        arap_barrier_curvature(D) * other[i] * other[j] + arap_barrier_slope(D) * o;
-                    break;
-                case OPT_ENERGY_CONFORMAL:
-                    *bij = c * (-(4.0 / d) * (s[i] / s[j] + s[j] / s[i]) + 4.0 * N / (d * d * p));
-                    break;
-                }
-            }
+            double bij = 0.0; /* symmetric Dirichlet: uncoupled */
+            if (e == OPT_ENERGY_ARAP)
+                bij = arap_barrier_curvature(D) * other[i] * other[j] + arap_barrier_slope(D) * o;
+            else if (e == OPT_ENERGY_CONFORMAL)
+                bij = c * (-(4.0 / d) * (s[i] / s[j] + s[j] / s[i]) + 4.0 * N / (d * d * p));
+            B[i * d + j] = B[j * d + i] = bij;
             switch (e) {
             case OPT_ENERGY_SYMMETRIC_DIRICHLET: {
                 double p3 = p * p * p, q = s[i] * s[i] + s[j] * s[j];
