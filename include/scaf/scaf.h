@@ -87,12 +87,16 @@ typedef enum scaf_energy {
     SCAF_ENERGY_ARAP,                    /* ||J - R||^2 + b(det J): ARAP alone is
                                             no barrier (triangles it pushes
                                             towards inversion were crushed to
-                                            det J ~ 1e-8); b = (0.1/det - 1)^3
+                                            det J ~ 1e-8); b = -ln(det / 0.1)^3
                                             below det J = 0.1, 0 above, keeps
-                                            them away from collapse. SLIM only */
+                                            them away from collapse. Newton
+                                            as for the default; where the
+                                            boundary presses the scaffold it
+                                            may not converge (camel_b): the
+                                            stop reason and criterion say so */
     SCAF_ENERGY_CONFORMAL                /* MIPS: ||J||^2 / (2 det J), a barrier;
                                             scale-free, so areas may vary
-                                            widely; SLIM only */
+                                            widely; Newton as for the default */
 } scaf_energy;
 
 /* Initial embedding of each chart. */
@@ -149,7 +153,9 @@ typedef struct scaf_options {
                                 included in the count (5) */
     double lambda_ratio;     /* scaffold weight lambda = lambda_ratio *
                                 E_M / |S| (E_M: area-weighted mesh energy,
-                                |S|: scaffold triangle count), re-evaluated
+                                plus the 3D area for ARAP, which is about 0
+                                at its minimum; |S|: scaffold triangle
+                                count), re-evaluated
                                 each iteration; Newton iterations use a
                                 tenth of it (the minimum does not depend on
                                 it, convergence does) (0.01, the paper's

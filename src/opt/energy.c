@@ -12,6 +12,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "opt/arap_barrier.h"
 #include "opt/small_svd.h"
 
 const char *opt_energy_name(opt_energy e)
@@ -71,34 +72,6 @@ static double frob2(int d, const double *A)
     double s = 0;
     for (int k = 0; k < d * d; k++) s += A[k] * A[k];
     return s;
-}
-
-/* ARAP's barrier b(det J) (see energy.h): u^3 with u = xh / x - 1 below
- * xh = OPT_ARAP_BARRIER_DET, 0 above (twice continuously differentiable
- * there, so ARAP's minimum is unchanged where no simplex is squeezed that
- * far), +INFINITY at x <= 0. */
-static inline double arap_barrier(double x)
-{
-    const double xh = OPT_ARAP_BARRIER_DET;
-    if (!(x > 0)) return INFINITY;
-    double u = xh / x - 1.0;
-    return x < xh ? u * u * u : 0.0;
-}
-
-/* Its derivative b'(x) (<= 0). */
-static inline double arap_barrier_slope(double x)
-{
-    const double xh = OPT_ARAP_BARRIER_DET;
-    double u = xh / x - 1.0;
-    return x < xh ? -3.0 * u * u * xh / (x * x) : 0.0;
-}
-
-/* Its second derivative b''(x) (>= 0). */
-static inline double arap_barrier_curvature(double x)
-{
-    const double xh = OPT_ARAP_BARRIER_DET;
-    double u = xh / x - 1.0;
-    return x < xh ? 6.0 * u * xh * xh / (x * x * x * x) + 6.0 * u * u * xh / (x * x * x) : 0.0;
 }
 
 /* SLIM weight and target of ARAP with its barrier along signed singular

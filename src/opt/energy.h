@@ -12,8 +12,8 @@
  * flip-free bound, so the simplex loses most of its area every iteration
  * and the steps of the whole map shrink with it: camelhead, hand_lowres
  * ended with smallest singular values of 1e-8 after 7-10 iterations). b
- * is the barrier that prevents it: b(x) = -(x - xh)^2 ln(x / xh) for
- * x < xh = OPT_ARAP_BARRIER_DET, 0 above (C2 at xh), so the energy is
+ * is the barrier that prevents it: b(x) = -ln(x / xh)^3 for
+ * x < xh = OPT_ARAP_BARRIER_DET, 0 above (C2 at xh; opt/arap_barrier), so the energy is
  * ARAP itself wherever no simplex is squeezed below a tenth of its rest
  * area, and infinite at zero area. Each has its derivative dE/dJ and
  * its SLIM proxy (Rabinovich et al. 2017): a symmetric weight matrix W and

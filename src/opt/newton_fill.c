@@ -1,7 +1,7 @@
 /* opt/newton_fill: one term's share of the projected Newton system.
  *
  * Per simplex: corner gradient and (projected) corner Hessian
- * (opt_sd_simplex_hessian), the gradient's free entries subtracted from
+ * (opt_isotropic_simplex_hessian), the gradient's free entries subtracted from
  * rhs, the Hessian scattered into the cached pattern
  * (opt_proxy_block_add_local).
  */
@@ -9,22 +9,19 @@
 
 #include <string.h>
 
-#include "opt/sd_hessian.h"
+#include "opt/isotropic_hessian.h"
 
 scaf_status opt_newton_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,
                                   const double *X, int project, double *rhs,
                                   opt_newton_fill_stats *st, scaf_error *err)
 {
     const opt_simplices *S = t->s;
-    if (t->energy != OPT_ENERGY_SYMMETRIC_DIRICHLET)
-        return err_set(err, SCAF_ERR_USAGE, "Newton: energy %s has no Hessian here (only %s)",
-                       opt_energy_name(t->energy), opt_energy_name(OPT_ENERGY_SYMMETRIC_DIRICHLET));
     int d = S->d, nc = d + 1;
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
     double energy = 0, e, g[12], H[144];
     int clamped = 0;
     for (int s = 0; s < S->n; s++) {
-        int neg = opt_sd_simplex_hessian(S, s, X, project, &e, g, H);
+        int neg = opt_isotropic_simplex_hessian(t->energy, S, s, X, project, &e, g, H);
         if (neg < 0)
             return err_set(err, SCAF_ERR_NUMERIC,
                            "Newton: simplex %d is inverted or degenerate (signed volume %g)", s,

@@ -1,8 +1,9 @@
 /* opt/newton_fill: one term's share of the projected Newton system.
  *
- * The Newton system of the symmetric Dirichlet energy sum_s weight_s *
- * Psi(J_s(x)) over the free vertices is H p = -g, H the sum of the
- * simplices' PSD-projected Hessians (opt/sd_hessian) and g the gradient,
+ * The Newton system of a term's energy sum_s weight_s * Psi(J_s(x))
+ * (symmetric Dirichlet, ARAP or conformal) over the free vertices is
+ * H p = -g, H the sum of the simplices' PSD-projected Hessians
+ * (opt/isotropic_hessian) and g the gradient,
  * restricted to free unknowns (dof numbering as in opt/proxy_block:
  * interleaved, fixed vertices -1; a fixed vertex does not move, so its
  * couplings simply drop out). The values go into the SAME pattern that
@@ -30,8 +31,7 @@ typedef struct opt_newton_fill_stats {
  * possibly indefinite one otherwise: near a minimum the sum is positive
  * definite even where single simplices are not); rhs (nfree*d) ACCUMULATES -gradient (zero it
  * first). b's pattern must have been built for t->s under dof. st may be
- * NULL. Fails with SCAF_ERR_USAGE when t's energy is not symmetric
- * Dirichlet (the only one with a Hessian here) and SCAF_ERR_NUMERIC naming
+ * NULL. Fails with SCAF_ERR_NUMERIC naming
  * the first simplex that is inverted or degenerate at X (values are then
  * partial: do not factor them). */
 scaf_status opt_newton_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,

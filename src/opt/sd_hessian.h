@@ -1,4 +1,6 @@
-/* opt/sd_hessian: Hessian of the symmetric Dirichlet energy, projected PSD.
+/* opt/sd_hessian: Hessian of the symmetric Dirichlet energy, projected PSD:
+ * the symmetric Dirichlet case of opt/isotropic_hessian (same eigensystem
+ * and conventions; kept as the short names for that energy).
  *
  * Density Psi(J) = ||J||_F^2 + ||J^-1||_F^2 of the d by d Jacobian J
  * (row-major, d = 2 or 3, det J > 0). Its Hessian d2Psi/dJ2 (d^2 by d^2,

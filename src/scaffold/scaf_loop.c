@@ -297,7 +297,6 @@ const int *scaf_loop_mesh_ordering(const scaf_loop *L) { return L->work->mesh_pe
 int scaf_loop_newton_available(const scaf_loop *L)
 {
     const scaf_loop_work *w = L->work;
-    if (w->mesh_k >= 0 && L->opt.energy != OPT_ENERGY_SYMMETRIC_DIRICHLET) return 0;
     for (int k = 0; k < w->nterms; k++)
         if (w->terms[k].ops->fill && !w->terms[k].ops->hessian_fill) return 0;
     return 1;
@@ -762,6 +761,14 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     int newton = (L->opt.solver == SCAF_SOLVER_NEWTON ||
                   (L->opt.solver == SCAF_SOLVER_AUTO && w->newton_on)) &&
         scaf_loop_newton_available(L);
+    /* ARAP is 0 at a rotation: E_M alone shrinks towards 0 at the minimum
+     * and the scaffold's weight with it, until the boundary squeezes the
+     * scaffold into its barrier and every re-meshing moves the map (camel_b:
+     * lambda 1.5e-7, no convergence in 200 iterations). E_M + area keeps
+     * the weight per unit of the mesh term's curvature what symmetric
+     * Dirichlet's E_M >= 4 area gives (ARAP's curvature at a rotation is 2,
+     * a quarter of symmetric Dirichlet's 8); conformal's E_M >= area. */
+    if (w->mesh_k >= 0 && L->opt.energy == OPT_ENERGY_ARAP) EM += L->total_area;
     double lambda = L->opt.lambda_ratio * EM / (sc->n > 0 ? sc->n : 1);
     if (newton) lambda *= L->opt.newton_lambda_scale; /* see the option */
     st = scaffold_term(L, nall, X, lambda, err);

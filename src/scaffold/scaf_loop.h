@@ -53,7 +53,8 @@ struct scaf_loop;
  * the project's measured defaults. */
 typedef struct scaf_loop_options {
     opt_energy energy;          /* the mesh term's energy (symmetric Dirichlet) */
-    double lambda_ratio;        /* scaffold weight lambda = ratio * E_M / |S| (0.01) */
+    double lambda_ratio;        /* scaffold weight lambda = ratio * E_M / |S| (0.01;
+                                   ARAP: E_M + mesh area) */
     double step_fraction;       /* first trial step: this fraction of the
                                   largest allowed step (0.8) */
     scaffold_options scaffold;  /* box and quality (scaffold_default_options) */
@@ -178,7 +179,7 @@ scaf_status scaf_loop_set_scaffold_provider(scaf_loop *L, scaffold_provider *p, 
 scaf_status scaf_loop_add_term(scaf_loop *L, const opt_obj_term *t, scaf_error *err);
 
 /* Whether a Newton step is possible: every term with a system block has
- * a Hessian (hessian_fill) and the mesh energy is symmetric Dirichlet. */
+ * a Hessian (hessian_fill; the mesh term has one for every opt_energy). */
 int scaf_loop_newton_available(const scaf_loop *L);
 
 /* One iteration; fills info (may be NULL; info->solver says which step
