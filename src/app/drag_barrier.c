@@ -345,8 +345,8 @@ static scaf_status barrier_hessian_fill(opt_obj_term *t, const int *dof, const d
 }
 
 static const opt_obj_term_ops barrier_ops = {
-    barrier_energy, barrier_energy_slope, barrier_pattern,     barrier_fill,
-    NULL,           NULL,                 barrier_hessian_fill};
+    barrier_energy, barrier_energy_slope, barrier_pattern, barrier_fill, NULL,
+    NULL,           barrier_hessian_fill};
 
 opt_obj_term drag_barrier_make(drag_barrier *b)
 {

@@ -75,11 +75,11 @@ typedef struct drag_barrier {
     const atlas *at; /* positions (at->loop.uv), segments, padding */
     int on;
     double band, weight, reach_ratio, growth; /* the defines, settable */
-    long rejects_seen; /* the atlas's padding_rejects at the last setup */
-    int walls_left;    /* iterations the walls stay */
+    long rejects_seen;                        /* the atlas's padding_rejects at the last setup */
+    int walls_left;                           /* iterations the walls stay */
     /* the iteration's barrier (set by the pattern op) */
-    int walls;                    /* the walls are part of it */
-    double p2, zhat, wall_width;  /* P^2, dhat^2 - P^2, dhat - P */
+    int walls;                   /* the walls are part of it */
+    double p2, zhat, wall_width; /* P^2, dhat^2 - P^2, dhat - P */
     double wall_lo[2], wall_hi[2];
     double kappa;
     int n, cap;        /* candidate pairs */
