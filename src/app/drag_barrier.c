@@ -200,8 +200,10 @@ static scaf_status setup(drag_barrier *b, scaf_error *err)
     long nsp = 0;
     scaf_status st = chart_gap_close_pairs(X, a->seg, a->nseg, reach, &sp, &nsp, err);
     if (st != SCAF_OK) return st;
-    uint64_t *key = malloc(sizeof(uint64_t) * 4 * (size_t)(nsp ? nsp : 1));
-    if (!key || 4 * nsp > INT32_MAX) {
+    /* (4 keys per pair, counted in an int) */
+    uint64_t *key =
+        nsp <= INT32_MAX / 4 ? malloc(sizeof(uint64_t) * 4 * (size_t)(nsp ? nsp : 1)) : NULL;
+    if (!key) {
         free(sp);
         free(key);
         return err_nomem(err, "padding barrier pairs");

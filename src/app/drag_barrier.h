@@ -74,7 +74,7 @@
 typedef struct drag_barrier {
     const atlas *at; /* positions (at->loop.uv), segments, padding */
     int on;
-    double band, weight, reach_ratio, growth; /* the defines, settable */
+    double band, weight, reach_ratio, growth; /* the defines (tests may set them) */
     long rejects_seen;                        /* the atlas's padding_rejects at the last setup */
     int walls_left;                           /* iterations the walls stay */
     /* the iteration's barrier (set by the pattern op) */
