@@ -530,11 +530,12 @@ scaf_status chart_gap_min(int nuv, const double *UV, int nf, const int *F, const
     return st;
 }
 
-scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double radius,
-                                 unsigned char *mark, long *npairs, scaf_error *err)
+/* A search with radius (> 0) on the segments scaled into [1, 2) (exact,
+ * see scaled_segments) marking close charts or listing close pairs. */
+static scaf_status scaled_search(const double *UV, const int *seg, int n, double radius,
+                                 unsigned char *mark, long *npairs, pair_list *list,
+                                 scaf_error *err)
 {
-    *npairs = 0;
-    if (n < 2 || !(radius > 0.0)) return SCAF_OK;
     double *xy;
     int *sg, e;
     scaf_status st = scaled_segments(UV, seg, n, &xy, &sg, &e, err);
@@ -542,10 +543,18 @@ scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double
     double lo[2], g = INFINITY;
     double extent = segment_extent(xy, sg, n, lo);
     st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, NULL, mark, npairs, 0.0, NULL,
-                     NULL, err);
+                     list, err);
     free(xy);
     free(sg);
     return st;
+}
+
+scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double radius,
+                                 unsigned char *mark, long *npairs, scaf_error *err)
+{
+    *npairs = 0;
+    if (n < 2 || !(radius > 0.0)) return SCAF_OK;
+    return scaled_search(UV, seg, n, radius, mark, npairs, NULL, err);
 }
 
 /* Coordinates the exact test can take: 0 or magnitude in [2^-200, 2^200]
@@ -594,17 +603,8 @@ scaf_status chart_gap_close_pairs(const double *UV, const int *seg, int n, doubl
     *pairs = NULL;
     *npairs = 0;
     if (n < 2 || !(radius > 0.0)) return SCAF_OK;
-    double *xy;
-    int *sg, e;
-    scaf_status st = scaled_segments(UV, seg, n, &xy, &sg, &e, err);
-    if (st != SCAF_OK) return st;
-    double lo[2], g = INFINITY;
-    double extent = segment_extent(xy, sg, n, lo);
     pair_list list = {NULL, 0, 0, 0};
-    st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, NULL, NULL, NULL, 0.0, NULL,
-                     &list, err);
-    free(xy);
-    free(sg);
+    scaf_status st = scaled_search(UV, seg, n, radius, NULL, NULL, &list, err);
     if (st == SCAF_OK && list.nomem) st = err_nomem(err, "close chart segment pairs");
     if (st != SCAF_OK) {
         free(list.st);
