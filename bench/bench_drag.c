@@ -117,6 +117,7 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
     double *cpu = malloc(sizeof(double) * (size_t)frames);
     double(*ph)[SCAF_PHASE_COUNT] = malloc(sizeof *ph * (size_t)frames);
     int bad = 0, done = 0;
+    double eff0 = scaf_drag_packing_efficiency(d);
     scaf_drag_checkpoint(d);
     for (int f = 0; f < frames; f++) {
         double t = (double)(f + 1) / frames; /* the mouse goes to the middle */
@@ -147,7 +148,8 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
             printf(" %.1f |", quantile(col, done, 0.5));
         }
         free(col);
-        printf(" %.3g | %s |\n", scaf_drag_max_handle_error(d) / side, bad ? "NO" : "yes");
+        printf(" %.3g | %.3f -> %.3f | %s |\n", scaf_drag_max_handle_error(d) / side, eff0,
+               scaf_drag_packing_efficiency(d), bad ? "NO" : "yes");
     }
     scaf_drag_undo(d);
     scaf_drag_clear_handles(d);
@@ -181,9 +183,10 @@ int main(int argc, char **argv)
     int nmesh = one ? 1 : 3;
     printf("| mesh | handle | charts | frames | median CPU ms | median wall ms | p10 | p90 |");
     for (int p = 0; p < SCAF_PHASE_COUNT; p++) printf(" %s |", scaf_phase_name((scaf_phase)p));
-    printf(" handle error / side | bijective every frame |\n|---|---|---|---|---|---|---|---|");
+    printf(" handle error / side | packing efficiency | bijective every frame "
+           "|\n|---|---|---|---|---|---|---|---|");
     for (int p = 0; p < SCAF_PHASE_COUNT; p++) printf("---|");
-    printf("---|---|\n");
+    printf("---|---|---|\n");
     for (int k = 0; k < nmesh; k++) {
         char path[4096];
         if (one) snprintf(path, sizeof path, "%s", one);

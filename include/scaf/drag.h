@@ -20,12 +20,12 @@
  * beyond their own share of the system.
  *
  * Padding and pushing: the padding is a hard constraint (the line search
- * shortens a step until every two charts are at least the padding apart).
- * Between charts farther apart a dragged chart pushes the others freely;
- * in a layout packed to the padding (the output of scaf_atlas_run, whose
- * compaction leaves charts squeezed below their distortion optimum, so
- * every chart presses on its gaps) steps get short and drags slow
- * (bench/RESULTS-drag.md); padding 0 drags freely there.
+ * shortens a step until every two charts are at least the padding apart),
+ * and also a barrier in the energy the steps minimize, so the charts in a
+ * dragged chart's way are pushed aside with the padding between them, in
+ * a layout packed to the padding too (the output of scaf_atlas_run, whose
+ * charts are squeezed below their distortion optimum): a drag there gets
+ * about as far as with padding 0 (bench/RESULTS-drag.md).
  *
  * Units. Positions in and out (scaf_drag_get_uv, handle targets) are in
  * layout units: the mesh's 3D units divided by a power of two (exact; a

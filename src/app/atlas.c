@@ -142,16 +142,23 @@ void atlas_chart_energy(const atlas *a, double *E)
 
 /* ---- hooks -------------------------------------------------------------------- */
 
+double atlas_padding_need(const atlas *a, const double *X)
+{
+    return a->opt.padding * side_of(X, a->nw) * PAD_MARGIN;
+}
+
 /* Padding: every pair of charts at least padding * side apart at X. */
 static int feasible_gap(void *user, const scaf_loop *L, const double *X, int nall)
 {
     (void)nall;
+    (void)L;
     atlas *a = user;
     if (!(a->opt.padding > 0.0)) return 1;
-    double need = a->opt.padding * side_of(X, L->nv) * PAD_MARGIN, g;
+    double need = atlas_padding_need(a, X), g;
     scaf_error e;
     err_clear(&e);
     if (chart_gap_min_segments(X, a->seg, a->nseg, need, &g, NULL, &e) != SCAF_OK) return 0;
+    if (!(g > need)) a->padding_rejects++;
     return g > need;
 }
 
@@ -161,7 +168,7 @@ static int freeze_close(void *user, const scaf_loop *L, const double *X, double 
 {
     (void)nall;
     atlas *a = user;
-    double need = a->opt.padding * side_of(X, L->nv) * PAD_MARGIN;
+    double need = atlas_padding_need(a, X);
     unsigned char *mark = calloc((size_t)a->ncharts, 1);
     if (!mark) return 0;
     long np = 0;

@@ -165,6 +165,8 @@ typedef struct atlas {
                                    the scaffold is rebuilt at the next step */
     int turns;                     /* layout turns kept (rotate) */
     int stiffened;                 /* scaffold triangles stiffened (last iteration) */
+    long padding_rejects;          /* steps the padding test rejected (each
+                                   trial of the loop's shortening counts) */
     scaf_stop_reason settle_stop, compact_stop; /* why each phase stopped
                                    (SCAF_STOP_NONE: not run) */
 } atlas;
@@ -202,6 +204,11 @@ void atlas_normalized_uv(const atlas *a, double *UV);
 
 /* Side and gap (normalized) of the current layout. */
 double atlas_side(const atlas *a);
+
+/* The smallest chart gap the padding test accepts at positions X (the
+ * layout's vertices first): padding * side, with the margin that keeps
+ * the normalized output's gaps >= padding. */
+double atlas_padding_need(const atlas *a, const double *X);
 
 /* Reported energy E (symmetric Dirichlet, 4 at an isometry) of the current layout. */
 double atlas_energy(const atlas *a);

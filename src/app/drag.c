@@ -21,6 +21,7 @@
 
 #include "app/atlas.h"
 #include "app/atlas_output.h"
+#include "app/drag_barrier.h"
 #include "app/drag_handles.h"
 #include "app/param.h"
 #include "base/error.h"
@@ -40,6 +41,7 @@ struct scaf_drag {
     int has_mesh;
     atlas at;             /* layout, loop, padding hooks */
     opt_handle_term term; /* in at.loop once has_mesh */
+    drag_barrier barrier; /* the padding in the energy (in at.loop with a padding) */
     drag_handles handles;
     int handles_dirty; /* the term does not reflect the handle set */
     drag_state before; /* the layout before the last step */
@@ -141,6 +143,7 @@ static void drop_mesh(scaf_drag_t *d)
     if (d->has_mesh) {
         atlas_free(&d->at); /* frees the loop and with it the term's block */
         opt_handle_term_free(&d->term);
+        drag_barrier_free(&d->barrier);
         drag_handles_free(&d->handles);
     }
     memset(&d->at, 0, sizeof d->at);
@@ -210,6 +213,13 @@ scaf_status scaf_drag_set_mesh(scaf_drag_t *d, const double *V, int nv, const in
     if (st == SCAF_OK) {
         opt_obj_term t = opt_handle_term_make(&d->term);
         st = scaf_loop_add_term(&d->at.loop, &t, &d->err);
+    }
+    if (st == SCAF_OK && d->opt.padding > 0.0) {
+        st = drag_barrier_init(&d->barrier, &d->at, &d->err);
+        if (st == SCAF_OK) {
+            opt_obj_term t = drag_barrier_make(&d->barrier);
+            st = scaf_loop_add_term(&d->at.loop, &t, &d->err);
+        }
     }
     d->UVn = st == SCAF_OK ? malloc(sizeof(double) * n2) : NULL;
     d->before.uv = st == SCAF_OK ? malloc(sizeof(double) * n2) : NULL;
@@ -483,7 +493,10 @@ scaf_status scaf_drag_compact(scaf_drag_t *d, int n, scaf_param_progress_fn prog
     if (st != SCAF_OK) return st;
     d->handles_dirty = 1;
     atlas_compact_begin(&d->at);
+    int on = d->barrier.on;
+    drag_barrier_enable(&d->barrier, 0); /* compaction closes gaps on purpose */
     st = iterate(d, n, progress, user);
+    drag_barrier_enable(&d->barrier, on);
     atlas_compact_end(&d->at);
     return st;
 }

@@ -211,11 +211,37 @@ static int cell_index(double t, int n)
     return c < (double)(n - 1) ? (int)c : n - 1;
 }
 
-/* One search with radius r over segments seg (n by {a, b, chart}). */
+/* Segment pairs found closer than the radius (chart_gap_close_pairs). */
+typedef struct pair_list {
+    int *st; /* 2 per pair */
+    long n, cap;
+    int nomem;
+} pair_list;
+
+static void pair_list_push(pair_list *l, int s, int t)
+{
+    if (l->nomem) return;
+    if (l->n == l->cap) {
+        long cap = l->cap ? 2 * l->cap : 256;
+        int *q = realloc(l->st, sizeof(int) * 2 * (size_t)cap);
+        if (!q) {
+            l->nomem = 1;
+            return;
+        }
+        l->st = q;
+        l->cap = cap;
+    }
+    l->st[2 * l->n] = s;
+    l->st[2 * l->n + 1] = t;
+    l->n++;
+}
+
+/* One search with radius r over segments seg (n by {a, b, chart}); list
+ * (may be NULL) gets every pair closer than r. */
 static scaf_status grid_search(const double *UV, const int *seg, int n, double r,
                                const double lo[2], double extent, double *best, int pair[2],
                                unsigned char *mark, long *npairs, double cert, int *bad,
-                               scaf_error *err)
+                               pair_list *list, scaf_error *err)
 {
     double cell = extent / sqrt((double)n + 1.0);
     if (r > cell) cell = r;
@@ -304,6 +330,7 @@ static scaf_status grid_search(const double *UV, const int *seg, int n, double r
                     continue;
                 }
                 double d = chart_segment_distance(p1, p2, q1, q2);
+                if (list && d < r) pair_list_push(list, s, t);
                 if (mark && d < r) {
                     mark[seg[3 * s + 2]] = 1;
                     mark[seg[3 * t + 2]] = 1;
@@ -452,12 +479,12 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int n, doub
     if (radius > 0.0 && isfinite(radius)) {
         /* a radius below 2^-1074 after scaling finds touching pairs only */
         st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, pair, NULL, NULL, 0.0, NULL,
-                         err);
+                         NULL, err);
     } else {
         double r = len / n;
         if (!(r > 0.0)) r = extent / n;
         for (;;) {
-            st = grid_search(xy, sg, n, r, lo, extent, &g, pair, NULL, NULL, 0.0, NULL, err);
+            st = grid_search(xy, sg, n, r, lo, extent, &g, pair, NULL, NULL, 0.0, NULL, NULL, err);
             if (st != SCAF_OK || isfinite(g) || r > 4.0 * extent) break;
             r *= 2.0;
         }
@@ -503,11 +530,12 @@ scaf_status chart_gap_min(int nuv, const double *UV, int nf, const int *F, const
     return st;
 }
 
-scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double radius,
-                                 unsigned char *mark, long *npairs, scaf_error *err)
+/* A search with radius (> 0) on the segments scaled into [1, 2) (exact,
+ * see scaled_segments) marking close charts or listing close pairs. */
+static scaf_status scaled_search(const double *UV, const int *seg, int n, double radius,
+                                 unsigned char *mark, long *npairs, pair_list *list,
+                                 scaf_error *err)
 {
-    *npairs = 0;
-    if (n < 2 || !(radius > 0.0)) return SCAF_OK;
     double *xy;
     int *sg, e;
     scaf_status st = scaled_segments(UV, seg, n, &xy, &sg, &e, err);
@@ -515,10 +543,18 @@ scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double
     double lo[2], g = INFINITY;
     double extent = segment_extent(xy, sg, n, lo);
     st = grid_search(xy, sg, n, ldexp(radius, -e), lo, extent, &g, NULL, mark, npairs, 0.0, NULL,
-                     err);
+                     list, err);
     free(xy);
     free(sg);
     return st;
+}
+
+scaf_status chart_gap_mark_close(const double *UV, const int *seg, int n, double radius,
+                                 unsigned char *mark, long *npairs, scaf_error *err)
+{
+    *npairs = 0;
+    if (n < 2 || !(radius > 0.0)) return SCAF_OK;
+    return scaled_search(UV, seg, n, radius, mark, npairs, NULL, err);
 }
 
 /* Coordinates the exact test can take: 0 or magnitude in [2^-200, 2^200]
@@ -556,7 +592,25 @@ scaf_status chart_gap_certify(const double *UV, const int *seg, int n, double pa
      * side, so every pair closer than the padding shares a cell with a
      * margin far above the rounding of the cell indices */
     scaf_status st = grid_search(UV, seg, n, 2.0 * padding, lo, extent, &g, pair, NULL, NULL,
-                                 padding, &bad, err);
+                                 padding, &bad, NULL, err);
     *ok = !bad;
     return st;
+}
+
+scaf_status chart_gap_close_pairs(const double *UV, const int *seg, int n, double radius,
+                                  int **pairs, long *npairs, scaf_error *err)
+{
+    *pairs = NULL;
+    *npairs = 0;
+    if (n < 2 || !(radius > 0.0)) return SCAF_OK;
+    pair_list list = {NULL, 0, 0, 0};
+    scaf_status st = scaled_search(UV, seg, n, radius, NULL, NULL, &list, err);
+    if (st == SCAF_OK && list.nomem) st = err_nomem(err, "close chart segment pairs");
+    if (st != SCAF_OK) {
+        free(list.st);
+        return st;
+    }
+    *pairs = list.st;
+    *npairs = list.n;
+    return SCAF_OK;
 }

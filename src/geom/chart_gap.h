@@ -84,6 +84,13 @@ scaf_status chart_gap_min_segments(const double *UV, const int *seg, int nseg, d
 scaf_status chart_gap_mark_close(const double *UV, const int *seg, int nseg, double radius,
                                  unsigned char *mark, long *npairs, scaf_error *err);
 
+/* Every pair of boundary segments of different charts closer than radius
+ * (> 0; floating-point distance, as chart_gap_min): *pairs (malloc'd, NULL
+ * when there is none; free it) gets *npairs rows {s, t} of segment indices
+ * into seg. */
+scaf_status chart_gap_close_pairs(const double *UV, const int *seg, int nseg, double radius,
+                                  int **pairs, long *npairs, scaf_error *err);
+
 /* The smallest nonzero padding (and coordinate magnitude) the exact
  * certificate takes, and the largest: 2^-200 and 2^200. */
 #define CHART_GAP_EXACT_MIN 0x1p-200

@@ -117,6 +117,60 @@ static void random_layout_matches_brute_force(void **state)
     free(seg);
 }
 
+/* chart_gap_close_pairs lists exactly the pairs of segments of different
+ * charts closer than the radius (brute force over all pairs), each once. */
+static void close_pairs_match_brute_force(void **state)
+{
+    (void)state;
+    enum { N = 40 };
+    double ox[N], oy[N], UV[8 * N];
+    int F[6 * N], chart[2 * N], nc, *seg, nseg;
+    unsigned seed = 777;
+    for (int i = 0; i < N; i++) {
+        seed = seed * 1103515245u + 12345u;
+        ox[i] = 1.4 * (i % 8) + (seed >> 8) % 1000 / 1000.0 * 0.3;
+        seed = seed * 1103515245u + 12345u;
+        oy[i] = 1.4 * (i / 8) + (seed >> 8) % 1000 / 1000.0 * 0.3;
+    }
+    squares(N, ox, oy, UV, F);
+    scaf_error err;
+    assert_int_equal(chart_gap_labels(4 * N, 2 * N, F, chart, &nc, &err), SCAF_OK);
+    assert_int_equal(chart_gap_segments(2 * N, F, chart, &seg, &nseg, &err), SCAF_OK);
+    const double radius[3] = {0.15, 0.4, 0.9};
+    for (int r = 0; r < 3; r++) {
+        int *pairs = NULL;
+        long np = -1;
+        assert_int_equal(chart_gap_close_pairs(UV, seg, nseg, radius[r], &pairs, &np, &err),
+                         SCAF_OK);
+        unsigned char *seen = calloc((size_t)nseg * nseg, 1);
+        assert_non_null(seen);
+        for (long k = 0; k < np; k++) {
+            int a = pairs[2 * k], b = pairs[2 * k + 1];
+            assert_true(a >= 0 && a < nseg && b >= 0 && b < nseg);
+            assert_true(seg[3 * a + 2] != seg[3 * b + 2]);
+            int lo = a < b ? a : b, hi = a < b ? b : a;
+            assert_int_equal(seen[lo * nseg + hi], 0); /* once */
+            seen[lo * nseg + hi] = 1;
+        }
+        long want = 0;
+        for (int a = 0; a < nseg; a++)
+            for (int b = a + 1; b < nseg; b++) {
+                if (seg[3 * a + 2] == seg[3 * b + 2]) continue;
+                double d = chart_segment_distance(UV + 2 * seg[3 * a], UV + 2 * seg[3 * a + 1],
+                                                  UV + 2 * seg[3 * b], UV + 2 * seg[3 * b + 1]);
+                if (d < radius[r]) {
+                    want++;
+                    assert_int_equal(seen[a * nseg + b], 1);
+                }
+            }
+        assert_true(np == want);
+        assert_true(r == 0 || want > 0);
+        free(seen);
+        free(pairs);
+    }
+    free(seg);
+}
+
 static void packing_efficiency(void **state)
 {
     (void)state;
@@ -331,6 +385,7 @@ int main(void)
         cmocka_unit_test(two_squares_gap),
         cmocka_unit_test(corner_distance),
         cmocka_unit_test(random_layout_matches_brute_force),
+        cmocka_unit_test(close_pairs_match_brute_force),
         cmocka_unit_test(packing_efficiency),
         cmocka_unit_test(segment_distance),
         cmocka_unit_test(certified_exact_boundary),
