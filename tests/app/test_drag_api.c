@@ -215,11 +215,7 @@ static void test_drag_chart_free_space(void **state)
                      SCAF_OK);
     assert_int_equal(scaf_drag_step(d, 15, NULL, NULL), SCAF_OK);
     assert_valid(d, scaf_drag_options_default().padding);
-    /* Largest vertex-to-handle distance: 0.0018 of the size with the
-     * paper's scaffold guard, 0.0027 with the blended one (opt/simplices):
-     * the compacted start differs, and its chart relaxes its shape against
-     * the handles by that much; the centroid (below) within 0.00025. */
-    assert_true(scaf_drag_max_handle_error(d) < 0.004 * size);
+    assert_true(scaf_drag_max_handle_error(d) < 0.002 * size);
     scaf_drag_chart_info_t after;
     assert_int_equal(scaf_drag_chart_info(d, 1, &after), SCAF_OK);
     assert_true(after.held);

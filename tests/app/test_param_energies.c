@@ -109,7 +109,7 @@ static void arap_does_not_collapse(void **state)
     assert_true(E < 1e3);
     assert_true(its > 10);
     /* with Newton (opt/isotropic_hessian) and the logarithmic barrier:
-     * converged after 73 iterations, 84 with the continuous scaffold guard
+     * converged after 73 iterations, 80 with the continuous scaffold guard
      * (SLIM and (0.1/det - 1)^3 before: at the 200-iteration cap,
      * criterion 3.5e-4) */
     assert_int_equal(stop, SCAF_STOP_CONVERGED);
@@ -158,7 +158,7 @@ static void hand_lowres_converges(void **state)
  * regular triangle below eps) the re-rested scaffold pushed the boundary
  * back each time the gap fell under it: a cycle, iteration_limit at 200
  * (criterion 4.6e-4). With the guard blended continuously (opt/simplices)
- * it converges (126 iterations, bijective). Skipped without
+ * it converges (117 iterations, bijective). Skipped without
  * ../shared/data, and under the sanitizers (a few seconds in Release). */
 static void camel_b_arap_converges(void **state)
 {
