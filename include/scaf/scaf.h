@@ -91,9 +91,10 @@ typedef enum scaf_energy {
                                             below det J = 0.1, 0 above, keeps
                                             them away from collapse. Newton
                                             as for the default; where the
-                                            boundary presses the scaffold it
-                                            may not converge (camel_b): the
-                                            stop reason and criterion say so */
+                                            boundary presses against itself
+                                            (camel_b) the scaffold's guard
+                                            holds the gap open and it
+                                            converges too */
     SCAF_ENERGY_CONFORMAL                /* MIPS: ||J||^2 / (2 det J), a barrier;
                                             scale-free, so areas may vary
                                             widely; Newton as for the default */

@@ -199,6 +199,37 @@ static void regular_simplex(int d, double v, double *rest)
     }
 }
 
+/* The 2D guard's rest shape for a triangle of area vol between
+ * GUARD_LO * min_vol and GUARD_HI * min_vol, corners in rest (overwritten):
+ * its metric (edge-vector dot products, rotation-free) blended from its
+ * own (at GUARD_HI) towards the regular triangle's of area min_vol (at
+ * GUARD_LO and below). A convex combination of positive definite metrics
+ * is one, and its area is at least (1 - t) vol + t min_vol. The blend
+ * makes the rest shape a continuous function of the current one: the
+ * paper's switch to a regular shape at min_vol made the re-rested
+ * scaffold's energy jump there, and where the map presses its boundary
+ * against itself (ARAP on camel_b) the run then cycled between the
+ * closing gap and the push-back instead of settling. The span straddles
+ * min_vol: blending only below it let scaffold slivers keep sliver rest
+ * shapes, which hold the boundary in place (ARAP on myles_knot1: no
+ * convergence in 200 iterations, measured in bench/RESULTS-newton.md). */
+#define GUARD_HI 2.0
+#define GUARD_LO 0.25
+static void guard_blend_2d(double vol, double min_vol, double *rest)
+{
+    double s = log(GUARD_HI * min_vol / vol) / log(GUARD_HI / GUARD_LO);
+    double t = s >= 1 ? 1 : s * s * (3 - 2 * s); /* smooth in log(area) */
+    double e1[2] = {rest[2] - rest[0], rest[3] - rest[1]};
+    double e2[2] = {rest[4] - rest[0], rest[5] - rest[1]};
+    double l2 = 4.0 * min_vol / sqrt(3.0); /* regular: |e|^2, e1.e2 = |e|^2 / 2 */
+    double m11 = (1 - t) * (e1[0] * e1[0] + e1[1] * e1[1]) + t * l2;
+    double m22 = (1 - t) * (e2[0] * e2[0] + e2[1] * e2[1]) + t * l2;
+    double m12 = (1 - t) * (e1[0] * e2[0] + e1[1] * e2[1]) + t * 0.5 * l2;
+    double a = sqrt(m11);
+    double q[6] = {0, 0, a, 0, m12 / a, sqrt(m11 * m22 - m12 * m12) / a};
+    memcpy(rest, q, sizeof q);
+}
+
 scaf_status opt_simplices_from_current(opt_simplices *out, int d, int nv, const double *X, int n,
                                        const int *S, double min_vol, scaf_error *err)
 {
@@ -216,6 +247,15 @@ scaf_status opt_simplices_from_current(opt_simplices *out, int d, int nv, const 
         memcpy(out->idx + (size_t)s * (d + 1), t, (size_t)(d + 1) * sizeof *t);
         double *G = out->grad + (size_t)s * (d + 1) * d;
         int ok = opt_gradient_operator(d, rest, G, &vol);
+        if (d == 2 && ok && vol > GUARD_LO * min_vol && vol < GUARD_HI * min_vol && min_vol > 0) {
+            guard_blend_2d(vol, min_vol, rest);
+            ok = opt_gradient_operator(d, rest, G, &vol);
+            if (ok && vol > 0) {
+                out->vol[s] = vol;
+                out->weight[s] = 1.0;
+                continue;
+            }
+        }
         if (!(ok && vol >= min_vol && vol > 0)) {
             if (!(min_vol > 0) || !isfinite(vol)) {
                 opt_simplices_free(out);

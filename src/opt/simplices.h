@@ -72,7 +72,10 @@ scaf_status opt_simplices_from_surface(opt_simplices *out, int nv, const double 
 /* Rest shape = current shape: d = 2 or 3, X (#X by d) with nv rows,
  * n simplices S (n by (d+1)). A simplex of signed volume below min_vol uses
  * a regular simplex of volume min_vol as rest shape instead (the paper's
- * eps = l^2/4 guard; pass 0 to disable). Weight is set to 1. Fails with
+ * eps = l^2/4 guard; pass 0 to disable); for d = 2, a triangle of area
+ * between min_vol / 4 and 2 min_vol gets its own shape blended towards
+ * that regular one (smoothly in log area), so the rest shape is a
+ * continuous function of the current shape. Weight is set to 1. Fails with
  * SCAF_ERR_MESH on a simplex of volume <= 0 when min_vol <= 0. */
 scaf_status opt_simplices_from_current(opt_simplices *out, int d, int nv, const double *X, int n,
                                        const int *S, double min_vol, scaf_error *err);

@@ -11,7 +11,8 @@
  *      current positions inside a box opt.scaffold.box_scale times their
  *      bounding box; its box vertices are fixed during this solve;
  *   2. scaffold rest shapes = their current shapes (guard: rest volume
- *      below the provider's eps -> regular simplex of volume eps), energy
+ *      below the provider's eps -> regular simplex of volume eps; 2D:
+ *      blended towards it between 2 eps and eps / 4, opt/simplices), energy
  *      weight lambda = lambda_ratio * E_M / |S| (times
  *      opt.newton_lambda_scale in a Newton iteration);
  *   3. the terms of the objective (opt/objective) — the mesh term (rest

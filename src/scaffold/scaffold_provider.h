@@ -22,7 +22,9 @@
  *                         box), 0 = free;
  *              eps        the rest-volume guard: a scaffold simplex smaller
  *                         than eps gets a regular rest shape of volume eps
- *                         (paper, 2D: l^2 / 4, l the shortest boundary edge);
+ *                         (paper, 2D: l^2 / 4, l the shortest boundary edge;
+ *                         2D blends towards it from 2 eps down to eps / 4,
+ *                         opt/simplices);
  *              box_lo/hi  the box (first d entries);
  *   destroy  free everything.
  * The scaffold's options (scaffold_options: box scale, box shape, points
