@@ -84,8 +84,8 @@ static int boundary_loop(const mesh *m, int *loop)
 }
 
 enum { OP_ENERGY, OP_SLOPE, OP_MAX_STEP, OP_VALID, OP_SLIM_FILL, OP_NEWTON_FILL, NOPS };
-static const char *const op_name[NOPS] = {"energy",     "energy + slope", "flip-free bound",
-                                          "orientations", "SLIM fill",     "Newton fill"};
+static const char *const op_name[NOPS] = {"energy",       "energy + slope", "flip-free bound",
+                                          "orientations", "SLIM fill",      "Newton fill"};
 
 typedef struct bench {
     opt_obj_term t;
