@@ -62,9 +62,10 @@ static void print_help(FILE *out)
     fprintf(out,
             "\n"
             "`scaf COMMAND --help` describes a command. `scaf --version` prints the version.\n"
-            "`scaf param` and `scaf atlas` run the sparse solver's dense kernels on all\n"
-            "cores unless --threads N or OPENBLAS_NUM_THREADS=N says N (the same N gives\n"
-            "the same numbers run after run); the other commands use one thread.\n"
+            "`scaf param` and `scaf atlas` run their per-triangle work and the sparse\n"
+            "solver's dense kernels on all cores unless --threads N or\n"
+            "OPENBLAS_NUM_THREADS=N says N (the same N gives the same numbers run after\n"
+            "run); the other commands use one thread.\n"
             "\n");
     exit_codes_print(out);
 }

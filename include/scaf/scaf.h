@@ -45,14 +45,17 @@ SCAF_API const char *scaf_status_name(scaf_status status);
 /* The version of the library, "MAJOR.MINOR.PATCH". */
 SCAF_API const char *scaf_version(void);
 
-/* Threads of the sparse solver's dense kernels (OpenBLAS; one setting for
- * the whole process, every handle). n >= 1: n threads; n = 0: every core
- * the process may run on. Until called, OpenBLAS's own default holds (all
- * cores, or OPENBLAS_NUM_THREADS). Results are the same run after run for
- * the same count; with 1 they are the numbers of `scaf param --threads 1`;
- * different counts may differ in the last digits (the kernels sum in
- * another order). Returns the count now in effect, 0 when the BLAS has no
- * such setting (nothing changed), -1 for n < 0 (nothing changed). */
+/* Threads of an iteration's per-simplex work (assembly, energies, line
+ * search; OpenMP) and of the sparse solver's dense kernels (OpenBLAS); one
+ * setting for the whole process, every handle. n >= 1: n threads; n = 0:
+ * every core the process may run on. Until called, the per-simplex work
+ * runs in one thread and OpenBLAS's own default holds (all cores, or
+ * OPENBLAS_NUM_THREADS). Results are the same run after run for the same
+ * count; with 1 they are the numbers of `scaf param --threads 1`;
+ * different counts may differ in the last digits (sums run in another
+ * order). Returns the BLAS's count now in effect, 0 when the BLAS has no
+ * such setting (the per-simplex count is set all the same), -1 for n < 0
+ * (nothing changed). */
 SCAF_API int scaf_set_threads(int n);
 
 /* ------------------------------------------------------------------------

@@ -134,7 +134,8 @@ def default_atlas_options():
 
 
 def set_threads(n=0):
-    """Threads of the sparse solver's dense kernels for the whole process
+    """Threads of the per-triangle work (assembly, energies, line search)
+    and of the sparse solver's dense kernels for the whole process
     (scaf_set_threads): n >= 1 threads, 0 = every core this process may run
     on. The same count gives the same numbers run after run; 1 gives those
     of `scaf param --threads 1`. Returns the count in effect (0: the BLAS

@@ -7,6 +7,7 @@
 #include <sched.h>
 #include <unistd.h>
 
+#include "base/parallel.h"
 #include "scaf/scaf.h"
 
 extern void openblas_set_num_threads(int) __attribute__((weak));
@@ -28,7 +29,9 @@ int opt_blas_threads(void) { return openblas_get_num_threads ? openblas_get_num_
 int scaf_set_threads(int n)
 {
     if (n < 0) return -1;
+    int t = n == 0 ? opt_blas_cores() : n;
+    par_set_threads(t); /* scaf's own loops (base/parallel) */
     if (!openblas_set_num_threads) return 0;
-    openblas_set_num_threads(n == 0 ? opt_blas_cores() : n);
+    openblas_set_num_threads(t);
     return opt_blas_threads();
 }

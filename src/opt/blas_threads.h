@@ -1,7 +1,8 @@
 /* opt/blas_threads: how many threads the dense kernels of the sparse
  * Cholesky factorization (OpenBLAS, called by CHOLMOD) use. Process-wide
  * (OpenBLAS has one setting); scaf_set_threads (include/scaf/scaf.h) is
- * the public face. */
+ * the public face, and sets scaf's own loops (base/parallel) to the same
+ * count. */
 #ifndef SCAF_OPT_BLAS_THREADS_H
 #define SCAF_OPT_BLAS_THREADS_H
 

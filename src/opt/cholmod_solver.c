@@ -27,7 +27,9 @@
  * affected (tests/opt/test_cholmod_solver.c: concurrent_factorizations). The dense work stays in BLAS,
  * whose threads OpenBLAS controls. libgomp is reached through weak
  * references (it is loaded by CHOLMOD), so nothing changes when it is
- * absent.
+ * absent. scaf's own threads (base/parallel) are POSIX threads, outside
+ * libgomp, and never run while CHOLMOD does (the loops that use them
+ * return before a factorization starts).
  */
 #include "opt/cholmod_solver.h"
 

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/parallel.h"
 #include "opt/arap_barrier.h"
 #include "opt/small_svd.h"
 
@@ -315,14 +316,44 @@ double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap
     return w2max;
 }
 
-double opt_term_energy(const opt_term *t, const double *X)
+/* sum weight * density over simplices [lo, hi), in order */
+static double energy_range(const opt_term *t, const double *X, size_t lo, size_t hi)
 {
     const opt_simplices *S = t->s;
     double acc = 0, J[9];
-    for (int s = 0; s < S->n; s++) {
-        opt_jacobian(S, s, X, J);
+    for (size_t s = lo; s < hi; s++) {
+        opt_jacobian(S, (int)s, X, J);
         acc += S->weight[s] * opt_density(t->energy, S->d, J);
     }
+    return acc;
+}
+
+typedef struct energy_job {
+    const opt_term *t;
+    const double *X;
+    size_t n;
+    int nc;
+    double part[PAR_MAX_CHUNKS];
+} energy_job;
+
+static void energy_chunk(void *ctx, int k)
+{
+    energy_job *j = ctx;
+    j->part[k] = energy_range(j->t, j->X, par_chunk_begin(j->n, j->nc, k),
+                              par_chunk_begin(j->n, j->nc, k + 1));
+}
+
+/* Chunked (base/parallel): partial sums added in chunk order. */
+double opt_term_energy(const opt_term *t, const double *X)
+{
+    size_t n = (size_t)t->s->n;
+    int nc = par_chunks(n);
+    if (nc == 1) return energy_range(t, X, 0, n);
+    energy_job j = {t, X, n, nc, {0}};
+    par_run(nc, energy_chunk, &j);
+    const double *part = j.part;
+    double acc = 0;
+    for (int k = 0; k < nc; k++) acc += part[k];
     return acc;
 }
 

@@ -11,6 +11,8 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "base/parallel.h"
+
 static double eval(int deg, const double *c, double t)
 {
     double v = c[deg];
@@ -153,12 +155,14 @@ static double max_step_triangle_below(const double *x0, const double *x1, const 
     return t;
 }
 
-double opt_max_step(const opt_simplices *S, const double *X, const double *D)
+/* The minimum over simplices [lo, hi). */
+static double max_step_range(const opt_simplices *S, const double *X, const double *D, size_t lo,
+                             size_t hi)
 {
     double best = INFINITY;
     int d = S->d;
-    for (int s = 0; s < S->n; s++) {
-        const int *ix = S->idx + (size_t)s * (d + 1);
+    for (size_t s = lo; s < hi; s++) {
+        const int *ix = S->idx + s * (d + 1);
         double t;
         if (d == 2)
             t = max_step_triangle_below(X + 2 * (size_t)ix[0], X + 2 * (size_t)ix[1],
@@ -171,5 +175,37 @@ double opt_max_step(const opt_simplices *S, const double *X, const double *D)
                                  D + 3 * (size_t)ix[2], D + 3 * (size_t)ix[3]);
         if (t < best) best = t;
     }
+    return best;
+}
+
+/* Chunks in parallel (base/parallel). A chunk's minimum is exact (a
+ * skipped bisection only concerns roots above the chunk's running
+ * minimum), so the minimum of the chunks' is the serial one, bit for bit. */
+typedef struct max_step_job {
+    const opt_simplices *S;
+    const double *X, *D;
+    size_t n;
+    int nc;
+    double part[PAR_MAX_CHUNKS];
+} max_step_job;
+
+static void max_step_chunk(void *ctx, int k)
+{
+    max_step_job *j = ctx;
+    j->part[k] = max_step_range(j->S, j->X, j->D, par_chunk_begin(j->n, j->nc, k),
+                                par_chunk_begin(j->n, j->nc, k + 1));
+}
+
+double opt_max_step(const opt_simplices *S, const double *X, const double *D)
+{
+    size_t n = (size_t)S->n;
+    int nc = par_chunks(n);
+    if (nc == 1) return max_step_range(S, X, D, 0, n);
+    max_step_job j = {S, X, D, n, nc, {0}};
+    par_run(nc, max_step_chunk, &j);
+    const double *part = j.part;
+    double best = INFINITY;
+    for (int k = 0; k < nc; k++)
+        if (part[k] < best) best = part[k];
     return best;
 }

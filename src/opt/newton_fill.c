@@ -7,25 +7,138 @@
  */
 #include "opt/newton_fill.h"
 
+#include <stdlib.h>
 #include <string.h>
 
+#include "base/parallel.h"
+
 #include "opt/isotropic_hessian.h"
+
+/* Simplices per batch of a parallel fill: a 3D simplex's scratch is 157
+ * doubles (2D: 43), so a batch's stays at a few MB. */
+#define NEWTON_BATCH 4096
+
+static scaf_status inverted(const opt_simplices *S, int s, const double *X, scaf_error *err)
+{
+    return err_set(err, SCAF_ERR_NUMERIC,
+                   "Newton: simplex %d is inverted or degenerate (signed volume %g)", s,
+                   opt_signed_volume(S, s, X));
+}
+
+typedef struct newton_job {
+    opt_proxy_block *b;
+    const opt_term *t;
+    const int *dof;
+    const double *X;
+    double *rhs;
+    int project;
+    double *loc; /* per simplex of the batch: energy, gradient (nd), Hessian (nd^2) */
+    int *neg;    /* per simplex of the batch: opt_isotropic_simplex_hessian's value */
+    size_t b0, m;
+    int ml, nc;
+    int cb[PAR_MAX_CHUNKS + 1];
+} newton_job;
+
+/* Chunk k of the batch: energies, gradients and Hessians of its simplices. */
+static void newton_compute(void *ctx, int k)
+{
+    newton_job *j = ctx;
+    int nd = (j->t->s->d + 1) * j->t->s->d;
+    size_t hi = j->b0 + par_chunk_begin(j->m, j->nc, k + 1);
+    for (size_t s = j->b0 + par_chunk_begin(j->m, j->nc, k); s < hi; s++) {
+        double *e = j->loc + (s - j->b0) * j->ml;
+        j->neg[s - j->b0] = opt_isotropic_simplex_hessian(j->t->energy, j->t->s, (int)s, j->X,
+                                                          j->project, e, e + 1, e + 1 + nd);
+    }
+}
+
+/* Range k of columns: -gradient and Hessian of every simplex of the batch
+ * that touches it. */
+static void newton_scatter(void *ctx, int k)
+{
+    newton_job *j = ctx;
+    const opt_simplices *S = j->t->s;
+    int d = S->d, nd = (d + 1) * d, lo = j->cb[k], hi = j->cb[k + 1];
+    for (size_t s = j->b0; s < j->b0 + j->m; s++) {
+        if (!opt_proxy_block_touches(S, (int)s, j->dof, lo, hi)) continue;
+        const double *g = j->loc + (s - j->b0) * j->ml + 1;
+        const int *ix = S->idx + s * (d + 1);
+        for (int i = 0; i <= d; i++) {
+            int di = j->dof[ix[i]];
+            if (di >= lo && di < hi)
+                for (int a = 0; a < d; a++) j->rhs[(size_t)di * d + a] -= g[i * d + a];
+        }
+        opt_proxy_block_add_local_range(j->b, S, (int)s, j->dof, g + nd, lo, hi);
+    }
+}
+
+/* The fill with nc > 1 chunks (base/parallel), simplices in batches: the
+ * chunks compute their simplices' gradients and Hessians into a scratch;
+ * the energy, the clamped count and the first failure are then taken in
+ * simplex order, and each thread scatters the whole batch into its own
+ * columns and rhs entries (opt_proxy_block_ranges). Every value receives
+ * its terms in simplex order: the serial fill's numbers, bit for bit.
+ * Returns SCAF_ERR_NOMEM without touching anything when the scratch cannot
+ * be had (the caller fills serially). */
+static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const int *dof,
+                                 const double *X, int project, double *rhs,
+                                 opt_newton_fill_stats *st, int nc, scaf_error *err)
+{
+    const opt_simplices *S = t->s;
+    int d = S->d, nd = (d + 1) * d;
+    size_t n = (size_t)S->n;
+    newton_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .project = project, .nc = nc};
+    j.ml = 1 + nd + nd * nd;
+    j.loc = malloc((size_t)NEWTON_BATCH * j.ml * sizeof *j.loc);
+    j.neg = malloc((size_t)NEWTON_BATCH * sizeof *j.neg);
+    if (!j.loc || !j.neg) {
+        free(j.loc);
+        free(j.neg);
+        return SCAF_ERR_NOMEM;
+    }
+    memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
+    opt_proxy_block_ranges(b, nc, j.cb);
+    double energy = 0;
+    int clamped = 0;
+    scaf_status status = SCAF_OK;
+    for (j.b0 = 0; j.b0 < n && status == SCAF_OK; j.b0 += NEWTON_BATCH) {
+        j.m = n - j.b0 < NEWTON_BATCH ? n - j.b0 : NEWTON_BATCH;
+        par_run(nc, newton_compute, &j);
+        for (size_t s = j.b0; s < j.b0 + j.m; s++) {
+            if (j.neg[s - j.b0] < 0) {
+                status = inverted(S, (int)s, X, err);
+                break;
+            }
+            clamped += j.neg[s - j.b0] > 0;
+            energy += j.loc[(s - j.b0) * j.ml];
+        }
+        if (status == SCAF_OK) par_run(nc, newton_scatter, &j);
+    }
+    free(j.loc);
+    free(j.neg);
+    if (status == SCAF_OK && st) {
+        st->energy = energy;
+        st->clamped = clamped;
+    }
+    return status;
+}
 
 scaf_status opt_newton_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,
                                   const double *X, int project, double *rhs,
                                   opt_newton_fill_stats *st, scaf_error *err)
 {
     const opt_simplices *S = t->s;
-    int d = S->d, nc = d + 1;
+    int d = S->d, nc = d + 1, nchunks = par_chunks((size_t)S->n);
+    if (nchunks > 1) {
+        scaf_status r = fill_parallel(b, t, dof, X, project, rhs, st, nchunks, err);
+        if (r != SCAF_ERR_NOMEM) return r;
+    }
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
     double energy = 0, e, g[12], H[144];
     int clamped = 0;
     for (int s = 0; s < S->n; s++) {
         int neg = opt_isotropic_simplex_hessian(t->energy, S, s, X, project, &e, g, H);
-        if (neg < 0)
-            return err_set(err, SCAF_ERR_NUMERIC,
-                           "Newton: simplex %d is inverted or degenerate (signed volume %g)", s,
-                           opt_signed_volume(S, s, X));
+        if (neg < 0) return inverted(S, s, X, err);
         clamped += neg > 0;
         energy += e;
         const int *ix = S->idx + (size_t)s * nc;

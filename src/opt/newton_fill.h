@@ -33,7 +33,8 @@ typedef struct opt_newton_fill_stats {
  * first). b's pattern must have been built for t->s under dof. st may be
  * NULL. Fails with SCAF_ERR_NUMERIC naming
  * the first simplex that is inverted or degenerate at X (values are then
- * partial: do not factor them). */
+ * partial: do not factor them). Big sets run in base/parallel's threads;
+ * values, rhs and stats are the serial fill's, bit for bit, for any count. */
 scaf_status opt_newton_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,
                                   const double *X, int project, double *rhs,
                                   opt_newton_fill_stats *st, scaf_error *err);

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/parallel.h"
 #include "geom/predicates.h"
 #include "opt/flip_free_step.h"
 #include "opt/newton_fill.h"
@@ -41,17 +42,16 @@ static double simplex_energy(const opt_obj_term *t, const double *X)
 }
 
 /* sum weight * density and sum weight * <dE/dJ, J(D)> (J is linear in
- * positions), added to the running sums. */
-static void simplex_energy_slope(const opt_obj_term *t, const double *X, const double *D,
-                                 double *energy, double *slope)
+ * positions) over simplices [lo, hi), added to the running sums e, slope. */
+static void energy_slope_range(const opt_simplex_term *st, const double *X, const double *D,
+                               size_t lo, size_t hi, double *energy, double *slope)
 {
-    const opt_simplex_term *st = t->self;
     const opt_simplices *S = st->S;
     int d = S->d;
     double acc = *slope, e = *energy, J[9], G[9], JD[9];
-    for (int s = 0; s < S->n; s++) {
-        opt_jacobian(S, s, X, J);
-        opt_jacobian(S, s, D, JD);
+    for (size_t s = lo; s < hi; s++) {
+        opt_jacobian(S, (int)s, X, J);
+        opt_jacobian(S, (int)s, D, JD);
         double v = opt_density_grad(st->energy, d, J, G);
         double dot = 0;
         for (int q = 0; q < d * d; q++) dot += G[q] * JD[q];
@@ -60,6 +60,44 @@ static void simplex_energy_slope(const opt_obj_term *t, const double *X, const d
     }
     *energy = e;
     *slope = acc;
+}
+
+/* One chunk: the serial loop, continuing the running sums. More: each
+ * chunk sums from 0 and the partials are added in chunk order
+ * (base/parallel). */
+typedef struct slope_job {
+    const opt_simplex_term *st;
+    const double *X, *D;
+    size_t n;
+    int nc;
+    double pe[PAR_MAX_CHUNKS], ps[PAR_MAX_CHUNKS];
+    int ok[PAR_MAX_CHUNKS];
+} slope_job;
+
+static void slope_chunk(void *ctx, int k)
+{
+    slope_job *j = ctx;
+    j->pe[k] = j->ps[k] = 0;
+    energy_slope_range(j->st, j->X, j->D, par_chunk_begin(j->n, j->nc, k),
+                       par_chunk_begin(j->n, j->nc, k + 1), &j->pe[k], &j->ps[k]);
+}
+
+static void simplex_energy_slope(const opt_obj_term *t, const double *X, const double *D,
+                                 double *energy, double *slope)
+{
+    const opt_simplex_term *st = t->self;
+    size_t n = (size_t)st->S->n;
+    int nc = par_chunks(n);
+    if (nc == 1) {
+        energy_slope_range(st, X, D, 0, n, energy, slope);
+        return;
+    }
+    slope_job j = {.st = st, .X = X, .D = D, .n = n, .nc = nc};
+    par_run(nc, slope_chunk, &j);
+    for (int k = 0; k < nc; k++) {
+        *energy += j.pe[k];
+        *slope += j.ps[k];
+    }
 }
 
 static scaf_status simplex_pattern(opt_obj_term *t, const int *dof, int nfree, scaf_error *err)
@@ -84,14 +122,13 @@ static double simplex_max_step(const opt_obj_term *t, const double *X, const dou
     return opt_max_step(st->S, X, D);
 }
 
-/* Every simplex strictly positively oriented at X, decided exactly. */
-static int simplex_valid(const opt_obj_term *t, const double *X)
+/* Whether simplices [lo, hi) are all strictly positively oriented at X
+ * (exact predicates). */
+static int valid_range(const opt_simplices *S, const double *X, size_t lo, size_t hi)
 {
-    const opt_simplex_term *st = t->self;
-    const opt_simplices *S = st->S;
     int d = S->d;
-    for (int s = 0; s < S->n; s++) {
-        const int *ix = S->idx + (size_t)s * (d + 1);
+    for (size_t s = lo; s < hi; s++) {
+        const int *ix = S->idx + s * (d + 1);
         int ok;
         if (d == 2)
             ok = orient2d(X + 2 * (size_t)ix[0], X + 2 * (size_t)ix[1], X + 2 * (size_t)ix[2]) > 0;
@@ -100,6 +137,28 @@ static int simplex_valid(const opt_obj_term *t, const double *X)
                           X + 3 * (size_t)ix[3]) < 0;
         if (!ok) return 0;
     }
+    return 1;
+}
+
+/* Every simplex strictly positively oriented at X, decided exactly; the
+ * chunks in parallel (an exact yes/no: no order to keep). */
+static void valid_chunk(void *ctx, int k)
+{
+    slope_job *j = ctx; /* X, n, nc and ok only */
+    j->ok[k] = valid_range(j->st->S, j->X, par_chunk_begin(j->n, j->nc, k),
+                           par_chunk_begin(j->n, j->nc, k + 1));
+}
+
+static int simplex_valid(const opt_obj_term *t, const double *X)
+{
+    const opt_simplex_term *st = t->self;
+    size_t n = (size_t)st->S->n;
+    int nc = par_chunks(n);
+    if (nc == 1) return valid_range(st->S, X, 0, n);
+    slope_job j = {.st = st, .X = X, .n = n, .nc = nc};
+    par_run(nc, valid_chunk, &j);
+    for (int k = 0; k < nc; k++)
+        if (!j.ok[k]) return 0;
     return 1;
 }
 

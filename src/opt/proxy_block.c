@@ -11,9 +11,12 @@
  */
 #include "opt/proxy_block.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "base/parallel.h"
 
 int opt_dof_numbering(int nv, const unsigned char *fixed, int *dof)
 {
@@ -266,11 +269,21 @@ void opt_proxy_block_add_diagonal(opt_proxy_block *b, int k, double w)
     for (int a = 0; a < b->d; a++) b->A.val[b->A.colptr[k * b->d + a + 1] - 1] += w;
 }
 
+/* <G row i, G row j> (rows of d), summed in order. */
+static inline double dot_rows(const double *G, int i, int j, int d)
+{
+    double gg = 0;
+    for (int q = 0; q < d; q++) gg += G[i * d + q] * G[j * d + q];
+    return gg;
+}
+
 /* Accumulate one simplex: coefficient matrix M (d by d, symmetric) and
- * per-corner linear terms lin ((d+1) by d). */
+ * per-corner linear terms lin ((d+1) by d); only into the columns and rhs
+ * entries of free vertices with dofs in [lo, hi) (a thread's share of a
+ * parallel fill; the serial fill passes everything). */
 static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
                              const double *X, const double *M, const double *lin, double *rhs,
-                             int d)
+                             int d, int lo, int hi)
 {
     int nc = d + 1, P = (d + 1) * (d + 2) / 2;
     const int *ix = S->idx + (size_t)s * nc;
@@ -281,20 +294,19 @@ static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, 
     double *val = b->A.val;
     for (int i = 0; i < nc; i++) {
         int di = dof[ix[i]];
-        if (di >= 0)
+        if (di >= lo && di < hi)
             for (int a = 0; a < d; a++) rhs[(size_t)di * d + a] += w * lin[i * d + a];
     }
     int p = 0;
     for (int i = 0; i < nc; i++)
         for (int j = i; j < nc; j++, p++) {
-            double gg = 0;
-            for (int q = 0; q < d; q++) gg += G[i * d + q] * G[j * d + q];
-            double c = w * gg;
             int di = dof[ix[i]], dj = dof[ix[j]];
             if (mp[p] < 0) {
                 /* One corner fixed: its coupling moves to the right side. */
                 if (i == j || (di < 0 && dj < 0)) continue;
                 int fr = di >= 0 ? di : dj;
+                if (fr < lo || fr >= hi) continue;
+                double c = w * dot_rows(G, i, j, d);
                 const double *xf = X + (size_t)ix[di >= 0 ? j : i] * d;
                 for (int a = 0; a < d; a++) {
                     double acc = 0;
@@ -304,6 +316,8 @@ static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, 
                 continue;
             }
             int col = di > dj ? di : dj, row = di < dj ? di : dj;
+            if (col < lo || col >= hi) continue;
+            double c = w * dot_rows(G, i, j, d);
             int k = mp[p] - b->vcolptr[col];
             if (row != col) {
                 for (int a2 = 0; a2 < d; a2++) {
@@ -325,10 +339,11 @@ static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, 
  * compiler unrolls the small loops; the operations and their order are
  * unchanged, so results are bit-identical). */
 static void scatter(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
-                    const double *X, const double *M, const double *lin, double *rhs)
+                    const double *X, const double *M, const double *lin, double *rhs, int lo,
+                    int hi)
 {
-    if (S->d == 2) scatter_d(b, S, s, dof, X, M, lin, rhs, 2);
-    else scatter_d(b, S, s, dof, X, M, lin, rhs, S->d);
+    if (S->d == 2) scatter_d(b, S, s, dof, X, M, lin, rhs, 2, lo, hi);
+    else scatter_d(b, S, s, dof, X, M, lin, rhs, S->d, lo, hi);
 }
 
 /* SLIM proxy of simplex s: M = W^T W, lin = M T G^T per corner; returns w^2. */
@@ -362,18 +377,118 @@ void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,
     opt_proxy_block_fill_capped(b, t, dof, X, rhs, INFINITY);
 }
 
+void opt_proxy_block_ranges(const opt_proxy_block *b, int nc, int *cb)
+{
+    int nf = b->nfree;
+    long long tot = nf > 0 ? b->vcolptr[nf] : 0;
+    int c = 0;
+    cb[0] = 0;
+    for (int k = 1; k < nc; k++) {
+        long long target = tot * k / nc;
+        while (c < nf && b->vcolptr[c] < target) c++;
+        cb[k] = c;
+    }
+    cb[nc] = INT_MAX; /* the last range takes every dof above */
+}
+
+int opt_proxy_block_touches(const opt_simplices *S, int s, const int *dof, int lo, int hi)
+{
+    const int *ix = S->idx + (size_t)s * (S->d + 1);
+    for (int i = 0; i <= S->d; i++)
+        if (dof[ix[i]] >= lo && dof[ix[i]] < hi) return 1;
+    return 0;
+}
+
+/* Simplices per batch of a parallel fill: its scratch (21 doubles per
+ * simplex in 3D, 10 in 2D) stays at a few MB whatever the mesh. */
+#define FILL_BATCH 32768
+
+typedef struct fill_job {
+    opt_proxy_block *b;
+    const opt_term *t;
+    const int *dof;
+    const double *X;
+    double *rhs, w2_cap;
+    double *loc; /* per simplex of the batch: M (d*d), then lin ((d+1)*d) */
+    size_t b0, m;
+    int ml, nc;
+    int cb[PAR_MAX_CHUNKS + 1];
+    double w2k[PAR_MAX_CHUNKS];
+} fill_job;
+
+/* Chunk k of the batch: M and lin of its simplices. */
+static void fill_compute(void *ctx, int k)
+{
+    fill_job *j = ctx;
+    int d = j->t->s->d;
+    size_t hi = j->b0 + par_chunk_begin(j->m, j->nc, k + 1);
+    for (size_t s = j->b0 + par_chunk_begin(j->m, j->nc, k); s < hi; s++) {
+        double *M = j->loc + (s - j->b0) * j->ml, *lin = M + d * d;
+        double w2 = d == 2 ? proxy_d(j->t, (int)s, j->X, j->w2_cap, M, lin, 2)
+                           : proxy_d(j->t, (int)s, j->X, j->w2_cap, M, lin, d);
+        if (w2 > j->w2k[k]) j->w2k[k] = w2;
+    }
+}
+
+/* Range k of columns: every simplex of the batch that touches it. */
+static void fill_scatter(void *ctx, int k)
+{
+    fill_job *j = ctx;
+    const opt_simplices *S = j->t->s;
+    int d = S->d, lo = j->cb[k], hi = j->cb[k + 1];
+    for (size_t s = j->b0; s < j->b0 + j->m; s++) {
+        if (!opt_proxy_block_touches(S, (int)s, j->dof, lo, hi)) continue;
+        const double *M = j->loc + (s - j->b0) * j->ml;
+        scatter(j->b, S, (int)s, j->dof, j->X, M, M + d * d, j->rhs, lo, hi);
+    }
+}
+
+/* The SLIM fill with nc > 1 chunks (base/parallel), simplices in batches:
+ * the chunks compute their simplices' M and lin (the SVDs: most of the
+ * work) into a scratch, then each thread scatters the whole batch into its
+ * own columns and rhs entries (opt_proxy_block_ranges). Every value still
+ * receives its terms in simplex order, so the result is the serial fill's
+ * bit for bit, for any thread count. Returns -1 (nothing done) when the
+ * scratch cannot be had; the caller then fills serially. */
+static double fill_parallel(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
+                            double *rhs, double w2_cap, int nc)
+{
+    int d = t->s->d;
+    size_t n = (size_t)t->s->n;
+    fill_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .w2_cap = w2_cap, .nc = nc};
+    j.ml = d * d + (d + 1) * d;
+    j.loc = malloc((size_t)FILL_BATCH * j.ml * sizeof *j.loc);
+    if (!j.loc) return -1.0;
+    memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
+    opt_proxy_block_ranges(b, nc, j.cb);
+    for (j.b0 = 0; j.b0 < n; j.b0 += FILL_BATCH) {
+        j.m = n - j.b0 < FILL_BATCH ? n - j.b0 : FILL_BATCH;
+        par_run(nc, fill_compute, &j);
+        par_run(nc, fill_scatter, &j);
+    }
+    free(j.loc);
+    double w2max = 0;
+    for (int k = 0; k < nc; k++)
+        if (j.w2k[k] > w2max) w2max = j.w2k[k];
+    return w2max;
+}
+
 double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const int *dof,
                                    const double *X, double *rhs, double w2_cap)
 {
     const opt_simplices *S = t->s;
-    int d = S->d;
+    int d = S->d, nc = par_chunks((size_t)S->n);
+    if (nc > 1) {
+        double w2max = fill_parallel(b, t, dof, X, rhs, w2_cap, nc);
+        if (w2max >= 0) return w2max;
+    }
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
     double M[9], lin[12], w2max = 0;
     for (int s = 0; s < S->n; s++) {
         double w2 =
             d == 2 ? proxy_d(t, s, X, w2_cap, M, lin, 2) : proxy_d(t, s, X, w2_cap, M, lin, d);
         if (w2 > w2max) w2max = w2;
-        scatter(b, S, s, dof, X, M, lin, rhs);
+        scatter(b, S, s, dof, X, M, lin, rhs, 0, INT_MAX);
     }
     return w2max;
 }
@@ -385,11 +500,17 @@ void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, 
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
     double M[9] = {0}, lin[12] = {0};
     for (int a = 0; a < d; a++) M[a * d + a] = 1.0;
-    for (int s = 0; s < S->n; s++) scatter(b, S, s, dof, X, M, lin, rhs);
+    for (int s = 0; s < S->n; s++) scatter(b, S, s, dof, X, M, lin, rhs, 0, INT_MAX);
 }
 
 void opt_proxy_block_add_local(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
                                const double *K)
+{
+    opt_proxy_block_add_local_range(b, S, s, dof, K, 0, INT_MAX);
+}
+
+void opt_proxy_block_add_local_range(opt_proxy_block *b, const opt_simplices *S, int s,
+                                     const int *dof, const double *K, int lo, int hi)
 {
     int d = S->d, nc = d + 1, nd = nc * d, P = (d + 1) * (d + 2) / 2;
     const int *ix = S->idx + (size_t)s * nc;
@@ -404,6 +525,7 @@ void opt_proxy_block_add_local(opt_proxy_block *b, const opt_simplices *S, int s
             /* The stored block couples row vertex min(di, dj) with column
              * vertex max(di, dj): corner r gives its rows, corner c its columns. */
             int r = di <= dj ? i : j, c = di <= dj ? j : i, col = di > dj ? di : dj;
+            if (col < lo || col >= hi) continue;
             int k = mp[p] - b->vcolptr[col];
             for (int a2 = 0; a2 < d; a2++) {
                 double *v = val + cp[col * d + a2] + k * d;

@@ -85,7 +85,9 @@ void opt_proxy_block_add_diagonal(opt_proxy_block *b, int k, double w);
 /* Fill values with the SLIM proxy of term t at positions X (#X by d):
  * per simplex the signed SVD of J, weights W and targets T
  * (opt_slim_proxy). rhs (nfree*d) is ACCUMULATED into (zero it first).
- * t->s must be the simplex set the pattern was built for. */
+ * t->s must be the simplex set the pattern was built for. Big sets run in
+ * base/parallel's threads; the values are the serial fill's, bit for bit,
+ * whatever the thread count. */
 void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
                           double *rhs);
 
@@ -109,5 +111,20 @@ void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, 
  * are then steps of the free vertices, which fixed ones do not take. */
 void opt_proxy_block_add_local(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
                                const double *K);
+
+/* The same, only into the columns of free vertices with dofs in [lo, hi)
+ * (a thread's share of a parallel fill). */
+void opt_proxy_block_add_local_range(opt_proxy_block *b, const opt_simplices *S, int s,
+                                     const int *dof, const double *K, int lo, int hi);
+
+/* Split the block's vertex columns into nc ranges [cb[k], cb[k+1]) of about
+ * equal numbers of entries (cb: nc + 1 values, cb[nc] = INT_MAX), one per
+ * thread of a parallel fill: a thread writes only its columns and the rhs
+ * entries of its dofs, so no two threads write the same value and each
+ * value receives its terms in simplex order. */
+void opt_proxy_block_ranges(const opt_proxy_block *b, int nc, int *cb);
+
+/* Whether simplex s of S has a corner with a dof in [lo, hi). */
+int opt_proxy_block_touches(const opt_simplices *S, int s, const int *dof, int lo, int hi);
 
 #endif /* SCAF_OPT_PROXY_BLOCK_H */

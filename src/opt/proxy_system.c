@@ -11,6 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/parallel.h"
+
 static void release_union(opt_proxy_system *sys)
 {
     free(sys->vcolptr);
@@ -72,6 +74,54 @@ static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *con
                                          err); /* summed values overwrite */
 }
 
+typedef struct sum_job {
+    opt_proxy_system *sys;
+    const opt_proxy_block *const *bl;
+    int nb, nc;
+    int cb[PAR_MAX_CHUNKS + 1]; /* vertex columns of each range */
+} sum_job;
+
+/* The first column c with vcolptr[c] >= target (nfree if none). */
+static int column_at(const int *vcolptr, int nfree, long long target)
+{
+    int lo = 0, hi = nfree;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (vcolptr[mid] < target) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* Sum the blocks' values into columns [cb[r], cb[r+1]) of the union, block
+ * after block: each value gets its terms in block order whatever the
+ * ranges, so any thread count gives the serial sums. */
+static void sum_range(void *ctx, int r)
+{
+    sum_job *j = ctx;
+    opt_proxy_system *sys = j->sys;
+    int d = sys->d, c0 = j->cb[r], c1 = j->cb[r + 1];
+    opt_csc *A = &sys->A;
+    size_t v0 = (size_t)A->colptr[c0 * d], v1 = (size_t)A->colptr[c1 * d];
+    memset(A->val + v0, 0, (v1 - v0) * sizeof *A->val);
+    for (int k = 0; k < j->nb; k++) {
+        const opt_proxy_block *b = j->bl[k];
+        int end = c1 < b->nfree ? c1 : b->nfree;
+        for (int c = c0; c < end; c++)
+            for (int e = b->vcolptr[c]; e < b->vcolptr[c + 1]; e++) {
+                int u = sys->emap[k][e];
+                int kb = e - b->vcolptr[c], ku = u - sys->vcolptr[c];
+                int top = b->vrowidx[e] == c;
+                for (int a2 = 0; a2 < d; a2++) {
+                    const double *src = b->A.val + b->A.colptr[c * d + a2] + kb * d;
+                    double *dst = A->val + A->colptr[c * d + a2] + ku * d;
+                    int m = top ? a2 + 1 : d;
+                    for (int a = 0; a < m; a++) dst[a] += src[a];
+                }
+            }
+    }
+}
+
 scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *const *bl, int nb,
                                  scaf_error *err)
 {
@@ -115,24 +165,11 @@ scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *c
         sys->seen[k] = bl[k]->version;
     }
     if (nb == 1) return SCAF_OK;
-    /* Sum values. */
-    int d = sys->d;
-    opt_csc *A = &sys->A;
-    memset(A->val, 0, (size_t)A->nnz * sizeof *A->val);
-    for (int k = 0; k < nb; k++) {
-        const opt_proxy_block *b = bl[k];
-        for (int c = 0; c < b->nfree; c++)
-            for (int e = b->vcolptr[c]; e < b->vcolptr[c + 1]; e++) {
-                int u = sys->emap[k][e];
-                int kb = e - b->vcolptr[c], ku = u - sys->vcolptr[c];
-                int top = b->vrowidx[e] == c;
-                for (int a2 = 0; a2 < d; a2++) {
-                    const double *src = b->A.val + b->A.colptr[c * d + a2] + kb * d;
-                    double *dst = A->val + A->colptr[c * d + a2] + ku * d;
-                    int m = top ? a2 + 1 : d;
-                    for (int a = 0; a < m; a++) dst[a] += src[a];
-                }
-            }
-    }
+    sum_job j = {sys, bl, nb, par_chunks((size_t)sys->vcolptr[nfree]), {0}};
+    for (int k = 0; k <= j.nc; k++) /* column ranges of about equal entries */
+        j.cb[k] = k == j.nc
+            ? nfree
+            : column_at(sys->vcolptr, nfree, (long long)sys->vcolptr[nfree] * k / j.nc);
+    par_run(j.nc, sum_range, &j);
     return SCAF_OK;
 }

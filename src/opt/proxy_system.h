@@ -36,7 +36,8 @@ void opt_proxy_system_free(opt_proxy_system *sys);
 /* Sum blocks[0..nblocks) (same d, nblocks <= OPT_PROXY_MAX_BLOCKS) into
  * sys->A, of dimension max(block nfree) * d (a block with a smaller nfree
  * covers the leading unknowns). Blocks must stay alive and unmoved while
- * sys->A is used. */
+ * sys->A is used. The values are summed in base/parallel's threads, each
+ * over its own columns, block after block: the serial sums for any count. */
 scaf_status opt_proxy_system_sum(opt_proxy_system *sys, const opt_proxy_block *const *blocks,
                                  int nblocks, scaf_error *err);
 

@@ -1,5 +1,8 @@
 /* End-to-end: `--threads N` of `scaf param` and `scaf atlas`
- * (tools/cli_threads). The same N gives the same bytes run after run;
+ * (tools/cli_threads). The same N gives the same bytes run after run
+ * (scaf's own loops over simplices and the BLAS both run in N threads);
+ * N = 1 and N = 2 both give bijective maps whose energies agree to
+ * round-off;
  * --threads wins over OPENBLAS_NUM_THREADS in both directions, so
  * --threads 1 writes what the one-thread program wrote before (with
  * OPENBLAS_NUM_THREADS=1 and no option); N < 1 or a non-number is a usage
@@ -14,6 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
+
+#include <math.h>
 
 #include "support/support.h"
 
@@ -41,6 +46,31 @@ static char *run_out(const threads_case *c, const char *in, const char *tag, con
     return s;
 }
 
+/* `scaf CMD in -o TAG.obj CAPS --threads N --report`: whether `scaf check`
+ * calls the output bijective (exit 0), and the report's final energy. */
+static double checked_energy(const threads_case *c, const char *in, int threads)
+{
+    char out[512], rep[512], name[256];
+    snprintf(name, sizeof name, "e2e_threads_%s_e%d.obj", c->name, threads);
+    test_tmp_path(name, out, sizeof out);
+    snprintf(name, sizeof name, "e2e_threads_%s_e%d.json", c->name, threads);
+    test_tmp_path(name, rep, sizeof rep);
+    assert_int_equal(test_run("OPENBLAS_NUM_THREADS=1 %s %s %s -o %s %s --threads %d --report %s "
+                              "--quiet",
+                              SCAF_BINARY, c->cmd, in, out, c->caps, threads, rep),
+                     0);
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    char *json = test_slurp(rep);
+    assert_non_null(json);
+    const char *key = strstr(json, "\"final_energy\":");
+    assert_non_null(key);
+    double e = strtod(key + strlen("\"final_energy\":"), NULL);
+    free(json);
+    remove(out);
+    remove(rep);
+    return e;
+}
+
 static void run_threads_case(const threads_case *c)
 {
     char in[512], out[512], name[256];
@@ -56,6 +86,8 @@ static void run_threads_case(const threads_case *c)
     char *one_env = run_out(c, in, "1env", "OPENBLAS_NUM_THREADS=1", "");
     char *one = run_out(c, in, "1", "OPENBLAS_NUM_THREADS=2", "--threads 1");
     assert_string_equal(one, one_env);
+    double e1 = checked_energy(c, in, 1), e2 = checked_energy(c, in, 2);
+    assert_true(e1 > 0 && fabs(e1 - e2) <= 1e-9 * e1);
     free(two_a);
     free(two_b);
     free(two_env);

@@ -1,0 +1,122 @@
+/* base/parallel: see parallel.h.
+ *
+ * A job is (fn, ctx, nc) and a counter of chunks handed out; the caller
+ * and every awake worker take chunks from the counter until none is left.
+ * A worker joins a job under the pool's mutex and leaves it under the
+ * mutex; the next job is published only when every worker has left the
+ * previous one, so a late worker never runs a new job's chunks with an old
+ * job's function. The caller waits until all nc chunks have finished.
+ */
+#include "base/parallel.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+
+static atomic_int threads = 1;
+
+void par_set_threads(int n) { atomic_store(&threads, n < 1 ? 1 : n); }
+
+int par_threads(void) { return atomic_load(&threads); }
+
+int par_chunks(size_t n)
+{
+    int t = par_threads();
+    if (t > PAR_MAX_CHUNKS) t = PAR_MAX_CHUNKS;
+    size_t most = n / PAR_MIN_CHUNK;
+    if (most < 1) return 1;
+    return most < (size_t)t ? (int)most : t;
+}
+
+static struct {
+    pthread_mutex_t mu; /* guards the fields up to `active` */
+    pthread_cond_t wake, done;
+    unsigned long gen; /* job number */
+    par_fn fn;
+    void *ctx;
+    int nc;
+    int active;       /* workers inside the current job */
+    int nworkers;     /* started (only the job's caller starts more) */
+    atomic_int next;  /* next chunk to hand out */
+    atomic_int ended; /* chunks finished */
+} pool = {.mu = PTHREAD_MUTEX_INITIALIZER,
+          .wake = PTHREAD_COND_INITIALIZER,
+          .done = PTHREAD_COND_INITIALIZER};
+
+/* One job at a time in the pool. */
+static pthread_mutex_t busy = PTHREAD_MUTEX_INITIALIZER;
+
+static void take_chunks(par_fn fn, void *ctx, int nc)
+{
+    int k;
+    while ((k = atomic_fetch_add(&pool.next, 1)) < nc) {
+        fn(ctx, k);
+        if (atomic_fetch_add(&pool.ended, 1) + 1 == nc) {
+            pthread_mutex_lock(&pool.mu);
+            pthread_cond_broadcast(&pool.done);
+            pthread_mutex_unlock(&pool.mu);
+        }
+    }
+}
+
+static void *worker(void *arg)
+{
+    unsigned long seen = (unsigned long)(size_t)arg;
+    pthread_mutex_lock(&pool.mu);
+    for (;;) {
+        while (pool.gen == seen) pthread_cond_wait(&pool.wake, &pool.mu);
+        seen = pool.gen;
+        par_fn fn = pool.fn;
+        void *ctx = pool.ctx;
+        int nc = pool.nc;
+        pool.active++;
+        pthread_mutex_unlock(&pool.mu);
+        take_chunks(fn, ctx, nc);
+        pthread_mutex_lock(&pool.mu);
+        if (--pool.active == 0) pthread_cond_broadcast(&pool.done);
+    }
+    return NULL;
+}
+
+/* Start workers up to `want` (called with `busy` held); fewer when the
+ * system refuses threads: the caller then takes more chunks itself. */
+static void grow(int want)
+{
+    while (pool.nworkers < want) {
+        pthread_attr_t at;
+        pthread_t t;
+        if (pthread_attr_init(&at) != 0) return;
+        pthread_attr_setdetachstate(&at, PTHREAD_CREATE_DETACHED);
+        pthread_mutex_lock(&pool.mu);
+        unsigned long gen = pool.gen;
+        pthread_mutex_unlock(&pool.mu);
+        int ok = pthread_create(&t, &at, worker, (void *)(size_t)gen) == 0;
+        pthread_attr_destroy(&at);
+        if (!ok) return;
+        pool.nworkers++;
+    }
+}
+
+void par_run(int nc, par_fn fn, void *ctx)
+{
+    if (nc <= 1 || pthread_mutex_trylock(&busy) != 0) {
+        for (int k = 0; k < nc; k++) fn(ctx, k);
+        return;
+    }
+    int t = par_threads();
+    grow((nc < t ? nc : t) - 1);
+    pthread_mutex_lock(&pool.mu);
+    while (pool.active > 0) pthread_cond_wait(&pool.done, &pool.mu);
+    pool.fn = fn;
+    pool.ctx = ctx;
+    pool.nc = nc;
+    atomic_store(&pool.next, 0);
+    atomic_store(&pool.ended, 0);
+    pool.gen++;
+    pthread_cond_broadcast(&pool.wake);
+    pthread_mutex_unlock(&pool.mu);
+    take_chunks(fn, ctx, nc);
+    pthread_mutex_lock(&pool.mu);
+    while (atomic_load(&pool.ended) < nc) pthread_cond_wait(&pool.done, &pool.mu);
+    pthread_mutex_unlock(&pool.mu);
+    pthread_mutex_unlock(&busy);
+}

@@ -1,0 +1,53 @@
+/* base/parallel: the thread count of scaf's own loops over simplices
+ * (energies, the line search's bound and checks, the proxy and Newton
+ * fills), how such a loop is cut into chunks, and the threads that run
+ * the chunks.
+ *
+ * Results must not depend on scheduling: a loop over n items is cut into
+ * par_chunks(n) contiguous chunks, a function of n and the thread count
+ * only; each chunk's partial result (a sum, a minimum) is kept apart and
+ * the partials are combined in chunk order. One chunk is the serial loop,
+ * so one thread gives the serial numbers bit for bit. Which thread runs
+ * which chunk does not matter.
+ *
+ * The threads are a small pool of POSIX threads, started on first use and
+ * kept; idle, they sleep on a condition variable. Not OpenMP: libgomp's
+ * idle threads spin (its wait policy is fixed when the library loads), and
+ * spinning threads took the cores from the serial parts and from OpenBLAS
+ * on a busy 2-core machine (assembly 3x slower at two threads,
+ * bench/RESULTS-param.md, session 6). One loop runs in the pool at a time;
+ * a loop started while another runs (two handles in two threads) runs its
+ * chunks in its own thread, with the same results.
+ */
+#ifndef SCAF_BASE_PARALLEL_H
+#define SCAF_BASE_PARALLEL_H
+
+#include <stddef.h>
+
+/* Fewer items than this per chunk are not worth a thread (waking one costs
+ * tens of microseconds; a simplex costs ~0.1-1 us). */
+#define PAR_MIN_CHUNK 4096
+/* At most this many chunks (partials live in arrays of this size). */
+#define PAR_MAX_CHUNKS 64
+
+/* Process-wide; n < 1 counts as 1. Until set: 1. */
+void par_set_threads(int n);
+int par_threads(void);
+
+/* Chunks for a loop of n items: min(threads, n / PAR_MIN_CHUNK,
+ * PAR_MAX_CHUNKS), at least 1. */
+int par_chunks(size_t n);
+
+/* First item of chunk k of nc over n items (chunk k is [begin(k), begin(k+1))). */
+static inline size_t par_chunk_begin(size_t n, int nc, int k)
+{
+    return (size_t)((unsigned long long)n * (unsigned long long)k / (unsigned long long)nc);
+}
+
+/* Run fn(ctx, k) for every k in [0, nc), in up to min(nc, threads) threads
+ * (the caller's among them); returns when all have returned. fn must not
+ * depend on which thread runs it. */
+typedef void (*par_fn)(void *ctx, int k);
+void par_run(int nc, par_fn fn, void *ctx);
+
+#endif /* SCAF_BASE_PARALLEL_H */
