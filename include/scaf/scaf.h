@@ -137,7 +137,9 @@ typedef struct scaf_options {
     double tolerance;        /* convergence test: stop when the estimated
                                 relative distance of the minimized mesh
                                 energy to its minimum, (E - E_min) / E, is
-                                below this (SCAF_STOP_CONVERGED). The
+                                below this (SCAF_STOP_CONVERGED; ARAP,
+                                whose minimum can be 0: (E - E_min) /
+                                (E + 1), E per unit of area). The
                                 estimate (the iteration's `criterion`) is
                                 the larger of the Newton decrement of the
                                 last step and the linear tail
