@@ -9,6 +9,7 @@
  */
 #include "base/parallel.h"
 
+#include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
 
@@ -119,4 +120,45 @@ void par_run(int nc, par_fn fn, void *ctx)
     while (atomic_load(&pool.ended) < nc) pthread_cond_wait(&pool.done, &pool.mu);
     pthread_mutex_unlock(&pool.mu);
     pthread_mutex_unlock(&busy);
+}
+
+/* ---- reductions ------------------------------------------------------------ */
+
+typedef struct range_job {
+    par_range_fn range;
+    const void *ctx;
+    size_t n;
+    int nc;
+    double part[PAR_MAX_CHUNKS];
+} range_job;
+
+static void range_chunk(void *ctx, int k)
+{
+    range_job *j = ctx;
+    j->part[k] =
+        j->range(j->ctx, par_chunk_begin(j->n, j->nc, k), par_chunk_begin(j->n, j->nc, k + 1));
+}
+
+/* Runs the chunks; their results in j->part[0 .. j->nc). */
+static void run_ranges(range_job *j) { par_run(j->nc, range_chunk, j); }
+
+double par_sum(size_t n, par_range_fn range, const void *ctx)
+{
+    range_job j = {range, ctx, n, par_chunks(n), {0}};
+    if (j.nc == 1) return range(ctx, 0, n);
+    run_ranges(&j);
+    double acc = 0;
+    for (int k = 0; k < j.nc; k++) acc += j.part[k];
+    return acc;
+}
+
+double par_min(size_t n, par_range_fn range, const void *ctx)
+{
+    range_job j = {range, ctx, n, par_chunks(n), {0}};
+    if (j.nc == 1) return range(ctx, 0, n);
+    run_ranges(&j);
+    double best = INFINITY; /* (a NaN chunk is skipped, as in a serial min) */
+    for (int k = 0; k < j.nc; k++)
+        if (j.part[k] < best) best = j.part[k];
+    return best;
 }

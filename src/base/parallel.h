@@ -50,4 +50,12 @@ static inline size_t par_chunk_begin(size_t n, int nc, int k)
 typedef void (*par_fn)(void *ctx, int k);
 void par_run(int nc, par_fn fn, void *ctx);
 
+/* A loop over n items whose result is range(ctx, lo, hi) of its items
+ * [lo, hi), run over par_chunks(n) chunks with par_run: par_sum adds the
+ * chunks' results in chunk order (from 0), par_min takes their minimum.
+ * One chunk: range(ctx, 0, n), the serial loop. */
+typedef double (*par_range_fn)(const void *ctx, size_t lo, size_t hi);
+double par_sum(size_t n, par_range_fn range, const void *ctx);
+double par_min(size_t n, par_range_fn range, const void *ctx);
+
 #endif /* SCAF_BASE_PARALLEL_H */

@@ -328,33 +328,22 @@ static double energy_range(const opt_term *t, const double *X, size_t lo, size_t
     return acc;
 }
 
-typedef struct energy_job {
+typedef struct energy_ctx {
     const opt_term *t;
     const double *X;
-    size_t n;
-    int nc;
-    double part[PAR_MAX_CHUNKS];
-} energy_job;
+} energy_ctx;
 
-static void energy_chunk(void *ctx, int k)
+static double energy_chunk(const void *ctx, size_t lo, size_t hi)
 {
-    energy_job *j = ctx;
-    j->part[k] = energy_range(j->t, j->X, par_chunk_begin(j->n, j->nc, k),
-                              par_chunk_begin(j->n, j->nc, k + 1));
+    const energy_ctx *c = ctx;
+    return energy_range(c->t, c->X, lo, hi);
 }
 
 /* Chunked (base/parallel): partial sums added in chunk order. */
 double opt_term_energy(const opt_term *t, const double *X)
 {
-    size_t n = (size_t)t->s->n;
-    int nc = par_chunks(n);
-    if (nc == 1) return energy_range(t, X, 0, n);
-    energy_job j = {t, X, n, nc, {0}};
-    par_run(nc, energy_chunk, &j);
-    const double *part = j.part;
-    double acc = 0;
-    for (int k = 0; k < nc; k++) acc += part[k];
-    return acc;
+    energy_ctx c = {t, X};
+    return par_sum((size_t)t->s->n, energy_chunk, &c);
 }
 
 double opt_term_mean_energy(const opt_term *t, const double *X)

@@ -181,31 +181,19 @@ static double max_step_range(const opt_simplices *S, const double *X, const doub
 /* Chunks in parallel (base/parallel). A chunk's minimum is exact (a
  * skipped bisection only concerns roots above the chunk's running
  * minimum), so the minimum of the chunks' is the serial one, bit for bit. */
-typedef struct max_step_job {
+typedef struct max_step_ctx {
     const opt_simplices *S;
     const double *X, *D;
-    size_t n;
-    int nc;
-    double part[PAR_MAX_CHUNKS];
-} max_step_job;
+} max_step_ctx;
 
-static void max_step_chunk(void *ctx, int k)
+static double max_step_chunk(const void *ctx, size_t lo, size_t hi)
 {
-    max_step_job *j = ctx;
-    j->part[k] = max_step_range(j->S, j->X, j->D, par_chunk_begin(j->n, j->nc, k),
-                                par_chunk_begin(j->n, j->nc, k + 1));
+    const max_step_ctx *c = ctx;
+    return max_step_range(c->S, c->X, c->D, lo, hi);
 }
 
 double opt_max_step(const opt_simplices *S, const double *X, const double *D)
 {
-    size_t n = (size_t)S->n;
-    int nc = par_chunks(n);
-    if (nc == 1) return max_step_range(S, X, D, 0, n);
-    max_step_job j = {S, X, D, n, nc, {0}};
-    par_run(nc, max_step_chunk, &j);
-    const double *part = j.part;
-    double best = INFINITY;
-    for (int k = 0; k < nc; k++)
-        if (part[k] < best) best = part[k];
-    return best;
+    max_step_ctx c = {S, X, D};
+    return par_min((size_t)S->n, max_step_chunk, &c);
 }

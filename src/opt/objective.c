@@ -71,7 +71,6 @@ typedef struct slope_job {
     size_t n;
     int nc;
     double pe[PAR_MAX_CHUNKS], ps[PAR_MAX_CHUNKS];
-    int ok[PAR_MAX_CHUNKS];
 } slope_job;
 
 static void slope_chunk(void *ctx, int k)
@@ -141,25 +140,23 @@ static int valid_range(const opt_simplices *S, const double *X, size_t lo, size_
 }
 
 /* Every simplex strictly positively oriented at X, decided exactly; the
- * chunks in parallel (an exact yes/no: no order to keep). */
-static void valid_chunk(void *ctx, int k)
+ * chunks in parallel (each says 1 or 0: their minimum). */
+typedef struct valid_ctx {
+    const opt_simplices *S;
+    const double *X;
+} valid_ctx;
+
+static double valid_chunk(const void *ctx, size_t lo, size_t hi)
 {
-    slope_job *j = ctx; /* X, n, nc and ok only */
-    j->ok[k] = valid_range(j->st->S, j->X, par_chunk_begin(j->n, j->nc, k),
-                           par_chunk_begin(j->n, j->nc, k + 1));
+    const valid_ctx *c = ctx;
+    return valid_range(c->S, c->X, lo, hi);
 }
 
 static int simplex_valid(const opt_obj_term *t, const double *X)
 {
     const opt_simplex_term *st = t->self;
-    size_t n = (size_t)st->S->n;
-    int nc = par_chunks(n);
-    if (nc == 1) return valid_range(st->S, X, 0, n);
-    slope_job j = {.st = st, .X = X, .n = n, .nc = nc};
-    par_run(nc, valid_chunk, &j);
-    for (int k = 0; k < nc; k++)
-        if (!j.ok[k]) return 0;
-    return 1;
+    valid_ctx c = {st->S, X};
+    return par_min((size_t)st->S->n, valid_chunk, &c) > 0.0;
 }
 
 /* Newton uses the true weights: a softer proxy weight would change the

@@ -81,11 +81,45 @@ static void concurrent_callers(void **state)
     par_set_threads(1);
 }
 
+/* par_sum / par_min: every item counted once whatever the chunks; the
+ * minimum is the smallest chunk's; the sum is added in chunk order (the
+ * same bits as adding the chunks' results by hand in that order). */
+static double range_len(const void *ctx, size_t lo, size_t hi)
+{
+    (void)ctx;
+    return (double)(hi - lo) + 1.0 / (double)(lo + 3); /* order-sensitive bits */
+}
+
+static double range_lo(const void *ctx, size_t lo, size_t hi)
+{
+    (void)hi;
+    return (double)lo - *(const double *)ctx;
+}
+
+static void reductions(void **state)
+{
+    (void)state;
+    size_t n = 7 * (size_t)PAR_MIN_CHUNK + 5;
+    for (int t = 1; t <= 3; t++) {
+        par_set_threads(t);
+        int nc = par_chunks(n);
+        assert_int_equal(nc, t);
+        double want = 0;
+        for (int k = 0; k < nc; k++)
+            want += range_len(NULL, par_chunk_begin(n, nc, k), par_chunk_begin(n, nc, k + 1));
+        assert_true(par_sum(n, range_len, NULL) == want);
+        double shift = 2.5;
+        assert_true(par_min(n, range_lo, &shift) == -2.5);
+    }
+    par_set_threads(1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(many_jobs),
         cmocka_unit_test(concurrent_callers),
+        cmocka_unit_test(reductions),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
