@@ -23,6 +23,7 @@
 #include "base/parallel.h"
 #include "base/timer.h"
 #include "mesh/mesh_io.h"
+#include "mesh/topology.h"
 #include "opt/embed.h"
 #include "opt/newton_fill.h"
 #include "opt/objective.h"
@@ -32,55 +33,18 @@
 #define SCAF_DATA_DIR "../shared/data"
 #endif
 
-typedef struct dedge {
-    long long key;
-    int a, b;
-} dedge;
-
-static int cmp_dedge(const void *pa, const void *pb)
-{
-    const dedge *a = pa, *b = pb;
-    return (a->key > b->key) - (a->key < b->key);
-}
-
-/* The boundary loop of a single-boundary disk (as bench_factor), or 0. */
+/* The boundary loop of a single-boundary disk, in order (mesh/topology's
+ * ordered loop: faces on its left), or 0. */
 static int boundary_loop(const mesh *m, int *loop)
 {
-    size_t ne = 3 * (size_t)m->nf;
-    dedge *e = malloc(sizeof *e * ne);
-    int *next = malloc(sizeof(int) * (size_t)m->nv);
-    if (!e || !next) {
-        free(e);
-        free(next);
-        return 0;
-    }
-    for (int f = 0; f < m->nf; f++)
-        for (int j = 0; j < 3; j++) {
-            int a = m->F[3 * f + j], b = m->F[3 * f + (j + 1) % 3];
-            long long lo = a < b ? a : b, hi = a < b ? b : a;
-            e[3 * (size_t)f + j] = (dedge){lo * m->nv + hi, a, b};
-        }
-    qsort(e, ne, sizeof *e, cmp_dedge);
-    for (int v = 0; v < m->nv; v++) next[v] = -1;
-    int first = -1, nb = 0;
-    for (size_t i = 0; i < ne;) {
-        size_t j = i + 1;
-        while (j < ne && e[j].key == e[i].key) j++;
-        if (j - i == 1) {
-            next[e[i].a] = e[i].b;
-            first = e[i].a;
-            nb++;
-        }
-        i = j;
-    }
-    free(e);
+    mesh_topology t;
+    scaf_error e;
+    if (mesh_topology_compute(m, &t, &e) != SCAF_OK) return 0;
     int n = 0;
-    for (int v = first; v >= 0 && n < nb; v = next[v]) {
-        loop[n++] = v;
-        if (next[v] == first) break;
-    }
-    free(next);
-    return n == nb ? n : 0;
+    if (t.cx.nloops == 1 && t.cx.loop_ordered[0])
+        for (; n < t.cx.loop_start[1]; n++) loop[n] = m->F[t.cx.loop_he[n]];
+    mesh_topology_free(&t);
+    return n;
 }
 
 enum { OP_ENERGY, OP_SLOPE, OP_MAX_STEP, OP_VALID, OP_SLIM_FILL, OP_NEWTON_FILL, NOPS };
