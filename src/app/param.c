@@ -528,10 +528,8 @@ scaf_status scaf_param_run(scaf_param_t *p, int iterations, scaf_param_progress_
     /* ARAP is 0 at a rotation: relative to E alone a map near an isometry
      * never looks converged (hilbert, planar: criterion 0.087 after 200
      * iterations while E crept by 1e-7). It is judged relative to E + 1
-     * (per unit of area), the scale symmetric Dirichlet's E >= 4 and
-     * conformal's E >= 1 have on their own, as ARAP's scaffold weight is
-     * (scaf_loop). */
-    double shift = p->loop.opt.energy == OPT_ENERGY_ARAP ? 1.0 : 0.0;
+     * (opt_energy_scale_offset), as its scaffold weight is. */
+    double shift = opt_energy_scale_offset(p->loop.opt.energy);
     double e_mesh = scaf_loop_mesh_energy(&p->loop);
     for (int it = 0; it < n; it++) {
         scaf_iteration_info_t info;

@@ -38,6 +38,8 @@ int opt_energy_parse(const char *name, opt_energy *e)
     return -1;
 }
 
+double opt_energy_scale_offset(opt_energy e) { return e == OPT_ENERGY_ARAP ? 1.0 : 0.0; }
+
 double opt_det(int d, const double *J)
 {
     if (d == 2) return J[0] * J[3] - J[1] * J[2];

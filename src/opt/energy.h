@@ -50,6 +50,13 @@ const char *opt_energy_name(opt_energy e);
 /* Parse a name as above; returns 0 and sets *e, or -1 if unknown. */
 int opt_energy_parse(const char *name, opt_energy *e);
 
+/* What is added to the mean energy (per unit of rest area) where a scale
+ * is needed that does not vanish at the minimum: 1 for ARAP (0 at a
+ * rotation; E + 1 then weighs like symmetric Dirichlet's E >= 4 and
+ * conformal's E >= 1, which need nothing: 0). Used by the scaffold weight
+ * (scaffold/scaf_loop) and the convergence test (app/param). */
+double opt_energy_scale_offset(opt_energy e);
+
 /* Density of J (d by d). */
 double opt_density(opt_energy e, int d, const double *J);
 

@@ -768,7 +768,7 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
      * the weight per unit of the mesh term's curvature what symmetric
      * Dirichlet's E_M >= 4 area gives (ARAP's curvature at a rotation is 2,
      * a quarter of symmetric Dirichlet's 8); conformal's E_M >= area. */
-    if (w->mesh_k >= 0 && L->opt.energy == OPT_ENERGY_ARAP) EM += L->total_area;
+    if (w->mesh_k >= 0) EM += opt_energy_scale_offset(L->opt.energy) * L->total_area;
     double lambda = L->opt.lambda_ratio * EM / (sc->n > 0 ? sc->n : 1);
     if (newton) lambda *= L->opt.newton_lambda_scale; /* see the option */
     st = scaffold_term(L, nall, X, lambda, err);
