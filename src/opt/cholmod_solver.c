@@ -13,6 +13,12 @@
  * (opt/block_symbolic); a declared fixed leading part keeps its analysis
  * across patterns (opt/split_symbolic).
  *
+ * The numerical factorization is opt/supernodal_numeric's (subtrees in
+ * parallel threads, no transpose of A per factorization) on CHOLMOD's
+ * symbolic factor, written into CHOLMOD's L so cholmod_solve2 solves with
+ * it; opt_chol_set_numeric switches back to cholmod_factorize (bench,
+ * tests: the two factors agree to rounding).
+ *
  * OpenMP: the Debian CHOLMOD runs small loops of its supernodal
  * factorization (zeroing and scattering each supernode) in OpenMP regions
  * with a compiled-in team of 4 threads, whatever OMP_NUM_THREADS says. On a
@@ -37,6 +43,7 @@
 #include "opt/cholmod_view.h"
 #include "opt/given_symbolic.h"
 #include "opt/split_symbolic.h"
+#include "opt/supernodal_numeric.h"
 
 #include <assert.h>
 #include <stdatomic.h>
@@ -45,6 +52,7 @@
 
 #include <cholmod.h>
 
+#include "base/parallel.h"
 #include "base/timer.h"
 
 /* libgomp, if loaded (see the banner). */
@@ -76,6 +84,8 @@ struct opt_chol {
     int block;                 /* unknowns per vertex for compressed ordering */
     int nfixed;                /* leading unknowns of a fixed pattern and order */
     opt_split_symbolic *split; /* their analysis, kept (opt/split_symbolic) */
+    opt_snum *snum;            /* numerical factorization plan for L (opt/supernodal_numeric) */
+    int own_numeric;           /* factor with opt/supernodal_numeric, not cholmod_factorize */
     opt_chol_stats st;
 };
 
@@ -109,11 +119,19 @@ opt_chol *opt_chol_create(opt_ordering ordering, scaf_error *err)
     c->cm.final_ll = 1; /* keep L L^T (not LDL^T) after a supernodal factorization */
     c->ordering = ordering;
     c->block = 1;
+    c->own_numeric = 1;
     set_ordering(c, ordering);
     return c;
 }
 
 void opt_chol_set_block(opt_chol *c, int block) { c->block = block > 1 ? block : 1; }
+
+void opt_chol_set_numeric(opt_chol *c, opt_numeric numeric)
+{
+    c->own_numeric = numeric == OPT_NUMERIC_SUPERNODAL;
+    opt_snum_destroy(c->snum);
+    c->snum = NULL;
+}
 
 void opt_chol_set_fixed_part(opt_chol *c, int nfixed) { c->nfixed = nfixed > 0 ? nfixed : 0; }
 
@@ -153,6 +171,7 @@ void opt_chol_destroy(opt_chol *c)
 {
     if (!c) return;
     if (c->L) cholmod_free_factor(&c->L, &c->cm);
+    opt_snum_destroy(c->snum);
     opt_split_destroy(c->split);
     cholmod_free_dense(&c->X, &c->cm);
     cholmod_free_dense(&c->Y, &c->cm);
@@ -253,6 +272,8 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     assert(opt_csc_is_upper_sorted(A));
     double t0 = timer_now();
     if (c->L) cholmod_free_factor(&c->L, &c->cm);
+    opt_snum_destroy(c->snum);
+    c->snum = NULL;
     c->factored = 0;
     c->n = c->nnz = 0;
     cholmod_sparse S = opt_csc_cholmod_view(A);
@@ -323,9 +344,25 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
     double t0 = timer_now();
     cholmod_sparse S = opt_csc_cholmod_view(A);
     c->factored = 0;
-    int lv = omp_serial_begin();
-    int ok = cholmod_factorize(&S, c->L, &c->cm);
-    omp_serial_end(lv);
+    int ok;
+    if (c->own_numeric && c->L->is_super && !c->snum) {
+        /* values for the supernodal L L^T factor, then the plan (for the
+         * thread count of scaf's loops, base/parallel); without a plan
+         * (out of memory) cholmod_factorize does the work */
+        if (c->L->xtype == CHOLMOD_PATTERN)
+            cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, c->L, &c->cm);
+        if (c->L->xtype == CHOLMOD_REAL && c->L->is_ll)
+            c->snum = opt_snum_create(c->L, A, par_threads());
+    }
+    if (c->snum) {
+        c->cm.status = CHOLMOD_OK;
+        ok = 1;
+        if (opt_snum_factor(c->snum, A, c->L) >= 0) c->cm.status = CHOLMOD_NOT_POSDEF;
+    } else {
+        int lv = omp_serial_begin();
+        ok = cholmod_factorize(&S, c->L, &c->cm);
+        omp_serial_end(lv);
+    }
     c->st.t_factor += timer_now() - t0;
     if (!ok) return fail(c, "factorization", err);
     if (c->cm.status == CHOLMOD_NOT_POSDEF || c->L->minor < c->L->n) {
@@ -351,22 +388,26 @@ scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, sc
                        "CHOLMOD solve called before a successful factorization");
     if (nrhs < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD solve: %d right-hand sides", nrhs);
     double t0 = timer_now();
-    cholmod_dense Bd;
-    memset(&Bd, 0, sizeof Bd);
-    Bd.nrow = (size_t)c->n;
-    Bd.ncol = (size_t)nrhs;
-    Bd.nzmax = Bd.nrow * Bd.ncol;
-    Bd.d = Bd.nrow;
-    Bd.x = (void *)B;
-    Bd.xtype = CHOLMOD_REAL;
-    Bd.dtype = CHOLMOD_DOUBLE;
-    int lv = omp_serial_begin();
-    /* cholmod_solve2 (what cholmod_solve calls) with the result and its
-     * workspaces kept between solves instead of allocated each time */
-    int ok = cholmod_solve2(CHOLMOD_A, c->L, &Bd, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm);
-    omp_serial_end(lv);
-    if (!ok) return fail(c, "solve", err);
-    memcpy(X, c->X->x, Bd.nzmax * sizeof *X);
+    if (c->snum) {
+        opt_snum_solve(c->snum, c->L, nrhs, B, X);
+    } else {
+        cholmod_dense Bd;
+        memset(&Bd, 0, sizeof Bd);
+        Bd.nrow = (size_t)c->n;
+        Bd.ncol = (size_t)nrhs;
+        Bd.nzmax = Bd.nrow * Bd.ncol;
+        Bd.d = Bd.nrow;
+        Bd.x = (void *)B;
+        Bd.xtype = CHOLMOD_REAL;
+        Bd.dtype = CHOLMOD_DOUBLE;
+        int lv = omp_serial_begin();
+        /* cholmod_solve2 (what cholmod_solve calls) with the result and its
+         * workspaces kept between solves instead of allocated each time */
+        int ok = cholmod_solve2(CHOLMOD_A, c->L, &Bd, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm);
+        omp_serial_end(lv);
+        if (!ok) return fail(c, "solve", err);
+        memcpy(X, c->X->x, Bd.nzmax * sizeof *X);
+    }
     c->st.t_solve += timer_now() - t0;
     return SCAF_OK;
 }

@@ -83,6 +83,14 @@ void opt_chol_set_fixed_part(opt_chol *c, int nfixed);
  * (bench/bench_factor). Takes effect at the next analysis. */
 void opt_chol_set_relax(opt_chol *c, int scale);
 
+/* Who computes the numerical factor on CHOLMOD's symbolic analysis:
+ * opt/supernodal_numeric (the default; subtrees of the elimination tree
+ * in par_threads() threads, base/parallel) or cholmod_factorize (CHOLMOD's
+ * own, parallel only inside BLAS). Both give L L^T of the same structure,
+ * equal to rounding. */
+typedef enum opt_numeric { OPT_NUMERIC_SUPERNODAL = 0, OPT_NUMERIC_CHOLMOD } opt_numeric;
+void opt_chol_set_numeric(opt_chol *c, opt_numeric numeric);
+
 /* Factor A (upper CSC, symmetric positive definite): analysis only when the
  * pattern differs from the last analyzed one. */
 scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err);
