@@ -35,3 +35,16 @@ int scaf_set_threads(int n)
     openblas_set_num_threads(t);
     return opt_blas_threads();
 }
+
+int opt_blas_serial_begin(int T)
+{
+    if (T < 2 || !openblas_get_num_threads || !openblas_set_num_threads) return 0;
+    int saved = openblas_get_num_threads();
+    if (saved > 1) openblas_set_num_threads(1);
+    return saved;
+}
+
+void opt_blas_serial_end(int saved)
+{
+    if (saved > 1 && openblas_set_num_threads) openblas_set_num_threads(saved);
+}

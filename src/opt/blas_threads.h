@@ -12,4 +12,10 @@ int opt_blas_cores(void);
 /* The BLAS's current thread count, 0 when it offers none to query. */
 int opt_blas_threads(void);
 
+/* For code that runs BLAS in its own threads: set the BLAS to one thread
+ * when T > 1 (OpenBLAS's threads would spin beside them); returns what
+ * opt_blas_serial_end restores. */
+int opt_blas_serial_begin(int T);
+void opt_blas_serial_end(int saved);
+
 #endif

@@ -45,6 +45,7 @@
 #include "opt/given_symbolic.h"
 #include "opt/split_symbolic.h"
 #include "opt/supernodal_numeric.h"
+#include "opt/supernodal_solve.h"
 
 #include <assert.h>
 #include <stdatomic.h>
@@ -213,7 +214,7 @@ static int lend_values(opt_chol *c)
     size_t need = L->xsize > 0 ? L->xsize : 1;
     if (need > c->xcap) { /* with slack: the scaffold's share varies */
         free(c->xbuf);
-        size_t cap = need + need / 8;
+        size_t cap = need + need / 32;
         c->xbuf = alloc_values(cap);
         c->xcap = c->xbuf ? cap : 0;
         if (!c->xbuf) return 0;

@@ -23,6 +23,7 @@
 #include "opt/cholmod_view.h"
 #include "opt/csc.h"
 #include "opt/supernodal_numeric.h"
+#include "opt/supernodal_solve.h"
 
 /* 2D grid of m x m vertices, two unknowns per vertex coupled as in a SLIM
  * system (2x2 blocks), 8-neighbour stencil, diagonal shift. */

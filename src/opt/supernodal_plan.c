@@ -1,0 +1,355 @@
+/* opt/supernodal_plan: see supernodal_plan.h. */
+#define _GNU_SOURCE /* qsort_r */
+#include "opt/supernodal_plan.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/parallel.h"
+
+void opt_snum_destroy(opt_snum *P)
+{
+    if (!P) return;
+    if (P->w)
+        for (int k = 0; k < P->threads; k++) {
+            free(P->w[k].map);
+            free(P->w[k].rel);
+            free(P->w[k].C);
+            free(P->w[k].head);
+            free(P->w[k].tmp);
+            free(P->w[k].acc);
+        }
+    free(P->w);
+    free(P->col2super);
+    free(P->toprow);
+    free(P->y);
+    free(P->next);
+    free(P->lpos);
+    free(P->aptr);
+    free(P->asrc);
+    free(P->adst);
+    free(P->order);
+    free(P->bptr);
+    free(P);
+}
+
+/* A's entries grouped by the supernode whose block holds them (aptr,
+ * asrc, adst): counted and bucketed by column chunks (chunk k's entries
+ * of a supernode after chunk k-1's: the serial order), with the entry's
+ * column within the supernode and its row, then placed supernode by
+ * supernode through a row -> place map. */
+typedef struct scatter_job {
+    opt_snum *P;
+    const opt_csc *A;
+    const int *pinv;
+    int nc;     /* chunks */
+    int *cnt;   /* nc x nsuper: entries per chunk and supernode, then fill positions */
+    int *colin; /* per entry: its column within the supernode */
+    int **map;  /* per chunk: row -> place */
+    int *bad;   /* per chunk: an entry outside L's structure */
+} scatter_job;
+
+static void scatter_count(void *ctx, int k)
+{
+    scatter_job *J = ctx;
+    const opt_snum *P = J->P;
+    const opt_csc *A = J->A;
+    int *cnt = J->cnt + (size_t)k * (size_t)P->nsuper;
+    int c0 = (int)par_chunk_begin((size_t)P->n, J->nc, k);
+    int c1 = (int)par_chunk_begin((size_t)P->n, J->nc, k + 1);
+    for (int c = c0; c < c1; c++) {
+        int b = J->pinv[c];
+        for (int e = A->colptr[c]; e < A->colptr[c + 1]; e++) {
+            int a = J->pinv[A->rowidx[e]];
+            cnt[P->col2super[a < b ? a : b]]++;
+        }
+    }
+}
+
+static void scatter_bucket(void *ctx, int k)
+{
+    scatter_job *J = ctx;
+    opt_snum *P = J->P;
+    const opt_csc *A = J->A;
+    int *fill = J->cnt + (size_t)k * (size_t)P->nsuper;
+    int c0 = (int)par_chunk_begin((size_t)P->n, J->nc, k);
+    int c1 = (int)par_chunk_begin((size_t)P->n, J->nc, k + 1);
+    for (int c = c0; c < c1; c++) {
+        int b = J->pinv[c];
+        for (int e = A->colptr[c]; e < A->colptr[c + 1]; e++) {
+            int a = J->pinv[A->rowidx[e]];
+            int lo = a < b ? a : b, hi = a < b ? b : a, sn = P->col2super[lo];
+            int t = fill[sn]++;
+            P->asrc[t] = e;
+            P->adst[t] = hi; /* the row for now */
+            J->colin[t] = lo - P->super[sn];
+        }
+    }
+}
+
+static void scatter_place(void *ctx, int k)
+{
+    scatter_job *J = ctx;
+    opt_snum *P = J->P;
+    int *map = J->map[k];
+    int s0 = (int)par_chunk_begin((size_t)P->nsuper, J->nc, k);
+    int s1 = (int)par_chunk_begin((size_t)P->nsuper, J->nc, k + 1);
+    for (int sn = s0; sn < s1; sn++) {
+        const int *rows = P->s + P->pi[sn];
+        int nsrow = P->pi[sn + 1] - P->pi[sn];
+        for (int i = 0; i < nsrow; i++) map[rows[i]] = i;
+        for (int t = P->aptr[sn]; t < P->aptr[sn + 1]; t++) {
+            int r = P->adst[t], place = map[r];
+            if (place < 0 || place >= nsrow || rows[place] != r) J->bad[k] = 1; /* not in L */
+            P->adst[t] = J->colin[t] * nsrow + place;
+        }
+    }
+}
+
+/* 0 when A has an entry outside L's structure or memory runs out. */
+static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int threads)
+{
+    int n = P->n, ns = P->nsuper, nc = par_chunks((size_t)A->nnz);
+    if (nc > threads) nc = threads;
+    size_t nz = (size_t)A->nnz + 1;
+    int *pinv = malloc((size_t)n * sizeof *pinv);
+    int *cnt = calloc((size_t)nc * (size_t)ns + 1, sizeof *cnt);
+    int *colin = malloc(nz * sizeof *colin), *bad = calloc((size_t)nc, sizeof *bad);
+    int **map = calloc((size_t)nc, sizeof *map);
+    P->aptr = calloc((size_t)ns + 1, sizeof *P->aptr);
+    P->asrc = malloc(nz * sizeof *P->asrc);
+    P->adst = malloc(nz * sizeof *P->adst);
+    int ok = pinv && cnt && colin && bad && map && P->aptr && P->asrc && P->adst;
+    for (int k = 0; ok && k < nc; k++) {
+        map[k] = malloc((size_t)n * sizeof *map[k]);
+        ok = map[k] != NULL;
+        if (ok)
+            for (int i = 0; i < n; i++) map[k][i] = -1;
+    }
+    for (int k = 0; ok && k < n; k++) pinv[perm[k]] = k;
+    scatter_job J = {P, A, pinv, nc, cnt, colin, map, bad};
+    if (ok) par_run(nc, scatter_count, &J);
+    /* fill positions: supernode by supernode, chunk by chunk */
+    for (int sn = 0, t = 0; ok && sn < ns; sn++) {
+        P->aptr[sn] = t;
+        for (int k = 0; k < nc; k++) {
+            int c = cnt[(size_t)k * (size_t)ns + (size_t)sn];
+            cnt[(size_t)k * (size_t)ns + (size_t)sn] = t;
+            t += c;
+        }
+        P->aptr[sn + 1] = t;
+    }
+    if (ok) par_run(nc, scatter_bucket, &J);
+    if (ok) par_run(nc, scatter_place, &J);
+    for (int k = 0; ok && k < nc; k++) ok = !bad[k];
+    for (int k = 0; map && k < nc; k++) free(map[k]);
+    free(map);
+    free(bad);
+    free(colin);
+    free(cnt);
+    free(pinv);
+    return ok;
+}
+
+/* Largest update buffer: a descendant's rows from one supernode's range
+ * times its rows from there down. */
+static size_t max_update(const opt_snum *P)
+{
+    size_t most = 1;
+    for (int d = 0; d < P->nsuper; d++) {
+        int nscol = P->super[d + 1] - P->super[d];
+        const int *rows = P->s + P->pi[d];
+        int nsrow = P->pi[d + 1] - P->pi[d];
+        for (int p = nscol; p < nsrow;) {
+            int sn = P->col2super[rows[p]], q = p;
+            while (q < nsrow && P->col2super[rows[q]] == sn) q++;
+            size_t c = (size_t)(q - p) * (size_t)(nsrow - p);
+            if (c > most) most = c;
+            p = q;
+        }
+    }
+    return most;
+}
+
+static int cmp_work_desc(const void *a, const void *b, void *wv)
+{
+    const double *W = wv;
+    double x = W[*(const int *)a], y = W[*(const int *)b];
+    if (x != y) return x < y ? 1 : -1;
+    return *(const int *)a - *(const int *)b;
+}
+
+/* Longest-first assignment of the candidate subtrees to T bins; returns the
+ * heaviest bin's work, bin[i] the bin of cand[i] (cand sorted by work). */
+static double assign_bins(int *cand, int nc, const double *W, int T, int *bin)
+{
+    qsort_r(cand, (size_t)nc, sizeof *cand, cmp_work_desc, (void *)W);
+    double load[PAR_MAX_CHUNKS] = {0};
+    for (int i = 0; i < nc; i++) {
+        int best = 0;
+        for (int k = 1; k < T; k++)
+            if (load[k] < load[best]) best = k;
+        load[best] += W[cand[i]];
+        bin[i] = best;
+    }
+    double most = 0;
+    for (int k = 0; k < T; k++)
+        if (load[k] > most) most = load[k];
+    return most;
+}
+
+/* Cut the supernodal tree into subtrees for T bins (order, bptr); the
+ * supernodes above the cut follow in ascending order. Returns the bins
+ * used (1: no cut, everything runs above it). */
+static int plan_bins(opt_snum *P, int T)
+{
+    int ns = P->nsuper;
+    P->order = malloc(((size_t)ns + 1) * sizeof *P->order);
+    P->bptr = calloc((size_t)T + 2, sizeof *P->bptr);
+    if (!P->order || !P->bptr) return 0;
+    for (int k = 0; k < ns; k++) P->order[k] = k;
+    if (T < 2 || ns < 2 * T) return 1;
+    int *parent = malloc((size_t)ns * sizeof *parent), *chead = malloc((size_t)ns * sizeof *chead);
+    int *cnext = malloc((size_t)ns * sizeof *cnext), *cand = malloc((size_t)ns * sizeof *cand);
+    int *bin = malloc((size_t)ns * sizeof *bin), *owner = malloc((size_t)ns * sizeof *owner);
+    double *W = malloc((size_t)ns * sizeof *W);
+    int used = 1;
+    if (!parent || !chead || !cnext || !cand || !bin || !owner || !W) goto done;
+    for (int sn = 0; sn < ns; sn++) {
+        int nscol = P->super[sn + 1] - P->super[sn], nsrow = P->pi[sn + 1] - P->pi[sn];
+        double w = 0;
+        for (int c = 0; c < nscol; c++) w += (double)(nsrow - c) * (double)(nsrow - c);
+        W[sn] = w;
+        chead[sn] = -1;
+        parent[sn] = nsrow > nscol ? P->col2super[P->s[P->pi[sn] + nscol]] : -1;
+    }
+    double total = 0;
+    for (int sn = 0; sn < ns; sn++) total += W[sn];
+    for (int sn = 0; sn < ns; sn++) {
+        int p = parent[sn];
+        if (p < 0) continue;
+        if (p <= sn) goto done; /* a parent before its child: no cut */
+        W[p] += W[sn];
+    }
+    for (int sn = ns - 1; sn >= 0; sn--)
+        if (parent[sn] >= 0) {
+            cnext[sn] = chead[parent[sn]];
+            chead[parent[sn]] = sn;
+        }
+    int nc = 0;
+    for (int sn = 0; sn < ns; sn++)
+        if (parent[sn] < 0) cand[nc++] = sn;
+    /* split the heaviest subtree until the bins are within 3% of even, or
+     * the work above the cut would pass a quarter of the whole */
+    double above = 0;
+    for (int iter = 0; iter < ns; iter++) {
+        double most = assign_bins(cand, nc, W, T, bin), sum = 0;
+        for (int i = 0; i < nc; i++) sum += W[cand[i]];
+        if (most <= 1.03 * sum / T) break;
+        int i = 0;
+        while (i < nc && chead[cand[i]] < 0) i++;
+        if (i == nc) break;
+        int c = cand[i];
+        double own = W[c];
+        for (int ch = chead[c]; ch >= 0; ch = cnext[ch]) own -= W[ch];
+        if (above + own > 0.5 * total) break;
+        above += own;
+        cand[i] = cand[--nc];
+        for (int ch = chead[c]; ch >= 0; ch = cnext[ch]) cand[nc++] = ch;
+    }
+    assign_bins(cand, nc, W, T, bin);
+    /* a supernode belongs to the bin of its candidate ancestor; parents
+     * come after their children, so a descending sweep sees them first */
+    for (int sn = 0; sn < ns; sn++) owner[sn] = -2;
+    for (int i = 0; i < nc; i++) owner[cand[i]] = bin[i];
+    for (int sn = ns - 1; sn >= 0; sn--)
+        if (owner[sn] == -2) owner[sn] = parent[sn] >= 0 ? owner[parent[sn]] : -1;
+    int pos = 0;
+    for (int k = 0; k < T; k++) {
+        P->bptr[k] = pos;
+        for (int sn = 0; sn < ns; sn++)
+            if (owner[sn] == k) P->order[pos++] = sn;
+    }
+    P->bptr[T] = pos;
+    for (int sn = 0; sn < ns; sn++)
+        if (owner[sn] < 0) P->order[pos++] = sn;
+    used = T;
+done:
+    if (used == 1) memset(P->bptr, 0, ((size_t)T + 2) * sizeof *P->bptr);
+    free(parent);
+    free(chead);
+    free(cnext);
+    free(cand);
+    free(bin);
+    free(owner);
+    free(W);
+    return used;
+}
+
+opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int threads)
+{
+    if (!L->is_super || L->itype != CHOLMOD_INT || (int)L->n != A->n) return NULL;
+    if (threads < 1) threads = 1;
+    if (threads > PAR_MAX_CHUNKS) threads = PAR_MAX_CHUNKS;
+    opt_snum *P = calloc(1, sizeof *P);
+    if (!P) return NULL;
+    P->n = A->n;
+    P->nsuper = (int)L->nsuper;
+    P->super = L->super;
+    P->pi = L->pi;
+    P->px = L->px;
+    P->s = L->s;
+    int n = P->n, ns = P->nsuper;
+    P->col2super = malloc(((size_t)n + 1) * sizeof *P->col2super);
+    P->next = malloc(((size_t)ns + 1) * sizeof *P->next);
+    P->lpos = malloc(((size_t)ns + 1) * sizeof *P->lpos);
+    if (!P->col2super || !P->next || !P->lpos) goto fail;
+    for (int sn = 0; sn < ns; sn++)
+        for (int k = P->super[sn]; k < P->super[sn + 1]; k++) P->col2super[k] = sn;
+    if (!build_scatter(P, A, L->Perm, threads)) goto fail;
+    int T = plan_bins(P, threads);
+    if (T < 1) goto fail;
+    P->threads = T;
+    P->toprow = malloc(((size_t)n + 1) * sizeof *P->toprow);
+    P->y = malloc(((size_t)n + 1) * sizeof *P->y);
+    if (!P->toprow || !P->y) goto fail;
+    for (int k = 0; k < n; k++) P->toprow[k] = -1;
+    for (int i = P->bptr[T > 1 ? T : 0]; i < ns && T > 1; i++)
+        for (int k = P->super[P->order[i]]; k < P->super[P->order[i] + 1]; k++)
+            P->toprow[k] = P->ntop++;
+    size_t csize = max_update(P);
+    int maxrow = 1;
+    for (int sn = 0; sn < ns; sn++)
+        if (P->pi[sn + 1] - P->pi[sn] > maxrow) maxrow = P->pi[sn + 1] - P->pi[sn];
+    P->w = calloc((size_t)T, sizeof *P->w);
+    if (!P->w) goto fail;
+    for (int k = 0; k < T; k++) {
+        opt_snum_worker *wk = &P->w[k];
+        wk->map = malloc(((size_t)n + 1) * sizeof *wk->map);
+        wk->rel = malloc((size_t)maxrow * sizeof *wk->rel);
+        wk->C = malloc(csize * sizeof *wk->C);
+        wk->head = malloc(((size_t)ns + 1) * sizeof *wk->head);
+        wk->tmp = malloc((size_t)maxrow * sizeof *wk->tmp);
+        wk->acc = malloc(((size_t)P->ntop + 1) * sizeof *wk->acc);
+        if (!wk->map || !wk->rel || !wk->C || !wk->head || !wk->tmp || !wk->acc) goto fail;
+    }
+    return P;
+fail:
+    opt_snum_destroy(P);
+    return NULL;
+}
+
+int opt_snum_top_parallel(const opt_snum *P, int sn)
+{
+    return P->threads > 1 &&
+        (double)(P->pi[sn + 1] - P->pi[sn]) * (double)(P->super[sn + 1] - P->super[sn]) >=
+        OPT_SNUM_TOP_PARALLEL_MIN;
+}
+
+opt_snum_shape opt_snum_get_shape(const opt_snum *P)
+{
+    int T = P->threads, first_above = P->bptr[T > 1 ? T : 0];
+    opt_snum_shape sh = {T, P->nsuper, first_above, P->nsuper - first_above, 0};
+    for (int i = first_above; i < P->nsuper; i++) sh.above_parallel += opt_snum_top_parallel(P, P->order[i]);
+    return sh;
+}

@@ -1,0 +1,72 @@
+/* opt/supernodal_plan: how scaf's supernodal Cholesky factorization
+ * (opt/supernodal_numeric) and its solves (opt/supernodal_solve) run on
+ * the symbolic factor of a CHOLMOD analysis, made once per pattern:
+ *   - where each entry of A goes in the factor's supernodes (so that no
+ *     factorization transposes or permutes A);
+ *   - for T threads, a cut of the supernodal elimination tree into T bins
+ *     of whole subtrees of about equal work (the sum of squared column
+ *     counts, longest first), each bin's supernodes in ascending order;
+ *     the supernodes above the cut follow, for the calling thread, which
+ *     shares the large ones with the others (top_parallel);
+ *   - each thread's workspaces.
+ * The bins depend on the structure and T only, so results are the same
+ * for a given T whatever the scheduling. Supernode s holds columns
+ * [super[s], super[s+1]) as a dense column-major block of nsrow x nscol
+ * values at x + px[s]; its rows are s[pi[s] .. pi[s+1]), its own columns
+ * first, then the rows below, ascending. The struct is shared by the
+ * factorization and the solve only.
+ */
+#ifndef SCAF_OPT_SUPERNODAL_PLAN_H
+#define SCAF_OPT_SUPERNODAL_PLAN_H
+
+#include <cholmod.h>
+
+#include "opt/csc.h"
+
+typedef struct opt_snum_worker {
+    int *map;    /* row -> its place in the supernode being factored */
+    int *rel;    /* a descendant's rows -> places in that supernode */
+    double *C;   /* a descendant's update */
+    int *head;   /* descendants waiting on each supernode */
+    int minor;   /* first column found not positive definite, or -1 */
+    double *tmp; /* solve: a supernode's rows below its diagonal block */
+    double *acc; /* solve: this bin's updates of the rows above the cut */
+} opt_snum_worker;
+
+typedef struct opt_snum {
+    int n, nsuper, threads;
+    const int *super, *pi, *px, *s; /* L's structure (not owned) */
+    int *col2super;                 /* n */
+    int *next, *lpos;               /* nsuper */
+    int *aptr, *asrc, *adst;        /* A's entries by supernode: value index, place in the block */
+    int *order, *bptr; /* bin k: order[bptr[k] .. bptr[k+1]); the rest: above the cut */
+    int *toprow;       /* n: a row's index among the rows above the cut, or -1 */
+    int ntop;          /* rows above the cut */
+    double *y;         /* n: the solve's vector, in the factor's order */
+    opt_snum_worker *w; /* threads */
+} opt_snum;
+
+/* Supernodes above the cut with at least this many stored entries get the
+ * threads (a par_run costs tens of microseconds). */
+#define OPT_SNUM_TOP_PARALLEL_MIN 16384.0
+
+/* Plan for matrices with A's pattern (upper, natural order) on L, a
+ * supernodal factor of that pattern, for `threads` threads. L keeps its
+ * structure while the plan lives. NULL when out of memory or when A has
+ * an entry outside L's structure. */
+opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int threads);
+
+void opt_snum_destroy(opt_snum *P);
+
+/* Whether supernode sn, above the cut, is shared by the threads. */
+int opt_snum_top_parallel(const opt_snum *P, int sn);
+
+/* How the plan cut the work: threads used (1 when the tree could not be
+ * cut), supernodes in the bins, above the cut, and of those the ones
+ * shared by the threads. */
+typedef struct opt_snum_shape {
+    int threads, supernodes, in_bins, above, above_parallel;
+} opt_snum_shape;
+opt_snum_shape opt_snum_get_shape(const opt_snum *P);
+
+#endif /* SCAF_OPT_SUPERNODAL_PLAN_H */

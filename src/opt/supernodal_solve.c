@@ -1,0 +1,90 @@
+/* opt/supernodal_solve: see supernodal_solve.h. */
+#include "opt/supernodal_solve.h"
+
+#include "base/parallel.h"
+#include "opt/blas_threads.h"
+#include "opt/dense_blas.h"
+
+static const double one = 1.0, zero = 0.0, minus_one = -1.0;
+static const int inc1 = 1;
+
+/* Forward step of supernode sn: y_s = L_ss^-1 y_s, then the rows below
+ * lose L_below y_s (into acc for rows above the cut when acc is given). */
+static void forward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx, double *acc)
+{
+    int k1 = P->super[sn], nscol = P->super[sn + 1] - k1;
+    int nsrow = P->pi[sn + 1] - P->pi[sn], nrest = nsrow - nscol;
+    const double *X = Lx + P->px[sn];
+    double *ys = P->y + k1;
+    dtrsv_("L", "N", "N", &nscol, X, &nsrow, ys, &inc1);
+    if (nrest <= 0) return;
+    dgemv_("N", &nrest, &nscol, &one, X + nscol, &nsrow, ys, &inc1, &zero, wk->tmp, &inc1);
+    const int *rows = P->s + P->pi[sn] + nscol;
+    for (int i = 0; i < nrest; i++) {
+        int t = acc ? P->toprow[rows[i]] : -1;
+        if (t >= 0) acc[t] += wk->tmp[i];
+        else P->y[rows[i]] -= wk->tmp[i];
+    }
+}
+
+/* Backward step of supernode sn: y_s = L_ss^-T (y_s - L_below^T y_below). */
+static void backward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx)
+{
+    int k1 = P->super[sn], nscol = P->super[sn + 1] - k1;
+    int nsrow = P->pi[sn + 1] - P->pi[sn], nrest = nsrow - nscol;
+    const double *X = Lx + P->px[sn];
+    double *ys = P->y + k1;
+    if (nrest > 0) {
+        const int *rows = P->s + P->pi[sn] + nscol;
+        for (int i = 0; i < nrest; i++) wk->tmp[i] = P->y[rows[i]];
+        dgemv_("T", &nrest, &nscol, &minus_one, X + nscol, &nsrow, wk->tmp, &inc1, &one, ys, &inc1);
+    }
+    dtrsv_("L", "T", "N", &nscol, X, &nsrow, ys, &inc1);
+}
+
+typedef struct solve_job {
+    opt_snum *P;
+    const double *Lx;
+} solve_job;
+
+static void run_bin_forward(void *ctx, int k)
+{
+    solve_job *J = ctx;
+    opt_snum_worker *wk = &J->P->w[k];
+    for (int t = 0; t < J->P->ntop; t++) wk->acc[t] = 0;
+    for (int i = J->P->bptr[k]; i < J->P->bptr[k + 1]; i++)
+        forward_super(J->P, wk, J->P->order[i], J->Lx, wk->acc);
+}
+
+static void run_bin_backward(void *ctx, int k)
+{
+    solve_job *J = ctx;
+    for (int i = J->P->bptr[k + 1] - 1; i >= J->P->bptr[k]; i--)
+        backward_super(J->P, &J->P->w[k], J->P->order[i], J->Lx);
+}
+
+void opt_snum_solve(opt_snum *P, const cholmod_factor *L, int nrhs, const double *B, double *X)
+{
+    int n = P->n, T = P->threads, ns = P->nsuper, top = P->bptr[T > 1 ? T : 0];
+    const int *perm = L->Perm;
+    solve_job J = {P, L->x};
+    int blas = opt_blas_serial_begin(T);
+    for (int r = 0; r < nrhs; r++) {
+        const double *b = B + (size_t)r * (size_t)n;
+        double *x = X + (size_t)r * (size_t)n;
+        for (int k = 0; k < n; k++) P->y[k] = b[perm[k]];
+        if (T > 1) {
+            par_run(T, run_bin_forward, &J);
+            for (int k = 0; k < n; k++) {
+                int t = P->toprow[k];
+                if (t < 0) continue;
+                for (int h = 0; h < T; h++) P->y[k] -= P->w[h].acc[t];
+            }
+        }
+        for (int i = top; i < ns; i++) forward_super(P, &P->w[0], P->order[i], L->x, NULL);
+        for (int i = ns - 1; i >= top; i--) backward_super(P, &P->w[0], P->order[i], L->x);
+        if (T > 1) par_run(T, run_bin_backward, &J);
+        for (int k = 0; k < n; k++) x[perm[k]] = P->y[k];
+    }
+    opt_blas_serial_end(blas);
+}
