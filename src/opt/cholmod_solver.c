@@ -37,7 +37,6 @@
  * libgomp, and never run while CHOLMOD does (the loops that use them
  * return before a factorization starts).
  */
-#define _DEFAULT_SOURCE /* madvise */
 #include "opt/cholmod_solver.h"
 
 #include "opt/block_symbolic.h"
@@ -51,7 +50,6 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 
 #include <cholmod.h>
 
@@ -187,25 +185,6 @@ static void free_factor(opt_chol *c)
     cholmod_free_factor(&c->L, &c->cm);
 }
 
-/* An array of n doubles; a large one on 2 MB boundaries and advised to
- * the kernel for huge pages (transparent huge pages in "madvise" mode, as
- * Debian ships them): the factorization's scattered updates then miss the
- * TLB less (1.77M faces: factorization -5%, half the page faults). */
-static double *alloc_values(size_t n)
-{
-    size_t bytes = n * sizeof(double), huge = (size_t)2 << 20;
-#ifdef MADV_HUGEPAGE
-    if (bytes >= 16 * huge) {
-        void *mem = NULL;
-        bytes = (bytes + huge - 1) / huge * huge;
-        if (posix_memalign(&mem, huge, bytes) != 0) return NULL;
-        madvise(mem, bytes, MADV_HUGEPAGE); /* advice only: failure is harmless */
-        return mem;
-    }
-#endif
-    return malloc(bytes);
-}
-
 /* Make the symbolic supernodal L numeric (real, L L^T) with xbuf's
  * memory, grown when too small; 0 when out of memory. */
 static int lend_values(opt_chol *c)
@@ -215,7 +194,7 @@ static int lend_values(opt_chol *c)
     if (need > c->xcap) { /* with slack: the scaffold's share varies */
         free(c->xbuf);
         size_t cap = need + need / 32;
-        c->xbuf = alloc_values(cap);
+        c->xbuf = malloc(cap * sizeof *c->xbuf);
         c->xcap = c->xbuf ? cap : 0;
         if (!c->xbuf) return 0;
     }

@@ -17,6 +17,12 @@
 
 static const double one = 1.0, zero = 0.0;
 
+/* Updates from at most this many rows of a descendant into a supernode's
+ * columns are one dgemm instead of dsyrk + dgemm: 2D meshes make many such
+ * small updates, and one small-kernel call beats two packed ones (aphrodite,
+ * one thread: factorization -6%). */
+#define SMALL_UPDATE 32
+
 /* Subtract descendant d's update from supernode sn (block X, nsrow rows). */
 static void apply_descendant(const opt_snum *P, opt_snum_worker *wk, int d, int sn,
                              const double *Lx, double *X, int nsrow)
@@ -30,10 +36,16 @@ static void apply_descendant(const opt_snum *P, opt_snum_worker *wk, int d, int 
     int ndrow1 = p2 - p1, ndrow2 = ndrow - p1, ndrow3 = ndrow2 - ndrow1;
     const double *Xd = Lx + P->px[d] + p1;
     double *C = wk->C;
-    dsyrk_("L", "N", &ndrow1, &ndcol, &one, Xd, &ndrow, &zero, C, &ndrow2);
-    if (ndrow3 > 0)
-        dgemm_("N", "T", &ndrow3, &ndrow1, &ndcol, &one, Xd + ndrow1, &ndrow, Xd, &ndrow, &zero,
-               C + ndrow1, &ndrow2);
+    if (ndrow1 <= SMALL_UPDATE) {
+        /* one call (OpenBLAS's small-matrix kernel, no packing); the
+         * upper triangle it also computes is not used */
+        dgemm_("N", "T", &ndrow2, &ndrow1, &ndcol, &one, Xd, &ndrow, Xd, &ndrow, &zero, C, &ndrow2);
+    } else {
+        dsyrk_("L", "N", &ndrow1, &ndcol, &one, Xd, &ndrow, &zero, C, &ndrow2);
+        if (ndrow3 > 0)
+            dgemm_("N", "T", &ndrow3, &ndrow1, &ndcol, &one, Xd + ndrow1, &ndrow, Xd, &ndrow, &zero,
+                   C + ndrow1, &ndrow2);
+    }
     int *rel = wk->rel;
     for (int i = 0; i < ndrow2; i++) rel[i] = wk->map[rows[p1 + i]];
     for (int j = 0; j < ndrow1; j++) {
@@ -157,10 +169,14 @@ static void apply_descendant_cols(const opt_snum *P, opt_snum_worker *wk, int d,
     if (m1 == 0) return;
     const double *Xd = Lx + P->px[d] + p1;
     double *C = wk->C;
-    dsyrk_("L", "N", &m1, &ndcol, &one, Xd + ja, &ndrow, &zero, C, &ldc);
-    if (m3 > 0)
-        dgemm_("N", "T", &m3, &m1, &ndcol, &one, Xd + jb, &ndrow, Xd + ja, &ndrow, &zero, C + m1,
-               &ldc);
+    if (m1 <= SMALL_UPDATE) {
+        dgemm_("N", "T", &ldc, &m1, &ndcol, &one, Xd + ja, &ndrow, Xd + ja, &ndrow, &zero, C, &ldc);
+    } else {
+        dsyrk_("L", "N", &m1, &ndcol, &one, Xd + ja, &ndrow, &zero, C, &ldc);
+        if (m3 > 0)
+            dgemm_("N", "T", &m3, &m1, &ndcol, &one, Xd + jb, &ndrow, Xd + ja, &ndrow, &zero,
+                   C + m1, &ldc);
+    }
     for (int jj = 0; jj < m1; jj++) {
         int j = ja + jj;
         double *col = X + (size_t)rel[j] * (size_t)nsrow;

@@ -7,9 +7,9 @@
  * the narrow supernodes of a 2D mesh (1.09x at two threads, bench/
  * RESULTS-param.md); it also forms the permuted transpose of A and enters
  * an OpenMP region per supernode at every factorization. Here the
- * supernodes are left-looking as in CHOLMOD (the same symbolic factor,
- * the same BLAS calls per supernode: one thread gives its factor bit for
- * bit), A is scattered through the plan's map, and with T threads each
+ * supernodes are left-looking as in CHOLMOD (the same symbolic factor, the
+ * same factor to rounding; small updates are one dgemm where CHOLMOD makes
+ * two calls), A is scattered through the plan's map, and with T threads each
  * bin of the plan is factored in its own thread; above the cut, each
  * supernode's updates are split by columns and its rows below the
  * diagonal block by rows among the threads. BLAS runs one-threaded

@@ -350,6 +350,7 @@ opt_snum_shape opt_snum_get_shape(const opt_snum *P)
 {
     int T = P->threads, first_above = P->bptr[T > 1 ? T : 0];
     opt_snum_shape sh = {T, P->nsuper, first_above, P->nsuper - first_above, 0};
-    for (int i = first_above; i < P->nsuper; i++) sh.above_parallel += opt_snum_top_parallel(P, P->order[i]);
+    for (int i = first_above; i < P->nsuper; i++)
+        sh.above_parallel += opt_snum_top_parallel(P, P->order[i]);
     return sh;
 }

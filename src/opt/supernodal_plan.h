@@ -39,10 +39,10 @@ typedef struct opt_snum {
     int *col2super;                 /* n */
     int *next, *lpos;               /* nsuper */
     int *aptr, *asrc, *adst;        /* A's entries by supernode: value index, place in the block */
-    int *order, *bptr; /* bin k: order[bptr[k] .. bptr[k+1]); the rest: above the cut */
-    int *toprow;       /* n: a row's index among the rows above the cut, or -1 */
-    int ntop;          /* rows above the cut */
-    double *y;         /* n: the solve's vector, in the factor's order */
+    int *order, *bptr;  /* bin k: order[bptr[k] .. bptr[k+1]); the rest: above the cut */
+    int *toprow;        /* n: a row's index among the rows above the cut, or -1 */
+    int ntop;           /* rows above the cut */
+    double *y;          /* n: the solve's vector, in the factor's order */
     opt_snum_worker *w; /* threads */
 } opt_snum;
 

@@ -10,7 +10,8 @@ static const int inc1 = 1;
 
 /* Forward step of supernode sn: y_s = L_ss^-1 y_s, then the rows below
  * lose L_below y_s (into acc for rows above the cut when acc is given). */
-static void forward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx, double *acc)
+static void forward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx,
+                          double *acc)
 {
     int k1 = P->super[sn], nscol = P->super[sn + 1] - k1;
     int nsrow = P->pi[sn + 1] - P->pi[sn], nrest = nsrow - nscol;
