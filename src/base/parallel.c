@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdatomic.h>
 
 static atomic_int threads = 1;
@@ -90,7 +91,15 @@ static void grow(int want)
         pthread_mutex_lock(&pool.mu);
         unsigned long gen = pool.gen;
         pthread_mutex_unlock(&pool.mu);
+        /* the worker starts with every signal blocked (it inherits the
+         * mask): a process signal must reach the program's own threads,
+         * e.g. `scaf edit` waiting for SIGINT in sigsuspend, never a
+         * worker that happens to be idle */
+        sigset_t all, old;
+        sigfillset(&all);
+        pthread_sigmask(SIG_SETMASK, &all, &old);
         int ok = pthread_create(&t, &at, worker, (void *)(size_t)gen) == 0;
+        pthread_sigmask(SIG_SETMASK, &old, NULL);
         pthread_attr_destroy(&at);
         if (!ok) return;
         pool.nworkers++;

@@ -7,6 +7,11 @@
 
 #include "base/parallel.h"
 
+/* A factor whose work (sum of squared column counts) is below this is not
+ * cut: waking threads costs more than it saves (a few hundred triangles,
+ * e.g. an interactive drag). */
+#define CUT_MIN_WORK 1e6
+
 void opt_snum_destroy(opt_snum *P)
 {
     if (!P) return;
@@ -225,6 +230,7 @@ static int plan_bins(opt_snum *P, int T)
     }
     double total = 0;
     for (int sn = 0; sn < ns; sn++) total += W[sn];
+    if (total < CUT_MIN_WORK) goto done; /* too small to be worth threads */
     for (int sn = 0; sn < ns; sn++) {
         int p = parent[sn];
         if (p < 0) continue;

@@ -10,6 +10,7 @@
 #include <cmocka.h>
 
 #include <pthread.h>
+#include <signal.h>
 #include <string.h>
 
 #include "base/parallel.h"
@@ -114,12 +115,56 @@ static void reductions(void **state)
     par_set_threads(1);
 }
 
+/* Both chunks wait for each other, so the pool's worker runs one: it must
+ * have SIGINT and SIGTERM blocked (a program waiting for them in
+ * sigsuspend, like `scaf edit`, would otherwise miss them), whatever the
+ * mask of the thread that started the pool. */
+typedef struct mask_job {
+    pthread_barrier_t both;
+    pthread_t caller;
+    int worker_ran, worker_blocks_int, worker_blocks_term;
+} mask_job;
+
+static void mask_chunk(void *ctx, int k)
+{
+    (void)k;
+    mask_job *j = ctx;
+    pthread_barrier_wait(&j->both);
+    if (pthread_equal(pthread_self(), j->caller)) return;
+    sigset_t cur;
+    pthread_sigmask(SIG_BLOCK, NULL, &cur);
+    j->worker_ran = 1;
+    j->worker_blocks_int = sigismember(&cur, SIGINT) == 1;
+    j->worker_blocks_term = sigismember(&cur, SIGTERM) == 1;
+}
+
+static void workers_block_signals(void **state)
+{
+    (void)state;
+    sigset_t none, old;
+    sigemptyset(&none);
+    pthread_sigmask(SIG_SETMASK, &none, &old); /* the caller blocks nothing */
+    par_set_threads(2);
+    mask_job j;
+    memset(&j, 0, sizeof j);
+    pthread_barrier_init(&j.both, NULL, 2);
+    j.caller = pthread_self();
+    par_run(2, mask_chunk, &j);
+    pthread_barrier_destroy(&j.both);
+    par_set_threads(1);
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    assert_true(j.worker_ran);
+    assert_true(j.worker_blocks_int);
+    assert_true(j.worker_blocks_term);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(many_jobs),
         cmocka_unit_test(concurrent_callers),
         cmocka_unit_test(reductions),
+        cmocka_unit_test(workers_block_signals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
