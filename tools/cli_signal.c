@@ -1,16 +1,29 @@
 /* tools/cli_signal: see cli_signal.h. */
 #include "cli_signal.h"
 
+#include <errno.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static volatile sig_atomic_t caught;
 static struct sigaction previous_int, previous_term;
 static int installed;
+static int wake[2] = {-1, -1}; /* the handler writes, cli_signal_wait reads */
 
-static void on_signal(int sig) { caught = sig; }
+static void on_signal(int sig)
+{
+    caught = sig;
+    if (wake[1] >= 0) {
+        int saved = errno; /* write is async-signal-safe; errno is kept */
+        ssize_t r = write(wake[1], "", 1);
+        (void)r;
+        errno = saved;
+    }
+}
 
 void cli_signal_install(void)
 {
@@ -20,6 +33,10 @@ void cli_signal_install(void)
     sigemptyset(&sa.sa_mask);
     sa.sa_flags = SA_RESETHAND; /* the second interrupt is not caught */
     caught = 0;
+    if (wake[0] < 0 && pipe(wake) == 0) {
+        for (int k = 0; k < 2; k++) fcntl(wake[k], F_SETFD, FD_CLOEXEC);
+        fcntl(wake[1], F_SETFL, O_NONBLOCK); /* a full pipe never blocks the handler */
+    }
     sigaction(SIGINT, &sa, &previous_int);
     sigaction(SIGTERM, &sa, &previous_term);
     installed = 1;
@@ -31,6 +48,10 @@ void cli_signal_restore(void)
     sigaction(SIGINT, &previous_int, NULL);
     sigaction(SIGTERM, &previous_term, NULL);
     installed = 0;
+    for (int k = 0; k < 2; k++) {
+        if (wake[k] >= 0) close(wake[k]);
+        wake[k] = -1;
+    }
 }
 
 int cli_signal_run(int (*body)(int argc, char **argv), int argc, char **argv)
@@ -42,6 +63,19 @@ int cli_signal_run(int (*body)(int argc, char **argv), int argc, char **argv)
 }
 
 int cli_signal_caught(void) { return caught; }
+
+int cli_signal_wait(void)
+{
+    while (!caught) {
+        char c;
+        if (wake[0] < 0) {
+            pause(); /* no pipe (out of descriptors): the old way */
+            continue;
+        }
+        if (read(wake[0], &c, 1) < 0 && errno != EINTR) pause();
+    }
+    return caught;
+}
 
 int cli_signal_report(const char *cmd)
 {

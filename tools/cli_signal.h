@@ -31,6 +31,14 @@ int cli_signal_run(int (*body)(int argc, char **argv), int argc, char **argv);
 /* The signal received since cli_signal_install, or 0. */
 int cli_signal_caught(void);
 
+/* Block until SIGINT or SIGTERM has been caught; returns it. The handler
+ * also writes a byte to a pipe that this reads (the self-pipe trick), so
+ * the wait ends whichever thread the kernel runs the handler in: threads
+ * that libraries start (OpenBLAS's, at load time) do not block the
+ * signals, and sigsuspend in one thread misses a signal handled in
+ * another. */
+int cli_signal_wait(void);
+
 /* When a signal was received: print "scaf CMD: interrupted by SIGINT;
  * nothing written" and return 1; else 0. */
 int cli_signal_report(const char *cmd);

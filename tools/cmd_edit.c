@@ -148,8 +148,10 @@ static int make_layout(const char *in, const mesh *m, const char *start, double 
 }
 
 /* Serve until SIGINT / SIGTERM. The signals are blocked while the server
- * thread starts (it inherits the mask, so they always reach this thread)
- * and waited for with sigsuspend: no poll, no lost signal. */
+ * thread starts (it inherits the mask and never runs the handler), then
+ * waited for with cli_signal_wait: no poll, and no lost signal whichever
+ * thread handles it (a sigsuspend here hung when OpenBLAS's thread took
+ * the signal between the check and the wait). */
 static int serve(edit_api *api, int port, int quiet)
 {
     sigset_t block, old;
@@ -173,8 +175,8 @@ static int serve(edit_api *api, int port, int quiet)
         fprintf(stderr,
                 "scaf edit: open the address above in a browser; save writes %s; Ctrl-C stops\n",
                 api->out);
-    while (!cli_signal_caught()) sigsuspend(&old);
     sigprocmask(SIG_SETMASK, &old, NULL);
+    cli_signal_wait();
     edit_server_stop(&server);
     if (!quiet)
         fprintf(stderr, "scaf edit: stopped by %s; %d save(s)\n",
