@@ -188,7 +188,10 @@ double chart_packing_efficiency(int nuv, const double *UV, int nf, const int *F)
     }
     double side = fmax(hi[0] - lo[0], hi[1] - lo[1]);
     if (!(side > 0.0) || !isfinite(side) || !isfinite(area)) return 0.0;
-    return area / (side * side);
+    /* divided twice: side * side underflows to 0 when the extent is tiny
+     * next to the coordinates (area 0 / 0 was NaN, fuzz_uv_numbers);
+     * area <= nf side^2 / 2 keeps area / side from overflowing */
+    return area / side / side;
 }
 
 /* ---- boundary segments ---------------------------------------------------- */

@@ -329,6 +329,20 @@ static void extreme_coordinates(void **state)
         double UV2[6] = {-big[t], -big[t], big[t], -big[t], -big[t], big[t]};
         assert_true(chart_packing_efficiency(3, UV2, 1, F1) == 0.5);
     }
+    /* an extent tiny next to the coordinates (side^2 underflows): finite,
+     * not NaN (fuzz_uv_numbers: a triangle on two points) */
+    double thin[6] = {0x1.9cfc8c6df91p-172,
+                      0x1.240000601p-1013,
+                      0x1.9cfc8c6df91p-172,
+                      0x0.000a24001656dp-1022,
+                      0,
+                      0};
+    int F10[3] = {1, 0, 0};
+    double e_thin = chart_packing_efficiency(3, thin, 1, F10);
+    assert_true(isfinite(e_thin) && e_thin >= 0.0);
+    double sliver[6] = {1.0, 1e-300, 1.0 + 0x1p-52, 1e-300, 1.0, 3e-300};
+    double e_sliver = chart_packing_efficiency(3, sliver, 1, F1);
+    assert_true(isfinite(e_sliver) && e_sliver >= 0.0);
     /* two charts 3e154 apart: finite (the squared distance overflows) */
     double UV[12] = {0, 0, 1e154, 0, 0, 1e154, 4e154, 0, 5e154, 0, 4e154, 1e154};
     int F2[6] = {0, 1, 2, 3, 4, 5};
