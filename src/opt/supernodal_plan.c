@@ -52,12 +52,15 @@ typedef struct scatter_job {
     int *colin; /* per entry: its column within the supernode */
     int **map;  /* per chunk: row -> place */
     int *bad;   /* per chunk: an entry outside L's structure */
+    int bucket; /* scatter_pass: count (0) or bucket (1) */
 } scatter_job;
 
-static void scatter_count(void *ctx, int k)
+/* Chunk k's columns: count its entries per supernode (J->bucket 0), or
+ * bucket them at the fill positions left in J->cnt (J->bucket 1). */
+static void scatter_pass(void *ctx, int k)
 {
     scatter_job *J = ctx;
-    const opt_snum *P = J->P;
+    opt_snum *P = J->P;
     const opt_csc *A = J->A;
     int *cnt = J->cnt + (size_t)k * (size_t)P->nsuper;
     int c0 = (int)par_chunk_begin((size_t)P->n, J->nc, k);
@@ -66,25 +69,12 @@ static void scatter_count(void *ctx, int k)
         int b = J->pinv[c];
         for (int e = A->colptr[c]; e < A->colptr[c + 1]; e++) {
             int a = J->pinv[A->rowidx[e]];
-            cnt[P->col2super[a < b ? a : b]]++;
-        }
-    }
-}
-
-static void scatter_bucket(void *ctx, int k)
-{
-    scatter_job *J = ctx;
-    opt_snum *P = J->P;
-    const opt_csc *A = J->A;
-    int *fill = J->cnt + (size_t)k * (size_t)P->nsuper;
-    int c0 = (int)par_chunk_begin((size_t)P->n, J->nc, k);
-    int c1 = (int)par_chunk_begin((size_t)P->n, J->nc, k + 1);
-    for (int c = c0; c < c1; c++) {
-        int b = J->pinv[c];
-        for (int e = A->colptr[c]; e < A->colptr[c + 1]; e++) {
-            int a = J->pinv[A->rowidx[e]];
             int lo = a < b ? a : b, hi = a < b ? b : a, sn = P->col2super[lo];
-            int t = fill[sn]++;
+            if (!J->bucket) {
+                cnt[sn]++;
+                continue;
+            }
+            int t = cnt[sn]++;
             P->asrc[t] = e;
             P->adst[t] = hi; /* the row for now */
             J->colin[t] = lo - P->super[sn];
@@ -132,8 +122,8 @@ static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int thr
             for (int i = 0; i < n; i++) map[k][i] = -1;
     }
     for (int k = 0; ok && k < n; k++) pinv[perm[k]] = k;
-    scatter_job J = {P, A, pinv, nc, cnt, colin, map, bad};
-    if (ok) par_run(nc, scatter_count, &J);
+    scatter_job J = {P, A, pinv, nc, cnt, colin, map, bad, 0};
+    if (ok) par_run(nc, scatter_pass, &J);
     /* fill positions: supernode by supernode, chunk by chunk */
     for (int sn = 0, t = 0; ok && sn < ns; sn++) {
         P->aptr[sn] = t;
@@ -144,7 +134,8 @@ static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int thr
         }
         P->aptr[sn + 1] = t;
     }
-    if (ok) par_run(nc, scatter_bucket, &J);
+    J.bucket = 1;
+    if (ok) par_run(nc, scatter_pass, &J);
     if (ok) par_run(nc, scatter_place, &J);
     for (int k = 0; ok && k < nc; k++) ok = !bad[k];
     for (int k = 0; map && k < nc; k++) free(map[k]);
