@@ -89,6 +89,8 @@ struct opt_chol {
     int own_numeric;           /* factor with opt/supernodal_numeric, not cholmod_factorize */
     double *xbuf;              /* its factor's values, kept across analyses (see free_factor) */
     size_t xcap;               /* doubles in xbuf */
+    double *fwd_b;             /* the right-hand side whose forward sweep the plan holds */
+    int fwd_valid;             /* fwd_b's forward sweep is done (opt_chol_factor_rhs) */
     opt_chol_stats st;
 };
 
@@ -134,6 +136,7 @@ void opt_chol_set_numeric(opt_chol *c, opt_numeric numeric)
     c->own_numeric = numeric == OPT_NUMERIC_SUPERNODAL;
     opt_snum_destroy(c->snum);
     c->snum = NULL;
+    c->fwd_valid = 0;
 }
 
 void opt_chol_set_fixed_part(opt_chol *c, int nfixed) { c->nfixed = nfixed > 0 ? nfixed : 0; }
@@ -210,6 +213,7 @@ void opt_chol_destroy(opt_chol *c)
     if (!c) return;
     free_factor(c);
     free(c->xbuf);
+    free(c->fwd_b);
     opt_snum_destroy(c->snum);
     opt_split_destroy(c->split);
     cholmod_free_dense(&c->X, &c->cm);
@@ -314,6 +318,7 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     opt_snum_destroy(c->snum);
     c->snum = NULL;
     c->factored = 0;
+    c->fwd_valid = 0;
     c->n = c->nnz = 0;
     cholmod_sparse S = opt_csc_cholmod_view(A);
     int lv = omp_serial_begin();
@@ -375,6 +380,12 @@ long opt_chol_not_posdef_total(void) { return atomic_load(&not_posdef_total); }
 
 scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
 {
+    return opt_chol_factor_rhs(c, A, NULL, err);
+}
+
+scaf_status opt_chol_factor_rhs(opt_chol *c, const opt_csc *A, const double *b, scaf_error *err)
+{
+    c->fwd_valid = 0;
     if (!same_pattern(c, A)) {
         scaf_status st = opt_chol_analyze_given(c, A, NULL, err);
         if (st != SCAF_OK) return st;
@@ -395,7 +406,18 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err)
     if (c->snum) {
         c->cm.status = CHOLMOD_OK;
         ok = 1;
-        if (opt_snum_factor(c->snum, A, c->L) >= 0) c->cm.status = CHOLMOD_NOT_POSDEF;
+        double *fb = NULL;
+        if (b) {
+            fb = realloc(c->fwd_b, ((size_t)A->n + 1) * sizeof *fb);
+            if (fb) {
+                c->fwd_b = fb;
+                memcpy(fb, b, (size_t)A->n * sizeof *fb);
+            }
+        }
+        int minor =
+            fb ? opt_snum_factor_forward(c->snum, A, c->L, b) : opt_snum_factor(c->snum, A, c->L);
+        if (minor >= 0) c->cm.status = CHOLMOD_NOT_POSDEF;
+        else c->fwd_valid = fb != NULL;
     } else {
         int lv = omp_serial_begin();
         ok = cholmod_factorize(&S, c->L, &c->cm);
@@ -426,7 +448,10 @@ scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, sc
                        "CHOLMOD solve called before a successful factorization");
     if (nrhs < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD solve: %d right-hand sides", nrhs);
     double t0 = timer_now();
-    if (c->snum) {
+    if (c->snum && c->fwd_valid && nrhs == 1 &&
+        memcmp(B, c->fwd_b, (size_t)c->n * sizeof *B) == 0) {
+        opt_snum_backward(c->snum, c->L, X); /* the forward sweep ran in the factorization */
+    } else if (c->snum) {
         opt_snum_solve(c->snum, c->L, nrhs, B, X);
     } else {
         cholmod_dense Bd;
@@ -446,6 +471,7 @@ scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, sc
         if (!ok) return fail(c, "solve", err);
         memcpy(X, c->X->x, Bd.nzmax * sizeof *X);
     }
+    c->fwd_valid = 0; /* the sweeps overwrote the plan's vector */
     c->st.t_solve += timer_now() - t0;
     return SCAF_OK;
 }

@@ -14,6 +14,7 @@
 #include "base/parallel.h"
 #include "opt/blas_threads.h"
 #include "opt/dense_blas.h"
+#include "opt/supernodal_solve.h"
 
 static const double one = 1.0, zero = 0.0;
 
@@ -135,7 +136,8 @@ typedef struct factor_job {
     opt_snum *P;
     const double *Ax;
     double *Lx;
-    int sn; /* top phase: the supernode */
+    int sn;      /* top phase: the supernode */
+    int forward; /* run the forward sweep too (opt_snum_factor_forward) */
 } factor_job;
 
 static void run_bin(void *ctx, int k)
@@ -144,8 +146,10 @@ static void run_bin(void *ctx, int k)
     opt_snum *P = J->P;
     opt_snum_worker *wk = &P->w[k];
     wk->minor = -1;
-    for (int i = P->bptr[k]; i < P->bptr[k + 1] && wk->minor < 0; i++)
+    for (int i = P->bptr[k]; i < P->bptr[k + 1] && wk->minor < 0; i++) {
         wk->minor = factor_super(P, wk, P->order[i], J->Ax, J->Lx, wk->head);
+        if (wk->minor < 0 && J->forward) opt_snum_forward_super(P, wk, P->order[i], J->Lx, wk->acc);
+    }
 }
 
 /* The part of descendant d's update that falls in columns [c0, c1) of
@@ -246,7 +250,7 @@ static int factor_top(opt_snum *P, int sn, const double *Ax, double *Lx)
     int T = P->threads;
     double *X = Lx + P->px[sn];
     assemble(P, sn, Ax, X);
-    factor_job J = {P, Ax, Lx, sn};
+    factor_job J = {P, Ax, Lx, sn, 0};
     if (opt_snum_top_parallel(P, sn)) {
         par_run(T, run_top_updates, &J);
         relink_top(P, sn);
@@ -261,26 +265,40 @@ static int factor_top(opt_snum *P, int sn, const double *Ax, double *Lx)
     return -1;
 }
 
-int opt_snum_factor(opt_snum *P, const opt_csc *A, cholmod_factor *L)
+static int factor(opt_snum *P, const opt_csc *A, cholmod_factor *L, const double *b)
 {
     int T = P->threads, ns = P->nsuper;
     for (int k = 0; k < T; k++) {
         for (int sn = 0; sn < ns; sn++) P->w[k].head[sn] = -1;
         P->w[k].minor = -1;
     }
+    if (b) opt_snum_forward_begin(P, L, b);
     /* BLAS one-threaded: the threads are scaf's (bins, then the top's
      * updates and rows); OpenBLAS's own would spin beside them */
     int blas = opt_blas_serial_begin(T);
-    factor_job J = {P, A->val, L->x, -1};
+    factor_job J = {P, A->val, L->x, -1, b != NULL};
     int minor = -1;
     if (T > 1) {
         par_run(T, run_bin, &J);
         for (int k = 0; k < T; k++)
             if (P->w[k].minor >= 0 && (minor < 0 || P->w[k].minor < minor)) minor = P->w[k].minor;
+        if (b && minor < 0) opt_snum_forward_gather(P);
     }
-    for (int i = P->bptr[T > 1 ? T : 0]; i < ns && minor < 0; i++)
+    for (int i = P->bptr[T > 1 ? T : 0]; i < ns && minor < 0; i++) {
         minor = factor_top(P, P->order[i], A->val, L->x);
+        if (b && minor < 0) opt_snum_forward_super(P, &P->w[0], P->order[i], L->x, NULL);
+    }
     opt_blas_serial_end(blas);
     L->minor = minor < 0 ? L->n : (size_t)minor;
     return minor;
+}
+
+int opt_snum_factor(opt_snum *P, const opt_csc *A, cholmod_factor *L)
+{
+    return factor(P, A, L, NULL);
+}
+
+int opt_snum_factor_forward(opt_snum *P, const opt_csc *A, cholmod_factor *L, const double *b)
+{
+    return factor(P, A, L, b);
 }

@@ -8,10 +8,8 @@
 static const double one = 1.0, zero = 0.0, minus_one = -1.0;
 static const int inc1 = 1;
 
-/* Forward step of supernode sn: y_s = L_ss^-1 y_s, then the rows below
- * lose L_below y_s (into acc for rows above the cut when acc is given). */
-static void forward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx,
-                          double *acc)
+void opt_snum_forward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx,
+                            double *acc)
 {
     int k1 = P->super[sn], nscol = P->super[sn + 1] - k1;
     int nsrow = P->pi[sn + 1] - P->pi[sn], nrest = nsrow - nscol;
@@ -52,9 +50,8 @@ static void run_bin_forward(void *ctx, int k)
 {
     solve_job *J = ctx;
     opt_snum_worker *wk = &J->P->w[k];
-    for (int t = 0; t < J->P->ntop; t++) wk->acc[t] = 0;
     for (int i = J->P->bptr[k]; i < J->P->bptr[k + 1]; i++)
-        forward_super(J->P, wk, J->P->order[i], J->Lx, wk->acc);
+        opt_snum_forward_super(J->P, wk, J->P->order[i], J->Lx, wk->acc);
 }
 
 static void run_bin_backward(void *ctx, int k)
@@ -64,28 +61,49 @@ static void run_bin_backward(void *ctx, int k)
         backward_super(J->P, &J->P->w[k], J->P->order[i], J->Lx);
 }
 
-void opt_snum_solve(opt_snum *P, const cholmod_factor *L, int nrhs, const double *B, double *X)
+void opt_snum_forward_begin(opt_snum *P, const cholmod_factor *L, const double *b)
 {
-    int n = P->n, T = P->threads, ns = P->nsuper, top = P->bptr[T > 1 ? T : 0];
+    const int *perm = L->Perm;
+    for (int k = 0; k < P->n; k++) P->y[k] = b[perm[k]];
+    for (int h = 0; h < P->threads; h++)
+        for (int t = 0; t < P->ntop; t++) P->w[h].acc[t] = 0;
+}
+
+void opt_snum_forward_gather(opt_snum *P)
+{
+    if (P->threads < 2) return;
+    for (int k = 0; k < P->n; k++) {
+        int t = P->toprow[k];
+        if (t < 0) continue;
+        for (int h = 0; h < P->threads; h++) P->y[k] -= P->w[h].acc[t];
+    }
+}
+
+void opt_snum_backward(opt_snum *P, const cholmod_factor *L, double *x)
+{
+    int T = P->threads, ns = P->nsuper, top = P->bptr[T > 1 ? T : 0];
     const int *perm = L->Perm;
     solve_job J = {P, L->x};
     int blas = opt_blas_serial_begin(T);
+    for (int i = ns - 1; i >= top; i--) backward_super(P, &P->w[0], P->order[i], L->x);
+    if (T > 1) par_run(T, run_bin_backward, &J);
+    opt_blas_serial_end(blas);
+    for (int k = 0; k < P->n; k++) x[perm[k]] = P->y[k];
+}
+
+void opt_snum_solve(opt_snum *P, const cholmod_factor *L, int nrhs, const double *B, double *X)
+{
+    int n = P->n, T = P->threads, ns = P->nsuper, top = P->bptr[T > 1 ? T : 0];
+    solve_job J = {P, L->x};
     for (int r = 0; r < nrhs; r++) {
         const double *b = B + (size_t)r * (size_t)n;
         double *x = X + (size_t)r * (size_t)n;
-        for (int k = 0; k < n; k++) P->y[k] = b[perm[k]];
-        if (T > 1) {
-            par_run(T, run_bin_forward, &J);
-            for (int k = 0; k < n; k++) {
-                int t = P->toprow[k];
-                if (t < 0) continue;
-                for (int h = 0; h < T; h++) P->y[k] -= P->w[h].acc[t];
-            }
-        }
-        for (int i = top; i < ns; i++) forward_super(P, &P->w[0], P->order[i], L->x, NULL);
-        for (int i = ns - 1; i >= top; i--) backward_super(P, &P->w[0], P->order[i], L->x);
-        if (T > 1) par_run(T, run_bin_backward, &J);
-        for (int k = 0; k < n; k++) x[perm[k]] = P->y[k];
+        opt_snum_forward_begin(P, L, b);
+        int blas = opt_blas_serial_begin(T);
+        if (T > 1) par_run(T, run_bin_forward, &J);
+        opt_snum_forward_gather(P);
+        for (int i = top; i < ns; i++) opt_snum_forward_super(P, &P->w[0], P->order[i], L->x, NULL);
+        opt_blas_serial_end(blas);
+        opt_snum_backward(P, L, x);
     }
-    opt_blas_serial_end(blas);
 }

@@ -13,4 +13,18 @@
  * plan): nrhs columns of n, column-major; X may be B. */
 void opt_snum_solve(opt_snum *P, const cholmod_factor *L, int nrhs, const double *B, double *X);
 
+/* The sweeps one at a time, so that the forward one can run inside the
+ * factorization (opt/supernodal_numeric) while each supernode is still in
+ * cache. forward_begin: y = b in the factor's order, the threads' updates
+ * of the rows above the cut zeroed; forward_super: supernode sn's forward
+ * step (acc: the calling bin's updates of the rows above the cut, NULL
+ * above the cut and with one thread); forward_gather: after the bins,
+ * subtract their updates (in thread order); backward: the backward sweep
+ * after the whole forward one, x = the solution in the natural order. */
+void opt_snum_forward_begin(opt_snum *P, const cholmod_factor *L, const double *b);
+void opt_snum_forward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx,
+                            double *acc);
+void opt_snum_forward_gather(opt_snum *P);
+void opt_snum_backward(opt_snum *P, const cholmod_factor *L, double *x);
+
 #endif /* SCAF_OPT_SUPERNODAL_SOLVE_H */

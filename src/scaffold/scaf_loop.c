@@ -405,7 +405,7 @@ static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, sca
         st = opt_chol_analyze_given(w->chol, &w->sys.A, given, err);
         if (st != SCAF_OK) return st;
     }
-    return opt_chol_factor(w->chol, &w->sys.A, err);
+    return opt_chol_factor_rhs(w->chol, &w->sys.A, w->rhs, err);
 }
 
 /* Factor A + mu diag(A) with rhs + mu diag(A) x for growing mu, after a
@@ -442,7 +442,7 @@ static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, co
                     w->rhs[c] = r0[c] + mu * d0[c] * X[(size_t)d * (size_t)v + a];
                 }
         err_clear(err);
-        st = opt_chol_factor(w->chol, A, err);
+        st = opt_chol_factor_rhs(w->chol, A, w->rhs, err);
     }
     free(d0);
     free(r0);

@@ -248,6 +248,46 @@ static void plain_cholmod_solve(const opt_csc *A, const int *perm, int nrhs, con
  * 1 right-hand sides. */
 /* With cholmod_factorize: bit for bit; with opt/supernodal_numeric (its
  * own solve too): to rounding. */
+/* opt_chol_factor_rhs: the solve of that right-hand side (forward sweep
+ * done in the factorization) gives the bits of factor + solve; another
+ * right-hand side, or the same one solved again, takes the whole solve. */
+static void factor_with_rhs(void **state)
+{
+    (void)state;
+    opt_csc A;
+    grid_laplacian(&A, 40, 0.1, 1);
+    int n = A.n;
+    double *b = malloc(n * sizeof *b), *b2 = malloc(n * sizeof *b2), *x = malloc(n * sizeof *x),
+           *y = malloc(n * sizeof *y);
+    rng r = {5};
+    for (int i = 0; i < n; i++) {
+        b[i] = rng_uniform(&r, -1, 1);
+        b2[i] = b[i];
+    }
+    b2[n / 2] += 1.0;
+    scaf_error e;
+    opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+    assert_non_null(c);
+    assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+    assert_int_equal(opt_chol_solve(c, 1, b, y, &e), SCAF_OK);
+    assert_int_equal(opt_chol_factor_rhs(c, &A, b, &e), SCAF_OK);
+    assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+    assert_memory_equal(x, y, n * sizeof *x);
+    assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK); /* again: whole solve */
+    assert_memory_equal(x, y, n * sizeof *x);
+    assert_int_equal(opt_chol_solve(c, 1, b2, y, &e), SCAF_OK);
+    assert_int_equal(opt_chol_factor_rhs(c, &A, b, &e), SCAF_OK);
+    assert_int_equal(opt_chol_solve(c, 1, b2, x, &e), SCAF_OK); /* not b: whole solve */
+    assert_memory_equal(x, y, n * sizeof *x);
+    assert_int_equal(opt_chol_get_stats(c).analyses, 1);
+    opt_chol_destroy(c);
+    free(b);
+    free(b2);
+    free(x);
+    free(y);
+    opt_csc_free(&A);
+}
+
 static void same_bits_as_plain_cholmod(void **state)
 {
     (void)state;
@@ -706,12 +746,12 @@ static void concurrent_factorizations(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(triplets_sum_duplicates),   cmocka_unit_test(solves_and_reuses_analysis),
-        cmocka_unit_test(given_random_permutation),  cmocka_unit_test(same_bits_as_plain_cholmod),
-        cmocka_unit_test(block_ordering_solves),     cmocka_unit_test(relaxed_supernodes_solve),
-        cmocka_unit_test(upper_sorted_layout),       cmocka_unit_test(indefinite_is_an_error),
-        cmocka_unit_test(concurrent_factorizations), cmocka_unit_test(block_symbolic_analysis),
-        cmocka_unit_test(split_symbolic_analysis),
+        cmocka_unit_test(triplets_sum_duplicates),  cmocka_unit_test(solves_and_reuses_analysis),
+        cmocka_unit_test(given_random_permutation), cmocka_unit_test(same_bits_as_plain_cholmod),
+        cmocka_unit_test(factor_with_rhs),          cmocka_unit_test(block_ordering_solves),
+        cmocka_unit_test(relaxed_supernodes_solve), cmocka_unit_test(upper_sorted_layout),
+        cmocka_unit_test(indefinite_is_an_error),   cmocka_unit_test(concurrent_factorizations),
+        cmocka_unit_test(block_symbolic_analysis),  cmocka_unit_test(split_symbolic_analysis),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -238,6 +238,41 @@ static void not_positive_definite_where_cholmod_says(void **state)
     teardown_fixture(&f);
 }
 
+/* The forward sweep run inside the factorization, then the backward one:
+ * the same bits as the factorization followed by the whole solve, at 1, 2
+ * and 3 threads (a tree cut, shared supernodes above it). */
+static void forward_sweep_in_the_factorization(void **state)
+{
+    (void)state;
+    fixture f;
+    setup_fixture(&f, 110, CHOLMOD_METIS, 2);
+    int n = f.A.n;
+    double *b = malloc((size_t)n * sizeof *b), *x = malloc((size_t)n * sizeof *x),
+           *z = malloc((size_t)n * sizeof *z);
+    for (int i = 0; i < n; i++) b[i] = sin(0.3 * i) + (i % 7);
+    for (int T = 1; T <= 3; T++) {
+        cholmod_factor *L = cholmod_copy_factor(f.S, &f.cm);
+        assert_true(cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, &f.cm));
+        par_set_threads(T);
+        opt_snum *P = opt_snum_create(L, &f.A, T);
+        assert_non_null(P);
+        assert_int_equal(opt_snum_get_shape(P).threads, T);
+        assert_int_equal(opt_snum_factor(P, &f.A, L), -1);
+        opt_snum_solve(P, L, 1, b, x);
+        for (int i = 0; i < n; i++) z[i] = -1.0;
+        assert_int_equal(opt_snum_factor_forward(P, &f.A, L, b), -1);
+        opt_snum_backward(P, L, z);
+        assert_memory_equal(x, z, (size_t)n * sizeof *x);
+        opt_snum_destroy(P);
+        cholmod_free_factor(&L, &f.cm);
+    }
+    par_set_threads(1);
+    free(b);
+    free(x);
+    free(z);
+    teardown_fixture(&f);
+}
+
 /* Through opt_chol: solves to the residual of CHOLMOD's own factor, in one
  * and in two threads; a bad matrix is an error. */
 static void opt_chol_solves_with_it(void **state)
@@ -281,6 +316,7 @@ int main(void)
         cmocka_unit_test(equals_cholmod_metis),
         cmocka_unit_test(equals_cholmod_amd_relaxed),
         cmocka_unit_test(shared_supernodes_above_the_cut),
+        cmocka_unit_test(forward_sweep_in_the_factorization),
         cmocka_unit_test(not_positive_definite_where_cholmod_says),
         cmocka_unit_test(opt_chol_solves_with_it),
     };
