@@ -86,6 +86,7 @@ struct opt_chol {
     int nfixed;                /* leading unknowns of a fixed pattern and order */
     opt_split_symbolic *split; /* their analysis, kept (opt/split_symbolic) */
     opt_snum *snum;            /* numerical factorization plan for L (opt/supernodal_numeric) */
+    opt_snum_kept *kept;       /* its fixed part's scatter of A, kept across plans */
     int own_numeric;           /* factor with opt/supernodal_numeric, not cholmod_factorize */
     double *xbuf;              /* its factor's values, kept across analyses (see free_factor) */
     size_t xcap;               /* doubles in xbuf */
@@ -215,6 +216,7 @@ void opt_chol_destroy(opt_chol *c)
     free(c->xbuf);
     free(c->fwd_b);
     opt_snum_destroy(c->snum);
+    opt_snum_kept_destroy(c->kept);
     opt_split_destroy(c->split);
     cholmod_free_dense(&c->X, &c->cm);
     cholmod_free_dense(&c->Y, &c->cm);
@@ -401,7 +403,8 @@ scaf_status opt_chol_factor_rhs(opt_chol *c, const opt_csc *A, const double *b, 
          * (out of memory) cholmod_factorize does the work */
         if (c->L->xtype == CHOLMOD_PATTERN) lend_values(c);
         if (c->L->xtype == CHOLMOD_REAL && c->L->is_ll)
-            c->snum = opt_snum_create(c->L, A, par_threads());
+            c->snum = opt_snum_create_kept(c->L, A, par_threads(), c->nfixed, &c->kept);
+        if (c->snum) c->st.kept_scatters += c->snum->kept_reused;
     }
     if (c->snum) {
         c->cm.status = CHOLMOD_OK;

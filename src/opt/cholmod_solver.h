@@ -32,6 +32,8 @@ typedef struct opt_chol_stats {
                               (opt_chol_set_block, opt/block_symbolic) */
     int split_analyses; /* of which reused the fixed part's analysis
                               (opt_chol_set_fixed_part, opt/split_symbolic) */
+    int kept_scatters;  /* new patterns whose fixed part's entries kept their
+                              places from the last plan (opt/supernodal_plan) */
     int factorizations; /* numerical factorizations done */
     int not_posdef;     /* factorizations that found the matrix not
                               positive definite (the caller's recovery,

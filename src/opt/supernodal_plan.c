@@ -38,33 +38,49 @@ void opt_snum_destroy(opt_snum *P)
     free(P);
 }
 
-/* A's entries grouped by the supernode whose block holds them (aptr,
- * asrc, adst): counted and bucketed by column chunks (chunk k's entries
- * of a supernode after chunk k-1's: the serial order), with the entry's
- * column within the supernode and its row, then placed supernode by
- * supernode through a row -> place map. */
+/* A's entries of columns [c0, c1) grouped by the supernode whose block
+ * holds them (ptr over the supernodes, src: value index, col: column
+ * within the supernode, place: row's place in the supernode's rows):
+ * counted and bucketed by column chunks (chunk k's entries of a supernode
+ * after chunk k-1's: the serial order), then placed supernode by supernode
+ * through a row -> place map. */
+typedef struct entry_groups {
+    int *ptr, *src, *col, *place;
+} entry_groups;
+
+static void groups_free(entry_groups *g)
+{
+    free(g->ptr);
+    free(g->src);
+    free(g->col);
+    free(g->place);
+    memset(g, 0, sizeof *g);
+}
+
 typedef struct scatter_job {
-    opt_snum *P;
+    const opt_snum *P;
     const opt_csc *A;
     const int *pinv;
+    int c0, c1; /* columns */
     int nc;     /* chunks */
     int *cnt;   /* nc x nsuper: entries per chunk and supernode, then fill positions */
-    int *colin; /* per entry: its column within the supernode */
+    entry_groups *g;
     int **map;  /* per chunk: row -> place */
     int *bad;   /* per chunk: an entry outside L's structure */
     int bucket; /* scatter_pass: count (0) or bucket (1) */
 } scatter_job;
 
 /* Chunk k's columns: count its entries per supernode (J->bucket 0), or
- * bucket them at the fill positions left in J->cnt (J->bucket 1). */
+ * bucket them at the fill positions left in J->cnt (J->bucket 1; place
+ * holds the row for now). */
 static void scatter_pass(void *ctx, int k)
 {
     scatter_job *J = ctx;
-    opt_snum *P = J->P;
+    const opt_snum *P = J->P;
     const opt_csc *A = J->A;
     int *cnt = J->cnt + (size_t)k * (size_t)P->nsuper;
-    int c0 = (int)par_chunk_begin((size_t)P->n, J->nc, k);
-    int c1 = (int)par_chunk_begin((size_t)P->n, J->nc, k + 1);
+    int c0 = J->c0 + (int)par_chunk_begin((size_t)(J->c1 - J->c0), J->nc, k);
+    int c1 = J->c0 + (int)par_chunk_begin((size_t)(J->c1 - J->c0), J->nc, k + 1);
     for (int c = c0; c < c1; c++) {
         int b = J->pinv[c];
         for (int e = A->colptr[c]; e < A->colptr[c + 1]; e++) {
@@ -75,9 +91,9 @@ static void scatter_pass(void *ctx, int k)
                 continue;
             }
             int t = cnt[sn]++;
-            P->asrc[t] = e;
-            P->adst[t] = hi; /* the row for now */
-            J->colin[t] = lo - P->super[sn];
+            J->g->src[t] = e;
+            J->g->place[t] = hi;
+            J->g->col[t] = lo - P->super[sn];
         }
     }
 }
@@ -85,54 +101,58 @@ static void scatter_pass(void *ctx, int k)
 static void scatter_place(void *ctx, int k)
 {
     scatter_job *J = ctx;
-    opt_snum *P = J->P;
+    const opt_snum *P = J->P;
     int *map = J->map[k];
     int s0 = (int)par_chunk_begin((size_t)P->nsuper, J->nc, k);
     int s1 = (int)par_chunk_begin((size_t)P->nsuper, J->nc, k + 1);
     for (int sn = s0; sn < s1; sn++) {
+        if (J->g->ptr[sn] == J->g->ptr[sn + 1]) continue;
         const int *rows = P->s + P->pi[sn];
         int nsrow = P->pi[sn + 1] - P->pi[sn];
         for (int i = 0; i < nsrow; i++) map[rows[i]] = i;
-        for (int t = P->aptr[sn]; t < P->aptr[sn + 1]; t++) {
-            int r = P->adst[t], place = map[r];
+        for (int t = J->g->ptr[sn]; t < J->g->ptr[sn + 1]; t++) {
+            int r = J->g->place[t], place = map[r];
             if (place < 0 || place >= nsrow || rows[place] != r) J->bad[k] = 1; /* not in L */
-            P->adst[t] = J->colin[t] * nsrow + place;
+            J->g->place[t] = place;
         }
     }
 }
 
-/* 0 when A has an entry outside L's structure or memory runs out. */
-static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int threads)
+/* Group the entries of columns [c0, c1) into g; 0 when one is outside L's
+ * structure or memory runs out. */
+static int group_entries(const opt_snum *P, const opt_csc *A, const int *pinv, int c0, int c1,
+                         int threads, entry_groups *g)
 {
-    int n = P->n, ns = P->nsuper, nc = par_chunks((size_t)A->nnz);
+    int n = P->n, ns = P->nsuper;
+    size_t nz = (size_t)(A->colptr[c1] - A->colptr[c0]) + 1;
+    int nc = par_chunks(nz);
     if (nc > threads) nc = threads;
-    size_t nz = (size_t)A->nnz + 1;
-    int *pinv = malloc((size_t)n * sizeof *pinv);
-    int *cnt = calloc((size_t)nc * (size_t)ns + 1, sizeof *cnt);
-    int *colin = malloc(nz * sizeof *colin), *bad = calloc((size_t)nc, sizeof *bad);
+    if (nc > c1 - c0) nc = c1 - c0 > 0 ? c1 - c0 : 1;
+    int *cnt = calloc((size_t)nc * (size_t)ns + 1, sizeof *cnt),
+        *bad = calloc((size_t)nc, sizeof *bad);
     int **map = calloc((size_t)nc, sizeof *map);
-    P->aptr = calloc((size_t)ns + 1, sizeof *P->aptr);
-    P->asrc = malloc(nz * sizeof *P->asrc);
-    P->adst = malloc(nz * sizeof *P->adst);
-    int ok = pinv && cnt && colin && bad && map && P->aptr && P->asrc && P->adst;
+    g->ptr = calloc((size_t)ns + 1, sizeof *g->ptr);
+    g->src = malloc(nz * sizeof *g->src);
+    g->col = malloc(nz * sizeof *g->col);
+    g->place = malloc(nz * sizeof *g->place);
+    int ok = cnt && bad && map && g->ptr && g->src && g->col && g->place;
     for (int k = 0; ok && k < nc; k++) {
         map[k] = malloc((size_t)n * sizeof *map[k]);
         ok = map[k] != NULL;
         if (ok)
             for (int i = 0; i < n; i++) map[k][i] = -1;
     }
-    for (int k = 0; ok && k < n; k++) pinv[perm[k]] = k;
-    scatter_job J = {P, A, pinv, nc, cnt, colin, map, bad, 0};
+    scatter_job J = {P, A, pinv, c0, c1, nc, cnt, g, map, bad, 0};
     if (ok) par_run(nc, scatter_pass, &J);
     /* fill positions: supernode by supernode, chunk by chunk */
     for (int sn = 0, t = 0; ok && sn < ns; sn++) {
-        P->aptr[sn] = t;
+        g->ptr[sn] = t;
         for (int k = 0; k < nc; k++) {
             int c = cnt[(size_t)k * (size_t)ns + (size_t)sn];
             cnt[(size_t)k * (size_t)ns + (size_t)sn] = t;
             t += c;
         }
-        P->aptr[sn + 1] = t;
+        g->ptr[sn + 1] = t;
     }
     J.bucket = 1;
     if (ok) par_run(nc, scatter_pass, &J);
@@ -141,8 +161,150 @@ static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int thr
     for (int k = 0; map && k < nc; k++) free(map[k]);
     free(map);
     free(bad);
-    free(colin);
     free(cnt);
+    return ok;
+}
+
+/* ---- the leading columns' groups, kept across plans ---------------------- */
+
+struct opt_snum_kept {
+    int nf, nsf;          /* leading columns; the supernodes holding exactly them */
+    int *perm;            /* nf: the factor's order of them */
+    int *super;           /* nsf + 1 */
+    int *colptr, *rowidx; /* A's pattern in them */
+    int *rptr, *rows;     /* each of the nsf supernodes' rows (all below nf) */
+    entry_groups g;       /* their entries (ptr over the nsf supernodes) */
+};
+
+void opt_snum_kept_destroy(opt_snum_kept *K)
+{
+    if (!K) return;
+    free(K->perm);
+    free(K->super);
+    free(K->colptr);
+    free(K->rowidx);
+    free(K->rptr);
+    free(K->rows);
+    groups_free(&K->g);
+    free(K);
+}
+
+/* Supernodes holding exactly the first nf columns of the factor's order
+ * when those are A's first nf columns (the fixed part eliminated first);
+ * 0 otherwise. */
+static int leading_supernodes(const opt_snum *P, const int *perm, int nf)
+{
+    if (nf <= 0 || nf >= P->n) return 0;
+    for (int k = 0; k < nf; k++)
+        if (perm[k] >= nf) return 0;
+    int nsf = P->col2super[nf - 1] + 1;
+    return P->super[nsf] == nf ? nsf : 0;
+}
+
+/* Whether K was made for these leading columns: the same order, the same
+ * supernodes with the same rows among them, the same pattern of A. */
+static int kept_matches(const opt_snum_kept *K, const opt_snum *P, const opt_csc *A,
+                        const int *perm, int nf, int nsf)
+{
+    if (!K || K->nf != nf || K->nsf != nsf) return 0;
+    if (memcmp(K->perm, perm, (size_t)nf * sizeof *perm) ||
+        memcmp(K->super, P->super, ((size_t)nsf + 1) * sizeof *K->super) ||
+        memcmp(K->colptr, A->colptr, ((size_t)nf + 1) * sizeof *K->colptr) ||
+        memcmp(K->rowidx, A->rowidx, (size_t)A->colptr[nf] * sizeof *K->rowidx))
+        return 0;
+    for (int sn = 0; sn < nsf; sn++) {
+        int m = K->rptr[sn + 1] - K->rptr[sn], nsrow = P->pi[sn + 1] - P->pi[sn];
+        const int *rows = P->s + P->pi[sn];
+        if (m > nsrow || (m < nsrow && rows[m] < nf) ||
+            memcmp(K->rows + K->rptr[sn], rows, (size_t)m * sizeof *rows))
+            return 0;
+    }
+    return 1;
+}
+
+static opt_snum_kept *kept_build(const opt_snum *P, const opt_csc *A, const int *perm,
+                                 const int *pinv, int nf, int nsf, int threads)
+{
+    opt_snum_kept *K = calloc(1, sizeof *K);
+    if (!K) return NULL;
+    K->nf = nf;
+    K->nsf = nsf;
+    size_t nz = (size_t)A->colptr[nf];
+    K->perm = malloc((size_t)nf * sizeof *K->perm);
+    K->super = malloc(((size_t)nsf + 1) * sizeof *K->super);
+    K->colptr = malloc(((size_t)nf + 1) * sizeof *K->colptr);
+    K->rowidx = malloc((nz + 1) * sizeof *K->rowidx);
+    K->rptr = malloc(((size_t)nsf + 1) * sizeof *K->rptr);
+    int ok = K->perm && K->super && K->colptr && K->rowidx && K->rptr;
+    if (ok) {
+        memcpy(K->perm, perm, (size_t)nf * sizeof *perm);
+        memcpy(K->super, P->super, ((size_t)nsf + 1) * sizeof *K->super);
+        memcpy(K->colptr, A->colptr, ((size_t)nf + 1) * sizeof *K->colptr);
+        memcpy(K->rowidx, A->rowidx, nz * sizeof *K->rowidx);
+        K->rptr[0] = 0;
+        for (int sn = 0; sn < nsf; sn++) {
+            int m = 0, nsrow = P->pi[sn + 1] - P->pi[sn];
+            while (m < nsrow && P->s[P->pi[sn] + m] < nf) m++;
+            K->rptr[sn + 1] = K->rptr[sn] + m;
+        }
+        K->rows = malloc(((size_t)K->rptr[nsf] + 1) * sizeof *K->rows);
+        ok = K->rows != NULL;
+    }
+    for (int sn = 0; ok && sn < nsf; sn++)
+        memcpy(K->rows + K->rptr[sn], P->s + P->pi[sn],
+               (size_t)(K->rptr[sn + 1] - K->rptr[sn]) * sizeof *K->rows);
+    /* entries of the leading columns all lie in the leading supernodes */
+    ok = ok && group_entries(P, A, pinv, 0, nf, threads, &K->g);
+    if (!ok) {
+        opt_snum_kept_destroy(K);
+        return NULL;
+    }
+    return K;
+}
+
+/* The scatter of A: the leading columns' groups kept in *kept (made anew
+ * when they do not match), the other columns' grouped here with their
+ * places in the blocks (adst). 0 when A has an entry outside L's structure
+ * or memory runs out. */
+static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int threads, int nfixed,
+                         opt_snum_kept **kept)
+{
+    int n = P->n;
+    int *pinv = malloc((size_t)n * sizeof *pinv);
+    if (!pinv) return 0;
+    for (int k = 0; k < n; k++) pinv[perm[k]] = k;
+    int nf = 0, nsf = kept ? leading_supernodes(P, perm, nfixed) : 0, ok = 1;
+    if (nsf > 0) {
+        nf = nfixed;
+        P->kept_reused = kept_matches(*kept, P, A, perm, nf, nsf);
+        if (!P->kept_reused) {
+            opt_snum_kept_destroy(*kept);
+            *kept = kept_build(P, A, perm, pinv, nf, nsf, threads);
+            if (!*kept) nf = nsf = 0; /* all of A below */
+        }
+    }
+    if (nsf > 0) {
+        const opt_snum_kept *K = *kept;
+        P->nks = nsf;
+        P->kptr = K->g.ptr;
+        P->ksrc = K->g.src;
+        P->kcol = K->g.col;
+        P->kplace = K->g.place;
+    }
+    entry_groups g = {0};
+    ok = group_entries(P, A, pinv, nf, n, threads, &g);
+    if (ok) {
+        for (int sn = 0; sn < P->nsuper; sn++) {
+            int nsrow = P->pi[sn + 1] - P->pi[sn];
+            for (int t = g.ptr[sn]; t < g.ptr[sn + 1]; t++)
+                g.col[t] = g.col[t] * nsrow + g.place[t];
+        }
+        P->aptr = g.ptr;
+        P->asrc = g.src;
+        P->adst = g.col;
+        g.ptr = g.src = g.col = NULL;
+    }
+    groups_free(&g);
     free(pinv);
     return ok;
 }
@@ -285,6 +447,12 @@ done:
 
 opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int threads)
 {
+    return opt_snum_create_kept(L, A, threads, 0, NULL);
+}
+
+opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int threads, int nfixed,
+                               opt_snum_kept **kept)
+{
     if (!L->is_super || L->itype != CHOLMOD_INT || (int)L->n != A->n) return NULL;
     if (threads < 1) threads = 1;
     if (threads > PAR_MAX_CHUNKS) threads = PAR_MAX_CHUNKS;
@@ -303,7 +471,7 @@ opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int threads
     if (!P->col2super || !P->next || !P->lpos) goto fail;
     for (int sn = 0; sn < ns; sn++)
         for (int k = P->super[sn]; k < P->super[sn + 1]; k++) P->col2super[k] = sn;
-    if (!build_scatter(P, A, L->Perm, threads)) goto fail;
+    if (!build_scatter(P, A, L->Perm, threads, nfixed, kept)) goto fail;
     int T = plan_bins(P, threads);
     if (T < 1) goto fail;
     P->threads = T;

@@ -510,9 +510,12 @@ static void block_laplacian(opt_csc *A, int nvtx, int ne, const int *ea, const i
 /* A fixed part (two separate grids: two roots) in a fixed order and a
  * variable part whose size and couplings change every round: with the
  * fixed part declared, every analysis reuses the fixed part's (the split
- * counter), the solutions agree with plain CHOLMOD's on the same
- * permutation to rounding; a permutation whose variable part is not in
- * natural order gets the whole analysis. */
+ * counter) and every factorization after the first the placement of the
+ * fixed part's entries (the kept counter), the solutions agree with plain
+ * CHOLMOD's on the same permutation to rounding and, bit for bit, with a
+ * solver that sees the pattern for the first time; a permutation whose
+ * variable part is not in natural order gets the whole analysis; a new
+ * entry of A in the fixed part (round 4) places its entries anew. */
 static void split_symbolic_analysis(void **state)
 {
     (void)state;
@@ -528,8 +531,15 @@ static void split_symbolic_analysis(void **state)
     opt_chol_set_block(c, 2);
     opt_chol_set_relax(c, 4);
     opt_chol_set_fixed_part(c, 2 * nf);
-    for (int round = 0; round < 4; round++) {
+    /* the last two fixed vertices of one grid in the order: an edge
+     * between them falls in the factor's pattern already (their columns
+     * end the grid's elimination), so only A's pattern tells it */
+    int last = fperm[nf - 1], prev = nf - 2;
+    while (fperm[prev] / (m * m) != last / (m * m)) prev--;
+    prev = fperm[prev];
+    for (int round = 0; round < 6; round++) {
         int ne = 0, nw = 20 + 7 * round, nv = nf + nw;
+        if (round >= 4) ea[ne] = prev, eb[ne++] = last;
         for (int g = 0; g < 2; g++)
             for (int y = 0; y < m; y++)
                 for (int x = 0; x < m; x++) {
@@ -562,10 +572,22 @@ static void split_symbolic_analysis(void **state)
         opt_chol_stats s1 = opt_chol_get_stats(c);
         assert_int_equal(s1.split_analyses - s0.split_analyses, round == 3 ? 0 : 1);
         assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+        int kept = opt_chol_get_stats(c).kept_scatters - s1.kept_scatters;
+        if (round != 3) assert_int_equal(kept, round == 0 || round == 4 ? 0 : 1);
         assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
         assert_true(rel_residual(&A, x, b) < 1e-12);
+        opt_chol *fresh = opt_chol_create(OPT_ORDER_AMD, &e);
+        opt_chol_set_block(fresh, 2);
+        opt_chol_set_relax(fresh, 4);
+        opt_chol_set_fixed_part(fresh, 2 * nf);
+        assert_int_equal(opt_chol_analyze_given(fresh, &A, perm, &e), SCAF_OK);
+        assert_int_equal(opt_chol_factor(fresh, &A, &e), SCAF_OK);
+        assert_int_equal(opt_chol_get_stats(fresh).kept_scatters, 0);
+        assert_int_equal(opt_chol_solve(fresh, 1, b, y, &e), SCAF_OK);
+        assert_memory_equal(x, y, n * sizeof *x);
+        opt_chol_destroy(fresh);
         const int *lp = opt_chol_permutation(c);
-        if (round < 3) /* the fixed unknowns first */
+        if (round != 3) /* the fixed unknowns first */
             for (int k = 0; k < 2 * nf; k++) assert_true(lp[k] < 2 * nf);
         plain_cholmod_solve(&A, lp, 1, b, y);
         double num = 0, den = 0;
