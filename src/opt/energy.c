@@ -227,7 +227,7 @@ static double proxy2_rotation_target(opt_energy e, const double *J, double w2_ca
 {
     double E = 0.5 * (J[0] + J[3]), F = 0.5 * (J[0] - J[3]);
     double G = 0.5 * (J[2] + J[1]), H = 0.5 * (J[2] - J[1]);
-    double Q = hypot(E, H), R = hypot(F, G);
+    double Q = svd_hypot(E, H), R = svd_hypot(F, G);
     double s0 = Q + R, s1 = Q - R;
     double w0 = e == OPT_ENERGY_ARAP ? 1.0 : sd_w2(s0), w1 = e == OPT_ENERGY_ARAP ? 1.0 : sd_w2(s1);
     double w2max = w0 > w1 ? w0 : w1;

@@ -15,7 +15,7 @@ void svd2_signed(const double J[4], double U[4], double s[2], double V[4])
 {
     double E = 0.5 * (J[0] + J[3]), F = 0.5 * (J[0] - J[3]);
     double G = 0.5 * (J[2] + J[1]), H = 0.5 * (J[2] - J[1]);
-    double Q = hypot(E, H), R = hypot(F, G);
+    double Q = svd_hypot(E, H), R = svd_hypot(F, G);
     s[0] = Q + R;
     s[1] = Q - R;
     double a1 = atan2(G, F), a2 = atan2(H, E);

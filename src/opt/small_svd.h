@@ -13,6 +13,18 @@
 #ifndef SCAF_OPT_SMALL_SVD_H
 #define SCAF_OPT_SMALL_SVD_H
 
+#include <float.h>
+#include <math.h>
+
+/* sqrt(a^2 + b^2): the plain formula when its square is a normal number
+ * (within 2 ulp of hypot), libm's hypot otherwise (no overflow or
+ * underflow); hypot's exact scaling cost 1.6% of a SLIM iteration. */
+static inline double svd_hypot(double a, double b)
+{
+    double q = a * a + b * b;
+    return q >= DBL_MIN && q <= DBL_MAX ? sqrt(q) : hypot(a, b);
+}
+
 /* J: 2 by 2 input. U, V: 2 by 2 rotations out. s: 2 signed singular values out. */
 void svd2_signed(const double J[4], double U[4], double s[2], double V[4]);
 

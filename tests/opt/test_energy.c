@@ -53,6 +53,29 @@ static void svd_reconstructs(void **state)
         }
 }
 
+/* svd_hypot: within 2 ulp of hypot where the plain formula is used, and
+ * no underflow to 0 or overflow to infinity outside that range; a 2x2 SVD
+ * of a tiny or a huge Jacobian stays exact up to rounding. */
+static void hypot_fast_path(void **state)
+{
+    (void)state;
+    rng r = {3};
+    for (int t = 0; t < 10000; t++) {
+        double a = rng_uniform(&r, -4, 4), b = rng_uniform(&r, -4, 4);
+        double h = hypot(a, b), f = svd_hypot(a, b);
+        assert_true(fabs(f - h) <= 2.0 * DBL_EPSILON * h);
+    }
+    static const double scale[4] = {1e-200, 1e-160, 1e160, 1e200};
+    for (int k = 0; k < 4; k++) {
+        double a = 3 * scale[k], b = 4 * scale[k], f = svd_hypot(a, b);
+        assert_true(isfinite(f) && fabs(f - 5 * scale[k]) <= 4.0 * DBL_EPSILON * 5 * scale[k]);
+        double J[4] = {a, -b, b, a}, U[4], V[4], s[2];
+        svd2_signed(J, U, s, V);
+        assert_true(fabs(s[0] - 5 * scale[k]) <= 1e-12 * 5 * scale[k]);
+        assert_true(fabs(s[1] - 5 * scale[k]) <= 1e-12 * 5 * scale[k]);
+    }
+}
+
 /* One-simplex set with rest corners P ((d+1) by d). */
 static void one_simplex(opt_simplices *S, int d, const double *P)
 {
@@ -367,6 +390,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(svd_reconstructs),
+        cmocka_unit_test(hypot_fast_path),
         cmocka_unit_test(gradients_match_finite_differences),
         cmocka_unit_test(isometry_values),
         cmocka_unit_test(rotation_invariance),
