@@ -9,6 +9,7 @@
  * the supernodes above the cut take their descendants from all of them. */
 #include "opt/supernodal_numeric.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "base/parallel.h"
@@ -16,7 +17,7 @@
 #include "opt/dense_blas.h"
 #include "opt/supernodal_solve.h"
 
-static const double one = 1.0, zero = 0.0;
+static const double one = 1.0, zero = 0.0, minus_one = -1.0;
 
 /* Updates from at most this many rows of a descendant into a supernode's
  * columns are one dgemm instead of dsyrk + dgemm: 2D meshes make many such
@@ -95,22 +96,107 @@ static void apply_list(const opt_snum *P, opt_snum_worker *wk, int sn, int *head
     }
 }
 
-/* Factor the diagonal block of sn (dpotrf); -1, or the first column where
- * the matrix is not positive definite. */
-static int factor_diagonal(const opt_snum *P, int sn, double *X)
+/* Width of the column blocks of solve_below's triangular solves. */
+#define TRSM_BLOCK 16
+
+/* Rows i0 .. i0 + W - 1 (W a constant in the hot calls, so the row loops
+ * become vector operations) of X := X L^-T, L the n x n lower triangle
+ * (ldl), rinv its inverted diagonal: column by column, each row's sum kept
+ * in a register across the columns before it. */
+static inline void trsm_rows(double *X, int ldx, const double *L, int ldl, const double *rinv,
+                             int n, int i0, int W)
 {
-    int k1 = P->super[sn], nscol = P->super[sn + 1] - k1, nsrow = P->pi[sn + 1] - P->pi[sn];
-    int info = 0;
-    dpotrf_("L", &nscol, X, &nsrow, &info);
-    return info == 0 ? -1 : k1 + (info > 0 ? info - 1 : 0);
+    for (int c = 0; c < n; c++) {
+        double acc[8];
+        double *xc = X + (size_t)c * (size_t)ldx + i0;
+        for (int t = 0; t < W; t++) acc[t] = xc[t];
+        for (int k = 0; k < c; k++) {
+            double l = L[(size_t)k * (size_t)ldl + c];
+            const double *xk = X + (size_t)k * (size_t)ldx + i0;
+            for (int t = 0; t < W; t++) acc[t] -= l * xk[t];
+        }
+        for (int t = 0; t < W; t++) xc[t] = acc[t] * rinv[c];
+    }
 }
 
-/* Rows [r0, r1) of sn's part below its diagonal block: L21 = A21 L11^-T. */
+/* X := X L^-T for the m x n block X (ldx) and the n x n (n <= TRSM_BLOCK)
+ * lower triangle L (ldl), by blocks of 8 rows. dtrsm's setup and packing
+ * outweigh the work at these sizes (aphrodite: 11 GFlop/s). */
+__attribute__((target_clones("avx512f", "avx2", "default"))) static void
+small_trsm(double *X, int ldx, const double *L, int ldl, int m, int n)
+{
+    double rinv[TRSM_BLOCK];
+    for (int c = 0; c < n; c++) rinv[c] = 1.0 / L[(size_t)c * (size_t)ldl + c];
+    int i0 = 0;
+    for (; i0 + 8 <= m; i0 += 8) trsm_rows(X, ldx, L, ldl, rinv, n, i0, 8);
+    if (i0 < m) trsm_rows(X, ldx, L, ldl, rinv, n, i0, m - i0);
+}
+
+/* Rows [r0, r1) of sn's part below its diagonal block: L21 = A21 L11^-T,
+ * by blocks of TRSM_BLOCK columns: each block's triangle solved in place,
+ * then the columns after it updated with one dgemm (OpenBLAS's dtrsm on
+ * the whole ran at 11-23 GFlop/s on aphrodite's supernodes, this at
+ * 17-38). */
 static void solve_below(const opt_snum *P, int sn, double *X, int r0, int r1)
 {
     int nscol = P->super[sn + 1] - P->super[sn], nsrow = P->pi[sn + 1] - P->pi[sn];
     int m = r1 - r0;
-    if (m > 0) dtrsm_("R", "L", "T", "N", &m, &nscol, &one, X, &nsrow, X + nscol + r0, &nsrow);
+    double *B = X + nscol + r0;
+    for (int j0 = 0; j0 < nscol && m > 0; j0 += TRSM_BLOCK) {
+        int w = nscol - j0 < TRSM_BLOCK ? nscol - j0 : TRSM_BLOCK, rest = nscol - j0 - w;
+        const double *Ljj = X + j0 + (size_t)j0 * (size_t)nsrow;
+        small_trsm(B + (size_t)j0 * (size_t)nsrow, nsrow, Ljj, nsrow, m, w);
+        if (rest > 0)
+            dgemm_("N", "T", &m, &rest, &w, &minus_one, B + (size_t)j0 * (size_t)nsrow, &nsrow,
+                   Ljj + w, &nsrow, &one, B + (size_t)(j0 + w) * (size_t)nsrow, &nsrow);
+    }
+}
+
+/* L L^T = A for the w x w lower block A (ldl), w <= TRSM_BLOCK, by
+ * columns; -1, or the first column whose pivot is not positive (or NaN),
+ * as dpotrf reports it. The strict upper triangle is set to 0. */
+__attribute__((target_clones("avx512f", "avx2", "default"))) static int
+small_cholesky(double *A, int ld, int w)
+{
+    for (int j = 0; j < w; j++) {
+        double *cj = A + (size_t)j * (size_t)ld;
+        for (int k = 0; k < j; k++) {
+            const double *ck = A + (size_t)k * (size_t)ld;
+            double l = ck[j];
+            for (int i = j; i < w; i++) cj[i] -= l * ck[i];
+        }
+        double d = cj[j];
+        if (!(d > 0.0)) return j;
+        d = sqrt(d);
+        cj[j] = d;
+        double r = 1.0 / d;
+        for (int i = j + 1; i < w; i++) cj[i] *= r;
+        for (int i = 0; i < j; i++) cj[i] = 0.0;
+    }
+    return -1;
+}
+
+/* Factor the diagonal block of sn (nscol x nscol, lower); -1, or the first
+ * column where the matrix is not positive definite. Left-looking by blocks
+ * of TRSM_BLOCK columns: each block's columns lose the blocks before them
+ * (one dgemm, which also writes the block's strict upper triangle, zeroed
+ * again by small_cholesky), then its triangle is factored and the rows
+ * below it in the diagonal block are solved. dpotrf ran at 1-5 GFlop/s on
+ * aphrodite's narrow supernodes. */
+static int factor_diagonal(const opt_snum *P, int sn, double *X)
+{
+    int k1 = P->super[sn], nscol = P->super[sn + 1] - k1, nsrow = P->pi[sn + 1] - P->pi[sn];
+    for (int j0 = 0; j0 < nscol; j0 += TRSM_BLOCK) {
+        int w = nscol - j0 < TRSM_BLOCK ? nscol - j0 : TRSM_BLOCK, m = nscol - j0;
+        double *Xj = X + j0 + (size_t)j0 * (size_t)nsrow;
+        if (j0 > 0)
+            dgemm_("N", "T", &m, &w, &j0, &minus_one, X + j0, &nsrow, X + j0, &nsrow, &one, Xj,
+                   &nsrow);
+        int j = small_cholesky(Xj, nsrow, w);
+        if (j >= 0) return k1 + j0 + j;
+        if (m > w) small_trsm(Xj + w, nsrow, Xj, nsrow, m - w, w);
+    }
+    return -1;
 }
 
 /* sn done: wait on the supernode of its first row below the diagonal. */

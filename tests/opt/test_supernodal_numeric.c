@@ -225,6 +225,13 @@ static void not_positive_definite_where_cholmod_says(void **state)
         cholmod_sparse Bv = opt_csc_cholmod_view(&B);
         cholmod_factorize(&Bv, C, &f.cm);
         assert_true(C->minor < C->n);
+        if (trial == 1) { /* the last column: deep in a wide supernode's diagonal block,
+                             past its first column blocks (opt/supernodal_numeric) */
+            const int *super = f.S->super;
+            int sn = 0;
+            while (super[sn + 1] <= (int)C->minor) sn++;
+            assert_true((int)C->minor - super[sn] >= 32);
+        }
         for (int T = 1; T <= 3; T++) {
             cholmod_factor *L;
             int r = own_factor(&f, &B, T, &L, NULL);
