@@ -96,6 +96,15 @@ static void apply_list(const opt_snum *P, opt_snum_worker *wk, int sn, int *head
     }
 }
 
+/* The small dense loops below are compiled for AVX-512, AVX2 and the
+ * baseline, the best picked at load time (the build targets baseline
+ * x86-64, two doubles per vector); elsewhere they are plain functions. */
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__EMSCRIPTEN__)
+#define VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define VECTOR_CLONES
+#endif
+
 /* Width of the column blocks of solve_below's triangular solves. */
 #define TRSM_BLOCK 16
 
@@ -122,8 +131,7 @@ static inline void trsm_rows(double *X, int ldx, const double *L, int ldl, const
 /* X := X L^-T for the m x n block X (ldx) and the n x n (n <= TRSM_BLOCK)
  * lower triangle L (ldl), by blocks of 8 rows. dtrsm's setup and packing
  * outweigh the work at these sizes (aphrodite: 11 GFlop/s). */
-__attribute__((target_clones("avx512f", "avx2", "default"))) static void
-small_trsm(double *X, int ldx, const double *L, int ldl, int m, int n)
+VECTOR_CLONES static void small_trsm(double *X, int ldx, const double *L, int ldl, int m, int n)
 {
     double rinv[TRSM_BLOCK];
     for (int c = 0; c < n; c++) rinv[c] = 1.0 / L[(size_t)c * (size_t)ldl + c];
@@ -155,8 +163,7 @@ static void solve_below(const opt_snum *P, int sn, double *X, int r0, int r1)
 /* L L^T = A for the w x w lower block A (ldl), w <= TRSM_BLOCK, by
  * columns; -1, or the first column whose pivot is not positive (or NaN),
  * as dpotrf reports it. The strict upper triangle is set to 0. */
-__attribute__((target_clones("avx512f", "avx2", "default"))) static int
-small_cholesky(double *A, int ld, int w)
+VECTOR_CLONES static int small_cholesky(double *A, int ld, int w)
 {
     for (int j = 0; j < w; j++) {
         double *cj = A + (size_t)j * (size_t)ld;
