@@ -87,10 +87,11 @@ struct opt_chol {
     opt_split_symbolic *split; /* their analysis, kept (opt/split_symbolic) */
     opt_snum *snum;            /* numerical factorization plan for L (opt/supernodal_numeric) */
     opt_snum_kept *kept;       /* its fixed part's scatter of A, kept across plans */
+    long fixed_pattern;        /* changes of the fixed part's pattern between analyses */
     int own_numeric;           /* factor with opt/supernodal_numeric, not cholmod_factorize */
     double *xbuf;              /* its factor's values, kept across analyses (see free_factor) */
     size_t xcap;               /* doubles in xbuf */
-    double *fwd_b;             /* the right-hand side whose forward sweep the plan holds */
+    const double *fwd_b;       /* the right-hand side whose forward sweep the plan holds */
     int fwd_valid;             /* fwd_b's forward sweep is done (opt_chol_factor_rhs) */
     opt_chol_stats st;
 };
@@ -214,7 +215,6 @@ void opt_chol_destroy(opt_chol *c)
     if (!c) return;
     free_factor(c);
     free(c->xbuf);
-    free(c->fwd_b);
     opt_snum_destroy(c->snum);
     opt_snum_kept_destroy(c->kept);
     opt_split_destroy(c->split);
@@ -316,6 +316,12 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     /* CHOLMOD is told the columns are sorted upper ones (no copy, no check) */
     assert(opt_csc_is_upper_sorted(A));
     double t0 = timer_now();
+    /* the fixed part's pattern (its columns) against the last analysis's */
+    int nf = c->nfixed;
+    if (!(nf > 0 && c->n >= nf && A->n >= nf &&
+          memcmp(c->colptr, A->colptr, ((size_t)nf + 1) * sizeof *A->colptr) == 0 &&
+          memcmp(c->rowidx, A->rowidx, (size_t)A->colptr[nf] * sizeof *A->rowidx) == 0))
+        c->fixed_pattern++;
     free_factor(c);
     opt_snum_destroy(c->snum);
     c->snum = NULL;
@@ -403,24 +409,18 @@ scaf_status opt_chol_factor_rhs(opt_chol *c, const opt_csc *A, const double *b, 
          * (out of memory) cholmod_factorize does the work */
         if (c->L->xtype == CHOLMOD_PATTERN) lend_values(c);
         if (c->L->xtype == CHOLMOD_REAL && c->L->is_ll)
-            c->snum = opt_snum_create_kept(c->L, A, par_threads(), c->nfixed, &c->kept);
+            c->snum =
+                opt_snum_create_kept(c->L, A, par_threads(), c->nfixed, c->fixed_pattern, &c->kept);
         if (c->snum) c->st.kept_scatters += c->snum->kept_reused;
     }
     if (c->snum) {
         c->cm.status = CHOLMOD_OK;
         ok = 1;
-        double *fb = NULL;
-        if (b) {
-            fb = realloc(c->fwd_b, ((size_t)A->n + 1) * sizeof *fb);
-            if (fb) {
-                c->fwd_b = fb;
-                memcpy(fb, b, (size_t)A->n * sizeof *fb);
-            }
-        }
         int minor =
-            fb ? opt_snum_factor_forward(c->snum, A, c->L, b) : opt_snum_factor(c->snum, A, c->L);
+            b ? opt_snum_factor_forward(c->snum, A, c->L, b) : opt_snum_factor(c->snum, A, c->L);
         if (minor >= 0) c->cm.status = CHOLMOD_NOT_POSDEF;
-        else c->fwd_valid = fb != NULL;
+        c->fwd_valid = minor < 0 && b;
+        c->fwd_b = b;
     } else {
         int lv = omp_serial_begin();
         ok = cholmod_factorize(&S, c->L, &c->cm);
@@ -451,8 +451,7 @@ scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, sc
                        "CHOLMOD solve called before a successful factorization");
     if (nrhs < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD solve: %d right-hand sides", nrhs);
     double t0 = timer_now();
-    if (c->snum && c->fwd_valid && nrhs == 1 &&
-        memcmp(B, c->fwd_b, (size_t)c->n * sizeof *B) == 0) {
+    if (c->snum && c->fwd_valid && nrhs == 1 && B == c->fwd_b) {
         opt_snum_backward(c->snum, c->L, X); /* the forward sweep ran in the factorization */
     } else if (c->snum) {
         opt_snum_solve(c->snum, c->L, nrhs, B, X);

@@ -99,10 +99,12 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err);
 
 /* opt_chol_factor that also prepares the solve with the right-hand side b
  * (n values): scaf's own factorization runs the forward sweep with b as it
- * factors, while each supernode is in cache, so that a following
- * opt_chol_solve of one right-hand side equal to b (compared exactly) only
- * sweeps backward -- one pass over the factor instead of two, the same
- * bits. The forward sweep's time counts as factorization time. */
+ * factors, while each supernode is in cache, so that the next
+ * opt_chol_solve of one right-hand side at the same address b only sweeps
+ * backward -- one pass over the factor instead of two, the same bits. b's
+ * values must not change in between (the solver keeps no copy: it would
+ * be n more doubles); another address gets the whole solve. The forward
+ * sweep's time counts as factorization time. */
 scaf_status opt_chol_factor_rhs(opt_chol *c, const opt_csc *A, const double *b, scaf_error *err);
 
 /* Force a new analysis of A's pattern with a given fill-reducing

@@ -75,7 +75,7 @@ static void assemble(const opt_snum *P, int sn, const double *Ax, double *X)
     memset(X, 0, (size_t)nsrow * (size_t)nscol * sizeof *X);
     if (sn < P->nks)
         for (int t = P->kptr[sn]; t < P->kptr[sn + 1]; t++)
-            X[(size_t)P->kcol[t] * (size_t)nsrow + (size_t)P->kplace[t]] = Ax[P->ksrc[t]];
+            X[(size_t)(P->kpos[t] >> 16) * (size_t)nsrow + (P->kpos[t] & 0xffffu)] = Ax[P->ksrc[t]];
     for (int t = P->aptr[sn]; t < P->aptr[sn + 1]; t++) X[P->adst[t]] = Ax[P->asrc[t]];
 }
 

@@ -168,12 +168,14 @@ static int group_entries(const opt_snum *P, const opt_csc *A, const int *pinv, i
 /* ---- the leading columns' groups, kept across plans ---------------------- */
 
 struct opt_snum_kept {
-    int nf, nsf;          /* leading columns; the supernodes holding exactly them */
-    int *perm;            /* nf: the factor's order of them */
-    int *super;           /* nsf + 1 */
-    int *colptr, *rowidx; /* A's pattern in them */
-    int *rptr, *rows;     /* each of the nsf supernodes' rows (all below nf) */
-    entry_groups g;       /* their entries (ptr over the nsf supernodes) */
+    int nf, nsf;   /* leading columns; the supernodes holding exactly them */
+    long pattern;  /* the caller's name for A's pattern in them */
+    int *perm;     /* nf: the factor's order of them */
+    int *super;    /* nsf + 1 */
+    int *nrow;     /* nsf: each supernode's rows among them */
+    int *ptr;      /* nsf + 1: entries by supernode */
+    int *src;      /* value index in A */
+    unsigned *pos; /* column within the supernode << 16 | the row's place */
 };
 
 void opt_snum_kept_destroy(opt_snum_kept *K)
@@ -181,80 +183,87 @@ void opt_snum_kept_destroy(opt_snum_kept *K)
     if (!K) return;
     free(K->perm);
     free(K->super);
-    free(K->colptr);
-    free(K->rowidx);
-    free(K->rptr);
-    free(K->rows);
-    groups_free(&K->g);
+    free(K->nrow);
+    free(K->ptr);
+    free(K->src);
+    free(K->pos);
     free(K);
 }
 
 /* Supernodes holding exactly the first nf columns of the factor's order
- * when those are A's first nf columns (the fixed part eliminated first);
- * 0 otherwise. */
+ * when those are A's first nf columns (the fixed part eliminated first)
+ * and every such supernode has fewer than 2^16 columns and rows among
+ * them (a place packs into 32 bits); 0 otherwise. */
 static int leading_supernodes(const opt_snum *P, const int *perm, int nf)
 {
     if (nf <= 0 || nf >= P->n) return 0;
     for (int k = 0; k < nf; k++)
         if (perm[k] >= nf) return 0;
     int nsf = P->col2super[nf - 1] + 1;
-    return P->super[nsf] == nf ? nsf : 0;
+    if (P->super[nsf] != nf) return 0;
+    for (int sn = 0; sn < nsf; sn++)
+        if (P->super[sn + 1] - P->super[sn] >= 65536 || P->pi[sn + 1] - P->pi[sn] >= 65536)
+            return 0;
+    return nsf;
 }
 
-/* Whether K was made for these leading columns: the same order, the same
- * supernodes with the same rows among them, the same pattern of A. */
-static int kept_matches(const opt_snum_kept *K, const opt_snum *P, const opt_csc *A,
-                        const int *perm, int nf, int nsf)
+/* Rows of supernode sn below nf (its rows ascend: they come first). */
+static int rows_below(const opt_snum *P, int sn, int nf)
 {
-    if (!K || K->nf != nf || K->nsf != nsf) return 0;
-    if (memcmp(K->perm, perm, (size_t)nf * sizeof *perm) ||
-        memcmp(K->super, P->super, ((size_t)nsf + 1) * sizeof *K->super) ||
-        memcmp(K->colptr, A->colptr, ((size_t)nf + 1) * sizeof *K->colptr) ||
-        memcmp(K->rowidx, A->rowidx, (size_t)A->colptr[nf] * sizeof *K->rowidx))
-        return 0;
-    for (int sn = 0; sn < nsf; sn++) {
-        int m = K->rptr[sn + 1] - K->rptr[sn], nsrow = P->pi[sn + 1] - P->pi[sn];
-        const int *rows = P->s + P->pi[sn];
-        if (m > nsrow || (m < nsrow && rows[m] < nf) ||
-            memcmp(K->rows + K->rptr[sn], rows, (size_t)m * sizeof *rows))
-            return 0;
+    const int *rows = P->s + P->pi[sn];
+    int lo = 0, hi = P->pi[sn + 1] - P->pi[sn];
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (rows[mid] < nf) lo = mid + 1;
+        else hi = mid;
     }
+    return lo;
+}
+
+/* Whether K was made for these leading columns: the same pattern of A in
+ * them, the same order and the same supernodes. The rows of a supernode
+ * among them then follow (the union of its columns' patterns in the
+ * leading block's own factor); their counts are compared as a check. */
+static int kept_matches(const opt_snum_kept *K, const opt_snum *P, const int *perm, int nf, int nsf,
+                        long pattern)
+{
+    if (!K || K->nf != nf || K->nsf != nsf || K->pattern != pattern) return 0;
+    if (memcmp(K->perm, perm, (size_t)nf * sizeof *perm) ||
+        memcmp(K->super, P->super, ((size_t)nsf + 1) * sizeof *K->super))
+        return 0;
+    for (int sn = 0; sn < nsf; sn++)
+        if (K->nrow[sn] != rows_below(P, sn, nf)) return 0;
     return 1;
 }
 
 static opt_snum_kept *kept_build(const opt_snum *P, const opt_csc *A, const int *perm,
-                                 const int *pinv, int nf, int nsf, int threads)
+                                 const int *pinv, int nf, int nsf, long pattern, int threads)
 {
     opt_snum_kept *K = calloc(1, sizeof *K);
     if (!K) return NULL;
     K->nf = nf;
     K->nsf = nsf;
-    size_t nz = (size_t)A->colptr[nf];
+    K->pattern = pattern;
     K->perm = malloc((size_t)nf * sizeof *K->perm);
     K->super = malloc(((size_t)nsf + 1) * sizeof *K->super);
-    K->colptr = malloc(((size_t)nf + 1) * sizeof *K->colptr);
-    K->rowidx = malloc((nz + 1) * sizeof *K->rowidx);
-    K->rptr = malloc(((size_t)nsf + 1) * sizeof *K->rptr);
-    int ok = K->perm && K->super && K->colptr && K->rowidx && K->rptr;
+    K->nrow = malloc(((size_t)nsf + 1) * sizeof *K->nrow);
+    entry_groups g = {0};
+    /* entries of the leading columns all lie in the leading supernodes */
+    int ok = K->perm && K->super && K->nrow && group_entries(P, A, pinv, 0, nf, threads, &g);
     if (ok) {
         memcpy(K->perm, perm, (size_t)nf * sizeof *perm);
         memcpy(K->super, P->super, ((size_t)nsf + 1) * sizeof *K->super);
-        memcpy(K->colptr, A->colptr, ((size_t)nf + 1) * sizeof *K->colptr);
-        memcpy(K->rowidx, A->rowidx, nz * sizeof *K->rowidx);
-        K->rptr[0] = 0;
-        for (int sn = 0; sn < nsf; sn++) {
-            int m = 0, nsrow = P->pi[sn + 1] - P->pi[sn];
-            while (m < nsrow && P->s[P->pi[sn] + m] < nf) m++;
-            K->rptr[sn + 1] = K->rptr[sn] + m;
-        }
-        K->rows = malloc(((size_t)K->rptr[nsf] + 1) * sizeof *K->rows);
-        ok = K->rows != NULL;
+        for (int sn = 0; sn < nsf; sn++) K->nrow[sn] = rows_below(P, sn, nf);
+        /* pack each place into the column array's room */
+        unsigned *pos = (unsigned *)g.col;
+        for (int t = 0; t < g.ptr[nsf]; t++)
+            pos[t] = (unsigned)g.col[t] << 16 | (unsigned)g.place[t];
+        K->ptr = g.ptr;
+        K->src = g.src;
+        K->pos = pos;
+        g.ptr = g.src = g.col = NULL;
     }
-    for (int sn = 0; ok && sn < nsf; sn++)
-        memcpy(K->rows + K->rptr[sn], P->s + P->pi[sn],
-               (size_t)(K->rptr[sn + 1] - K->rptr[sn]) * sizeof *K->rows);
-    /* entries of the leading columns all lie in the leading supernodes */
-    ok = ok && group_entries(P, A, pinv, 0, nf, threads, &K->g);
+    groups_free(&g);
     if (!ok) {
         opt_snum_kept_destroy(K);
         return NULL;
@@ -267,7 +276,7 @@ static opt_snum_kept *kept_build(const opt_snum *P, const opt_csc *A, const int 
  * places in the blocks (adst). 0 when A has an entry outside L's structure
  * or memory runs out. */
 static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int threads, int nfixed,
-                         opt_snum_kept **kept)
+                         long pattern, opt_snum_kept **kept)
 {
     int n = P->n;
     int *pinv = malloc((size_t)n * sizeof *pinv);
@@ -276,20 +285,20 @@ static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int thr
     int nf = 0, nsf = kept ? leading_supernodes(P, perm, nfixed) : 0, ok = 1;
     if (nsf > 0) {
         nf = nfixed;
-        P->kept_reused = kept_matches(*kept, P, A, perm, nf, nsf);
+        P->kept_reused = kept_matches(*kept, P, perm, nf, nsf, pattern);
         if (!P->kept_reused) {
             opt_snum_kept_destroy(*kept);
-            *kept = kept_build(P, A, perm, pinv, nf, nsf, threads);
+            *kept = NULL; /* its memory back before the new one */
+            *kept = kept_build(P, A, perm, pinv, nf, nsf, pattern, threads);
             if (!*kept) nf = nsf = 0; /* all of A below */
         }
     }
     if (nsf > 0) {
         const opt_snum_kept *K = *kept;
         P->nks = nsf;
-        P->kptr = K->g.ptr;
-        P->ksrc = K->g.src;
-        P->kcol = K->g.col;
-        P->kplace = K->g.place;
+        P->kptr = K->ptr;
+        P->ksrc = K->src;
+        P->kpos = K->pos;
     }
     entry_groups g = {0};
     ok = group_entries(P, A, pinv, nf, n, threads, &g);
@@ -447,11 +456,11 @@ done:
 
 opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int threads)
 {
-    return opt_snum_create_kept(L, A, threads, 0, NULL);
+    return opt_snum_create_kept(L, A, threads, 0, 0, NULL);
 }
 
 opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int threads, int nfixed,
-                               opt_snum_kept **kept)
+                               long pattern, opt_snum_kept **kept)
 {
     if (!L->is_super || L->itype != CHOLMOD_INT || (int)L->n != A->n) return NULL;
     if (threads < 1) threads = 1;
@@ -471,7 +480,7 @@ opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int th
     if (!P->col2super || !P->next || !P->lpos) goto fail;
     for (int sn = 0; sn < ns; sn++)
         for (int k = P->super[sn]; k < P->super[sn + 1]; k++) P->col2super[k] = sn;
-    if (!build_scatter(P, A, L->Perm, threads, nfixed, kept)) goto fail;
+    if (!build_scatter(P, A, L->Perm, threads, nfixed, pattern, kept)) goto fail;
     int T = plan_bins(P, threads);
     if (T < 1) goto fail;
     P->threads = T;

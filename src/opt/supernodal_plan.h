@@ -40,8 +40,9 @@ typedef struct opt_snum {
     int *next, *lpos;               /* nsuper */
     int *aptr, *asrc, *adst;        /* A's entries by supernode: value index, place in the block */
     int nks;                        /* supernodes 0..nks-1 also take the kept entries: */
-    const int *kptr, *ksrc, *kcol, *kplace; /* by supernode: value index, column, row's place */
-    int kept_reused;                        /* the kept entries came from an earlier plan */
+    const int *kptr, *ksrc;         /* by supernode: value index, */
+    const unsigned *kpos;           /* column << 16 | row's place */
+    int kept_reused;                /* the kept entries came from an earlier plan */
     int *order, *bptr;  /* bin k: order[bptr[k] .. bptr[k+1]); the rest: above the cut */
     int *toprow;        /* n: a row's index among the rows above the cut, or -1 */
     int ntop;           /* rows above the cut */
@@ -66,18 +67,21 @@ void opt_snum_destroy(opt_snum *P);
  * leading part, eliminated first, whose pattern, order and supernodes do
  * not change while the rest does). Placing every entry of A costs random
  * accesses over all of A at each new pattern (aphrodite: ~7 ms, 5% of an
- * iteration); checking that the kept part still holds reads it once. */
+ * iteration); checking that the kept part still holds costs reading the
+ * order. 8 bytes per entry, what the plan would hold for them anyway. */
 typedef struct opt_snum_kept opt_snum_kept;
 void opt_snum_kept_destroy(opt_snum_kept *K);
 
 /* opt_snum_create that takes A's first nfixed columns' entries from *kept
- * when it matches (the same leading columns in the factor's order, their
- * supernodes and rows, A's pattern there), otherwise places them anew
- * into a new *kept (the old one destroyed). Columns eliminated in another
- * place, or nfixed = 0, keep nothing. The plan borrows *kept: keep it
- * while the plan lives. */
+ * when it matches: `pattern`, the caller's name for A's pattern in those
+ * columns (equal names: equal patterns; opt_chol counts the changes), the
+ * same leading columns in the factor's order, the same supernodes.
+ * Otherwise they are placed anew into a new *kept (the old one destroyed).
+ * Columns eliminated elsewhere, supernodes of 2^16 columns or rows, or
+ * nfixed = 0 keep nothing. The plan borrows *kept: keep it while the plan
+ * lives. */
 opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int threads, int nfixed,
-                               opt_snum_kept **kept);
+                               long pattern, opt_snum_kept **kept);
 
 /* Whether supernode sn, above the cut, is shared by the threads. */
 int opt_snum_top_parallel(const opt_snum *P, int sn);

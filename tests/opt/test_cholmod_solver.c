@@ -250,7 +250,8 @@ static void plain_cholmod_solve(const opt_csc *A, const int *perm, int nrhs, con
  * own solve too): to rounding. */
 /* opt_chol_factor_rhs: the solve of that right-hand side (forward sweep
  * done in the factorization) gives the bits of factor + solve; another
- * right-hand side, or the same one solved again, takes the whole solve. */
+ * right-hand side (address), or the same one solved again, takes the whole
+ * solve. */
 static void factor_with_rhs(void **state)
 {
     (void)state;
