@@ -7,7 +7,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 PACKAGES=(
   build-essential cmake pkg-config clang clang-format   # clang-format: style check (scripts/check_format.sh)
-  libsuitesparse-dev libopenblas-dev libmetis-dev   # CHOLMOD analysis, UMFPACK sparse LU; OpenBLAS: libblas.so, liblapack.so
+  libsuitesparse-dev libopenblas-dev libmetis-dev   # CHOLMOD analysis, UMFPACK sparse LU; OpenBLAS: libblas.so
   zlib1g-dev                                        # .gz input
   libpng-dev                                        # PNG pictures
   libcmocka-dev                                     # tests

@@ -3,7 +3,8 @@
  * Left-looking: before supernode s is factored, every supernode d with
  * rows in s's columns (a descendant) subtracts its contribution
  * C = L_d(rows >= s's first, :) L_d(rows in s, :)^T, then s is factored
- * (dpotrf on its diagonal block, dtrsm below it). Each descendant waits
+ * (its diagonal block, then the rows below it, by blocks of TRSM_BLOCK
+ * columns: factor_diagonal, solve_below). Each descendant waits
  * in a linked list on the next supernode it updates (head / next), with
  * lpos its first row not yet used; each thread keeps its own lists, and
  * the supernodes above the cut take their descendants from all of them. */
