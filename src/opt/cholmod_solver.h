@@ -73,7 +73,10 @@ void opt_chol_set_block(opt_chol *c, int block);
  * fixed unknowns first (by blocks) and the rest in natural order then
  * reuses the fixed part's analysis (opt/split_symbolic) instead of
  * analysing the whole pattern; the rest is ordered after the fixed part
- * (natural order, postordered). 0 (the default) turns it off. */
+ * (natural order, postordered). The factorization then also keeps where
+ * the fixed part's entries of A go in the factor (opt_snum_create_kept)
+ * while that part's pattern, order and supernodes stay. 0 (the default)
+ * turns it off. */
 void opt_chol_set_fixed_part(opt_chol *c, int nfixed);
 
 /* Supernode amalgamation: CHOLMOD's relaxation thresholds (nrelax: merge
