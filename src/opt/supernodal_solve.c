@@ -8,6 +8,25 @@
 static const double one = 1.0, zero = 0.0, minus_one = -1.0;
 static const int inc1 = 1;
 
+/* Triangles of supernodes at most this wide are solved by trsv_lower_t. */
+#define SMALL_TRIANGLE 64
+
+/* y := L^-T y for the n x n lower triangle L (ld), by rows of L: each x_k
+ * found is subtracted from the entries before it at once (the row is in
+ * cache: the block is small). dtrsv takes a dot product per column
+ * instead, a chain of dependent additions: about half of the backward
+ * sweep on aphrodite, whose values sit mostly in 17-32 column supernodes
+ * (the sweep 9.7-10.1 -> 8.3-8.7 ms). */
+static void trsv_lower_t(const double *L, int ld, int n, double *y)
+{
+    for (int k = n - 1; k >= 0; k--) {
+        const double *row = L + k;
+        double xk = y[k] / row[(size_t)k * (size_t)ld];
+        y[k] = xk;
+        for (int c = 0; c < k; c++) y[c] -= row[(size_t)c * (size_t)ld] * xk;
+    }
+}
+
 void opt_snum_forward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx,
                             double *acc)
 {
@@ -38,7 +57,8 @@ static void backward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const
         for (int i = 0; i < nrest; i++) wk->tmp[i] = P->y[rows[i]];
         dgemv_("T", &nrest, &nscol, &minus_one, X + nscol, &nsrow, wk->tmp, &inc1, &one, ys, &inc1);
     }
-    dtrsv_("L", "T", "N", &nscol, X, &nsrow, ys, &inc1);
+    if (nscol <= SMALL_TRIANGLE) trsv_lower_t(X, nsrow, nscol, ys);
+    else dtrsv_("L", "T", "N", &nscol, X, &nsrow, ys, &inc1);
 }
 
 typedef struct solve_job {
