@@ -31,8 +31,9 @@ int opt_snum_factor(opt_snum *P, const opt_csc *A, cholmod_factor *L);
 /* opt_snum_factor that also runs the forward sweep of the solve with b (n
  * values, natural order) while each supernode is still in cache: when A is
  * positive definite, opt_snum_backward (opt/supernodal_solve) then gives
- * A^-1 b, the same bits as opt_snum_solve after opt_snum_factor, and reads
- * the factor from memory once instead of twice. */
+ * A^-1 b, the same bits as opt_snum_solve after opt_snum_factor, and only
+ * the backward sweep is left (aphrodite: solve 18 -> 10 ms, factorization
+ * +2 ms). */
 int opt_snum_factor_forward(opt_snum *P, const opt_csc *A, cholmod_factor *L, const double *b);
 
 #endif /* SCAF_OPT_SUPERNODAL_NUMERIC_H */

@@ -192,8 +192,8 @@ void opt_snum_kept_destroy(opt_snum_kept *K)
 
 /* Supernodes holding exactly the first nf columns of the factor's order
  * when those are A's first nf columns (the fixed part eliminated first)
- * and every such supernode has fewer than 2^16 columns and rows among
- * them (a place packs into 32 bits); 0 otherwise. */
+ * and every such supernode has fewer than 2^16 columns and rows (a
+ * column and a place pack into 32 bits); 0 otherwise. */
 static int leading_supernodes(const opt_snum *P, const int *perm, int nf)
 {
     if (nf <= 0 || nf >= P->n) return 0;
