@@ -61,7 +61,13 @@ scaf_status opt_line_search(const opt_obj_term *terms, int nterms, int d, int nv
     if (!Y) return err_nomem(err, "line search trial positions");
     for (int it = 0; it < o->max_backtracks && t > 0; it++) {
         for (size_t k = 0; k < n; k++) Y[k] = X[k] + t * D[k];
-        double e = opt_obj_energy(terms, nterms, Y);
+        /* opt_obj_energy's sum, each term's share kept (res->term_energy) */
+        double e = 0;
+        for (int k = 0; k < nterms; k++) {
+            double ek = terms[k].ops->energy(&terms[k], Y);
+            if (k < OPT_LS_MAX_TERMS) res->term_energy[k] = ek;
+            e += ek;
+        }
         if (!(isfinite(e) && e <= e0 + o->armijo * t * slope)) {
             res->backtracks++;
             t *= o->shrink;
@@ -75,6 +81,7 @@ scaf_status opt_line_search(const opt_obj_term *terms, int nterms, int d, int nv
         memcpy(X, Y, n * sizeof *X);
         res->step = t;
         res->energy_after = e;
+        res->nterm_energy = nterms <= OPT_LS_MAX_TERMS ? nterms : 0;
         break;
     }
     free(Y);

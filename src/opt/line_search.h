@@ -20,6 +20,8 @@
 
 #include "opt/objective.h"
 
+#define OPT_LS_MAX_TERMS 8
+
 typedef struct opt_ls_options {
     double safety;      /* fraction of the flip-free step taken first (0.8) */
     double max_step;    /* cap on the step (1: the full SLIM step) */
@@ -36,6 +38,12 @@ typedef struct opt_ls_result {
     double slope;            /* directional derivative E'(0) */
     int backtracks;          /* energy (Armijo) reductions */
     int orientation_rejects; /* reductions forced by the exact orientation check */
+    /* When step > 0 and nterms <= OPT_LS_MAX_TERMS: term k's energy at the
+     * accepted positions (their sum, in term order, is energy_after), so
+     * a caller needs no pass of its own for them; nterm_energy says how
+     * many are set (0 otherwise). */
+    int nterm_energy;
+    double term_energy[OPT_LS_MAX_TERMS];
 } opt_ls_result;
 
 void opt_ls_options_default(opt_ls_options *o);

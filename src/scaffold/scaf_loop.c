@@ -112,6 +112,13 @@ struct scaf_loop_work {
     int newton_on;    /* auto: SLIM has slowed down, Newton from now on */
     int slim_steps;   /* SLIM iterations so far (auto's cap) */
     int newton_exact; /* the last Newton step was full: try the exact Hessian */
+    /* The mesh term's energy (of kind seen_kind) and the reported E at the
+     * positions seen_uv (nv by d), known from the last step's line search:
+     * the next step starts there unless the caller moved the map. */
+    double *seen_uv;
+    double seen_em, seen_e;
+    opt_energy seen_kind;
+    int seen_valid;
 };
 
 scaf_loop_options scaf_loop_options_default(void)
@@ -150,6 +157,7 @@ void scaf_loop_free(scaf_loop *L)
         free(w->sol);
         free(w->dir);
         free(w->kept);
+        free(w->seen_uv);
         free(w);
     }
     memset(L, 0, sizeof *L);
@@ -694,6 +702,50 @@ static scaf_status scaffold_term(scaf_loop *L, int nall, const double *X, double
     return SCAF_OK;
 }
 
+/* Whether the mesh term's energy and the reported E at L->uv are those the
+ * last step recorded (energy_after_step): the same positions, to the bit,
+ * and the same kind of mesh energy. */
+static int energies_seen(const scaf_loop *L)
+{
+    const scaf_loop_work *w = L->work;
+    return w->seen_valid && w->seen_kind == L->opt.energy &&
+        !memcmp(w->seen_uv, L->uv, sizeof(double) * (size_t)L->d * (size_t)L->nv);
+}
+
+/* The reported E after a step (L->uv updated), and the record
+ * energies_seen checks at the next step. The mesh term's energy at the new
+ * positions is the line search's own (the same function on the same
+ * doubles: the same bits), or em_start when no step was taken; a
+ * feasibility hook's backtracking (moved) moves X after the search, so
+ * then E is computed afresh and nothing is recorded. */
+static double energy_after_step(scaf_loop *L, const opt_ls_result *ls, double em_start, int moved)
+{
+    scaf_loop_work *w = L->work;
+    int sd = L->opt.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET, known = 0;
+    double em = 0.0;
+    w->seen_valid = 0;
+    if (w->mesh_k >= 0 && !moved) {
+        if (!(ls->step > 0.0)) {
+            em = em_start;
+            known = 1;
+        } else if (ls->nterm_energy > w->mesh_k) {
+            em = ls->term_energy[w->mesh_k];
+            known = 1;
+        }
+    }
+    double e = known && sd ? em / L->total_area : scaf_loop_energy(L);
+    size_t n = (size_t)L->d * (size_t)L->nv;
+    if (known && !w->seen_uv) w->seen_uv = malloc((n ? n : 1) * sizeof *w->seen_uv);
+    if (known && w->seen_uv) { /* without the memory, no record: recompute */
+        memcpy(w->seen_uv, L->uv, n * sizeof *w->seen_uv);
+        w->seen_em = em;
+        w->seen_e = e;
+        w->seen_kind = L->opt.energy;
+        w->seen_valid = 1;
+    }
+    return e;
+}
+
 scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error *err)
 {
     scaf_loop_work *w = L->work;
@@ -707,15 +759,21 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     int *dof = NULL;
     unsigned char *fixed = NULL;
 
-    double EM;
+    double EM, em_start = 0.0;
     if (w->mesh_k >= 0) {
         w->mesh_def.energy = L->opt.energy;
         const opt_obj_term *mesh_term = &w->terms[w->mesh_k];
-        EM = mesh_term->ops->energy(mesh_term, L->uv);
-        /* The reported E is symmetric Dirichlet: reuse EM when that is the
-         * optimized energy too. */
-        I.energy_before = L->opt.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET ? EM / L->total_area
-                                                                          : scaf_loop_energy(L);
+        if (energies_seen(L)) {
+            EM = w->seen_em;
+            I.energy_before = w->seen_e;
+        } else {
+            EM = mesh_term->ops->energy(mesh_term, L->uv);
+            /* The reported E is symmetric Dirichlet: reuse EM when that is
+             * the optimized energy too. */
+            I.energy_before = L->opt.energy == OPT_ENERGY_SYMMETRIC_DIRICHLET ? EM / L->total_area
+                                                                              : scaf_loop_energy(L);
+        }
+        em_start = EM;
     } else {
         /* Volume loop: the scaffold weight follows the terms' energy plus
          * the floor, so it stays positive (scaf_loop_init_volume). */
@@ -827,7 +885,7 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     memcpy(sc->extra, X + (size_t)d * L->nv, sizeof(double) * d * (size_t)sc->nextra);
     L->iterations++;
     I.iteration = L->iterations;
-    I.energy = scaf_loop_energy(L);
+    I.energy = energy_after_step(L, &ls, em_start, X0 != NULL);
     I.total_before = ls.energy_before;
     I.total_after = ls.step > 0 ? ls.energy_after : ls.energy_before;
     I.lambda = lambda;

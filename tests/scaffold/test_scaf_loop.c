@@ -8,6 +8,9 @@
  *   - the 2D scaffold provider (scaffold/scaffold_cdt) on its own, and a
  *     provider of the test's own replacing it in the loop;
  *   - a misoriented start fails with SCAF_ERR_INTERNAL (as documented);
+ *   - the energies a step reports are those of a fresh evaluation, bit for
+ *     bit, whether the next step reuses the line search's (map unchanged)
+ *     or recomputes them (the caller moved the map in between);
  *   - the loop's own defaults are the public ones (app/param mapping).
  * Mesh: a generated curved disk (tests/opt/polar_disk.h), Tutte start. */
 #include <math.h>
@@ -384,6 +387,41 @@ static void frozen_provider_keeps_connectivity(void **state)
     disk_free(&k);
 }
 
+/* E after a step and E before the next one against scaf_loop_energy at the
+ * same positions, for the optimized energy being the reported one
+ * (symmetric Dirichlet) or not (ARAP); between some steps the test moves
+ * the map (a scaling keeps it bijective), which the loop must notice. */
+static void reported_energies_are_fresh(void **state)
+{
+    (void)state;
+    const opt_energy energies[2] = {OPT_ENERGY_SYMMETRIC_DIRICHLET, OPT_ENERGY_ARAP};
+    for (int e = 0; e < 2; e++) {
+        disk k;
+        disk_make(&k);
+        scaf_loop_options o = scaf_loop_options_default();
+        o.energy = energies[e];
+        scaf_loop L;
+        scaf_error err;
+        assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, k.m.nf, k.m.F, k.uv, &o, &err), SCAF_OK);
+        double last = NAN;
+        for (int it = 0; it < 6; it++) {
+            int moved = it == 2 || it == 4;
+            if (moved)
+                for (int i = 0; i < 2 * L.nv; i++) L.uv[i] *= 1.25;
+            double fresh = scaf_loop_energy(&L);
+            scaf_iteration_info_t info;
+            assert_int_equal(scaf_loop_step(&L, &info, &err), SCAF_OK);
+            assert_true(info.energy_before == fresh);
+            if (it > 0 && !moved) assert_true(info.energy_before == last);
+            if (moved) assert_true(info.energy_before != last);
+            last = info.energy;
+            assert_true(info.energy == scaf_loop_energy(&L));
+        }
+        scaf_loop_free(&L);
+        disk_free(&k);
+    }
+}
+
 static void loop_defaults_are_the_public_ones(void **state)
 {
     (void)state;
@@ -409,6 +447,7 @@ int main(void)
         cmocka_unit_test(cdt_provider_builds_and_refreshes),
         cmocka_unit_test(provider_plugs_in),
         cmocka_unit_test(frozen_provider_keeps_connectivity),
+        cmocka_unit_test(reported_energies_are_fresh),
         cmocka_unit_test(loop_defaults_are_the_public_ones),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
