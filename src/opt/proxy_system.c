@@ -52,10 +52,22 @@ static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *con
     for (int c = 0; c < nfree; c++) {
         sys->vcolptr[c] = out;
         int end[OPT_PROXY_MAX_BLOCKS];
+        int only = -1, nonempty = 0;
         for (int k = 0; k < nb; k++) {
             int has = c < bl[k]->nfree;
             cur[k] = has ? bl[k]->vcolptr[c] : 0;
             end[k] = has ? bl[k]->vcolptr[c + 1] : 0;
+            if (cur[k] < end[k]) {
+                only = k;
+                nonempty++;
+            }
+        }
+        if (nonempty == 1) { /* most columns: one block's rows, copied */
+            for (int e = cur[only]; e < end[only]; e++) {
+                sys->emap[only][e] = out;
+                sys->vrowidx[out++] = bl[only]->vrowidx[e];
+            }
+            continue;
         }
         for (;;) {
             int r = INT_MAX;

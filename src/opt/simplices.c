@@ -96,21 +96,11 @@ int opt_gradient_operator(int d, const double *rest, double *grad, double *vol)
     return 1;
 }
 
-void opt_jacobian(const opt_simplices *S, int s, const double *X, double *J)
+void opt_jacobian_general(const opt_simplices *S, int s, const double *X, double *J)
 {
     int d = S->d;
     const int *ix = S->idx + (size_t)s * (d + 1);
     const double *G = S->grad + (size_t)s * (d + 1) * d;
-    if (d == 2) {
-        /* Unrolled (the hot case); same summation order as below. */
-        const double *x0 = X + 2 * (size_t)ix[0], *x1 = X + 2 * (size_t)ix[1],
-                     *x2 = X + 2 * (size_t)ix[2];
-        for (int a = 0; a < 2; a++) {
-            J[2 * a] = x0[a] * G[0] + x1[a] * G[2] + x2[a] * G[4];
-            J[2 * a + 1] = x0[a] * G[1] + x1[a] * G[3] + x2[a] * G[5];
-        }
-        return;
-    }
     for (int k = 0; k < d * d; k++) J[k] = 0.0;
     for (int i = 0; i <= d; i++) {
         const double *x = X + (size_t)ix[i] * d;

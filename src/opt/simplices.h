@@ -19,6 +19,8 @@
 #ifndef SCAF_OPT_SIMPLICES_H
 #define SCAF_OPT_SIMPLICES_H
 
+#include <stddef.h>
+
 #include "base/error.h"
 
 typedef struct opt_simplices {
@@ -47,7 +49,24 @@ void opt_flatten_triangle(const double p0[3], const double p1[3], const double p
 int opt_gradient_operator(int d, const double *rest, double *grad, double *vol);
 
 /* Jacobian of simplex s of set S at positions X (#X by d): J d by d out. */
-void opt_jacobian(const opt_simplices *S, int s, const double *X, double *J);
+void opt_jacobian_general(const opt_simplices *S, int s, const double *X, double *J);
+static inline void opt_jacobian(const opt_simplices *S, int s, const double *X, double *J)
+{
+    if (S->d != 2) {
+        opt_jacobian_general(S, s, X, J);
+        return;
+    }
+    /* Inline: the hot case, run per triangle by the energy, line search
+     * and proxy loops in other files. */
+    const int *ix = S->idx + (size_t)s * 3;
+    const double *G = S->grad + (size_t)s * 6;
+    const double *x0 = X + 2 * (size_t)ix[0], *x1 = X + 2 * (size_t)ix[1],
+                 *x2 = X + 2 * (size_t)ix[2];
+    for (int a = 0; a < 2; a++) {
+        J[2 * a] = x0[a] * G[0] + x1[a] * G[2] + x2[a] * G[4];
+        J[2 * a + 1] = x0[a] * G[1] + x1[a] * G[3] + x2[a] * G[5];
+    }
+}
 
 /* Pull a d by d matrix M (a derivative w.r.t. J, or a direction in J
  * space) back to the simplex's corners through its gradient operator G
