@@ -3,10 +3,15 @@
  * Union pattern: per vertex column, a k-way merge of the blocks' sorted row
  * lists, recording for every block entry its union position. Scalar layout
  * follows the same interleaved rule as opt/proxy_block, so values are
- * added column by column with offsets (entry - column start) * d.
+ * added column by column with offsets (entry - column start) * d. A column
+ * only one block has entries in (SCAF: every mesh column away from the
+ * chart boundary) is that block's column, pattern and values: runs of
+ * them are copied whole, scalar rows and values, instead of merged,
+ * expanded, zeroed and added (the values are the same: 0 + x = x).
  */
 #include "opt/proxy_system.h"
 
+#include <assert.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +22,8 @@ static void release_union(opt_proxy_system *sys)
 {
     free(sys->vcolptr);
     free(sys->vrowidx);
-    sys->vcolptr = sys->vrowidx = NULL;
+    free(sys->only);
+    sys->vcolptr = sys->vrowidx = sys->only = NULL;
     for (int k = 0; k < OPT_PROXY_MAX_BLOCKS; k++) {
         free(sys->emap[k]);
         sys->emap[k] = NULL;
@@ -34,16 +40,68 @@ void opt_proxy_system_free(opt_proxy_system *sys)
     memset(sys, 0, sizeof *sys);
 }
 
+/* Scalar CSC of the union's vertex pattern (the interleaved rule of
+ * opt_csc_expand_vertex_pattern), runs of single-block columns copied from
+ * that block's scalar pattern. Values uninitialized: the sum writes all. */
+static scaf_status expand_union(opt_proxy_system *sys, const opt_proxy_block *const *bl,
+                                scaf_error *err)
+{
+    int d = sys->d, nv = sys->nfree, n = nv * d;
+    opt_csc *A = &sys->A;
+    A->n = n;
+    A->colptr = malloc(((size_t)n + 1) * sizeof *A->colptr);
+    if (!A->colptr) return err_nomem(err, "proxy system matrix");
+    A->colptr[0] = 0;
+    for (int c = 0; c < nv; c++) {
+        int lo = sys->vcolptr[c], hi = sys->vcolptr[c + 1];
+        int diag = hi > lo && sys->vrowidx[hi - 1] == c;
+        int off = hi - lo - diag;
+        for (int a = 0; a < d; a++)
+            A->colptr[c * d + a + 1] = A->colptr[c * d + a] + off * d + (diag ? a + 1 : 0);
+    }
+    A->nnz = A->colptr[n];
+    A->rowidx = malloc(((size_t)A->nnz + 1) * sizeof *A->rowidx);
+    A->val = malloc(((size_t)A->nnz + 1) * sizeof *A->val);
+    if (!A->rowidx || !A->val) return err_nomem(err, "proxy system matrix");
+    for (int c = 0; c < nv;) {
+        int k = sys->only[c];
+        if (k >= 0) {
+            int e = c + 1;
+            while (e < nv && sys->only[e] == k) e++;
+            const opt_csc *B = &bl[k]->A;
+            size_t len = (size_t)(B->colptr[e * d] - B->colptr[c * d]);
+            memcpy(A->rowidx + A->colptr[c * d], B->rowidx + B->colptr[c * d],
+                   len * sizeof *A->rowidx);
+            c = e;
+            continue;
+        }
+        int lo = sys->vcolptr[c], hi = sys->vcolptr[c + 1];
+        for (int a = 0; a < d; a++) {
+            int pos = A->colptr[c * d + a];
+            for (int q = lo; q < hi; q++) {
+                int r = sys->vrowidx[q];
+                int top = r == c ? a : d - 1;
+                for (int b = 0; b <= top; b++) A->rowidx[pos++] = r * d + b;
+            }
+        }
+        c++;
+    }
+    assert(opt_csc_is_upper_sorted(A));
+    return SCAF_OK;
+}
+
 static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *const *bl, int nb,
                                scaf_error *err)
 {
-    int nfree = sys->nfree, d = sys->d;
+    int nfree = sys->nfree;
     release_union(sys);
     size_t cap = 0;
     for (int k = 0; k < nb; k++) cap += (size_t)bl[k]->vcolptr[bl[k]->nfree];
     sys->vcolptr = malloc(((size_t)nfree + 1) * sizeof *sys->vcolptr);
     sys->vrowidx = malloc((cap + 1) * sizeof *sys->vrowidx);
-    if (!sys->vcolptr || !sys->vrowidx) return err_nomem(err, "proxy system union pattern");
+    sys->only = malloc(((size_t)nfree + 1) * sizeof *sys->only);
+    if (!sys->vcolptr || !sys->vrowidx || !sys->only)
+        return err_nomem(err, "proxy system union pattern");
     for (int k = 0; k < nb; k++) {
         sys->emap[k] = malloc(((size_t)bl[k]->vcolptr[bl[k]->nfree] + 1) * sizeof *sys->emap[k]);
         if (!sys->emap[k]) return err_nomem(err, "proxy system union map");
@@ -62,7 +120,8 @@ static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *con
                 nonempty++;
             }
         }
-        if (nonempty == 1) { /* most columns: one block's rows, copied */
+        sys->only[c] = nonempty == 1 ? only : -1;
+        if (nonempty == 1) {
             for (int e = cur[only]; e < end[only]; e++) {
                 sys->emap[only][e] = out;
                 sys->vrowidx[out++] = bl[only]->vrowidx[e];
@@ -80,10 +139,9 @@ static scaf_status build_union(opt_proxy_system *sys, const opt_proxy_block *con
         }
     }
     sys->vcolptr[nfree] = out;
-    /* Scalar expansion, same rule as the blocks. */
+    sys->only[nfree] = -1; /* ends the last run */
     sys->owns = 1;
-    return opt_csc_expand_vertex_pattern(&sys->A, d, nfree, sys->vcolptr, sys->vrowidx, 0,
-                                         err); /* summed values overwrite */
+    return expand_union(sys, bl, err);
 }
 
 typedef struct sum_job {
@@ -114,14 +172,24 @@ static void sum_range(void *ctx, int r)
     opt_proxy_system *sys = j->sys;
     int d = sys->d, c0 = j->cb[r], c1 = j->cb[r + 1];
     opt_csc *A = &sys->A;
-    size_t v0 = (size_t)A->colptr[c0 * d], v1 = (size_t)A->colptr[c1 * d];
-    memset(A->val + v0, 0, (v1 - v0) * sizeof *A->val);
-    for (int k = 0; k < j->nb; k++) {
-        const opt_proxy_block *b = j->bl[k];
-        int end = c1 < b->nfree ? c1 : b->nfree;
-        for (int c = c0; c < end; c++)
+    for (int c = c0; c < c1;) {
+        int k = sys->only[c];
+        if (k >= 0) { /* a run of one block's columns: its values */
+            int e = c + 1;
+            while (e < c1 && sys->only[e] == k) e++;
+            const opt_csc *B = &j->bl[k]->A;
+            memcpy(A->val + A->colptr[c * d], B->val + B->colptr[c * d],
+                   (size_t)(B->colptr[e * d] - B->colptr[c * d]) * sizeof *A->val);
+            c = e;
+            continue;
+        }
+        memset(A->val + A->colptr[c * d], 0,
+               (size_t)(A->colptr[(c + 1) * d] - A->colptr[c * d]) * sizeof *A->val);
+        for (int k2 = 0; k2 < j->nb; k2++) {
+            const opt_proxy_block *b = j->bl[k2];
+            if (c >= b->nfree) continue;
             for (int e = b->vcolptr[c]; e < b->vcolptr[c + 1]; e++) {
-                int u = sys->emap[k][e];
+                int u = sys->emap[k2][e];
                 int kb = e - b->vcolptr[c], ku = u - sys->vcolptr[c];
                 int top = b->vrowidx[e] == c;
                 for (int a2 = 0; a2 < d; a2++) {
@@ -131,6 +199,8 @@ static void sum_range(void *ctx, int r)
                     for (int a = 0; a < m; a++) dst[a] += src[a];
                 }
             }
+        }
+        c++;
     }
 }
 

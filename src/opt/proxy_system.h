@@ -23,6 +23,10 @@ typedef struct opt_proxy_system {
     int nblocks;
     int *vcolptr, *vrowidx;              /* union vertex-level pattern */
     int *emap[OPT_PROXY_MAX_BLOCKS];     /* block entry -> union entry */
+    int *only;                           /* per vertex column: the one block
+                                            with entries there (its column is
+                                            the union's: values copied), -1
+                                            when several or none */
     unsigned seen[OPT_PROXY_MAX_BLOCKS]; /* block versions merged */
     const opt_proxy_block *blk[OPT_PROXY_MAX_BLOCKS];
     opt_csc A;        /* union matrix (owned when nblocks > 1) */

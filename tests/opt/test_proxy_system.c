@@ -3,7 +3,9 @@
  * quadratic evaluated directly), the proxy's gradient at the current point
  * is the true energy gradient (SLIM's property, at system level), and
  * summing blocks equals assembling everything in one block, including
- * after one block's pattern is rebuilt. */
+ * after one block's pattern is rebuilt; the sum's values are those of
+ * adding every block's entries in block order from 0 (== to the bit),
+ * whether a column is copied from its only block or merged. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -161,6 +163,38 @@ static void matrix_is_the_proxy_quadratic(void **state)
         }
 }
 
+/* sys->A's values against the plain sum: each block's entries added, block
+ * after block, into zeros at their union positions; both kinds of column
+ * (copied from one block, merged from several) must occur. */
+static void assert_sum_is_plain(const opt_proxy_system *sys, const opt_proxy_block *const *bl,
+                                int nb)
+{
+    int d = sys->d, copied = 0, merged = 0;
+    double *ref = calloc((size_t)sys->A.nnz + 1, sizeof *ref);
+    assert_non_null(ref);
+    for (int k = 0; k < nb; k++) {
+        const opt_proxy_block *b = bl[k];
+        for (int c = 0; c < b->nfree; c++)
+            for (int e = b->vcolptr[c]; e < b->vcolptr[c + 1]; e++) {
+                int kb = e - b->vcolptr[c], ku = sys->emap[k][e] - sys->vcolptr[c];
+                for (int a2 = 0; a2 < d; a2++) {
+                    int m = b->vrowidx[e] == c ? a2 + 1 : d;
+                    for (int a = 0; a < m; a++)
+                        ref[sys->A.colptr[c * d + a2] + ku * d + a] +=
+                            b->A.val[b->A.colptr[c * d + a2] + kb * d + a];
+                }
+            }
+    }
+    for (int i = 0; i < sys->A.nnz; i++) assert_true(sys->A.val[i] == ref[i]);
+    for (int c = 0; c < sys->nfree; c++) {
+        copied += sys->only[c] >= 0;
+        merged += sys->only[c] < 0 && sys->vcolptr[c + 1] > sys->vcolptr[c];
+    }
+    assert_true(copied > 0);
+    assert_true(merged > 0);
+    free(ref);
+}
+
 static void blocks_sum_like_one(void **state)
 {
     (void)state;
@@ -195,6 +229,7 @@ static void blocks_sum_like_one(void **state)
         const opt_proxy_block *bl[2] = {&ba, &bb};
         assert_int_equal(opt_proxy_system_sum(&sys, bl, 2, NULL), SCAF_OK);
         unsigned v1 = sys.version;
+        assert_sum_is_plain(&sys, bl, 2);
         assert_int_equal(sys.A.nnz, ball.A.nnz);
         assert_memory_equal(sys.A.rowidx, ball.A.rowidx, ball.A.nnz * sizeof(int));
         for (int trial = 0; trial < 3; trial++) {
@@ -218,6 +253,7 @@ static void blocks_sum_like_one(void **state)
         assert_int_equal(opt_proxy_system_sum(&sys, bl, 2, NULL), SCAF_OK);
         assert_true(sys.version != v1);
         assert_int_equal(ba.version, va);
+        assert_sum_is_plain(&sys, bl, 2);
         opt_simplices C = p.S;
         C.n = k + B.n;
         opt_term tc = {&C, tall.energy};
