@@ -268,13 +268,18 @@ int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A) { return same_
  * (opt/split_symbolic; *by_split set). NULL with status OK when perm
  * splits a block (the caller then analyses the scalar pattern), NULL with
  * an error status on failure. */
-static cholmod_factor *analyze_blocks(opt_chol *c, const opt_csc *A, const int *perm, int *by_split)
+static cholmod_factor *analyze_blocks(opt_chol *c, const opt_csc *A, const int *vcp, const int *vri,
+                                      const int *perm, int *by_split)
 {
     cholmod_common *cm = &c->cm;
     int b = c->block, nb = A->n / b;
     int *cp = NULL, *ri = NULL, *pv = malloc(((size_t)nb + 1) * sizeof *pv);
     cholmod_factor *Lv = NULL, *L = NULL;
-    if (!pv || !opt_block_graph(A, b, &cp, &ri)) {
+    if (vcp) { /* the caller's vertex pattern: read only */
+        cp = (int *)vcp;
+        ri = (int *)vri;
+    }
+    if (!pv || (!vcp && !opt_block_graph(A, b, &cp, &ri))) {
         cm->status = CHOLMOD_OUT_OF_MEMORY;
         goto done;
     }
@@ -304,13 +309,21 @@ static cholmod_factor *analyze_blocks(opt_chol *c, const opt_csc *A, const int *
     if (Lv) L = opt_block_expand_symbolic(Lv, b, cm);
 done:
     if (Lv) cholmod_free_factor(&Lv, cm);
-    free(cp);
-    free(ri);
+    if (!vcp) {
+        free(cp);
+        free(ri);
+    }
     free(pv);
     return L;
 }
 
 scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm, scaf_error *err)
+{
+    return opt_chol_analyze_vertices(c, A, NULL, NULL, perm, err);
+}
+
+scaf_status opt_chol_analyze_vertices(opt_chol *c, const opt_csc *A, const int *vcolptr,
+                                      const int *vrowidx, const int *perm, scaf_error *err)
 {
     if (A->n < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD: empty system (no free unknowns)");
     /* CHOLMOD is told the columns are sorted upper ones (no copy, no check) */
@@ -334,7 +347,7 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
     /* the solver is supernodal (opt_chol_create) */
     int by_split = 0;
     if (c->block > 1 && A->n % c->block == 0 && (perm || c->ordering != OPT_ORDER_CHOLMOD_DEFAULT))
-        c->L = analyze_blocks(c, A, perm, &by_split);
+        c->L = analyze_blocks(c, A, vcolptr, vrowidx, perm, &by_split);
     int by_blocks = c->L != NULL;
     if (c->L || c->cm.status != CHOLMOD_OK) {
         /* done by blocks, or failed */

@@ -114,6 +114,14 @@ scaf_status opt_chol_factor_rhs(opt_chol *c, const opt_csc *A, const double *b, 
  * permutation perm (n entries), or the solver's ordering if perm is NULL. */
 scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm, scaf_error *err);
 
+/* The same with A's pattern by vertices given: vcolptr (A->n / block + 1)
+ * and vrowidx, each vertex column's rows ascending, A being its
+ * interleaved expansion (opt_csc_expand_vertex_pattern; what
+ * opt/proxy_system keeps). The analysis by vertices then uses it instead
+ * of compressing A again. NULL vcolptr: opt_chol_analyze_given. */
+scaf_status opt_chol_analyze_vertices(opt_chol *c, const opt_csc *A, const int *vcolptr,
+                                      const int *vrowidx, const int *perm, scaf_error *err);
+
 /* Whether A has exactly the pattern of the last analysis (then
  * opt_chol_factor will not analyse again). */
 int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A);

@@ -410,7 +410,8 @@ static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, sca
     /* A scaffold identical to the last one (late iterations, the boundary
      * barely moving) gives the same pattern: keep that analysis. */
     if (!opt_chol_pattern_matches(w->chol, &w->sys.A)) {
-        st = opt_chol_analyze_given(w->chol, &w->sys.A, given, err);
+        st = opt_chol_analyze_vertices(w->chol, &w->sys.A, w->sys.owns ? w->sys.vcolptr : NULL,
+                                       w->sys.vrowidx, given, err);
         if (st != SCAF_OK) return st;
     }
     return opt_chol_factor_rhs(w->chol, &w->sys.A, w->rhs, err);
