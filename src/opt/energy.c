@@ -14,6 +14,7 @@
 
 #include "base/parallel.h"
 #include "opt/arap_barrier.h"
+#include "opt/sd2_lanes.h"
 #include "opt/small_svd.h"
 
 const char *opt_energy_name(opt_energy e)
@@ -322,6 +323,8 @@ double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap
 static double energy_range(const opt_term *t, const double *X, size_t lo, size_t hi)
 {
     const opt_simplices *S = t->s;
+    if (S->d == 2 && t->energy == OPT_ENERGY_SYMMETRIC_DIRICHLET)
+        return opt_sd2_energy_range(S, X, lo, hi); /* the same sum, in vector lanes */
     double acc = 0, J[9];
     for (size_t s = lo; s < hi; s++) {
         opt_jacobian(S, (int)s, X, J);

@@ -12,6 +12,7 @@
 #include "geom/predicates.h"
 #include "opt/flip_free_step.h"
 #include "opt/newton_fill.h"
+#include "opt/sd2_lanes.h"
 
 void opt_obj_term_free(opt_obj_term *t)
 {
@@ -48,6 +49,10 @@ static void energy_slope_range(const opt_simplex_term *st, const double *X, cons
 {
     const opt_simplices *S = st->S;
     int d = S->d;
+    if (d == 2 && st->energy == OPT_ENERGY_SYMMETRIC_DIRICHLET) {
+        opt_sd2_energy_slope_range(S, X, D, lo, hi, energy, slope); /* the same, in lanes */
+        return;
+    }
     double acc = *slope, e = *energy, J[9], G[9], JD[9];
     for (size_t s = lo; s < hi; s++) {
         opt_jacobian(S, (int)s, X, J);

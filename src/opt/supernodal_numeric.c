@@ -17,6 +17,7 @@
 #include "opt/blas_threads.h"
 #include "opt/dense_blas.h"
 #include "opt/supernodal_solve.h"
+#include "opt/vector_clones.h"
 
 static const double one = 1.0, zero = 0.0, minus_one = -1.0;
 
@@ -96,15 +97,6 @@ static void apply_list(const opt_snum *P, opt_snum_worker *wk, int sn, int *head
         d = dnext;
     }
 }
-
-/* The small dense loops below are compiled for AVX-512, AVX2 and the
- * baseline, the best picked at load time (the build targets baseline
- * x86-64, two doubles per vector); elsewhere they are plain functions. */
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__EMSCRIPTEN__)
-#define VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define VECTOR_CLONES
-#endif
 
 /* Width of the column blocks of solve_below's triangular solves. */
 #define TRSM_BLOCK 16

@@ -1,5 +1,6 @@
 /* Tests for opt/energy, opt/small_svd, opt/simplices: values at known
- * maps, gradients against central differences, invariance, SLIM property. */
+ * maps, gradients against central differences, invariance, SLIM property;
+ * opt/sd2_lanes against the one-simplex-at-a-time sums, to the bit. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -10,6 +11,7 @@
 #include <math.h>
 
 #include "opt/energy.h"
+#include "opt/sd2_lanes.h"
 #include "opt/simplices.h"
 #include "opt/small_svd.h"
 #include "rng.h"
@@ -386,10 +388,90 @@ static void guard_is_continuous(void **state)
     assert_true(worst < 0.02);
 }
 
+/* The lane sums (opt/sd2_lanes) are the serial loops' to the bit:
+ * random triangles, first some of them inverted or degenerate at X (+inf
+ * energy, NaN slope), then all made positive (every slope finite); each
+ * simplex alone, and ranges of every length mod 8 from several starts. */
+static void lanes_sum_like_one_at_a_time(void **state)
+{
+    (void)state;
+    rng r = {97};
+    const int n = 2000, nv = 500, nlong = 70; /* ranges from 0, 1, 2 up to nlong */
+    opt_simplices S;
+    assert_int_equal(opt_simplices_alloc(&S, 2, n, NULL), SCAF_OK);
+    double X[2 * 500], D[2 * 500];
+    for (int i = 0; i < 2 * nv; i++) {
+        X[i] = rng_uniform(&r, -1, 1);
+        D[i] = rng_uniform(&r, -1, 1);
+    }
+    for (int s = 0; s < n; s++) {
+        int *ix = S.idx + 3 * s;
+        for (int c = 0; c < 3; c++) ix[c] = (int)rng_uniform(&r, 0, nv - 1e-9);
+        if (s % 9 == 4) ix[2] = ix[1]; /* degenerate: det 0 */
+        for (int k = 0; k < 6; k++) S.grad[6 * s + k] = rng_uniform(&r, -3, 3);
+        S.vol[s] = 1;
+        S.weight[s] = rng_uniform(&r, 0.1, 2);
+    }
+    for (int phase = 0; phase < 2; phase++) {
+        int inverted = 0, finite_slopes = 0;
+        /* every simplex alone (its own bits), then longer ranges */
+        for (int lo = 0; lo < n; lo++)
+            for (int hi = lo; hi <= (lo < 3 ? nlong : lo + 1); hi++) {
+                double e = 0, es = 0.5, sl = -0.25, J[4], JD[4], G[4];
+                for (int s = lo; s < hi; s++) {
+                    opt_jacobian(&S, s, X, J);
+                    opt_jacobian(&S, s, D, JD);
+                    double v = opt_density_grad(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J, G);
+                    double dot = 0;
+                    for (int q = 0; q < 4; q++) dot += G[q] * JD[q];
+                    e += S.weight[s] * opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J);
+                    sl += S.weight[s] * dot;
+                    es += S.weight[s] * v;
+                    inverted += isinf(v);
+                }
+                double le = opt_sd2_energy_range(&S, X, (size_t)lo, (size_t)hi);
+                double les = 0.5, lsl = -0.25;
+                opt_sd2_energy_slope_range(&S, X, D, (size_t)lo, (size_t)hi, &les, &lsl);
+                assert_memory_equal(&le, &e, sizeof e);
+                assert_memory_equal(&les, &es, sizeof es);
+                if (isnan(sl)) {
+                    assert_true(isnan(lsl));
+                } else {
+                    finite_slopes++;
+                    assert_memory_equal(&lsl, &sl, sizeof sl);
+                }
+            }
+        if (phase == 0) {
+            assert_true(inverted > 0);
+            /* all positive: a degenerate triangle gets distinct corners
+             * (redrawn until its Jacobian is not singular), an inverted one
+             * its second gradient column negated (det -> -det) */
+            for (int s = 0; s < n; s++) {
+                double J[4];
+                for (;;) {
+                    opt_jacobian(&S, s, X, J);
+                    double det = J[0] * J[3] - J[1] * J[2];
+                    if (det > 0) break;
+                    if (det < 0) {
+                        for (int c = 0; c < 3; c++) S.grad[6 * s + 2 * c + 1] *= -1;
+                        continue;
+                    }
+                    S.idx[3 * s + 2] = (int)rng_uniform(&r, 0, nv - 1e-9);
+                }
+            }
+        } else {
+            assert_int_equal(inverted, 0);
+            assert_int_equal(finite_slopes, 3 * (nlong + 1) - 3 + 2 * (n - 3));
+        }
+    }
+    opt_simplices_free(&S);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(svd_reconstructs),
+        cmocka_unit_test(lanes_sum_like_one_at_a_time),
         cmocka_unit_test(hypot_fast_path),
         cmocka_unit_test(gradients_match_finite_differences),
         cmocka_unit_test(isometry_values),
