@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "base/parallel.h"
+#include "opt/sd2_lanes.h"
 
 int opt_dof_numbering(int nv, const unsigned char *fixed, int *dof)
 {
@@ -416,13 +417,26 @@ typedef struct fill_job {
     double w2k[PAR_MAX_CHUNKS];
 } fill_job;
 
+/* Whether t's proxies go through opt/sd2_lanes (the same values). */
+static int sd2(const opt_term *t)
+{
+    return t->s->d == 2 && t->energy == OPT_ENERGY_SYMMETRIC_DIRICHLET;
+}
+
 /* Chunk k of the batch: M and lin of its simplices. */
 static void fill_compute(void *ctx, int k)
 {
     fill_job *j = ctx;
     int d = j->t->s->d;
+    size_t lo = j->b0 + par_chunk_begin(j->m, j->nc, k);
     size_t hi = j->b0 + par_chunk_begin(j->m, j->nc, k + 1);
-    for (size_t s = j->b0 + par_chunk_begin(j->m, j->nc, k); s < hi; s++) {
+    if (sd2(j->t)) {
+        double w2 =
+            opt_sd2_proxy_range(j->t->s, j->X, lo, hi, j->w2_cap, j->loc + (lo - j->b0) * j->ml);
+        if (w2 > j->w2k[k]) j->w2k[k] = w2;
+        return;
+    }
+    for (size_t s = lo; s < hi; s++) {
         double *M = j->loc + (s - j->b0) * j->ml, *lin = M + d * d;
         double w2 = d == 2 ? proxy_d(j->t, (int)s, j->X, j->w2_cap, M, lin, 2)
                            : proxy_d(j->t, (int)s, j->X, j->w2_cap, M, lin, d);
@@ -484,6 +498,17 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
     }
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
     double M[9], lin[12], w2max = 0;
+    if (sd2(t)) { /* proxies of 8 simplices at a time, scattered in order */
+        double loc[8 * 10];
+        for (int s0 = 0; s0 < S->n; s0 += 8) {
+            int m = S->n - s0 < 8 ? S->n - s0 : 8;
+            double w2 = opt_sd2_proxy_range(S, X, (size_t)s0, (size_t)(s0 + m), w2_cap, loc);
+            if (w2 > w2max) w2max = w2;
+            for (int l = 0; l < m; l++)
+                scatter(b, S, s0 + l, dof, X, loc + 10 * l, loc + 10 * l + 4, rhs, 0, INT_MAX);
+        }
+        return w2max;
+    }
     for (int s = 0; s < S->n; s++) {
         double w2 =
             d == 2 ? proxy_d(t, s, X, w2_cap, M, lin, 2) : proxy_d(t, s, X, w2_cap, M, lin, d);

@@ -4,8 +4,10 @@
  * then the weighted values added one by one in simplex order. */
 #include "opt/sd2_lanes.h"
 
+#include <float.h>
 #include <math.h>
 
+#include "opt/small_svd.h"
 #include "opt/vector_clones.h"
 
 #define LANES 8
@@ -85,13 +87,91 @@ VECTOR_CLONES static void energy_slope_lanes(const opt_simplices *S, const doubl
     *slope = sa;
 }
 
+/* Squared SLIM weight of symmetric Dirichlet at singular value s (opt/energy). */
+static inline double sd_w2(double s) { return s > 0 ? (s + 1) * (s * s + 1) / (s * s * s) : 1.0; }
+
+VECTOR_CLONES static double proxy_lanes(const opt_simplices *S, const double *X, size_t lo,
+                                        size_t hi, double w2_cap, double *loc)
+{
+    double w2max = 0;
+    for (size_t s0 = lo; s0 < hi; s0 += LANES) {
+        int m = hi - s0 < LANES ? (int)(hi - s0) : LANES;
+        double j0[LANES] = {0}, j1[LANES] = {0}, j2[LANES] = {0}, j3[LANES] = {0};
+        double E[LANES], F[LANES], G[LANES], H[LANES], Q[LANES], R[LANES], w2[LANES];
+        gather_jacobians(S, X, s0, m, j0, j1, j2, j3);
+        int slow = 0;
+        for (int l = 0; l < LANES; l++) {
+            E[l] = 0.5 * (j0[l] + j3[l]);
+            F[l] = 0.5 * (j0[l] - j3[l]);
+            G[l] = 0.5 * (j2[l] + j1[l]);
+            H[l] = 0.5 * (j2[l] - j1[l]);
+            double q = E[l] * E[l] + H[l] * H[l], r = F[l] * F[l] + G[l] * G[l];
+            Q[l] = sqrt(q);
+            R[l] = sqrt(r);
+            slow |= !(q >= DBL_MIN && q <= DBL_MAX) | !(r >= DBL_MIN && r <= DBL_MAX);
+        }
+        if (slow) /* svd_hypot's own choice, lane by lane (rare) */
+            for (int l = 0; l < LANES; l++) {
+                Q[l] = svd_hypot(E[l], H[l]);
+                R[l] = svd_hypot(F[l], G[l]);
+            }
+        for (int l = 0; l < LANES; l++) {
+            /* opt/energy's proxy2_rotation_target, then proxy_block's
+             * M = W^T W, MT = M T and lin = pullback(G_s, MT) */
+            double s0v = Q[l] + R[l], s1v = Q[l] - R[l];
+            double w0 = sd_w2(s0v), w1 = sd_w2(s1v);
+            w2[l] = w0 > w1 ? w0 : w1;
+            if (w0 > w2_cap) w0 = w2_cap;
+            if (w1 > w2_cap) w1 = w2_cap;
+            double ca = Q[l] > 0 ? E[l] / Q[l] : 1.0, sa = Q[l] > 0 ? H[l] / Q[l] : 0.0;
+            double t0 = ca, t1 = -sa, t2 = sa, t3 = ca;
+            double r0 = sqrt(w0), r1 = sqrt(w1), mm = 0.5 * (r0 + r1), h = 0.5 * (r0 - r1);
+            int both = R[l] > 0 && Q[l] > 0;
+            double c2 = both ? (F[l] * E[l] - G[l] * H[l]) / (R[l] * Q[l]) : 1.0;
+            double s2 = both ? (G[l] * E[l] + F[l] * H[l]) / (R[l] * Q[l]) : 0.0;
+            double W0 = mm + h * c2, W1 = h * s2, W2 = h * s2, W3 = mm - h * c2;
+            double M0 = W0 * W0 + W2 * W2, M1 = W0 * W1 + W2 * W3;
+            double M2 = W1 * W0 + W3 * W2, M3 = W1 * W1 + W3 * W3;
+            j0[l] = M0;
+            j1[l] = M1;
+            j2[l] = M2;
+            j3[l] = M3;
+            E[l] = M0 * t0 + M1 * t2; /* MT, kept in the lane arrays */
+            F[l] = M0 * t1 + M1 * t3;
+            G[l] = M2 * t0 + M3 * t2;
+            H[l] = M2 * t1 + M3 * t3;
+        }
+        for (int l = 0; l < m; l++) {
+            size_t s = s0 + (size_t)l;
+            const double *Gs = S->grad + 6 * s;
+            double *out = loc + 10 * (s - lo);
+            out[0] = j0[l];
+            out[1] = j1[l];
+            out[2] = j2[l];
+            out[3] = j3[l];
+            for (int i = 0; i < 3; i++) {
+                out[4 + 2 * i] = E[l] * Gs[2 * i] + F[l] * Gs[2 * i + 1];
+                out[5 + 2 * i] = G[l] * Gs[2 * i] + H[l] * Gs[2 * i + 1];
+            }
+            if (w2[l] > w2max) w2max = w2[l];
+        }
+    }
+    return w2max;
+}
+
+double opt_sd2_proxy_range(const opt_simplices *S, const double *X, size_t lo, size_t hi,
+                           double w2_cap, double *loc)
+{
+    return proxy_lanes(S, X, lo, hi, w2_cap, loc);
+}
+
 double opt_sd2_energy_range(const opt_simplices *S, const double *X, size_t lo, size_t hi)
 {
     return energy_lanes(S, X, lo, hi);
 }
 
-void opt_sd2_energy_slope_range(const opt_simplices *S, const double *X, const double *D,
-                                size_t lo, size_t hi, double *e, double *slope)
+void opt_sd2_energy_slope_range(const opt_simplices *S, const double *X, const double *D, size_t lo,
+                                size_t hi, double *e, double *slope)
 {
     energy_slope_lanes(S, X, D, lo, hi, e, slope);
 }

@@ -1,6 +1,7 @@
 /* Tests for opt/energy, opt/small_svd, opt/simplices: values at known
  * maps, gradients against central differences, invariance, SLIM property;
- * opt/sd2_lanes against the one-simplex-at-a-time sums, to the bit. */
+ * opt/sd2_lanes against the one-simplex-at-a-time sums and proxies, to the
+ * bit. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -9,6 +10,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdlib.h>
 
 #include "opt/energy.h"
 #include "opt/sd2_lanes.h"
@@ -467,11 +469,83 @@ static void lanes_sum_like_one_at_a_time(void **state)
     opt_simplices_free(&S);
 }
 
+/* opt_sd2_proxy_range against one simplex at a time: opt_slim_proxy_capped,
+ * then M = W^T W, MT = M T and lin = pullback(G, MT) in proxy_block's
+ * order; Jacobians of every kind the 2D proxy branches on (similarity,
+ * anti-similarity, zero, reflections, squares below DBL_MIN and above
+ * DBL_MAX for svd_hypot's fallback), with and without a cap, ranges not
+ * multiples of 8. */
+static void lanes_proxy_like_one_at_a_time(void **state)
+{
+    (void)state;
+    rng r = {101};
+    const int n = 1000;
+    opt_simplices S;
+    assert_int_equal(opt_simplices_alloc(&S, 2, n, NULL), SCAF_OK);
+    /* X holds each simplex's Jacobian directly: corners (0,0), (1,0), (0,1)
+     * with gradients such that J = [x1 - x0, x2 - x0] */
+    double *X = malloc(sizeof *X * 6 * n);
+    for (int s = 0; s < n; s++) {
+        double J[4];
+        for (int k = 0; k < 4; k++) J[k] = rng_uniform(&r, -2, 2);
+        switch (s % 10) {
+        case 0: J[3] = J[0], J[2] = -J[1]; break;     /* similarity: R = 0 */
+        case 1: J[3] = -J[0], J[2] = J[1]; break;     /* anti-similarity: Q = 0 */
+        case 2: J[0] = J[1] = J[2] = J[3] = 0; break; /* Q = R = 0 */
+        case 3:
+            for (int k = 0; k < 4; k++) J[k] *= 1e-170;
+            break; /* squares below DBL_MIN */
+        case 4:
+            for (int k = 0; k < 4; k++) J[k] *= 1e160;
+            break; /* squares above DBL_MAX */
+        default: break;
+        }
+        int *ix = S.idx + 3 * s;
+        for (int c = 0; c < 3; c++) ix[c] = 3 * s + c;
+        double *x = X + 6 * s;
+        x[0] = x[1] = 0;
+        x[2] = J[0], x[3] = J[2]; /* corner 1: column 0 of J */
+        x[4] = J[1], x[5] = J[3]; /* corner 2: column 1 */
+        double G[6] = {-1, -1, 1, 0, 0, 1};
+        for (int k = 0; k < 6; k++) S.grad[6 * s + k] = G[k] * (1 + 0.25 * (s % 3 == 0));
+        S.vol[s] = S.weight[s] = 1;
+    }
+    double *loc = malloc(sizeof *loc * 10 * n);
+    const double caps[2] = {INFINITY, 50.0};
+    for (int c = 0; c < 2; c++)
+        for (int lo = 0; lo < 3; lo++) {
+            double w2l = opt_sd2_proxy_range(&S, X, (size_t)lo, (size_t)n, caps[c], loc);
+            double w2max = 0;
+            for (int s = lo; s < n; s++) {
+                double J[4], W[4], T[4], M[4], MT[4], lin[6];
+                opt_jacobian(&S, s, X, J);
+                double w2 =
+                    opt_slim_proxy_capped(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J, caps[c], W, T);
+                if (w2 > w2max) w2max = w2;
+                for (int a = 0; a < 2; a++)
+                    for (int b = 0; b < 2; b++) {
+                        M[2 * a + b] = W[a] * W[b] + W[2 + a] * W[2 + b];
+                    }
+                for (int a = 0; a < 2; a++)
+                    for (int b = 0; b < 2; b++)
+                        MT[2 * a + b] = M[2 * a] * T[b] + M[2 * a + 1] * T[2 + b];
+                opt_pullback(2, S.grad + 6 * s, MT, lin);
+                assert_memory_equal(loc + 10 * (s - lo), M, sizeof M);
+                assert_memory_equal(loc + 10 * (s - lo) + 4, lin, sizeof lin);
+            }
+            assert_memory_equal(&w2l, &w2max, sizeof w2max);
+        }
+    free(loc);
+    free(X);
+    opt_simplices_free(&S);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(svd_reconstructs),
         cmocka_unit_test(lanes_sum_like_one_at_a_time),
+        cmocka_unit_test(lanes_proxy_like_one_at_a_time),
         cmocka_unit_test(hypot_fast_path),
         cmocka_unit_test(gradients_match_finite_differences),
         cmocka_unit_test(isometry_values),
