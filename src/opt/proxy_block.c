@@ -417,6 +417,9 @@ typedef struct fill_job {
     double w2k[PAR_MAX_CHUNKS];
 } fill_job;
 
+/* Simplices per call of opt_sd2_proxy_range in the serial fill. */
+#define SD2_BATCH 64
+
 /* Whether t's proxies go through opt/sd2_lanes (the same values). */
 static int sd2(const opt_term *t)
 {
@@ -498,10 +501,10 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
     }
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
     double M[9], lin[12], w2max = 0;
-    if (sd2(t)) { /* proxies of 8 simplices at a time, scattered in order */
-        double loc[8 * 10];
-        for (int s0 = 0; s0 < S->n; s0 += 8) {
-            int m = S->n - s0 < 8 ? S->n - s0 : 8;
+    if (sd2(t)) { /* proxies of SD2_BATCH simplices at a time, scattered in order */
+        double loc[SD2_BATCH * 10];
+        for (int s0 = 0; s0 < S->n; s0 += SD2_BATCH) {
+            int m = S->n - s0 < SD2_BATCH ? S->n - s0 : SD2_BATCH;
             double w2 = opt_sd2_proxy_range(S, X, (size_t)s0, (size_t)(s0 + m), w2_cap, loc);
             if (w2 > w2max) w2max = w2;
             for (int l = 0; l < m; l++)

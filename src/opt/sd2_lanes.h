@@ -1,10 +1,11 @@
 /* opt/sd2_lanes: the symmetric Dirichlet energy of triangles in 2D (the
  * mesh term of every UV map) summed over a range of simplices, and its
- * SLIM proxies, eight at a time in vector lanes. The closed forms and the order of every operation
- * are opt/energy's (density, density_grad) and the sums run in simplex
+ * SLIM proxies, a batch of simplices at a time in vector lanes. The
+ * closed forms and the order of every operation are opt/energy's
+ * (density, density_grad, the 2D proxy) and the sums run in simplex
  * order, so the results are those of the one-simplex-at-a-time loops, to
- * the bit; only the Jacobians' inverses and products of eight simplices
- * go through the vector unit together. */
+ * the bit; only the arithmetic of a batch's Jacobians goes through the
+ * vector unit together. */
 #ifndef SCAF_OPT_SD2_LANES_H
 #define SCAF_OPT_SD2_LANES_H
 
