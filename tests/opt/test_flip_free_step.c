@@ -147,6 +147,43 @@ static void mesh_step_is_exact_minimum(void **state)
     assert_true(finite >= 25); /* the minimum is a real root most of the time */
 }
 
+/* Each triangle alone (the lane kernel's every branch seen, not only the
+ * minimum): opt_max_step on a one-triangle set equals
+ * opt_max_step_triangle, bit for bit, for directions of every kind:
+ * random, rigid translations and rotations (no root), one corner moving
+ * (a linear area), zero, and triangles already inverted or flat. */
+static void each_triangle_alone(void **state)
+{
+    (void)state;
+    rng r = {103};
+    int kinds[6] = {0};
+    for (int k = 0; k < 600; k++) {
+        double X[6], D[6];
+        int idx[3] = {0, 1, 2};
+        opt_simplices S = {2, 1, idx, NULL, NULL, NULL};
+        for (int i = 0; i < 6; i++) {
+            X[i] = rng_uniform(&r, -1, 1);
+            D[i] = rng_uniform(&r, -2, 2);
+        }
+        int kind = k % 6;
+        kinds[kind]++;
+        if (kind == 1) /* a translation: the area never changes */
+            for (int i = 2; i < 6; i++) D[i] = D[i % 2];
+        if (kind == 2) /* one corner moves: the area is linear in t */
+            for (int i = 0; i < 4; i++) D[i] = 0;
+        if (kind == 3)
+            for (int i = 0; i < 6; i++) D[i] = 0;
+        if (kind == 4) /* a rotation about the origin */
+            for (int i = 0; i < 3; i++) D[2 * i] = -X[2 * i + 1], D[2 * i + 1] = X[2 * i];
+        if (kind == 5) /* flat */
+            X[4] = X[0], X[5] = X[1];
+        double want = opt_max_step_triangle(X, X + 2, X + 4, D, D + 2, D + 4);
+        double got = opt_max_step(&S, X, D);
+        assert_memory_equal(&got, &want, sizeof got);
+    }
+    for (int kind = 0; kind < 6; kind++) assert_true(kinds[kind] > 0);
+}
+
 static void tet_steps(void **state)
 {
     (void)state;
@@ -275,6 +312,7 @@ int main(void)
         cmocka_unit_test(random_triangle_steps),
         cmocka_unit_test(tet_steps),
         cmocka_unit_test(mesh_step_is_exact_minimum),
+        cmocka_unit_test(each_triangle_alone),
         cmocka_unit_test(polynomial_edge_cases),
         cmocka_unit_test(line_search_never_flips),
     };
