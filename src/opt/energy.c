@@ -216,9 +216,6 @@ void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T)
     opt_slim_proxy_capped(e, d, J, INFINITY, W, T);
 }
 
-/* Squared SLIM weight of symmetric Dirichlet at singular value s. */
-static double sd_w2(double s) { return s > 0 ? (s + 1) * (s * s + 1) / (s * s * s) : 1.0; }
-
 /* 2D symmetric Dirichlet / ARAP without trigonometry: with J split into
  * its similarity part (E, H) and anti-similarity part (F, G), the closest
  * rotation U V^T is the rotation by angle(E, H), and U diag(w) U^T =
@@ -230,7 +227,8 @@ static double proxy2_rotation_target(opt_energy e, const double *J, double w2_ca
     double G = 0.5 * (J[2] + J[1]), H = 0.5 * (J[2] - J[1]);
     double Q = svd_hypot(E, H), R = svd_hypot(F, G);
     double s0 = Q + R, s1 = Q - R;
-    double w0 = e == OPT_ENERGY_ARAP ? 1.0 : sd_w2(s0), w1 = e == OPT_ENERGY_ARAP ? 1.0 : sd_w2(s1);
+    double w0 = e == OPT_ENERGY_ARAP ? 1.0 : opt_sd_w2(s0),
+           w1 = e == OPT_ENERGY_ARAP ? 1.0 : opt_sd_w2(s1);
     double w2max = w0 > w1 ? w0 : w1;
     if (w0 > w2_cap) w0 = w2_cap;
     if (w1 > w2_cap) w1 = w2_cap;
@@ -267,7 +265,7 @@ double opt_slim_proxy_capped(opt_energy e, int d, const double *J, double w2_cap
         for (int i = 0; i < d; i++) {
             t[i] = 1.0;
             /* g/(2(s-1)) with g = 2s - 2/s^3, simplified: no 0/0 at s = 1. */
-            w2[i] = sd_w2(s[i]);
+            w2[i] = opt_sd_w2(s[i]);
         }
         break;
     case OPT_ENERGY_ARAP: {

@@ -57,6 +57,13 @@ int opt_energy_parse(const char *name, opt_energy *e);
  * (scaffold/scaf_loop) and the convergence test (app/param). */
 double opt_energy_scale_offset(opt_energy e);
 
+/* Squared SLIM weight of symmetric Dirichlet at signed singular value s
+ * (1 where s <= 0); inline for opt/sd2_lanes' vector loops. */
+static inline double opt_sd_w2(double s)
+{
+    return s > 0 ? (s + 1) * (s * s + 1) / (s * s * s) : 1.0;
+}
+
 /* Density of J (d by d). */
 double opt_density(opt_energy e, int d, const double *J);
 

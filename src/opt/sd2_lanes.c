@@ -7,6 +7,7 @@
 #include <float.h>
 #include <math.h>
 
+#include "opt/energy.h"
 #include "opt/small_svd.h"
 #include "opt/vector_clones.h"
 
@@ -90,9 +91,6 @@ VECTOR_CLONES static void energy_slope_lanes(const opt_simplices *S, const doubl
     *slope = sa;
 }
 
-/* Squared SLIM weight of symmetric Dirichlet at singular value s (opt/energy). */
-static inline double sd_w2(double s) { return s > 0 ? (s + 1) * (s * s + 1) / (s * s * s) : 1.0; }
-
 VECTOR_CLONES static double proxy_lanes(const opt_simplices *S, const double *X, size_t lo,
                                         size_t hi, double w2_cap, double *loc)
 {
@@ -122,7 +120,7 @@ VECTOR_CLONES static double proxy_lanes(const opt_simplices *S, const double *X,
             /* opt/energy's proxy2_rotation_target, then proxy_block's
              * M = W^T W, MT = M T and lin = pullback(G_s, MT) */
             double s0v = Q[l] + R[l], s1v = Q[l] - R[l];
-            double w0 = sd_w2(s0v), w1 = sd_w2(s1v);
+            double w0 = opt_sd_w2(s0v), w1 = opt_sd_w2(s1v);
             w2[l] = w0 > w1 ? w0 : w1;
             if (w0 > w2_cap) w0 = w2_cap;
             if (w1 > w2_cap) w1 = w2_cap;
