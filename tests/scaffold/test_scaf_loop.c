@@ -62,6 +62,16 @@ static void loop_on_disk(disk *k, scaf_loop *L)
                      SCAF_OK);
 }
 
+/* The loop with default options but energy e on a fresh disk. */
+static void loop_with_energy(disk *k, scaf_loop *L, opt_energy e)
+{
+    disk_make(k);
+    scaf_loop_options o = scaf_loop_options_default();
+    o.energy = e;
+    scaf_error err;
+    assert_int_equal(scaf_loop_init(L, k->m.nv, k->m.V, k->m.nf, k->m.F, k->uv, &o, &err), SCAF_OK);
+}
+
 static void assert_state_valid(const scaf_loop *L)
 {
     const scaffold_view *v = scaf_loop_scaffold_view(L);
@@ -77,12 +87,9 @@ static void each_energy_descends_bijectively(void **state)
                                     OPT_ENERGY_CONFORMAL};
     for (int e = 0; e < 3; e++) {
         disk k;
-        disk_make(&k);
-        scaf_loop_options o = scaf_loop_options_default();
-        o.energy = energies[e];
         scaf_loop L;
         scaf_error err;
-        assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, k.m.nf, k.m.F, k.uv, &o, &err), SCAF_OK);
+        loop_with_energy(&k, &L, energies[e]);
         double E0 = scaf_loop_energy(&L);
         int steps = 0;
         for (int it = 0; it < 6; it++) {
@@ -397,12 +404,9 @@ static void reported_energies_are_fresh(void **state)
     const opt_energy energies[2] = {OPT_ENERGY_SYMMETRIC_DIRICHLET, OPT_ENERGY_ARAP};
     for (int e = 0; e < 2; e++) {
         disk k;
-        disk_make(&k);
-        scaf_loop_options o = scaf_loop_options_default();
-        o.energy = energies[e];
         scaf_loop L;
         scaf_error err;
-        assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, k.m.nf, k.m.F, k.uv, &o, &err), SCAF_OK);
+        loop_with_energy(&k, &L, energies[e]);
         double last = NAN;
         for (int it = 0; it < 6; it++) {
             int moved = it == 2 || it == 4;
