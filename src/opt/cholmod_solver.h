@@ -122,6 +122,15 @@ scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *per
 scaf_status opt_chol_analyze_vertices(opt_chol *c, const opt_csc *A, const int *vcolptr,
                                       const int *vrowidx, const int *perm, scaf_error *err);
 
+/* opt_chol_factor_rhs for A given by vertices as in
+ * opt_chol_analyze_vertices (c's block > 1, A's pattern the expansion of
+ * vcolptr, vrowidx; assert()ed), analysed with perm as there when that
+ * vertex pattern is not the last analysis's. The pattern is kept and
+ * compared by vertices: a quarter of the reads and copies in 2D. */
+scaf_status opt_chol_factor_vertices(opt_chol *c, const opt_csc *A, const int *vcolptr,
+                                     const int *vrowidx, const int *perm, const double *b,
+                                     scaf_error *err);
+
 /* Whether A has exactly the pattern of the last analysis (then
  * opt_chol_factor will not analyse again). */
 int opt_chol_pattern_matches(const opt_chol *c, const opt_csc *A);

@@ -150,3 +150,34 @@ scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *
     assert(opt_csc_is_upper_sorted(A));
     return SCAF_OK;
 }
+
+/* Entries of A's first nvc * d columns when they are the expansion of
+ * vertex columns 0..nvc-1, else -1. */
+static int expansion_prefix(const opt_csc *A, int d, int nvc, const int *vcolptr,
+                            const int *vrowidx)
+{
+    if (d < 1 || nvc < 0 || A->n < nvc * d || A->colptr[0] != 0) return -1;
+    int pos = 0;
+    for (int c = 0; c < nvc; c++)
+        for (int a = 0; a < d; a++) {
+            if (A->colptr[c * d + a] != pos) return -1;
+            for (int k = vcolptr[c]; k < vcolptr[c + 1]; k++) {
+                int r = vrowidx[k], top = r == c ? a : d - 1;
+                for (int q = 0; q <= top; q++)
+                    if (pos >= A->nnz || A->rowidx[pos++] != r * d + q) return -1;
+            }
+        }
+    return A->colptr[nvc * d] == pos ? pos : -1;
+}
+
+int opt_csc_is_vertex_expansion(const opt_csc *A, int d, int nv, const int *vcolptr,
+                                const int *vrowidx)
+{
+    return A->n == nv * d && expansion_prefix(A, d, nv, vcolptr, vrowidx) == A->nnz;
+}
+
+int opt_csc_starts_with_vertex_expansion(const opt_csc *A, int d, int nvc, const int *vcolptr,
+                                         const int *vrowidx)
+{
+    return expansion_prefix(A, d, nvc, vcolptr, vrowidx) >= 0;
+}

@@ -48,4 +48,15 @@ scaf_status opt_csc_from_triplets(opt_csc *A, int n, int nt, const int *I, const
 scaf_status opt_csc_expand_vertex_pattern(opt_csc *A, int d, int nv, const int *vcolptr,
                                           const int *vrowidx, int zero_values, scaf_error *err);
 
+/* Whether A's pattern is exactly what opt_csc_expand_vertex_pattern makes
+ * of (d, nv, vcolptr, vrowidx). Reads A's whole pattern: for assert()s and
+ * for checking a pattern kept by vertices against a scalar one. */
+int opt_csc_is_vertex_expansion(const opt_csc *A, int d, int nv, const int *vcolptr,
+                                const int *vrowidx);
+
+/* Whether A's first nvc * d columns are the expansion of vertex columns
+ * 0..nvc-1 (the others may be anything). */
+int opt_csc_starts_with_vertex_expansion(const opt_csc *A, int d, int nvc, const int *vcolptr,
+                                         const int *vrowidx);
+
 #endif /* SCAF_OPT_CSC_H */

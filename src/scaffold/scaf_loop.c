@@ -413,6 +413,9 @@ static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, sca
     }
     /* A scaffold identical to the last one (late iterations, the boundary
      * barely moving) gives the same pattern: keep that analysis. */
+    if (w->sys.owns && L->d > 1)
+        return opt_chol_factor_vertices(w->chol, &w->sys.A, w->sys.vcolptr, w->sys.vrowidx, given,
+                                        w->rhs, err);
     if (!opt_chol_pattern_matches(w->chol, &w->sys.A)) {
         st = opt_chol_analyze_vertices(w->chol, &w->sys.A, w->sys.owns ? w->sys.vcolptr : NULL,
                                        w->sys.vrowidx, given, err);

@@ -618,6 +618,84 @@ static void split_symbolic_analysis(void **state)
     free(fperm);
 }
 
+/* opt_chol_factor_vertices keeps and compares the pattern by vertices:
+ * the same vertex pattern is not analysed again, a changed one is (and
+ * its unchanged fixed part keeps its scatter), opt_chol_factor on the
+ * same scalar A reuses that analysis, and every solve is the bits of a
+ * fresh solver's. opt_csc_is_vertex_expansion tells a one-row change. */
+static void factor_by_vertex_pattern(void **state)
+{
+    (void)state;
+    const int m = 9, nf = m * m;
+    scaf_error e;
+    opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+    assert_non_null(c);
+    opt_chol_set_block(c, 2);
+    opt_chol_set_fixed_part(c, 2 * nf);
+    int cap = 4 * nf + 64, *ea = malloc(cap * sizeof *ea), *eb = malloc(cap * sizeof *eb);
+    rng r = {5};
+    /* rounds 0, 1: one pattern; 2: another variable part; 3: round 2's A
+     * through opt_chol_factor_rhs; 4: the fixed part changes */
+    const int analysed[5] = {1, 0, 1, 0, 1}, kept[5] = {0, 0, 1, 0, 0};
+    for (int round = 0; round < 5; round++) {
+        int nw = round < 2 ? 6 : 9, nv = nf + nw, ne = 0;
+        for (int y = 0; y < m; y++)
+            for (int x = 0; x < m; x++) {
+                int v = y * m + x;
+                if (x + 1 < m) ea[ne] = v, eb[ne++] = v + 1;
+                if (y + 1 < m) ea[ne] = v, eb[ne++] = v + m;
+            }
+        if (round == 4) ea[ne] = 0, eb[ne++] = nf - 1;
+        for (int j = 0; j < nw; j++) {
+            ea[ne] = (j * 7) % nf, eb[ne++] = nf + j;
+            if (j > 0) ea[ne] = nf + j - 1, eb[ne++] = nf + j;
+        }
+        opt_csc A;
+        block_laplacian(&A, nv, ne, ea, eb);
+        int *vcp = NULL, *vri = NULL, n = A.n;
+        assert_true(opt_block_graph(&A, 2, &vcp, &vri));
+        assert_true(opt_csc_is_vertex_expansion(&A, 2, nv, vcp, vri));
+        int *perm = malloc(n * sizeof *perm);
+        for (int k = 0; k < n; k++) perm[k] = k;
+        double *b = malloc(n * sizeof *b), *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
+        for (int i = 0; i < n; i++) b[i] = rng_uniform(&r, -1, 1);
+        opt_chol_stats s0 = opt_chol_get_stats(c);
+        if (round == 3) assert_true(opt_chol_pattern_matches(c, &A));
+        assert_int_equal(round == 3 ? opt_chol_factor_rhs(c, &A, b, &e)
+                                    : opt_chol_factor_vertices(c, &A, vcp, vri, perm, b, &e),
+                         SCAF_OK);
+        opt_chol_stats s1 = opt_chol_get_stats(c);
+        assert_int_equal(s1.analyses - s0.analyses, analysed[round]);
+        assert_int_equal(s1.kept_scatters - s0.kept_scatters, kept[round]);
+        assert_true(opt_chol_pattern_matches(c, &A));
+        assert_int_equal(opt_chol_solve(c, 1, b, x, &e), SCAF_OK);
+        opt_chol *fresh = opt_chol_create(OPT_ORDER_AMD, &e);
+        opt_chol_set_block(fresh, 2);
+        opt_chol_set_fixed_part(fresh, 2 * nf);
+        assert_int_equal(opt_chol_analyze_given(fresh, &A, perm, &e), SCAF_OK);
+        assert_int_equal(opt_chol_factor(fresh, &A, &e), SCAF_OK);
+        assert_int_equal(opt_chol_solve(fresh, 1, b, y, &e), SCAF_OK);
+        assert_memory_equal(x, y, n * sizeof *x);
+        opt_chol_destroy(fresh);
+        /* one scalar row moved: not the expansion, nor the kept pattern */
+        int last = A.nnz - 1, keep = A.rowidx[last - 1];
+        A.rowidx[last - 1] = keep - 1;
+        assert_false(opt_csc_is_vertex_expansion(&A, 2, nv, vcp, vri));
+        assert_false(opt_chol_pattern_matches(c, &A));
+        A.rowidx[last - 1] = keep;
+        free(vcp);
+        free(vri);
+        free(perm);
+        free(b);
+        free(x);
+        free(y);
+        opt_csc_free(&A);
+    }
+    opt_chol_destroy(c);
+    free(ea);
+    free(eb);
+}
+
 /* libgomp, when loaded (through CHOLMOD): the solver must leave it as it
  * found it. */
 extern int omp_get_max_active_levels(void) __attribute__((weak));
@@ -784,6 +862,7 @@ int main(void)
         cmocka_unit_test(relaxed_supernodes_solve), cmocka_unit_test(upper_sorted_layout),
         cmocka_unit_test(indefinite_is_an_error),   cmocka_unit_test(concurrent_factorizations),
         cmocka_unit_test(block_symbolic_analysis),  cmocka_unit_test(split_symbolic_analysis),
+        cmocka_unit_test(factor_by_vertex_pattern),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
