@@ -38,6 +38,8 @@ ROOT = "scaf_loop_step"
 # frame nearest scaf_loop_step that matches decides: static helpers such as
 # order_and_factor or simplex_fill, and tail calls, hide the direct callee)
 CALLEES = [
+    ("opt_chol_factor_vertices", None),  # analysis and factorization: look further down
+    ("factor_numeric", "factorization"),
     ("opt_chol_factor", "factorization"),
     ("cholmod_factorize", "factorization"),
     ("opt_chol_analyze", "symbolic analysis"),
@@ -67,9 +69,13 @@ def phase_of(frames):
     if any(m in frames[:i] for m in ORDERING_MARKS):
         return ORDERING
     for callee in reversed(frames[:i]):
-        for prefix, phase in CALLEES:
-            if callee.startswith(prefix):
-                return phase
+        hit = next((phase for prefix, phase in CALLEES if callee.startswith(prefix)), "")
+        if hit:
+            return hit
+        if hit is None:
+            continue
+    if any(f.startswith("opt_chol_factor_vertices") for f in frames[:i]):
+        return "factorization"  # its own code: the pattern compare
     return "other"
 
 

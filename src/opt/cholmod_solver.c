@@ -89,6 +89,7 @@ struct opt_chol {
     int block;                 /* unknowns per vertex for compressed ordering */
     int nfixed;                /* leading unknowns of a fixed pattern and order */
     opt_split_symbolic *split; /* their analysis, kept (opt/split_symbolic) */
+    long split_made_at;        /* fixed_pattern when split was made */
     opt_snum *snum;            /* numerical factorization plan for L (opt/supernodal_numeric) */
     opt_snum_kept *kept;       /* its fixed part's scatter of A, kept across plans */
     long fixed_pattern;        /* changes of the fixed part's pattern between analyses */
@@ -361,9 +362,13 @@ static cholmod_factor *analyze_blocks(opt_chol *c, const opt_csc *A, const int *
      * the fixed part's analysis is kept (opt/split_symbolic) */
     int nfv = c->nfixed / b, split = perm && c->nfixed % b == 0 && nfv > 0 && nfv < nb;
     for (int k = nfv; k < nb && split; k++) split = pv[k] == k;
-    if (split && !opt_split_matches(c->split, nfv, cp, ri, pv)) {
+    /* the fixed part's pattern unchanged since split was made (each
+     * analysis compares it with the last one's) */
+    int known = c->split && c->fixed_pattern == c->split_made_at;
+    if (split && !opt_split_matches(c->split, nfv, cp, ri, pv, known)) {
         opt_split_destroy(c->split);
         c->split = opt_split_create(cm, nfv, cp, ri, pv);
+        c->split_made_at = c->fixed_pattern;
         split = c->split != NULL;
     }
     if (split) {

@@ -94,11 +94,12 @@ opt_split_symbolic *opt_split_create(cholmod_common *cm, int nf, const int *cp, 
 }
 
 int opt_split_matches(const opt_split_symbolic *S, int nf, const int *cp, const int *ri,
-                      const int *fperm)
+                      const int *fperm, int pattern_known)
 {
-    return S && S->nf == nf && memcmp(S->cp, cp, ((size_t)nf + 1) * sizeof *cp) == 0 &&
-        memcmp(S->ri, ri, (size_t)cp[nf] * sizeof *ri) == 0 &&
-        memcmp(S->fperm, fperm, (size_t)nf * sizeof *fperm) == 0;
+    return S && S->nf == nf && memcmp(S->fperm, fperm, (size_t)nf * sizeof *fperm) == 0 &&
+        (pattern_known ||
+         (memcmp(S->cp, cp, ((size_t)nf + 1) * sizeof *cp) == 0 &&
+          memcmp(S->ri, ri, (size_t)cp[nf] * sizeof *ri) == 0));
 }
 
 /* maxcsize and maxesize of a supernodal pattern, as cholmod_super_symbolic

@@ -40,9 +40,11 @@ opt_split_symbolic *opt_split_create(cholmod_common *cm, int nf, const int *cp, 
 void opt_split_destroy(opt_split_symbolic *S);
 
 /* Whether S was made for these nf fixed vertices in this order, with this
- * fixed pattern (the first nf columns of cp / ri). */
+ * fixed pattern (the first nf columns of cp / ri). pattern_known: the
+ * caller knows that pattern to be S's (it compared it already), so only
+ * nf and the order are compared. */
 int opt_split_matches(const opt_split_symbolic *S, int nf, const int *cp, const int *ri,
-                      const int *fperm);
+                      const int *fperm, int pattern_known);
 
 /* The supernodal symbolic factor (pattern, LL') of the whole graph of nv
  * vertices (cp / ri as for opt_split_create, same fixed part): the fixed
