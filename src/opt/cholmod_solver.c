@@ -2,9 +2,9 @@
  *
  * The analyzed pattern is copied so a later matrix can be compared
  * exactly, by vertices when the caller gives it so (a quarter of the
- * reads in 2D: the copy and the two compares of each iteration took 1.5 ms
- * of aphrodite's 3 ms analysis when they were by scalars). CHOLMOD's own printing is switched off: failures come
- * back as scaf_error messages.
+ * reads in 2D: by scalars, the copy and the compares of each iteration
+ * took 1.5 ms of aphrodite's 3 ms analysis). CHOLMOD's own printing is
+ * switched off: failures come back as scaf_error messages.
  *
  * With a given permutation the symbolic analysis runs CHOLMOD's own steps
  * (etree, column counts, weighted postorder, supernodes) on matrices built
@@ -79,10 +79,11 @@ struct opt_chol {
     cholmod_common cm;
     cholmod_factor *L;
     opt_ordering ordering;
-    int n, nnz;           /* analyzed pattern: A's size and entries */
-    int pblock;           /* 1: colptr, rowidx are A's pattern; > 1: its
-                                  pattern by vertices of pblock unknowns */
-    int *colptr, *rowidx; /* (opt_chol_factor_vertices) */
+    int n, nnz; /* analyzed pattern: A's size and entries */
+    /* the analyzed pattern: A's (pblock 1) or its pattern by vertices of
+     * pblock unknowns (opt_chol_factor_vertices); arrays of cap_* ints */
+    int pblock;
+    int *colptr, *rowidx;
     size_t cap_colptr, cap_rowidx;
     int factored;              /* L holds a valid numerical factor */
     cholmod_dense *X, *Y, *E;  /* cholmod_solve2's result and workspaces, kept */
