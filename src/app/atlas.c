@@ -130,8 +130,9 @@ void atlas_chart_energy(const atlas *a, double *E)
         return;
     }
     scaf_loop_face_energy(&a->loop, fe);
-    for (int f = 0; f < a->nf; f++) {
-        double A = a->loop.chart.weight[f];
+    for (int s = 0; s < a->nf; s++) {
+        int f = a->loop.chart_face[s];
+        double A = a->loop.chart.weight[s];
         E[a->chart[f]] += A * fe[f];
         w[a->chart[f]] += A;
     }

@@ -41,6 +41,45 @@ void opt_simplices_free(opt_simplices *s)
     memset(s, 0, sizeof *s);
 }
 
+scaf_status opt_simplices_permute(opt_simplices *S, const int *order, scaf_error *err)
+{
+    int d = S->d, nc = d + 1;
+    opt_simplices T = {0};
+    scaf_status st = opt_simplices_alloc(&T, d, S->n, err);
+    if (st != SCAF_OK) return st;
+    for (int k = 0; k < S->n; k++) {
+        size_t o = (size_t)order[k];
+        memcpy(T.idx + (size_t)k * nc, S->idx + o * nc, (size_t)nc * sizeof *T.idx);
+        memcpy(T.grad + (size_t)k * nc * d, S->grad + o * nc * d, (size_t)nc * d * sizeof *T.grad);
+        T.vol[k] = S->vol[o];
+        T.weight[k] = S->weight[o];
+    }
+    opt_simplices_free(S);
+    *S = T;
+    return SCAF_OK;
+}
+
+static int last_vertex(const opt_simplices *S, int s)
+{
+    const int *ix = S->idx + (size_t)s * (S->d + 1);
+    int top = ix[0];
+    for (int i = 1; i <= S->d; i++)
+        if (ix[i] > top) top = ix[i];
+    return top;
+}
+
+scaf_status opt_simplices_order_by_last_vertex(const opt_simplices *S, int nv, int *order,
+                                               scaf_error *err)
+{
+    int *start = calloc((size_t)nv + 1, sizeof *start);
+    if (!start) return err_nomem(err, "simplex order");
+    for (int s = 0; s < S->n; s++) start[last_vertex(S, s) + 1]++;
+    for (int v = 0; v < nv; v++) start[v + 1] += start[v];
+    for (int s = 0; s < S->n; s++) order[start[last_vertex(S, s)]++] = s;
+    free(start);
+    return SCAF_OK;
+}
+
 void opt_flatten_triangle(const double p0[3], const double p1[3], const double p2[3], double q[6])
 {
     double e1[3], e2[3];

@@ -88,6 +88,17 @@ static inline void opt_pullback(int d, const double *G, const double *M, double 
 scaf_status opt_simplices_from_surface(opt_simplices *out, int nv, const double *V, int nf,
                                        const int *F, scaf_error *err);
 
+/* Reorder S in place: simplex k becomes the old simplex order[k] (order:
+ * a permutation of 0..n-1). Fails with SCAF_ERR_NOMEM (S unchanged). */
+scaf_status opt_simplices_permute(opt_simplices *S, const int *order, scaf_error *err);
+
+/* The order of S's simplices by their largest vertex index, ties kept in
+ * their order (a counting sort over nv vertices): order gets n entries.
+ * Scatters into a matrix column per vertex then walk the columns nearly
+ * in sequence, and passes over the corners read X nearly in sequence. */
+scaf_status opt_simplices_order_by_last_vertex(const opt_simplices *S, int nv, int *order,
+                                               scaf_error *err);
+
 /* Rest shape = current shape: d = 2 or 3, X (#X by d) with nv rows,
  * n simplices S (n by (d+1)). A simplex of signed volume below min_vol uses
  * a regular simplex of volume min_vol as rest shape instead (the paper's

@@ -143,6 +143,7 @@ void scaf_loop_free(scaf_loop *L)
     free(L->uv);
     free(L->bedges);
     opt_simplices_free(&L->chart);
+    free(L->chart_face);
     scaf_loop_work *w = L->work;
     if (w) {
         scaffold_provider_destroy(w->scaffold);
@@ -185,6 +186,10 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
      * aphrodite */
     L->work->seen_uv = malloc(sizeof(double) * 2 * (size_t)(nv ? nv : 1));
     scaf_status st = opt_simplices_from_surface(&L->chart, nv, V3, nf, F, err);
+    L->chart_face = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
+    if (st == SCAF_OK && !L->chart_face) st = err_nomem(err, "SCAF loop");
+    if (st == SCAF_OK) st = opt_simplices_order_by_last_vertex(&L->chart, nv, L->chart_face, err);
+    if (st == SCAF_OK) st = opt_simplices_permute(&L->chart, L->chart_face, err);
     if (st != SCAF_OK) {
         scaf_loop_free(L);
         return st;
@@ -342,10 +347,10 @@ double scaf_loop_mesh_energy(const scaf_loop *L)
 
 void scaf_loop_face_energy(const scaf_loop *L, double *E)
 {
-    for (int f = 0; f < L->nf; f++) {
+    for (int s = 0; s < L->nf; s++) {
         double J[9];
-        opt_jacobian(&L->chart, f, L->uv, J);
-        E[f] = opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, L->d, J);
+        opt_jacobian(&L->chart, s, L->uv, J);
+        E[L->chart_face[s]] = opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, L->d, J);
     }
 }
 

@@ -121,7 +121,10 @@ typedef struct scaf_loop {
     int d; /* vertex dimension of the map (2; 3: scaf_loop_init_volume) */
     int nv, nf;
     int *F;              /* nf by 3 working faces */
-    opt_simplices chart; /* rest frames of the mesh triangles, weight = 3D area */
+    opt_simplices chart; /* rest frames of the mesh triangles, weight = 3D area,
+                            ordered by their last vertex (their scatter into
+                            the system then walks its columns in sequence) */
+    int *chart_face;     /* nf: the face of F each chart simplex is */
     double total_area;
     int nbedges;
     int *bedges; /* nbedges by 2 chart boundary edges, chart on the left */

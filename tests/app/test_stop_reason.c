@@ -221,9 +221,12 @@ static void atlas_reasons(void **state)
     assert_true(s.compact < o.compact_iterations);
     assert_int_equal(r[1], SCAF_STOP_PACKING_STALLED);
 
-    /* ... or no step is taken three times in a row (a finer sphere) */
+    /* ... or no step is taken three times in a row (a stiffer scaffold;
+     * which test fires first follows the map's last digits: this one was
+     * found by trying sizes and weights) */
     o.compact_iterations = 300;
-    assert_int_equal(atlas_run_on("cubesphere", 5, &o, &s, r), SCAF_OK);
+    o.compact_lambda_ratio = 4.0;
+    assert_int_equal(atlas_run_on("cubesphere", 4, &o, &s, r), SCAF_OK);
     assert_true(s.compact < o.compact_iterations);
     assert_int_equal(r[1], SCAF_STOP_ZERO_STEP);
 

@@ -11,6 +11,8 @@
  *   - the energies a step reports are those of a fresh evaluation, bit for
  *     bit, whether the next step reuses the line search's (map unchanged)
  *     or recomputes them (the caller moved the map in between);
+ *   - the chart's simplices are the faces ordered by their last vertex,
+ *     and per-face values land on their faces;
  *   - the loop's own defaults are the public ones (app/param mapping).
  * Mesh: a generated curved disk (tests/opt/polar_disk.h), Tutte start. */
 #include <math.h>
@@ -426,6 +428,60 @@ static void reported_energies_are_fresh(void **state)
     }
 }
 
+/* The chart's simplices are the faces ordered by their last vertex
+ * (chart_face says which face each is), rest frames and weights as built
+ * face by face, and the per-face energies land on their faces. The disk's
+ * faces are reversed first so that the order has work to do. */
+static void chart_order_keeps_faces(void **state)
+{
+    (void)state;
+    disk k;
+    disk_make(&k);
+    int nf = k.m.nf;
+    int *F = malloc(sizeof(int) * 3 * (size_t)nf);
+    assert_non_null(F);
+    for (int f = 0; f < nf; f++) memcpy(F + 3 * f, k.m.F + 3 * (nf - 1 - f), 3 * sizeof(int));
+    scaf_loop L;
+    scaf_error err;
+    assert_int_equal(scaf_loop_init(&L, k.m.nv, k.m.V, nf, F, k.uv, NULL, &err), SCAF_OK);
+    opt_simplices by_face = {0};
+    assert_int_equal(opt_simplices_from_surface(&by_face, k.m.nv, k.m.V, nf, F, &err), SCAF_OK);
+    char *seen = calloc((size_t)nf, 1);
+    assert_non_null(seen);
+    int moved = 0, last_top = -1, last_face = -1;
+    for (int s = 0; s < nf; s++) {
+        int f = L.chart_face[s];
+        assert_true(f >= 0 && f < nf && !seen[f]);
+        seen[f] = 1;
+        moved += f != s;
+        assert_memory_equal(L.chart.idx + 3 * s, F + 3 * f, 3 * sizeof(int));
+        assert_memory_equal(L.chart.grad + 6 * s, by_face.grad + 6 * f, 6 * sizeof(double));
+        assert_true(L.chart.weight[s] == by_face.weight[f] && L.chart.vol[s] == by_face.vol[f]);
+        int top = F[3 * f] > F[3 * f + 1] ? F[3 * f] : F[3 * f + 1];
+        if (F[3 * f + 2] > top) top = F[3 * f + 2];
+        assert_true(top > last_top || (top == last_top && f > last_face));
+        last_top = top;
+        last_face = f;
+    }
+    assert_true(moved > 0);
+    scaf_iteration_info_t info;
+    for (int it = 0; it < 2; it++) assert_int_equal(scaf_loop_step(&L, &info, &err), SCAF_OK);
+    double *E = malloc(sizeof(double) * (size_t)nf);
+    assert_non_null(E);
+    scaf_loop_face_energy(&L, E);
+    for (int f = 0; f < nf; f++) {
+        double J[4];
+        opt_jacobian(&by_face, f, L.uv, J);
+        assert_true(E[f] == opt_density(OPT_ENERGY_SYMMETRIC_DIRICHLET, 2, J));
+    }
+    free(E);
+    free(seen);
+    free(F);
+    opt_simplices_free(&by_face);
+    scaf_loop_free(&L);
+    disk_free(&k);
+}
+
 static void loop_defaults_are_the_public_ones(void **state)
 {
     (void)state;
@@ -452,6 +508,7 @@ int main(void)
         cmocka_unit_test(provider_plugs_in),
         cmocka_unit_test(frozen_provider_keeps_connectivity),
         cmocka_unit_test(reported_energies_are_fresh),
+        cmocka_unit_test(chart_order_keeps_faces),
         cmocka_unit_test(loop_defaults_are_the_public_ones),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
