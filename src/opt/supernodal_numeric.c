@@ -27,6 +27,47 @@ static const double one = 1.0, zero = 0.0, minus_one = -1.0;
  * one thread: factorization -6%). */
 #define SMALL_UPDATE 32
 
+/* Rows i0 .. i0 + W - 1 and columns j0 .. j0 + NJ - 1 (W <= 8, NJ <= 4)
+ * of C = A B^T, A m x k and B n x k column-major: the W x NJ sums stay in
+ * registers over the k products (W and NJ constants in the hot calls, so
+ * the row loops are vector operations). */
+static inline void gemm_nt_block(double *C, int ldc, const double *A, int lda, const double *B,
+                                 int ldb, int k, int i0, int W, int j0, int NJ)
+{
+    double acc[4][8];
+    for (int jj = 0; jj < NJ; jj++)
+        for (int t = 0; t < W; t++) acc[jj][t] = 0.0;
+    for (int p = 0; p < k; p++) {
+        const double *a = A + (size_t)p * (size_t)lda + i0;
+        const double *b = B + (size_t)p * (size_t)ldb + j0;
+        for (int jj = 0; jj < NJ; jj++)
+            for (int t = 0; t < W; t++) acc[jj][t] += a[t] * b[jj];
+    }
+    for (int jj = 0; jj < NJ; jj++)
+        for (int t = 0; t < W; t++) C[(size_t)(j0 + jj) * (size_t)ldc + i0 + t] = acc[jj][t];
+}
+
+/* C = A B^T (m x n; A m x k, B n x k, k and n small: a descendant's
+ * update) straight from the factor's columns, by blocks of 8 rows and 4
+ * columns. OpenBLAS's dgemm (here its Haswell kernels) packs both operands
+ * into buffers taken from a locked pool at every call; two threads calling
+ * it side by side each ran 1.4-1.5x slower than alone, while this kernel
+ * does not (aphrodite, two threads: factorization 56 -> 47.5 ms; alone it
+ * is 3-4% slower than OpenBLAS's, which one thread keeps). */
+VECTOR_CLONES static void small_gemm_nt(double *C, int ldc, const double *A, int lda,
+                                        const double *B, int ldb, int m, int n, int k)
+{
+    for (int j0 = 0; j0 < n; j0 += 4) {
+        int nj = n - j0 < 4 ? n - j0 : 4;
+        int i0 = 0;
+        if (nj == 4)
+            for (; i0 + 8 <= m; i0 += 8) gemm_nt_block(C, ldc, A, lda, B, ldb, k, i0, 8, j0, 4);
+        else
+            for (; i0 + 8 <= m; i0 += 8) gemm_nt_block(C, ldc, A, lda, B, ldb, k, i0, 8, j0, nj);
+        if (i0 < m) gemm_nt_block(C, ldc, A, lda, B, ldb, k, i0, m - i0, j0, nj);
+    }
+}
+
 /* Subtract descendant d's update from supernode sn (block X, nsrow rows). */
 static void apply_descendant(const opt_snum *P, opt_snum_worker *wk, int d, int sn,
                              const double *Lx, double *X, int nsrow)
@@ -41,9 +82,13 @@ static void apply_descendant(const opt_snum *P, opt_snum_worker *wk, int d, int 
     const double *Xd = Lx + P->px[d] + p1;
     double *C = wk->C;
     if (ndrow1 <= SMALL_UPDATE) {
-        /* one call (OpenBLAS's small-matrix kernel, no packing); the
-         * upper triangle it also computes is not used */
-        dgemm_("N", "T", &ndrow2, &ndrow1, &ndcol, &one, Xd, &ndrow, Xd, &ndrow, &zero, C, &ndrow2);
+        /* one product (the upper triangle it also computes is not used):
+         * scaf's own kernel when threads run side by side, OpenBLAS's
+         * (4% faster alone) in one thread */
+        if (P->threads > 1) small_gemm_nt(C, ndrow2, Xd, ndrow, Xd, ndrow, ndrow2, ndrow1, ndcol);
+        else
+            dgemm_("N", "T", &ndrow2, &ndrow1, &ndcol, &one, Xd, &ndrow, Xd, &ndrow, &zero, C,
+                   &ndrow2);
     } else {
         dsyrk_("L", "N", &ndrow1, &ndcol, &one, Xd, &ndrow, &zero, C, &ndrow2);
         if (ndrow3 > 0)
