@@ -36,7 +36,7 @@ typedef struct newton_job {
     int *neg;    /* per simplex of the batch: opt_isotropic_simplex_hessian's value */
     size_t b0, m;
     int ml, nc;
-    const unsigned char *of; /* the threads' parts (opt_proxy_block_parts) */
+    int cb[PAR_MAX_CHUNKS + 1];
 } newton_job;
 
 /* Chunk k of the batch: energies, gradients and Hessians of its simplices. */
@@ -52,24 +52,23 @@ static void newton_compute(void *ctx, int k)
     }
 }
 
-/* Part k of the columns: -gradient and Hessian of every simplex of the
- * batch that touches it. */
+/* Range k of columns: -gradient and Hessian of every simplex of the batch
+ * that touches it. */
 static void newton_scatter(void *ctx, int k)
 {
     newton_job *j = ctx;
     const opt_simplices *S = j->t->s;
-    int d = S->d, nd = (d + 1) * d;
-    opt_part pt = {k, j->of};
+    int d = S->d, nd = (d + 1) * d, lo = j->cb[k], hi = j->cb[k + 1];
     for (size_t s = j->b0; s < j->b0 + j->m; s++) {
-        if (!opt_proxy_block_touches(S, (int)s, j->dof, &pt)) continue;
+        if (!opt_proxy_block_touches(S, (int)s, j->dof, lo, hi)) continue;
         const double *g = j->loc + (s - j->b0) * j->ml + 1;
         const int *ix = S->idx + s * (d + 1);
         for (int i = 0; i <= d; i++) {
             int di = j->dof[ix[i]];
-            if (opt_part_owns(&pt, di))
+            if (di >= lo && di < hi)
                 for (int a = 0; a < d; a++) j->rhs[(size_t)di * d + a] -= g[i * d + a];
         }
-        opt_proxy_block_add_local_part(j->b, S, (int)s, j->dof, g + nd, &pt);
+        opt_proxy_block_add_local_range(j->b, S, (int)s, j->dof, g + nd, lo, hi);
     }
 }
 
@@ -77,7 +76,7 @@ static void newton_scatter(void *ctx, int k)
  * chunks compute their simplices' gradients and Hessians into a scratch;
  * the energy, the clamped count and the first failure are then taken in
  * simplex order, and each thread scatters the whole batch into its own
- * part of the columns and rhs entries (opt_proxy_block_parts). Every value receives
+ * columns and rhs entries (opt_proxy_block_ranges). Every value receives
  * its terms in simplex order: the serial fill's numbers, bit for bit.
  * Returns SCAF_ERR_NOMEM without touching anything when the scratch cannot
  * be had (the caller fills serially). */
@@ -92,15 +91,13 @@ static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const in
     j.ml = 1 + nd + nd * nd;
     j.loc = malloc((size_t)NEWTON_BATCH * j.ml * sizeof *j.loc);
     j.neg = malloc((size_t)NEWTON_BATCH * sizeof *j.neg);
-    unsigned char *of = opt_proxy_block_parts(b, nc);
-    if (!j.loc || !j.neg || !of) {
+    if (!j.loc || !j.neg) {
         free(j.loc);
         free(j.neg);
-        free(of);
         return SCAF_ERR_NOMEM;
     }
-    j.of = of;
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
+    opt_proxy_block_ranges(b, nc, j.cb);
     double energy = 0;
     int clamped = 0;
     scaf_status status = SCAF_OK;
@@ -119,7 +116,6 @@ static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const in
     }
     free(j.loc);
     free(j.neg);
-    free(of);
     if (status == SCAF_OK && st) {
         st->energy = energy;
         st->clamped = clamped;

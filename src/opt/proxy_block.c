@@ -280,11 +280,11 @@ static inline double dot_rows(const double *G, int i, int j, int d)
 
 /* Accumulate one simplex: coefficient matrix M (d by d, symmetric) and
  * per-corner linear terms lin ((d+1) by d); only into the columns and rhs
- * entries of part pt (a thread's share of a parallel fill; the serial fill
- * passes everything). */
+ * entries of free vertices with dofs in [lo, hi) (a thread's share of a
+ * parallel fill; the serial fill passes everything). */
 static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
                              const double *X, const double *M, const double *lin, double *rhs,
-                             int d, const opt_part *pt)
+                             int d, int lo, int hi)
 {
     int nc = d + 1, P = (d + 1) * (d + 2) / 2;
     const int *ix = S->idx + (size_t)s * nc;
@@ -295,7 +295,7 @@ static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, 
     double *val = b->A.val;
     for (int i = 0; i < nc; i++) {
         int di = dof[ix[i]];
-        if (opt_part_owns(pt, di))
+        if (di >= lo && di < hi)
             for (int a = 0; a < d; a++) rhs[(size_t)di * d + a] += w * lin[i * d + a];
     }
     int p = 0;
@@ -306,7 +306,7 @@ static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, 
                 /* One corner fixed: its coupling moves to the right side. */
                 if (i == j || (di < 0 && dj < 0)) continue;
                 int fr = di >= 0 ? di : dj;
-                if (!opt_part_owns(pt, fr)) continue;
+                if (fr < lo || fr >= hi) continue;
                 double c = w * dot_rows(G, i, j, d);
                 const double *xf = X + (size_t)ix[di >= 0 ? j : i] * d;
                 for (int a = 0; a < d; a++) {
@@ -317,7 +317,7 @@ static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, 
                 continue;
             }
             int col = di > dj ? di : dj, row = di < dj ? di : dj;
-            if (!opt_part_owns(pt, col)) continue;
+            if (col < lo || col >= hi) continue;
             double c = w * dot_rows(G, i, j, d);
             int k = mp[p] - b->vcolptr[col];
             if (row != col) {
@@ -340,15 +340,12 @@ static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, 
  * compiler unrolls the small loops; the operations and their order are
  * unchanged, so results are bit-identical). */
 static void scatter(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
-                    const double *X, const double *M, const double *lin, double *rhs,
-                    const opt_part *pt)
+                    const double *X, const double *M, const double *lin, double *rhs, int lo,
+                    int hi)
 {
-    if (S->d == 2) scatter_d(b, S, s, dof, X, M, lin, rhs, 2, pt);
-    else scatter_d(b, S, s, dof, X, M, lin, rhs, S->d, pt);
+    if (S->d == 2) scatter_d(b, S, s, dof, X, M, lin, rhs, 2, lo, hi);
+    else scatter_d(b, S, s, dof, X, M, lin, rhs, S->d, lo, hi);
 }
-
-/* Every column and rhs entry: the serial fills' part. */
-static const opt_part all_parts = {0, NULL};
 
 /* SLIM proxy of simplex s: M = W^T W, lin = M T G^T per corner; returns w^2. */
 static inline double proxy_d(const opt_term *t, int s, const double *X, double w2_cap, double *M,
@@ -381,20 +378,25 @@ void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,
     opt_proxy_block_fill_capped(b, t, dof, X, rhs, INFINITY);
 }
 
-unsigned char *opt_proxy_block_parts(const opt_proxy_block *b, int nc)
+void opt_proxy_block_ranges(const opt_proxy_block *b, int nc, int *cb)
 {
-    size_t nb = ((size_t)(b->nfree > 0 ? b->nfree : 0) >> OPT_PART_SHIFT) + 1;
-    unsigned char *of = malloc(nb);
-    if (of)
-        for (size_t j = 0; j < nb; j++) of[j] = (unsigned char)(j % (size_t)nc);
-    return of;
+    int nf = b->nfree;
+    long long tot = nf > 0 ? b->vcolptr[nf] : 0;
+    int c = 0;
+    cb[0] = 0;
+    for (int k = 1; k < nc; k++) {
+        long long target = tot * k / nc;
+        while (c < nf && b->vcolptr[c] < target) c++;
+        cb[k] = c;
+    }
+    cb[nc] = INT_MAX; /* the last range takes every dof above */
 }
 
-int opt_proxy_block_touches(const opt_simplices *S, int s, const int *dof, const opt_part *p)
+int opt_proxy_block_touches(const opt_simplices *S, int s, const int *dof, int lo, int hi)
 {
     const int *ix = S->idx + (size_t)s * (S->d + 1);
     for (int i = 0; i <= S->d; i++)
-        if (opt_part_owns(p, dof[ix[i]])) return 1;
+        if (dof[ix[i]] >= lo && dof[ix[i]] < hi) return 1;
     return 0;
 }
 
@@ -411,7 +413,7 @@ typedef struct fill_job {
     double *loc; /* per simplex of the batch: M (d*d), then lin ((d+1)*d) */
     size_t b0, m;
     int ml, nc;
-    const unsigned char *of; /* the threads' parts (opt_proxy_block_parts) */
+    int cb[PAR_MAX_CHUNKS + 1];
     double w2k[PAR_MAX_CHUNKS];
 } fill_job;
 
@@ -445,24 +447,23 @@ static void fill_compute(void *ctx, int k)
     }
 }
 
-/* Part k of the columns: every simplex of the batch that touches it. */
+/* Range k of columns: every simplex of the batch that touches it. */
 static void fill_scatter(void *ctx, int k)
 {
     fill_job *j = ctx;
     const opt_simplices *S = j->t->s;
-    int d = S->d;
-    opt_part pt = {k, j->of};
+    int d = S->d, lo = j->cb[k], hi = j->cb[k + 1];
     for (size_t s = j->b0; s < j->b0 + j->m; s++) {
-        if (!opt_proxy_block_touches(S, (int)s, j->dof, &pt)) continue;
+        if (!opt_proxy_block_touches(S, (int)s, j->dof, lo, hi)) continue;
         const double *M = j->loc + (s - j->b0) * j->ml;
-        scatter(j->b, S, (int)s, j->dof, j->X, M, M + d * d, j->rhs, &pt);
+        scatter(j->b, S, (int)s, j->dof, j->X, M, M + d * d, j->rhs, lo, hi);
     }
 }
 
 /* The SLIM fill with nc > 1 chunks (base/parallel), simplices in batches:
  * the chunks compute their simplices' M and lin (the SVDs: most of the
  * work) into a scratch, then each thread scatters the whole batch into its
- * own part of the columns and rhs entries (opt_proxy_block_parts). Every value still
+ * own columns and rhs entries (opt_proxy_block_ranges). Every value still
  * receives its terms in simplex order, so the result is the serial fill's
  * bit for bit, for any thread count. Returns -1 (nothing done) when the
  * scratch cannot be had; the caller then fills serially. */
@@ -474,21 +475,15 @@ static double fill_parallel(opt_proxy_block *b, const opt_term *t, const int *do
     fill_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .w2_cap = w2_cap, .nc = nc};
     j.ml = d * d + (d + 1) * d;
     j.loc = malloc((size_t)FILL_BATCH * j.ml * sizeof *j.loc);
-    unsigned char *of = opt_proxy_block_parts(b, nc);
-    if (!j.loc || !of) {
-        free(j.loc);
-        free(of);
-        return -1.0;
-    }
-    j.of = of;
+    if (!j.loc) return -1.0;
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
+    opt_proxy_block_ranges(b, nc, j.cb);
     for (j.b0 = 0; j.b0 < n; j.b0 += FILL_BATCH) {
         j.m = n - j.b0 < FILL_BATCH ? n - j.b0 : FILL_BATCH;
         par_run(nc, fill_compute, &j);
         par_run(nc, fill_scatter, &j);
     }
     free(j.loc);
-    free(of);
     double w2max = 0;
     for (int k = 0; k < nc; k++)
         if (j.w2k[k] > w2max) w2max = j.w2k[k];
@@ -513,7 +508,7 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
             double w2 = opt_sd2_proxy_range(S, X, (size_t)s0, (size_t)(s0 + m), w2_cap, loc);
             if (w2 > w2max) w2max = w2;
             for (int l = 0; l < m; l++)
-                scatter(b, S, s0 + l, dof, X, loc + 10 * l, loc + 10 * l + 4, rhs, &all_parts);
+                scatter(b, S, s0 + l, dof, X, loc + 10 * l, loc + 10 * l + 4, rhs, 0, INT_MAX);
         }
         return w2max;
     }
@@ -521,7 +516,7 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
         double w2 =
             d == 2 ? proxy_d(t, s, X, w2_cap, M, lin, 2) : proxy_d(t, s, X, w2_cap, M, lin, d);
         if (w2 > w2max) w2max = w2;
-        scatter(b, S, s, dof, X, M, lin, rhs, &all_parts);
+        scatter(b, S, s, dof, X, M, lin, rhs, 0, INT_MAX);
     }
     return w2max;
 }
@@ -533,17 +528,17 @@ void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, 
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
     double M[9] = {0}, lin[12] = {0};
     for (int a = 0; a < d; a++) M[a * d + a] = 1.0;
-    for (int s = 0; s < S->n; s++) scatter(b, S, s, dof, X, M, lin, rhs, &all_parts);
+    for (int s = 0; s < S->n; s++) scatter(b, S, s, dof, X, M, lin, rhs, 0, INT_MAX);
 }
 
 void opt_proxy_block_add_local(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
                                const double *K)
 {
-    opt_proxy_block_add_local_part(b, S, s, dof, K, &all_parts);
+    opt_proxy_block_add_local_range(b, S, s, dof, K, 0, INT_MAX);
 }
 
-void opt_proxy_block_add_local_part(opt_proxy_block *b, const opt_simplices *S, int s,
-                                    const int *dof, const double *K, const opt_part *pt)
+void opt_proxy_block_add_local_range(opt_proxy_block *b, const opt_simplices *S, int s,
+                                     const int *dof, const double *K, int lo, int hi)
 {
     int d = S->d, nc = d + 1, nd = nc * d, P = (d + 1) * (d + 2) / 2;
     const int *ix = S->idx + (size_t)s * nc;
@@ -558,7 +553,7 @@ void opt_proxy_block_add_local_part(opt_proxy_block *b, const opt_simplices *S, 
             /* The stored block couples row vertex min(di, dj) with column
              * vertex max(di, dj): corner r gives its rows, corner c its columns. */
             int r = di <= dj ? i : j, c = di <= dj ? j : i, col = di > dj ? di : dj;
-            if (!opt_part_owns(pt, col)) continue;
+            if (col < lo || col >= hi) continue;
             int k = mp[p] - b->vcolptr[col];
             for (int a2 = 0; a2 < d; a2++) {
                 double *v = val + cp[col * d + a2] + k * d;

@@ -112,35 +112,19 @@ void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, 
 void opt_proxy_block_add_local(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
                                const double *K);
 
-/* A thread's share of a parallel fill. The vertex columns (and the rhs
- * entries of their dofs) are dealt to the threads by blocks of
- * 2^OPT_PART_SHIFT dofs, block j to thread of[j] = j % threads: the
- * simplices of a batch touch nearby columns (the chart is kept in the
- * order of its last vertices, scaffold/scaf_loop), and contiguous ranges
- * gave the whole batch to one thread. A thread writes only its columns and
- * rhs entries, so no two threads write the same value and each value
- * receives its terms in simplex order: the serial numbers. */
-#define OPT_PART_SHIFT 8
-typedef struct opt_part {
-    int k;                   /* this thread */
-    const unsigned char *of; /* thread of each block of dofs; NULL: all are k's */
-} opt_part;
+/* The same, only into the columns of free vertices with dofs in [lo, hi)
+ * (a thread's share of a parallel fill). */
+void opt_proxy_block_add_local_range(opt_proxy_block *b, const opt_simplices *S, int s,
+                                     const int *dof, const double *K, int lo, int hi);
 
-/* Whether free dof c (>= 0; -1: fixed, never) is part p's. */
-static inline int opt_part_owns(const opt_part *p, int c)
-{
-    return c >= 0 && (!p->of || p->of[c >> OPT_PART_SHIFT] == p->k);
-}
+/* Split the block's vertex columns into nc ranges [cb[k], cb[k+1]) of about
+ * equal numbers of entries (cb: nc + 1 values, cb[nc] = INT_MAX), one per
+ * thread of a parallel fill: a thread writes only its columns and the rhs
+ * entries of its dofs, so no two threads write the same value and each
+ * value receives its terms in simplex order. */
+void opt_proxy_block_ranges(const opt_proxy_block *b, int nc, int *cb);
 
-/* The table `of` of an nc-thread fill of b (malloc'd; NULL when out of
- * memory), nc <= 255. */
-unsigned char *opt_proxy_block_parts(const opt_proxy_block *b, int nc);
-
-/* opt_proxy_block_add_local, only into part p's columns. */
-void opt_proxy_block_add_local_part(opt_proxy_block *b, const opt_simplices *S, int s,
-                                    const int *dof, const double *K, const opt_part *p);
-
-/* Whether simplex s of S has a corner whose dof is part p's. */
-int opt_proxy_block_touches(const opt_simplices *S, int s, const int *dof, const opt_part *p);
+/* Whether simplex s of S has a corner with a dof in [lo, hi). */
+int opt_proxy_block_touches(const opt_simplices *S, int s, const int *dof, int lo, int hi);
 
 #endif /* SCAF_OPT_PROXY_BLOCK_H */
