@@ -94,8 +94,9 @@ scaf_status opt_simplices_permute(opt_simplices *S, const int *order, scaf_error
 
 /* The order of S's simplices by their largest vertex index, ties kept in
  * their order (a counting sort over nv vertices): order gets n entries.
- * Scatters into a matrix column per vertex then walk the columns nearly
- * in sequence, and passes over the corners read X nearly in sequence. */
+ * In this order a scatter into one matrix column per vertex walks the
+ * columns nearly in sequence, and a pass over the corners reads X nearly
+ * in sequence. */
 scaf_status opt_simplices_order_by_last_vertex(const opt_simplices *S, int nv, int *order,
                                                scaf_error *err);
 

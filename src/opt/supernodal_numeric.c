@@ -53,7 +53,8 @@ static inline void gemm_nt_block(double *C, int ldc, const double *A, int lda, c
  * into buffers taken from a locked pool at every call; two threads calling
  * it side by side each ran 1.4-1.5x slower than alone, while this kernel
  * does not (aphrodite, two threads: factorization 56 -> 47.5 ms; alone it
- * is 3-4% slower than OpenBLAS's, which one thread keeps). */
+ * is 3-5% slower than OpenBLAS's, which one thread keeps). The full
+ * column blocks are a call of their own so that NJ is the constant 4. */
 VECTOR_CLONES static void small_gemm_nt(double *C, int ldc, const double *A, int lda,
                                         const double *B, int ldb, int m, int n, int k)
 {
@@ -84,7 +85,7 @@ static void apply_descendant(const opt_snum *P, opt_snum_worker *wk, int d, int 
     if (ndrow1 <= SMALL_UPDATE) {
         /* one product (the upper triangle it also computes is not used):
          * scaf's own kernel when threads run side by side, OpenBLAS's
-         * (4% faster alone) in one thread */
+         * (3-5% faster alone) in one thread */
         if (P->threads > 1) small_gemm_nt(C, ndrow2, Xd, ndrow, Xd, ndrow, ndrow2, ndrow1, ndcol);
         else
             dgemm_("N", "T", &ndrow2, &ndrow1, &ndcol, &one, Xd, &ndrow, Xd, &ndrow, &zero, C,

@@ -32,7 +32,7 @@
  * positively oriented, so the map stays bijective.
  *
  * What is what in struct scaf_loop: `opt` and `hooks` are the caller's to
- * set between iterations; nv, nf, F, chart, total_area, bedges are the
+ * set between iterations; nv, nf, F, chart, chart_face, total_area, bedges are the
  * problem (fixed by scaf_loop_init); uv is the state (the caller may
  * replace it between iterations by another bijective map of the same
  * mesh); `iterations` counts finished ones (each reports through
