@@ -36,7 +36,7 @@ typedef struct newton_job {
     int *neg;    /* per simplex of the batch: opt_isotropic_simplex_hessian's value */
     size_t b0, m;
     int ml, nc;
-    int cb[PAR_MAX_CHUNKS + 1];
+    const int *cb; /* the batch's column ranges (opt/fill_split) */
 } newton_job;
 
 /* Chunk k of the batch: energies, gradients and Hessians of its simplices. */
@@ -60,7 +60,7 @@ static void newton_scatter(void *ctx, int k)
     const opt_simplices *S = j->t->s;
     int d = S->d, nd = (d + 1) * d, lo = j->cb[k], hi = j->cb[k + 1];
     for (size_t s = j->b0; s < j->b0 + j->m; s++) {
-        if (!opt_proxy_block_touches(S, (int)s, j->dof, lo, hi)) continue;
+        if (!opt_fill_split_touches(S, (int)s, j->dof, lo, hi)) continue;
         const double *g = j->loc + (s - j->b0) * j->ml + 1;
         const int *ix = S->idx + s * (d + 1);
         for (int i = 0; i <= d; i++) {
@@ -76,7 +76,7 @@ static void newton_scatter(void *ctx, int k)
  * chunks compute their simplices' gradients and Hessians into a scratch;
  * the energy, the clamped count and the first failure are then taken in
  * simplex order, and each thread scatters the whole batch into its own
- * columns and rhs entries (opt_proxy_block_ranges). Every value receives
+ * columns and rhs entries (opt/fill_split). Every value receives
  * its terms in simplex order: the serial fill's numbers, bit for bit.
  * Returns SCAF_ERR_NOMEM without touching anything when the scratch cannot
  * be had (the caller fills serially). */
@@ -89,6 +89,7 @@ static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const in
     size_t n = (size_t)S->n;
     newton_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .project = project, .nc = nc};
     j.ml = 1 + nd + nd * nd;
+    if (opt_fill_split_prepare(&b->split, S, dof, nc, NEWTON_BATCH) != 0) return SCAF_ERR_NOMEM;
     j.loc = malloc((size_t)NEWTON_BATCH * j.ml * sizeof *j.loc);
     j.neg = malloc((size_t)NEWTON_BATCH * sizeof *j.neg);
     if (!j.loc || !j.neg) {
@@ -97,12 +98,12 @@ static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const in
         return SCAF_ERR_NOMEM;
     }
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
-    opt_proxy_block_ranges(b, nc, j.cb);
     double energy = 0;
     int clamped = 0;
     scaf_status status = SCAF_OK;
     for (j.b0 = 0; j.b0 < n && status == SCAF_OK; j.b0 += NEWTON_BATCH) {
         j.m = n - j.b0 < NEWTON_BATCH ? n - j.b0 : NEWTON_BATCH;
+        j.cb = opt_fill_split_ranges(&b->split, j.b0);
         par_run(nc, newton_compute, &j);
         for (size_t s = j.b0; s < j.b0 + j.m; s++) {
             if (j.neg[s - j.b0] < 0) {

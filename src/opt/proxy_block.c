@@ -33,6 +33,7 @@ void opt_proxy_block_free(opt_proxy_block *b)
     free(b->vrowidx);
     free(b->map);
     opt_csc_free(&b->A);
+    opt_fill_split_free(&b->split);
     unsigned v = b->version;
     memset(b, 0, sizeof *b);
     b->version = v;
@@ -378,28 +379,6 @@ void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,
     opt_proxy_block_fill_capped(b, t, dof, X, rhs, INFINITY);
 }
 
-void opt_proxy_block_ranges(const opt_proxy_block *b, int nc, int *cb)
-{
-    int nf = b->nfree;
-    long long tot = nf > 0 ? b->vcolptr[nf] : 0;
-    int c = 0;
-    cb[0] = 0;
-    for (int k = 1; k < nc; k++) {
-        long long target = tot * k / nc;
-        while (c < nf && b->vcolptr[c] < target) c++;
-        cb[k] = c;
-    }
-    cb[nc] = INT_MAX; /* the last range takes every dof above */
-}
-
-int opt_proxy_block_touches(const opt_simplices *S, int s, const int *dof, int lo, int hi)
-{
-    const int *ix = S->idx + (size_t)s * (S->d + 1);
-    for (int i = 0; i <= S->d; i++)
-        if (dof[ix[i]] >= lo && dof[ix[i]] < hi) return 1;
-    return 0;
-}
-
 /* Simplices per batch of a parallel fill: its scratch (21 doubles per
  * simplex in 3D, 10 in 2D) stays at a few MB whatever the mesh. */
 #define FILL_BATCH 32768
@@ -413,7 +392,7 @@ typedef struct fill_job {
     double *loc; /* per simplex of the batch: M (d*d), then lin ((d+1)*d) */
     size_t b0, m;
     int ml, nc;
-    int cb[PAR_MAX_CHUNKS + 1];
+    const int *cb; /* the batch's column ranges (opt/fill_split) */
     double w2k[PAR_MAX_CHUNKS];
 } fill_job;
 
@@ -454,7 +433,7 @@ static void fill_scatter(void *ctx, int k)
     const opt_simplices *S = j->t->s;
     int d = S->d, lo = j->cb[k], hi = j->cb[k + 1];
     for (size_t s = j->b0; s < j->b0 + j->m; s++) {
-        if (!opt_proxy_block_touches(S, (int)s, j->dof, lo, hi)) continue;
+        if (!opt_fill_split_touches(S, (int)s, j->dof, lo, hi)) continue;
         const double *M = j->loc + (s - j->b0) * j->ml;
         scatter(j->b, S, (int)s, j->dof, j->X, M, M + d * d, j->rhs, lo, hi);
     }
@@ -463,10 +442,10 @@ static void fill_scatter(void *ctx, int k)
 /* The SLIM fill with nc > 1 chunks (base/parallel), simplices in batches:
  * the chunks compute their simplices' M and lin (the SVDs: most of the
  * work) into a scratch, then each thread scatters the whole batch into its
- * own columns and rhs entries (opt_proxy_block_ranges). Every value still
- * receives its terms in simplex order, so the result is the serial fill's
- * bit for bit, for any thread count. Returns -1 (nothing done) when the
- * scratch cannot be had; the caller then fills serially. */
+ * own columns and rhs entries (opt/fill_split, the batch's own cut). Every
+ * value still receives its terms in simplex order, so the result is the
+ * serial fill's bit for bit, for any thread count. Returns -1 (nothing
+ * done) when the scratch cannot be had; the caller then fills serially. */
 static double fill_parallel(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
                             double *rhs, double w2_cap, int nc)
 {
@@ -474,12 +453,13 @@ static double fill_parallel(opt_proxy_block *b, const opt_term *t, const int *do
     size_t n = (size_t)t->s->n;
     fill_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .w2_cap = w2_cap, .nc = nc};
     j.ml = d * d + (d + 1) * d;
+    if (opt_fill_split_prepare(&b->split, t->s, dof, nc, FILL_BATCH) != 0) return -1.0;
     j.loc = malloc((size_t)FILL_BATCH * j.ml * sizeof *j.loc);
     if (!j.loc) return -1.0;
     memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
-    opt_proxy_block_ranges(b, nc, j.cb);
     for (j.b0 = 0; j.b0 < n; j.b0 += FILL_BATCH) {
         j.m = n - j.b0 < FILL_BATCH ? n - j.b0 : FILL_BATCH;
+        j.cb = opt_fill_split_ranges(&b->split, j.b0);
         par_run(nc, fill_compute, &j);
         par_run(nc, fill_scatter, &j);
     }

@@ -22,19 +22,22 @@
 
 #include "opt/csc.h"
 #include "opt/energy.h"
+#include "opt/fill_split.h"
 
 typedef struct opt_proxy_block {
-    int d;            /* dimension of the simplices */
-    int ns;           /* number of simplices the pattern was built for */
-    int nfree;        /* 1 + the largest dof its simplices use: the block's
+    int d;                /* dimension of the simplices */
+    int ns;               /* number of simplices the pattern was built for */
+    int nfree;            /* 1 + the largest dof its simplices use: the block's
                       matrix is nfree*d square (a leading part of the
                       whole system when other blocks use higher dofs) */
-    int *vcolptr;     /* nfree+1: vertex-level upper pattern, columns by dof */
-    int *vrowidx;     /* vertex-level rows (dofs), ascending, diagonal last */
-    int *map;         /* ns by (d+1)(d+2)/2: vertex-level entry of each local
+    int *vcolptr;         /* nfree+1: vertex-level upper pattern, columns by dof */
+    int *vrowidx;         /* vertex-level rows (dofs), ascending, diagonal last */
+    int *map;             /* ns by (d+1)(d+2)/2: vertex-level entry of each local
                       corner pair (i <= j), -1 when a corner is fixed */
-    opt_csc A;        /* scalar upper CSC, nfree*d square; values from fill */
-    unsigned version; /* incremented each time the pattern is rebuilt */
+    opt_csc A;            /* scalar upper CSC, nfree*d square; values from fill */
+    unsigned version;     /* incremented each time the pattern is rebuilt */
+    opt_fill_split split; /* a parallel fill's per-batch column ranges,
+                             kept with the pattern */
 } opt_proxy_block;
 
 /* Number the free vertices: fixed[v] != 0 marks vertex v fixed (fixed may
@@ -116,15 +119,5 @@ void opt_proxy_block_add_local(opt_proxy_block *b, const opt_simplices *S, int s
  * (a thread's share of a parallel fill). */
 void opt_proxy_block_add_local_range(opt_proxy_block *b, const opt_simplices *S, int s,
                                      const int *dof, const double *K, int lo, int hi);
-
-/* Split the block's vertex columns into nc ranges [cb[k], cb[k+1]) of about
- * equal numbers of entries (cb: nc + 1 values, cb[nc] = INT_MAX), one per
- * thread of a parallel fill: a thread writes only its columns and the rhs
- * entries of its dofs, so no two threads write the same value and each
- * value receives its terms in simplex order. */
-void opt_proxy_block_ranges(const opt_proxy_block *b, int nc, int *cb);
-
-/* Whether simplex s of S has a corner with a dof in [lo, hi). */
-int opt_proxy_block_touches(const opt_simplices *S, int s, const int *dof, int lo, int hi);
 
 #endif /* SCAF_OPT_PROXY_BLOCK_H */

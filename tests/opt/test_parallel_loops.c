@@ -6,7 +6,9 @@
  * with the serial sums to round-off and are the same run after run. The
  * meshes are big enough for several chunks (PAR_MIN_CHUNK), their vertex
  * ids shuffled so that many simplices straddle two threads' columns, and
- * have fixed vertices (couplings moved to the right side). No timing. */
+ * have fixed vertices (couplings moved to the right side); the fills are
+ * also checked in the chart's layout (breadth-first ids, simplices by
+ * their last vertex). No timing. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -18,6 +20,7 @@
 #include <stdlib.h>
 
 #include "base/parallel.h"
+#include "mesh/vertex_order.h"
 #include "opt/flip_free_step.h"
 #include "opt/newton_fill.h"
 #include "opt/objective.h"
@@ -111,6 +114,36 @@ static void make_problem(problem *p, int d)
     free(V);
 }
 
+/* The chart's layout (app/param, scaffold/scaf_loop): vertices renumbered
+ * breadth first (mesh/vertex_order), simplices ordered by their last vertex. A
+ * batch of a parallel fill then writes a narrow band of columns, which
+ * opt/fill_split cuts inside. */
+static void localize(problem *p)
+{
+    int d = p->d, nv = p->nv, n = p->S.n;
+    int *rank = malloc((size_t)nv * sizeof *rank), *order = malloc((size_t)n * sizeof *order);
+    double *X = malloc((size_t)d * nv * sizeof *X), *D = malloc((size_t)d * nv * sizeof *D);
+    unsigned char *fixed = calloc((size_t)nv, 1);
+    assert_true(rank && order && X && D && fixed);
+    assert_int_equal(mesh_vertex_order_breadth_first(d + 1, n, p->S.idx, nv, rank, NULL), SCAF_OK);
+    for (int v = 0; v < nv; v++) {
+        memcpy(X + (size_t)d * rank[v], p->X + (size_t)d * v, (size_t)d * sizeof *X);
+        memcpy(D + (size_t)d * rank[v], p->D + (size_t)d * v, (size_t)d * sizeof *D);
+        fixed[rank[v]] = p->dof[v] < 0;
+    }
+    for (size_t k = 0; k < (size_t)n * (d + 1); k++) p->S.idx[k] = rank[p->S.idx[k]];
+    assert_int_equal(opt_simplices_order_by_last_vertex(&p->S, nv, order, NULL), SCAF_OK);
+    assert_int_equal(opt_simplices_permute(&p->S, order, NULL), SCAF_OK);
+    p->nfree = opt_dof_numbering(nv, fixed, p->dof);
+    free(p->X);
+    free(p->D);
+    p->X = X;
+    p->D = D;
+    free(fixed);
+    free(order);
+    free(rank);
+}
+
 static void free_problem(problem *p)
 {
     free(p->X);
@@ -148,9 +181,11 @@ static void fill(const problem *p, opt_energy e, int newton, int threads, double
 static void fills_equal_serial(void **state)
 {
     (void)state;
-    for (int d = 2; d <= 3; d++) {
+    for (int layout = 0; layout < 4; layout++) {
+        int d = 2 + layout / 2;
         problem p;
         make_problem(&p, d);
+        if (layout % 2) localize(&p);
         opt_proxy_block b = {0};
         assert_int_equal(opt_proxy_block_pattern(&b, &p.S, p.dof, p.nfree, NULL), SCAF_OK);
         size_t nnz = (size_t)b.A.nnz, n = (size_t)p.nfree * d;
