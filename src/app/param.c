@@ -23,6 +23,7 @@
 #include "mesh/mesh.h"
 #include "geom/coord_scale.h"
 #include "mesh/uv_charts.h"
+#include "mesh/vertex_order.h"
 #include "opt/convergence.h"
 #include "opt/embed.h"
 #include "opt/handle_term.h"
@@ -299,9 +300,12 @@ static scaf_status find_charts(const mesh *m, const double *V_in, int pos_exp, m
 /* Working vertices: one per referenced index of IDX (vertex or UV index
  * per corner; each index belongs to one chart: the chart check rejects
  * indices shared by charts), numbered chart by chart so each chart's
- * vertices are contiguous. Fw (nf by 3) gets the working vertex of each
- * corner, widx (nidx) the working vertex of each index (-1: unused),
- * *W3 (nw by 3, allocated) their 3D positions. */
+ * vertices are contiguous, breadth first within a chart
+ * (mesh/vertex_order: whatever the input's numbering, a triangle's
+ * corners get close numbers, and the iteration's passes stay in cache).
+ * Fw (nf by 3) gets the working vertex of each corner, widx (nidx) the
+ * working vertex of each index (-1: unused), *W3 (nw by 3, allocated)
+ * their 3D positions. */
 static scaf_status working_vertices(const mesh *m, const mesh_charts *ch, const int *IDX, int nidx,
                                     int *widx, int *Fw, int *nw_out, double **W3, scaf_error *err)
 {
@@ -316,6 +320,19 @@ static scaf_status working_vertices(const mesh *m, const mesh_charts *ch, const 
                 Fw[3 * f + j] = widx[i];
             }
         }
+    /* The charts' vertices are contiguous in this first numbering, so the
+     * breadth-first one, part after part by smallest vertex, keeps them so. */
+    int *rank = malloc(sizeof(int) * (size_t)(nw ? nw : 1));
+    if (!rank) return err_nomem(err, "working mesh");
+    scaf_status st = mesh_vertex_order_breadth_first(3, m->nf, Fw, nw, rank, err);
+    if (st != SCAF_OK) {
+        free(rank);
+        return st;
+    }
+    for (size_t k = 0; k < 3 * (size_t)m->nf; k++) Fw[k] = rank[Fw[k]];
+    for (int i = 0; i < nidx; i++)
+        if (widx[i] >= 0) widx[i] = rank[widx[i]];
+    free(rank);
     *nw_out = nw;
     *W3 = malloc(sizeof(double) * 3 * (size_t)(nw ? nw : 1));
     if (!*W3) return err_nomem(err, "working mesh");
