@@ -97,7 +97,7 @@ static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const in
         free(j.neg);
         return SCAF_ERR_NOMEM;
     }
-    memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
+    opt_proxy_block_zero(b);
     double energy = 0;
     int clamped = 0;
     scaf_status status = SCAF_OK;

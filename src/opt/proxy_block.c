@@ -379,9 +379,34 @@ void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,
     opt_proxy_block_fill_capped(b, t, dof, X, rhs, INFINITY);
 }
 
-/* Simplices per batch of a parallel fill: its scratch (21 doubles per
- * simplex in 3D, 10 in 2D) stays at a few MB whatever the mesh. */
-#define FILL_BATCH 32768
+typedef struct zero_job {
+    double *val;
+    size_t n;
+    int nc;
+} zero_job;
+
+/* Chunk k of a parallel zeroing of a block's values. */
+static void zero_chunk(void *ctx, int k)
+{
+    const zero_job *z = ctx;
+    size_t lo = par_chunk_begin(z->n, z->nc, k), hi = par_chunk_begin(z->n, z->nc, k + 1);
+    memset(z->val + lo, 0, (hi - lo) * sizeof *z->val);
+}
+
+void opt_proxy_block_zero(opt_proxy_block *b)
+{
+    zero_job z = {b->A.val, (size_t)b->A.nnz, par_chunks((size_t)b->A.nnz)};
+    par_run(z.nc, zero_chunk, &z);
+}
+
+/* Simplices per batch of a parallel fill: the column ranges are cut anew
+ * for each batch (opt/fill_split), with a wait for every thread between
+ * batches. */
+#define FILL_BATCH 65536
+
+/* Simplices whose proxies are computed together (opt_sd2_proxy_range's
+ * lanes), then scattered while still in cache. */
+#define SD2_BATCH 64
 
 typedef struct fill_job {
     opt_proxy_block *b;
@@ -389,15 +414,11 @@ typedef struct fill_job {
     const int *dof;
     const double *X;
     double *rhs, w2_cap;
-    double *loc; /* per simplex of the batch: M (d*d), then lin ((d+1)*d) */
     size_t b0, m;
-    int ml, nc;
+    int nc;
     const int *cb; /* the batch's column ranges (opt/fill_split) */
     double w2k[PAR_MAX_CHUNKS];
 } fill_job;
-
-/* Simplices per call of opt_sd2_proxy_range in the serial fill. */
-#define SD2_BATCH 64
 
 /* Whether t's proxies go through opt/sd2_lanes (the same values). */
 static int sd2(const opt_term *t)
@@ -405,65 +426,82 @@ static int sd2(const opt_term *t)
     return t->s->d == 2 && t->energy == OPT_ENERGY_SYMMETRIC_DIRICHLET;
 }
 
-/* Chunk k of the batch: M and lin of its simplices. */
-static void fill_compute(void *ctx, int k)
+/* The proxies of simplices [s0, s1) (at most SD2_BATCH) into loc, M then
+ * lin per simplex (d*d + (d+1)*d values); returns their largest w^2. */
+static double proxies(const opt_term *t, const double *X, double w2_cap, size_t s0, size_t s1,
+                      double *loc)
 {
-    fill_job *j = ctx;
-    int d = j->t->s->d;
-    size_t lo = j->b0 + par_chunk_begin(j->m, j->nc, k);
-    size_t hi = j->b0 + par_chunk_begin(j->m, j->nc, k + 1);
-    if (sd2(j->t)) {
-        double w2 =
-            opt_sd2_proxy_range(j->t->s, j->X, lo, hi, j->w2_cap, j->loc + (lo - j->b0) * j->ml);
-        if (w2 > j->w2k[k]) j->w2k[k] = w2;
-        return;
+    int d = t->s->d, ml = d * d + (d + 1) * d;
+    if (sd2(t)) return opt_sd2_proxy_range(t->s, X, s0, s1, w2_cap, loc);
+    double w2max = 0;
+    for (size_t s = s0; s < s1; s++) {
+        double *M = loc + (s - s0) * ml, *lin = M + d * d;
+        double w2 = d == 2 ? proxy_d(t, (int)s, X, w2_cap, M, lin, 2)
+                           : proxy_d(t, (int)s, X, w2_cap, M, lin, d);
+        if (w2 > w2max) w2max = w2;
     }
-    for (size_t s = lo; s < hi; s++) {
-        double *M = j->loc + (s - j->b0) * j->ml, *lin = M + d * d;
-        double w2 = d == 2 ? proxy_d(j->t, (int)s, j->X, j->w2_cap, M, lin, 2)
-                           : proxy_d(j->t, (int)s, j->X, j->w2_cap, M, lin, d);
-        if (w2 > j->w2k[k]) j->w2k[k] = w2;
-    }
+    return w2max;
 }
 
-/* Range k of columns: every simplex of the batch that touches it. */
-static void fill_scatter(void *ctx, int k)
+/* Whether simplex s has no free corner (it writes nothing, but its
+ * weight still counts in the largest one). */
+static int no_free_corner(const opt_simplices *S, int s, const int *dof)
+{
+    const int *ix = S->idx + (size_t)s * (S->d + 1);
+    for (int i = 0; i <= S->d; i++)
+        if (dof[ix[i]] >= 0) return 0;
+    return 1;
+}
+
+/* Range k of columns over the batch, as the serial fill runs: every run of
+ * SD2_BATCH simplices with one that touches the range gets its proxies
+ * computed and those simplices scattered at once, while in cache. A run
+ * that straddles two ranges is computed by both threads (the same bits);
+ * range 0 also takes the runs with a simplex that has no free corner. */
+static void fill_range(void *ctx, int k)
 {
     fill_job *j = ctx;
     const opt_simplices *S = j->t->s;
-    int d = S->d, lo = j->cb[k], hi = j->cb[k + 1];
-    for (size_t s = j->b0; s < j->b0 + j->m; s++) {
-        if (!opt_fill_split_touches(S, (int)s, j->dof, lo, hi)) continue;
-        const double *M = j->loc + (s - j->b0) * j->ml;
-        scatter(j->b, S, (int)s, j->dof, j->X, M, M + d * d, j->rhs, lo, hi);
+    int d = S->d, ml = d * d + (d + 1) * d, lo = j->cb[k], hi = j->cb[k + 1];
+    double loc[SD2_BATCH * 21];
+    for (size_t g0 = j->b0; g0 < j->b0 + j->m; g0 += SD2_BATCH) {
+        size_t g1 = g0 + SD2_BATCH < j->b0 + j->m ? g0 + SD2_BATCH : j->b0 + j->m;
+        unsigned long long mine = 0;
+        int needed = 0;
+        for (size_t s = g0; s < g1; s++) {
+            if (opt_fill_split_touches(S, (int)s, j->dof, lo, hi)) mine |= 1ull << (s - g0);
+            else if (k == 0 && no_free_corner(S, (int)s, j->dof)) needed = 1;
+        }
+        if (!mine && !needed) continue;
+        double w2 = proxies(j->t, j->X, j->w2_cap, g0, g1, loc);
+        if (w2 > j->w2k[k]) j->w2k[k] = w2;
+        for (size_t s = g0; s < g1; s++)
+            if (mine >> (s - g0) & 1) {
+                const double *M = loc + (s - g0) * ml;
+                scatter(j->b, S, (int)s, j->dof, j->X, M, M + d * d, j->rhs, lo, hi);
+            }
     }
 }
 
 /* The SLIM fill with nc > 1 chunks (base/parallel), simplices in batches:
- * the chunks compute their simplices' M and lin (the SVDs: most of the
- * work) into a scratch, then each thread scatters the whole batch into its
- * own columns and rhs entries (opt/fill_split, the batch's own cut). Every
- * value still receives its terms in simplex order, so the result is the
- * serial fill's bit for bit, for any thread count. Returns -1 (nothing
- * done) when the scratch cannot be had; the caller then fills serially. */
+ * each thread fills its own columns and rhs entries of the batch
+ * (opt/fill_split, the batch's own cut), computing the proxies it needs
+ * and scattering them at once, as the serial fill does. Every value still
+ * receives its terms in simplex order, so the result is the serial fill's
+ * bit for bit, for any thread count. Returns -1 (nothing done) when the
+ * column ranges cannot be had; the caller then fills serially. */
 static double fill_parallel(opt_proxy_block *b, const opt_term *t, const int *dof, const double *X,
                             double *rhs, double w2_cap, int nc)
 {
-    int d = t->s->d;
     size_t n = (size_t)t->s->n;
     fill_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .w2_cap = w2_cap, .nc = nc};
-    j.ml = d * d + (d + 1) * d;
     if (opt_fill_split_prepare(&b->split, t->s, dof, nc, FILL_BATCH) != 0) return -1.0;
-    j.loc = malloc((size_t)FILL_BATCH * j.ml * sizeof *j.loc);
-    if (!j.loc) return -1.0;
-    memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
+    opt_proxy_block_zero(b);
     for (j.b0 = 0; j.b0 < n; j.b0 += FILL_BATCH) {
         j.m = n - j.b0 < FILL_BATCH ? n - j.b0 : FILL_BATCH;
         j.cb = opt_fill_split_ranges(&b->split, j.b0);
-        par_run(nc, fill_compute, &j);
-        par_run(nc, fill_scatter, &j);
+        par_run(nc, fill_range, &j);
     }
-    free(j.loc);
     double w2max = 0;
     for (int k = 0; k < nc; k++)
         if (j.w2k[k] > w2max) w2max = j.w2k[k];

@@ -85,6 +85,8 @@ void opt_proxy_block_add_pair(opt_proxy_block *b, int k, const int *dof, const i
  * A.val (A.nnz entries) first. */
 void opt_proxy_block_add_diagonal(opt_proxy_block *b, int k, double w);
 
+/* Zero the values (A.nnz), big blocks in base/parallel's threads. */
+void opt_proxy_block_zero(opt_proxy_block *b);
 /* Fill values with the SLIM proxy of term t at positions X (#X by d):
  * per simplex the signed SVD of J, weights W and targets T
  * (opt_slim_proxy). rhs (nfree*d) is ACCUMULATED into (zero it first).
