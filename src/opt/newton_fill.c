@@ -14,9 +14,10 @@
 
 #include "opt/isotropic_hessian.h"
 
-/* Simplices per batch of a parallel fill: a 3D simplex's scratch is 157
- * doubles (2D: 43), so a batch's stays at a few MB. */
-#define NEWTON_BATCH 4096
+/* Simplices per batch of a parallel fill: the column ranges are cut anew
+ * for each batch (opt/fill_split; the SLIM fill's batches, so one table
+ * serves both). */
+#define NEWTON_BATCH 65536
 
 static scaf_status inverted(const opt_simplices *S, int s, const double *X, scaf_error *err)
 {
@@ -32,68 +33,77 @@ typedef struct newton_job {
     const double *X;
     double *rhs;
     int project;
-    double *loc; /* per simplex of the batch: energy, gradient (nd), Hessian (nd^2) */
-    int *neg;    /* per simplex of the batch: opt_isotropic_simplex_hessian's value */
+    double *energy; /* per simplex of the batch, written by its owner */
+    int *neg;       /* per simplex of the batch: opt_isotropic_simplex_hessian's value */
     size_t b0, m;
-    int ml, nc;
     const int *cb; /* the batch's column ranges (opt/fill_split) */
 } newton_job;
 
-/* Chunk k of the batch: energies, gradients and Hessians of its simplices. */
-static void newton_compute(void *ctx, int k)
+/* The range holding simplex s's largest dof (0 when it has no free
+ * corner): the one thread that records its energy and sign. */
+static int owner(const newton_job *j, int s)
 {
-    newton_job *j = ctx;
-    int nd = (j->t->s->d + 1) * j->t->s->d;
-    size_t hi = j->b0 + par_chunk_begin(j->m, j->nc, k + 1);
-    for (size_t s = j->b0 + par_chunk_begin(j->m, j->nc, k); s < hi; s++) {
-        double *e = j->loc + (s - j->b0) * j->ml;
-        j->neg[s - j->b0] = opt_isotropic_simplex_hessian(j->t->energy, j->t->s, (int)s, j->X,
-                                                          j->project, e, e + 1, e + 1 + nd);
-    }
+    const opt_simplices *S = j->t->s;
+    const int *ix = S->idx + (size_t)s * (S->d + 1);
+    int top = -1, k = 0;
+    for (int i = 0; i <= S->d; i++)
+        if (j->dof[ix[i]] > top) top = j->dof[ix[i]];
+    while (top >= 0 && top >= j->cb[k + 1]) k++;
+    return k;
 }
 
-/* Range k of columns: -gradient and Hessian of every simplex of the batch
- * that touches it. */
-static void newton_scatter(void *ctx, int k)
+/* Range k of columns over the batch, as the serial fill runs: each
+ * simplex that touches the range gets its gradient and Hessian computed
+ * and scattered at once (a simplex across ranges is computed by each of
+ * their threads, the same bits); its owner records its energy and sign. A
+ * simplex found inverted is not scattered (the fill fails). */
+static void newton_range(void *ctx, int k)
 {
     newton_job *j = ctx;
     const opt_simplices *S = j->t->s;
-    int d = S->d, nd = (d + 1) * d, lo = j->cb[k], hi = j->cb[k + 1];
+    int d = S->d, lo = j->cb[k], hi = j->cb[k + 1];
+    double e, g[12], H[144];
     for (size_t s = j->b0; s < j->b0 + j->m; s++) {
-        if (!opt_fill_split_touches(S, (int)s, j->dof, lo, hi)) continue;
-        const double *g = j->loc + (s - j->b0) * j->ml + 1;
+        int mine = opt_fill_split_touches(S, (int)s, j->dof, lo, hi);
+        int own = owner(j, (int)s) == k;
+        if (!mine && !own) continue;
+        int neg =
+            opt_isotropic_simplex_hessian(j->t->energy, S, (int)s, j->X, j->project, &e, g, H);
+        if (own) {
+            j->energy[s - j->b0] = e;
+            j->neg[s - j->b0] = neg;
+        }
+        if (!mine || neg < 0) continue;
         const int *ix = S->idx + s * (d + 1);
         for (int i = 0; i <= d; i++) {
             int di = j->dof[ix[i]];
             if (di >= lo && di < hi)
                 for (int a = 0; a < d; a++) j->rhs[(size_t)di * d + a] -= g[i * d + a];
         }
-        opt_proxy_block_add_local_range(j->b, S, (int)s, j->dof, g + nd, lo, hi);
+        opt_proxy_block_add_local_range(j->b, S, (int)s, j->dof, H, lo, hi);
     }
 }
 
-/* The fill with nc > 1 chunks (base/parallel), simplices in batches: the
- * chunks compute their simplices' gradients and Hessians into a scratch;
- * the energy, the clamped count and the first failure are then taken in
- * simplex order, and each thread scatters the whole batch into its own
- * columns and rhs entries (opt/fill_split). Every value receives
- * its terms in simplex order: the serial fill's numbers, bit for bit.
- * Returns SCAF_ERR_NOMEM without touching anything when the scratch cannot
- * be had (the caller fills serially). */
+/* The fill with nc > 1 chunks (base/parallel), simplices in batches:
+ * each thread fills its own columns and rhs entries of the batch
+ * (opt/fill_split, the batch's own cut), computing what it needs and
+ * scattering it at once, as the serial fill does; the energy, the clamped
+ * count and the first failure are then taken in simplex order. Every
+ * value receives its terms in simplex order: the serial fill's numbers,
+ * bit for bit. Returns SCAF_ERR_NOMEM without touching anything when the
+ * scratch cannot be had (the caller fills serially). */
 static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const int *dof,
                                  const double *X, int project, double *rhs,
                                  opt_newton_fill_stats *st, int nc, scaf_error *err)
 {
     const opt_simplices *S = t->s;
-    int d = S->d, nd = (d + 1) * d;
     size_t n = (size_t)S->n;
-    newton_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .project = project, .nc = nc};
-    j.ml = 1 + nd + nd * nd;
+    newton_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .project = project};
     if (opt_fill_split_prepare(&b->split, S, dof, nc, NEWTON_BATCH) != 0) return SCAF_ERR_NOMEM;
-    j.loc = malloc((size_t)NEWTON_BATCH * j.ml * sizeof *j.loc);
+    j.energy = malloc((size_t)NEWTON_BATCH * sizeof *j.energy);
     j.neg = malloc((size_t)NEWTON_BATCH * sizeof *j.neg);
-    if (!j.loc || !j.neg) {
-        free(j.loc);
+    if (!j.energy || !j.neg) {
+        free(j.energy);
         free(j.neg);
         return SCAF_ERR_NOMEM;
     }
@@ -104,18 +114,17 @@ static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const in
     for (j.b0 = 0; j.b0 < n && status == SCAF_OK; j.b0 += NEWTON_BATCH) {
         j.m = n - j.b0 < NEWTON_BATCH ? n - j.b0 : NEWTON_BATCH;
         j.cb = opt_fill_split_ranges(&b->split, j.b0);
-        par_run(nc, newton_compute, &j);
+        par_run(nc, newton_range, &j);
         for (size_t s = j.b0; s < j.b0 + j.m; s++) {
             if (j.neg[s - j.b0] < 0) {
                 status = inverted(S, (int)s, X, err);
                 break;
             }
             clamped += j.neg[s - j.b0] > 0;
-            energy += j.loc[(s - j.b0) * j.ml];
+            energy += j.energy[s - j.b0];
         }
-        if (status == SCAF_OK) par_run(nc, newton_scatter, &j);
     }
-    free(j.loc);
+    free(j.energy);
     free(j.neg);
     if (status == SCAF_OK && st) {
         st->energy = energy;
