@@ -321,11 +321,49 @@ static void chunks(void **state)
     }
 }
 
+/* An inverted simplex stops the Newton fill with the same error at any
+ * thread count: the first inverted simplex in order, named. */
+static void newton_failure_named_as_serial(void **state)
+{
+    (void)state;
+    for (int layout = 0; layout < 2; layout++) {
+        problem p;
+        make_problem(&p, 2);
+        if (layout) localize(&p);
+        /* a free vertex of a simplex past the middle, thrown far out */
+        int s = p.S.n / 2 + 1000, v = -1;
+        for (int i = 0; i < 3 && v < 0; i++)
+            if (p.dof[p.S.idx[3 * s + i]] >= 0) v = p.S.idx[3 * s + i];
+        assert_true(v >= 0);
+        p.X[2 * v] += 50.0;
+        p.X[2 * v + 1] -= 30.0;
+        char first[sizeof(((scaf_error *)0)->message)] = "";
+        for (int threads = 1; threads <= 3; threads++) {
+            par_set_threads(threads);
+            opt_term t = {&p.S, OPT_ENERGY_SYMMETRIC_DIRICHLET};
+            opt_proxy_block b = {0};
+            assert_int_equal(opt_proxy_block_pattern(&b, &p.S, p.dof, p.nfree, NULL), SCAF_OK);
+            double *rhs = calloc((size_t)p.nfree * 2, sizeof *rhs);
+            scaf_error e;
+            assert_int_equal(opt_newton_block_fill(&b, &t, p.dof, p.X, 1, rhs, NULL, &e),
+                             SCAF_ERR_NUMERIC);
+            assert_non_null(strstr(e.message, "simplex"));
+            if (threads == 1) strcpy(first, e.message);
+            else assert_string_equal(e.message, first);
+            free(rhs);
+            opt_proxy_block_free(&b);
+        }
+        par_set_threads(1);
+        free_problem(&p);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(chunks),
         cmocka_unit_test(fills_equal_serial),
+        cmocka_unit_test(newton_failure_named_as_serial),
         cmocka_unit_test(system_sum_equal_serial),
         cmocka_unit_test(line_search_loops),
     };
