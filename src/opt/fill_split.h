@@ -19,6 +19,10 @@
 
 #include "opt/simplices.h"
 
+/* Simplices per batch of the parallel fills (one table serves the SLIM
+ * and the Newton fill); between batches every thread waits. */
+#define OPT_FILL_BATCH 65536
+
 typedef struct opt_fill_split {
     int nc;       /* ranges per batch; 0: nothing cached */
     size_t batch; /* simplices per batch */

@@ -14,11 +14,6 @@
 
 #include "opt/isotropic_hessian.h"
 
-/* Simplices per batch of a parallel fill: the column ranges are cut anew
- * for each batch (opt/fill_split; the SLIM fill's batches, so one table
- * serves both). */
-#define NEWTON_BATCH 65536
-
 static scaf_status inverted(const opt_simplices *S, int s, const double *X, scaf_error *err)
 {
     return err_set(err, SCAF_ERR_NUMERIC,
@@ -99,9 +94,9 @@ static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const in
     const opt_simplices *S = t->s;
     size_t n = (size_t)S->n;
     newton_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .project = project};
-    if (opt_fill_split_prepare(&b->split, S, dof, nc, NEWTON_BATCH) != 0) return SCAF_ERR_NOMEM;
-    j.energy = malloc((size_t)NEWTON_BATCH * sizeof *j.energy);
-    j.neg = malloc((size_t)NEWTON_BATCH * sizeof *j.neg);
+    if (opt_fill_split_prepare(&b->split, S, dof, nc, OPT_FILL_BATCH) != 0) return SCAF_ERR_NOMEM;
+    j.energy = malloc((size_t)OPT_FILL_BATCH * sizeof *j.energy);
+    j.neg = malloc((size_t)OPT_FILL_BATCH * sizeof *j.neg);
     if (!j.energy || !j.neg) {
         free(j.energy);
         free(j.neg);
@@ -111,8 +106,8 @@ static scaf_status fill_parallel(opt_proxy_block *b, const opt_term *t, const in
     double energy = 0;
     int clamped = 0;
     scaf_status status = SCAF_OK;
-    for (j.b0 = 0; j.b0 < n && status == SCAF_OK; j.b0 += NEWTON_BATCH) {
-        j.m = n - j.b0 < NEWTON_BATCH ? n - j.b0 : NEWTON_BATCH;
+    for (j.b0 = 0; j.b0 < n && status == SCAF_OK; j.b0 += OPT_FILL_BATCH) {
+        j.m = n - j.b0 < OPT_FILL_BATCH ? n - j.b0 : OPT_FILL_BATCH;
         j.cb = opt_fill_split_ranges(&b->split, j.b0);
         par_run(nc, newton_range, &j);
         for (size_t s = j.b0; s < j.b0 + j.m; s++) {

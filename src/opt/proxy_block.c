@@ -399,14 +399,12 @@ void opt_proxy_block_zero(opt_proxy_block *b)
     par_run(z.nc, zero_chunk, &z);
 }
 
-/* Simplices per batch of a parallel fill: the column ranges are cut anew
- * for each batch (opt/fill_split), with a wait for every thread between
- * batches. */
-#define FILL_BATCH 65536
-
 /* Simplices whose proxies are computed together (opt_sd2_proxy_range's
  * lanes), then scattered while still in cache. */
 #define SD2_BATCH 64
+
+/* Values of one simplex's proxy, M then lin: d*d + (d+1)*d, at most 21 (3D). */
+#define PROXY_VALUES_MAX 21
 
 typedef struct fill_job {
     opt_proxy_block *b;
@@ -463,7 +461,7 @@ static void fill_range(void *ctx, int k)
     fill_job *j = ctx;
     const opt_simplices *S = j->t->s;
     int d = S->d, ml = d * d + (d + 1) * d, lo = j->cb[k], hi = j->cb[k + 1];
-    double loc[SD2_BATCH * 21];
+    double loc[SD2_BATCH * PROXY_VALUES_MAX];
     for (size_t g0 = j->b0; g0 < j->b0 + j->m; g0 += SD2_BATCH) {
         size_t g1 = g0 + SD2_BATCH < j->b0 + j->m ? g0 + SD2_BATCH : j->b0 + j->m;
         unsigned long long mine = 0;
@@ -495,10 +493,10 @@ static double fill_parallel(opt_proxy_block *b, const opt_term *t, const int *do
 {
     size_t n = (size_t)t->s->n;
     fill_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .w2_cap = w2_cap, .nc = nc};
-    if (opt_fill_split_prepare(&b->split, t->s, dof, nc, FILL_BATCH) != 0) return -1.0;
+    if (opt_fill_split_prepare(&b->split, t->s, dof, nc, OPT_FILL_BATCH) != 0) return -1.0;
     opt_proxy_block_zero(b);
-    for (j.b0 = 0; j.b0 < n; j.b0 += FILL_BATCH) {
-        j.m = n - j.b0 < FILL_BATCH ? n - j.b0 : FILL_BATCH;
+    for (j.b0 = 0; j.b0 < n; j.b0 += OPT_FILL_BATCH) {
+        j.m = n - j.b0 < OPT_FILL_BATCH ? n - j.b0 : OPT_FILL_BATCH;
         j.cb = opt_fill_split_ranges(&b->split, j.b0);
         par_run(nc, fill_range, &j);
     }
