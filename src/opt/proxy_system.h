@@ -29,8 +29,14 @@ typedef struct opt_proxy_system {
                                             when several or none */
     unsigned seen[OPT_PROXY_MAX_BLOCKS]; /* block versions merged */
     const opt_proxy_block *blk[OPT_PROXY_MAX_BLOCKS];
-    opt_csc A;        /* union matrix (owned when nblocks > 1) */
-    int owns;         /* whether A's arrays are owned */
+    opt_csc A; /* union matrix (owned when nblocks > 1) */
+    int owns;  /* whether A's arrays are the ones below */
+    /* The union's storage and the capacities of the arrays above, kept
+     * across rebuilds (the scaffold's pattern changes every iteration): a
+     * rebuild refills memory already in use instead of new pages. */
+    int *own_colptr, *own_rowidx;
+    double *own_val;
+    size_t cap_vcol, cap_vrow, cap_col, cap_nnz, cap_emap[OPT_PROXY_MAX_BLOCKS];
     unsigned version; /* bumped whenever A's pattern changes */
 } opt_proxy_system;
 

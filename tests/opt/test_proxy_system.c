@@ -229,6 +229,7 @@ static void blocks_sum_like_one(void **state)
         const opt_proxy_block *bl[2] = {&ba, &bb};
         assert_int_equal(opt_proxy_system_sum(&sys, bl, 2, NULL), SCAF_OK);
         unsigned v1 = sys.version;
+        const double *val1 = sys.A.val;
         assert_sum_is_plain(&sys, bl, 2);
         assert_int_equal(sys.A.nnz, ball.A.nnz);
         assert_memory_equal(sys.A.rowidx, ball.A.rowidx, ball.A.nnz * sizeof(int));
@@ -254,6 +255,7 @@ static void blocks_sum_like_one(void **state)
         assert_true(sys.version != v1);
         assert_int_equal(ba.version, va);
         assert_sum_is_plain(&sys, bl, 2);
+        assert_ptr_equal(sys.A.val, val1); /* a smaller union refills its storage */
         opt_simplices C = p.S;
         C.n = k + B.n;
         opt_term tc = {&C, tall.energy};
@@ -265,6 +267,21 @@ static void blocks_sum_like_one(void **state)
         opt_csc_symv(&bc.A, y, y1);
         opt_csc_symv(&sys.A, y, y2);
         for (int i = 0; i < n; i++) assert_true(fabs(y1[i] - y2[i]) < 1e-10 * (1 + fabs(y1[i])));
+        /* One block (A aliases it), then two again with B whole: the kept
+         * storage serves the union once more and the sum is right. */
+        assert_int_equal(opt_proxy_system_sum(&sys, bl, 1, NULL), SCAF_OK);
+        assert_ptr_equal(sys.A.val, ba.A.val);
+        assert_int_equal(sys.owns, 0);
+        B.n = ns - k;
+        assert_int_equal(opt_proxy_block_pattern(&bb, &B, p.dof, p.nfree, NULL), SCAF_OK);
+        memset(r2, 0, n * sizeof *r2);
+        opt_proxy_block_fill(&ba, &ta, p.dof, p.X, r2);
+        opt_proxy_block_fill(&bb, &tb, p.dof, p.X, r2);
+        assert_int_equal(opt_proxy_system_sum(&sys, bl, 2, NULL), SCAF_OK);
+        assert_ptr_equal(sys.A.val, val1);
+        assert_sum_is_plain(&sys, bl, 2);
+        assert_int_equal(sys.A.nnz, ball.A.nnz);
+        assert_memory_equal(sys.A.rowidx, ball.A.rowidx, ball.A.nnz * sizeof(int));
         opt_proxy_block_free(&bc);
         opt_proxy_system_free(&sys);
         opt_proxy_block_free(&ball);
