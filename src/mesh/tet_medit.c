@@ -17,12 +17,13 @@
 static int write_body(FILE *f, int nv, const double *V, int nt, const int *T, const int *label)
 {
     char a[40], b[40], c[40];
+    int digits = 15; /* what the last number needed (text_scan.h) */
     if (fprintf(f, "MeshVersionFormatted 1\nDimension 3\nVertices\n%d\n", nv) < 0) return -1;
     for (int i = 0; i < nv; i++) {
         const double *v = V + 3 * (size_t)i;
-        scan_format_double(a, sizeof a, v[0]);
-        scan_format_double(b, sizeof b, v[1]);
-        scan_format_double(c, sizeof c, v[2]);
+        scan_format_double_hint(a, sizeof a, v[0], &digits);
+        scan_format_double_hint(b, sizeof b, v[1], &digits);
+        scan_format_double_hint(c, sizeof c, v[2], &digits);
         if (fprintf(f, "%s %s %s 0\n", a, b, c) < 0) return -1;
     }
     if (fprintf(f, "Tetrahedra\n%d\n", nt) < 0) return -1;

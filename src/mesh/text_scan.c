@@ -35,14 +35,44 @@ scan_result scan_double_slow(const char *p, const char *q, double *out)
     return SCAN_OK;
 }
 
+/* Whether the %.*g text of x at prec digits (in buf, *n characters)
+ * reads back as x. */
+static int prints_back(char *buf, size_t size, double x, int prec, int *n)
+{
+    *n = snprintf(buf, size, "%.*g", prec, x);
+    if (*n < 0 || (size_t)*n >= size) return 0;
+    const char *p = buf;
+    double y;
+    return scan_double(&p, buf + *n, &y) == SCAN_OK && memcmp(&x, &y, sizeof x) == 0;
+}
+
+/* A text that reads back at p digits also does at p + 1 (the nearest
+ * decimal of p + 1 digits is at least as near to x), so the search may
+ * start in the middle: from 16, a failure means 17 with no check and a
+ * success leaves only 15 to try. Numbers read from short decimals need 15
+ * (start there), an optimizer's results 16 or 17 (start at 16: one
+ * conversion and one parse fewer each); *digits carries what the last
+ * number of a stream needed. */
+int scan_format_double_hint(char *buf, size_t size, double x, int *digits)
+{
+    int n;
+    if (*digits <= 15) {
+        for (int prec = 15; prec <= 16; prec++)
+            if (prints_back(buf, size, x, prec, &n)) return *digits = prec, n;
+        return *digits = 17, snprintf(buf, size, "%.17g", x);
+    }
+    if (!prints_back(buf, size, x, 16, &n)) return *digits = 17, snprintf(buf, size, "%.17g", x);
+    char b15[32];
+    int n15;
+    if (prints_back(b15, sizeof b15, x, 15, &n15) && (size_t)n15 < size) {
+        memcpy(buf, b15, (size_t)n15 + 1);
+        return *digits = 15, n15;
+    }
+    return *digits = 16, n;
+}
+
 int scan_format_double(char *buf, size_t size, double x)
 {
-    int n = 0;
-    for (int prec = 15; prec <= 17; prec++) {
-        n = snprintf(buf, size, "%.*g", prec, x);
-        const char *p = buf;
-        double y;
-        if (scan_double(&p, buf + n, &y) == SCAN_OK && memcmp(&x, &y, sizeof x) == 0) break;
-    }
-    return n;
+    int digits = 15;
+    return scan_format_double_hint(buf, size, x, &digits);
 }

@@ -49,18 +49,19 @@ static scaf_status check_mesh(const mesh *m, scaf_error *err)
 static int write_body(FILE *f, const mesh *m)
 {
     char a[40], b[40], c[40];
+    int digits = 15; /* what the last number needed (text_scan.h) */
     if (fprintf(f, "# written by scaf %s\n", scaf_version()) < 0) return -1;
     for (int i = 0; i < m->nv; i++) {
         const double *v = m->V + 3 * (size_t)i;
-        scan_format_double(a, sizeof a, v[0]);
-        scan_format_double(b, sizeof b, v[1]);
-        scan_format_double(c, sizeof c, v[2]);
+        scan_format_double_hint(a, sizeof a, v[0], &digits);
+        scan_format_double_hint(b, sizeof b, v[1], &digits);
+        scan_format_double_hint(c, sizeof c, v[2], &digits);
         if (fprintf(f, "v %s %s %s\n", a, b, c) < 0) return -1;
     }
     int uv = mesh_has_uv(m);
     for (int i = 0; uv && i < m->nuv; i++) {
-        scan_format_double(a, sizeof a, m->UV[2 * (size_t)i]);
-        scan_format_double(b, sizeof b, m->UV[2 * (size_t)i + 1]);
+        scan_format_double_hint(a, sizeof a, m->UV[2 * (size_t)i], &digits);
+        scan_format_double_hint(b, sizeof b, m->UV[2 * (size_t)i + 1], &digits);
         if (fprintf(f, "vt %s %s\n", a, b) < 0) return -1;
     }
     for (int i = 0; i < m->nf; i++) {

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "mesh_test_util.h"
+#include "mesh/text_scan.h"
 
 static void roundtrip(const mesh *a, const char *name)
 {
@@ -81,6 +82,52 @@ static void short_numbers_stay_short(void **state)
     assert_non_null(strstr(buf, "\nvt 0.25 0.75\n"));
     assert_non_null(strstr(buf, "\nf 1/1 2/2 3/3\n"));
     mesh_free(&m);
+}
+
+/* The number printer gives the fewest of 15, 16, 17 digits that read
+ * back bitwise: the same text as trying 15, 16, 17 in turn with strtod as
+ * the reader, on values of every kind (numbers short in decimal, 1/3-like
+ * ones, random bits, both ends of the range, -0), and so does the hinted
+ * printer from any start, which reports the digits the number needed. */
+static void numbers_print_shortest(void **state)
+{
+    (void)state;
+    uint64_t x = 0x2545F4914F6CDD1DULL;
+    int by_digits[18] = {0};
+    for (int i = 0; i < 200000; i++) {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        double d;
+        if (i % 4 == 0) {
+            memcpy(&d, &x, sizeof d);
+            if (!isfinite(d)) continue;
+        } else if (i % 4 == 1) {
+            d = (double)(x % 100000) / 1000.0; /* short in decimal */
+        } else {
+            d = ((double)(x >> 11) / 9007199254740992.0 - 0.5) * pow(10.0, (double)(i % 60) - 30);
+        }
+        if (i == 0) d = -0.0;
+        if (i == 1) d = 4.9e-324;
+        if (i == 2) d = 1.7976931348623157e308;
+        char got[40], want[40], hinted[40];
+        int n = scan_format_double(got, sizeof got, d), prec = 15;
+        for (; prec <= 17; prec++) {
+            snprintf(want, sizeof want, "%.*g", prec, d);
+            if (strtod(want, NULL) == d && signbit(strtod(want, NULL)) == signbit(d)) break;
+        }
+        assert_true(prec <= 17);
+        assert_string_equal(got, want);
+        assert_int_equal(n, (int)strlen(want));
+        for (int start = 15; start <= 17; start++) { /* any start: the same text */
+            int digits = start;
+            assert_int_equal(scan_format_double_hint(hinted, sizeof hinted, d, &digits), n);
+            assert_string_equal(hinted, want);
+            assert_int_equal(digits, prec);
+        }
+        by_digits[prec]++;
+    }
+    for (int p = 15; p <= 17; p++) assert_true(by_digits[p] > 0); /* every branch taken */
 }
 
 static void seams_roundtrip(void **state)
@@ -184,6 +231,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(random_values_roundtrip_bitwise),
         cmocka_unit_test(short_numbers_stay_short),
+        cmocka_unit_test(numbers_print_shortest),
         cmocka_unit_test(seams_roundtrip),
         cmocka_unit_test(shared_meshes_roundtrip),
         cmocka_unit_test(invalid_mesh_leaves_target_untouched),
