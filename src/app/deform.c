@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "geom/predicates.h"
+#include "mesh/vertex_order.h"
 #include "opt/handle_term.h"
 #include "scaffold/scaf_loop.h"
 #include "scaffold/scaffold_cdt.h"
@@ -40,6 +41,15 @@ static scaf_status rest_is_ccw(int nv, const double *P, int nf, const int *F, sc
     return SCAF_OK;
 }
 
+/* out (input numbering) from X (working numbering), nv by 2. */
+static void to_input(int nv, const int *rank, const double *X, double *out)
+{
+    for (int v = 0; v < nv; v++) {
+        out[2 * v] = X[2 * (size_t)rank[v]];
+        out[2 * v + 1] = X[2 * (size_t)rank[v] + 1];
+    }
+}
+
 scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, const int *hv,
                        const double *ht, int nframes, const double *frames, deform_options *o,
                        double *out, deform_result *r, scaf_error *err)
@@ -58,19 +68,52 @@ scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, co
                        "are needed");
     scaf_status st = rest_is_ccw(nv, P, nf, F, err);
     if (st != SCAF_OK) return st;
-    double *V3 = malloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
-    if (!V3) return err_nomem(err, "deform");
+    for (int i = 0; i < nh; i++) /* checked here: the loop sees other numbers */
+        if (hv[i] < 0 || hv[i] >= nv)
+            return err_set(err, SCAF_ERR_USAGE, "handle %d: vertex %d is not in [0, %d)", i, hv[i],
+                           nv);
+    /* The loop runs on the vertices numbered breadth first, as scaf
+     * param's working mesh (mesh/vertex_order): a triangle's corners get
+     * close numbers whatever the input's order, so the iteration's passes
+     * stay in cache. rank[v]: input vertex v's working number. */
+    size_t nv1 = (size_t)(nv > 0 ? nv : 1);
+    int *rank = malloc(sizeof(int) * nv1),
+        *Fw = malloc(sizeof(int) * 3 * (size_t)(nf > 0 ? nf : 1));
+    int *hw = malloc(sizeof(int) * (size_t)(nh > 0 ? nh : 1));
+    double *V3 = malloc(sizeof(double) * 3 * nv1), *Pw = malloc(sizeof(double) * 2 * nv1);
+    if (!rank || !Fw || !hw || !V3 || !Pw) st = err_nomem(err, "deform");
+    if (st == SCAF_OK) st = mesh_vertex_order_breadth_first(3, nf, F, nv, rank, err);
+    if (st != SCAF_OK) {
+        free(rank);
+        free(Fw);
+        free(hw);
+        free(V3);
+        free(Pw);
+        return st;
+    }
+    for (size_t k = 0; k < 3 * (size_t)nf; k++) Fw[k] = rank[F[k]];
+    for (int i = 0; i < nh; i++) hw[i] = rank[hv[i]];
     for (int v = 0; v < nv; v++) {
-        V3[3 * v] = P[2 * v];
-        V3[3 * v + 1] = P[2 * v + 1];
-        V3[3 * v + 2] = 0.0;
+        int r = rank[v];
+        Pw[2 * r] = P[2 * v];
+        Pw[2 * r + 1] = P[2 * v + 1];
+        V3[3 * r] = P[2 * v];
+        V3[3 * r + 1] = P[2 * v + 1];
+        V3[3 * r + 2] = 0.0;
     }
     scaf_loop L;
     opt_handle_term h;
     opt_handle_term_init(&h, 2, nv);
-    st = scaf_loop_init(&L, nv, V3, nf, F, P, NULL, err);
+    st = scaf_loop_init(&L, nv, V3, nf, Fw, Pw, NULL, err);
     free(V3);
-    if (st != SCAF_OK) return st;
+    free(Pw);
+    free(Fw);
+    if (st != SCAF_OK) {
+        free(rank);
+        free(hw);
+        return st;
+    }
+    hv = hw;
     double w = opt_handle_weight(o->weight_ratio, L.total_area, nh);
     st = opt_handle_term_set(&h, nh, hv, nframes > 0 ? frames : ht, w, err);
     if (st == SCAF_OK) {
@@ -98,7 +141,7 @@ scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, co
             r->stop = SCAF_STOP_ERROR;
             break;
         }
-        memcpy(out, L.uv, sizeof(double) * 2 * (size_t)nv);
+        to_input(nv, rank, L.uv, out);
         r->iterations = L.iterations;
         if (o->progress) {
             o->current = out;
@@ -126,5 +169,7 @@ scaf_status deform_run(int nv, const double *P, int nf, const int *F, int nh, co
     r->iterations = L.iterations;
     scaf_loop_free(&L);
     opt_handle_term_free(&h);
+    free(rank);
+    free(hw);
     return st;
 }

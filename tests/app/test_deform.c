@@ -9,12 +9,15 @@
  *   - a grid whose handles are dragged across each other's paths (rows
  *     swapped end to end, columns pulled through each other): bijective at
  *     every iteration, the total energy going down;
+ *   - the same mesh with its vertices scrambled deforms alike (the loop
+ *     numbers them breadth first itself);
  *   - a clockwise rest shape is refused (SCAF_ERR_MESH). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
@@ -169,6 +172,61 @@ static void grid_handles_dragged_across_each_other(void **state)
     mesh_free(&m);
 }
 
+/* The loop works on its own (breadth-first) numbering: the same mesh with
+ * its vertices scrambled gives the same deformation in the caller's
+ * numbering (to rounding: sums run in another order), and a handle out of
+ * range is named by the caller's numbers. */
+static void vertex_numbering_does_not_matter(void **state)
+{
+    (void)state;
+    mesh m;
+    assert_int_equal(mesh_sample_make("grid", 8, &m, NULL), SCAF_OK);
+    int nv = m.nv, nf = m.nf;
+    double *P = planar(&m), *X = malloc(sizeof(double) * 2 * (size_t)nv);
+    double *Ps = malloc(sizeof(double) * 2 * (size_t)nv),
+           *Xs = malloc(sizeof(double) * 2 * (size_t)nv);
+    int *pi = malloc(sizeof(int) * (size_t)nv), *Fs = malloc(sizeof(int) * 3 * (size_t)nf);
+    assert_true(X && Ps && Xs && pi && Fs);
+    for (int v = 0; v < nv; v++)
+        pi[v] = (int)(((long long)v * 37 + 11) % nv); /* 37 coprime to 81 */
+    for (int v = 0; v < nv; v++) Ps[2 * pi[v]] = P[2 * v], Ps[2 * pi[v] + 1] = P[2 * v + 1];
+    for (int k = 0; k < 3 * nf; k++) Fs[k] = pi[m.F[k]];
+    int hv[3] = {0, 40, 80}, hs[3];
+    double ht[6] = {0.2, 0.1, 0.5, 0.7, 1.1, 0.9};
+    for (int i = 0; i < 3; i++) hs[i] = pi[hv[i]];
+    deform_options o = deform_options_default();
+    o.iterations = 12;
+    o.tolerance = 0;
+    deform_result r, rs;
+    scaf_error err;
+    assert_int_equal(deform_run(nv, P, nf, m.F, 3, hv, ht, 0, NULL, &o, X, &r, &err), SCAF_OK);
+    assert_int_equal(deform_run(nv, Ps, nf, Fs, 3, hs, ht, 0, NULL, &o, Xs, &rs, &err), SCAF_OK);
+    assert_int_equal(r.iterations, rs.iterations);
+    assert_true(r.energy > 4.0); /* it did deform */
+    assert_true(fabs(r.energy - rs.energy) <= 1e-9 * r.energy);
+    double worst = 0;
+    for (int v = 0; v < nv; v++)
+        for (int a = 0; a < 2; a++) worst = fmax(worst, fabs(X[2 * v + a] - Xs[2 * pi[v] + a]));
+    print_message("scrambled numbering: largest position difference %.3g, E %.9f / %.9f\n", worst,
+                  r.energy, rs.energy);
+    assert_true(worst < 1e-8);
+    for (int i = 0; i < 3; i++) /* the handles reached their targets alike */
+        assert_true(hypot(X[2 * hv[i]] - ht[2 * i], X[2 * hv[i] + 1] - ht[2 * i + 1]) < 0.05);
+    hv[1] = nv;
+    assert_int_equal(deform_run(nv, P, nf, m.F, 3, hv, ht, 0, NULL, &o, X, &r, &err),
+                     SCAF_ERR_USAGE);
+    char want[64];
+    snprintf(want, sizeof want, "handle 1: vertex %d is not in [0, %d)", nv, nv);
+    assert_non_null(strstr(err.message, want));
+    free(P);
+    free(X);
+    free(Ps);
+    free(Xs);
+    free(pi);
+    free(Fs);
+    mesh_free(&m);
+}
+
 static void clockwise_rest_is_refused(void **state)
 {
     (void)state;
@@ -190,6 +248,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(spiral_reaches_targets_only_with_remeshing),
         cmocka_unit_test(grid_handles_dragged_across_each_other),
+        cmocka_unit_test(vertex_numbering_does_not_matter),
         cmocka_unit_test(clockwise_rest_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
