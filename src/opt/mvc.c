@@ -14,6 +14,9 @@
 
 #include <umfpack.h>
 
+#include "base/parallel.h"
+#include "opt/blas_threads.h"
+
 /* tan(theta/2) of the angle between u and v, or 0 when it is not a
  * positive finite number (degenerate corner). sin/(1+cos) loses digits
  * near theta = pi, (1-cos)/sin near 0: pick the stable one by the sign of
@@ -101,6 +104,27 @@ int opt_mvc_corner_weights(int nv, const double *V, int nf, const int *F, double
     return nbad;
 }
 
+/* The u and v solves with one LU: independent (each allocates its own
+ * workspace; the factor is only read), so they run side by side when
+ * there are threads. */
+typedef struct uv_solves {
+    SuiteSparse_long n;
+    const SuiteSparse_long *Ap, *Ai;
+    const double *Ax, *b;
+    double *x;
+    void *num;
+    int rc[2];
+} uv_solves;
+
+static void solve_one(void *ctx, int c)
+{
+    uv_solves *S = ctx;
+    double info[UMFPACK_INFO];
+    size_t off = (size_t)c * (size_t)S->n;
+    S->rc[c] = umfpack_dl_solve(UMFPACK_A, S->Ap, S->Ai, S->Ax, S->x + off, S->b + off, S->num,
+                                NULL, info);
+}
+
 scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F, const unsigned char *fixed,
                           double *UV, scaf_error *err)
 {
@@ -172,9 +196,14 @@ scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F, const u
     double info[UMFPACK_INFO];
     rc = umfpack_dl_symbolic(n, n, Ap, Ai, Ax, &sym, NULL, info);
     if (rc == UMFPACK_OK) rc = umfpack_dl_numeric(Ap, Ai, Ax, sym, &num, NULL, info);
-    for (int c = 0; c < 2 && rc == UMFPACK_OK; c++)
-        rc = umfpack_dl_solve(UMFPACK_A, Ap, Ai, Ax, x + (size_t)c * n, b + (size_t)c * n, num,
-                              NULL, info);
+    if (rc == UMFPACK_OK) {
+        /* BLAS in one thread while the two solves take the threads */
+        uv_solves S = {n, Ap, Ai, Ax, b, x, num, {UMFPACK_OK, UMFPACK_OK}};
+        int blas = opt_blas_serial_begin(par_threads());
+        par_run(2, solve_one, &S);
+        opt_blas_serial_end(blas);
+        rc = S.rc[0] != UMFPACK_OK ? S.rc[0] : S.rc[1];
+    }
     if (rc == UMFPACK_ERROR_out_of_memory) {
         st = err_nomem(err, "mean-value factorization");
         goto done;
