@@ -29,6 +29,8 @@
 
 #include <cholmod.h>
 
+#include "bench_median.h"
+
 #include "base/timer.h"
 #include "mesh/mesh_io.h"
 #include "mesh/topology.h"
@@ -43,18 +45,6 @@
 extern void openblas_set_num_threads(int) __attribute__((weak));
 extern int omp_get_max_active_levels(void) __attribute__((weak));
 extern void omp_set_max_active_levels(int) __attribute__((weak));
-
-static int cmp_d(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_d);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 static int cmp_ll(const void *a, const void *b)
 {
@@ -180,7 +170,7 @@ int main(int argc, char **argv)
         it[k] = info.seconds;
         if (k == K - 1) fsum = info.phase_seconds[SCAF_PHASE_FACTORIZATION];
     }
-    double it_med = K > 1 ? median(it + 1, K - 1) : it[0]; /* the first has METIS */
+    double it_med = K > 1 ? bench_median(it + 1, K - 1) : it[0]; /* the first has METIS */
 
     /* The last system and the loop's permutation. */
     const opt_csc *A = scaf_loop_last_system(&L);
@@ -315,10 +305,12 @@ int main(int argc, char **argv)
     int Rn = R < 64 ? R : 64;
     for (int v = 0; v < nvar; v++) {
         if (var[v].threads != T) continue;
-        double a = median(ta[v], Rn), f = median(tf[v], Rn), so = median(ts[v], Rn);
+        double a = bench_median(ta[v], Rn), f = bench_median(tf[v], Rn),
+               so = bench_median(ts[v], Rn);
         for (int r = 0; r < Rn; r++) ts[v][r] += tf[v][r];
         printf("| %s | %ld | %.0f | %.3g | %.4f | %.4f | %.4f | %.4f | %.2f |\n", var[v].name,
-               nsuper[v], lnz[v], fl[v], a, f, so, median(ts[v], Rn), f > 0 ? it_med / f : 0.0);
+               nsuper[v], lnz[v], fl[v], a, f, so, bench_median(ts[v], Rn),
+               f > 0 ? it_med / f : 0.0);
     }
     cholmod_finish(&cm);
     free(perm);

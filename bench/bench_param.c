@@ -28,6 +28,8 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "bench_median.h"
+
 #include "mesh/mesh_io.h"
 #include "scaf/scaf.h"
 
@@ -66,19 +68,6 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
     fprintf(stderr, "\r  iteration %d  E = %.5f  %.3f s   ", info->iteration, info->energy,
             info->seconds);
     return 0;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    if (n <= 0) return 0;
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 static void bench(const char *rel, int iterations, const char *ref_energy)
@@ -124,7 +113,7 @@ static void bench(const char *rel, int iterations, const char *ref_energy)
         total += r.it[i].seconds;
         for (int k = 0; k < SCAF_PHASE_COUNT; k++) phase[k] += r.it[i].phase_seconds[k];
     }
-    double mw = median(w, r.n), mf = median(f, r.n), mc = median(r.cpu, r.n);
+    double mw = bench_median(w, r.n), mf = bench_median(f, r.n), mc = bench_median(r.cpu, r.n);
     int dom = 0;
     for (int k = 1; k < SCAF_PHASE_COUNT; k++)
         if (phase[k] > phase[dom]) dom = k;

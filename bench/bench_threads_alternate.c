@@ -24,6 +24,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_median.h"
+
 #include "mesh/mesh_io.h"
 #include "scaf/scaf.h"
 
@@ -31,19 +33,6 @@ static int keep_info(const scaf_iteration_info_t *info, void *user)
 {
     *(scaf_iteration_info_t *)user = *info;
     return 0;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    if (n <= 0) return 0;
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 /* The thread count of counted iteration i: 1, N, N, 1, 1, N, N, 1, ... */
@@ -111,7 +100,7 @@ int main(int argc, char **argv)
             for (int i = 0; i < K; i++)
                 if ((threads_at(i, nt) == 1) == (c == 0))
                     v[n++] = k == SCAF_PHASE_COUNT ? it[i].seconds : it[i].phase_seconds[k];
-            med[c][k] = median(v, n);
+            med[c][k] = bench_median(v, n);
         }
     printf("\n");
     phase_header("threads | iteration", 2);
@@ -136,7 +125,7 @@ int main(int argc, char **argv)
     }
     printf("\n\nadjacent pairs (1 thread / %d threads): median %.2fx over %d pairs, range "
            "%.2f-%.2fx; E %.9f\n",
-           nt, median(v, np), np, lo, hi, scaf_param_energy(p));
+           nt, bench_median(v, np), np, lo, hi, scaf_param_energy(p));
     free(v);
     free(it);
     scaf_param_destroy(p);
