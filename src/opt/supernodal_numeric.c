@@ -222,36 +222,6 @@ VECTOR_CLONES static int small_cholesky(double *A, int ld, int w)
     return -1;
 }
 
-/* Factor the diagonal block of sn (nscol x nscol, lower); -1, or the first
- * column where the matrix is not positive definite. Left-looking by blocks
- * of TRSM_BLOCK columns: each block's columns lose the blocks before them
- * (one dgemm, which also writes the block's strict upper triangle, zeroed
- * again by small_cholesky), then its triangle is factored and the rows
- * below it in the diagonal block are solved. dpotrf ran at 1-5 GFlop/s on
- * aphrodite's narrow supernodes. */
-static int factor_diagonal(const opt_snum *P, int sn, double *X)
-{
-    int k1 = P->super[sn], nscol = P->super[sn + 1] - k1, nsrow = P->pi[sn + 1] - P->pi[sn];
-    for (int j0 = 0; j0 < nscol; j0 += TRSM_BLOCK) {
-        int w = nscol - j0 < TRSM_BLOCK ? nscol - j0 : TRSM_BLOCK, m = nscol - j0;
-        double *Xj = X + j0 + (size_t)j0 * (size_t)nsrow;
-        if (j0 > 0)
-            dgemm_("N", "T", &m, &w, &j0, &minus_one, X + j0, &nsrow, X + j0, &nsrow, &one, Xj,
-                   &nsrow);
-        int j = small_cholesky(Xj, nsrow, w);
-        if (j >= 0) return k1 + j0 + j;
-        if (m > w) small_trsm(Xj + w, nsrow, Xj, nsrow, m - w, w);
-    }
-    return -1;
-}
-
-/* A column block's rows below its triangle, shared by the threads when
- * they hold at least this many multiply-adds (~150 us at one thread).
- * Below it the extra calls and the wake cost more than they save: with
- * 2^17, aphrodite's 488-column top block took 1.65 ms shared against
- * 1.29 ms in one thread. */
-#define DIAG_ROWS_PARALLEL_MIN 4194304.0
-
 typedef struct diag_job {
     const opt_snum *P;
     double *X;
@@ -277,30 +247,38 @@ static void run_diag_rows(void *ctx, int k)
     small_trsm(R, nsrow, Xj, nsrow, m, w);
 }
 
-/* factor_diagonal with the threads (a supernode above the cut): per
- * column block, its triangle's rows in the calling thread, the rows below
- * them shared. On 1.77M faces the widest top supernode's diagonal block
- * (1,948 columns, 2.5 GFlop) took 94 ms in one thread while the other
- * waited; shared, 52 ms. */
-static int factor_diagonal_shared(const opt_snum *P, int sn, double *X)
+/* Factor the diagonal block of sn (nscol x nscol, lower); -1, or the first
+ * column where the matrix is not positive definite. Left-looking by blocks
+ * of TRSM_BLOCK columns: each block's columns lose the blocks before them
+ * (one dgemm, which also writes the block's strict upper triangle, zeroed
+ * again by small_cholesky), then its triangle is factored and the rows
+ * below it in the diagonal block are solved. dpotrf ran at 1-5 GFlop/s on
+ * aphrodite's narrow supernodes. With share (a supernode above the cut),
+ * a block's rows below its triangle go to the threads when they hold
+ * P->diag_share_min multiply-adds (run_diag_rows): on 1.77M faces the widest top supernode's
+ * diagonal block (1,948 columns, 2.5 GFlop) took 94 ms in one thread
+ * while the other waited, 52 ms shared. */
+static int factor_diagonal(const opt_snum *P, int sn, double *X, int share)
 {
     int k1 = P->super[sn], nscol = P->super[sn + 1] - k1, nsrow = P->pi[sn + 1] - P->pi[sn];
     diag_job D = {P, X, nsrow, nscol, 0, 0};
     for (int j0 = 0; j0 < nscol; j0 += TRSM_BLOCK) {
-        int w = nscol - j0 < TRSM_BLOCK ? nscol - j0 : TRSM_BLOCK, below = nscol - j0 - w;
+        int w = nscol - j0 < TRSM_BLOCK ? nscol - j0 : TRSM_BLOCK, m = nscol - j0;
+        int split = share && (double)(m - w) * (double)w * (double)(j0 + w) >= P->diag_share_min;
+        int rows = split ? w : m; /* rows updated here: the triangle's, or all */
         double *Xj = X + j0 + (size_t)j0 * (size_t)nsrow;
         if (j0 > 0)
-            dgemm_("N", "T", &w, &w, &j0, &minus_one, X + j0, &nsrow, X + j0, &nsrow, &one, Xj,
+            dgemm_("N", "T", &rows, &w, &j0, &minus_one, X + j0, &nsrow, X + j0, &nsrow, &one, Xj,
                    &nsrow);
         int j = small_cholesky(Xj, nsrow, w);
         if (j >= 0) return k1 + j0 + j;
-        if (below == 0) break;
-        D.j0 = j0;
-        D.w = w;
-        if ((double)below * (double)w * (double)(j0 + w) >= DIAG_ROWS_PARALLEL_MIN)
+        if (split) {
+            D.j0 = j0;
+            D.w = w;
             par_run(P->threads, run_diag_rows, &D);
-        else
-            for (int k = 0; k < P->threads; k++) run_diag_rows(&D, k);
+        } else if (m > w) {
+            small_trsm(Xj + w, nsrow, Xj, nsrow, m - w, w);
+        }
     }
     return -1;
 }
@@ -320,7 +298,7 @@ static int factor_super(const opt_snum *P, opt_snum_worker *wk, int sn, const do
     double *X = Lx + P->px[sn];
     assemble(P, sn, Ax, X);
     apply_list(P, wk, sn, head, Lx, X);
-    int minor = factor_diagonal(P, sn, X);
+    int minor = factor_diagonal(P, sn, X, 0);
     if (minor >= 0) return minor;
     solve_below(P, sn, X, 0, P->pi[sn + 1] - P->pi[sn] - (P->super[sn + 1] - P->super[sn]));
     link_done(P, sn, head);
@@ -452,8 +430,7 @@ static int factor_top(opt_snum *P, int sn, const double *Ax, double *Lx)
     } else {
         for (int k = 0; k < T; k++) apply_list(P, &P->w[k], sn, P->w[k].head, Lx, X);
     }
-    int minor =
-        opt_snum_top_parallel(P, sn) ? factor_diagonal_shared(P, sn, X) : factor_diagonal(P, sn, X);
+    int minor = factor_diagonal(P, sn, X, opt_snum_top_parallel(P, sn));
     if (minor >= 0) return minor;
     if (opt_snum_top_parallel(P, sn)) par_run(T, run_top_solve, &J);
     else solve_below(P, sn, X, 0, P->pi[sn + 1] - P->pi[sn] - (P->super[sn + 1] - P->super[sn]));

@@ -484,6 +484,7 @@ opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int th
     int T = plan_bins(P, threads);
     if (T < 1) goto fail;
     P->threads = T;
+    P->diag_share_min = OPT_SNUM_DIAG_SHARE_MIN;
     P->toprow = malloc(((size_t)n + 1) * sizeof *P->toprow);
     P->y = malloc(((size_t)n + 1) * sizeof *P->y);
     if (!P->toprow || !P->y) goto fail;

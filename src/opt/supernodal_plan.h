@@ -43,16 +43,24 @@ typedef struct opt_snum {
     const int *kptr, *ksrc;         /* by supernode: value index, */
     const unsigned *kpos;           /* column << 16 | row's place */
     int kept_reused;                /* the kept entries came from an earlier plan */
-    int *order, *bptr;  /* bin k: order[bptr[k] .. bptr[k+1]); the rest: above the cut */
-    int *toprow;        /* n: a row's index among the rows above the cut, or -1 */
-    int ntop;           /* rows above the cut */
-    double *y;          /* n: the solve's vector, in the factor's order */
-    opt_snum_worker *w; /* threads */
+    int *order, *bptr;     /* bin k: order[bptr[k] .. bptr[k+1]); the rest: above the cut */
+    int *toprow;           /* n: a row's index among the rows above the cut, or -1 */
+    int ntop;              /* rows above the cut */
+    double *y;             /* n: the solve's vector, in the factor's order */
+    opt_snum_worker *w;    /* threads */
+    double diag_share_min; /* OPT_SNUM_DIAG_SHARE_MIN (tests may lower it) */
 } opt_snum;
 
 /* Supernodes above the cut with at least this many stored entries get the
  * threads (a par_run costs tens of microseconds). */
 #define OPT_SNUM_TOP_PARALLEL_MIN 16384.0
+
+/* In a shared supernode's diagonal block, a column block's rows below its
+ * triangle go to the threads when they hold at least this many
+ * multiply-adds (~150 us at one thread). Below it the extra calls and the
+ * wake cost more than they save: with 2^17, aphrodite's 488-column top
+ * block took 1.65 ms shared against 1.29 ms in one thread. */
+#define OPT_SNUM_DIAG_SHARE_MIN 4194304.0
 
 /* Plan for matrices with A's pattern (upper, natural order) on L, a
  * supernodal factor of that pattern, for `threads` threads. L keeps its

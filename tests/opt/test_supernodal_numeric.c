@@ -118,6 +118,11 @@ static void check_solve(fixture *f, opt_snum *P, const cholmod_factor *L)
 /* A numeric copy of the symbolic factor, factored by a plan for T threads
  * (and, when positive definite, solved with); returns the plan's result,
  * the factor in *out. */
+/* >= 0: the plan's diag_share_min for own_factor (0: every column block
+ * of a shared diagonal block splits its rows between the threads, which
+ * the default threshold leaves to larger factors than these grids). */
+static double diag_share_min = -1;
+
 static int own_factor(fixture *f, const opt_csc *A, int T, cholmod_factor **out,
                       opt_snum_shape *shape)
 {
@@ -126,6 +131,7 @@ static int own_factor(fixture *f, const opt_csc *A, int T, cholmod_factor **out,
     par_set_threads(T);
     opt_snum *P = opt_snum_create(L, A, T);
     assert_non_null(P);
+    if (diag_share_min >= 0) P->diag_share_min = diag_share_min;
     if (shape) *shape = opt_snum_get_shape(P);
     int r = opt_snum_factor(P, A, L);
     if (r < 0 && A == &f->A) check_solve(f, P, L);
@@ -189,18 +195,29 @@ static void equals_cholmod_amd_relaxed(void **state)
 }
 
 /* A grid large enough for supernodes above the cut to be shared by the
- * threads (their columns split between them, their rows below too). */
+ * threads (their columns split between them, their rows below too), and
+ * again with every column block of their diagonal blocks split between
+ * the threads: CHOLMOD's factor to rounding, the same bits twice. */
 static void shared_supernodes_above_the_cut(void **state)
 {
     (void)state;
     fixture f;
     setup_fixture(&f, 110, CHOLMOD_METIS, 2);
-    cholmod_factor *L;
-    opt_snum_shape sh;
-    assert_int_equal(own_factor(&f, &f.A, 2, &L, &sh), -1);
-    assert_true(sh.above_parallel > 0);
-    assert_true(max_rel_diff(L, f.ref) < 1e-12);
-    cholmod_free_factor(&L, &f.cm);
+    size_t bytes = f.ref->xsize * sizeof(double);
+    for (int split = 0; split <= 1; split++)
+        for (int T = 2; T <= 3; T++) {
+            diag_share_min = split ? 0 : -1;
+            cholmod_factor *L, *L2;
+            opt_snum_shape sh;
+            assert_int_equal(own_factor(&f, &f.A, T, &L, &sh), -1);
+            assert_true(sh.above_parallel > 0);
+            assert_true(max_rel_diff(L, f.ref) < 1e-12);
+            assert_int_equal(own_factor(&f, &f.A, T, &L2, NULL), -1);
+            assert_memory_equal(L->x, L2->x, bytes);
+            cholmod_free_factor(&L, &f.cm);
+            cholmod_free_factor(&L2, &f.cm);
+        }
+    diag_share_min = -1;
     teardown_fixture(&f);
 }
 
@@ -232,13 +249,16 @@ static void not_positive_definite_where_cholmod_says(void **state)
             while (super[sn + 1] <= (int)C->minor) sn++;
             assert_true((int)C->minor - super[sn] >= 32);
         }
-        for (int T = 1; T <= 3; T++) {
+        for (int run = 0; run < 6; run++) { /* 1-3 threads; the rows split or not */
+            int T = 1 + run % 3;
+            diag_share_min = run < 3 ? -1 : 0;
             cholmod_factor *L;
             int r = own_factor(&f, &B, T, &L, NULL);
             assert_int_equal(r, (int)C->minor);
             assert_int_equal(L->minor, C->minor);
             cholmod_free_factor(&L, &f.cm);
         }
+        diag_share_min = -1;
         cholmod_free_factor(&C, &f.cm);
         free(B.val);
     }
