@@ -45,6 +45,10 @@ int main(int argc, char **argv)
         return 1;
     }
     const char *in = argv[a], *out = a + 1 < argc ? argv[a + 1] : "/tmp/bench_write.obj";
+    if (strcmp(in, out) == 0) {
+        fprintf(stderr, "bench_write: OUT must not be the input (%s)\n", in);
+        return 1;
+    }
     mesh m;
     scaf_error err;
     if (mesh_read(in, &m, NULL, &err) != SCAF_OK) {
