@@ -24,13 +24,14 @@
 #include "opt/csc.h"
 
 typedef struct opt_snum_worker {
-    int *map;    /* row -> its place in the supernode being factored */
-    int *rel;    /* a descendant's rows -> places in that supernode */
-    double *C;   /* a descendant's update */
-    int *head;   /* descendants waiting on each supernode */
-    int minor;   /* first column found not positive definite, or -1 */
-    double *tmp; /* solve: a supernode's rows below its diagonal block */
-    double *acc; /* solve: this bin's updates of the rows above the cut */
+    int *map;        /* row -> its place in the supernode being factored */
+    int *rel;        /* a descendant's rows -> places in that supernode */
+    double *C;       /* a descendant's update */
+    int *head;       /* descendants waiting on each supernode */
+    int minor;       /* first column found not positive definite, or -1 */
+    double *tmp;     /* solve: a supernode's rows below its diagonal block */
+    double *acc;     /* solve: this bin's updates of the rows above the cut */
+    size_t prefetch; /* backward sweep: the lowest factor value prefetched */
 } opt_snum_worker;
 
 typedef struct opt_snum {

@@ -45,9 +45,32 @@ void opt_snum_forward_super(const opt_snum *P, opt_snum_worker *wk, int sn, cons
     }
 }
 
+/* How far below the block being solved the backward sweep prefetches (in
+ * doubles: 16 KB). The sweep walks the factor's blocks from the last to
+ * the first, each block upwards: the hardware follows the run inside a
+ * block but not the jump to the block below, so every block started with
+ * a wait on memory (aphrodite: the backward sweep 7.8-8.0 -> 5.5-5.7 ms;
+ * 4 KB ahead 7.2-7.5, 32-128 KB the same as 16 KB). */
+#define PREFETCH_AHEAD 2048
+
+/* Prefetch the factor's values from *cur down to PREFETCH_AHEAD below
+ * start (the block being solved, ending at end); *cur restarts at start
+ * when the last block solved was not just above this one. */
+static void prefetch_below(const double *Lx, size_t *cur, size_t start, size_t end)
+{
+    if (*cur > end || *cur + PREFETCH_AHEAD < start) *cur = start;
+    size_t want = start > PREFETCH_AHEAD ? start - PREFETCH_AHEAD : 0;
+    while (*cur > want) {
+        *cur = *cur > 8 ? *cur - 8 : 0;
+        __builtin_prefetch(Lx + *cur);
+    }
+}
+
 /* Backward step of supernode sn: y_s = L_ss^-T (y_s - L_below^T y_below). */
 static void backward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx)
 {
+    size_t start = (size_t)P->px[sn], end = (size_t)P->px[sn + 1];
+    prefetch_below(Lx, &wk->prefetch, start, end);
     int k1 = P->super[sn], nscol = P->super[sn + 1] - k1;
     int nsrow = P->pi[sn + 1] - P->pi[sn], nrest = nsrow - nscol;
     const double *X = Lx + P->px[sn];
@@ -77,6 +100,7 @@ static void run_bin_forward(void *ctx, int k)
 static void run_bin_backward(void *ctx, int k)
 {
     solve_job *J = ctx;
+    J->P->w[k].prefetch = (size_t)-1;
     for (int i = J->P->bptr[k + 1] - 1; i >= J->P->bptr[k]; i--)
         backward_super(J->P, &J->P->w[k], J->P->order[i], J->Lx);
 }
@@ -105,6 +129,7 @@ void opt_snum_backward(opt_snum *P, const cholmod_factor *L, double *x)
     const int *perm = L->Perm;
     solve_job J = {P, L->x};
     int blas = opt_blas_serial_begin(T);
+    P->w[0].prefetch = (size_t)-1;
     for (int i = ns - 1; i >= top; i--) backward_super(P, &P->w[0], P->order[i], L->x);
     if (T > 1) par_run(T, run_bin_backward, &J);
     opt_blas_serial_end(blas);
