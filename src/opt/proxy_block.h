@@ -32,8 +32,18 @@ typedef struct opt_proxy_block {
                       whole system when other blocks use higher dofs) */
     int *vcolptr;         /* nfree+1: vertex-level upper pattern, columns by dof */
     int *vrowidx;         /* vertex-level rows (dofs), ascending, diagonal last */
-    int *map;             /* ns by (d+1)(d+2)/2: vertex-level entry of each local
-                      corner pair (i <= j), -1 when a corner is fixed */
+    int *map;             /* pair and vertex blocks: the vertex-level entry of
+                             each pair (see their pattern functions) */
+    int *pos;             /* simplex blocks, ns by (d+1)(d+2)/2: where the
+                             block of each local corner pair (i <= j) starts
+                             in A's values (its first scalar column), -1
+                             when a corner is fixed */
+    int *stride;          /* simplex blocks, nfree: for each vertex column,
+                             the distance in A's values between its first two
+                             scalar columns (column a2 of the pair block at
+                             pos starts at pos + a2 * stride + a2 (a2 - 1) / 2) */
+    int plain;            /* simplex blocks: every simplex has distinct free
+                             corners (the fill then skips its per-pair tests) */
     opt_csc A;            /* scalar upper CSC, nfree*d square; values from fill */
     unsigned version;     /* incremented each time the pattern is rebuilt */
     opt_fill_split split; /* a parallel fill's per-batch column ranges,
