@@ -120,10 +120,10 @@ static scaf_status finish_pattern(opt_proxy_block *b, row_id *ent, int *fill, sc
 }
 
 /* A simplex block's vertex-level entries (map) turned in place into the
- * positions of their values (pos), and the columns' strides. Before, the
- * fill looked up dof, vcolptr and colptr per corner pair (aphrodite: the
- * chart's fill 6.8 ms, of which the scatter about half); after, the
- * assembly took 20% less. Frees the block on failure. */
+ * positions of their values (pos), and the columns' strides: the fill
+ * used to look up vcolptr and two colptr entries per corner pair
+ * (aphrodite, one thread: the chart's fill 6.7-7.5 -> 5.4-6.3 ms with
+ * scatter_triangle). Frees the block on failure. */
 static scaf_status simplex_positions(opt_proxy_block *b, const opt_simplices *S, const int *dof,
                                      scaf_error *err)
 {
@@ -135,15 +135,13 @@ static scaf_status simplex_positions(opt_proxy_block *b, const opt_simplices *S,
         return err_nomem(err, "proxy system pattern");
     }
     for (int c = 0; c < b->nfree; c++) b->stride[c] = d > 1 ? cp[c * d + 1] - cp[c * d] : 0;
-    b->plain = 1;
     for (int s = 0; s < S->n; s++) {
         const int *ix = S->idx + (size_t)s * nc;
         int *mp = b->map + (size_t)s * P, p = 0;
         for (int i = 0; i < nc; i++)
             for (int j = i; j < nc; j++, p++) {
-                int di = dof[ix[i]], dj = dof[ix[j]], col = di > dj ? di : dj;
-                if (di < 0 || (i != j && di == dj)) b->plain = 0;
                 if (mp[p] < 0) continue;
+                int di = dof[ix[i]], dj = dof[ix[j]], col = di > dj ? di : dj;
                 mp[p] = cp[col * d] + (mp[p] - b->vcolptr[col]) * d;
             }
     }
@@ -378,8 +376,7 @@ static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, 
 
 /* scatter_d for a triangle whose corners are free, distinct and all in
  * the range (dofs d3): the same operations in the same order, without its
- * per-pair tests (aphrodite: the chart's fill 20% faster than through
- * scatter_d). */
+ * per-pair tests (aphrodite, one thread: assembly 8.2 -> 7.7 ms). */
 static inline void scatter_triangle(opt_proxy_block *b, const opt_simplices *S, int s,
                                     const int *d3, const double *M, const double *lin, double *rhs)
 {
@@ -594,16 +591,8 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
             int m = S->n - s0 < SD2_BATCH ? S->n - s0 : SD2_BATCH;
             double w2 = opt_sd2_proxy_range(S, X, (size_t)s0, (size_t)(s0 + m), w2_cap, loc);
             if (w2 > w2max) w2max = w2;
-            for (int l = 0; l < m; l++) {
-                const double *M = loc + 10 * l;
-                if (b->plain) {
-                    const int *ix = S->idx + (size_t)(s0 + l) * 3;
-                    int d3[3] = {dof[ix[0]], dof[ix[1]], dof[ix[2]]};
-                    scatter_triangle(b, S, s0 + l, d3, M, M + 4, rhs);
-                } else {
-                    scatter(b, S, s0 + l, dof, X, M, M + 4, rhs, 0, INT_MAX);
-                }
-            }
+            for (int l = 0; l < m; l++)
+                scatter(b, S, s0 + l, dof, X, loc + 10 * l, loc + 10 * l + 4, rhs, 0, INT_MAX);
         }
         return w2max;
     }

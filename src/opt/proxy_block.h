@@ -42,8 +42,6 @@ typedef struct opt_proxy_block {
                              the distance in A's values between its first two
                              scalar columns (column a2 of the pair block at
                              pos starts at pos + a2 * stride + a2 (a2 - 1) / 2) */
-    int plain;            /* simplex blocks: every simplex has distinct free
-                             corners (the fill then skips its per-pair tests) */
     opt_csc A;            /* scalar upper CSC, nfree*d square; values from fill */
     unsigned version;     /* incremented each time the pattern is rebuilt */
     opt_fill_split split; /* a parallel fill's per-batch column ranges,
