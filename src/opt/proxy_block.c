@@ -36,6 +36,7 @@ void opt_proxy_block_free(opt_proxy_block *b)
     free(b->map);
     free(b->pos);
     free(b->stride);
+    free(b->first);
     opt_csc_free(&b->A);
     opt_fill_split_free(&b->split);
     unsigned v = b->version;
@@ -135,6 +136,25 @@ static scaf_status simplex_positions(opt_proxy_block *b, const opt_simplices *S,
         return err_nomem(err, "proxy system pattern");
     }
     for (int c = 0; c < b->nfree; c++) b->stride[c] = d > 1 ? cp[c * d + 1] - cp[c * d] : 0;
+    /* each entry's first writer, while map still holds entries */
+    unsigned char *seen = calloc((size_t)b->vcolptr[b->nfree] + 1, 1);
+    b->first = malloc(((size_t)S->n + 1) * sizeof *b->first);
+    if (!seen || !b->first) {
+        free(seen);
+        opt_proxy_block_free(b);
+        return err_nomem(err, "proxy system pattern");
+    }
+    for (int s = 0; s < S->n; s++) {
+        const int *mp = b->map + (size_t)s * P;
+        unsigned f = 0;
+        for (int p = 0; p < P; p++)
+            if (mp[p] >= 0 && !seen[mp[p]]) {
+                seen[mp[p]] = 1;
+                f |= 1u << p;
+            }
+        b->first[s] = (unsigned short)f;
+    }
+    free(seen);
     for (int s = 0; s < S->n; s++) {
         const int *ix = S->idx + (size_t)s * nc;
         int *mp = b->map + (size_t)s * P, p = 0;
@@ -357,18 +377,18 @@ static inline void scatter_d(opt_proxy_block *b, const opt_simplices *S, int s, 
             if (col < lo || col >= hi) continue;
             double c = w * dot_rows(G, i, j, d);
             double *v0 = val + pp[p];
-            int st = b->stride[col];
+            int st = b->stride[col], fst = b->first[s] >> p & 1;
             if (row != col) {
                 for (int a2 = 0; a2 < d; a2++) {
                     double *v = v0 + a2 * st + a2 * (a2 - 1) / 2;
-                    for (int a = 0; a < d; a++) v[a] += c * M[a * d + a2];
+                    for (int a = 0; a < d; a++) v[a] = (fst ? 0.0 : v[a]) + c * M[a * d + a2];
                 }
             } else {
                 /* Diagonal block; a repeated vertex (i != j) counts twice. */
                 double cc = i == j ? c : 2.0 * c;
                 for (int a2 = 0; a2 < d; a2++) {
                     double *v = v0 + a2 * st + a2 * (a2 - 1) / 2;
-                    for (int a = 0; a <= a2; a++) v[a] += cc * M[a * d + a2];
+                    for (int a = 0; a <= a2; a++) v[a] = (fst ? 0.0 : v[a]) + cc * M[a * d + a2];
                 }
             }
         }
@@ -386,14 +406,22 @@ static inline void scatter_triangle(opt_proxy_block *b, const opt_simplices *S, 
     for (int i = 0; i < 3; i++)
         for (int a = 0; a < 2; a++) rhs[(size_t)d3[i] * 2 + a] += w * lin[i * 2 + a];
     int p = 0;
+    unsigned f = b->first[s];
     for (int i = 0; i < 3; i++)
         for (int j = i; j < 3; j++, p++) {
             double c = w * dot_rows(G, i, j, 2);
             double *v0 = val + pp[p], *v1 = v0 + b->stride[d3[i] > d3[j] ? d3[i] : d3[j]];
-            v0[0] += c * M[0];
-            if (i != j) v0[1] += c * M[2];
-            v1[0] += c * M[1];
-            v1[1] += c * M[3];
+            if (f >> p & 1) { /* the entry's first writer: 0 + x, as after zeroing */
+                v0[0] = 0.0 + c * M[0];
+                if (i != j) v0[1] = 0.0 + c * M[2];
+                v1[0] = 0.0 + c * M[1];
+                v1[1] = 0.0 + c * M[3];
+            } else {
+                v0[0] += c * M[0];
+                if (i != j) v0[1] += c * M[2];
+                v1[0] += c * M[1];
+                v1[1] += c * M[3];
+            }
         }
 }
 
@@ -562,7 +590,7 @@ static double fill_parallel(opt_proxy_block *b, const opt_term *t, const int *do
     size_t n = (size_t)t->s->n;
     fill_job j = {.b = b, .t = t, .dof = dof, .X = X, .rhs = rhs, .w2_cap = w2_cap, .nc = nc};
     if (opt_fill_split_prepare(&b->split, t->s, dof, nc, OPT_FILL_BATCH) != 0) return -1.0;
-    opt_proxy_block_zero(b);
+    /* no zeroing: every entry's first writer stores (b->first) */
     for (j.b0 = 0; j.b0 < n; j.b0 += OPT_FILL_BATCH) {
         j.m = n - j.b0 < OPT_FILL_BATCH ? n - j.b0 : OPT_FILL_BATCH;
         j.cb = opt_fill_split_ranges(&b->split, j.b0);
@@ -583,7 +611,7 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
         double w2max = fill_parallel(b, t, dof, X, rhs, w2_cap, nc);
         if (w2max >= 0) return w2max;
     }
-    memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
+    /* no zeroing: every entry's first writer stores (b->first) */
     double M[9], lin[12], w2max = 0;
     if (sd2(t)) { /* proxies of SD2_BATCH simplices at a time, scattered in order */
         double loc[SD2_BATCH * 10];

@@ -25,26 +25,30 @@
 #include "opt/fill_split.h"
 
 typedef struct opt_proxy_block {
-    int d;                /* dimension of the simplices */
-    int ns;               /* number of simplices the pattern was built for */
-    int nfree;            /* 1 + the largest dof its simplices use: the block's
+    int d;                 /* dimension of the simplices */
+    int ns;                /* number of simplices the pattern was built for */
+    int nfree;             /* 1 + the largest dof its simplices use: the block's
                       matrix is nfree*d square (a leading part of the
                       whole system when other blocks use higher dofs) */
-    int *vcolptr;         /* nfree+1: vertex-level upper pattern, columns by dof */
-    int *vrowidx;         /* vertex-level rows (dofs), ascending, diagonal last */
-    int *map;             /* pair and vertex blocks: the vertex-level entry of
+    int *vcolptr;          /* nfree+1: vertex-level upper pattern, columns by dof */
+    int *vrowidx;          /* vertex-level rows (dofs), ascending, diagonal last */
+    int *map;              /* pair and vertex blocks: the vertex-level entry of
                              each pair (see their pattern functions) */
-    int *pos;             /* simplex blocks, ns by (d+1)(d+2)/2: where the
+    int *pos;              /* simplex blocks, ns by (d+1)(d+2)/2: where the
                              block of each local corner pair (i <= j) starts
                              in A's values (its first scalar column), -1
                              when a corner is fixed */
-    int *stride;          /* simplex blocks, nfree: for each vertex column,
+    int *stride;           /* simplex blocks, nfree: for each vertex column,
                              the distance in A's values between its first two
                              scalar columns (column a2 of the pair block at
                              pos starts at pos + a2 * stride + a2 (a2 - 1) / 2) */
-    opt_csc A;            /* scalar upper CSC, nfree*d square; values from fill */
-    unsigned version;     /* incremented each time the pattern is rebuilt */
-    opt_fill_split split; /* a parallel fill's per-batch column ranges,
+    unsigned short *first; /* simplex blocks, ns: bit p set when the simplex
+                              is the first (in simplex order) to write corner
+                              pair p's entry; a SLIM fill stores there
+                              instead of adding, so it needs no zeroing */
+    opt_csc A;             /* scalar upper CSC, nfree*d square; values from fill */
+    unsigned version;      /* incremented each time the pattern is rebuilt */
+    opt_fill_split split;  /* a parallel fill's per-batch column ranges,
                              kept with the pattern */
 } opt_proxy_block;
 

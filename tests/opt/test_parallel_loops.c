@@ -164,6 +164,9 @@ static void fill(const problem *p, opt_energy e, int newton, int threads, double
     size_t n = (size_t)p->nfree * p->d;
     *rhs = calloc(n, sizeof **rhs);
     *energy = 0;
+    /* a fill must write every value: what a block held before is not zero
+     * (a SLIM fill stores at each entry's first writer instead of zeroing) */
+    for (int k = 0; k < b.A.nnz; k++) b.A.val[k] = NAN;
     if (newton) {
         opt_newton_fill_stats st;
         assert_int_equal(opt_newton_block_fill(&b, &t, p->dof, p->X, 1, *rhs, &st, NULL), SCAF_OK);

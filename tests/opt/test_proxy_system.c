@@ -112,6 +112,8 @@ static void matrix_is_the_proxy_quadratic(void **state)
             double *rhs = calloc(n, sizeof *rhs), *y = malloc(n * sizeof *y),
                    *Ay = malloc(n * sizeof *Ay);
             double *Y = malloc(p.nv * d * sizeof *Y);
+            /* the fill writes every value, whatever the block held */
+            for (int k = 0; k < b.A.nnz; k++) b.A.val[k] = NAN;
             opt_proxy_block_fill(&b, &t, p.dof, p.X, rhs);
             /* Structure: upper, sorted. */
             for (int c = 0; c < n; c++)
