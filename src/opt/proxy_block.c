@@ -633,16 +633,6 @@ double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const 
     return w2max;
 }
 
-void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, const int *dof,
-                                    const double *X, double *rhs)
-{
-    int d = S->d;
-    memset(b->A.val, 0, (size_t)b->A.nnz * sizeof *b->A.val);
-    double M[9] = {0}, lin[12] = {0};
-    for (int a = 0; a < d; a++) M[a * d + a] = 1.0;
-    for (int s = 0; s < S->n; s++) scatter(b, S, s, dof, X, M, lin, rhs, 0, INT_MAX);
-}
-
 void opt_proxy_block_add_local(opt_proxy_block *b, const opt_simplices *S, int s, const int *dof,
                                const double *K)
 {

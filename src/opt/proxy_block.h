@@ -114,12 +114,6 @@ void opt_proxy_block_fill(opt_proxy_block *b, const opt_term *t, const int *dof,
 double opt_proxy_block_fill_capped(opt_proxy_block *b, const opt_term *t, const int *dof,
                                    const double *X, double *rhs, double w2_cap);
 
-/* Fill with a fixed quadratic: the same with W = I and T = 0 for every
- * simplex, i.e. the Dirichlet (cotangent Laplacian) system of the rest
- * shapes — the harmonic map with the fixed vertices as boundary. */
-void opt_proxy_block_fill_dirichlet(opt_proxy_block *b, const opt_simplices *S, const int *dof,
-                                    const double *X, double *rhs);
-
 /* Accumulate one simplex's full local matrix into the block's values, for
  * fills other than SLIM's Kronecker form (projected Newton, opt/newton_fill).
  * s: a simplex of the set the pattern was built for. K: ((d+1)d) square,
