@@ -12,6 +12,7 @@
 #include <stddef.h>
 
 #include "base/parallel.h"
+#include "opt/vector_clones.h"
 
 static double eval(int deg, const double *c, double t)
 {
@@ -155,10 +156,76 @@ static double max_step_triangle_below(const double *x0, const double *x1, const 
     return t;
 }
 
+/* Triangles per batch of the lane filter (a loop the compiler vectorizes,
+ * as in opt/sd2_lanes). */
+#define STEP_LANES 64
+
+/* The minimum over triangles [lo, hi), max_step_triangle_below's result
+ * bit for bit. A batch's quadratics and their smallest positive roots are
+ * computed in vector lanes with the very operations of
+ * positive_quadratic_roots; a triangle goes through the one-at-a-time
+ * routine only when its lane root could lower the running minimum or its
+ * case is not the plain one (c <= 0, a or h zero, not finite), which after
+ * the first few batches is rare. Branches, not lanes, were slower: half
+ * the triangles shrink along a SLIM direction, in no order a predictor
+ * follows. */
+VECTOR_CLONES static double max_step_triangles(const opt_simplices *S, const double *X,
+                                               const double *D, size_t lo, size_t hi)
+{
+    double best = INFINITY;
+    for (size_t s0 = lo; s0 < hi; s0 += STEP_LANES) {
+        int m = hi - s0 < STEP_LANES ? (int)(hi - s0) : STEP_LANES;
+        double cc[STEP_LANES], bb[STEP_LANES], aa[STEP_LANES], cand[STEP_LANES];
+        for (int l = 0; l < STEP_LANES; l++) {
+            if (l >= m) { /* a triangle that never shrinks */
+                cc[l] = 1.0;
+                bb[l] = aa[l] = 0.0;
+                continue;
+            }
+            const int *ix = S->idx + 3 * (s0 + (size_t)l);
+            const double *x0 = X + 2 * (size_t)ix[0], *x1 = X + 2 * (size_t)ix[1],
+                         *x2 = X + 2 * (size_t)ix[2];
+            const double *d0 = D + 2 * (size_t)ix[0], *d1 = D + 2 * (size_t)ix[1],
+                         *d2 = D + 2 * (size_t)ix[2];
+            double e1x = x1[0] - x0[0], e1y = x1[1] - x0[1], e2x = x2[0] - x0[0],
+                   e2y = x2[1] - x0[1];
+            double f1x = d1[0] - d0[0], f1y = d1[1] - d0[1], f2x = d2[0] - d0[0],
+                   f2y = d2[1] - d0[1];
+            cc[l] = e1x * e2y - e1y * e2x;
+            bb[l] = e1x * f2y - e1y * f2x + f1x * e2y - f1y * e2x;
+            aa[l] = f1x * f2y - f1y * f2x;
+        }
+        for (int l = 0; l < STEP_LANES; l++) {
+            double c = cc[l], b = bb[l], a = aa[l];
+            double disc = b * b - 4.0 * a * c;
+            double sq = sqrt(disc > 0 ? disc : 0.0);
+            double h = -0.5 * (b + (b >= 0 ? sq : -sq));
+            double t1 = h / a, t2 = c / h;
+            double r0 = t1 > t2 ? t2 : t1, r1 = t1 > t2 ? t1 : t2;
+            double r1p = r1 > 0 ? r1 : INFINITY;
+            double root = r0 > 0 ? r0 : r1p;
+            int never = ((a >= 0) & (b >= 0)) | (disc < 0);
+            int plain = (c > 0) & (a != 0) & (h != 0) & (root == root);
+            double t = never ? INFINITY : root;
+            cand[l] = plain ? t : 0.0;
+        }
+        for (int l = 0; l < m; l++) {
+            if (!(cand[l] <= best * (1.0 + 1e-9))) continue; /* the routine skips it too */
+            const int *ix = S->idx + 3 * (s0 + (size_t)l);
+            double t = max_step_triangle_below(X + 2 * (size_t)ix[0], X + 2 * (size_t)ix[1],
+                                               X + 2 * (size_t)ix[2], D + 2 * (size_t)ix[0],
+                                               D + 2 * (size_t)ix[1], D + 2 * (size_t)ix[2], best);
+            if (t < best) best = t;
+        }
+    }
+    return best;
+}
+
 /* The minimum over simplices [lo, hi). */
 static double max_step_range(const opt_simplices *S, const double *X, const double *D, size_t lo,
                              size_t hi)
 {
+    if (S->d == 2) return max_step_triangles(S, X, D, lo, hi);
     double best = INFINITY;
     int d = S->d;
     for (size_t s = lo; s < hi; s++) {

@@ -39,15 +39,20 @@ VECTOR_CLONES static double energy_lanes(const opt_simplices *S, const double *X
     for (size_t s0 = lo; s0 < hi; s0 += LANES) {
         int m = hi - s0 < LANES ? (int)(hi - s0) : LANES;
         double j0[LANES] = {0}, j1[LANES] = {0}, j2[LANES] = {0}, j3[LANES] = {0}, v[LANES];
+        double dt[LANES];
         gather_jacobians(S, X, s0, m, j0, j1, j2, j3);
         for (int l = 0; l < LANES; l++) {
             double det = j0[l] * j3[l] - j1[l] * j2[l];
             double i0 = j3[l] / det, i1 = -j1[l] / det, i2 = -j2[l] / det, i3 = j0[l] / det;
             double fj = j0[l] * j0[l] + j1[l] * j1[l] + j2[l] * j2[l] + j3[l] * j3[l];
             double fi = i0 * i0 + i1 * i1 + i2 * i2 + i3 * i3;
-            v[l] = det > 0 ? fj + fi : INFINITY;
+            dt[l] = det;
+            v[l] = fj + fi;
         }
-        for (int l = 0; l < m; l++) acc += S->weight[s0 + (size_t)l] * v[l];
+        /* The sign test here, in the ordered sum, not in the lane loop:
+         * a select there kept GCC from vectorizing it. */
+        for (int l = 0; l < m; l++)
+            acc += S->weight[s0 + (size_t)l] * (dt[l] > 0 ? v[l] : INFINITY);
     }
     return acc;
 }
@@ -61,7 +66,7 @@ VECTOR_CLONES static void energy_slope_lanes(const opt_simplices *S, const doubl
         int m = hi - s0 < LANES ? (int)(hi - s0) : LANES;
         double j0[LANES] = {0}, j1[LANES] = {0}, j2[LANES] = {0}, j3[LANES] = {0};
         double d0[LANES] = {0}, d1[LANES] = {0}, d2[LANES] = {0}, d3[LANES] = {0};
-        double v[LANES], dot[LANES];
+        double v[LANES], dot[LANES], dt[LANES];
         gather_jacobians(S, X, s0, m, j0, j1, j2, j3);
         gather_jacobians(S, D, s0, m, d0, d1, d2, d3);
         for (int l = 0; l < LANES; l++) {
@@ -76,15 +81,15 @@ VECTOR_CLONES static void energy_slope_lanes(const opt_simplices *S, const doubl
             double g3 = 2.0 * j3[l] - 2.0 * (a10 * i2 + a11 * i3);
             double fj = j0[l] * j0[l] + j1[l] * j1[l] + j2[l] * j2[l] + j3[l] * j3[l];
             double fi = i0 * i0 + i1 * i1 + i2 * i2 + i3 * i3;
-            int ok = det > 0;
-            v[l] = ok ? fj + fi : INFINITY;
-            double p = g0 * d0[l] + g1 * d1[l] + g2 * d2[l] + g3 * d3[l];
-            dot[l] = ok ? p : NAN;
+            dt[l] = det;
+            v[l] = fj + fi;
+            dot[l] = g0 * d0[l] + g1 * d1[l] + g2 * d2[l] + g3 * d3[l];
         }
-        for (int l = 0; l < m; l++) {
+        for (int l = 0; l < m; l++) { /* the sign test as in energy_lanes */
             double w = S->weight[s0 + (size_t)l];
-            sa += w * dot[l];
-            ea += w * v[l];
+            int ok = dt[l] > 0;
+            sa += w * (ok ? dot[l] : NAN);
+            ea += w * (ok ? v[l] : INFINITY);
         }
     }
     *e = ea;
@@ -107,9 +112,11 @@ VECTOR_CLONES static double proxy_lanes(const opt_simplices *S, const double *X,
             G[l] = 0.5 * (j2[l] + j1[l]);
             H[l] = 0.5 * (j2[l] - j1[l]);
             double q = E[l] * E[l] + H[l] * H[l], r = F[l] * F[l] + G[l] * G[l];
-            Q[l] = sqrt(q);
-            R[l] = sqrt(r);
-            slow |= !(q >= DBL_MIN && q <= DBL_MAX) | !(r >= DBL_MIN && r <= DBL_MAX);
+            /* q, r >= 0 or NaN (then slow): the guard only tells GCC that
+             * sqrt needs no branch, which keeps the loop vector code */
+            Q[l] = sqrt(q > 0 ? q : 0.0);
+            R[l] = sqrt(r > 0 ? r : 0.0);
+            slow |= !((q >= DBL_MIN) & (q <= DBL_MAX)) | !((r >= DBL_MIN) & (r <= DBL_MAX));
         }
         if (slow) /* svd_hypot's own choice, lane by lane (rare) */
             for (int l = 0; l < LANES; l++) {
