@@ -30,6 +30,28 @@ static inline void gather_jacobians(const opt_simplices *S, const double *X, siz
     }
 }
 
+/* J at X (j0..j3) and at D (d0..d3) of triangles s0 .. s0 + m - 1, each
+ * triangle's corners and gradients read once: opt_jacobian's operations. */
+static inline void gather_jacobian_pairs(const opt_simplices *S, const double *X, const double *D,
+                                         size_t s0, int m, double *j0, double *j1, double *j2,
+                                         double *j3, double *d0, double *d1, double *d2, double *d3)
+{
+    for (int l = 0; l < m; l++) {
+        size_t s = s0 + (size_t)l;
+        const int *ix = S->idx + s * 3;
+        const double *G = S->grad + s * 6;
+        size_t i0 = 2 * (size_t)ix[0], i1 = 2 * (size_t)ix[1], i2 = 2 * (size_t)ix[2];
+        j0[l] = X[i0] * G[0] + X[i1] * G[2] + X[i2] * G[4];
+        j1[l] = X[i0] * G[1] + X[i1] * G[3] + X[i2] * G[5];
+        j2[l] = X[i0 + 1] * G[0] + X[i1 + 1] * G[2] + X[i2 + 1] * G[4];
+        j3[l] = X[i0 + 1] * G[1] + X[i1 + 1] * G[3] + X[i2 + 1] * G[5];
+        d0[l] = D[i0] * G[0] + D[i1] * G[2] + D[i2] * G[4];
+        d1[l] = D[i0] * G[1] + D[i1] * G[3] + D[i2] * G[5];
+        d2[l] = D[i0 + 1] * G[0] + D[i1 + 1] * G[2] + D[i2 + 1] * G[4];
+        d3[l] = D[i0 + 1] * G[1] + D[i1 + 1] * G[3] + D[i2 + 1] * G[5];
+    }
+}
+
 /* The kernels are static: a target_clones function's resolver would be
  * exported from the shared library whatever the visibility. */
 VECTOR_CLONES static double energy_lanes(const opt_simplices *S, const double *X, size_t lo,
@@ -67,8 +89,7 @@ VECTOR_CLONES static void energy_slope_lanes(const opt_simplices *S, const doubl
         double j0[LANES] = {0}, j1[LANES] = {0}, j2[LANES] = {0}, j3[LANES] = {0};
         double d0[LANES] = {0}, d1[LANES] = {0}, d2[LANES] = {0}, d3[LANES] = {0};
         double v[LANES], dot[LANES], dt[LANES];
-        gather_jacobians(S, X, s0, m, j0, j1, j2, j3);
-        gather_jacobians(S, D, s0, m, d0, d1, d2, d3);
+        gather_jacobian_pairs(S, X, D, s0, m, j0, j1, j2, j3, d0, d1, d2, d3);
         for (int l = 0; l < LANES; l++) {
             double det = j0[l] * j3[l] - j1[l] * j2[l];
             double i0 = j3[l] / det, i1 = -j1[l] / det, i2 = -j2[l] / det, i3 = j0[l] / det;
