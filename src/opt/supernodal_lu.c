@@ -3,10 +3,10 @@
  * B = P A P^T (P: CHOLMOD's order) is factored as L U, L unit lower. Both
  * live in the supernodes of the symbolic Cholesky factor: supernode s
  * (columns f .. l - 1, rows s[pi[s] ..], its own columns first) holds an
- * nsrow x nscol column-major block in Lx and one in Ux at px[s]. Lx's top
- * square is the factored diagonal block, L11 below its diagonal and U11
- * on and above it (as LAPACK stores an LU); Lx's rows below hold L21, Ux's
- * rows below hold U12^T (Ux's top square is unused). Left-looking, as
+ * nsrow x nscol column-major block in Lx at px[s], whose top square is the
+ * factored diagonal block (L11 below its diagonal, U11 on and above it, as
+ * LAPACK stores an LU) and whose rows below hold L21; U12^T, the rows
+ * below only ((nsrow - nscol) x nscol), is in Ux at pu[s]. Left-looking, as
  * opt/supernodal_numeric: before supernode s is factored, each
  * descendant d (a supernode with rows in s's columns) subtracts
  * L_d(rows >= f) U_d^T(rows in s) from s's columns of L and
@@ -36,7 +36,7 @@ static const double one = 1.0, zero = 0.0, minus_one = -1.0;
 struct opt_lu {
     int n, nsuper;
     int *super, *pi, *s, *perm; /* the symbolic factor's, copied */
-    size_t *px;
+    size_t *px, *pu;            /* a supernode's values in Lx, in Ux */
     double *Lx, *Ux;
     double *y; /* n: a solve's vector in the factor's order */
     int maxbelow;
@@ -52,6 +52,7 @@ void opt_lu_free(opt_lu *F)
     free(F->s);
     free(F->perm);
     free(F->px);
+    free(F->pu);
     free(F->Lx);
     free(F->Ux);
     free(F->y);
@@ -59,7 +60,10 @@ void opt_lu_free(opt_lu *F)
     free(F);
 }
 
-double opt_lu_entries(const opt_lu *F) { return F ? 2.0 * (double)F->px[F->nsuper] : 0.0; }
+double opt_lu_entries(const opt_lu *F)
+{
+    return F ? (double)F->px[F->nsuper] + (double)F->pu[F->nsuper] : 0.0;
+}
 
 /* The transpose's pattern (rows sorted) equals A's, and every column
  * holds its diagonal. */
@@ -147,9 +151,10 @@ static scaf_status analyze(opt_lu *F, int n, const int *Ap, const int *Ai, scaf_
     F->super = malloc(((size_t)ns + 1) * sizeof *F->super);
     F->pi = malloc(((size_t)ns + 1) * sizeof *F->pi);
     F->px = malloc(((size_t)ns + 1) * sizeof *F->px);
+    F->pu = malloc(((size_t)ns + 1) * sizeof *F->pu);
     F->s = malloc(((size_t)lpi[ns] + 1) * sizeof *F->s);
     F->perm = malloc(((size_t)n + 1) * sizeof *F->perm);
-    if (!F->super || !F->pi || !F->px || !F->s || !F->perm) {
+    if (!F->super || !F->pi || !F->px || !F->pu || !F->s || !F->perm) {
         st = err_nomem(err, "LU analysis");
         goto done;
     }
@@ -159,10 +164,12 @@ static scaf_status analyze(opt_lu *F, int n, const int *Ap, const int *Ai, scaf_
     memcpy(F->perm, lperm, (size_t)n * sizeof *F->perm);
     /* offsets recomputed in size_t: CHOLMOD's int px would overflow on
      * the largest meshes before the values do */
-    F->px[0] = 0;
-    for (int k = 0; k < ns; k++)
-        F->px[k + 1] =
-            F->px[k] + (size_t)(lsuper[k + 1] - lsuper[k]) * (size_t)(lpi[k + 1] - lpi[k]);
+    F->px[0] = F->pu[0] = 0;
+    for (int k = 0; k < ns; k++) {
+        size_t nscol = (size_t)(lsuper[k + 1] - lsuper[k]), nsrow = (size_t)(lpi[k + 1] - lpi[k]);
+        F->px[k + 1] = F->px[k] + nscol * nsrow;
+        F->pu[k + 1] = F->pu[k] + nscol * (nsrow - nscol);
+    }
     F->maxcsize = L->maxcsize;
 done:
     if (L) cholmod_free_factor(&L, &cm);
@@ -172,7 +179,8 @@ done:
 
 /* A's columns of supernode sn into its blocks X (L, and the diagonal
  * block whole) and Y (U^T below the diagonal block), zero before; map:
- * factor row -> place in the block; iperm: A's index -> factor's. */
+ * factor row -> place in the supernode's rows; iperm: A's index ->
+ * factor's. */
 static void assemble(const opt_lu *F, int sn, const int *Ap, const int *Ai, const double *Ax,
                      const int *Tp, const int *Ti, const int *Tv, const int *iperm, const int *map,
                      double *X, double *Y)
@@ -180,14 +188,15 @@ static void assemble(const opt_lu *F, int sn, const int *Ap, const int *Ai, cons
     int f = F->super[sn], l = F->super[sn + 1], nsrow = F->pi[sn + 1] - F->pi[sn];
     for (int j = f; j < l; j++) {
         int c = F->perm[j];
-        double *xc = X + (size_t)(j - f) * (size_t)nsrow, *yc = Y + (size_t)(j - f) * (size_t)nsrow;
+        double *xc = X + (size_t)(j - f) * (size_t)nsrow;
+        double *yc = Y + (size_t)(j - f) * (size_t)(nsrow - (l - f));
         for (int q = Ap[c]; q < Ap[c + 1]; q++) { /* B(i, j): L, or U inside the block */
             int i = iperm[Ai[q]];
             if (i >= f) xc[map[i]] = Ax[q];
         }
         for (int q = Tp[c]; q < Tp[c + 1]; q++) { /* B(j, i), i below the block: U^T */
             int i = iperm[Ti[q]];
-            if (i >= l) yc[map[i]] = Ax[Tv[q]];
+            if (i >= l) yc[map[i] - (l - f)] = Ax[Tv[q]];
         }
     }
 }
@@ -247,7 +256,7 @@ static scaf_status factor(opt_lu *F, const int *Ap, const int *Ai, const double 
     double *diag = malloc(((size_t)n + 1) * sizeof *diag);
     size_t xs = F->px[ns] ? F->px[ns] : 1;
     F->Lx = zeroed_pages(xs, sizeof *F->Lx); /* zero: assemble writes only A's entries */
-    F->Ux = zeroed_pages(xs, sizeof *F->Ux);
+    F->Ux = zeroed_pages(F->pu[ns] ? F->pu[ns] : 1, sizeof *F->Ux);
     F->y = malloc(((size_t)n + 1) * sizeof *F->y);
     F->tmp = malloc(((size_t)F->maxbelow + 1) * sizeof *F->tmp);
     scaf_status st = SCAF_OK;
@@ -269,20 +278,22 @@ static scaf_status factor(opt_lu *F, const int *Ap, const int *Ai, const double 
     for (int sn = 0; sn < ns; sn++) {
         int f = F->super[sn], l = F->super[sn + 1], nscol = l - f;
         int psi = F->pi[sn], nsrow = F->pi[sn + 1] - psi;
-        double *X = F->Lx + F->px[sn], *Y = F->Ux + F->px[sn];
+        double *X = F->Lx + F->px[sn], *Y = F->Ux + F->pu[sn];
+        int below = nsrow - nscol;
         for (int i = 0; i < nsrow; i++) map[F->s[psi + i]] = i;
         assemble(F, sn, Ap, Ai, Ax, Tp, Ti, Tv, iperm, map, X, Y);
         for (int d = head[sn]; d >= 0;) {
             int dnext = next[d];
             int ndcol = F->super[d + 1] - F->super[d], pdi = F->pi[d];
-            int ndrow = F->pi[d + 1] - pdi, p1 = lpos[d], p2 = p1;
+            int ndrow = F->pi[d + 1] - pdi, p1 = lpos[d], p2 = p1, ldu = ndrow - ndcol;
             const int *rows = F->s + pdi;
             while (p2 < ndrow && rows[p2] < l) p2++;
             int m1 = p2 - p1, m2 = ndrow - p1, m3 = m2 - m1;
-            const double *Ld = F->Lx + F->px[d] + p1, *Ud = F->Ux + F->px[d] + p1;
+            /* p1 >= ndcol: a descendant's rows below its diagonal block */
+            const double *Ld = F->Lx + F->px[d] + p1, *Ud = F->Ux + F->pu[d] + (p1 - ndcol);
             for (int i = 0; i < m2; i++) rel[i] = map[rows[p1 + i]];
             /* L (and the diagonal block whole): L_d(rows >= f) U_d(rows in s)^T */
-            dgemm_("N", "T", &m2, &m1, &ndcol, &one, Ld, &ndrow, Ud, &ndrow, &zero, C, &m2);
+            dgemm_("N", "T", &m2, &m1, &ndcol, &one, Ld, &ndrow, Ud, &ldu, &zero, C, &m2);
             for (int j = 0; j < m1; j++) {
                 double *col = X + (size_t)rel[j] * (size_t)nsrow;
                 const double *cj = C + (size_t)j * (size_t)m2;
@@ -290,12 +301,11 @@ static scaf_status factor(opt_lu *F, const int *Ap, const int *Ai, const double 
             }
             /* U^T below the block: U_d(rows >= l) L_d(rows in s)^T */
             if (m3 > 0) {
-                dgemm_("N", "T", &m3, &m1, &ndcol, &one, Ud + m1, &ndrow, Ld, &ndrow, &zero, C,
-                       &m3);
+                dgemm_("N", "T", &m3, &m1, &ndcol, &one, Ud + m1, &ldu, Ld, &ndrow, &zero, C, &m3);
                 for (int j = 0; j < m1; j++) {
-                    double *col = Y + (size_t)rel[j] * (size_t)nsrow;
+                    double *col = Y + (size_t)rel[j] * (size_t)below;
                     const double *cj = C + (size_t)j * (size_t)m3;
-                    for (int i = 0; i < m3; i++) col[rel[m1 + i]] -= cj[i];
+                    for (int i = 0; i < m3; i++) col[rel[m1 + i] - nscol] -= cj[i];
                 }
             }
             lpos[d] = p2;
@@ -316,10 +326,9 @@ static scaf_status factor(opt_lu *F, const int *Ap, const int *Ai, const double 
                          X[(size_t)(bad - 1) * (size_t)nsrow + (size_t)(bad - 1)]);
             goto done;
         }
-        int below = nsrow - nscol;
         if (below > 0) {
             dtrsm_("R", "U", "N", "N", &below, &nscol, &one, X, &nsrow, X + nscol, &nsrow);
-            dtrsm_("R", "L", "T", "U", &below, &nscol, &one, X, &nsrow, Y + nscol, &nsrow);
+            dtrsm_("R", "L", "T", "U", &below, &nscol, &one, X, &nsrow, Y, &below);
             lpos[sn] = nscol;
             int q = col2super[F->s[psi + nscol]];
             next[sn] = head[q];
@@ -394,12 +403,11 @@ void opt_lu_solve(const opt_lu *F, const double *b, double *x)
     for (int sn = ns - 1; sn >= 0; sn--) { /* U z = y */
         int f = F->super[sn], nscol = F->super[sn + 1] - f;
         int psi = F->pi[sn], nsrow = F->pi[sn + 1] - psi, below = nsrow - nscol;
-        const double *X = F->Lx + F->px[sn], *Y = F->Ux + F->px[sn];
+        const double *X = F->Lx + F->px[sn], *Y = F->Ux + F->pu[sn];
         if (below > 0) {
             const int *rows = F->s + psi + nscol;
             for (int i = 0; i < below; i++) tmp[i] = y[rows[i]];
-            dgemv_("T", &below, &nscol, &minus_one, Y + nscol, &nsrow, tmp, &inc, &one, y + f,
-                   &inc);
+            dgemv_("T", &below, &nscol, &minus_one, Y, &below, tmp, &inc, &one, y + f, &inc);
         }
         dtrsv_("U", "N", "N", &nscol, X, &nsrow, y + f, &inc);
     }
