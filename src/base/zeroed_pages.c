@@ -9,9 +9,12 @@
 #include <sys/mman.h>
 #endif
 
-/* Blocks from this size on get the hint (smaller ones come from the heap,
- * already faulted in, or would not fill a huge page). */
+/* A transparent huge page on x86-64 Linux. */
 #define HUGE_PAGE ((size_t)2 << 20)
+
+/* Blocks from this size on get the hint: smaller ones mostly come from the
+ * heap, already faulted in, and hold few whole huge pages. */
+#define HINT_MIN (4 * HUGE_PAGE)
 
 void *zeroed_pages(size_t n, size_t size)
 {
@@ -19,7 +22,7 @@ void *zeroed_pages(size_t n, size_t size)
     void *p = calloc(n ? n : 1, size ? size : 1);
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     size_t bytes = n * size;
-    if (p && bytes >= 4 * HUGE_PAGE) {
+    if (p && bytes >= HINT_MIN) {
         /* the whole huge pages inside the block: a hint, its failure harmless */
         uintptr_t lo = ((uintptr_t)p + HUGE_PAGE - 1) & ~(uintptr_t)(HUGE_PAGE - 1);
         uintptr_t hi = ((uintptr_t)p + bytes) & ~(uintptr_t)(HUGE_PAGE - 1);

@@ -384,7 +384,7 @@ done:
     return F;
 }
 
-void opt_lu_solve(const opt_lu *F, const double *b, double *x)
+void opt_lu_solve(opt_lu *F, const double *b, double *x)
 {
     int n = F->n, ns = F->nsuper, inc = 1;
     double *y = F->y, *tmp = F->tmp;

@@ -27,8 +27,8 @@ typedef struct opt_lu opt_lu;
  * that is not positive, see above), SCAF_ERR_NOMEM. */
 opt_lu *opt_lu_factor(int n, const int *Ap, const int *Ai, const double *Ax, scaf_error *err);
 
-/* x = A^-1 b (x may be b). */
-void opt_lu_solve(const opt_lu *F, const double *b, double *x);
+/* x = A^-1 b (x may be b). Uses F's workspace: one solve at a time. */
+void opt_lu_solve(opt_lu *F, const double *b, double *x);
 
 /* Stored entries of L and U together (statistics). */
 double opt_lu_entries(const opt_lu *F);
