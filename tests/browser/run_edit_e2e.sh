@@ -3,21 +3,26 @@
 # `browser`): runs edit_e2e.mjs with node and Debian's chromium.
 #   run_edit_e2e.sh SCAF_BINARY WORK_DIR
 # Skips (exit 77, with the reason) only when node or chromium is not
-# installed (scripts/setup.sh installs both); fails when they are but
-# playwright-core is not (scripts/setup.sh runs `npm ci` here).
+# installed (scripts/setup.sh installs both), and fails instead under
+# SCAF_REQUIRE_DATA (CI); fails when they are but playwright-core is not
+# (scripts/setup.sh runs `npm ci` here).
 # SCAF_CHROMIUM names another Chromium binary.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 scaf="$1"
 work="$2"
 browser="${SCAF_CHROMIUM:-$(command -v chromium || true)}"
-if ! command -v node >/dev/null; then
-  echo "SKIP: node is not installed (scripts/setup.sh installs it)"
+skip() { # the reason; a failure where every test must run (CI)
+  if [ -n "${SCAF_REQUIRE_DATA:-}" ] && [ "$SCAF_REQUIRE_DATA" != 0 ]; then
+    echo "FAIL: $1 and SCAF_REQUIRE_DATA is set"
+    exit 1
+  fi
+  echo "SKIP: $1"
   exit 77
-fi
+}
+if ! command -v node >/dev/null; then skip "node is not installed (scripts/setup.sh installs it)"; fi
 if [ -z "$browser" ] || [ ! -x "$browser" ]; then
-  echo "SKIP: chromium is not installed (scripts/setup.sh installs it)"
-  exit 77
+  skip "chromium is not installed (scripts/setup.sh installs it)"
 fi
 if [ ! -f "$here/node_modules/playwright-core/package.json" ]; then
   echo "FAIL: playwright-core is missing: run \`npm ci\` in $here (scripts/setup.sh does)"

@@ -45,7 +45,7 @@ static const char *write_triangle(const char *name, const char *s, char *path, s
 static void check_json_is_strict_for_extreme_uvs(void **state)
 {
     (void)state;
-    if (test_run("python3 -c 'import json' 2>/dev/null") != 0) skip();
+    if (!test_have_program("python3")) skip();
     const char *scales[] = {"1e-310", "1e155", "1e-200", "1e308", "4.9e-324"};
     for (size_t i = 0; i < sizeof scales / sizeof *scales; i++) {
         char obj[512], json[512];
@@ -60,7 +60,7 @@ static void check_json_is_strict_for_extreme_uvs(void **state)
 static void check_gap_of_two_far_charts_is_a_number(void **state)
 {
     (void)state;
-    if (test_run("python3 -c 'import json' 2>/dev/null") != 0) skip();
+    if (!test_have_program("python3")) skip();
     char obj[512], json[512];
     test_tmp_path("extreme_two.obj", obj, sizeof obj);
     FILE *f = fopen(obj, "w");

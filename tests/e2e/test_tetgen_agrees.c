@@ -108,7 +108,7 @@ static void obj_to_off(const char *in, const char *out)
 static void generated_and_untangled(void **state)
 {
     (void)state;
-    if (test_run("command -v tetgen > /dev/null 2>&1") != 0) skip();
+    if (!test_have_program("tetgen")) skip();
     char obj[1024], off[1024], res[1024], res_off[1024];
     test_tmp_path("agree_dented.obj", obj, sizeof obj);
     test_tmp_path("agree_dented_src.off", off, sizeof off);
@@ -126,9 +126,7 @@ static void tetgen_and_scaf_agree(void **state)
 {
     (void)state;
     char buf[1024];
-    if (test_run("command -v tetgen > /dev/null 2>&1") != 0 ||
-        !test_data_path("closed", buf, sizeof buf))
-        skip();
+    if (!test_have_program("tetgen") || !test_data_path("closed", buf, sizeof buf)) skip();
     agree("closed/leg-intersect.off", "agree_leg_intersect.off", 239);
     agree("closed/leg-flow6.off", "agree_leg_flow6.off", 0);
     agree("closed/fertility.off", "agree_fertility.off", 0); /* tetgen reads OFF, not OBJ */

@@ -4,6 +4,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 
@@ -20,8 +21,39 @@ const char *test_data_path(const char *relative, char *buf, size_t size)
     if (!dir || !*dir) dir = SCAF_DATA_DIR;
     snprintf(buf, size, "%s/%s", dir, relative);
     struct stat st;
-    if (stat(buf, &st) != 0) return NULL;
+    if (stat(buf, &st) != 0) {
+        test_missing(buf);
+        return NULL;
+    }
     return buf;
+}
+
+int test_data_required(void)
+{
+    const char *v = getenv("SCAF_REQUIRE_DATA");
+    return v && *v && strcmp(v, "0") != 0;
+}
+
+void test_missing(const char *what)
+{
+    if (test_data_required()) {
+        fprintf(stderr,
+                "FAIL: %s is missing and SCAF_REQUIRE_DATA is set (CI must run every test)\n",
+                what);
+        exit(1);
+    }
+    fprintf(stderr, "%s is missing: skipped\n", what);
+}
+
+int test_have_program(const char *name)
+{
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "command -v '%s' > /dev/null 2>&1", name);
+    if (test_run("%s", cmd) == 0) return 1;
+    char what[600];
+    snprintf(what, sizeof what, "the program %s", name);
+    test_missing(what);
+    return 0;
 }
 
 const char *test_tmp_path(const char *name, char *buf, size_t size)
