@@ -52,6 +52,21 @@ for ex in atlas_example param_example; do
   "$cc" "${flags[@]}" "$src/examples/$ex.c" $(pkg-config --cflags scaf) "$libdir/libscaf.a" \
       $(pkg-config --static --libs scaf | sed 's/ -lscaf / /') -lm -o "$tmp/$ex-static"
 done
+# CMake: a project with only find_package(scaf CONFIG REQUIRED), linking
+# scaf::scaf (shared) and scaf::scaf_static
+cmake -S "$src/tests/install/consumer" -B "$tmp/consumer" -DCMAKE_PREFIX_PATH="$tmp/prefix" \
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER="$cc" -DCMAKE_C_FLAGS="$extra" \
+      -DCMAKE_EXE_LINKER_FLAGS="$extra" >"$tmp/consumer.log" 2>&1 ||
+  { cat "$tmp/consumer.log"; echo "find_package(scaf) failed"; exit 1; }
+cmake --build "$tmp/consumer" >>"$tmp/consumer.log" 2>&1 || { cat "$tmp/consumer.log"; exit 1; }
+for app in app_shared app_static; do
+  "$tmp/consumer/$app" >"$tmp/$app.txt"
+  grep -q "^scaf $(pkg-config --modversion scaf): E " "$tmp/$app.txt" || { cat "$tmp/$app.txt"; exit 1; }
+done
+# the shared app loads the installed library (the build tree's rpath is not used)
+ldd "$tmp/consumer/app_shared" | grep -q "$tmp/prefix" || { ldd "$tmp/consumer/app_shared"; exit 1; }
+! ldd "$tmp/consumer/app_static" | grep -q libscaf || { echo "app_static loads libscaf.so"; exit 1; }
+echo "cmake consumer: $(cat "$tmp/app_shared.txt") (shared), $(cat "$tmp/app_static.txt") (static)"
 "$tmp/param_example" >"$tmp/param.txt"
 "$tmp/param_example-static" >/dev/null
 "$tmp/atlas_example" >"$tmp/atlas.txt"
