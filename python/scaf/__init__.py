@@ -11,7 +11,8 @@ it, inputs and outputs are nested lists (one list per row).
     r.uv, r.ft, r.chart, r.efficiency, r.min_gap   # UVs in [0,1]^2
     p = scaf.param(V, F, iterations=20, progress=lambda i: print(i.energy))
 
-One-call functions: param, atlas. Handles mirroring the C contexts
+One-call functions: param, atlas; split_seams turns a per-corner UV map
+into one vertex per UV (vmapping, indices, uvs) for glTF or trimesh. Handles mirroring the C contexts
 (context managers that free the C object on exit): Param, Atlas, and
 Drag (interactive: handles pulled by SCAF iterations, undo, certified
 output).
@@ -30,6 +31,7 @@ from ._core import (Atlas, AtlasIterationInfo, AtlasResult, IterationInfo, Param
 from ._drag import Drag, DragChartInfo, DragOutput, default_drag_options
 from . import _lib
 from .obj import read_obj
+from .seam_split import split_seams
 
 ENERGIES = tuple(_lib.ENERGIES)  # names accepted for energy= (or the C int)
 INITS = tuple(_lib.INITS)  # names accepted for init= (or the C int)
@@ -39,7 +41,7 @@ __all__ = [
     "AtlasIterationInfo", "default_options", "default_atlas_options", "read_obj", "Error",
     "UsageError", "InputError", "MeshError", "NumericError", "OutOfMemory", "Cancelled",
     "InternalError", "library_path", "__version__", "ENERGIES", "INITS", "set_threads", "Drag",
-    "DragChartInfo", "DragOutput", "default_drag_options",
+    "DragChartInfo", "DragOutput", "default_drag_options", "split_seams",
 ]
 
 # Show the public names as scaf.X (in tracebacks and reprs), not scaf._core.X.

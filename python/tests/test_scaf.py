@@ -695,6 +695,43 @@ class AtlasTest(unittest.TestCase):
 
 
 @unittest.skipIf(np is None, "numpy absent: the whole suite already runs without it")
+class SplitSeamsTest(unittest.TestCase):
+    """scaf.split_seams on an atlas of a sphere cut into 6 charts: one new
+    vertex per distinct (vertex, UV) corner pair, faces and UVs preserved."""
+
+    def test_atlas_split_per_uv(self):
+        V, F, UV, FT = scaf.read_obj(gen("cubesphere", 4))
+        r = scaf.atlas(V, F, UV, FT, settle_iterations=2, compact_iterations=0)
+        vmap, idx, uvs = scaf.split_seams(F, r.ft, r.uv)
+        F, FT, vmap, idx, uvs, ruv = rows(F), rows(r.ft), rows(vmap), rows(idx), rows(uvs), rows(r.uv)
+        self.assertEqual(len(idx), len(F))
+        pairs = {(F[f][k], FT[f][k]) for f in range(len(F)) for k in range(3)}
+        self.assertEqual(len(vmap), len(pairs))          # one vertex per distinct pair
+        self.assertGreater(len(vmap), len(V))            # seam vertices were split
+        self.assertEqual(len(uvs), len(vmap))
+        seen = set()
+        for f in range(len(F)):
+            for k in range(3):
+                n = idx[f][k]
+                self.assertEqual(vmap[n], F[f][k])           # the same 3D vertex
+                self.assertEqual(list(uvs[n]), list(ruv[FT[f][k]]))  # the corner's UV
+                seen.add(n)
+        self.assertEqual(seen, set(range(len(vmap))))    # every new vertex used
+        # numbered by first appearance
+        firsts = []
+        for row in idx:
+            for n in row:
+                if n not in firsts:
+                    firsts.append(n)
+        self.assertEqual(firsts, list(range(len(vmap))))
+
+    def test_bad_shapes_are_named(self):
+        with self.assertRaisesRegex(ValueError, "FT: 1 rows, F has 2"):
+            scaf.split_seams([[0, 1, 2], [0, 2, 3]], [[0, 1, 2]], [[0, 0], [1, 0], [1, 1]])
+        with self.assertRaisesRegex(ValueError, "FT: UV index 5 outside 0..2"):
+            scaf.split_seams([[0, 1, 2]], [[0, 1, 5]], [[0, 0], [1, 0], [1, 1]])
+
+
 class DragTest(unittest.TestCase):
     """scaf.Drag on two hemispheres side by side (two charts, no UVs)."""
 
