@@ -13,6 +13,7 @@
  *     exit 5 before any work, no output at all;
  *   - .ply / unknown mesh extensions: exit 2; .obj.gz: gzip, readable;
  *   - "-" is the standard output (never a file named "-"), at most once;
+ *     an empty name is a usage error (exit 2, it was 5);
  *   - a write failing in the middle (file size limit: the OBJ fits, the
  *     SVG does not): exit 5, the existing OBJ unchanged, no temporary file;
  *   - SIGINT / SIGTERM / SIGHUP raised by the test hook in the progress
@@ -301,6 +302,19 @@ static void dash_is_standard_output(void **state)
         test_run("cd '%s' && grep -q '\"command\": \"atlas\"' report.json && test -s a.obj", dir),
         0);
     assert_int_equal(run_in(dir, NULL, "param in.obj -o - --report - > none.txt"), 2);
+    /* an empty name is a bad command line (it was exit 5, a failed write) */
+    static const char *const empty[][2] = {
+        {"param in.obj -o ''", "-o: the file name is empty"},
+        {"param in.obj -o o.obj --report ''", "--report: the file name is empty"},
+        {"gen hemisphere -o ''", "-o: the file name is empty"},
+        {"atlas in.obj -o '' -q", "-o: the file name is empty"}};
+    for (size_t i = 0; i < sizeof empty / sizeof empty[0]; i++) {
+        assert_int_equal(run_in(dir, NULL, empty[i][0]), 2);
+        char *e = stderr_of(dir);
+        assert_non_null(strstr(e, empty[i][1]));
+        free(e);
+    }
+    assert_no_work(dir);
     snprintf(p, sizeof p, "%s/none.txt", dir);
     assert_file_is(p, "");
     snprintf(p, sizeof p, "%s/-", dir);
