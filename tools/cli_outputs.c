@@ -124,7 +124,10 @@ int cli_outputs_check(cli_outputs *o)
     }
     for (int k = 0; k < o->n && !rc; k++) {
         o->out[k].to_stdout = !strcmp(o->out[k].path, "-");
-        if (o->out[k].to_stdout) {
+        if (!o->out[k].path[0]) { /* -o "": a bad command line, not a failed write */
+            fprintf(stderr, "scaf %s: %s: the file name is empty\n", o->cmd, o->out[k].option);
+            rc = EXIT_USAGE;
+        } else if (o->out[k].to_stdout) {
             strcpy(ids[k].path, "-"); /* not a path: only another "-" is the same */
             rc = check_format(o, &o->out[k]);
         } else if (atomic_resolve(o->out[k].path, ids[k].path, sizeof ids[k].path, NULL, &err) !=

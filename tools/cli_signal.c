@@ -9,14 +9,17 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "base/interrupt.h"
+
 static volatile sig_atomic_t caught;
-static struct sigaction previous_int, previous_term;
+static struct sigaction previous_int, previous_term, previous_hup, previous_xfsz;
 static int installed;
 static int wake[2] = {-1, -1}; /* the handler writes, cli_signal_wait reads */
 
 static void on_signal(int sig)
 {
-    caught = sig;
+    if (!caught) caught = sig; /* the first one names the interruption */
+    interrupt_request(sig);    /* what the long phases of the library poll */
     if (wake[1] >= 0) {
         int saved = errno; /* write is async-signal-safe; errno is kept */
         ssize_t r = write(wake[1], "", 1);
@@ -30,16 +33,32 @@ void cli_signal_install(void)
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND; /* the second interrupt is not caught */
+    sigemptyset(&sa.sa_mask); /* one handler at a time: the first signal is kept */
+    sigaddset(&sa.sa_mask, SIGINT);
+    sigaddset(&sa.sa_mask, SIGTERM);
+    sigaddset(&sa.sa_mask, SIGHUP);
+    /* no SA_RESETHAND: a second Ctrl-C (or a SIGHUP after a SIGINT) ends
+     * the run as the first does, cleanly, instead of killing it halfway
+     * through a write */
+    sa.sa_flags = 0;
     caught = 0;
+    interrupt_clear();
     if (wake[0] < 0 && pipe(wake) == 0) {
         for (int k = 0; k < 2; k++) fcntl(wake[k], F_SETFD, FD_CLOEXEC);
         fcntl(wake[1], F_SETFL, O_NONBLOCK); /* a full pipe never blocks the handler */
     }
     sigaction(SIGINT, &sa, &previous_int);
     sigaction(SIGTERM, &sa, &previous_term);
+    sigaction(SIGHUP, &sa, &previous_hup); /* the terminal closed */
+    /* a write beyond the file-size limit (ulimit -f) fails with EFBIG
+     * instead of killing the program: exit 5, temporary files removed */
+    struct sigaction ign;
+    memset(&ign, 0, sizeof ign);
+    ign.sa_handler = SIG_IGN;
+    sigemptyset(&ign.sa_mask);
+    sigaction(SIGXFSZ, &ign, &previous_xfsz);
     installed = 1;
+    interrupt_arm(1);
 }
 
 void cli_signal_restore(void)
@@ -47,7 +66,10 @@ void cli_signal_restore(void)
     if (!installed) return;
     sigaction(SIGINT, &previous_int, NULL);
     sigaction(SIGTERM, &previous_term, NULL);
+    sigaction(SIGHUP, &previous_hup, NULL);
+    sigaction(SIGXFSZ, &previous_xfsz, NULL);
     installed = 0;
+    interrupt_arm(0);
     for (int k = 0; k < 2; k++) {
         if (wake[k] >= 0) close(wake[k]);
         wake[k] = -1;
@@ -81,23 +103,14 @@ int cli_signal_report(const char *cmd)
 {
     if (!caught) return 0;
     fprintf(stderr, "scaf %s: interrupted by %s; nothing written\n", cmd,
-            caught == SIGTERM ? "SIGTERM" : "SIGINT");
+            interrupt_signal_name(caught));
     return 1;
 }
 
 void cli_signal_test_point(int iteration)
 {
-    const char *e = getenv("SCAF_TEST_RAISE_SIGNAL_AT");
-    if (!e || !*e || !installed || caught) return; /* once: the handler resets itself */
-    const char *colon = strchr(e, ':');
-    size_t n = colon ? (size_t)(colon - e) : strlen(e);
-    int hit;
-    if (iteration > 0) {
-        char *end;
-        long at = strtol(e, &end, 10);
-        hit = end == e + n && end != e && at == iteration;
-    } else {
-        hit = n == 5 && !strncmp(e, "write", 5);
-    }
-    if (hit) raise(colon && !strcmp(colon + 1, "TERM") ? SIGTERM : SIGINT);
+    if (!installed || caught) return;
+    char name[16] = "write";
+    if (iteration > 0) snprintf(name, sizeof name, "%d", iteration);
+    interrupt_test_point(name);
 }

@@ -45,7 +45,9 @@ static void usage(FILE *o)
             "T.json: {\"handles\": [{\"vertex\": 0, \"target\": [x, y]}, ...], \"weight\": W}\n"
             "with 0-based vertex indices; \"weight\" is optional (see --weight). A handle\n"
             "may have \"path\": [[x, y], ...], waypoints visited before its target (a drag:\n"
-            "--frame-iterations each; every handle's path has the same length).\n"
+            "--frame-iterations each; every handle's path has the same length). One handle\n"
+            "per vertex; every target and waypoint within 1e6 mesh sizes of the mesh\n"
+            "(otherwise exit 4 naming the handle).\n"
             "OUT: OBJ with the deformed positions as `v` (z = 0) and as `vt`.\n"
             "\n"
             "options:\n"
@@ -260,6 +262,10 @@ static int deform_main(int argc, char **argv)
     opt_handle_term h;
     opt_handle_term_init(&h, 2, 0);
     scaf_status st = deform_targets_read(a.targets, &t, &err);
+    if (st == SCAF_ERR_CANCELLED && cli_signal_report("deform")) {
+        rc = EXIT_CANCELLED;
+        goto done;
+    }
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf deform: %s\n", err.message);
         rc = exit_code_for(st);
@@ -268,14 +274,11 @@ static int deform_main(int argc, char **argv)
     int nv;
     const int *F;
     if ((rc = planar_mesh(&m, a.in, &nv, &P, &F)) != EXIT_OK) goto done;
-    for (int i = 0; i < t.n; i++)
-        if (t.vertex[i] >= nv) {
-            fprintf(stderr,
-                    "scaf deform: %s: handle %d: vertex %d is not one of the mesh's %d (0-based)\n",
-                    a.targets, i + 1, t.vertex[i], nv);
-            rc = EXIT_MESH;
-            goto done;
-        }
+    if ((st = deform_targets_check(&t, nv, P, a.targets, &err)) != SCAF_OK) {
+        fprintf(stderr, "scaf deform: %s\n", err.message);
+        rc = exit_code_for(st);
+        goto done;
+    }
     X = malloc(sizeof(double) * 2 * (size_t)(nv > 0 ? nv : 1));
     rec = malloc(sizeof *rec * (size_t)(a.iterations > 0 ? a.iterations : 1));
     if (!X || !rec) {

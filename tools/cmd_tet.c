@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "cli_args.h"
+#include "cli_closed_surface.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
@@ -81,6 +82,11 @@ static int tet_main(int argc, char **argv)
     mesh_read_info info;
     status = cli_read_mesh("tet", in, quiet, &m, &info);
     if (status != EXIT_OK) return status;
+    /* the same words as flow, inflate and untangle for an open surface */
+    if ((status = cli_check_closed_surface("tet", in, &m, "tet")) != EXIT_OK) {
+        mesh_free(&m);
+        return status;
+    }
     double lo[3], hi[3];
     tet_box_around(m.nv, m.V, scale, lo, hi);
     tet_box_mesh tm;

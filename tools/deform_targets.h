@@ -11,9 +11,16 @@
  * "target" of two numbers) and "weight" (optional, a number >= 0: the
  * handle weight ratio of opt/handle_term). Any other key, a duplicate key,
  * a trailing comma or anything after the object is an error that names the
- * line and what is wrong (SCAF_ERR_PARSE, exit 3). Vertex ranges are
- * checked by the caller against the mesh. Writing: the same format, one
- * handle per line. */
+ * line and what is wrong (SCAF_ERR_PARSE, exit 3). The handles are then
+ * checked against the mesh (deform_targets_check, SCAF_ERR_MESH, exit 4,
+ * naming the handle): a vertex of the mesh, one handle per vertex (two
+ * targets for one vertex cannot both be met), and every target and
+ * waypoint within DEFORM_TARGET_RANGE mesh sizes of the mesh (farther,
+ * the squared handle error overflows or swamps the energy: [1e308,
+ * -1e308] used to end "max handle error inf" with the mesh unchanged).
+ * Reading stops at a pending SIGINT / SIGTERM (base/interrupt:
+ * SCAF_ERR_CANCELLED); paths grow geometrically. Writing: the same
+ * format, one handle per line. */
 #ifndef SCAF_TOOLS_DEFORM_TARGETS_H
 #define SCAF_TOOLS_DEFORM_TARGETS_H
 
@@ -44,6 +51,15 @@ scaf_status deform_targets_parse(const char *text, size_t size, const char *name
  * path of nframes waypoints (frames as in deform_targets; NULL when 0). */
 scaf_status deform_targets_write(const char *path, int n, const double *T, int nframes,
                                  const double *frames, scaf_error *err);
+
+/* How far a target may lie from the mesh, in mesh sizes (the larger side
+ * of its bounding box): beyond any useful drag, far below overflow. */
+#define DEFORM_TARGET_RANGE 1e6
+
+/* Check t against the planar mesh of nv positions P (nv by 2): see the
+ * banner. SCAF_ERR_MESH naming the handle (messages start with name). */
+scaf_status deform_targets_check(const deform_targets *t, int nv, const double *P, const char *name,
+                                 scaf_error *err);
 
 void deform_targets_free(deform_targets *t);
 

@@ -44,7 +44,7 @@ static inline const exit_code_meaning *exit_code_meanings(int *count)
         {EXIT_OUTPUT, "output could not be written (nothing partial is left behind)"},
         {EXIT_NUMERIC, "numerical failure"},
         {EXIT_NOMEM, "out of memory"},
-        {EXIT_CANCELLED, "interrupted (SIGINT, SIGTERM): nothing partial is left behind"},
+        {EXIT_CANCELLED, "interrupted (SIGINT, SIGTERM, SIGHUP): nothing partial is left behind"},
         {EXIT_INTERNAL, "internal error (a bug: please report it)"},
     };
     *count = (int)(sizeof table / sizeof table[0]);

@@ -64,10 +64,11 @@ static scaf_status check_edges(int nf, const int *F, scaf_error *err)
 static scaf_status check_input(int nv, const double *V, int nf, const int *F, const double lo[3],
                                const double hi[3], int box_cells, scaf_error *err)
 {
-    if (nv < 4 || nf < 4 || !V || !F || box_cells < 1 || box_cells > 64)
+    if (nv < 0 || nf < 0 || (nv && !V) || (nf && !F) || box_cells < 1 || box_cells > 64)
         return err_set(err, SCAF_ERR_USAGE,
                        "tet_box_mesh: bad arguments (%d vertices, %d faces, %d box cells)", nv, nf,
                        box_cells);
+    if (nf == 0) return err_set(err, SCAF_ERR_MESH, "the surface has no faces");
     for (int k = 0; k < 3; k++)
         if (!(lo[k] < hi[k]) || !isfinite(lo[k]) || !isfinite(hi[k]))
             return err_set(err, SCAF_ERR_USAGE,
@@ -82,8 +83,13 @@ static scaf_status check_input(int nv, const double *V, int nf, const int *F, co
                 return err_set(err, SCAF_ERR_USAGE,
                                "vertex %d (%g, %g, %g) is not strictly inside the box", i,
                                V[3 * (size_t)i], V[3 * (size_t)i + 1], V[3 * (size_t)i + 2]);
-    s = check_edges(nf, F, err);
+    s = check_edges(nf, F, err); /* open or not manifold: said as such, before the counts */
     if (s) return s;
+    if (nv < 4 || nf < 4) /* closed, but flat: a triangle twice, ... */
+        return err_set(err, SCAF_ERR_MESH,
+                       "the surface encloses no volume: %d vertices and %d faces (a closed "
+                       "surface has at least 4 of each)",
+                       nv, nf);
     if (r.degenerate_faces > 0)
         return err_set(err, SCAF_ERR_MESH,
                        "the surface has %d zero-area faces (the first: face %d)",

@@ -18,6 +18,11 @@ scaf_status closed_surface_check(const mesh *m, int genus0, scaf_error *err)
         err_set(err, st,
                 "the surface is not manifold: %d non-manifold edges, %d non-manifold vertices",
                 t.non_manifold_edges, t.non_manifold_vertices);
+    else if (t.faces < 4 || m->nv < 4) /* closed but flat: a triangle twice */
+        err_set(err, st,
+                "the surface encloses no volume: %d vertices and %d faces (a closed surface has "
+                "at least 4 of each)",
+                m->nv, t.faces);
     else if (t.degenerate_faces > 0)
         err_set(err, st, "%d faces have zero area (no cotangent weights)", t.degenerate_faces);
     else if (t.unreferenced_vertices > 0)

@@ -3,7 +3,8 @@
  *
  * Refused, in this order, with the reason in words: no face; an open
  * surface (boundary edges, in how many loops); non-manifold edges or
- * vertices; zero-area faces (no cotangent weights, no plane for the
+ * vertices; fewer than 4 vertices or faces (closed, but no volume: a
+ * triangle twice); zero-area faces (no cotangent weights, no plane for the
  * exact checks); vertices used by no face. With `genus0` also: more than
  * one connected component, and a genus other than 0 (cMCF rounds a
  * genus-0 surface into a sphere; a handle instead thins into a ring, see

@@ -66,6 +66,14 @@ scaf_status mesh_parse(const char *data, size_t size, mesh_format format, const 
     if (!name) name = "<memory>";
     if (!data && size) return err_set(err, SCAF_ERR_USAGE, "mesh_parse: NULL data");
     if (!data) data = "";
+    /* lines ended by CR alone (classic Mac OS): every parser would see one
+     * long first line ("no faces"); say so instead */
+    const char *cr = memchr(data, '\r', size);
+    if (cr && cr + 1 < data + size && !memchr(data, '\n', size))
+        return err_set(err, SCAF_ERR_PARSE,
+                       "%s:1: the lines end in CR alone (classic Mac OS line endings); convert "
+                       "them to LF or CRLF",
+                       name);
     if (format == MESH_FORMAT_UNKNOWN) format = format_from_content(data, size);
     switch (format) {
     case MESH_FORMAT_OBJ: return mesh_parse_obj(data, size, name, m, info, err);

@@ -9,7 +9,7 @@
  * `#` comments, blank lines, CRLF and a missing final newline are accepted.
  *
  * Counts are checked against the bytes that follow before anything is
- * allocated (a vertex line takes at least 6 bytes, a face line 8), so an
+ * allocated (a vertex line takes at least 6 bytes, a face line 2), so an
  * absurd header is a "truncated file" error, never a huge allocation.
  * Other errors: malformed or non-finite number, index out of range, face
  * with fewer than 3 corners or a repeated vertex, no faces. All are
@@ -128,7 +128,10 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
         c.p = c.end;
     }
     size_t rest = (size_t)(c.end - c.p);
-    if ((unsigned long long)nv * 6 + (unsigned long long)nf * 8 > (unsigned long long)rest + 1)
+    /* a face line takes at least 2 bytes ("3\n", a malformed one): bounding
+     * by the 8 of a valid one called a short file with a 2-corner face
+     * "truncated"; the faces' own lines say what is wrong with them */
+    if ((unsigned long long)nv * 6 + (unsigned long long)nf * 2 > (unsigned long long)rest + 1)
         return mesh_parse_fail(err, name, header_line,
                                "header says %lld vertices and %lld faces but only %zu bytes follow "
                                "(truncated file?)",

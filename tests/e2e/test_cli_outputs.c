@@ -13,11 +13,16 @@
  *     exit 5 before any work, no output at all;
  *   - .ply / unknown mesh extensions: exit 2; .obj.gz: gzip, readable;
  *   - "-" is the standard output (never a file named "-"), at most once;
+ *     an empty name is a usage error (exit 2, it was 5);
  *   - a write failing in the middle (file size limit: the OBJ fits, the
  *     SVG does not): exit 5, the existing OBJ unchanged, no temporary file;
- *   - SIGINT / SIGTERM raised by the test hook in the progress callback or
- *     while writing: exit 8, one line, existing files unchanged, no
- *     temporary file.
+ *   - SIGINT / SIGTERM / SIGHUP raised by the test hook in the progress
+ *     callback or while writing, also twice or several in a row: exit 8,
+ *     one line naming the first, existing files unchanged, no temporary
+ *     file;
+ *   - the file-size limit (ulimit -f) without ignoring SIGXFSZ first: the
+ *     write fails, exit 5, no temporary file (it used to be killed by
+ *     SIGXFSZ, exit 153, two temporary files left).
  */
 #include <dirent.h>
 #include <setjmp.h>
@@ -297,6 +302,19 @@ static void dash_is_standard_output(void **state)
         test_run("cd '%s' && grep -q '\"command\": \"atlas\"' report.json && test -s a.obj", dir),
         0);
     assert_int_equal(run_in(dir, NULL, "param in.obj -o - --report - > none.txt"), 2);
+    /* an empty name is a bad command line (it was exit 5, a failed write) */
+    static const char *const empty[][2] = {
+        {"param in.obj -o ''", "-o: the file name is empty"},
+        {"param in.obj -o o.obj --report ''", "--report: the file name is empty"},
+        {"gen hemisphere -o ''", "-o: the file name is empty"},
+        {"atlas in.obj -o '' -q", "-o: the file name is empty"}};
+    for (size_t i = 0; i < sizeof empty / sizeof empty[0]; i++) {
+        assert_int_equal(run_in(dir, NULL, empty[i][0]), 2);
+        char *e = stderr_of(dir);
+        assert_non_null(strstr(e, empty[i][1]));
+        free(e);
+    }
+    assert_no_work(dir);
     snprintf(p, sizeof p, "%s/none.txt", dir);
     assert_file_is(p, "");
     snprintf(p, sizeof p, "%s/-", dir);
@@ -335,6 +353,32 @@ static void failed_write_commits_nothing(void **state)
     remove_dir(dir);
 }
 
+static void file_size_limit_is_a_failed_write(void **state)
+{
+    (void)state;
+    char dir[512], p[600];
+    make_dir(dir, sizeof dir, "xfsz");
+    snprintf(p, sizeof p, "%s/out.obj", dir);
+    write_text(p, "old mesh\n");
+    /* 3 KiB per file: the input (2.7 KB) was written before; the output
+     * (~5 KB, and its .gz staging) is not. SIGXFSZ is left as the shell
+     * has it (its default ends the program). */
+    const char *limit = "bash -c \"ulimit -f 3; exec \\\"\\$0\\\" \\\"\\$@\\\"\"";
+    static const char *const runs[] = {"param in.obj -o out.obj -q --iterations 2",
+                                       "param in.obj -o out.obj.gz -q --iterations 2",
+                                       "gen hemisphere --size 6 -o out.obj"};
+    for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
+        assert_int_equal(run_in(dir, limit, runs[i]), 5);
+        char *e = stderr_of(dir);
+        assert_non_null(strstr(e, "out.obj"));
+        assert_non_null(strstr(e, "nothing written"));
+        free(e);
+        assert_file_is(p, "old mesh\n");
+        assert_int_equal(hidden_files(dir), 0);
+    }
+    remove_dir(dir);
+}
+
 static void signal_stops_cleanly_with_exit_8(void **state)
 {
     (void)state;
@@ -343,28 +387,42 @@ static void signal_stops_cleanly_with_exit_8(void **state)
     snprintf(p, sizeof p, "%s/out.obj", dir);
     snprintf(q, sizeof q, "%s/r.json", dir);
     write_text(p, "old mesh\n");
-    static const char *const runs[][2] = {
+    /* the hook, the command, the signal the message names (the first) */
+    static const char *const runs[][3] = {
         {"SCAF_TEST_RAISE_SIGNAL_AT=2",
-         "param in.obj -o out.obj --report r.json --tolerance 0 --iterations 20"},
+         "param in.obj -o out.obj --report r.json --tolerance 0 --iterations 20", "SIGINT"},
         {"SCAF_TEST_RAISE_SIGNAL_AT=2:TERM",
-         "param in.obj -o out.obj --tolerance 0 --iterations 20"},
+         "param in.obj -o out.obj --tolerance 0 --iterations 20", "SIGTERM"},
         {"SCAF_TEST_RAISE_SIGNAL_AT=write",
          "param in.obj -o out.obj --report r.json --svg s.svg --png p.png "
-         "--iterations 2"},
+         "--iterations 2",
+         "SIGINT"},
         {"SCAF_TEST_RAISE_SIGNAL_AT=write:TERM",
-         "param in.obj -o out.obj.gz --report r.json --iterations 2"},
-        {"SCAF_TEST_RAISE_SIGNAL_AT=3", "atlas in.obj -o out.obj --report r.json --iterations 5"},
+         "param in.obj -o out.obj.gz --report r.json --iterations 2", "SIGTERM"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=3", "atlas in.obj -o out.obj --report r.json --iterations 5",
+         "SIGINT"},
         {"SCAF_TEST_RAISE_SIGNAL_AT=write",
          "atlas in.obj -o out.obj --report r.json --svg s.svg --iterations 2 "
-         "--compact-iterations 2"},
-        {"SCAF_TEST_RAISE_SIGNAL_AT=write", "gen hemisphere -o out.obj"},
+         "--compact-iterations 2",
+         "SIGINT"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=write", "gen hemisphere -o out.obj", "SIGINT"},
+        /* a second Ctrl-C, a SIGHUP (the terminal closed), both: the same
+         * clean end (it used to kill the program: exit 130 / 129 and the
+         * temporary files left) */
+        {"SCAF_TEST_RAISE_SIGNAL_AT=write:INT:INT",
+         "param in.obj -o out.obj.gz --report r.json --iterations 2", "SIGINT"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=write:HUP",
+         "param in.obj -o out.obj.gz --report r.json --iterations 2", "SIGHUP"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=2:HUP:INT:TERM",
+         "atlas in.obj -o out.obj --report r.json --iterations 5", "SIGHUP"},
+        {"SCAF_TEST_RAISE_SIGNAL_AT=write:INT:INT:INT", "gen hemisphere -o out.obj.gz", "SIGINT"},
     };
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
         assert_int_equal(run_in(dir, runs[i][0], runs[i][1]), 8);
         char *e = stderr_of(dir);
         const char *line = strstr(e, "interrupted by SIG");
         assert_non_null(line);
-        assert_non_null(strstr(line, strstr(runs[i][0], "TERM") ? "SIGTERM" : "SIGINT"));
+        assert_non_null(strstr(line, runs[i][2]));
         assert_null(strstr(e, "internal error"));
         free(e);
         assert_file_is(p, "old mesh\n");
@@ -406,6 +464,7 @@ int main(void)
         cmocka_unit_test(extension_decides_the_format),
         cmocka_unit_test(dash_is_standard_output),
         cmocka_unit_test(failed_write_commits_nothing),
+        cmocka_unit_test(file_size_limit_is_a_failed_write),
         cmocka_unit_test(signal_stops_cleanly_with_exit_8),
         cmocka_unit_test(help_lists_exit_8),
     };

@@ -1,7 +1,8 @@
 /* End-to-end: `scaf tet` writes a checked tetrahedral scaffold around a
  * closed surface, `scaf check FILE.mesh` verifies every tet, finds a tet
  * flipped by hand, and surfaces TetGen cannot mesh are refused with exit 4
- * and no file. */
+ * and no file, the cause in words (open, no volume: the same words in
+ * tet, inflate, flow and untangle). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -67,6 +68,35 @@ static void refusals(void **state)
         test_capture(out, sizeof out, "'%s' tet '%s' -o '%s' 2>&1", SCAF_BINARY, surf, tets), 4);
     assert_non_null(strstr(out, "the surface is open"));
     assert_false(test_exists(tets));
+    /* issue 29: a single triangle (open) and a triangle twice (closed, no
+     * volume) said "tet_box_mesh: bad arguments (3 vertices, ...)"; every
+     * 3D command now names the cause in the same words */
+    static const char *const small[][2] = {
+        {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "the surface is open"},
+        {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n",
+         "the surface encloses no volume: 3 vertices and 2 faces"},
+    };
+    static const char *const cmds[] = {"tet", "inflate --scale 2", "flow --steps 2", "untangle"};
+    for (int i = 0; i < 2; i++) {
+        test_tmp_path("tet_cli_small.off", surf, sizeof surf);
+        FILE *g = fopen(surf, "w");
+        assert_non_null(g);
+        fputs(small[i][0], g);
+        fclose(g);
+        for (int c = 0; c < 4; c++) {
+            char o[1024];
+            test_tmp_path(c == 0 ? "tet_cli_small.mesh" : "tet_cli_small.obj", o, sizeof o);
+            remove(o);
+            assert_int_equal(test_capture(out, sizeof out, "'%s' %.*s '%s' -o '%s' %s 2>&1",
+                                          SCAF_BINARY, (int)strcspn(cmds[c], " "), cmds[c], surf, o,
+                                          cmds[c] + strcspn(cmds[c], " ")),
+                             4);
+            if (!strstr(out, small[i][1])) print_error("%s: %s\n", cmds[c], out);
+            assert_non_null(strstr(out, small[i][1]));
+            assert_null(strstr(out, "bad arguments"));
+            assert_false(test_exists(o));
+        }
+    }
     /* self-intersecting: an octahedron with its top pushed through a bottom face */
     test_tmp_path("tet_cli_pushed.off", surf, sizeof surf);
     FILE *f = fopen(surf, "w");

@@ -67,6 +67,9 @@ static const parse_case obj_garbage_cases[] = {
     {TRI, 3, "no faces"},
     {"", 1, "no faces"},
     {"# nothing\n\n", 2, "no faces"},
+    /* issue 29: said "no faces (empty mesh)" */
+    {"v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r", 1, "lines end in CR alone"},
+    {"v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3", 1, "lines end in CR alone"},
 };
 
 static void obj_garbage_and_empty(void **state)
@@ -100,6 +103,10 @@ static const parse_case off_cases[] = {
     {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 99999999999999999999\n", 6, "out of range"},
     {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n", 6, "more than once"},
     {"OFF\n3 1 0\n0 0 0.5\n1 0 0.5\n0 1 0\n2 0 1\n", 6, "2 corners"},
+    /* issue 29: the short lines of this file made it "only 24 bytes follow
+     * (truncated file?)" */
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", 6, "face has 2 corners (needs at least 3)"},
+    {"OFF\r3 1 0\r0 0 0\r1 0 0\r0 1 0\r3 0 1 2\r", 1, "lines end in CR alone"},
     {"OFF\n3 1 0\n0 0 0.5\n1 0 0.5\n0 1 0\n3 0 1\n", 6, "2 of its 3 indices"},
     {"OFF\n3 1 0\n0 0 0.5\n1 0 0.5\n0 1 0\n300 0 1 2\n", 6, "line is shorter"},
     {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2    \n", 6, "3 of its 4 indices"},
