@@ -4,7 +4,8 @@
  * the limit refused with 413 (Content-Length and chunked), wrong Host /
  * Origin / token refused, a refused request changes nothing, SIGINT and
  * SIGTERM stop the server with exit 0, a second server on a taken port and
- * bad command lines exit 2, a missing input 3. */
+ * bad command lines exit 2, a missing input 3. Connections that trickle
+ * their request head do not keep the user's requests out. */
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <setjmp.h>
@@ -15,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -282,6 +284,67 @@ static void bad_command_lines(void **state)
     assert_int_equal(test_run("%s edit --help | grep -q 'Exit status:'", SCAF_BINARY), 0);
 }
 
+/* 80 connections that send a header line every second hold every slot of
+ * the server; the user's request is answered while they go on trickling
+ * (each connection has a few seconds for its whole request). The trickle
+ * is bounded (30 lines): on a server without the deadline the user waits
+ * the whole trickle and the test fails. */
+static void slow_clients_do_not_lock_the_user_out(void **state)
+{
+    (void)state;
+    char out[512], args[1200];
+    test_tmp_path("edit_slow_out.obj", out, sizeof out);
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", atlas_path, out);
+    assert_true(start(&s, args));
+    struct sockaddr_in a;
+    memset(&a, 0, sizeof a);
+    a.sin_family = AF_INET;
+    a.sin_port = htons((uint16_t)s.port);
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    enum { N = 80 };
+    int slow[N];
+    for (int i = 0; i < N; i++) {
+        slow[i] = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK, 0);
+        assert_true(slow[i] >= 0);
+        /* nonblocking: past the server's limit connects wait in the backlog */
+        connect(slow[i], (struct sockaddr *)&a, sizeof a);
+    }
+    int user = socket(AF_INET, SOCK_STREAM, 0);
+    assert_int_equal(connect(user, (struct sockaddr *)&a, sizeof a), 0);
+    char head[512];
+    int n = snprintf(head, sizeof head,
+                     "GET /api/state HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nX-Scaf-Token: %s\r\n"
+                     "Connection: close\r\n\r\n",
+                     s.port, s.token);
+    for (int i = 0; i < N; i++) {
+        ssize_t w = write(slow[i], "GET / HTTP/1.1\r\n", 16);
+        (void)w;
+    }
+    assert_int_equal(write(user, head, (size_t)n), n);
+    int answered = 0;
+    for (int line = 0; line < 30 && !answered; line++) {
+        /* a second between two lines of the trickle, or the answer */
+        struct pollfd p = {user, POLLIN, 0};
+        if (poll(&p, 1, 1000) == 1) {
+            answered = 1;
+            break;
+        }
+        for (int i = 0; i < N; i++) {
+            ssize_t w = send(slow[i], "X-Slow: 1\r\n", 11, MSG_NOSIGNAL);
+            (void)w;
+        }
+    }
+    assert_true(answered);
+    char resp[256] = "";
+    ssize_t r = read(user, resp, sizeof resp - 1);
+    assert_true(r > 0);
+    assert_int_equal(strncmp(resp, "HTTP/1.1 200", 12), 0);
+    close(user);
+    for (int i = 0; i < N; i++) close(slow[i]);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+}
+
 static int stop_running(void **state)
 {
     (void)state;
@@ -301,6 +364,7 @@ int main(void)
         cmocka_unit_test_teardown(sigterm_stops, stop_running),
         cmocka_unit_test_teardown(overlapping_uvs_start_from_the_atlas, stop_running),
         cmocka_unit_test(bad_command_lines),
+        cmocka_unit_test_teardown(slow_clients_do_not_lock_the_user_out, stop_running),
     };
     return cmocka_run_group_tests(tests, make_atlas, NULL);
 }
