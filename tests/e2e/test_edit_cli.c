@@ -4,7 +4,11 @@
  * the limit refused with 413 (Content-Length and chunked), wrong Host /
  * Origin / token refused, a refused request changes nothing, SIGINT and
  * SIGTERM stop the server with exit 0, a second server on a taken port and
- * bad command lines exit 2, a missing input 3. Connections that trickle
+ * bad command lines exit 2, a missing input 3. Work is never lost or
+ * destroyed: a save after the input was moved, deleted or replaced still
+ * writes (keeping the input's other lines, or saying what was dropped), a
+ * save through a link to the input made after the start is refused (409),
+ * and connections that trickle
  * their request head do not keep the user's requests out. */
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -18,6 +22,7 @@
 #include <string.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <cmocka.h>
@@ -284,6 +289,141 @@ static void bad_command_lines(void **state)
     assert_int_equal(test_run("%s edit --help | grep -q 'Exit status:'", SCAF_BINARY), 0);
 }
 
+/* POST path json with the token: the status; body (may be NULL) gets the
+ * response's body. */
+static int post(const server *s, const char *path, const char *json, char *body, size_t size)
+{
+    static char resp[1 << 20];
+    int st = request(s, "POST", path, s->token, NULL, json, resp, sizeof resp);
+    if (body) {
+        const char *b = strstr(resp, "\r\n\r\n");
+        snprintf(body, size, "%s", b ? b + 4 : "");
+    }
+    return st;
+}
+
+static const char *drag_json = "{\"chart\": 0, \"dx\": 0.05, \"dy\": 0, \"angle\": 0, \"steps\": "
+                               "2}";
+
+/* The atlas with a line of the user's own at the end, as path. */
+static void user_input(const char *path)
+{
+    char *text = test_slurp(atlas_path);
+    assert_non_null(text);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fputs("# a line of the user's\n", f);
+    fclose(f);
+    free(text);
+}
+
+static int file_has(const char *path, const char *needle)
+{
+    char *t = test_slurp(path);
+    int yes = t && strstr(t, needle);
+    free(t);
+    return yes;
+}
+
+/* The input moved, deleted, replaced by a folder, or rewritten in place:
+ * save still writes the layout; the input's other lines are kept when the
+ * file the editor opened can still be read as the mesh, else the note says
+ * what was dropped. */
+static void save_after_the_input_is_gone(void **state)
+{
+    (void)state;
+    char in[512], out[512], args[1200], body[4096];
+    test_tmp_path("edit_gone_in.obj", in, sizeof in);
+    test_tmp_path("edit_gone_out.obj", out, sizeof out);
+    remove(out);
+    user_input(in);
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", in, out);
+    assert_true(start(&s, args));
+    assert_int_equal(post(&s, "/api/drag", drag_json, NULL, 0), 200);
+
+    /* moved away: the file the editor opened is read */
+    char moved[600];
+    snprintf(moved, sizeof moved, "%s.moved", in);
+    assert_int_equal(rename(in, moved), 0);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 200);
+    assert_null(strstr(body, "\"note\""));
+    assert_true(file_has(out, "# a line of the user's"));
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    /* deleted, and a folder in its place */
+    assert_int_equal(remove(moved), 0);
+    assert_int_equal(mkdir(in, 0700), 0);
+    remove(out);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 200);
+    assert_true(file_has(out, "# a line of the user's"));
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    rmdir(in);
+
+    /* rewritten in place (the same file, another mesh): a plain OBJ, and
+     * the note says so */
+    user_input(in);
+    remove(out);
+    assert_true(start(&s, args));
+    FILE *f = fopen(in, "w"); /* truncates the file the editor holds */
+    assert_non_null(f);
+    fputs("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", f);
+    fclose(f);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"note\": \"wrote a plain OBJ without the normals"));
+    assert_false(file_has(out, "# a line of the user's"));
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    remove(in);
+    remove(out);
+}
+
+/* After the start, the output becomes a symbolic link to the input, a hard
+ * link of it, or a link to where the input was moved: save refuses (409)
+ * and the input stays as it was. */
+static void save_refuses_a_link_to_the_input(void **state)
+{
+    (void)state;
+    char in[512], out[512], args[1200], body[4096], aside[600], moved[600];
+    test_tmp_path("edit_link_in.obj", in, sizeof in);
+    test_tmp_path("edit_link_out.obj", out, sizeof out);
+    snprintf(aside, sizeof aside, "%s.aside", out);
+    snprintf(moved, sizeof moved, "%s.moved", in);
+    remove(out);
+    user_input(in);
+    char *original = test_slurp(in);
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", in, out);
+    assert_true(start(&s, args));
+    assert_int_equal(post(&s, "/api/drag", drag_json, NULL, 0), 200);
+    assert_int_equal(post(&s, "/api/save", "{}", NULL, 0), 200);
+
+    assert_int_equal(rename(out, aside), 0);
+    assert_int_equal(symlink(in, out), 0);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 409);
+    assert_non_null(strstr(body, "the same file"));
+    remove(out);
+    assert_int_equal(link(in, out), 0);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 409);
+    remove(out);
+    assert_int_equal(rename(in, moved), 0);
+    assert_int_equal(symlink(moved, out), 0);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 409);
+    assert_non_null(strstr(body, "names the input file"));
+    char *now = test_slurp(moved);
+    assert_string_equal(now, original);
+    free(now);
+    /* the link gone: saves again */
+    remove(out);
+    assert_int_equal(post(&s, "/api/save", "{}", NULL, 0), 200);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    free(original);
+    remove(moved);
+    remove(out);
+    remove(aside);
+}
+
 /* 80 connections that send a header line every second hold every slot of
  * the server; the user's request is answered while they go on trickling
  * (each connection has a few seconds for its whole request). The trickle
@@ -364,6 +504,8 @@ int main(void)
         cmocka_unit_test_teardown(sigterm_stops, stop_running),
         cmocka_unit_test_teardown(overlapping_uvs_start_from_the_atlas, stop_running),
         cmocka_unit_test(bad_command_lines),
+        cmocka_unit_test_teardown(save_after_the_input_is_gone, stop_running),
+        cmocka_unit_test_teardown(save_refuses_a_link_to_the_input, stop_running),
         cmocka_unit_test_teardown(slow_clients_do_not_lock_the_user_out, stop_running),
     };
     return cmocka_run_group_tests(tests, make_atlas, NULL);
