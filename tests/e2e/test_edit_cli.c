@@ -8,7 +8,8 @@
  * destroyed: a save after the input was moved, deleted or replaced still
  * writes (keeping the input's other lines, or saying what was dropped), a
  * save through a link to the input made after the start is refused (409),
- * and connections that trickle
+ * unsaved changes go to the autosave (after a quiet second and on the
+ * signal) and --resume continues from it, and connections that trickle
  * their request head do not keep the user's requests out. */
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -21,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <poll.h>
+#include <sys/inotify.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -424,6 +426,88 @@ static void save_refuses_a_link_to_the_input(void **state)
     remove(aside);
 }
 
+/* Block until `name` appears in dir by a rename or a close after writing
+ * (inotify: no polling); 1, or 0 when nothing came for 60 s. */
+static int wait_for_file(int in, const char *path)
+{
+    const char *name = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    char buf[4096] __attribute__((aligned(__alignof__(struct inotify_event))));
+    for (;;) {
+        struct pollfd p = {in, POLLIN, 0};
+        if (poll(&p, 1, 60000) <= 0) return 0;
+        ssize_t n = read(in, buf, sizeof buf);
+        if (n <= 0) return 0;
+        for (char *q = buf; q < buf + n;) {
+            struct inotify_event *e = (struct inotify_event *)q;
+            if (e->len && !strcmp(e->name, name)) return 1;
+            q += sizeof *e + e->len;
+        }
+    }
+}
+
+/* Unsaved changes: the state says so; the autosave beside the output is
+ * written after a quiet second and on the signal; a new session refuses
+ * to start over it, --resume starts from it; a save removes it. */
+static void autosave_and_resume(void **state)
+{
+    (void)state;
+    char in[512], out[512], autosave[512], args[1200], body[1 << 14], dir[512];
+    test_tmp_path("edit_auto_in.obj", in, sizeof in);
+    test_tmp_path("edit_auto_out.obj", out, sizeof out);
+    test_tmp_path("edit_auto_out.autosave.obj", autosave, sizeof autosave);
+    remove(out);
+    remove(autosave);
+    user_input(in);
+    snprintf(dir, sizeof dir, "%s", autosave);
+    *strrchr(dir, '/') = '\0';
+    int watch = inotify_init1(IN_CLOEXEC);
+    assert_true(watch >= 0);
+    assert_true(inotify_add_watch(watch, dir, IN_MOVED_TO | IN_CLOSE_WRITE) >= 0);
+
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", in, out);
+    assert_true(start(&s, args));
+    assert_int_equal(request(&s, "GET", "/api/state", s.token, NULL, NULL, body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"unsaved\": false"));
+    assert_int_equal(post(&s, "/api/drag", drag_json, body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"unsaved\": true"));
+    /* a quiet second later */
+    assert_true(wait_for_file(watch, autosave));
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, autosave), 0);
+    char *first = test_slurp(autosave);
+    /* one more change, then the signal at once: the autosave has it */
+    assert_int_equal(post(&s, "/api/drag", drag_json, NULL, 0), 200);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    char *last = test_slurp(autosave);
+    assert_non_null(last);
+    assert_string_not_equal(first, last);
+    free(first);
+    free(last);
+    assert_false(test_exists(out));
+    char *err = test_slurp(s.err);
+    assert_non_null(strstr(err, "--resume` continues from them"));
+    free(err);
+
+    /* unsaved edits are never overwritten by a new session */
+    assert_int_equal(test_run("%s edit %s 2> /dev/null", SCAF_BINARY, args), 2);
+    char resume[1300];
+    snprintf(resume, sizeof resume, "%s --resume", args);
+    assert_true(start(&s, resume));
+    assert_int_equal(request(&s, "GET", "/api/state", s.token, NULL, NULL, body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"unsaved\": true"));
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"unsaved\": false"));
+    assert_false(test_exists(autosave));
+    assert_true(file_has(out, "# a line of the user's"));
+    /* nothing unsaved: no autosave at the end */
+    assert_int_equal(stop(&s, SIGINT), 0);
+    assert_false(test_exists(autosave));
+    assert_int_equal(test_run("%s edit %s 2> /dev/null", SCAF_BINARY, resume), 3);
+    close(watch);
+    remove(in);
+    remove(out);
+}
+
 /* 80 connections that send a header line every second hold every slot of
  * the server; the user's request is answered while they go on trickling
  * (each connection has a few seconds for its whole request). The trickle
@@ -506,6 +590,7 @@ int main(void)
         cmocka_unit_test(bad_command_lines),
         cmocka_unit_test_teardown(save_after_the_input_is_gone, stop_running),
         cmocka_unit_test_teardown(save_refuses_a_link_to_the_input, stop_running),
+        cmocka_unit_test_teardown(autosave_and_resume, stop_running),
         cmocka_unit_test_teardown(slow_clients_do_not_lock_the_user_out, stop_running),
     };
     return cmocka_run_group_tests(tests, make_atlas, NULL);
