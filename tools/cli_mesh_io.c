@@ -2,6 +2,8 @@
 #include "cli_mesh_io.h"
 
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "exit_codes.h"
 
@@ -34,5 +36,38 @@ scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *
                 cmd, err->message);
         err_clear(err);
     }
+    return mesh_write_obj(out, o, err);
+}
+
+scaf_status cli_write_uv_from(const char *in, const char *source, const mesh_read_info *info,
+                              const char *out, const mesh *o, char *note, size_t note_size,
+                              scaf_error *err)
+{
+    if (note_size) note[0] = '\0';
+    if (!info || info->format != MESH_FORMAT_OBJ) return mesh_write_obj(out, o, err);
+    char *data = NULL;
+    size_t size = 0;
+    scaf_status st = mesh_load_file(source, &data, &size, err);
+    if (st == SCAF_ERR_NOMEM) return st;
+    if (st == SCAF_OK) {
+        st = obj_rewrite_uv_text(in, data, size, out, o, err);
+        free(data);
+        if (st != SCAF_ERR_MESH) return st;
+    }
+    if (st == SCAF_ERR_MESH) {
+        snprintf(note, note_size,
+                 "wrote a plain OBJ without the normals, materials, groups and comments of the "
+                 "input: %s",
+                 err->message);
+    } else { /* the read's message names `source`: say `in` instead */
+        const char *why = err->message;
+        size_t ns = strlen(source);
+        if (!strncmp(why, source, ns) && !strncmp(why + ns, ": ", 2)) why += ns + 2;
+        snprintf(note, note_size,
+                 "wrote a plain OBJ without the normals, materials, groups and comments of the "
+                 "input: %s cannot be read again (%s)",
+                 in, why);
+    }
+    err_clear(err);
     return mesh_write_obj(out, o, err);
 }

@@ -28,4 +28,15 @@ int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_re
 scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info,
                          const char *out, const mesh *o, scaf_error *err);
 
+/* The same for `scaf edit`, whose input may be moved, deleted or replaced
+ * while it runs: the input's text is read from `source` (a path to the
+ * same file; the editor passes /proc/self/fd/N of a descriptor it keeps
+ * open, so a deleted or moved input is still read), and when that text
+ * cannot be read or no longer describes the mesh, a plain OBJ is written
+ * and `note` (note_size bytes, "" otherwise) says what was not kept and
+ * why, instead of the warning on the standard error. */
+scaf_status cli_write_uv_from(const char *in, const char *source, const mesh_read_info *info,
+                              const char *out, const mesh *o, char *note, size_t note_size,
+                              scaf_error *err);
+
 #endif

@@ -3,6 +3,7 @@
 #include "cli_outputs.h"
 
 #include <ctype.h>
+#include <stdarg.h>
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,6 +14,17 @@
 
 #include "cli_signal.h"
 #include "exit_codes.h"
+
+/* Print "scaf CMD: message" and keep the message for the caller. */
+static void say(cli_outputs *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void say(cli_outputs *o, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(o->message, sizeof o->message, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "scaf %s: %s\n", o->cmd, o->message);
+}
 
 void cli_outputs_init(cli_outputs *o, const char *cmd, const char *input)
 {
@@ -49,7 +61,7 @@ static int ends_with(const char *path, const char *suffix)
     return 1;
 }
 
-static int check_format(const cli_outputs *o, cli_output *c)
+static int check_format(cli_outputs *o, cli_output *c)
 {
     c->gz = ends_with(c->path, ".gz");
     if (c->kind != CLI_OUTPUT_MESH || c->to_stdout || ends_with(c->path, ".obj") ||
@@ -60,17 +72,14 @@ static int check_format(const cli_outputs *o, cli_output *c)
                                            {".off.gz", "OFF"}, {".stl.gz", "STL"}};
     for (size_t i = 0; i < sizeof no_uv / sizeof no_uv[0]; i++)
         if (ends_with(c->path, no_uv[i][0])) {
-            fprintf(stderr,
-                    "scaf %s: %s %s: scaf cannot write %s (it has no per-corner texture "
-                    "coordinates); "
-                    "name the output .obj or .obj.gz\n",
-                    o->cmd, c->option, c->path, no_uv[i][1]);
+            say(o,
+                "%s %s: scaf cannot write %s (it has no per-corner texture coordinates); "
+                "name the output .obj or .obj.gz",
+                c->option, c->path, no_uv[i][1]);
             return EXIT_USAGE;
         }
-    fprintf(stderr,
-            "scaf %s: %s %s: unknown output format; name the output .obj or .obj.gz "
-            "(gzip-compressed)\n",
-            o->cmd, c->option, c->path);
+    say(o, "%s %s: unknown output format; name the output .obj or .obj.gz (gzip-compressed)",
+        c->option, c->path);
     return EXIT_USAGE;
 }
 
@@ -106,7 +115,7 @@ int cli_outputs_check(cli_outputs *o)
     file_id in[CLI_INPUTS_MAX];
     int have[CLI_INPUTS_MAX] = {0};
     if (!ids) {
-        fprintf(stderr, "scaf %s: out of memory\n", o->cmd);
+        say(o, "out of memory");
         return EXIT_NOMEM;
     }
     int rc = EXIT_OK;
@@ -132,7 +141,7 @@ int cli_outputs_check(cli_outputs *o)
             rc = check_format(o, &o->out[k]);
         } else if (atomic_resolve(o->out[k].path, ids[k].path, sizeof ids[k].path, NULL, &err) !=
                    SCAF_OK) {
-            fprintf(stderr, "scaf %s: %s %s\n", o->cmd, o->out[k].option, err.message);
+            say(o, "%s %s", o->out[k].option, err.message);
             rc = EXIT_OUTPUT;
         } else {
             id_stat(&ids[k]);
@@ -142,17 +151,14 @@ int cli_outputs_check(cli_outputs *o)
     for (int k = 0; k < o->n && !rc; k++) {
         for (int i = 0; i < o->ninputs && !rc; i++)
             if (have[i] && same_file(&in[i], &ids[k])) {
-                fprintf(stderr,
-                        "scaf %s: %s and %s name the same file (%s): it would be overwritten\n",
-                        o->cmd, o->input_option[i], o->out[k].option, o->out[k].path);
+                say(o, "%s and %s name the same file (%s): it would be overwritten",
+                    o->input_option[i], o->out[k].option, o->out[k].path);
                 rc = EXIT_USAGE;
             }
         for (int j = 0; j < k && !rc; j++)
             if (same_file(&ids[j], &ids[k])) {
-                fprintf(stderr,
-                        "scaf %s: %s and %s name the same file (%s): give each output its own "
-                        "file\n",
-                        o->cmd, o->out[j].option, o->out[k].option, o->out[k].path);
+                say(o, "%s and %s name the same file (%s): give each output its own file",
+                    o->out[j].option, o->out[k].option, o->out[k].path);
                 rc = EXIT_USAGE;
             }
     }
@@ -162,7 +168,7 @@ int cli_outputs_check(cli_outputs *o)
         if (o->out[k].to_stdout) continue;
         atomic_file probe;
         if (atomic_open(&probe, o->out[k].path, &err) != SCAF_OK) {
-            fprintf(stderr, "scaf %s: %s %s\n", o->cmd, o->out[k].option, err.message);
+            say(o, "%s %s", o->out[k].option, err.message);
             rc = EXIT_OUTPUT;
         }
         atomic_abort(&probe);

@@ -70,6 +70,9 @@ typedef struct cli_outputs {
     const char *input_option[CLI_INPUTS_MAX]; /* "the input", "--targets", ... */
     int n;
     cli_output out[CLI_OUTPUTS_MAX];
+    char message[512]; /* the last refusal cli_outputs_check printed, without
+                          "scaf CMD: " ("" when none): `scaf edit` sends
+                          it to the page */
 } cli_outputs;
 
 void cli_outputs_init(cli_outputs *o, const char *cmd, const char *input);

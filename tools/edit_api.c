@@ -1,17 +1,23 @@
 /* tools/edit_api: the requests `scaf edit` answers (see edit_api.h). */
+#define _POSIX_C_SOURCE 200809L /* open's O_CLOEXEC */
 #include "edit_api.h"
 
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include "base/atomic_file.h"
 #include "base/json_write.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "edit_json.h"
+#include "exit_codes.h"
 
 #define JSON_TYPE "application/json"
 #define DRAG_STEPS_MAX 20
@@ -138,8 +144,9 @@ static void reply_state(edit_api *a, edit_response *rs, const char *extra_key, i
     fprintf(j.f, "\"iteration\": %d", scaf_drag_iterations(a->drag));
     json_key_number(j.f, "energy", scaf_drag_energy(a->drag));
     json_key_number(j.f, "efficiency", scaf_drag_packing_efficiency(a->drag));
-    fprintf(j.f, ", \"handles\": %d, \"undo\": %d", scaf_drag_handle_count(a->drag),
-            scaf_drag_undo_count(a->drag));
+    fprintf(j.f, ", \"handles\": %d, \"undo\": %d, \"unsaved\": %s",
+            scaf_drag_handle_count(a->drag), scaf_drag_undo_count(a->drag),
+            edit_api_unsaved(a) ? "true" : "false");
     json_key_number(j.f, "max_handle_error", scaf_drag_max_handle_error(a->drag));
     fputs(", ", j.f);
     write_doubles(j.f, "uv", a->uv, 2 * (size_t)a->nuv);
@@ -323,6 +330,7 @@ static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
     }
     int steps = f[7].seen ? (int)f[7].value : 1;
     st = scaf_drag_step(a->drag, steps, stop_on_signal, NULL);
+    a->changes++; /* a failed step keeps its last finished iteration */
     if (st != SCAF_OK && st != SCAF_ERR_CANCELLED) {
         reply_failure(a, rs, "step");
         return;
@@ -353,6 +361,7 @@ static void run(edit_api *a, const edit_request *rq, edit_response *rs, int comp
         return;
     }
     int before = scaf_drag_iterations(a->drag);
+    a->changes++;
     scaf_status st = SCAF_OK;
     if (compact) {
         st = scaf_drag_compact(a->drag, cap, stop_on_signal, NULL);
@@ -380,6 +389,7 @@ static void undo(edit_api *a, const edit_request *rq, edit_response *rs)
         reply_error(rs, 409, "nothing to undo");
         return;
     }
+    a->changes++;
     if (scaf_drag_undo(a->drag) != SCAF_OK) {
         reply_failure(a, rs, "undo");
         return;
@@ -387,11 +397,56 @@ static void undo(edit_api *a, const edit_request *rq, edit_response *rs)
     reply_state(a, rs, NULL, 0);
 }
 
+/* The output checked again before each save: it may have become a link
+ * to the input (or the input a hard link of it) since the start. The
+ * rules of cli_outputs_check (input, autosave and output as they are
+ * named now), and the input as it was at the start, through the
+ * descriptor kept open (the name may have moved away). 1, or 0 after
+ * answering 409 (the output names another file of the session) or 500. */
+static int check_output(edit_api *a, edit_response *rs, cli_outputs *outs)
+{
+    cli_outputs_init(outs, "edit", a->in);
+    cli_outputs_add_input(outs, "the autosave", a->autosave);
+    cli_outputs_add(outs, "-o", a->out, CLI_OUTPUT_MESH);
+    int rc = cli_outputs_check(outs);
+    if (rc != EXIT_OK) {
+        reply_error(rs, rc == EXIT_USAGE ? 409 : 500, "save: %s; nothing written", outs->message);
+        return 0;
+    }
+    struct stat in, out;
+    char target[4096];
+    scaf_error err;
+    err_clear(&err);
+    if (a->in_fd >= 0 && fstat(a->in_fd, &in) == 0 &&
+        atomic_resolve(a->out, target, sizeof target, NULL, &err) == SCAF_OK &&
+        stat(target, &out) == 0 && in.st_dev == out.st_dev && in.st_ino == out.st_ino) {
+        fprintf(stderr, "scaf edit: -o %s names the input file (%s as it was at the start)\n",
+                a->out, a->in);
+        reply_error(rs, 409,
+                    "save: -o %s now names the input file (%s as it was at the start): it would "
+                    "be overwritten; nothing written",
+                    a->out, a->in);
+        return 0;
+    }
+    return 1;
+}
+
+/* Where save reads the input's text: the descriptor kept open. */
+static const char *input_source(const edit_api *a, char *buf, size_t size)
+{
+    if (a->in_fd < 0) return a->in;
+    snprintf(buf, size, "/proc/self/fd/%d", a->in_fd);
+    return access(buf, R_OK) == 0 ? buf : a->in;
+}
+
 /* Normalize, certify exactly (scaf_drag_get_output), write atomically
  * through tools/cli_outputs like `scaf atlas`. */
 static void save(edit_api *a, const edit_request *rq, edit_response *rs)
 {
     if (!parse(rq, rs, NULL, 0)) return;
+    cli_outputs outs;
+    if (!check_output(a, rs, &outs)) return;
+    const int k = 0; /* the only output */
     double *UV = malloc(sizeof(double) * 2 * (size_t)(a->nuv ? a->nuv : 1));
     int *FT = malloc(sizeof(int) * 3 * (size_t)(a->nf ? a->nf : 1));
     if (!UV || !FT) {
@@ -407,15 +462,16 @@ static void save(edit_api *a, const edit_request *rq, edit_response *rs)
         free(FT);
         return;
     }
-    cli_outputs outs;
-    cli_outputs_init(&outs, "edit", a->in);
-    int k = cli_outputs_add(&outs, "-o", a->out, CLI_OUTPUT_MESH);
     scaf_error err;
     err_clear(&err);
     mesh o = {a->m->nv, a->m->V, a->m->nf, a->m->F, a->nuv, UV, FT};
+    char note[1024] = "", source[64];
     const char *path = cli_outputs_begin(&outs, k, &err);
-    int rc = cli_outputs_end(
-        &outs, k, path ? cli_write_uv("edit", a->in, a->rinfo, path, &o, &err) : SCAF_ERR_IO, &err);
+    int rc = cli_outputs_end(&outs, k,
+                             path ? cli_write_uv_from(a->in, input_source(a, source, sizeof source),
+                                                      a->rinfo, path, &o, note, sizeof note, &err)
+                                  : SCAF_ERR_IO,
+                             &err);
     if (rc == 0) rc = cli_outputs_commit(&outs);
     cli_outputs_abort(&outs);
     free(UV);
@@ -425,7 +481,12 @@ static void save(edit_api *a, const edit_request *rq, edit_response *rs)
                     err.message[0] ? err.message : "interrupted");
         return;
     }
+    if (note[0]) fprintf(stderr, "scaf edit: warning: %s: %s\n", a->out, note);
     a->saves++;
+    a->saved_changes = a->changes;
+    /* the saved file is newer than the autosave: a resume from it would
+     * go back in time */
+    if (a->autosave && remove(a->autosave) == 0) a->autosaved_changes = a->changes;
     json_out j;
     if (!json_begin(&j, rs)) return;
     fputs("{\"path\": ", j.f);
@@ -434,8 +495,39 @@ static void save(edit_api *a, const edit_request *rq, edit_response *rs)
     json_key_number(j.f, "padding", a->padding);
     json_key_number(j.f, "gap", gap);
     json_key_number(j.f, "efficiency", eff);
-    fprintf(j.f, ", \"saves\": %d}\n", a->saves);
+    fprintf(j.f, ", \"saves\": %d, \"unsaved\": false", a->saves);
+    if (note[0]) {
+        fputs(", \"note\": ", j.f);
+        json_write_string(j.f, note);
+    }
+    fputs("}\n", j.f);
     json_end(&j, rs);
+}
+
+int edit_api_unsaved(const edit_api *a) { return a->changes != a->saved_changes; }
+
+scaf_status edit_api_autosave(edit_api *a, int *written, scaf_error *err)
+{
+    if (written) *written = 0;
+    if (!a->autosave || !edit_api_unsaved(a) || a->autosaved_changes == a->changes) return SCAF_OK;
+    double *UV = malloc(sizeof(double) * 2 * (size_t)(a->nuv ? a->nuv : 1));
+    int *FT = malloc(sizeof(int) * 3 * (size_t)(a->nf ? a->nf : 1));
+    scaf_status st = SCAF_OK;
+    if (!UV || !FT) {
+        st = err_nomem(err, "the autosave");
+    } else if (scaf_drag_get_output(a->drag, UV, FT, NULL, NULL, NULL) != SCAF_OK) {
+        st = err_set(err, SCAF_ERR_INTERNAL, "%s", scaf_drag_error(a->drag));
+    } else {
+        mesh o = {a->m->nv, a->m->V, a->m->nf, a->m->F, a->nuv, UV, FT};
+        st = mesh_write_obj(a->autosave, &o, err);
+    }
+    free(UV);
+    free(FT);
+    if (st == SCAF_OK) {
+        a->autosaved_changes = a->changes;
+        if (written) *written = 1;
+    }
+    return st;
 }
 
 /* ---- routing ---------------------------------------------------------------- */
@@ -536,6 +628,7 @@ scaf_status edit_api_init(edit_api *a, scaf_drag_t *d, const mesh *m, const char
                           scaf_error *err)
 {
     memset(a, 0, sizeof *a);
+    a->in_fd = open(in, O_RDONLY | O_CLOEXEC);
     a->drag = d;
     a->m = m;
     a->in = in;
@@ -582,6 +675,8 @@ scaf_status edit_api_init(edit_api *a, scaf_drag_t *d, const mesh *m, const char
 
 void edit_api_free(edit_api *a)
 {
+    if (a->in_fd >= 0) close(a->in_fd);
+    a->in_fd = -1;
     free(a->FT);
     free(a->chart);
     free(a->uv);

@@ -23,7 +23,21 @@
  *                       optimize or compact (409 when there is none)
  *   POST /api/save      {}: the layout normalized into the unit square,
  *                       proved bijective with the padding kept (exact),
- *                       written atomically to the output OBJ
+ *                       written atomically to the output OBJ: the input
+ *                       again with the new UVs (read through a descriptor
+ *                       kept open since the start, so a moved or deleted
+ *                       input still gives its other lines), or a plain
+ *                       OBJ and a "note" saying what was not kept. The
+ *                       output is checked again at each save (409 when it
+ *                       now names the input or the autosave, through a
+ *                       link, a hard link or the input moved away), and a
+ *                       successful save removes the autosave.
+ *
+ * The state carries "unsaved": whether the layout differs from the last
+ * save (the page's mark and its warning before the tab closes). The
+ * autosave (edit_api_autosave, called by tools/cmd_edit after a quiet
+ * second and on SIGINT / SIGTERM) writes the normalized, certified layout
+ * as a plain OBJ beside the output, atomically.
  *
  * Every request must come from this server's page: the Host header names
  * 127.0.0.1 or localhost at this port (a DNS-rebinding page cannot), an
@@ -62,12 +76,19 @@ typedef struct edit_api {
     const char *page; /* the page, page_len bytes */
     size_t page_len;
     int nuv, nf, ncharts;
-    int *FT, *chart; /* nf by 3, nf: fixed for the mesh */
-    double *uv;      /* nuv by 2: scratch for the state */
-    double diagonal; /* of the 3D bounding box: the page's checker */
-    double reach;    /* largest |dx|, |dy|, |x|, |y| of a drag: 1000
+    int *FT, *chart;       /* nf by 3, nf: fixed for the mesh */
+    double *uv;            /* nuv by 2: scratch for the state */
+    double diagonal;       /* of the 3D bounding box: the page's checker */
+    double reach;          /* largest |dx|, |dy|, |x|, |y| of a drag: 1000
                               times the starting layout's extent */
-    int saves;       /* files written */
+    int saves;             /* files written */
+    const char *autosave;  /* the autosave file (NULL: none) */
+    int in_fd;             /* the input, open since the start (-1: it could
+                             not be opened): save reads it through this */
+    int changes;           /* layout changes so far (a resumed start counts
+                             as one) */
+    int saved_changes;     /* `changes` at the last save */
+    int autosaved_changes; /* `changes` the autosave file holds */
 } edit_api;
 
 /* Set up the handler for a drag context that has its mesh; the token,
@@ -77,6 +98,17 @@ scaf_status edit_api_init(edit_api *a, scaf_drag_t *d, const mesh *m, const char
                           scaf_error *err);
 
 void edit_api_free(edit_api *a);
+
+/* Whether the layout differs from the last save (or, before any, from the
+ * output's start: a resumed layout is unsaved). */
+int edit_api_unsaved(const edit_api *a);
+
+/* Write the layout to a->autosave when it holds unsaved changes not yet
+ * autosaved: SCAF_OK (also when nothing was to do), else the failure in
+ * err (the previous autosave stays). *written (may be NULL): 1 when the
+ * file was written now. Not thread-safe with edit_api_handle: the caller
+ * serializes them. */
+scaf_status edit_api_autosave(edit_api *a, int *written, scaf_error *err);
 
 /* Answer one request (user: the edit_api). Always fills rs. */
 void edit_api_handle(void *user, const edit_request *rq, edit_response *rs);

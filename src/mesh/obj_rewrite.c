@@ -200,29 +200,17 @@ static scaf_status rewrite(rewriter *R, const char *data, size_t size, scaf_erro
     return SCAF_OK;
 }
 
-scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh *m,
-                           scaf_error *err)
+/* Both entry points: checks, then the text rewritten into out_path. */
+static scaf_status rewrite_text(const char *name, const char *data, size_t size,
+                                const char *out_path, const mesh *m, scaf_error *err)
 {
-    if (!in_path || !out_path || !m || !m->F || !mesh_has_uv(m) || !m->UV)
-        return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv: missing path, faces or UVs");
-    for (size_t k = 0; k < 3 * (size_t)m->nf; k++)
-        if (m->FT[k] < 0 || m->FT[k] >= m->nuv)
-            return err_set(err, SCAF_ERR_MESH, "obj_rewrite_uv: face %zu uses UV %d of %d", k / 3,
-                           m->FT[k], m->nuv);
-    char *data = NULL;
-    size_t size = 0;
-    scaf_status st = mesh_load_file(in_path, &data, &size, err);
-    if (st != SCAF_OK) return st;
     atomic_file af;
-    st = atomic_open(&af, out_path, err);
-    if (st != SCAF_OK) {
-        free(data);
-        return st;
-    }
+    scaf_status st = atomic_open(&af, out_path, err);
+    if (st != SCAF_OK) return st;
     static const size_t bufsize = 1 << 20;
     char *buf = malloc(bufsize);
     if (buf) setvbuf(af.f, buf, _IOFBF, bufsize);
-    rewriter R = {.name = in_path, .m = m, .f = af.f};
+    rewriter R = {.name = name, .m = m, .f = af.f};
     st = rewrite(&R, data, size, err);
     if (st == SCAF_ERR_IO) err_set(err, SCAF_ERR_IO, "%s: cannot write (disk full?)", out_path);
     if (st == SCAF_OK) st = atomic_commit(&af, err);
@@ -230,6 +218,41 @@ scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh
     free(buf);
     free(R.c);
     free(R.line);
+    return st;
+}
+
+static scaf_status check_args(const char *out_path, const mesh *m, scaf_error *err)
+{
+    if (!out_path || !m || !m->F || !mesh_has_uv(m) || !m->UV)
+        return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv: missing path, faces or UVs");
+    for (size_t k = 0; k < 3 * (size_t)m->nf; k++)
+        if (m->FT[k] < 0 || m->FT[k] >= m->nuv)
+            return err_set(err, SCAF_ERR_MESH, "obj_rewrite_uv: face %zu uses UV %d of %d", k / 3,
+                           m->FT[k], m->nuv);
+    return SCAF_OK;
+}
+
+scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh *m,
+                           scaf_error *err)
+{
+    if (!in_path) return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv: missing path, faces or UVs");
+    scaf_status st = check_args(out_path, m, err);
+    if (st != SCAF_OK) return st;
+    char *data = NULL;
+    size_t size = 0;
+    st = mesh_load_file(in_path, &data, &size, err);
+    if (st != SCAF_OK) return st;
+    st = rewrite_text(in_path, data, size, out_path, m, err);
     free(data);
     return st;
+}
+
+scaf_status obj_rewrite_uv_text(const char *name, const char *data, size_t size,
+                                const char *out_path, const mesh *m, scaf_error *err)
+{
+    if (!name || (!data && size))
+        return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv_text: no text");
+    scaf_status st = check_args(out_path, m, err);
+    if (st != SCAF_OK) return st;
+    return rewrite_text(name, data ? data : "", size, out_path, m, err);
 }

@@ -37,4 +37,10 @@
 scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh *m,
                            scaf_error *err);
 
+/* The same with the input's text already in memory (size bytes of data,
+ * decompressed; name for messages): for a caller that read the file
+ * itself, e.g. through a descriptor it kept open. */
+scaf_status obj_rewrite_uv_text(const char *name, const char *data, size_t size,
+                                const char *out_path, const mesh *m, scaf_error *err);
+
 #endif /* SCAF_MESH_OBJ_REWRITE_H */

@@ -12,8 +12,10 @@
 // (the layout comes back number for number), optimizes and compacts, clicks
 // save and checks the saved file with `scaf check`: bijective, every two
 // charts at least the padding apart. Then a request with a wrong token is
-// refused (403) and changes nothing, and SIGTERM stops the server with
-// exit status 0. Exit 0 pass, 1 fail.
+// refused (403) and changes nothing. The unsaved-changes mark shows after
+// the first drag and goes with the save; after one more change, leaving
+// the page asks first (beforeunload), and SIGTERM stops the server with
+// exit status 0, the change kept in the autosave. Exit 0 pass, 1 fail.
 import { spawn, spawnSync } from "node:child_process";
 import { mkdirSync, rmSync, existsSync } from "node:fs";
 import { createInterface } from "node:readline";
@@ -48,7 +50,8 @@ mkdirSync(work, { recursive: true });
 const input = path.join(work, "atlas.obj");
 const saved = path.join(work, "edited.obj");
 const shot = path.join(work, "scaf-edit.png");
-for (const f of [saved, shot]) rmSync(f, { force: true });
+const autosave = path.join(work, "edited.autosave.obj");
+for (const f of [saved, shot, autosave]) rmSync(f, { force: true });
 const sphere = path.join(work, "cubesphere.obj");
 run(["gen", "cubesphere", "--size", "4", "-o", sphere]);
 // An atlas packed to the editor's own padding (4 texels at 1024), what a
@@ -96,6 +99,14 @@ try {
   await page.mouse.up();
   await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle() && window.scafEditor.state().handles === 0));
   const after = await page.evaluate(() => window.scafEditor.state());
+  // the mark: in the bar and in the tab's title
+  const mark = async () => ({
+    shown: await page.isVisible("#unsaved"), title: await page.title(),
+    flag: await page.evaluate(() => window.scafEditor.unsaved)
+  });
+  const dragged = await mark();
+  if (!dragged.shown || !dragged.flag || !dragged.title.startsWith("\u25cf"))
+    fail("no unsaved-changes mark after a drag: " + JSON.stringify(dragged));
   await page.screenshot({ path: shot });  // released: the view fitted to the pushed charts
   if (!(after.iteration > before.iteration)) fail("no iteration ran while dragging");
   // chart 0 followed the mouse toward chart 1 (pushing it aside: no overlap)
@@ -165,6 +176,9 @@ try {
   const gap = Number((/min chart gap\s+(\S+)/.exec(check.stdout) || [])[1]);
   if (!(gap >= PADDING)) fail(`saved atlas: min chart gap ${gap} below the padding ${PADDING}`);
   if (!/charts\s+6\b/.test(check.stdout)) fail("saved atlas does not have 6 charts:\n" + check.stdout);
+  const savedMark = await mark();
+  if (savedMark.shown || savedMark.flag || savedMark.title.startsWith("\u25cf"))
+    fail("the unsaved-changes mark stayed after the save: " + JSON.stringify(savedMark));
 
   // a request without the token is refused and changes nothing
   const refused = await page.evaluate(async () => {
@@ -175,6 +189,25 @@ try {
   });
   if (refused.status !== 403 || !refused.same) fail("a request without token: " + JSON.stringify(refused));
   if (errors.length) fail("page errors: " + errors.join("; "));
+
+  // one more change: marked again, and leaving the page asks first
+  await page.click("#optimize");
+  await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle()));
+  if (!(await mark()).shown) fail("no unsaved-changes mark after optimize");
+  // (a reload: this Chromium's headless close skips the dialog, a
+  // navigation away from the page shows it)
+  const asked = new Promise(resolve => {
+    page.once("dialog", async d => {
+      const type = d.type();
+      await d.dismiss();  // stay on the page
+      resolve(type);
+    });
+    page.once("load", () => resolve("none: the page reloaded"));
+  });
+  page.reload({ timeout: 0 }).catch(() => {});  // pending while the dialog holds it
+  const dialog = await asked;
+  if (dialog !== "beforeunload") fail("leaving the page with unsaved changes: dialog " + dialog);
+  if (!(await page.evaluate(() => window.scafEditor.unsaved))) fail("the page left without asking");
   console.log(`scaf edit in ${await browser.version()}: ${after.iteration - before.iteration} iterations ` +
               `while dragging, saved ${saved} (bijective, min chart gap ${gap} >= ${PADDING}), ` +
               `screenshot ${shot}`);
@@ -188,5 +221,13 @@ try {
   if (code !== 0) {
     console.error(`FAIL: scaf edit ended with ${code === null ? "signal " + signal : "exit " + code} after SIGTERM`);
     process.exitCode = 1;
+  } else if (!process.exitCode) {
+    // the change after the save is in the autosave, certified
+    const check = spawnSync(scaf, ["check", autosave], { encoding: "utf8" });
+    if (check.status !== 0) {
+      console.error(`FAIL: the autosave ${autosave} after SIGTERM: scaf check exit ${check.status}`);
+      process.exitCode = 1;
+    }
   }
+  rmSync(autosave, { force: true });  // the next run starts afresh
 }

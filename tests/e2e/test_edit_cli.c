@@ -4,7 +4,13 @@
  * the limit refused with 413 (Content-Length and chunked), wrong Host /
  * Origin / token refused, a refused request changes nothing, SIGINT and
  * SIGTERM stop the server with exit 0, a second server on a taken port and
- * bad command lines exit 2, a missing input 3. */
+ * bad command lines exit 2, a missing input 3. Work is never lost or
+ * destroyed: a save after the input was moved, deleted or replaced still
+ * writes (keeping the input's other lines, or saying what was dropped), a
+ * save through a link to the input made after the start is refused (409),
+ * unsaved changes go to the autosave (after a quiet second and on the
+ * signal) and --resume continues from it, and connections that trickle
+ * their request head do not keep the user's requests out. */
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <setjmp.h>
@@ -15,7 +21,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <poll.h>
+#include <sys/inotify.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <cmocka.h>
@@ -282,6 +291,284 @@ static void bad_command_lines(void **state)
     assert_int_equal(test_run("%s edit --help | grep -q 'Exit status:'", SCAF_BINARY), 0);
 }
 
+/* POST path json with the token: the status; body (may be NULL) gets the
+ * response's body. */
+static int post(const server *s, const char *path, const char *json, char *body, size_t size)
+{
+    static char resp[1 << 20];
+    int st = request(s, "POST", path, s->token, NULL, json, resp, sizeof resp);
+    if (body) {
+        const char *b = strstr(resp, "\r\n\r\n");
+        snprintf(body, size, "%s", b ? b + 4 : "");
+    }
+    return st;
+}
+
+static const char *drag_json = "{\"chart\": 0, \"dx\": 0.05, \"dy\": 0, \"angle\": 0, \"steps\": "
+                               "2}";
+
+/* The atlas with a line of the user's own at the end, as path. */
+static void user_input(const char *path)
+{
+    char *text = test_slurp(atlas_path);
+    assert_non_null(text);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fputs("# a line of the user's\n", f);
+    fclose(f);
+    free(text);
+}
+
+static int file_has(const char *path, const char *needle)
+{
+    char *t = test_slurp(path);
+    int yes = t && strstr(t, needle);
+    free(t);
+    return yes;
+}
+
+/* The input moved, deleted, replaced by a folder, or rewritten in place:
+ * save still writes the layout; the input's other lines are kept when the
+ * file the editor opened can still be read as the mesh, else the note says
+ * what was dropped. */
+static void save_after_the_input_is_gone(void **state)
+{
+    (void)state;
+    char in[512], out[512], args[1200], body[4096];
+    test_tmp_path("edit_gone_in.obj", in, sizeof in);
+    test_tmp_path("edit_gone_out.obj", out, sizeof out);
+    remove(out);
+    user_input(in);
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", in, out);
+    assert_true(start(&s, args));
+    assert_int_equal(post(&s, "/api/drag", drag_json, NULL, 0), 200);
+
+    /* moved away: the file the editor opened is read */
+    char moved[600];
+    snprintf(moved, sizeof moved, "%s.moved", in);
+    assert_int_equal(rename(in, moved), 0);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 200);
+    assert_null(strstr(body, "\"note\""));
+    assert_true(file_has(out, "# a line of the user's"));
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    /* deleted, and a folder in its place */
+    assert_int_equal(remove(moved), 0);
+    assert_int_equal(mkdir(in, 0700), 0);
+    remove(out);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 200);
+    assert_true(file_has(out, "# a line of the user's"));
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    rmdir(in);
+
+    /* rewritten in place (the same file, another mesh): a plain OBJ, and
+     * the note says so */
+    user_input(in);
+    remove(out);
+    assert_true(start(&s, args));
+    FILE *f = fopen(in, "w"); /* truncates the file the editor holds */
+    assert_non_null(f);
+    fputs("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", f);
+    fclose(f);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"note\": \"wrote a plain OBJ without the normals"));
+    assert_false(file_has(out, "# a line of the user's"));
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    remove(in);
+    remove(out);
+}
+
+/* After the start, the output becomes a symbolic link to the input, a hard
+ * link of it, or a link to where the input was moved: save refuses (409)
+ * and the input stays as it was. */
+static void save_refuses_a_link_to_the_input(void **state)
+{
+    (void)state;
+    char in[512], out[512], args[1200], body[4096], aside[600], moved[600];
+    test_tmp_path("edit_link_in.obj", in, sizeof in);
+    test_tmp_path("edit_link_out.obj", out, sizeof out);
+    snprintf(aside, sizeof aside, "%s.aside", out);
+    snprintf(moved, sizeof moved, "%s.moved", in);
+    remove(out);
+    user_input(in);
+    char *original = test_slurp(in);
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", in, out);
+    assert_true(start(&s, args));
+    assert_int_equal(post(&s, "/api/drag", drag_json, NULL, 0), 200);
+    assert_int_equal(post(&s, "/api/save", "{}", NULL, 0), 200);
+
+    assert_int_equal(rename(out, aside), 0);
+    assert_int_equal(symlink(in, out), 0);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 409);
+    assert_non_null(strstr(body, "the same file"));
+    remove(out);
+    assert_int_equal(link(in, out), 0);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 409);
+    remove(out);
+    assert_int_equal(rename(in, moved), 0);
+    assert_int_equal(symlink(moved, out), 0);
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 409);
+    assert_non_null(strstr(body, "names the input file"));
+    char *now = test_slurp(moved);
+    assert_string_equal(now, original);
+    free(now);
+    /* the link gone: saves again */
+    remove(out);
+    assert_int_equal(post(&s, "/api/save", "{}", NULL, 0), 200);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    free(original);
+    remove(moved);
+    remove(out);
+    remove(aside);
+}
+
+/* Block until `name` appears in dir by a rename or a close after writing
+ * (inotify: no polling); 1, or 0 when nothing came for 60 s. */
+static int wait_for_file(int in, const char *path)
+{
+    const char *name = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
+    char buf[4096] __attribute__((aligned(__alignof__(struct inotify_event))));
+    for (;;) {
+        struct pollfd p = {in, POLLIN, 0};
+        if (poll(&p, 1, 60000) <= 0) return 0;
+        ssize_t n = read(in, buf, sizeof buf);
+        if (n <= 0) return 0;
+        for (char *q = buf; q < buf + n;) {
+            struct inotify_event *e = (struct inotify_event *)q;
+            if (e->len && !strcmp(e->name, name)) return 1;
+            q += sizeof *e + e->len;
+        }
+    }
+}
+
+/* Unsaved changes: the state says so; the autosave beside the output is
+ * written after a quiet second and on the signal; a new session refuses
+ * to start over it, --resume starts from it; a save removes it. */
+static void autosave_and_resume(void **state)
+{
+    (void)state;
+    char in[512], out[512], autosave[512], args[1200], body[1 << 14], dir[512];
+    test_tmp_path("edit_auto_in.obj", in, sizeof in);
+    test_tmp_path("edit_auto_out.obj", out, sizeof out);
+    test_tmp_path("edit_auto_out.autosave.obj", autosave, sizeof autosave);
+    remove(out);
+    remove(autosave);
+    user_input(in);
+    snprintf(dir, sizeof dir, "%s", autosave);
+    *strrchr(dir, '/') = '\0';
+    int watch = inotify_init1(IN_CLOEXEC);
+    assert_true(watch >= 0);
+    assert_true(inotify_add_watch(watch, dir, IN_MOVED_TO | IN_CLOSE_WRITE) >= 0);
+
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", in, out);
+    assert_true(start(&s, args));
+    assert_int_equal(request(&s, "GET", "/api/state", s.token, NULL, NULL, body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"unsaved\": false"));
+    assert_int_equal(post(&s, "/api/drag", drag_json, body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"unsaved\": true"));
+    /* a quiet second later */
+    assert_true(wait_for_file(watch, autosave));
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, autosave), 0);
+    char *first = test_slurp(autosave);
+    /* one more change, then the signal at once: the autosave has it */
+    assert_int_equal(post(&s, "/api/drag", drag_json, NULL, 0), 200);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    char *last = test_slurp(autosave);
+    assert_non_null(last);
+    assert_string_not_equal(first, last);
+    free(first);
+    free(last);
+    assert_false(test_exists(out));
+    char *err = test_slurp(s.err);
+    assert_non_null(strstr(err, "--resume` continues from them"));
+    free(err);
+
+    /* unsaved edits are never overwritten by a new session */
+    assert_int_equal(test_run("%s edit %s 2> /dev/null", SCAF_BINARY, args), 2);
+    char resume[1300];
+    snprintf(resume, sizeof resume, "%s --resume", args);
+    assert_true(start(&s, resume));
+    assert_int_equal(request(&s, "GET", "/api/state", s.token, NULL, NULL, body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"unsaved\": true"));
+    assert_int_equal(post(&s, "/api/save", "{}", body, sizeof body), 200);
+    assert_non_null(strstr(body, "\"unsaved\": false"));
+    assert_false(test_exists(autosave));
+    assert_true(file_has(out, "# a line of the user's"));
+    /* nothing unsaved: no autosave at the end */
+    assert_int_equal(stop(&s, SIGINT), 0);
+    assert_false(test_exists(autosave));
+    assert_int_equal(test_run("%s edit %s 2> /dev/null", SCAF_BINARY, resume), 3);
+    close(watch);
+    remove(in);
+    remove(out);
+}
+
+/* 80 connections that send a header line every second hold every slot of
+ * the server; the user's request is answered while they go on trickling
+ * (each connection has a few seconds for its whole request). The trickle
+ * is bounded (30 lines): on a server without the deadline the user waits
+ * the whole trickle and the test fails. */
+static void slow_clients_do_not_lock_the_user_out(void **state)
+{
+    (void)state;
+    char out[512], args[1200];
+    test_tmp_path("edit_slow_out.obj", out, sizeof out);
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", atlas_path, out);
+    assert_true(start(&s, args));
+    struct sockaddr_in a;
+    memset(&a, 0, sizeof a);
+    a.sin_family = AF_INET;
+    a.sin_port = htons((uint16_t)s.port);
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    enum { N = 80 };
+    int slow[N];
+    for (int i = 0; i < N; i++) {
+        slow[i] = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK, 0);
+        assert_true(slow[i] >= 0);
+        /* nonblocking: past the server's limit connects wait in the backlog */
+        connect(slow[i], (struct sockaddr *)&a, sizeof a);
+    }
+    int user = socket(AF_INET, SOCK_STREAM, 0);
+    assert_int_equal(connect(user, (struct sockaddr *)&a, sizeof a), 0);
+    char head[512];
+    int n = snprintf(head, sizeof head,
+                     "GET /api/state HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nX-Scaf-Token: %s\r\n"
+                     "Connection: close\r\n\r\n",
+                     s.port, s.token);
+    for (int i = 0; i < N; i++) {
+        ssize_t w = write(slow[i], "GET / HTTP/1.1\r\n", 16);
+        (void)w;
+    }
+    assert_int_equal(write(user, head, (size_t)n), n);
+    int answered = 0;
+    for (int line = 0; line < 30 && !answered; line++) {
+        /* a second between two lines of the trickle, or the answer */
+        struct pollfd p = {user, POLLIN, 0};
+        if (poll(&p, 1, 1000) == 1) {
+            answered = 1;
+            break;
+        }
+        for (int i = 0; i < N; i++) {
+            ssize_t w = send(slow[i], "X-Slow: 1\r\n", 11, MSG_NOSIGNAL);
+            (void)w;
+        }
+    }
+    assert_true(answered);
+    char resp[256] = "";
+    ssize_t r = read(user, resp, sizeof resp - 1);
+    assert_true(r > 0);
+    assert_int_equal(strncmp(resp, "HTTP/1.1 200", 12), 0);
+    close(user);
+    for (int i = 0; i < N; i++) close(slow[i]);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+}
+
 static int stop_running(void **state)
 {
     (void)state;
@@ -301,6 +588,10 @@ int main(void)
         cmocka_unit_test_teardown(sigterm_stops, stop_running),
         cmocka_unit_test_teardown(overlapping_uvs_start_from_the_atlas, stop_running),
         cmocka_unit_test(bad_command_lines),
+        cmocka_unit_test_teardown(save_after_the_input_is_gone, stop_running),
+        cmocka_unit_test_teardown(save_refuses_a_link_to_the_input, stop_running),
+        cmocka_unit_test_teardown(autosave_and_resume, stop_running),
+        cmocka_unit_test_teardown(slow_clients_do_not_lock_the_user_out, stop_running),
     };
     return cmocka_run_group_tests(tests, make_atlas, NULL);
 }
