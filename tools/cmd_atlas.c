@@ -22,6 +22,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
+#include "cli_seams.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
@@ -41,15 +42,19 @@ static void usage(FILE *o)
     fprintf(o,
             "usage: scaf atlas IN -o OUT.obj [options]\n"
             "\n"
-            "Builds a texture atlas: every chart (connected component of a mesh without vt,\n"
-            "or UV chart cut along the input's UV seams) is optimized together with all the\n"
+            "Builds a texture atlas: every chart (UV chart cut along the input's UV seams,\n"
+            "or an automatic chart, see --seams) is optimized together with all the\n"
             "others inside one scaffold (no two charts can ever overlap), re-placed rigidly\n"
             "by a raster packer (kept only when proved bijective), compacted by SCAF\n"
             "iterations with a contracting scaffold, and scaled uniformly into the unit UV\n"
             "square. The map is bijective after every iteration; the padding is kept by\n"
             "the line search and proved exactly (exact arithmetic on the written numbers)\n"
             "before the file is written.\n"
-            "Each chart must be a disk, possibly with holes.\n"
+            "Automatic charts (a mesh without vt, or vt that do not cut it into disks):\n"
+            "the surface is segmented (mesh/chart_segment) and every chart that is not a\n"
+            "disk, possibly with holes, is cut open (handle loops; a closed piece along a\n"
+            "tree of short seams through its points of highest curvature): any manifold\n"
+            "mesh, closed or open, of any genus, with or without vt (docs/seams.md).\n"
             "\n"
             "IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
             "gzip-compressed (.gz); an unknown extension is recognized by the content.\n"
@@ -57,6 +62,12 @@ static void usage(FILE *o)
             "\n"
             "options:\n"
             "  -o, --output FILE        output OBJ (required)\n"
+            "  --seams S                where the charts are cut: input (the vt seams; each\n"
+            "                           chart must be a disk, possibly with holes), auto\n"
+            "                           (automatic charts, the vt ignored), extend (the vt\n"
+            "                           seams plus cuts where a chart is not a disk);\n"
+            "                           default: input when the vt cut the mesh into disks,\n"
+            "                           else auto\n"
             "  --padding P              minimum distance between two charts, in units of the\n"
             "                           unit square (default K / R below: 4 / 1024 =\n"
             "                           0.00390625; --padding 0: charts only never overlap)\n"
@@ -207,6 +218,9 @@ static int atlas_main(int argc, char **argv)
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
+        } else if (!strcmp(a, "--seams")) {
+            NEED_VALUE();
+            if (!cli_seams_parse(v, &opt.base.seams)) BAD_VALUE();
         } else if (!strcmp(a, "--no-rotate")) {
             opt.rotate = 0;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
@@ -270,6 +284,7 @@ static int atlas_main(int argc, char **argv)
     atlas a;
     progress_state ps = {0};
     double *UV = NULL;
+    seam_edges seams = {0};
     scaf_status st = atlas_init(&a, &m, &opt, &err);
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf atlas: %s: %s\n", in, err.message);
@@ -277,6 +292,10 @@ static int atlas_main(int argc, char **argv)
         return exit_code_for(st);
     }
     double setup = timer_now() - t_start;
+    if (cli_seams_report("atlas", &m, a.Fw, a.seams_used, a.seams_why, a.ncharts, quiet, &seams)) {
+        rc = EXIT_NOMEM;
+        goto done;
+    }
     ps.live = !quiet && isatty(fileno(stderr));
     if (!quiet && !ps.live)
         fprintf(stderr, "scaf atlas: %s: %d faces, %d chart(s)%s, padding %g\n", in, m.nf,
@@ -350,6 +369,7 @@ static int atlas_main(int argc, char **argv)
     }
 done:
     cli_outputs_abort(&job.outs);
+    seam_edges_free(&seams);
     free(UV);
     free(ps.it);
     atlas_free(&a);

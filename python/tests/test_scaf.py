@@ -532,10 +532,11 @@ class InputTest(unittest.TestCase):
         self.assertGreater(min(signed_areas(r.uv, r.ft)), 0)
 
     def test_closed_chart_is_a_mesh_error_naming_the_chart(self):
+        # with the components as they are (seams="input")
         V, F, _, _ = scaf.read_obj(gen("tetrahedron"))
         for fn in (scaf.param, scaf.atlas):
             with self.assertRaises(scaf.MeshError) as cm:
-                fn(V, F)
+                fn(V, F, seams="input")
             self.assertIn("chart 0", str(cm.exception))
             self.assertIn("closed", str(cm.exception))
             self.assertEqual(cm.exception.status, 4)
@@ -543,8 +544,21 @@ class InputTest(unittest.TestCase):
         V2 = rows(self.V) + [[x + 10, y, z] for x, y, z in rows(V)]
         F2 = rows(self.F) + [[a + 4, b + 4, c + 4] for a, b, c in rows(F)]
         with self.assertRaises(scaf.MeshError) as cm:
-            scaf.atlas(V2, F2)
+            scaf.atlas(V2, F2, seams="input")
         self.assertIn("chart 1", str(cm.exception))
+
+    def test_closed_mesh_without_uvs_is_cut_by_default(self):
+        # scaf.atlas(V, F) and scaf.param(V, F) on a closed mesh, no UVs
+        V, F, _, _ = scaf.read_obj(gen("icosphere", 3))
+        p = scaf.param(V, F, iterations=5)
+        self.assertEqual(p.seams, "auto")
+        self.assertEqual(p.chart_count, 1)
+        self.assertGreater(min(signed_areas(p.uv, p.ft)), 0)
+        self.assertGreater(len(p.uv), len(rows(V)))  # seam vertices split
+        a = scaf.atlas(V, F, settle_iterations=5, compact_iterations=3)
+        self.assertEqual(a.seams, "auto")
+        self.assertGreater(min(signed_areas(a.uv, a.ft)), 0)
+        self.assertEqual(len(a.chart), len(rows(F)))
 
     def test_read_obj_errors(self):
         d = tempfile.mkdtemp(prefix="py-", dir=TMP)

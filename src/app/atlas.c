@@ -8,6 +8,7 @@
  * chart pairs stiffened) and `feasible` (the padding constraint).
  */
 #include "app/atlas.h"
+#include "app/seam_source.h"
 
 #include <limits.h>
 #include <math.h>
@@ -375,14 +376,40 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         return err_set(err, SCAF_ERR_USAGE, "%s", msg);
     if (a->opt.init_input && !mesh_has_uv(m))
         return err_set(err, SCAF_ERR_USAGE, "--init input: the mesh has no UVs (vt) to start from");
+    /* the seams (app/seam_source): the input's, or automatic charts cut
+     * into disks; the rest runs on them as if the input had them */
+    seam_plan plan;
+    st = seam_plan_make(m, a->opt.base.seams, 1, &plan, err);
+    if (st != SCAF_OK) return st;
+    a->seams_used = plan.used;
+    a->seam_segments = plan.segments;
+    snprintf(a->seams_why, sizeof a->seams_why, "%s", plan.why);
+    mesh planned = *m;
+    if (plan.changed) {
+        planned.nuv = plan.nuv;
+        planned.UV = plan.UV;
+        planned.FT = plan.FT;
+    }
+    m = &planned;
+    if (a->opt.init_input && plan.used != SCAF_SEAMS_INPUT) {
+        seam_plan_free(&plan);
+        return err_set(err, SCAF_ERR_MESH,
+                       "--init input: the input's seams do not cut the mesh into disks (%s); "
+                       "start from the default instead",
+                       a->seams_why);
+    }
     if (a->opt.init_input) {
         /* the verdict of `scaf check` on the same data, with its counts */
         bij_report r;
         st = mesh_uv_verdict(m, &r, err);
-        if (st != SCAF_OK) return st;
+        if (st != SCAF_OK) {
+            seam_plan_free(&plan);
+            return st;
+        }
         if (!r.bijective) {
             char defects[320];
             bij_report_defects(&r, defects, sizeof defects);
+            seam_plan_free(&plan);
             return err_set(err, SCAF_ERR_MESH,
                            "--init input: the input UVs are not bijective (as scaf check reports: "
                            "%s); "
@@ -411,6 +438,7 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
             memcpy(UV2 + 2 * (size_t)i, m->UV + 2 * (size_t)map[i], sizeof(double) * 2);
     }
     scaf_options_t po = a->opt.base;
+    po.seams = SCAF_SEAMS_INPUT; /* decided above */
     p = scaf_param_new(&po);
     if (!p) {
         st = err_nomem(err, "atlas");
@@ -549,6 +577,7 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     a->loop.hooks.restrict_dir = freeze_close;
 
 done:
+    seam_plan_free(&plan);
     scaf_param_destroy(p);
     free(FT2);
     free(map);

@@ -169,6 +169,9 @@ typedef struct atlas {
                                    trial of the loop's shortening counts) */
     scaf_stop_reason settle_stop, compact_stop; /* why each phase stopped
                                    (SCAF_STOP_NONE: not run) */
+    scaf_seams seams_used;                      /* the seam source (app/seam_source) */
+    int seam_segments;                          /* charts of the segmentation (automatic) */
+    char seams_why[200];                        /* why that source, for the terminal */
 } atlas;
 
 typedef int (*atlas_progress_fn)(const atlas *a, const atlas_iteration *it, void *user);
