@@ -85,7 +85,9 @@ static void usage(FILE *o)
             "                      instead of --start\n"
             "  --quiet             no messages but errors\n"
             "  -h, --help          this text\n"
-            "\n"
+            "\n");
+    /* two strings: C17 compilers need support only 4095 characters in one */
+    fprintf(o,
             "Output: OUT ends in .obj, or .obj.gz (gzip-compressed); it is checked before\n"
             "the start (a directory, FIFO or device, a missing or read-only folder, or the\n"
             "input itself are refused) and every save replaces it atomically: a save that\n"
