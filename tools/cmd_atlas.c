@@ -271,6 +271,10 @@ static int atlas_main(int argc, char **argv)
     progress_state ps = {0};
     double *UV = NULL;
     scaf_status st = atlas_init(&a, &m, &opt, &err);
+    if (st == SCAF_ERR_CANCELLED && cli_signal_report("atlas")) { /* during the setup */
+        mesh_free(&m);
+        return EXIT_CANCELLED;
+    }
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf atlas: %s: %s\n", in, err.message);
         mesh_free(&m);
