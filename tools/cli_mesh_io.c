@@ -15,7 +15,8 @@ int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_re
     err_clear(&err);
     scaf_status st = mesh_read(path, m, info, &err);
     if (st != SCAF_OK) {
-        fprintf(stderr, "scaf %s: %s\n", cmd, err.message);
+        fprintf(stderr, "scaf %s: %s%s\n", cmd, err.message,
+                st == SCAF_ERR_CANCELLED ? "; nothing written" : "");
         return exit_code_for(st);
     }
     char warn[512];

@@ -286,6 +286,10 @@ static int atlas_main(int argc, char **argv)
     double *UV = NULL;
     seam_edges seams = {0};
     scaf_status st = atlas_init(&a, &m, &opt, &err);
+    if (st == SCAF_ERR_CANCELLED && cli_signal_report("atlas")) { /* during the setup */
+        mesh_free(&m);
+        return EXIT_CANCELLED;
+    }
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf atlas: %s: %s\n", in, err.message);
         mesh_free(&m);

@@ -307,6 +307,10 @@ static int param_main(int argc, char **argv)
     scaf_status st = mesh_has_uv(&m)
         ? scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT)
         : scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
+    if (st == SCAF_ERR_CANCELLED && cli_signal_report("param")) { /* during the setup */
+        rc = EXIT_CANCELLED;
+        goto done;
+    }
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf param: %s: %s\n", in, scaf_param_error(p));
         rc = st == SCAF_ERR_USAGE ? EXIT_MESH : exit_code_for(st);

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/interrupt.h"
 #include "app/atlas_align.h"
 #include "app/atlas_pack.h"
 #include "app/param.h"
@@ -478,6 +479,7 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     st = chart_gap_labels(a->nw, a->nf, a->Fw, a->chart, &nc, err);
     if (st != SCAF_OK) goto done;
     st = chart_gap_segments(a->nf, a->Fw, a->chart, &a->seg, &a->nseg, err);
+    if (st == SCAF_OK) st = interrupt_check(NULL, "setting up the atlas", err);
     if (st != SCAF_OK) goto done;
     a->wchart = malloc(sizeof(int) * (size_t)a->nw);
     if (!a->wchart) {
@@ -570,8 +572,10 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         }
     }
     scaf_loop_options lo = param_loop_options(&a->opt.base);
-    st = scaf_loop_init(&a->loop, a->nw, W3, a->nf, a->Fw, uv0, &lo, err);
+    st = interrupt_check(NULL, "setting up the atlas", err);
+    if (st == SCAF_OK) st = scaf_loop_init(&a->loop, a->nw, W3, a->nf, a->Fw, uv0, &lo, err);
     if (st != SCAF_OK) goto done;
+    if ((st = interrupt_check(NULL, "setting up the atlas's scaffold", err)) != SCAF_OK) goto done;
     a->loop.hooks.user = a;
     a->loop.hooks.feasible = feasible_gap;
     a->loop.hooks.restrict_dir = freeze_close;

@@ -16,6 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/interrupt.h"
+
 typedef struct chart_raster {
     int w, h; /* cover size in cells */
     int nrun;
@@ -372,7 +374,11 @@ static double cell_size(const packer *pk, double total, int cells)
 static scaf_status raster_charts(packer *pk, const rotation *rots, double h, scaf_error *err)
 {
     pk->maxdim = 0;
-    for (int c = 0; c < pk->ncharts; c++)
+    for (int c = 0; c < pk->ncharts; c++) {
+        if (c % 1024 == 0) { /* a million charts take seconds: listen for SIGINT / SIGTERM */
+            scaf_status st = interrupt_check(c ? NULL : "pack", "packing the charts", err);
+            if (st != SCAF_OK) return st;
+        }
         for (int r = 0; r < NROT; r++) {
             chart_raster *cr = &pk->R[NROT * c + r];
             scaf_status st =
@@ -382,6 +388,7 @@ static scaf_status raster_charts(packer *pk, const rotation *rots, double h, sca
             if (cr->w > pk->maxdim) pk->maxdim = cr->w;
             if (cr->h > pk->maxdim) pk->maxdim = cr->h;
         }
+    }
     return SCAF_OK;
 }
 

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/interrupt.h"
 #include "mesh/degenerate.h"
 #include "mesh/mesh.h"
 #include "geom/coord_scale.h"
@@ -511,10 +512,15 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     }
     for (int i = 0; i < nw; i++) local[i] = -1;
     for (int c = 0; c < ch.ncharts; c++) {
+        /* a million charts take seconds here: listen for SIGINT / SIGTERM */
+        if (c % 1024 == 0 &&
+            (st = interrupt_check(c ? NULL : "setup", "setting up the charts", err)) != SCAF_OK)
+            goto fail;
         st = embed_chart(&ch, c, IDX, widx, p->Fw, W3, embed_method(p->opt.init), local, uv,
                          &radius[c], err);
         if (st != SCAF_OK) goto fail;
     }
+    if ((st = interrupt_check(NULL, "setting up the charts", err)) != SCAF_OK) goto fail;
     place_on_grid(&ch, nf, p->Fw, nw, radius, local, uv);
 
     p->nf = nf;
@@ -523,6 +529,10 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     scaf_loop_options lo = param_loop_options(&p->opt);
     st = scaf_loop_init(&p->loop, nw, W3, nf, p->Fw, uv, &lo, err);
     if (st != SCAF_OK) goto fail;
+    if ((st = interrupt_check(NULL, "setting up the scaffold", err)) != SCAF_OK) {
+        scaf_loop_free(&p->loop);
+        goto fail;
+    }
     p->has_mesh = 1;
     p->seams_used = plan.used;
     snprintf(p->seams_why, sizeof p->seams_why, "%s", plan.why);

@@ -64,3 +64,12 @@ void interrupt_test_point(const char *name)
         p = q + 1;
     }
 }
+
+scaf_status interrupt_check(const char *point, const char *during, scaf_error *err)
+{
+    if (point) interrupt_test_point(point);
+    int sig = requested;
+    if (!sig) return SCAF_OK;
+    return err_set(err, SCAF_ERR_CANCELLED, "interrupted by %s while %s",
+                   interrupt_signal_name(sig), during);
+}

@@ -19,6 +19,8 @@
 #ifndef SCAF_BASE_INTERRUPT_H
 #define SCAF_BASE_INTERRUPT_H
 
+#include "base/error.h"
+
 /* Record signal sig (nonzero). Async-signal-safe. */
 void interrupt_request(int sig);
 
@@ -37,6 +39,12 @@ void interrupt_arm(int armed);
  * iteration). Several signals ("write:INT:INT", "write:HUP") are raised in
  * order, each one handled before the next. */
 void interrupt_test_point(const char *name);
+
+/* A safe point of a long phase: the test hook for `point` (NULL: none),
+ * then SCAF_ERR_CANCELLED "interrupted by SIGINT while DURING" when a
+ * signal is pending, else SCAF_OK. Cheap: call it every few thousand
+ * items of a loop. */
+scaf_status interrupt_check(const char *point, const char *during, scaf_error *err);
 
 /* "SIGINT", "SIGTERM", "SIGHUP", ... for messages. */
 const char *interrupt_signal_name(int sig);

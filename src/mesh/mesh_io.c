@@ -2,7 +2,9 @@
  *
  * mesh_read loads the whole file into memory (plain files with one read of
  * the known size; gzip files, recognized by their magic bytes, through
- * zlib's gzread into a growing buffer), then hands it to mesh_parse, which
+ * zlib's gzread into a growing buffer, 1 MiB at a time: each chunk is
+ * looked at for a NUL byte in text, which stops a decompression bomb at
+ * once, and for a pending SIGINT / SIGTERM), then hands it to mesh_parse, which
  * dispatches to the OBJ, OFF or PLY parser. The format comes from the
  * extension with any ".gz" removed; an unknown extension falls back to
  * looking at the content ("ply" / "...OFF" first token, else OBJ).
@@ -25,6 +27,7 @@
 #include <unistd.h>
 #include <zlib.h>
 
+#include "base/interrupt.h"
 #include "mesh/mesh_readers.h"
 
 /* Case-insensitive "does s end with suffix". */
@@ -106,6 +109,42 @@ static scaf_status load_plain(int fd, const char *path, size_t size, char **out,
     return SCAF_OK;
 }
 
+/* Bytes inflated between two looks at them (a signal, a NUL byte). */
+#define GZIP_CHUNK ((size_t)1 << 20)
+
+/* The data decompressed so far is buf[0, n + r), of which [n, n + r) is
+ * new. Every text format has no NUL byte in its text: OBJ and OFF
+ * throughout, PLY up to "end_header" (binary data may follow). A NUL
+ * there stops the decompression at once, so a gzip bomb (gigabytes of
+ * zeros) is refused after its first chunk instead of being inflated
+ * whole before the parser rejects its first byte. *text_end: where the
+ * text ends (SIZE_MAX: not known yet; 0: the rest is binary PLY data). */
+static scaf_status text_prefix_check(const char *buf, size_t n, size_t r, const char *path,
+                                     size_t *text_end, scaf_error *err)
+{
+    if (*text_end == 0) return SCAF_OK;
+    size_t from = n, to = n + r;
+    if (to >= 3 && memcmp(buf, "ply", 3) == 0 && *text_end == SIZE_MAX) {
+        /* the header ends at the line "end_header" (searched from a little
+         * before the new bytes: it may straddle two chunks) */
+        size_t s = from > 16 ? from - 16 : 0;
+        for (size_t i = s; i + 10 <= to; i++)
+            if (buf[i] == 'e' && memcmp(buf + i, "end_header", 10) == 0) {
+                if (i + 10 < to) to = i + 10;
+                *text_end = 0; /* what follows may be binary */
+                break;
+            }
+    }
+    const char *z = to > from ? memchr(buf + from, '\0', to - from) : NULL;
+    if (!z) return SCAF_OK;
+    long line = 1;
+    for (const char *q = buf; q < z; q++) line += *q == '\n';
+    return err_set(err, SCAF_ERR_PARSE,
+                   "%s:%ld: a NUL byte in a text mesh file (binary data, not OBJ, OFF or a PLY "
+                   "header); stopped decompressing after %zu bytes",
+                   path, line, n + r);
+}
+
 /* Decompress a whole gzip file (fd is consumed). */
 static scaf_status load_gzip(int fd, const char *path, size_t compressed, char **out,
                              size_t *out_size, scaf_error *err)
@@ -117,7 +156,7 @@ static scaf_status load_gzip(int fd, const char *path, size_t compressed, char *
     }
     gzbuffer(gz, 1u << 17);
     size_t cap = compressed < (SIZE_MAX / 8) ? compressed * 4 + 4096 : SIZE_MAX / 2;
-    size_t n = 0;
+    size_t n = 0, text_end = SIZE_MAX; /* SIZE_MAX: the text part's end is not known yet */
     char *buf = malloc(cap);
     scaf_status st = SCAF_OK;
     if (!buf) st = err_set(err, SCAF_ERR_NOMEM, "%s: out of memory", path);
@@ -136,7 +175,8 @@ static scaf_status load_gzip(int fd, const char *path, size_t compressed, char *
             buf = b;
             cap *= 2;
         }
-        size_t want = cap - n > (1u << 30) ? (1u << 30) : cap - n;
+        /* a chunk at a time, each looked at before the next is inflated */
+        size_t want = cap - n > GZIP_CHUNK ? GZIP_CHUNK : cap - n;
         int r = gzread(gz, buf + n, (unsigned)want);
         if (r < 0) {
             int code;
@@ -154,7 +194,9 @@ static scaf_status load_gzip(int fd, const char *path, size_t compressed, char *
                              msg);
             break;
         }
+        st = text_prefix_check(buf, n, (size_t)r, path, &text_end, err);
         n += (size_t)r;
+        if (st == SCAF_OK) st = interrupt_check(NULL, "decompressing the mesh", err);
     }
     gzclose(gz);
     if (st != SCAF_OK) {
@@ -204,6 +246,7 @@ scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_erro
     if (!path) return err_set(err, SCAF_ERR_USAGE, "mesh_read: no path");
     char *data = NULL;
     size_t n = 0;
+    interrupt_test_point("parse");
     scaf_status st = mesh_load_file(path, &data, &n, err);
     if (st != SCAF_OK) return st;
     st = mesh_parse(data, n, format_from_name(path), path, m, info, err);

@@ -23,6 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/interrupt.h"
 #include "mesh/mesh_builder.h"
 #include "mesh/mesh_readers.h"
 #include "mesh/text_scan.h"
@@ -227,6 +228,10 @@ scaf_status mesh_parse_obj(const char *data, size_t size, const char *name, mesh
     scaf_status st = SCAF_OK;
     while (p < end && st == SCAF_OK) {
         line++;
+        if ((line & 0xffff) == 0 && interrupt_pending()) { /* SIGINT / SIGTERM */
+            st = interrupt_check(NULL, "reading the mesh", err);
+            break;
+        }
         const char *eol = memchr(p, '\n', (size_t)(end - p));
         if (!eol) eol = end;
         const char *s = scan_skip_blank(p, eol);

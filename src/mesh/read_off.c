@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/interrupt.h"
 #include "mesh/mesh_builder.h"
 #include "mesh/mesh_readers.h"
 #include "mesh/text_scan.h"
@@ -149,6 +150,10 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
     }
     const char *s, *eol;
     for (long long i = 0; i < nv; i++) {
+        if ((i & 0xffff) == 0xffff && interrupt_pending()) { /* SIGINT / SIGTERM */
+            st = interrupt_check(NULL, "reading the mesh", err);
+            goto done;
+        }
         if (!off_next_line(&c, &s, &eol)) {
             st = mesh_parse_fail(err, name, c.line, "truncated file: %lld of %lld vertices read", i,
                                  nv);
@@ -175,6 +180,10 @@ scaf_status mesh_parse_off(const char *data, size_t size, const char *name, mesh
         c.line++;
     }
     for (long long i = 0; i < nf; i++) {
+        if ((i & 0xffff) == 0xffff && interrupt_pending()) { /* SIGINT / SIGTERM */
+            st = interrupt_check(NULL, "reading the mesh", err);
+            goto done;
+        }
         if (!off_next_line(&c, &s, &eol)) {
             st = mesh_parse_fail(err, name, c.line, "truncated file: %lld of %lld faces read", i,
                                  nf);

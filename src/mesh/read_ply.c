@@ -24,6 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/interrupt.h"
 #include "mesh/mesh_builder.h"
 #include "mesh/mesh_readers.h"
 #include "mesh/text_scan.h"
@@ -498,6 +499,10 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
         const char *what = el == ev ? "vertex" : el == ef ? "face" : el->name;
         if (el->nprops == 0) continue; /* no data at all: never loop over its count */
         for (long long it = 0; it < el->count && !st; it++) {
+            if ((it & 0xffff) == 0xffff && interrupt_pending()) { /* SIGINT / SIGTERM */
+                st = interrupt_check(NULL, "reading the mesh", err);
+                break;
+            }
             double x[3] = {0, 0, 0};
             for (int q = 0; q < el->nprops && !st; q++) {
                 const ply_prop *pr = &el->props[q];

@@ -54,6 +54,7 @@
 
 #include <cholmod.h>
 
+#include "base/interrupt.h"
 #include "base/parallel.h"
 #include "base/timer.h"
 
@@ -88,6 +89,7 @@ struct opt_chol {
     int factored;              /* L holds a valid numerical factor */
     cholmod_dense *X, *Y, *E;  /* cholmod_solve2's result and workspaces, kept */
     int block;                 /* unknowns per vertex for compressed ordering */
+    int last_n;                /* unknowns of the last analysis asked for (messages) */
     int nfixed;                /* leading unknowns of a fixed pattern and order */
     opt_split_symbolic *split; /* their analysis, kept (opt/split_symbolic) */
     long split_made_at;        /* fixed_pattern when split was made */
@@ -255,10 +257,25 @@ static const char *status_text(int status)
     return "unknown CHOLMOD status";
 }
 
+scaf_status opt_chol_size_check(double n, double entries, scaf_error *err)
+{
+    if (n <= OPT_CHOL_INDEX_MAX && entries <= OPT_CHOL_INDEX_MAX) return SCAF_OK;
+    return err_set(err, SCAF_ERR_MESH,
+                   "the problem is too large for the solver: %.0f unknowns and %.0f matrix "
+                   "entries, more than its 32-bit indices hold (%d); split the input",
+                   n, entries, OPT_CHOL_INDEX_MAX);
+}
+
 static scaf_status fail(opt_chol *c, const char *what, scaf_error *err)
 {
     int s = c->cm.status;
     if (s == CHOLMOD_OUT_OF_MEMORY) return err_nomem(err, what);
+    if (s == CHOLMOD_TOO_LARGE) /* a limit of the solver, not a numerical failure */
+        return err_set(err, SCAF_ERR_MESH,
+                       "the problem is too large for the solver: the factor of %d unknowns "
+                       "needs more entries than its 32-bit indices hold (%d); split the input "
+                       "(CHOLMOD %s)",
+                       c->last_n, OPT_CHOL_INDEX_MAX, what);
     return err_set(err, SCAF_ERR_NUMERIC, "CHOLMOD %s failed: %s (status %d)", what, status_text(s),
                    s);
 }
@@ -401,6 +418,12 @@ scaf_status opt_chol_analyze_vertices(opt_chol *c, const opt_csc *A, const int *
     if (A->n < 1) return err_set(err, SCAF_ERR_USAGE, "CHOLMOD: empty system (no free unknowns)");
     /* CHOLMOD is told the columns are sorted upper ones (no copy, no check) */
     assert(opt_csc_is_upper_sorted(A));
+    /* the analysis of a large system takes seconds (METIS, etree, counts):
+     * a pending SIGINT / SIGTERM stops it before and after */
+    scaf_status sig = interrupt_check("analysis", "analysing the system", err);
+    if (sig != SCAF_OK) return sig;
+    c->last_n = A->n;
+    if ((sig = opt_chol_size_check(A->n, (double)A->nnz, err)) != SCAF_OK) return sig;
     double t0 = timer_now();
     /* the fixed part's pattern (its columns) against the last analysis's */
     int bv = vcolptr && c->block > 1 && A->n % c->block == 0; /* keep it by vertices */
@@ -437,6 +460,10 @@ scaf_status opt_chol_analyze_vertices(opt_chol *c, const opt_csc *A, const int *
     }
     omp_serial_end(lv);
     if (!c->L) return fail(c, "analysis", err);
+    if ((sig = interrupt_check(NULL, "analysing the system", err)) != SCAF_OK) {
+        free_factor(c);
+        return sig;
+    }
     if (!(bv ? keep_pattern(c, c->block, A->n / c->block, vcolptr, vrowidx)
              : keep_pattern(c, 1, A->n, A->colptr, A->rowidx))) {
         free_factor(c); /* no pattern to compare a later A with */

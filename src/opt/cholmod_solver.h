@@ -110,6 +110,18 @@ scaf_status opt_chol_factor(opt_chol *c, const opt_csc *A, scaf_error *err);
  * sweep's time counts as factorization time. */
 scaf_status opt_chol_factor_rhs(opt_chol *c, const opt_csc *A, const double *b, scaf_error *err);
 
+/* CHOLMOD's int indices: no more unknowns or factor entries than this. */
+#define OPT_CHOL_INDEX_MAX 2147483647
+
+/* SCAF_OK when a system of n unknowns and `entries` stored entries (of
+ * the upper triangle) is within OPT_CHOL_INDEX_MAX, else SCAF_ERR_MESH saying the
+ * problem is too large for the solver, with the numbers (a limit, exit 4,
+ * not a numerical failure). The analysis checks it first; a factor that
+ * outgrows the indices during the analysis (CHOLMOD_TOO_LARGE) is
+ * reported the same way. The analysis also stops at a pending SIGINT /
+ * SIGTERM (base/interrupt: SCAF_ERR_CANCELLED). */
+scaf_status opt_chol_size_check(double n, double entries, scaf_error *err);
+
 /* Force a new analysis of A's pattern with a given fill-reducing
  * permutation perm (n entries), or the solver's ordering if perm is NULL. */
 scaf_status opt_chol_analyze_given(opt_chol *c, const opt_csc *A, const int *perm, scaf_error *err);

@@ -194,6 +194,34 @@ static void ply_body_errors(void **state)
                 "truncated");
 }
 
+/* issue 29: a gzip bomb (here 64 MiB of zeros behind one valid line,
+ * 65 KB compressed) is refused after its first chunk, not inflated whole
+ * before the parser looks at it (4 GB of zeros took 4.28 GB of memory). */
+static void gzip_bomb_stops_at_the_first_chunk(void **state)
+{
+    (void)state;
+    char path[512];
+    test_tmp_path("read_errors_bomb.obj.gz", path, sizeof path);
+    gzFile g = gzopen(path, "wb9");
+    assert_non_null(g);
+    assert_int_equal(gzputs(g, "v 0 0 0\n"), 8);
+    char *zeros = calloc(1, 1 << 20);
+    assert_non_null(zeros);
+    for (int i = 0; i < 64; i++) assert_int_equal(gzwrite(g, zeros, 1 << 20), 1 << 20);
+    free(zeros);
+    assert_int_equal(gzclose(g), Z_OK);
+    mesh m;
+    scaf_error err;
+    err_clear(&err);
+    assert_int_equal(mesh_read(path, &m, NULL, &err), SCAF_ERR_PARSE);
+    assert_non_null(strstr(err.message, ":2: a NUL byte in a text mesh file"));
+    const char *after = strstr(err.message, "stopped decompressing after ");
+    assert_non_null(after);
+    double bytes = strtod(after + strlen("stopped decompressing after "), NULL);
+    assert_true(bytes > 0 && bytes <= 2 << 20); /* one chunk, not 64 MiB */
+    remove(path);
+}
+
 static void unreadable_files(void **state)
 {
     (void)state;
@@ -248,6 +276,7 @@ int main(void)
         cmocka_unit_test(ply_header_errors),
         cmocka_unit_test(ply_body_errors),
         cmocka_unit_test(unreadable_files),
+        cmocka_unit_test(gzip_bomb_stops_at_the_first_chunk),
         cmocka_unit_test(line_numbers_with_crlf),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -17,6 +17,9 @@
 #include <pthread.h>
 #include <stdlib.h>
 
+#include <signal.h>
+
+#include "base/interrupt.h"
 #include "opt/block_symbolic.h"
 #include "opt/cholmod_solver.h"
 #include "opt/cholmod_view.h"
@@ -791,6 +794,36 @@ static void indefinite_is_an_error(void **state)
     opt_chol_destroy(c);
 }
 
+/* ---- issue 29: a size the solver cannot index is a limit, said with the
+ * numbers before any work (it was "CHOLMOD analysis failed: problem too
+ * large", exit 6, after 43 s and 5.4 GB); the analysis stops at a pending
+ * SIGINT / SIGTERM (base/interrupt) --------------------------------------- */
+static void too_large_is_a_limit_and_signals_stop_the_analysis(void **state)
+{
+    (void)state;
+    scaf_error e;
+    err_clear(&e);
+    assert_int_equal(opt_chol_size_check(6e6, 2147483647.0, &e), SCAF_OK);
+    assert_int_equal(opt_chol_size_check(6e6, 3e9, &e), SCAF_ERR_MESH);
+    assert_non_null(strstr(e.message,
+                           "too large for the solver: 6000000 unknowns and "
+                           "3000000000 matrix entries"));
+    assert_non_null(strstr(e.message, "2147483647"));
+    assert_int_equal(opt_chol_size_check(3e9, 10.0, &e), SCAF_ERR_MESH);
+    opt_csc A;
+    grid_laplacian(&A, 6, 0.0, 0);
+    opt_chol *c = opt_chol_create(OPT_ORDER_AMD, &e);
+    interrupt_clear();
+    interrupt_request(SIGTERM);
+    assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_ERR_CANCELLED);
+    assert_non_null(strstr(e.message, "interrupted by SIGTERM while analysing"));
+    assert_int_equal(opt_chol_get_stats(c).analyses, 0);
+    interrupt_clear();
+    assert_int_equal(opt_chol_factor(c, &A, &e), SCAF_OK);
+    opt_chol_destroy(c);
+    opt_csc_free(&A);
+}
+
 /* ---- two threads factoring at once ---------------------------------- */
 
 extern int omp_get_max_active_levels(void) __attribute__((weak));
@@ -856,13 +889,20 @@ static void concurrent_factorizations(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(triplets_sum_duplicates),  cmocka_unit_test(solves_and_reuses_analysis),
-        cmocka_unit_test(given_random_permutation), cmocka_unit_test(same_bits_as_plain_cholmod),
-        cmocka_unit_test(factor_with_rhs),          cmocka_unit_test(block_ordering_solves),
-        cmocka_unit_test(relaxed_supernodes_solve), cmocka_unit_test(upper_sorted_layout),
-        cmocka_unit_test(indefinite_is_an_error),   cmocka_unit_test(concurrent_factorizations),
-        cmocka_unit_test(block_symbolic_analysis),  cmocka_unit_test(split_symbolic_analysis),
+        cmocka_unit_test(triplets_sum_duplicates),
+        cmocka_unit_test(solves_and_reuses_analysis),
+        cmocka_unit_test(given_random_permutation),
+        cmocka_unit_test(same_bits_as_plain_cholmod),
+        cmocka_unit_test(factor_with_rhs),
+        cmocka_unit_test(block_ordering_solves),
+        cmocka_unit_test(relaxed_supernodes_solve),
+        cmocka_unit_test(upper_sorted_layout),
+        cmocka_unit_test(indefinite_is_an_error),
+        cmocka_unit_test(concurrent_factorizations),
+        cmocka_unit_test(block_symbolic_analysis),
+        cmocka_unit_test(split_symbolic_analysis),
         cmocka_unit_test(factor_by_vertex_pattern),
+        cmocka_unit_test(too_large_is_a_limit_and_signals_stop_the_analysis),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
