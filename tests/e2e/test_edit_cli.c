@@ -508,6 +508,29 @@ static void autosave_and_resume(void **state)
     remove(out);
 }
 
+/* -o NAME.obj.gz: save writes gzip (the flag was never set before). */
+static void save_gzips_an_obj_gz_output(void **state)
+{
+    (void)state;
+    char out[512], args[1200];
+    test_tmp_path("edit_gz_out.obj.gz", out, sizeof out);
+    remove(out);
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", atlas_path, out);
+    assert_true(start(&s, args));
+    assert_int_equal(post(&s, "/api/save", "{}", NULL, 0), 200);
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    FILE *f = fopen(out, "rb");
+    assert_non_null(f);
+    unsigned char magic[2] = {0, 0};
+    assert_int_equal(fread(magic, 1, 2, f), 2);
+    fclose(f);
+    assert_int_equal(magic[0], 0x1f);
+    assert_int_equal(magic[1], 0x8b);
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    remove(out);
+}
+
 static double energy_of(const char *json)
 {
     const char *e = strstr(json, "\"energy\": ");
@@ -624,6 +647,7 @@ int main(void)
         cmocka_unit_test_teardown(autosave_and_resume, stop_running),
         cmocka_unit_test_teardown(slow_clients_do_not_lock_the_user_out, stop_running),
         cmocka_unit_test_teardown(compact_keeps_the_distortion_limit, stop_running),
+        cmocka_unit_test_teardown(save_gzips_an_obj_gz_output, stop_running),
     };
     return cmocka_run_group_tests(tests, make_atlas, NULL);
 }
