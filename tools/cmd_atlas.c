@@ -84,7 +84,8 @@ static void usage(FILE *o)
             "  --compact-iterations N   cap of the compaction iterations (default 150;\n"
             "                           0 = no compaction)\n"
             "  --distortion-tolerance T stop compacting when E exceeds (1+T) times the settled\n"
-            "                           E (default 0.05); the last layout within it is kept\n");
+            "                           E (default 0.05); the best packed layout within it is\n"
+            "                           kept (`scaf edit`'s compact: the same rule, 0.05)\n");
     /* (two strings: C caps a string literal at 4095 characters) */
     fprintf(o,
             "  --box-scale S            scaffold box while settling (default 3)\n"

@@ -18,7 +18,9 @@
  *   POST /api/optimize  {"steps"?}: iterations without handles until E
  *                       decreases by less than 1e-4 relatively (cap
  *                       `steps`, default 100)
- *   POST /api/compact   {"steps"?}: compaction iterations (default 30)
+ *   POST /api/compact   {"steps"?}: compaction iterations (default 30),
+ *                       E kept within 1.05 times its value at the click
+ *                       (scaf_drag_compact: the rule of `scaf atlas`)
  *   POST /api/undo      {}: back to the layout before the last grab,
  *                       optimize or compact (409 when there is none)
  *   POST /api/save      {}: the layout normalized into the unit square,

@@ -240,7 +240,11 @@ SCAF_API int scaf_drag_undo_count(const scaf_drag_t *d);
 /* Compaction, the atlas's second phase, from the current layout: n >= 1
  * iterations with a contracting scaffold (the box pushed inward), charts
  * packing tighter with the padding kept, handles ignored; stops early when
- * no step is found. A checkpoint-able state like scaf_drag_step (cancel
+ * no step is found. The distortion rule of scaf_atlas_run's compaction:
+ * E may rise to 1.05 times (the atlas's default distortion_tolerance 0.05)
+ * its value when this call starts; the first iteration above stops it,
+ * and the layout left is the best packed one within that limit (maybe the
+ * start), so one call never raises E by more than 5%. A checkpoint-able state like scaf_drag_step (cancel
  * restores the layout before it). Same errors as scaf_drag_step. */
 SCAF_API scaf_status scaf_drag_compact(scaf_drag_t *d, int n, scaf_param_progress_fn progress,
                                        void *user);

@@ -768,6 +768,42 @@ void atlas_compact_end(atlas *a)
     a->loop.opt = param_loop_options(&a->opt.base);
 }
 
+scaf_status atlas_compact_rule_begin(const atlas *a, atlas_compact_rule *r, double e_start,
+                                     scaf_error *err)
+{
+    size_t n2 = 2 * (size_t)a->nw;
+    r->e_max = (1.0 + a->opt.distortion_tolerance) * e_start;
+    r->best_eff = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
+    r->best = malloc(sizeof(double) * (n2 ? n2 : 1));
+    if (!r->best) return err_nomem(err, "compaction");
+    memcpy(r->best, a->loop.uv, sizeof(double) * n2);
+    return SCAF_OK;
+}
+
+int atlas_compact_rule_after(const atlas *a, atlas_compact_rule *r, double energy,
+                             double efficiency)
+{
+    if (!(energy <= r->e_max)) return 1;
+    if (efficiency > r->best_eff) {
+        r->best_eff = efficiency;
+        memcpy(r->best, a->loop.uv, sizeof(double) * 2 * (size_t)a->nw);
+    }
+    return 0;
+}
+
+int atlas_compact_rule_end(atlas *a, atlas_compact_rule *r, int restore)
+{
+    size_t n2 = 2 * (size_t)a->nw;
+    int restored = 0;
+    if (restore && memcmp(r->best, a->loop.uv, sizeof(double) * n2) != 0) {
+        memcpy(a->loop.uv, r->best, sizeof(double) * n2);
+        restored = 1;
+    }
+    free(r->best);
+    r->best = NULL;
+    return restored;
+}
+
 scaf_stop_reason atlas_stop_reason(const atlas *a)
 {
     return a->compact_stop != SCAF_STOP_NONE ? a->compact_stop : a->settle_stop;
@@ -828,17 +864,13 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
                                               : a->opt.progress_window;
         double hist[MAXWIN];
         int zero_steps = 0;
-        /* The layout kept: the best packed one whose E is within the
-         * distortion tolerance (the start of the phase qualifies). An
-         * iteration may overshoot the tolerance or lose efficiency; the
-         * result then goes back to the best earlier layout, which was
-         * bijective and padded after its own iteration. */
-        size_t n2 = 2 * (size_t)a->nw;
-        double *best = malloc(sizeof(double) * n2);
-        if (!best) return err_nomem(err, "compaction");
-        memcpy(best, a->loop.uv, sizeof(double) * n2);
-        double best_eff = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);
-        double e_max = (1.0 + a->opt.distortion_tolerance) * a->settled_energy;
+        /* the layout kept: atlas_compact_rule (an iteration may
+         * overshoot the tolerance or lose efficiency; the result then
+         * goes back to the best earlier layout, which was bijective and
+         * padded after its own iteration) */
+        atlas_compact_rule rule;
+        st = atlas_compact_rule_begin(a, &rule, a->settled_energy, err);
+        if (st != SCAF_OK) return st;
         a->compact_stop = SCAF_STOP_ITERATIONS;
         for (int k = 0; k < a->opt.compact_iterations; k++) {
             st = one_iteration(a, ATLAS_COMPACT, NULL, progress, user, &it, err);
@@ -846,13 +878,9 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
                 a->compact_stop = st == SCAF_ERR_CANCELLED ? SCAF_STOP_CANCELLED : SCAF_STOP_ERROR;
                 break;
             }
-            if (it.info.energy > e_max) {
+            if (atlas_compact_rule_after(a, &rule, it.info.energy, it.efficiency)) {
                 a->compact_stop = SCAF_STOP_DISTORTION;
                 break;
-            }
-            if (it.efficiency > best_eff) {
-                best_eff = it.efficiency;
-                memcpy(best, a->loop.uv, sizeof(double) * n2);
             }
             zero_steps = it.info.step == 0.0 ? zero_steps + 1 : 0;
             if (zero_steps >= 3) {
@@ -866,11 +894,7 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
             hist[k % win] = it.side;
         }
         /* (a cancelled or failed run keeps its last finished iteration) */
-        if (st == SCAF_OK && memcmp(best, a->loop.uv, sizeof(double) * n2) != 0) {
-            memcpy(a->loop.uv, best, sizeof(double) * n2);
-            a->compact_restored = 1;
-        }
-        free(best);
+        if (atlas_compact_rule_end(a, &rule, st == SCAF_OK)) a->compact_restored = 1;
         atlas_compact_end(a);
         if (st != SCAF_OK) return st;
     }

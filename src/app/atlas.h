@@ -198,6 +198,32 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
 void atlas_compact_begin(atlas *a);
 void atlas_compact_end(atlas *a);
 
+/* The compaction's distortion rule, one for `scaf atlas` (atlas_run) and
+ * the editor's compact (scaf_drag_compact): E may rise to (1 +
+ * distortion_tolerance) times e_start, E when the compaction starts (the
+ * settled E in atlas_run); the first iteration above that stops the
+ * compaction, and the layout kept is the best packed one within the limit
+ * (the start qualifies), so the result never exceeds it. */
+typedef struct atlas_compact_rule {
+    double e_max;    /* the limit */
+    double best_eff; /* packing efficiency of best */
+    double *best;    /* 2 nw: the layout kept */
+} atlas_compact_rule;
+
+/* SCAF_ERR_NOMEM (nothing to end) or SCAF_OK. */
+scaf_status atlas_compact_rule_begin(const atlas *a, atlas_compact_rule *r, double e_start,
+                                     scaf_error *err);
+
+/* After an iteration with energy E and this efficiency: 1 when E is over
+ * the limit (stop: atlas_compact_rule_end puts the kept layout back),
+ * else 0 (the layout kept when it packs better). */
+int atlas_compact_rule_after(const atlas *a, atlas_compact_rule *r, double energy,
+                             double efficiency);
+
+/* restore: put the kept layout back when the loop's differs (returns 1
+ * then, 0 otherwise); frees r either way. */
+int atlas_compact_rule_end(atlas *a, atlas_compact_rule *r, int restore);
+
 /* Why the run stopped: the compaction's reason when it ran, else the
  * settle phase's. */
 scaf_stop_reason atlas_stop_reason(const atlas *a);

@@ -447,8 +447,10 @@ int scaf_drag_iterations(const scaf_drag_t *d)
 /* ---- steps ------------------------------------------------------------------------ */
 
 /* n loop iterations (the caller set up the loop and the term); stops
- * early on a zero step. */
-static scaf_status iterate(scaf_drag_t *d, int n, scaf_param_progress_fn progress, void *user)
+ * early on a zero step, and, with a compaction rule (may be NULL), when E
+ * exceeds its limit. */
+static scaf_status iterate(scaf_drag_t *d, int n, scaf_param_progress_fn progress, void *user,
+                           atlas_compact_rule *rule)
 {
     save_state(d, &d->before);
     d->has_before = 1;
@@ -463,6 +465,11 @@ static scaf_status iterate(scaf_drag_t *d, int n, scaf_param_progress_fn progres
         if (progress && progress(&info, user))
             return err_set(&d->err, SCAF_ERR_CANCELLED,
                            "stopped by the progress callback after iteration %d", info.iteration);
+        if (rule &&
+            atlas_compact_rule_after(
+                &d->at, rule, info.energy,
+                chart_packing_efficiency(d->at.nw, d->at.loop.uv, d->at.nf, d->at.Fw)))
+            break;
         if (!(info.step > 0.0)) break;
     }
     return SCAF_OK;
@@ -483,7 +490,7 @@ scaf_status scaf_drag_step(scaf_drag_t *d, int n, scaf_param_progress_fn progres
     scaf_status st = check_count(d, n);
     if (st == SCAF_OK) st = sync_handles(d);
     if (st != SCAF_OK) return st;
-    return iterate(d, n, progress, user);
+    return iterate(d, n, progress, user, NULL);
 }
 
 scaf_status scaf_drag_compact(scaf_drag_t *d, int n, scaf_param_progress_fn progress, void *user)
@@ -496,12 +503,18 @@ scaf_status scaf_drag_compact(scaf_drag_t *d, int n, scaf_param_progress_fn prog
     st = opt_handle_term_set(&d->term, 0, NULL, NULL, 0.0, &d->err);
     if (st != SCAF_OK) return st;
     d->handles_dirty = 1;
+    /* the distortion limit of `scaf atlas` (app/atlas: atlas_compact_rule) */
+    atlas_compact_rule rule;
+    st = atlas_compact_rule_begin(&d->at, &rule, atlas_energy(&d->at), &d->err);
+    if (st != SCAF_OK) return st;
     atlas_compact_begin(&d->at);
     int on = d->barrier.on;
     drag_barrier_enable(&d->barrier, 0); /* compaction closes gaps on purpose */
-    st = iterate(d, n, progress, user);
+    st = iterate(d, n, progress, user, &rule);
     drag_barrier_enable(&d->barrier, on);
     atlas_compact_end(&d->at);
+    /* (a cancelled or failed run keeps its last finished iteration) */
+    if (atlas_compact_rule_end(&d->at, &rule, st == SCAF_OK)) d->out_state = 0;
     return st;
 }
 
