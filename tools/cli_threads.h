@@ -3,11 +3,13 @@
  * line search: base/parallel) and of the dense kernels of the sparse
  * Cholesky factorization (scaf_set_threads).
  *
- * Results are deterministic for a given N (OpenBLAS splits each product
- * by output blocks that depend only on N and the sizes, never on timing;
- * scaf's sums are cut into chunks by N and added in chunk order) and N = 1
- * gives the numbers of the one-thread program of before. They may differ
- * between two values of N (the sums then run in another order). CHOLMOD's
+ * Results are the same bits for any N (so the same command gives the
+ * same file on every machine, whatever its cores): scaf's reductions are
+ * cut into chunks by their size only and added in chunk order
+ * (base/parallel), the factorization's tree is cut into a fixed number of
+ * bins that N threads work (opt/supernodal_plan), and OpenBLAS runs
+ * one-threaded inside scaf's kernels (its split of a product changes with
+ * its thread count). CHOLMOD's
  * own OpenMP loops stay at one thread whatever N (they only move data;
  * opt/cholmod_solver.c says why that pays). */
 #ifndef SCAF_TOOLS_CLI_THREADS_H

@@ -99,7 +99,7 @@ static void usage(FILE *o)
             "  --threads N              threads of the per-triangle work (assembly, line\n"
             "                           search) and of the solver's dense kernels (default:\n"
             "                           all cores, or OPENBLAS_NUM_THREADS when set); the\n"
-            "                           same N gives the same numbers\n"
+            "                           output is the same bytes for any N\n"
             "  --report FILE.json       per-iteration energy, gap and packing efficiency,\n"
             "                           before/after compaction, per-chart distortion\n"
             "  --svg FILE               picture of the atlas, charts in distinct colours\n"

@@ -28,6 +28,7 @@
 #include "geom/bijectivity.h"
 #include "mesh/mesh_io.h"
 #include "opt/handle_term.h"
+#include "scaf/scaf.h"
 
 static void usage(FILE *o)
 {
@@ -63,6 +64,9 @@ static void usage(FILE *o)
             "                         Figure 4 baseline: the deformation locks)\n"
             "  --verify               check bijectivity exactly after every iteration\n"
             "  --quiet                no summary on stderr\n"
+            "  --threads N            threads of the per-triangle work and of the\n"
+            "                         factorization (default 1); the output is the same\n"
+            "                         bytes for any N\n"
             "  --report FILE.json     energy, max_handle_error, iterations, stop_reason and\n"
             "                         per-iteration history\n"
             "  --svg FILE             picture of the deformed mesh\n"
@@ -74,6 +78,7 @@ static void usage(FILE *o)
 typedef struct deform_args {
     const char *in, *out, *targets, *report, *svg;
     int iterations, frame_iterations, no_remesh, verify, quiet;
+    int threads; /* --threads N; 0: one */
     double weight;
     int weight_given;
     cli_png png;
@@ -123,6 +128,10 @@ static int parse_args(int argc, char **argv, deform_args *o)
             o->verify = 1;
         } else if (!strcmp(a, "--quiet")) {
             o->quiet = 1;
+        } else if (!strcmp(a, "--threads")) {
+            CLI_NEED_VALUE("deform");
+            if (!cli_parse_int(v, &o->threads)) CLI_BAD_VALUE("deform");
+            if (o->threads < 1) CLI_OUT_OF_RANGE("deform", ">= 1");
         } else if (cli_take_input("deform", a, &o->in) != EXIT_OK) {
             return EXIT_USAGE;
         }
@@ -248,6 +257,7 @@ static int deform_main(int argc, char **argv)
     int rc = parse_args(argc, argv, &a);
     if (rc < 0) return EXIT_OK;
     if (rc != EXIT_OK) return rc;
+    if (a.threads > 0) scaf_set_threads(a.threads); /* otherwise main's default */
 
     /* every output checked before any work; written all together at the end */
     cli_uv_job job;

@@ -42,7 +42,7 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: scaf inflate IN -o OUT.obj --scale K [--iterations N] [--tets OUT.mesh]\n"
             "                    [--report R.json] [--png P.png [--png-size N]] [--box-scale S]\n"
-            "                    [--solver slim|newton] [--quiet]\n"
+            "                    [--solver slim|newton] [--threads N] [--quiet]\n"
             "\n"
             "Grow the closed surface IN toward K times its size (scaled about its centroid)\n"
             "inside a fixed box around it: the 3D SCAF loop, with tetrahedra filling the box\n"
@@ -55,6 +55,8 @@ static void usage(FILE *out)
             "  -o, --output FILE  the OBJ to write (nothing is left on failure)\n"
             "  -k, --scale K      the target's size factor, > 0 (< 1 shrinks)\n"
             "  -n, --iterations N iterations, 1..%d (default 50)\n"
+            "  --threads N        threads of the per-tet work and of the factorization\n"
+            "                     (default 1); the output is the same bytes for any N\n"
             "  --tets FILE        also write the final tets (MEDIT .mesh; label 1 inside\n"
             "                     the surface, 2 outside)\n"
             "  --report FILE      a JSON report: the box, the bounding-box diagonal before\n"
@@ -204,7 +206,7 @@ static int inflate_main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL, *tets = NULL;
     double K = 0.0;
-    int iterations = 50, quiet = 0;
+    int iterations = 50, quiet = 0, threads = 1;
     volume_deform_options o = volume_deform_options_default();
     cli_surface_png png;
     cli_surface_png_init(&png);
@@ -238,6 +240,10 @@ static int inflate_main(int argc, char **argv)
             if (!strcmp(v, "slim")) o.solver = SCAF_SOLVER_SLIM;
             else if (!strcmp(v, "newton")) o.solver = SCAF_SOLVER_NEWTON;
             else CLI_OUT_OF_RANGE("inflate", "slim or newton");
+        } else if (!strcmp(a, "--threads")) {
+            CLI_NEED_VALUE("inflate");
+            if (!cli_parse_int(v, &threads)) CLI_BAD_VALUE("inflate");
+            if (threads < 1) CLI_OUT_OF_RANGE("inflate", ">= 1");
         } else if (!strcmp(a, "--tets")) {
             CLI_NEED_VALUE("inflate");
             tets = v;
@@ -266,10 +272,11 @@ static int inflate_main(int argc, char **argv)
     int kp = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
     int rc = cli_outputs_check(&outs);
     if (rc != EXIT_OK) return rc;
-    /* one BLAS thread: the 3D systems are small next to their assembly and
-     * line search, and idle OpenBLAS threads spin (bunny x30: 12% of the
-     * time in sched_yield with two); one thread also fixes the bits */
-    scaf_set_threads(1);
+    /* one thread unless asked: the 3D systems are small next to their
+     * assembly and line search, and idle OpenBLAS threads spin (bunny x30:
+     * 12% of the time in sched_yield with two); the bits are the same for
+     * any count */
+    scaf_set_threads(threads);
     mesh m;
     mesh_read_info info;
     if ((rc = cli_read_mesh("inflate", in, quiet, &m, &info)) != EXIT_OK) return rc;

@@ -85,7 +85,7 @@ static void usage(FILE *o)
             "  --threads N            threads of the per-triangle work (assembly, line\n"
             "                         search) and of the solver's dense kernels (default:\n"
             "                         all cores, or OPENBLAS_NUM_THREADS when set); the\n"
-            "                         same N gives the same numbers\n"
+            "                         output is the same bytes for any N\n"
             "  --report FILE.json     options, per-iteration energy and time, phase split\n"
             "  --svg FILE             picture of the UV layout shaded by distortion\n"
             "  --svg-scaffold         also draw the scaffold in the picture\n"

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/parallel.h"
 #include "commands.h"
 #include "exit_codes.h"
 #include "scaf/scaf.h"
@@ -95,10 +96,23 @@ static void default_threads(void)
     if (!e || !*e) scaf_set_threads(1);
 }
 
+/* SCAF_MIN_CHUNK=N: scaf's loops are cut into chunks of at least N items
+ * (default PAR_MIN_CHUNK, 4096) so that tests take the parallel paths on
+ * small inputs (README: Parametrizing a mesh). Not a number >= 1: ignored. */
+static void min_chunk_from_environment(void)
+{
+    const char *e = getenv("SCAF_MIN_CHUNK");
+    if (!e || !*e) return;
+    char *end;
+    long n = strtol(e, &end, 10);
+    if (*end == '\0' && n >= 1) par_set_min_chunk((size_t)n);
+}
+
 int main(int argc, char **argv)
 {
     tune_allocator();
     default_threads();
+    min_chunk_from_environment();
     if (argc < 2) {
         print_help(stderr);
         return EXIT_USAGE;

@@ -46,14 +46,14 @@ SCAF_API const char *scaf_status_name(scaf_status status);
 SCAF_API const char *scaf_version(void);
 
 /* Threads of an iteration's per-simplex work (assembly, energies, line
- * search; OpenMP) and of the sparse solver's dense kernels (OpenBLAS); one
- * setting for the whole process, every handle. n >= 1: n threads; n = 0:
- * every core the process may run on. Until called, the per-simplex work
- * runs in one thread and OpenBLAS's own default holds (all cores, or
- * OPENBLAS_NUM_THREADS). Results are the same run after run for the same
- * count; with 1 they are the numbers of `scaf param --threads 1`;
- * different counts may differ in the last digits (sums run in another
- * order). Returns the BLAS's count now in effect, 0 when the BLAS has no
+ * search) and of the sparse factorization (scaf's own POSIX threads) and
+ * OpenBLAS's count outside scaf's kernels; one setting for the whole
+ * process, every handle. n >= 1: n threads; n = 0: every core the process
+ * may run on. Until called, the per-simplex work runs in one thread and
+ * OpenBLAS's own default holds (all cores, or OPENBLAS_NUM_THREADS).
+ * Results are the same bits for every count (sums are cut by their length
+ * only, the factorization into a fixed number of bins, and OpenBLAS runs
+ * one-threaded inside scaf's kernels). Returns the BLAS's count now in effect, 0 when the BLAS has no
  * such setting (the per-simplex count is set all the same), -1 for n < 0
  * (nothing changed). */
 SCAF_API int scaf_set_threads(int n);

@@ -141,8 +141,7 @@ def set_threads(n=0):
     """Threads of the per-triangle work (assembly, energies, line search)
     and of the sparse solver's dense kernels for the whole process
     (scaf_set_threads): n >= 1 threads, 0 = every core this process may run
-    on. The same count gives the same numbers run after run; 1 gives those
-    of `scaf param --threads 1`. Returns the count in effect (0: the BLAS
+    on. Results are the same bits whatever the count. Returns the count in effect (0: the BLAS
     has no such setting)."""
     if isinstance(n, bool) or not isinstance(n, int) or n < 0:
         raise UsageError("set_threads: n must be an int >= 0 (0 = all cores), not %r" % (n,))

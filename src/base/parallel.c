@@ -20,13 +20,26 @@ void par_set_threads(int n) { atomic_store(&threads, n < 1 ? 1 : n); }
 
 int par_threads(void) { return atomic_load(&threads); }
 
+static atomic_size_t min_chunk = PAR_MIN_CHUNK;
+
+void par_set_min_chunk(size_t n) { atomic_store(&min_chunk, n < 1 ? 1 : n); }
+
+size_t par_min_chunk(void) { return atomic_load(&min_chunk); }
+
 int par_chunks(size_t n)
 {
     int t = par_threads();
     if (t > PAR_MAX_CHUNKS) t = PAR_MAX_CHUNKS;
-    size_t most = n / PAR_MIN_CHUNK;
+    size_t most = n / par_min_chunk();
     if (most < 1) return 1;
     return most < (size_t)t ? (int)most : t;
+}
+
+int par_sum_chunks(size_t n)
+{
+    size_t most = n / par_min_chunk();
+    if (most < 1) return 1;
+    return most < PAR_MAX_CHUNKS ? (int)most : PAR_MAX_CHUNKS;
 }
 
 static struct {
@@ -108,7 +121,7 @@ static void grow(int want)
 
 void par_run(int nc, par_fn fn, void *ctx)
 {
-    if (nc <= 1 || pthread_mutex_trylock(&busy) != 0) {
+    if (nc <= 1 || par_threads() < 2 || pthread_mutex_trylock(&busy) != 0) {
         for (int k = 0; k < nc; k++) fn(ctx, k);
         return;
     }
@@ -153,7 +166,7 @@ static void run_ranges(range_job *j) { par_run(j->nc, range_chunk, j); }
 
 double par_sum(size_t n, par_range_fn range, const void *ctx)
 {
-    range_job j = {range, ctx, n, par_chunks(n), {0}};
+    range_job j = {range, ctx, n, par_sum_chunks(n), {0}};
     if (j.nc == 1) return range(ctx, 0, n);
     run_ranges(&j);
     double acc = 0;
@@ -163,7 +176,7 @@ double par_sum(size_t n, par_range_fn range, const void *ctx)
 
 double par_min(size_t n, par_range_fn range, const void *ctx)
 {
-    range_job j = {range, ctx, n, par_chunks(n), {0}};
+    range_job j = {range, ctx, n, par_sum_chunks(n), {0}};
     if (j.nc == 1) return range(ctx, 0, n);
     run_ranges(&j);
     double best = INFINITY; /* (a NaN chunk is skipped, as in a serial min) */

@@ -3,12 +3,14 @@
  * fills), how such a loop is cut into chunks, and the threads that run
  * the chunks.
  *
- * Results must not depend on scheduling: a loop over n items is cut into
- * par_chunks(n) contiguous chunks, a function of n and the thread count
- * only; each chunk's partial result (a sum, a minimum) is kept apart and
- * the partials are combined in chunk order. One chunk is the serial loop,
- * so one thread gives the serial numbers bit for bit. Which thread runs
- * which chunk does not matter.
+ * Results must not depend on the thread count nor on scheduling, so that
+ * a run gives the same bytes on every machine (asset pipelines cache by
+ * content hash): a reduction over n items (par_sum, par_min) is cut into
+ * par_sum_chunks(n) contiguous chunks, a function of n only; each chunk's
+ * partial result is kept apart and the partials are combined in chunk
+ * order, whatever threads ran the chunks. par_chunks(n), which does depend
+ * on the thread count, only cuts work whose result does not depend on the
+ * cut (fills where each value receives its terms in the serial order).
  *
  * The threads are a small pool of POSIX threads, started on first use and
  * kept; idle, they sleep on a condition variable. Not OpenMP: libgomp's
@@ -25,7 +27,8 @@
 #include <stddef.h>
 
 /* Fewer items than this per chunk are not worth a thread (waking one costs
- * tens of microseconds; a simplex costs ~0.1-1 us). */
+ * tens of microseconds; a simplex costs ~0.1-1 us). The default of
+ * par_min_chunk. */
 #define PAR_MIN_CHUNK 4096
 /* At most this many chunks (partials live in arrays of this size). */
 #define PAR_MAX_CHUNKS 64
@@ -34,9 +37,23 @@
 void par_set_threads(int n);
 int par_threads(void);
 
-/* Chunks for a loop of n items: min(threads, n / PAR_MIN_CHUNK,
- * PAR_MAX_CHUNKS), at least 1. */
+/* Items per chunk below which a loop is not cut (process-wide; n < 1
+ * counts as 1; until set: PAR_MIN_CHUNK). Only tests lower it (the
+ * program's SCAF_MIN_CHUNK), so that small inputs take the parallel paths;
+ * reductions then group their sums differently, the same for every thread
+ * count. */
+void par_set_min_chunk(size_t n);
+size_t par_min_chunk(void);
+
+/* Chunks for a loop of n items: min(threads, n / par_min_chunk(),
+ * PAR_MAX_CHUNKS), at least 1. Only for loops whose result does not
+ * depend on the cut. */
 int par_chunks(size_t n);
+
+/* Chunks of a reduction over n items: min(n / par_min_chunk(),
+ * PAR_MAX_CHUNKS), at least 1, whatever the thread count (the partials'
+ * grouping then never changes with it). */
+int par_sum_chunks(size_t n);
 
 /* First item of chunk k of nc over n items (chunk k is [begin(k), begin(k+1))). */
 static inline size_t par_chunk_begin(size_t n, int nc, int k)
@@ -51,9 +68,10 @@ typedef void (*par_fn)(void *ctx, int k);
 void par_run(int nc, par_fn fn, void *ctx);
 
 /* A loop over n items whose result is range(ctx, lo, hi) of its items
- * [lo, hi), run over par_chunks(n) chunks with par_run: par_sum adds the
- * chunks' results in chunk order (from 0), par_min takes their minimum.
- * One chunk: range(ctx, 0, n), the serial loop. */
+ * [lo, hi), run over par_sum_chunks(n) chunks with par_run: par_sum adds
+ * the chunks' results in chunk order (from 0), par_min takes their
+ * minimum. One chunk: range(ctx, 0, n). The same bits for any thread
+ * count. */
 typedef double (*par_range_fn)(const void *ctx, size_t lo, size_t hi);
 double par_sum(size_t n, par_range_fn range, const void *ctx);
 double par_min(size_t n, par_range_fn range, const void *ctx);

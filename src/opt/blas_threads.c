@@ -36,9 +36,9 @@ int scaf_set_threads(int n)
     return opt_blas_threads();
 }
 
-int opt_blas_serial_begin(int T)
+int opt_blas_serial_begin(void)
 {
-    if (T < 2 || !openblas_get_num_threads || !openblas_set_num_threads) return 0;
+    if (!openblas_get_num_threads || !openblas_set_num_threads) return 0;
     int saved = openblas_get_num_threads();
     if (saved > 1) openblas_set_num_threads(1);
     return saved;

@@ -12,10 +12,12 @@ int opt_blas_cores(void);
 /* The BLAS's current thread count, 0 when it offers none to query. */
 int opt_blas_threads(void);
 
-/* For code that runs BLAS in its own threads: set the BLAS to one thread
- * when T > 1 (OpenBLAS's threads would spin beside them); returns what
- * opt_blas_serial_end restores. */
-int opt_blas_serial_begin(int T);
+/* For code that runs BLAS in its own threads, or whose results must not
+ * depend on the thread count: set the BLAS to one thread (OpenBLAS's
+ * threads would spin beside scaf's, and OpenBLAS cuts some kernels, e.g.
+ * dpotrf's blocks, by its thread count, so their sums change with it);
+ * returns what opt_blas_serial_end restores. */
+int opt_blas_serial_begin(void);
 void opt_blas_serial_end(int saved);
 
 #endif

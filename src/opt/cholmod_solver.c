@@ -41,6 +41,7 @@
 #include "opt/cholmod_solver.h"
 
 #include "opt/block_symbolic.h"
+#include "opt/blas_threads.h"
 #include "opt/cholmod_view.h"
 #include "opt/given_symbolic.h"
 #include "opt/split_symbolic.h"
@@ -533,13 +534,13 @@ static scaf_status factor_numeric(opt_chol *c, const opt_csc *A, const double *b
     c->factored = 0;
     int ok;
     if (c->own_numeric && c->L->is_super && !c->snum) {
-        /* values for the supernodal L L^T factor, then the plan (for the
-         * thread count of scaf's loops, base/parallel); without a plan
-         * (out of memory) cholmod_factorize does the work */
+        /* values for the supernodal L L^T factor, then the plan (its
+         * bins fixed, not the thread count: the same factor for any);
+         * without a plan (out of memory) cholmod_factorize does the work */
         if (c->L->xtype == CHOLMOD_PATTERN) lend_values(c);
         if (c->L->xtype == CHOLMOD_REAL && c->L->is_ll)
             c->snum =
-                opt_snum_create_kept(c->L, A, par_threads(), c->nfixed, c->fixed_pattern, &c->kept);
+                opt_snum_create_kept(c->L, A, OPT_SNUM_BINS, c->nfixed, c->fixed_pattern, &c->kept);
         if (c->snum) c->st.kept_scatters += c->snum->kept_reused;
     }
     if (c->snum) {
@@ -551,8 +552,11 @@ static scaf_status factor_numeric(opt_chol *c, const opt_csc *A, const double *b
         c->fwd_valid = minor < 0 && b;
         c->fwd_b = b;
     } else {
-        int lv = omp_serial_begin();
+        /* BLAS in one thread: OpenBLAS's dpotrf cuts its blocks by its
+         * thread count, which would change the factor with it */
+        int lv = omp_serial_begin(), blas = opt_blas_serial_begin();
         ok = cholmod_factorize(&S, c->L, &c->cm);
+        opt_blas_serial_end(blas);
         omp_serial_end(lv);
     }
     c->st.t_factor += timer_now() - t0;
@@ -594,10 +598,11 @@ scaf_status opt_chol_solve(opt_chol *c, int nrhs, const double *B, double *X, sc
         Bd.x = (void *)B;
         Bd.xtype = CHOLMOD_REAL;
         Bd.dtype = CHOLMOD_DOUBLE;
-        int lv = omp_serial_begin();
+        int lv = omp_serial_begin(), blas = opt_blas_serial_begin();
         /* cholmod_solve2 (what cholmod_solve calls) with the result and its
          * workspaces kept between solves instead of allocated each time */
         int ok = cholmod_solve2(CHOLMOD_A, c->L, &Bd, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm);
+        opt_blas_serial_end(blas);
         omp_serial_end(lv);
         if (!ok) return fail(c, "solve", err);
         memcpy(X, c->X->x, Bd.nzmax * sizeof *X);

@@ -146,13 +146,20 @@ static scaf_status lu_solve(SuiteSparse_long n, const SuiteSparse_long *Ap,
     for (SuiteSparse_long k = 0; k < Ap[n]; k++) i[k] = (int)Ai[k];
     scaf_error e;
     err_clear(&e);
+    /* BLAS in one thread: OpenBLAS's products in several threads sum in
+     * another order (camelhead's start differed between --threads 1 and
+     * 2), and the start must be the same bits at any thread count */
+    int blas = opt_blas_serial_begin();
     opt_lu *F = opt_lu_factor((int)n, p, i, Ax, &e);
     free(p);
     free(i);
+    if (F) {
+        opt_lu_solve(F, b, x);
+        opt_lu_solve(F, b + n, x + n);
+        opt_lu_free(F);
+    }
+    opt_blas_serial_end(blas);
     if (!F) return e.code == SCAF_ERR_NOMEM ? err_nomem(err, "mean-value factorization") : e.code;
-    opt_lu_solve(F, b, x);
-    opt_lu_solve(F, b + n, x + n);
-    opt_lu_free(F);
     return SCAF_OK;
 }
 
@@ -234,16 +241,18 @@ scaf_status opt_mvc_solve(int nv, const double *V, int nf, const int *F, const u
     if (st == SCAF_ERR_NOMEM) goto done;
     st = SCAF_OK;
     double info[UMFPACK_INFO];
+    /* BLAS in one thread: the two solves take the threads, and the
+     * factorization's products then sum in the same order at any thread
+     * count */
+    int blas = opt_blas_serial_begin();
     rc = umfpack_dl_symbolic(n, n, Ap, Ai, Ax, &sym, NULL, info);
     if (rc == UMFPACK_OK) rc = umfpack_dl_numeric(Ap, Ai, Ax, sym, &num, NULL, info);
     if (rc == UMFPACK_OK) {
-        /* BLAS in one thread while the two solves take the threads */
         uv_solves S = {n, Ap, Ai, Ax, b, x, num, {UMFPACK_OK, UMFPACK_OK}};
-        int blas = opt_blas_serial_begin(par_threads());
         par_run(2, solve_one, &S);
-        opt_blas_serial_end(blas);
         rc = S.rc[0] != UMFPACK_OK ? S.rc[0] : S.rc[1];
     }
+    opt_blas_serial_end(blas);
     if (rc == UMFPACK_ERROR_out_of_memory) {
         st = err_nomem(err, "mean-value factorization");
         goto done;

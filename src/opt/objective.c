@@ -68,7 +68,8 @@ static void energy_slope_range(const opt_simplex_term *st, const double *X, cons
 }
 
 /* One chunk: the serial loop, continuing the running sums. More: each
- * chunk sums from 0 and the partials are added in chunk order
+ * chunk sums from 0 and the partials are added in chunk order; the chunks
+ * are par_sum_chunks', so any thread count gives the same bits
  * (base/parallel). */
 typedef struct slope_job {
     const opt_simplex_term *st;
@@ -91,7 +92,7 @@ static void simplex_energy_slope(const opt_obj_term *t, const double *X, const d
 {
     const opt_simplex_term *st = t->self;
     size_t n = (size_t)st->S->n;
-    int nc = par_chunks(n);
+    int nc = par_sum_chunks(n);
     if (nc == 1) {
         energy_slope_range(st, X, D, 0, n, energy, slope);
         return;

@@ -84,9 +84,11 @@ static void apply_descendant(const opt_snum *P, opt_snum_worker *wk, int d, int 
     double *C = wk->C;
     if (ndrow1 <= SMALL_UPDATE) {
         /* one product (the upper triangle it also computes is not used):
-         * scaf's own kernel when threads run side by side, OpenBLAS's
-         * (3-5% faster alone) in one thread */
-        if (P->threads > 1) small_gemm_nt(C, ndrow2, Xd, ndrow, Xd, ndrow, ndrow2, ndrow1, ndcol);
+         * scaf's own kernel when the tree is cut into bins, whatever
+         * threads run them (OpenBLAS's, 3-5% faster alone, sums in
+         * another order: one kernel for both keeps the bits the same at
+         * any thread count), OpenBLAS's when there is one bin */
+        if (P->bins > 1) small_gemm_nt(C, ndrow2, Xd, ndrow, Xd, ndrow, ndrow2, ndrow1, ndcol);
         else
             dgemm_("N", "T", &ndrow2, &ndrow1, &ndcol, &one, Xd, &ndrow, Xd, &ndrow, &zero, C,
                    &ndrow2);
@@ -228,8 +230,8 @@ typedef struct diag_job {
     int nsrow, nscol, j0, w;
 } diag_job;
 
-/* Thread k's share of the rows below column block j0's triangle in the
- * diagonal block: the columns before the block subtracted, then solved
+/* Share k (of P->bins, whatever threads run them) of the rows below
+ * column block j0's triangle in the diagonal block: the columns before the block subtracted, then solved
  * against its triangle (factor_diagonal's work on those rows, row by row
  * the same operations). */
 static void run_diag_rows(void *ctx, int k)
@@ -237,8 +239,8 @@ static void run_diag_rows(void *ctx, int k)
     diag_job *D = ctx;
     int nsrow = D->nsrow, j0 = D->j0, w = D->w;
     size_t below = (size_t)(D->nscol - j0 - w);
-    int a = (int)par_chunk_begin(below, D->P->threads, k);
-    int m = (int)par_chunk_begin(below, D->P->threads, k + 1) - a;
+    int a = (int)par_chunk_begin(below, D->P->bins, k);
+    int m = (int)par_chunk_begin(below, D->P->bins, k + 1) - a;
     if (m <= 0) return;
     double *Xj = D->X + j0 + (size_t)j0 * (size_t)nsrow, *R = Xj + w + a;
     if (j0 > 0)
@@ -275,7 +277,7 @@ static int factor_diagonal(const opt_snum *P, int sn, double *X, int share)
         if (split) {
             D.j0 = j0;
             D.w = w;
-            par_run(P->threads, run_diag_rows, &D);
+            par_run(P->bins, run_diag_rows, &D);
         } else if (m > w) {
             small_trsm(Xj + w, nsrow, Xj, nsrow, m - w, w);
         }
@@ -362,14 +364,15 @@ static void apply_descendant_cols(const opt_snum *P, opt_snum_worker *wk, int d,
     }
 }
 
-/* Top phase, thread k: every waiting descendant's update to its share of
- * sn's columns (shares of about equal work: column c gets nsrow - c rows). */
+/* Top phase, share k of P->bins: every waiting descendant's update to
+ * its share of sn's columns (shares of about equal work: column c gets
+ * nsrow - c rows), descendants in bin order. */
 static void run_top_updates(void *ctx, int k)
 {
     factor_job *J = ctx;
     opt_snum *P = J->P;
     opt_snum_worker *wk = &P->w[k];
-    int sn = J->sn, T = P->threads;
+    int sn = J->sn, T = P->bins; /* shares */
     int psi = P->pi[sn], nsrow = P->pi[sn + 1] - psi, nscol = P->super[sn + 1] - P->super[sn];
     double total = 0, acc = 0;
     for (int c = 0; c < nscol; c++) total += nsrow - c;
@@ -390,11 +393,11 @@ static void run_top_updates(void *ctx, int k)
 }
 
 /* After the top phase's updates of sn: move each descendant on (into
- * thread 0's lists), as apply_list does. */
+ * bin 0's lists), as apply_list does. */
 static void relink_top(const opt_snum *P, int sn)
 {
-    int T = P->threads, k2 = P->super[sn + 1];
-    for (int h = 0; h < T; h++) {
+    int B = P->bins, k2 = P->super[sn + 1];
+    for (int h = 0; h < B; h++) {
         int d = P->w[h].head[sn];
         P->w[h].head[sn] = -1;
         while (d >= 0) {
@@ -413,26 +416,27 @@ static void run_top_solve(void *ctx, int k)
     factor_job *J = ctx;
     opt_snum *P = J->P;
     int sn = J->sn, nrest = P->pi[sn + 1] - P->pi[sn] - (P->super[sn + 1] - P->super[sn]);
-    solve_below(P, sn, J->Lx + P->px[sn], (int)par_chunk_begin((size_t)nrest, P->threads, k),
-                (int)par_chunk_begin((size_t)nrest, P->threads, k + 1));
+    solve_below(P, sn, J->Lx + P->px[sn], (int)par_chunk_begin((size_t)nrest, P->bins, k),
+                (int)par_chunk_begin((size_t)nrest, P->bins, k + 1));
 }
 
-/* A supernode above the cut: descendants from every thread's list. */
+/* A supernode above the cut: descendants from every bin's list, in bin
+ * order. */
 static int factor_top(opt_snum *P, int sn, const double *Ax, double *Lx)
 {
-    int T = P->threads;
+    int B = P->bins;
     double *X = Lx + P->px[sn];
     assemble(P, sn, Ax, X);
     factor_job J = {P, Ax, Lx, sn, 0};
     if (opt_snum_top_parallel(P, sn)) {
-        par_run(T, run_top_updates, &J);
+        par_run(B, run_top_updates, &J);
         relink_top(P, sn);
     } else {
-        for (int k = 0; k < T; k++) apply_list(P, &P->w[k], sn, P->w[k].head, Lx, X);
+        for (int k = 0; k < B; k++) apply_list(P, &P->w[k], sn, P->w[k].head, Lx, X);
     }
     int minor = factor_diagonal(P, sn, X, opt_snum_top_parallel(P, sn));
     if (minor >= 0) return minor;
-    if (opt_snum_top_parallel(P, sn)) par_run(T, run_top_solve, &J);
+    if (opt_snum_top_parallel(P, sn)) par_run(B, run_top_solve, &J);
     else solve_below(P, sn, X, 0, P->pi[sn + 1] - P->pi[sn] - (P->super[sn + 1] - P->super[sn]));
     link_done(P, sn, P->w[0].head);
     return -1;
@@ -440,24 +444,27 @@ static int factor_top(opt_snum *P, int sn, const double *Ax, double *Lx)
 
 static int factor(opt_snum *P, const opt_csc *A, cholmod_factor *L, const double *b)
 {
-    int T = P->threads, ns = P->nsuper;
-    for (int k = 0; k < T; k++) {
+    int B = P->bins, ns = P->nsuper;
+    for (int k = 0; k < B; k++) {
         for (int sn = 0; sn < ns; sn++) P->w[k].head[sn] = -1;
         P->w[k].minor = -1;
     }
     if (b) opt_snum_forward_begin(P, L, b);
     /* BLAS one-threaded: the threads are scaf's (bins, then the top's
-     * updates and rows); OpenBLAS's own would spin beside them */
-    int blas = opt_blas_serial_begin(T);
+     * updates and rows); OpenBLAS's own would spin beside them, and its
+     * split of a product would change with the thread count */
+    int blas = opt_blas_serial_begin();
     factor_job J = {P, A->val, L->x, -1, b != NULL};
     int minor = -1;
-    if (T > 1) {
-        par_run(T, run_bin, &J);
-        for (int k = 0; k < T; k++)
+    if (B > 1) {
+        /* the bins in par_threads() threads (one: in order); each bin's
+         * work is the same whichever thread takes it */
+        par_run(B, run_bin, &J);
+        for (int k = 0; k < B; k++)
             if (P->w[k].minor >= 0 && (minor < 0 || P->w[k].minor < minor)) minor = P->w[k].minor;
         if (b && minor < 0) opt_snum_forward_gather(P);
     }
-    for (int i = P->bptr[T > 1 ? T : 0]; i < ns && minor < 0; i++) {
+    for (int i = P->bptr[B > 1 ? B : 0]; i < ns && minor < 0; i++) {
         minor = factor_top(P, P->order[i], A->val, L->x);
         if (b && minor < 0) opt_snum_forward_super(P, &P->w[0], P->order[i], L->x, NULL);
     }

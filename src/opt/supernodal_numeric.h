@@ -9,11 +9,12 @@
  * an OpenMP region per supernode at every factorization. Here the
  * supernodes are left-looking as in CHOLMOD (the same symbolic factor, the
  * same factor to rounding; small updates are one dgemm where CHOLMOD makes
- * two calls), A is scattered through the plan's map, and with T threads each
- * bin of the plan is factored in its own thread; above the cut, each
+ * two calls), A is scattered through the plan's map, and each bin of the
+ * plan is factored whole by one of the threads; above the cut, each large
  * supernode's updates are split by columns and its rows below the
- * diagonal block by rows among the threads. BLAS runs one-threaded
- * throughout (the threads are scaf's). The factor is written into L
+ * diagonal block by rows into the plan's shares. BLAS runs one-threaded
+ * throughout (the threads are scaf's). The bins and shares are the
+ * plan's, not the thread count: the factor is the same bits for any. The factor is written into L
  * (CHOLMOD's supernodal layout, L L^T), so cholmod_solve2 can use it too.
  */
 #ifndef SCAF_OPT_SUPERNODAL_NUMERIC_H

@@ -16,7 +16,7 @@ void opt_snum_destroy(opt_snum *P)
 {
     if (!P) return;
     if (P->w)
-        for (int k = 0; k < P->threads; k++) {
+        for (int k = 0; k < P->bins; k++) {
             free(P->w[k].map);
             free(P->w[k].rel);
             free(P->w[k].C);
@@ -121,12 +121,11 @@ static void scatter_place(void *ctx, int k)
 /* Group the entries of columns [c0, c1) into g; 0 when one is outside L's
  * structure or memory runs out. */
 static int group_entries(const opt_snum *P, const opt_csc *A, const int *pinv, int c0, int c1,
-                         int threads, entry_groups *g)
+                         entry_groups *g)
 {
     int n = P->n, ns = P->nsuper;
     size_t nz = (size_t)(A->colptr[c1] - A->colptr[c0]) + 1;
     int nc = par_chunks(nz);
-    if (nc > threads) nc = threads;
     if (nc > c1 - c0) nc = c1 - c0 > 0 ? c1 - c0 : 1;
     int *cnt = calloc((size_t)nc * (size_t)ns + 1, sizeof *cnt),
         *bad = calloc((size_t)nc, sizeof *bad);
@@ -237,7 +236,7 @@ static int kept_matches(const opt_snum_kept *K, const opt_snum *P, const int *pe
 }
 
 static opt_snum_kept *kept_build(const opt_snum *P, const opt_csc *A, const int *perm,
-                                 const int *pinv, int nf, int nsf, long pattern, int threads)
+                                 const int *pinv, int nf, int nsf, long pattern)
 {
     opt_snum_kept *K = calloc(1, sizeof *K);
     if (!K) return NULL;
@@ -249,7 +248,7 @@ static opt_snum_kept *kept_build(const opt_snum *P, const opt_csc *A, const int 
     K->nrow = malloc(((size_t)nsf + 1) * sizeof *K->nrow);
     entry_groups g = {0};
     /* entries of the leading columns all lie in the leading supernodes */
-    int ok = K->perm && K->super && K->nrow && group_entries(P, A, pinv, 0, nf, threads, &g);
+    int ok = K->perm && K->super && K->nrow && group_entries(P, A, pinv, 0, nf, &g);
     if (ok) {
         memcpy(K->perm, perm, (size_t)nf * sizeof *perm);
         memcpy(K->super, P->super, ((size_t)nsf + 1) * sizeof *K->super);
@@ -275,8 +274,8 @@ static opt_snum_kept *kept_build(const opt_snum *P, const opt_csc *A, const int 
  * when they do not match), the other columns' grouped here with their
  * places in the blocks (adst). 0 when A has an entry outside L's structure
  * or memory runs out. */
-static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int threads, int nfixed,
-                         long pattern, opt_snum_kept **kept)
+static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int nfixed, long pattern,
+                         opt_snum_kept **kept)
 {
     int n = P->n;
     int *pinv = malloc((size_t)n * sizeof *pinv);
@@ -289,7 +288,7 @@ static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int thr
         if (!P->kept_reused) {
             opt_snum_kept_destroy(*kept);
             *kept = NULL; /* its memory back before the new one */
-            *kept = kept_build(P, A, perm, pinv, nf, nsf, pattern, threads);
+            *kept = kept_build(P, A, perm, pinv, nf, nsf, pattern);
             if (!*kept) nf = nsf = 0; /* all of A below */
         }
     }
@@ -301,7 +300,7 @@ static int build_scatter(opt_snum *P, const opt_csc *A, const int *perm, int thr
         P->kpos = K->pos;
     }
     entry_groups g = {0};
-    ok = group_entries(P, A, pinv, nf, n, threads, &g);
+    ok = group_entries(P, A, pinv, nf, n, &g);
     if (ok) {
         for (int sn = 0; sn < P->nsuper; sn++) {
             int nsrow = P->pi[sn + 1] - P->pi[sn];
@@ -454,17 +453,17 @@ done:
     return used;
 }
 
-opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int threads)
+opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int bins)
 {
-    return opt_snum_create_kept(L, A, threads, 0, 0, NULL);
+    return opt_snum_create_kept(L, A, bins, 0, 0, NULL);
 }
 
-opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int threads, int nfixed,
+opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int bins, int nfixed,
                                long pattern, opt_snum_kept **kept)
 {
     if (!L->is_super || L->itype != CHOLMOD_INT || (int)L->n != A->n) return NULL;
-    if (threads < 1) threads = 1;
-    if (threads > PAR_MAX_CHUNKS) threads = PAR_MAX_CHUNKS;
+    if (bins < 1) bins = 1;
+    if (bins > PAR_MAX_CHUNKS) bins = PAR_MAX_CHUNKS;
     opt_snum *P = calloc(1, sizeof *P);
     if (!P) return NULL;
     P->n = A->n;
@@ -480,10 +479,10 @@ opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int th
     if (!P->col2super || !P->next || !P->lpos) goto fail;
     for (int sn = 0; sn < ns; sn++)
         for (int k = P->super[sn]; k < P->super[sn + 1]; k++) P->col2super[k] = sn;
-    if (!build_scatter(P, A, L->Perm, threads, nfixed, pattern, kept)) goto fail;
-    int T = plan_bins(P, threads);
+    if (!build_scatter(P, A, L->Perm, nfixed, pattern, kept)) goto fail;
+    int T = plan_bins(P, bins);
     if (T < 1) goto fail;
-    P->threads = T;
+    P->bins = T;
     P->diag_share_min = OPT_SNUM_DIAG_SHARE_MIN;
     P->toprow = malloc(((size_t)n + 1) * sizeof *P->toprow);
     P->y = malloc(((size_t)n + 1) * sizeof *P->y);
@@ -516,14 +515,14 @@ fail:
 
 int opt_snum_top_parallel(const opt_snum *P, int sn)
 {
-    return P->threads > 1 &&
+    return P->bins > 1 &&
         (double)(P->pi[sn + 1] - P->pi[sn]) * (double)(P->super[sn + 1] - P->super[sn]) >=
         OPT_SNUM_TOP_PARALLEL_MIN;
 }
 
 opt_snum_shape opt_snum_get_shape(const opt_snum *P)
 {
-    int T = P->threads, first_above = P->bptr[T > 1 ? T : 0];
+    int T = P->bins, first_above = P->bptr[T > 1 ? T : 0];
     opt_snum_shape sh = {T, P->nsuper, first_above, P->nsuper - first_above, 0};
     for (int i = first_above; i < P->nsuper; i++)
         sh.above_parallel += opt_snum_top_parallel(P, P->order[i]);

@@ -3,14 +3,18 @@
  * the symbolic factor of a CHOLMOD analysis, made once per pattern:
  *   - where each entry of A goes in the factor's supernodes (so that no
  *     factorization transposes or permutes A);
- *   - for T threads, a cut of the supernodal elimination tree into T bins
- *     of whole subtrees of about equal work (the sum of squared column
- *     counts, longest first), each bin's supernodes in ascending order;
- *     the supernodes above the cut follow, for the calling thread, which
- *     shares the large ones with the others (top_parallel);
- *   - each thread's workspaces.
- * The bins depend on the structure and T only, so results are the same
- * for a given T whatever the scheduling. Supernode s holds columns
+ *   - a cut of the supernodal elimination tree into B bins of whole
+ *     subtrees of about equal work (the sum of squared column counts,
+ *     longest first), each bin's supernodes in ascending order; the
+ *     supernodes above the cut follow, in one thread, which cuts the large
+ *     ones into B shares for the threads (top_parallel);
+ *   - each bin's (and share's) workspaces.
+ * B is the caller's (opt/cholmod_solver: OPT_SNUM_BINS), not the thread
+ * count: the bins and shares are worked by however many threads
+ * base/parallel has, one bin or share whole in one thread, and every
+ * value is computed the same way whichever thread does it. So the factor
+ * and the solves are the same bits for any thread count (the same output
+ * on every machine), and one thread runs the same bins one after another. Supernode s holds columns
  * [super[s], super[s+1]) as a dense column-major block of nsrow x nscol
  * values at x + px[s]; its rows are s[pi[s] .. pi[s+1]), its own columns
  * first, then the rows below, ascending. The struct is shared by the
@@ -35,7 +39,7 @@ typedef struct opt_snum_worker {
 } opt_snum_worker;
 
 typedef struct opt_snum {
-    int n, nsuper, threads;
+    int n, nsuper, bins;
     const int *super, *pi, *px, *s; /* L's structure (not owned) */
     int *col2super;                 /* n */
     int *next, *lpos;               /* nsuper */
@@ -48,12 +52,12 @@ typedef struct opt_snum {
     int *toprow;           /* n: a row's index among the rows above the cut, or -1 */
     int ntop;              /* rows above the cut */
     double *y;             /* n: the solve's vector, in the factor's order */
-    opt_snum_worker *w;    /* threads */
+    opt_snum_worker *w;    /* bins (and the top phase's shares) */
     double diag_share_min; /* OPT_SNUM_DIAG_SHARE_MIN (tests may lower it) */
 } opt_snum;
 
-/* Supernodes above the cut with at least this many stored entries get the
- * threads (a par_run costs tens of microseconds). */
+/* Supernodes above the cut with at least this many stored entries are
+ * cut into shares for the threads (a par_run costs tens of microseconds). */
 #define OPT_SNUM_TOP_PARALLEL_MIN 16384.0
 
 /* In a shared supernode's diagonal block, a column block's rows below its
@@ -63,11 +67,17 @@ typedef struct opt_snum {
  * block took 1.65 ms shared against 1.29 ms in one thread. */
 #define OPT_SNUM_DIAG_SHARE_MIN 4194304.0
 
+/* Bins of the plans of opt/cholmod_solver: fixed, so that the factor does
+ * not change with the thread count. Threads beyond it do not speed up the
+ * factorization; fewer run the bins in turn (one thread: factorization
+ * about as fast as with no cut, see bench/RESULTS-param.md, session 16). */
+#define OPT_SNUM_BINS 4
+
 /* Plan for matrices with A's pattern (upper, natural order) on L, a
- * supernodal factor of that pattern, for `threads` threads. L keeps its
+ * supernodal factor of that pattern, cut into `bins` bins. L keeps its
  * structure while the plan lives. NULL when out of memory or when A has
  * an entry outside L's structure. */
-opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int threads);
+opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int bins);
 
 void opt_snum_destroy(opt_snum *P);
 
@@ -89,17 +99,17 @@ void opt_snum_kept_destroy(opt_snum_kept *K);
  * Columns eliminated elsewhere, supernodes of 2^16 columns or rows, or
  * nfixed = 0 keep nothing. The plan borrows *kept: keep it while the plan
  * lives. */
-opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int threads, int nfixed,
+opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int bins, int nfixed,
                                long pattern, opt_snum_kept **kept);
 
-/* Whether supernode sn, above the cut, is shared by the threads. */
+/* Whether supernode sn, above the cut, is cut into shares. */
 int opt_snum_top_parallel(const opt_snum *P, int sn);
 
-/* How the plan cut the work: threads used (1 when the tree could not be
- * cut), supernodes in the bins, above the cut, and of those the ones
- * shared by the threads. */
+/* How the plan cut the work: bins used (1 when the tree could not be
+ * cut), supernodes in the bins, above the cut, and of those the ones cut
+ * into shares. */
 typedef struct opt_snum_shape {
-    int threads, supernodes, in_bins, above, above_parallel;
+    int bins, supernodes, in_bins, above, above_parallel;
 } opt_snum_shape;
 opt_snum_shape opt_snum_get_shape(const opt_snum *P);
 

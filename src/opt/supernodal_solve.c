@@ -109,43 +109,43 @@ void opt_snum_forward_begin(opt_snum *P, const cholmod_factor *L, const double *
 {
     const int *perm = L->Perm;
     for (int k = 0; k < P->n; k++) P->y[k] = b[perm[k]];
-    for (int h = 0; h < P->threads; h++)
+    for (int h = 0; h < P->bins; h++)
         for (int t = 0; t < P->ntop; t++) P->w[h].acc[t] = 0;
 }
 
 void opt_snum_forward_gather(opt_snum *P)
 {
-    if (P->threads < 2) return;
+    if (P->bins < 2) return;
     for (int k = 0; k < P->n; k++) {
         int t = P->toprow[k];
         if (t < 0) continue;
-        for (int h = 0; h < P->threads; h++) P->y[k] -= P->w[h].acc[t];
+        for (int h = 0; h < P->bins; h++) P->y[k] -= P->w[h].acc[t];
     }
 }
 
 void opt_snum_backward(opt_snum *P, const cholmod_factor *L, double *x)
 {
-    int T = P->threads, ns = P->nsuper, top = P->bptr[T > 1 ? T : 0];
+    int B = P->bins, ns = P->nsuper, top = P->bptr[B > 1 ? B : 0];
     const int *perm = L->Perm;
     solve_job J = {P, L->x};
-    int blas = opt_blas_serial_begin(T);
+    int blas = opt_blas_serial_begin();
     P->w[0].prefetch = (size_t)-1;
     for (int i = ns - 1; i >= top; i--) backward_super(P, &P->w[0], P->order[i], L->x);
-    if (T > 1) par_run(T, run_bin_backward, &J);
+    if (B > 1) par_run(B, run_bin_backward, &J);
     opt_blas_serial_end(blas);
     for (int k = 0; k < P->n; k++) x[perm[k]] = P->y[k];
 }
 
 void opt_snum_solve(opt_snum *P, const cholmod_factor *L, int nrhs, const double *B, double *X)
 {
-    int n = P->n, T = P->threads, ns = P->nsuper, top = P->bptr[T > 1 ? T : 0];
+    int n = P->n, nb = P->bins, ns = P->nsuper, top = P->bptr[nb > 1 ? nb : 0];
     solve_job J = {P, L->x};
     for (int r = 0; r < nrhs; r++) {
         const double *b = B + (size_t)r * (size_t)n;
         double *x = X + (size_t)r * (size_t)n;
         opt_snum_forward_begin(P, L, b);
-        int blas = opt_blas_serial_begin(T);
-        if (T > 1) par_run(T, run_bin_forward, &J);
+        int blas = opt_blas_serial_begin();
+        if (nb > 1) par_run(nb, run_bin_forward, &J);
         opt_snum_forward_gather(P);
         for (int i = top; i < ns; i++) opt_snum_forward_super(P, &P->w[0], P->order[i], L->x, NULL);
         opt_blas_serial_end(blas);

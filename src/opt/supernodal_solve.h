@@ -1,9 +1,10 @@
 /* opt/supernodal_solve: solves with the factor of opt/supernodal_numeric,
  * on the same plan (opt/supernodal_plan): the forward sweep runs each
- * bin's supernodes in its own thread (updates of the rows above the cut
- * kept per thread and subtracted after, in thread order), then the
- * supernodes above the cut; the backward sweep the other way round. One
- * thread sweeps in CHOLMOD's order. BLAS runs one-threaded throughout. */
+ * bin's supernodes whole in one of the threads (updates of the rows above
+ * the cut kept per bin and subtracted after, in bin order: the same bits
+ * for any thread count), then the supernodes above the cut; the backward
+ * sweep the other way round. A plan of one bin sweeps in CHOLMOD's order.
+ * BLAS runs one-threaded throughout. */
 #ifndef SCAF_OPT_SUPERNODAL_SOLVE_H
 #define SCAF_OPT_SUPERNODAL_SOLVE_H
 
@@ -15,11 +16,11 @@ void opt_snum_solve(opt_snum *P, const cholmod_factor *L, int nrhs, const double
 
 /* The sweeps one at a time, so that the forward one can run inside the
  * factorization (opt/supernodal_numeric) while each supernode is still in
- * cache. forward_begin: y = b in the factor's order, the threads' updates
+ * cache. forward_begin: y = b in the factor's order, the bins' updates
  * of the rows above the cut zeroed; forward_super: supernode sn's forward
  * step (acc: the calling bin's updates of the rows above the cut, NULL
- * above the cut and with one thread); forward_gather: after the bins,
- * subtract their updates (in thread order); backward: the backward sweep
+ * above the cut and with one bin); forward_gather: after the bins,
+ * subtract their updates (in bin order); backward: the backward sweep
  * after the whole forward one, x = the solution in the natural order. */
 void opt_snum_forward_begin(opt_snum *P, const cholmod_factor *L, const double *b);
 void opt_snum_forward_super(const opt_snum *P, opt_snum_worker *wk, int sn, const double *Lx,

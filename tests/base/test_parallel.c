@@ -1,6 +1,6 @@
 /* Tests for base/parallel's pool: every chunk runs exactly once and the
  * caller sees all of their writes, job after job and with thread counts
- * changing in between; two threads starting loops at the same time (two
+ * changing in between; reductions give the same bits at any thread count; two threads starting loops at the same time (two
  * handles) both get complete results (one of them then runs its chunks
  * itself). No timing. */
 #include <setjmp.h>
@@ -101,18 +101,30 @@ static void reductions(void **state)
 {
     (void)state;
     size_t n = 7 * (size_t)PAR_MIN_CHUNK + 5;
+    /* the reductions' chunks follow n only: the same sum at any thread
+     * count, added in chunk order */
+    int nc = par_sum_chunks(n);
+    assert_int_equal(nc, 7);
+    double want = 0;
+    for (int k = 0; k < nc; k++)
+        want += range_len(NULL, par_chunk_begin(n, nc, k), par_chunk_begin(n, nc, k + 1));
     for (int t = 1; t <= 3; t++) {
         par_set_threads(t);
-        int nc = par_chunks(n);
-        assert_int_equal(nc, t);
-        double want = 0;
-        for (int k = 0; k < nc; k++)
-            want += range_len(NULL, par_chunk_begin(n, nc, k), par_chunk_begin(n, nc, k + 1));
+        assert_int_equal(par_chunks(n), t);
+        assert_int_equal(par_sum_chunks(n), 7);
         assert_true(par_sum(n, range_len, NULL) == want);
         double shift = 2.5;
         assert_true(par_min(n, range_lo, &shift) == -2.5);
     }
     par_set_threads(1);
+    /* SCAF_MIN_CHUNK's setting: smaller chunks, still by n only */
+    assert_int_equal(par_min_chunk(), PAR_MIN_CHUNK);
+    par_set_min_chunk(64);
+    assert_int_equal(par_sum_chunks(640), 10);
+    assert_int_equal(par_sum_chunks(100000), PAR_MAX_CHUNKS);
+    par_set_min_chunk(0);
+    assert_int_equal(par_min_chunk(), 1);
+    par_set_min_chunk(PAR_MIN_CHUNK);
 }
 
 /* Both chunks wait for each other, so the pool's worker runs one: it must

@@ -1,8 +1,9 @@
 /* Tests for opt/supernodal_numeric: on CHOLMOD's own symbolic factors
  * (METIS and AMD orderings, relaxed supernodes), one, two and three
- * threads (the tree cut into bins, the supernodes above the cut shared)
+ * bins (the tree cut, the supernodes above the cut shared)
  * give cholmod_factorize's factor to rounding, the same bits at every
- * repetition, and the plan's solves agree with
+ * repetition and for one, two or three threads working a plan's bins,
+ * and the plan's solves agree with
  * cholmod_solve to rounding; a matrix that is not positive
  * definite (a negative or zero diagonal) is reported at the column where
  * CHOLMOD reports it; and opt_chol solves with the factor. */
@@ -115,21 +116,21 @@ static void check_solve(fixture *f, opt_snum *P, const cholmod_factor *L)
     free(x);
 }
 
-/* A numeric copy of the symbolic factor, factored by a plan for T threads
- * (and, when positive definite, solved with); returns the plan's result,
- * the factor in *out. */
+/* A numeric copy of the symbolic factor, factored by a plan of B bins in
+ * T threads (and, when positive definite, solved with); returns the
+ * plan's result, the factor in *out. */
 /* >= 0: the plan's diag_share_min for own_factor (0: every column block
  * of a shared diagonal block splits its rows between the threads, which
  * the default threshold leaves to larger factors than these grids). */
 static double diag_share_min = -1;
 
-static int own_factor(fixture *f, const opt_csc *A, int T, cholmod_factor **out,
-                      opt_snum_shape *shape)
+static int own_factor_in(fixture *f, const opt_csc *A, int B, int T, cholmod_factor **out,
+                         opt_snum_shape *shape)
 {
     cholmod_factor *L = cholmod_copy_factor(f->S, &f->cm);
     assert_true(cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, &f->cm));
     par_set_threads(T);
-    opt_snum *P = opt_snum_create(L, A, T);
+    opt_snum *P = opt_snum_create(L, A, B);
     assert_non_null(P);
     if (diag_share_min >= 0) P->diag_share_min = diag_share_min;
     if (shape) *shape = opt_snum_get_shape(P);
@@ -139,6 +140,13 @@ static int own_factor(fixture *f, const opt_csc *A, int T, cholmod_factor **out,
     par_set_threads(1);
     *out = L;
     return r;
+}
+
+/* B bins in as many threads. */
+static int own_factor(fixture *f, const opt_csc *A, int B, cholmod_factor **out,
+                      opt_snum_shape *shape)
+{
+    return own_factor_in(f, A, B, B, out, shape);
 }
 
 static double max_rel_diff(const cholmod_factor *a, const cholmod_factor *b)
@@ -166,7 +174,7 @@ static void check_against_cholmod(int m, int ordering, int relax)
         cholmod_factor *La, *Lb;
         opt_snum_shape sh;
         assert_int_equal(own_factor(&f, &f.A, T, &La, &sh), -1);
-        assert_int_equal(sh.threads, T); /* the tree was cut */
+        assert_int_equal(sh.bins, T); /* the tree was cut */
         assert_true(sh.in_bins > 0 && sh.above > 0 && sh.in_bins + sh.above == sh.supernodes);
         assert_true(max_rel_diff(La, f.ref) < 1e-12);
         assert_int_equal(own_factor(&f, &f.A, T, &Lb, NULL), -1);
@@ -218,6 +226,50 @@ static void shared_supernodes_above_the_cut(void **state)
             cholmod_free_factor(&L2, &f.cm);
         }
     diag_share_min = -1;
+    teardown_fixture(&f);
+}
+
+/* A plan's bins (and the shares of the supernodes above the cut, their
+ * diagonal blocks' rows split too) worked by one, two or three threads:
+ * the same factor and the same solve, bit for bit, so the thread count
+ * never changes a result. */
+static void same_bits_for_any_thread_count(void **state)
+{
+    (void)state;
+    fixture f;
+    setup_fixture(&f, 110, CHOLMOD_METIS, 2);
+    int n = f.A.n;
+    size_t bytes = f.ref->xsize * sizeof(double);
+    double *b = malloc((size_t)n * sizeof *b), *x[3];
+    for (int i = 0; i < n; i++) b[i] = sin(0.7 * i) + (i % 5);
+    for (int split = 0; split <= 1; split++) {
+        diag_share_min = split ? 0 : -1;
+        cholmod_factor *L[3];
+        for (int T = 1; T <= 3; T++) {
+            opt_snum_shape sh;
+            assert_int_equal(own_factor_in(&f, &f.A, OPT_SNUM_BINS, T, &L[T - 1], &sh), -1);
+            assert_int_equal(sh.bins, OPT_SNUM_BINS);
+            assert_true(sh.above_parallel > 0);
+            x[T - 1] = malloc((size_t)n * sizeof *x[T - 1]);
+            par_set_threads(T);
+            opt_snum *P = opt_snum_create(L[T - 1], &f.A, OPT_SNUM_BINS);
+            assert_non_null(P);
+            assert_int_equal(opt_snum_factor_forward(P, &f.A, L[T - 1], b), -1);
+            opt_snum_backward(P, L[T - 1], x[T - 1]);
+            opt_snum_destroy(P);
+            par_set_threads(1);
+        }
+        for (int T = 2; T <= 3; T++) {
+            assert_memory_equal(L[0]->x, L[T - 1]->x, bytes);
+            assert_memory_equal(x[0], x[T - 1], (size_t)n * sizeof *b);
+        }
+        for (int T = 1; T <= 3; T++) {
+            cholmod_free_factor(&L[T - 1], &f.cm);
+            free(x[T - 1]);
+        }
+    }
+    diag_share_min = -1;
+    free(b);
     teardown_fixture(&f);
 }
 
@@ -283,7 +335,7 @@ static void forward_sweep_in_the_factorization(void **state)
         par_set_threads(T);
         opt_snum *P = opt_snum_create(L, &f.A, T);
         assert_non_null(P);
-        assert_int_equal(opt_snum_get_shape(P).threads, T);
+        assert_int_equal(opt_snum_get_shape(P).bins, T);
         assert_int_equal(opt_snum_factor(P, &f.A, L), -1);
         opt_snum_solve(P, L, 1, b, x);
         for (int i = 0; i < n; i++) z[i] = -1.0;
@@ -344,6 +396,7 @@ int main(void)
         cmocka_unit_test(equals_cholmod_amd_relaxed),
         cmocka_unit_test(shared_supernodes_above_the_cut),
         cmocka_unit_test(forward_sweep_in_the_factorization),
+        cmocka_unit_test(same_bits_for_any_thread_count),
         cmocka_unit_test(not_positive_definite_where_cholmod_says),
         cmocka_unit_test(opt_chol_solves_with_it),
     };
