@@ -18,6 +18,7 @@
 #include "app/atlas.h"
 #include "app/atlas_output.h"
 #include "app/atlas_report.h"
+#include "app/seam_report.h"
 #include "app/stop_reason.h"
 #include "base/timer.h"
 #include "cli_args.h"
@@ -355,7 +356,8 @@ static int atlas_main(int argc, char **argv)
         goto done;
     double total = timer_now() - t_start;
     if (report) {
-        atlas_report r = {in, out, &a, resolution, setup, total, gap, eff, ps.n, ps.it};
+        seam_report sr = {a.seams_used, a.seams_why, a.ncharts, a.nf, a.chart, &seams};
+        atlas_report r = {in, out, &a, resolution, setup, total, gap, eff, ps.n, ps.it, &sr};
         path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? atlas_report_write(path, &r, &err) : SCAF_ERR_IO;
         if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;

@@ -15,6 +15,8 @@
 
 #include "app/param.h"
 #include "app/param_report.h"
+#include "app/seam_report.h"
+#include "geom/chart_gap.h"
 #include "app/stop_reason.h"
 #include "app/uv_svg.h"
 #include "base/timer.h"
@@ -424,6 +426,15 @@ static int param_main(int argc, char **argv)
         if (rc != EXIT_OK) goto done;
     }
     if (report) {
+        /* the chart of every face: the pieces of the output's UV topology */
+        int *fc = malloc(sizeof(int) * (size_t)m.nf), nc = 0;
+        if (!fc || chart_gap_labels(nuv, m.nf, FT, fc, &nc, &err) != SCAF_OK) {
+            fprintf(stderr, "scaf param: %s\n", fc ? err.message : "out of memory");
+            free(fc);
+            rc = fc ? exit_code_for(err.code) : EXIT_NOMEM;
+            goto done;
+        }
+        seam_report sr = {scaf_param_seams_used(p), param_seams_why(p), nc, m.nf, fc, &seams};
         param_report r = {in,
                           out,
                           &opt,
@@ -436,9 +447,11 @@ static int param_main(int argc, char **argv)
                           "ok",
                           scaf_param_stop_reason(p),
                           ps.n,
-                          ps.it};
+                          ps.it,
+                          &sr};
         path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? param_report_write(path, &r, &err) : SCAF_ERR_IO;
+        free(fc);
         if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&job.outs);

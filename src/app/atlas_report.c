@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "base/atomic_file.h"
+#include "app/seam_report.h"
 #include "base/json_write.h"
 
 scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_error *err)
@@ -89,7 +90,9 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
         if (c) fputs(", ", o);
         json_write_number(o, E[c]);
     }
-    fputs("],\n  \"iterations\": [", o);
+    fputc(']', o);
+    seam_report_json(o, r->seams);
+    fputs(",\n  \"iterations\": [", o);
     for (int i = 0; i < r->niterations; i++) {
         const atlas_iteration *it = &r->iterations[i];
         fprintf(o, "%s\n    {\"iteration\": %d, \"phase\": \"%s\", \"energy\": ", i ? "," : "",

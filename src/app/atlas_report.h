@@ -15,6 +15,7 @@
 #define SCAF_APP_ATLAS_REPORT_H
 
 #include "app/atlas.h"
+#include "app/seam_report.h"
 
 typedef struct atlas_report {
     const char *input, *output; /* may be NULL */
@@ -24,6 +25,8 @@ typedef struct atlas_report {
     double out_gap, out_efficiency; /* of the written, normalized layout */
     int niterations;
     const atlas_iteration *iterations;
+    const seam_report *seams; /* the seams and the chart of every face
+                                        (NULL: none) */
 } atlas_report;
 
 scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_error *err);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "base/atomic_file.h"
+#include "app/seam_report.h"
 #include "base/json_write.h"
 
 static int cmp_double(const void *a, const void *b)
@@ -114,7 +115,9 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
         fprintf(o, "%s\"%s\": ", k ? ", " : "", scaf_phase_name((scaf_phase)k));
         json_write_number(o, total > 0.0 ? sum[k] / total : 0.0);
     }
-    fputs("},\n  \"iterations\": [", o);
+    fputc('}', o);
+    seam_report_json(o, r->seams);
+    fputs(",\n  \"iterations\": [", o);
     for (int i = 0; i < r->niterations; i++) {
         const scaf_iteration_info_t *it = &r->iterations[i];
         fprintf(o, "%s\n    {\"iteration\": %d, \"energy\": ", i ? "," : "", it->iteration);

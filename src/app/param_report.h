@@ -10,6 +10,7 @@
 #ifndef SCAF_APP_PARAM_REPORT_H
 #define SCAF_APP_PARAM_REPORT_H
 
+#include "app/seam_report.h"
 #include "base/error.h"
 
 typedef struct param_report {
@@ -24,6 +25,8 @@ typedef struct param_report {
     scaf_stop_reason stop_reason; /* why the run stopped */
     int niterations;
     const scaf_iteration_info_t *iterations; /* niterations entries */
+    const seam_report *seams;                /* the seams and the chart of
+                                                every face (NULL: none) */
 } param_report;
 
 scaf_status param_report_write(const char *path, const param_report *r, scaf_error *err);

@@ -109,8 +109,12 @@ static scaf_status plan_auto(const mesh *m, int segment, seam_plan *plan, scaf_e
             return st;
         }
     }
+    /* automatic: every piece may be cut toward its cones, disks too */
+    cut_graph_options co;
+    cut_graph_defaults(&co);
+    co.cut_disks = 1;
     cut_graph g;
-    st = cut_graph_compute(m->nv, m->V, m->nf, m->F, label, NULL, &g, err);
+    st = cut_graph_compute(m->nv, m->V, m->nf, m->F, label, &co, &g, err);
     free(label);
     if (st != SCAF_OK) return st;
     plan->used = SCAF_SEAMS_AUTO;

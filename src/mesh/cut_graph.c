@@ -15,6 +15,8 @@ void cut_graph_defaults(cut_graph_options *o)
     o->cones = 1;
     o->crease_factor = 2.0;
     o->max_cones = 16;
+    o->min_cones = 4;
+    o->cut_disks = 0;
 }
 
 void cut_graph_free(cut_graph *g)
@@ -601,7 +603,14 @@ static int cut_handles(cutter *c, int p, const piece_lists *L)
 /* A closed piece: join cones by a tree of shortest paths to the cut graph
  * (the handle loops) or to the first cone. Returns the cone count, -1 out
  * of memory. */
-static int cut_cones(cutter *c, int p, const piece_lists *L, int genus)
+static int on_border(const surface *s, int v)
+{
+    for (int k = s->adj_start[v]; k < s->adj_start[v + 1]; k++)
+        if (s->e_t[s->adj_edge[k]] < 0) return 1;
+    return 0;
+}
+
+static int cut_cones(cutter *c, int p, const piece_lists *L, int genus, int has_border)
 {
     const surface *s = c->s;
     const int *verts = L->verts + L->v_start[p];
@@ -609,6 +618,10 @@ static int cut_cones(cutter *c, int p, const piece_lists *L, int genus)
     const int *faces = L->faces + L->f_start[p];
     int nfaces = L->f_start[p + 1] - L->f_start[p];
     angle_defects(s, faces, nfaces, c->K);
+    /* the angle defect is Gaussian curvature only inside */
+    if (has_border)
+        for (int i = 0; i < nverts; i++)
+            if (on_border(s, verts[i])) c->K[verts[i]] = 0.0;
     /* geodesic regions by farthest point sampling */
     int want = c->o->cones ? 64 : 2;
     if (want > nverts) want = nverts;
@@ -642,12 +655,17 @@ static int cut_cones(cutter *c, int p, const piece_lists *L, int genus)
      * than the total |curvature| in half turns; two at least on a sphere */
     int cap = (int)floor(total / PI);
     if (cap > c->o->max_cones) cap = c->o->max_cones;
-    int minimum = genus == 0 ? 2 : 0;
+    int minimum = genus == 0 && !has_border ? (c->o->cones ? c->o->min_cones : 2) : 0;
+    if (minimum > ns) minimum = ns;
     if (!c->o->cones) cap = minimum;
-    for (int k = 0; k < ns; k++) {
-        int take = ncone < minimum || (ncone < cap && rk[k].key >= 0.5 * PI);
-        if (!take) break;
+    for (int k = 0; k < ns && ncone < cap && rk[k].key >= 0.5 * PI; k++)
         cone[ncone++] = sample[rk[k].id];
+    /* too few where curvature concentrates (a round sphere): the first
+     * samples, which are far apart (farthest point order) */
+    for (int k = 0; k < ns && ncone < minimum; k++) {
+        int dup = 0;
+        for (int i = 0; i < ncone; i++) dup |= cone[i] == sample[k];
+        if (!dup) cone[ncone++] = sample[k];
     }
     if (ncone == 0) goto done;
     /* the Steiner tree: grow from the cut graph, or the first cone */
@@ -656,7 +674,7 @@ static int cut_cones(cutter *c, int p, const piece_lists *L, int genus)
     for (int i = 0; i < nverts; i++) {
         int v = verts[i];
         for (int k = s->adj_start[v]; k < s->adj_start[v + 1]; k++)
-            if (c->mark[s->adj_edge[k]]) {
+            if (c->mark[s->adj_edge[k]] || s->e_t[s->adj_edge[k]] < 0) {
                 if (!paths_add(s, &c->P, v, 0)) goto oom;
                 sources++;
                 break;
@@ -790,7 +808,8 @@ scaf_status cut_graph_compute(int nv, const double *V, int nf, const int *F, con
             goto done;
         }
         int genus = twice_genus / 2;
-        if (genus == 0 && loops[p] > 0) continue; /* a disk, with holes or not */
+        /* a disk, with holes or not */
+        if (genus == 0 && loops[p] > 0 && !(o->cut_disks && o->cones)) continue;
         if (genus > 0) {
             int n = cut_handles(&c, p, &L);
             if (n < 0) {
@@ -800,14 +819,14 @@ scaf_status cut_graph_compute(int nv, const double *V, int nf, const int *F, con
             g->handle_loops += n;
             g->genus_charts++;
         }
-        if (loops[p] == 0) {
-            int n = cut_cones(&c, p, &L, genus);
+        if (loops[p] == 0 || (o->cut_disks && o->cones)) {
+            int n = cut_cones(&c, p, &L, genus, loops[p] > 0);
             if (n < 0) {
                 st = err_nomem(err, "cut graph");
                 goto done;
             }
             g->cones += n;
-            g->closed_charts++;
+            g->closed_charts += loops[p] == 0;
         }
     }
     /* the cut surface */

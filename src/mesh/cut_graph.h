@@ -20,7 +20,11 @@
  *     point sampling, and the regions whose total angle defect is largest
  *     in magnitude give the cones (at least two on a sphere, so the cut is
  *     not empty); the tree grows from the handle loops (or the first cone)
- *     by the nearest cone's shortest path (a Steiner tree heuristic).
+ *     by the nearest cone's shortest path (a Steiner tree heuristic);
+ *     with cut_disks, pieces with a boundary get such a tree too, grown
+ *     from the boundary, toward their regions of concentrated curvature
+ *     only (a body in one piece with a small hole at the neck would
+ *     otherwise flatten through that hole);
  * Paths are shortest for an edge weight of length times a crease factor:
  * concave creases (valleys) are cheaper, so seams hide in them where that
  * costs little extra length (Sheffer & Hart 2002, "Seamster").
@@ -48,6 +52,11 @@ typedef struct cut_graph_options {
                              angle) on a concave edge (2: a right-angle
                              valley costs a third of its length) */
     int max_cones;        /* cap of the cone count of one piece (16) */
+    int cut_disks;        /* 1: also cut pieces with a boundary toward their
+                             cones (regions of concentrated curvature),
+                             from the boundary (0: leave disks as they are) */
+    int min_cones;        /* cones at least on a closed piece of genus 0 (4: on a
+                             round sphere E 4.19 after param, 4.56 with 2) */
 } cut_graph_options;
 
 void cut_graph_defaults(cut_graph_options *o);

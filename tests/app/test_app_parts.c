@@ -128,8 +128,8 @@ static void report_is_json_with_phases(void **state)
     }
     it[1].lambda = NAN; /* non-finite numbers become null */
     scaf_options_t o = scaf_options_default();
-    param_report r = {"in \"quoted\".obj", "out.obj", &o, 10, 12, 1, 0.5, 7.0, 3.0, "ok",
-                      SCAF_STOP_TOLERANCE, 3,         it};
+    param_report r = {"in \"quoted\".obj", "out.obj", &o, 10,  12, 1, 0.5, 7.0, 3.0, "ok",
+                      SCAF_STOP_TOLERANCE, 3,         it, NULL};
     char path[512];
     test_tmp_path("parts.json", path, sizeof path);
     assert_int_equal(param_report_write(path, &r, NULL), SCAF_OK);
