@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "app/atlas.h"
+#include "app/atlas_charts.h"
 #include "app/atlas_output.h"
 #include "app/atlas_report.h"
 #include "app/stop_reason.h"
@@ -80,6 +81,12 @@ static void usage(FILE *o)
             "  --lambda-ratio R         scaffold weight ratio (default 0.01)\n"
             "  --compact-lambda-ratio R scaffold weight ratio while compacting (default 1:\n"
             "                           fewer iterations; 0.3 keeps E lower, packs slower)\n"
+            "  --max-distortion E       split every chart whose settled E exceeds E (4.2 is a\n"
+            "                           good bound: a quarter sphere settles to 4.02) in two\n"
+            "                           along its normal cones, round by round (default:\n"
+            "                           off for input seams)\n"
+            "  --split-charts           also split charts that fill less than 0.45 of their\n"
+            "                           least-area box (a long snake packs badly)\n"
             "  --no-rotate              turn charts by multiples of 45 degrees only (default:\n"
             "                           also to their least-area box, and the layout to its\n"
             "                           smallest bounding square)\n"
@@ -154,6 +161,11 @@ static int atlas_main(int argc, char **argv)
     int quiet = 0, threads = 0; /* threads 0: the default (cli_threads_apply) */
     double resolution = 0.0, texels = -1.0, padding = -1.0;
     atlas_options opt = atlas_options_default();
+    /* chart splitting (app/atlas_charts): off unless asked for */
+    atlas_charts_options refine = atlas_charts_options_default();
+    refine.max_distortion = 0.0;
+    refine.min_fill = 0.0;
+    int refine_on = 0;
     cli_png png;
     cli_png_init(&png, 1);
     for (int i = 1; i < argc; i++) {
@@ -207,6 +219,14 @@ static int atlas_main(int argc, char **argv)
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
+        } else if (!strcmp(a, "--max-distortion")) {
+            NEED_VALUE();
+            if (!cli_parse_double(v, &refine.max_distortion)) BAD_VALUE();
+            if (!(refine.max_distortion > 4.0)) CLI_OUT_OF_RANGE("atlas", "> 4 (4 is an isometry)");
+            refine_on = 1;
+        } else if (!strcmp(a, "--split-charts")) {
+            refine.min_fill = ATLAS_CHARTS_MIN_FILL;
+            refine_on = 1;
         } else if (!strcmp(a, "--no-rotate")) {
             opt.rotate = 0;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
@@ -233,6 +253,12 @@ static int atlas_main(int argc, char **argv)
         return EXIT_USAGE;
     }
     if (cli_png_finish("atlas", &png) < 0) return EXIT_USAGE;
+    if (refine_on && opt.init_input) {
+        fprintf(stderr,
+                "scaf atlas: --max-distortion and --split-charts change the charts, so "
+                "they cannot start from the input UVs (--init input)\n");
+        return EXIT_USAGE;
+    }
     /* The padding is --padding P, or K texels of an R-texel texture:
      * --padding-texels K (default 4) at --resolution R (default 1024), so
      * mip levels of a baked texture do not bleed between charts;
@@ -270,7 +296,16 @@ static int atlas_main(int argc, char **argv)
     atlas a;
     progress_state ps = {0};
     double *UV = NULL;
-    scaf_status st = atlas_init(&a, &m, &opt, &err);
+    scaf_status st = SCAF_OK;
+    if (refine_on && mesh_has_uv(&m)) {
+        atlas_charts_info ri;
+        st = atlas_charts_refine(&m, &opt, &refine, &ri, &err);
+        if (st == SCAF_OK && !quiet)
+            fprintf(stderr,
+                    "scaf atlas: %s: charts %d -> %d (%d split for distortion, %d for packing)\n",
+                    in, ri.charts_before, ri.charts_after, ri.distortion_splits, ri.fill_splits);
+    }
+    if (st == SCAF_OK) st = atlas_init(&a, &m, &opt, &err);
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf atlas: %s: %s\n", in, err.message);
         mesh_free(&m);

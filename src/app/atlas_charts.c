@@ -1,0 +1,304 @@
+/* app/atlas_charts: charts split for distortion and packing (see the header). */
+#include "app/atlas_charts.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom/min_box.h"
+#include "mesh/chart_segment.h"
+#include "mesh/uv_charts.h"
+
+/* A chart is split only when each half can have this many faces. */
+#define MIN_SPLIT_FACES 32
+/* Settling caps of a measuring round: enough to rank charts, far below a
+ * full run's (the final atlas settles to convergence). */
+#define ROUND_ITERATIONS 40
+#define ROUND_TOLERANCE 1e-3
+
+atlas_charts_options atlas_charts_options_default(void)
+{
+    atlas_charts_options o;
+    o.max_distortion = ATLAS_CHARTS_MAX_DISTORTION;
+    o.min_fill = ATLAS_CHARTS_MIN_FILL;
+    o.max_rounds = 3;
+    o.max_splits = 0;
+    return o;
+}
+
+typedef struct split_candidate {
+    int chart;
+    int reason; /* 0 distortion, 1 fill */
+    double score;
+} split_candidate;
+
+static int candidate_cmp(const void *p, const void *q)
+{
+    const split_candidate *a = p, *b = q;
+    if (a->score != b->score) return a->score > b->score ? -1 : 1;
+    return a->chart - b->chart;
+}
+
+/* UV area / least-area bounding box area of every chart of a settled atlas. */
+static int chart_fill(const atlas *a, const double *UV, double *fill)
+{
+    int nc = a->ncharts;
+    double *area = calloc((size_t)nc, sizeof(double));
+    int *start = calloc((size_t)nc + 1, sizeof(int));
+    int *verts = malloc(sizeof(int) * (size_t)(a->nw > 0 ? a->nw : 1));
+    double *P = malloc(sizeof(double) * 2 * (size_t)(a->nw > 0 ? a->nw : 1));
+    int *hull = malloc(sizeof(int) * (size_t)(a->nw + 1));
+    if (!area || !start || !verts || !P || !hull) {
+        free(area);
+        free(start);
+        free(verts);
+        free(P);
+        free(hull);
+        return 0;
+    }
+    for (int f = 0; f < a->nf; f++) {
+        const double *p = UV + 2 * a->Fw[3 * f], *q = UV + 2 * a->Fw[3 * f + 1],
+                     *r = UV + 2 * a->Fw[3 * f + 2];
+        area[a->chart[f]] +=
+            fabs(0.5 * ((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])));
+    }
+    for (int w = 0; w < a->nw; w++) start[a->wchart[w] + 1]++;
+    for (int c = 0; c < nc; c++) start[c + 1] += start[c];
+    int *fillpos = hull; /* cursor, before the hulls need it */
+    for (int c = 0; c <= nc && c <= a->nw; c++) fillpos[c] = 0;
+    for (int w = 0; w < a->nw; w++) {
+        int c = a->wchart[w];
+        verts[start[c] + fillpos[c]++] = w;
+    }
+    for (int c = 0; c < nc; c++) {
+        int n = start[c + 1] - start[c];
+        for (int i = 0; i < n; i++) {
+            P[2 * i] = UV[2 * verts[start[c] + i]];
+            P[2 * i + 1] = UV[2 * verts[start[c] + i] + 1];
+        }
+        int nh = min_box_hull(P, n, hull);
+        if (nh < 0) {
+            free(area);
+            free(start);
+            free(verts);
+            free(P);
+            free(hull);
+            return 0;
+        }
+        double w = 0.0, h = 0.0;
+        if (nh >= 3) min_box_extent(P, hull, nh, min_box_area_angle(P, hull, nh), &w, &h);
+        fill[c] = w * h > 0.0 ? area[c] / (w * h) : 1.0;
+    }
+    free(area);
+    free(start);
+    free(verts);
+    free(P);
+    free(hull);
+    return 1;
+}
+
+/* Two-way segmentation of chart c (faces with label c) in its own vt
+ * index space; faces of the second part get label `fresh`. Returns 1
+ * when it split, 0 when it did not, -1 when out of memory. */
+static int split_chart(const mesh *m, int *label, int c, int fresh, scaf_error *err)
+{
+    int nf = 0;
+    for (int f = 0; f < m->nf; f++) nf += label[f] == c;
+    if (nf < 2 * MIN_SPLIT_FACES) return 0;
+    int *map = malloc(sizeof(int) * (size_t)m->nuv);
+    int *F = malloc(sizeof(int) * 3 * (size_t)nf);
+    int *faces = malloc(sizeof(int) * (size_t)nf);
+    int *part = malloc(sizeof(int) * (size_t)nf);
+    double *V = malloc(sizeof(double) * 3 * 3 * (size_t)nf);
+    int rc = -1;
+    if (!map || !F || !faces || !part || !V) goto out;
+    for (int i = 0; i < m->nuv; i++) map[i] = -1;
+    int nv = 0, k = 0;
+    for (int f = 0; f < m->nf; f++) {
+        if (label[f] != c) continue;
+        faces[k] = f;
+        for (int j = 0; j < 3; j++) {
+            int t = m->FT[3 * f + j];
+            if (map[t] < 0) {
+                map[t] = nv;
+                memcpy(V + 3 * nv, m->V + 3 * m->F[3 * f + j], sizeof(double) * 3);
+                nv++;
+            }
+            F[3 * k + j] = map[t];
+        }
+        k++;
+    }
+    chart_segment_options o;
+    chart_segment_defaults(&o);
+    o.target_charts = 2;
+    int n = 0;
+    if (chart_segment(nv, V, nf, F, &o, part, &n, err) != SCAF_OK) goto out;
+    rc = 0;
+    if (n < 2) goto out;
+    /* parts beyond two (a part cut in pieces) join the second */
+    for (int i = 0; i < nf; i++)
+        if (part[i] != part[0]) label[faces[i]] = fresh;
+    rc = 1;
+out:
+    free(map);
+    free(F);
+    free(faces);
+    free(part);
+    free(V);
+    return rc;
+}
+
+/* New vt indices: one per (old vt, label) pair; UVs copied (placeholders). */
+static int relabel_uvs(mesh *m, const int *label)
+{
+    int *first = malloc(sizeof(int) * (size_t)m->nuv);
+    int *next = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    int *key_label = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    int *key_vt = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    int *FT = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    double *UV = NULL;
+    int ok = 0;
+    if (!first || !next || !key_label || !key_vt || !FT) goto out;
+    for (int t = 0; t < m->nuv; t++) first[t] = -1;
+    int n = 0;
+    for (int h = 0; h < 3 * m->nf; h++) {
+        int t = m->FT[h], l = label[h / 3], id = first[t];
+        while (id >= 0 && key_label[id] != l) id = next[id];
+        if (id < 0) {
+            id = n++;
+            key_label[id] = l;
+            key_vt[id] = t;
+            next[id] = first[t];
+            first[t] = id;
+        }
+        FT[h] = id;
+    }
+    UV = malloc(sizeof(double) * 2 * (size_t)(n > 0 ? n : 1));
+    if (!UV) goto out;
+    for (int i = 0; i < n; i++) {
+        UV[2 * i] = m->UV[2 * key_vt[i]];
+        UV[2 * i + 1] = m->UV[2 * key_vt[i] + 1];
+    }
+    free(m->FT);
+    free(m->UV);
+    m->FT = FT;
+    m->UV = UV;
+    m->nuv = n;
+    FT = NULL;
+    UV = NULL;
+    ok = 1;
+out:
+    free(first);
+    free(next);
+    free(key_label);
+    free(key_vt);
+    free(FT);
+    free(UV);
+    return ok;
+}
+
+scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_charts_options *o,
+                                atlas_charts_info *info, scaf_error *err)
+{
+    atlas_charts_info local;
+    if (!info) info = &local;
+    memset(info, 0, sizeof *info);
+    if (!m || !base || !o || !mesh_has_uv(m))
+        return err_set(err, SCAF_ERR_USAGE,
+                       "atlas_charts_refine: the mesh needs UV seams (vt) that cut it into charts");
+    int *label = malloc(sizeof(int) * (size_t)(m->nf > 0 ? m->nf : 1));
+    if (!label) return err_nomem(err, "chart refinement");
+    int n = 0;
+    scaf_status st = mesh_uv_chart_labels(m, label, &n, err);
+    if (st != SCAF_OK) {
+        free(label);
+        return st;
+    }
+    info->charts_before = info->charts_after = n;
+    atlas_options opt = *base;
+    opt.compact_iterations = 0;
+    opt.repack = 0;
+    opt.rotate = 0;
+    opt.padding = 0.0;
+    opt.init_input = 0;
+    if (opt.settle_iterations > ROUND_ITERATIONS) opt.settle_iterations = ROUND_ITERATIONS;
+    if (opt.settle_tolerance < ROUND_TOLERANCE) opt.settle_tolerance = ROUND_TOLERANCE;
+    for (int round = 0; round < o->max_rounds; round++) {
+        atlas a;
+        st = atlas_init(&a, m, &opt, err);
+        if (st != SCAF_OK) break;
+        st = atlas_run(&a, NULL, NULL, err);
+        if (st != SCAF_OK) {
+            atlas_free(&a);
+            break;
+        }
+        info->rounds++;
+        int nc = a.ncharts;
+        double *E = malloc(sizeof(double) * (size_t)nc);
+        double *fill = malloc(sizeof(double) * (size_t)nc);
+        double *UV = malloc(sizeof(double) * 2 * (size_t)(a.nw > 0 ? a.nw : 1));
+        split_candidate *cand = malloc(sizeof *cand * (size_t)nc);
+        if (!E || !fill || !UV || !cand) {
+            free(E);
+            free(fill);
+            free(UV);
+            free(cand);
+            atlas_free(&a);
+            st = err_nomem(err, "chart refinement");
+            break;
+        }
+        atlas_chart_energy(&a, E);
+        atlas_normalized_uv(&a, UV);
+        int ok = chart_fill(&a, UV, fill);
+        /* the atlas's charts are the mesh's UV charts (pinched vt split
+         * apart keep their faces): label faces by them */
+        for (int f = 0; f < m->nf; f++) label[f] = a.chart[f];
+        atlas_free(&a);
+        free(UV);
+        if (!ok) {
+            free(E);
+            free(fill);
+            free(cand);
+            st = err_nomem(err, "chart refinement");
+            break;
+        }
+        /* every chart above the distortion bound; of those below the fill
+         * bound only the emptiest, one a round, since its halves change
+         * the ranking */
+        int ncand = 0, emptiest = -1;
+        for (int c = 0; c < nc; c++) {
+            if (o->max_distortion > 0 && E[c] > o->max_distortion)
+                cand[ncand++] = (split_candidate){c, 0, 1.0 + (E[c] - o->max_distortion)};
+            else if (o->min_fill > 0 && fill[c] < o->min_fill &&
+                     (emptiest < 0 || fill[c] < fill[emptiest]))
+                emptiest = c;
+        }
+        if (emptiest >= 0)
+            cand[ncand++] = (split_candidate){emptiest, 1, o->min_fill - fill[emptiest]};
+        qsort(cand, (size_t)ncand, sizeof *cand, candidate_cmp);
+        if (o->max_splits > 0 && ncand > o->max_splits) ncand = o->max_splits;
+        int split = 0;
+        for (int i = 0; i < ncand; i++) {
+            int r = split_chart(m, label, cand[i].chart, nc + split, err);
+            if (r < 0) {
+                st = err_nomem(err, "chart refinement");
+                break;
+            }
+            if (r == 0) continue;
+            split++;
+            if (cand[i].reason == 0) info->distortion_splits++;
+            else info->fill_splits++;
+        }
+        free(E);
+        free(fill);
+        free(cand);
+        if (st != SCAF_OK || split == 0) break;
+        if (!relabel_uvs(m, label)) {
+            st = err_nomem(err, "chart refinement");
+            break;
+        }
+        info->charts_after = nc + split;
+    }
+    free(label);
+    return st;
+}
