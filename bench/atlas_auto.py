@@ -29,7 +29,7 @@ Without node or the package the xatlas rows are skipped with a note.
 
     bench/atlas_auto.py [--scaf BIN] [--segment BIN] [--data DIR]
                         [--xatlas DIR] [--resolution R] [--gap K]
-                        [--only NAME[,NAME...]]
+                        [--only NAME[,NAME...]] [--refine OPTIONS]
 
 Prints a Markdown table (paste into bench/RESULTS-atlas.md).
 """
@@ -173,9 +173,9 @@ def run_scaf(args, mesh, tmp, name):
         r = subprocess.run([args.segment, mesh, seg], capture_output=True, text=True)
         if r.returncode == 0:
             cmd = [args.scaf, "atlas", seg, "-o", out, "--init", "tutte", "--quiet",
-                   "--resolution", str(args.resolution), "--padding-texels", str(args.gap)]
+                   "--resolution", str(args.resolution), "--padding-texels", str(args.gap)] + args.refine.split()
             r = subprocess.run(cmd, capture_output=True, text=True)
-        how = "segment_obj + scaf atlas"
+        how = ("segment_obj + scaf atlas " + args.refine).strip()
     seconds = time.monotonic() - t0
     if r.returncode != 0:
         return {"tool": "scaf", "how": how, "error": (r.stderr or r.stdout).strip()[:200]}
@@ -236,6 +236,8 @@ def main():
     ap.add_argument("--resolution", type=int, default=1024)
     ap.add_argument("--gap", type=int, default=4)
     ap.add_argument("--only", default=None)
+    ap.add_argument("--refine", default="--max-distortion 4.2 --split-charts",
+                    help="chart splitting options of scaf atlas in the segment_obj path")
     args = ap.parse_args()
     meshes = MESHES
     if args.only:

@@ -302,8 +302,10 @@ static int atlas_main(int argc, char **argv)
         st = atlas_charts_refine(&m, &opt, &refine, &ri, &err);
         if (st == SCAF_OK && !quiet)
             fprintf(stderr,
-                    "scaf atlas: %s: charts %d -> %d (%d split for distortion, %d for packing)\n",
-                    in, ri.charts_before, ri.charts_after, ri.distortion_splits, ri.fill_splits);
+                    "scaf atlas: %s: charts %d -> %d (%d split and %d slit for distortion, %d "
+                    "split for packing)\n",
+                    in, ri.charts_before, ri.charts_after, ri.distortion_splits,
+                    ri.distortion_slits, ri.fill_splits);
     }
     if (st == SCAF_OK) st = atlas_init(&a, &m, &opt, &err);
     if (st != SCAF_OK) {

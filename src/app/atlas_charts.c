@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/half_edges.h"
 #include "geom/min_box.h"
 #include "mesh/chart_segment.h"
 #include "mesh/uv_charts.h"
@@ -23,6 +24,7 @@ atlas_charts_options atlas_charts_options_default(void)
     o.min_fill = ATLAS_CHARTS_MIN_FILL;
     o.max_rounds = 3;
     o.max_splits = 0;
+    o.slit_cones = 0;
     return o;
 }
 
@@ -148,6 +150,204 @@ out:
     return rc;
 }
 
+/* ---- slits: a cut from a chart's boundary to its worst cone ---- */
+
+/* Per vt index: the area-weighted excess sum A_f (E_f - 4) of its faces. */
+static void vertex_excess(const mesh *m, const double *fe, const double *farea, double *ex)
+{
+    for (int t = 0; t < m->nuv; t++) ex[t] = 0.0;
+    for (int f = 0; f < m->nf; f++) {
+        double x = farea[f] * (fe[f] - 4.0);
+        if (!(x > 0)) continue;
+        for (int k = 0; k < 3; k++) ex[m->FT[3 * f + k]] += x;
+    }
+}
+
+typedef struct vt_graph {
+    int *twin;               /* 3 nf: half-edge across the same vt edge, or -1 */
+    int *first;              /* nuv + 1: half-edges leaving t, CSR */
+    int *out;                /* 3 nf */
+    unsigned char *boundary; /* nuv: t on a chart boundary */
+} vt_graph;
+
+static void vt_graph_free(vt_graph *g)
+{
+    free(g->twin);
+    free(g->first);
+    free(g->out);
+    free(g->boundary);
+}
+
+static int vt_graph_build(const mesh *m, vt_graph *g, scaf_error *err)
+{
+    int nf = m->nf, nuv = m->nuv;
+    g->twin = malloc(sizeof(int) * 3 * (size_t)nf);
+    g->first = calloc((size_t)nuv + 1, sizeof(int));
+    g->out = malloc(sizeof(int) * 3 * (size_t)nf);
+    g->boundary = calloc((size_t)nuv, 1);
+    int *order = malloc(sizeof(int) * 3 * (size_t)nf);
+    int ok = g->twin && g->first && g->out && g->boundary && order;
+    int count = 0;
+    if (ok && half_edges_sort(nuv, nf, m->FT, NULL, order, &count, err) != SCAF_OK) ok = 0;
+    if (!ok) {
+        free(order);
+        vt_graph_free(g);
+        return 0;
+    }
+    for (int h = 0; h < 3 * nf; h++) g->twin[h] = -1;
+    for (int i = 0; i < count;) {
+        int j = i + 1;
+        while (j < count && half_edges_same_edge(m->FT, order[i], order[j])) j++;
+        /* two sides in opposite directions: an inside edge */
+        if (j - i == 2 && m->FT[order[i]] == m->FT[half_edge_next(order[i + 1])]) {
+            g->twin[order[i]] = order[i + 1];
+            g->twin[order[i + 1]] = order[i];
+        }
+        i = j;
+    }
+    free(order);
+    for (int h = 0; h < 3 * nf; h++) {
+        g->first[m->FT[h] + 1]++;
+        if (g->twin[h] < 0) g->boundary[m->FT[h]] = g->boundary[m->FT[half_edge_next(h)]] = 1;
+    }
+    for (int t = 0; t < nuv; t++) g->first[t + 1] += g->first[t];
+    int *pos = malloc(sizeof(int) * (size_t)(nuv > 0 ? nuv : 1));
+    if (!pos) {
+        vt_graph_free(g);
+        return 0;
+    }
+    for (int t = 0; t < nuv; t++) pos[t] = g->first[t];
+    for (int h = 0; h < 3 * nf; h++) g->out[pos[m->FT[h]]++] = h;
+    free(pos);
+    return 1;
+}
+
+static double corner_length(const mesh *m, int h)
+{
+    const double *a = m->V + 3 * m->F[h], *b = m->V + 3 * m->F[half_edge_next(h)];
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/* Cut chart c open from its boundary to its vertex of largest excess
+ * along the shortest inside path (Dijkstra over vt edges). New vt
+ * indices are appended to the lists *newFT (a copy of FT, updated) and
+ * the count *nuv. Returns 1 when it cut, 0 when there was nothing to cut
+ * (no interior vertex with excess), -1 when out of memory. */
+static int slit_chart(const mesh *m, const vt_graph *g, const int *label, int c, const double *ex,
+                      int *FT, int *nuv, int **src)
+{
+    int cone = -1;
+    for (int f = 0; f < m->nf; f++) {
+        if (label[f] != c) continue;
+        for (int k = 0; k < 3; k++) {
+            int t = m->FT[3 * f + k];
+            if (!g->boundary[t] && ex[t] > 0 &&
+                (cone < 0 || ex[t] > ex[cone] || (ex[t] == ex[cone] && t < cone)))
+                cone = t;
+        }
+    }
+    if (cone < 0) return 0;
+    int nt = m->nuv;
+    double *dist = malloc(sizeof(double) * (size_t)nt);
+    int *prev = malloc(sizeof(int) * (size_t)nt); /* half-edge into t on the path */
+    unsigned char *done = calloc((size_t)nt, 1);
+    if (!dist || !prev || !done) {
+        free(dist);
+        free(prev);
+        free(done);
+        return -1;
+    }
+    for (int t = 0; t < nt; t++) {
+        dist[t] = HUGE_VAL;
+        prev[t] = -1;
+    }
+    /* Dijkstra with a linear scan of the front: the front is the rim of a
+     * disk around the cone, stopped at the first boundary vertex */
+    int *front = malloc(sizeof(int) * (size_t)nt), nfront = 0;
+    if (!front) {
+        free(dist);
+        free(prev);
+        free(done);
+        return -1;
+    }
+    dist[cone] = 0.0;
+    front[nfront++] = cone;
+    int end = -1;
+    while (nfront > 0) {
+        int bi = 0;
+        for (int i = 1; i < nfront; i++)
+            if (dist[front[i]] < dist[front[bi]] ||
+                (dist[front[i]] == dist[front[bi]] && front[i] < front[bi]))
+                bi = i;
+        int t = front[bi];
+        front[bi] = front[--nfront];
+        if (done[t]) continue;
+        done[t] = 1;
+        if (g->boundary[t]) {
+            end = t;
+            break;
+        }
+        for (int i = g->first[t]; i < g->first[t + 1]; i++) {
+            int h = g->out[i], u = m->FT[half_edge_next(h)];
+            double nd = dist[t] + corner_length(m, h);
+            if (!done[u] && nd < dist[u]) {
+                if (dist[u] == HUGE_VAL) front[nfront++] = u;
+                dist[u] = nd;
+                prev[u] = h;
+            }
+        }
+    }
+    free(front);
+    free(done);
+    free(dist);
+    if (end < 0) {
+        free(prev);
+        return 0;
+    }
+    /* the path w0 = end (on the boundary), w1, ..., wk = cone: prev[w] is
+     * the half-edge from the path's next vertex into w */
+    int k = 0;
+    for (int w = end; w != cone; w = m->FT[prev[w]]) k++;
+    int *path = malloc(sizeof(int) * (size_t)(k + 1));
+    if (!path) {
+        free(prev);
+        return -1;
+    }
+    k = 0;
+    for (int w = end;; w = m->FT[prev[w]]) {
+        path[k++] = w;
+        if (w == cone) break;
+    }
+    int rc = 1;
+    /* every path vertex but the cone gets a new vt on one side of the
+     * path: the faces from the one holding w -> next (the path's left
+     * side), turning about w, up to the previous path edge (or the
+     * boundary at w0). Consecutive vertices agree: the face holding
+     * w_i -> w_i+1 is the first of w_i and the last of w_i+1. */
+    for (int i = 0; i + 1 < k; i++) {
+        int w = path[i], before = i > 0 ? path[i - 1] : -1;
+        int id = (*nuv)++;
+        int *grown = realloc(*src, sizeof(int) * (size_t)*nuv);
+        if (!grown) {
+            rc = -1;
+            break;
+        }
+        *src = grown;
+        (*src)[id] = w;
+        int h = g->twin[prev[w]];
+        for (int guard = 0; h >= 0 && guard < 3 * m->nf; guard++) {
+            FT[h] = id;
+            int hp = h - h % 3 + (h % 3 + 2) % 3; /* the side into w */
+            if (m->FT[hp] == before) break;
+            h = g->twin[hp];
+        }
+    }
+    free(path);
+    free(prev);
+    return rc;
+}
+
 /* New vt indices: one per (old vt, label) pair; UVs copied (placeholders). */
 static int relabel_uvs(mesh *m, const int *label)
 {
@@ -250,6 +450,15 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
         atlas_chart_energy(&a, E);
         atlas_normalized_uv(&a, UV);
         int ok = chart_fill(&a, UV, fill);
+        double *fe = malloc(sizeof(double) * (size_t)m->nf);
+        double *farea = calloc((size_t)m->nf, sizeof(double));
+        double *ex = malloc(sizeof(double) * (size_t)m->nuv);
+        if (!fe || !farea || !ex) ok = 0;
+        if (ok) {
+            scaf_loop_face_energy(&a.loop, fe);
+            for (int i = 0; i < a.nf; i++) farea[a.loop.chart_face[i]] = a.loop.chart.weight[i];
+            vertex_excess(m, fe, farea, ex);
+        }
         /* the atlas's charts are the mesh's UV charts (pinched vt split
          * apart keep their faces): label faces by them */
         for (int f = 0; f < m->nf; f++) label[f] = a.chart[f];
@@ -259,6 +468,9 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             free(E);
             free(fill);
             free(cand);
+            free(fe);
+            free(farea);
+            free(ex);
             st = err_nomem(err, "chart refinement");
             break;
         }
@@ -277,8 +489,59 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             cand[ncand++] = (split_candidate){emptiest, 1, o->min_fill - fill[emptiest]};
         qsort(cand, (size_t)ncand, sizeof *cand, candidate_cmp);
         if (o->max_splits > 0 && ncand > o->max_splits) ncand = o->max_splits;
+        /* with slit_cones a distorted chart is cut open from its boundary
+         * to its worst interior vertex; otherwise (and when it has no
+         * interior vertex with excess) it is split in two */
+        int slits = 0;
+        if (o->slit_cones) {
+            vt_graph g;
+            memset(&g, 0, sizeof g);
+            int *FT = malloc(sizeof(int) * 3 * (size_t)m->nf), *src = NULL, nuv = m->nuv;
+            if (!FT || !vt_graph_build(m, &g, err)) {
+                free(FT);
+                free(fe);
+                free(farea);
+                free(ex);
+                free(E);
+                free(fill);
+                free(cand);
+                st = err_nomem(err, "chart refinement");
+                break;
+            }
+            memcpy(FT, m->FT, sizeof(int) * 3 * (size_t)m->nf);
+            for (int i = 0; i < ncand && st == SCAF_OK; i++) {
+                int c = cand[i].chart;
+                if (cand[i].reason != 0) continue;
+                int r = slit_chart(m, &g, label, c, ex, FT, &nuv, &src);
+                if (r < 0) st = err_nomem(err, "chart refinement");
+                if (r != 1) continue;
+                cand[i].reason = 2; /* done */
+                slits++;
+            }
+            if (st == SCAF_OK && slits > 0) {
+                double *UVn = realloc(m->UV, sizeof(double) * 2 * (size_t)nuv);
+                if (!UVn) st = err_nomem(err, "chart refinement");
+                else {
+                    m->UV = UVn;
+                    for (int t = m->nuv; t < nuv; t++) {
+                        m->UV[2 * t] = m->UV[2 * src[t]];
+                        m->UV[2 * t + 1] = m->UV[2 * src[t] + 1];
+                    }
+                    memcpy(m->FT, FT, sizeof(int) * 3 * (size_t)m->nf);
+                    m->nuv = nuv;
+                    info->distortion_slits += slits;
+                }
+            }
+            free(FT);
+            free(src);
+            vt_graph_free(&g);
+        }
+        free(fe);
+        free(farea);
+        free(ex);
         int split = 0;
-        for (int i = 0; i < ncand; i++) {
+        for (int i = 0; i < ncand && st == SCAF_OK; i++) {
+            if (cand[i].reason == 2) continue;
             int r = split_chart(m, label, cand[i].chart, nc + split, err);
             if (r < 0) {
                 st = err_nomem(err, "chart refinement");
@@ -292,8 +555,8 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
         free(E);
         free(fill);
         free(cand);
-        if (st != SCAF_OK || split == 0) break;
-        if (!relabel_uvs(m, label)) {
+        if (st != SCAF_OK || split + slits == 0) break;
+        if (split > 0 && !relabel_uvs(m, label)) {
             st = err_nomem(err, "chart refinement");
             break;
         }
