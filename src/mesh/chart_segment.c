@@ -25,8 +25,11 @@
 #define TINY_CHART 0.15
 /* Curvature is diffused over this fraction of sqrt(area): about the radius
  * of a chart holding 1/16 of the surface, the scale at which curvature
- * decides a chart's distortion (finer bumps flatten with little of it). */
+ * decides a chart's distortion (finer bumps flatten with little of it).
+ * Patches of half that side, CURVATURE_STEPS steps: a spread of
+ * (side / 2) sqrt(2 steps) = the radius. */
 #define CURVATURE_RADIUS 0.15
+#define CURVATURE_STEPS 8
 /* A chart gets at least this many faces on average. */
 #define MIN_FACES_PER_CHART 16
 
@@ -238,32 +241,51 @@ static int seg_geometry(seg_mesh *s, scaf_error *err)
     return 1;
 }
 
-/* Angle defects at vertices, diffused (mass-conserving) over about
- * CURVATURE_RADIUS sqrt(area) so that noise of either sign cancels; then
- * per component sum |K|, and per face the curvature density stretch of
- * the seeding metric. Returns 0 when out of memory. */
+/* A patch of the curvature measure: a cubic cell of a component. */
+typedef struct cell_key {
+    int comp, x, y, z, face;
+} cell_key;
+
+static int cell_cmp(const void *p, const void *q)
+{
+    const cell_key *a = p, *b = q;
+    if (a->comp != b->comp) return a->comp < b->comp ? -1 : 1;
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->y != b->y) return a->y < b->y ? -1 : 1;
+    if (a->z != b->z) return a->z < b->z ? -1 : 1;
+    return (a->face > b->face) - (a->face < b->face);
+}
+
+static int pair_cmp(const void *p, const void *q)
+{
+    const int *a = p, *b = q;
+    if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+    return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+/* Angle defects at interior vertices, summed over patches (cubic cells of
+ * side CURVATURE_RADIUS sqrt(area) / 2, per component: noise of either
+ * sign cancels inside a patch) and diffused, mass-conserving, over the
+ * patches' adjacency for CURVATURE_STEPS steps (a spread of about
+ * CURVATURE_RADIUS sqrt(area)). Then per component sum |K|, and per face
+ * the curvature-density stretch of the seeding metric. O(n log n) (one
+ * sort), whatever the resolution. Returns 0 when out of memory. */
 static int seg_curvature(seg_mesh *s)
 {
     int nv = s->nv, nf = s->nf;
     const int *F = s->F;
     const double *V = s->V;
     double *K = calloc((size_t)nv, sizeof(double));
-    double *K2 = calloc((size_t)nv, sizeof(double));
-    double *varea = calloc((size_t)nv, sizeof(double));
     unsigned char *on_boundary = calloc((size_t)nv, 1);
-    int *deg = calloc((size_t)nv + 1, sizeof(int));
-    int *adj = malloc(sizeof(int) * 6 * (size_t)nf + 1);
-    if (!K || !K2 || !varea || !on_boundary || !deg || !adj) {
-        free(K);
-        free(K2);
-        free(varea);
-        free(on_boundary);
-        free(deg);
-        free(adj);
-        return 0;
-    }
-    for (int v = 0; v < nv; v++) K[v] = 0.0;
-    double total_area = 0.0, total_side = 0.0;
+    unsigned char *used = calloc((size_t)nv, 1);
+    cell_key *key = malloc(sizeof *key * (size_t)nf);
+    int *patch = malloc(sizeof(int) * (size_t)nf);
+    int *pairs = malloc(sizeof(int) * 6 * (size_t)nf);
+    double *Kp = NULL, *Kq = NULL, *Ap = NULL;
+    int *pcomp = NULL, *deg = NULL, *start = NULL;
+    int ok = 0;
+    if (!K || !on_boundary || !used || !key || !patch || !pairs) goto out;
+    double total_area = 0.0, lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
     for (int f = 0; f < nf; f++) {
         total_area += s->area[f];
         for (int k = 0; k < 3; k++) {
@@ -276,94 +298,124 @@ static int seg_curvature(seg_mesh *s)
             if (cs > 1) cs = 1;
             if (cs < -1) cs = -1;
             K[a] -= acos(cs);
-            varea[a] += s->area[f] / 3.0;
-            total_side += s->side[3 * f + k];
+            used[a] = 1;
             if (s->nbr[3 * f + k] < 0) on_boundary[a] = on_boundary[b] = 1;
+            for (int i = 0; i < 3; i++)
+                if (V[3 * a + i] < lo[i]) lo[i] = V[3 * a + i];
         }
     }
-    /* vertex adjacency through face sides (each interior edge twice: the
-     * duplicate only weights the average, harmlessly) */
-    for (int h = 0; h < 3 * nf; h++) deg[F[h] + 1] += 2;
-    for (int v = 0; v < nv; v++) deg[v + 1] += deg[v];
-    int *fill = malloc(sizeof(int) * ((size_t)nv + 1));
-    if (!fill) {
-        free(K);
-        free(K2);
-        free(varea);
-        free(on_boundary);
-        free(deg);
-        free(adj);
-        return 0;
+    /* interior vertex: 2 pi minus its angles; the boundary carries none */
+    for (int v = 0; v < nv; v++) K[v] = used[v] && !on_boundary[v] ? K[v] + 2.0 * PI : 0.0;
+    double cell = 0.5 * CURVATURE_RADIUS * sqrt(total_area);
+    if (!(cell > 0)) cell = 1.0;
+    for (int f = 0; f < nf; f++) {
+        double c[3];
+        centroid(s, f, c);
+        double q[3];
+        for (int i = 0; i < 3; i++) {
+            q[i] = floor((c[i] - lo[i]) / cell);
+            if (q[i] > 1e9) q[i] = 1e9; /* far-out coordinates share a cell */
+            if (!(q[i] >= 0)) q[i] = 0;
+        }
+        key[f] = (cell_key){s->comp[f], (int)q[0], (int)q[1], (int)q[2], f};
     }
-    for (int v = 0; v < nv; v++) fill[v] = deg[v];
-    for (int h = 0; h < 3 * nf; h++) {
-        int a = F[h], b = F[half_edge_next(h)];
-        adj[fill[a]++] = b;
-        adj[fill[b]++] = a;
+    qsort(key, (size_t)nf, sizeof *key, cell_cmp);
+    int np = 0;
+    for (int i = 0; i < nf; i++) {
+        if (i > 0 &&
+            cell_cmp(&(cell_key){key[i].comp, key[i].x, key[i].y, key[i].z, 0},
+                     &(cell_key){key[i - 1].comp, key[i - 1].x, key[i - 1].y, key[i - 1].z, 0}) !=
+                0)
+            np++;
+        patch[key[i].face] = np;
     }
-    free(fill);
-    for (int v = 0; v < nv; v++) {
-        /* interior vertex: 2 pi minus its angles (the angle sum was
-         * subtracted above); the boundary carries no Gaussian curvature */
-        if (deg[v + 1] == deg[v] || on_boundary[v]) K[v] = 0.0;
-        else K[v] += 2.0 * PI;
-    }
-    double h = nf > 0 ? total_side / (3.0 * nf) : 1.0;
-    double r = CURVATURE_RADIUS * sqrt(total_area);
-    int steps = h > 0 ? (int)(2.0 * (r / h) * (r / h)) : 0;
-    if (steps > 2000) steps = 2000;
-    for (int t = 0; t < steps; t++) {
-        for (int v = 0; v < nv; v++) K2[v] = 0.5 * K[v];
-        for (int v = 0; v < nv; v++) {
-            int d = deg[v + 1] - deg[v];
-            if (d == 0) {
-                K2[v] += 0.5 * K[v];
-                continue;
+    np++;
+    Kp = calloc((size_t)np, sizeof(double));
+    Kq = calloc((size_t)np, sizeof(double));
+    Ap = calloc((size_t)np, sizeof(double));
+    pcomp = malloc(sizeof(int) * (size_t)np);
+    deg = calloc((size_t)np + 1, sizeof(int));
+    if (!Kp || !Kq || !Ap || !pcomp || !deg) goto out;
+    /* a vertex counts once, in the patch of its first face */
+    for (int v = 0; v < nv; v++) used[v] = 0;
+    for (int f = 0; f < nf; f++) {
+        Ap[patch[f]] += s->area[f];
+        pcomp[patch[f]] = s->comp[f];
+        for (int k = 0; k < 3; k++) {
+            int v = F[3 * f + k];
+            if (!used[v]) {
+                used[v] = 1;
+                Kp[patch[f]] += K[v];
             }
-            double share = 0.5 * K[v] / d;
-            for (int i = deg[v]; i < deg[v + 1]; i++) K2[adj[i]] += share;
         }
-        double *tmp = K;
-        K = K2;
-        K2 = tmp;
+    }
+    /* patch adjacency: distinct pairs of patches of neighbouring faces */
+    int npairs = 0;
+    for (int h = 0; h < 3 * nf; h++) {
+        int g = s->nbr[h];
+        if (g < 0 || patch[g] == patch[h / 3]) continue;
+        pairs[2 * npairs] = patch[h / 3];
+        pairs[2 * npairs + 1] = patch[g];
+        npairs++;
+    }
+    qsort(pairs, (size_t)npairs, 2 * sizeof(int), pair_cmp);
+    int nu = 0;
+    for (int i = 0; i < npairs; i++) {
+        if (nu > 0 && pairs[2 * i] == pairs[2 * (nu - 1)] &&
+            pairs[2 * i + 1] == pairs[2 * (nu - 1) + 1])
+            continue;
+        pairs[2 * nu] = pairs[2 * i];
+        pairs[2 * nu + 1] = pairs[2 * i + 1];
+        nu++;
+    }
+    for (int i = 0; i < nu; i++) deg[pairs[2 * i] + 1]++;
+    for (int p = 0; p < np; p++) deg[p + 1] += deg[p];
+    /* pairs are sorted by first patch: pairs[2 * deg[p] ..] are p's */
+    for (int t = 0; t < CURVATURE_STEPS; t++) {
+        for (int p = 0; p < np; p++) Kq[p] = deg[p + 1] > deg[p] ? 0.5 * Kp[p] : Kp[p];
+        for (int p = 0; p < np; p++) {
+            int d = deg[p + 1] - deg[p];
+            if (d == 0) continue;
+            double share = 0.5 * Kp[p] / d;
+            for (int i = deg[p]; i < deg[p + 1]; i++) Kq[pairs[2 * i + 1]] += share;
+        }
+        double *tmp = Kp;
+        Kp = Kq;
+        Kq = tmp;
     }
     for (int c = 0; c < s->ncomp; c++) {
         s->comp_area[c] = 0.0;
         s->comp_curv[c] = 0.0;
         s->comp_faces[c] = 0;
     }
-    /* a vertex counts once, in the component of its first face */
-    int *vcomp = deg; /* reuse: no longer needed */
-    for (int v = 0; v < nv; v++) vcomp[v] = -1;
     for (int f = 0; f < nf; f++) {
-        int c = s->comp[f];
-        s->comp_area[c] += s->area[f];
-        s->comp_faces[c]++;
-        double dens = 0.0;
-        for (int k = 0; k < 3; k++) {
-            int v = F[3 * f + k];
-            if (vcomp[v] < 0) {
-                vcomp[v] = c;
-                s->comp_curv[c] += fabs(K[v]);
-            }
-            if (varea[v] > 0) dens += fabs(K[v]) / varea[v] / 3.0;
-        }
-        s->weight[f] = dens;
+        s->comp_area[s->comp[f]] += s->area[f];
+        s->comp_faces[s->comp[f]]++;
     }
+    for (int p = 0; p < np; p++) s->comp_curv[pcomp[p]] += fabs(Kp[p]);
     /* stretch so that a chart of the seeding gets an equal share of
      * (area / component area + |K| / component |K|) */
     for (int f = 0; f < nf; f++) {
-        int c = s->comp[f];
+        int c = s->comp[f], p = patch[f];
+        double dens = Ap[p] > 0 ? fabs(Kp[p]) / Ap[p] : 0.0;
         double mean = s->comp_curv[c] > 0 ? s->comp_curv[c] / s->comp_area[c] : 1.0;
-        s->weight[f] = sqrt(1.0 + s->weight[f] / mean);
+        s->weight[f] = sqrt(1.0 + dens / mean);
     }
+    ok = 1;
+out:
     free(K);
-    free(K2);
-    free(varea);
     free(on_boundary);
+    free(used);
+    free(key);
+    free(patch);
+    free(pairs);
+    free(Kp);
+    free(Kq);
+    free(Ap);
+    free(pcomp);
     free(deg);
-    free(adj);
-    return 1;
+    free(start);
+    return ok;
 }
 
 /* ---- growing charts ---- */
