@@ -10,8 +10,9 @@
 #include "mesh/chart_segment.h"
 #include "mesh/uv_charts.h"
 
-/* A chart is split only when each half can have this many faces. */
-#define MIN_SPLIT_FACES 32
+/* A chart is split only when each half can have this many faces (small
+ * charts distort too: a 60-face chart of bunny settled at E 6.3). */
+#define MIN_SPLIT_FACES 8
 /* Settling caps of a measuring round: enough to rank charts, far below a
  * full run's (the final atlas settles to convergence). */
 #define ROUND_ITERATIONS 40
