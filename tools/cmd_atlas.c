@@ -16,13 +16,13 @@
 #include <unistd.h>
 
 #include "app/atlas.h"
-#include "app/atlas_charts.h"
 #include "app/atlas_output.h"
 #include "app/atlas_report.h"
 #include "app/stop_reason.h"
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
+#include "cli_seams.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
@@ -42,15 +42,19 @@ static void usage(FILE *o)
     fprintf(o,
             "usage: scaf atlas IN -o OUT.obj [options]\n"
             "\n"
-            "Builds a texture atlas: every chart (connected component of a mesh without vt,\n"
-            "or UV chart cut along the input's UV seams) is optimized together with all the\n"
+            "Builds a texture atlas: every chart (UV chart cut along the input's UV seams,\n"
+            "or an automatic chart, see --seams) is optimized together with all the\n"
             "others inside one scaffold (no two charts can ever overlap), re-placed rigidly\n"
             "by a raster packer (kept only when proved bijective), compacted by SCAF\n"
             "iterations with a contracting scaffold, and scaled uniformly into the unit UV\n"
             "square. The map is bijective after every iteration; the padding is kept by\n"
             "the line search and proved exactly (exact arithmetic on the written numbers)\n"
             "before the file is written.\n"
-            "Each chart must be a disk, possibly with holes.\n"
+            "Automatic charts (a mesh without vt, or vt that do not cut it into disks):\n"
+            "the surface is segmented (mesh/chart_segment) and every chart that is not a\n"
+            "disk, possibly with holes, is cut open (handle loops; a closed piece along a\n"
+            "tree of short seams through its points of highest curvature): any manifold\n"
+            "mesh, closed or open, of any genus, with or without vt (docs/seams.md).\n"
             "\n"
             "IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
             "gzip-compressed (.gz); an unknown extension is recognized by the content.\n"
@@ -58,6 +62,18 @@ static void usage(FILE *o)
             "\n"
             "options:\n"
             "  -o, --output FILE        output OBJ (required)\n"
+            "  --seams S                where the charts are cut: input (the vt seams; each\n"
+            "                           chart must be a disk, possibly with holes), auto\n"
+            "                           (automatic charts, the vt ignored), extend (the vt\n"
+            "                           seams plus cuts where a chart is not a disk);\n"
+            "                           default: input when the vt cut the mesh into disks,\n"
+            "                           else auto\n"
+            "  --max-distortion E       split every chart whose settled E exceeds E in two\n"
+            "                           along its normal cones, round by round (default 4.2\n"
+            "                           for automatic seams, off for input seams; 0: never)\n"
+            "  --split-charts           split the chart filling least of its least-area box\n"
+            "                           while below 0.45, one a round (default for automatic\n"
+            "                           seams; --no-split-charts: never)\n"
             "  --padding P              minimum distance between two charts, in units of the\n"
             "                           unit square (default K / R below: 4 / 1024 =\n"
             "                           0.00390625; --padding 0: charts only never overlap)\n"
@@ -81,12 +97,6 @@ static void usage(FILE *o)
             "  --lambda-ratio R         scaffold weight ratio (default 0.01)\n"
             "  --compact-lambda-ratio R scaffold weight ratio while compacting (default 1:\n"
             "                           fewer iterations; 0.3 keeps E lower, packs slower)\n"
-            "  --max-distortion E       split every chart whose settled E exceeds E (4.2 is a\n"
-            "                           good bound: a quarter sphere settles to 4.02) in two\n"
-            "                           along its normal cones, round by round (default:\n"
-            "                           off for input seams)\n"
-            "  --split-charts           also split charts that fill less than 0.45 of their\n"
-            "                           least-area box (a long snake packs badly)\n"
             "  --no-rotate              turn charts by multiples of 45 degrees only (default:\n"
             "                           also to their least-area box, and the layout to its\n"
             "                           smallest bounding square)\n"
@@ -161,11 +171,6 @@ static int atlas_main(int argc, char **argv)
     int quiet = 0, threads = 0; /* threads 0: the default (cli_threads_apply) */
     double resolution = 0.0, texels = -1.0, padding = -1.0;
     atlas_options opt = atlas_options_default();
-    /* chart splitting (app/atlas_charts): off unless asked for */
-    atlas_charts_options refine = atlas_charts_options_default();
-    refine.max_distortion = 0.0;
-    refine.min_fill = 0.0;
-    int refine_on = 0;
     cli_png png;
     cli_png_init(&png, 1);
     for (int i = 1; i < argc; i++) {
@@ -216,17 +221,21 @@ static int atlas_main(int argc, char **argv)
         } else if (!strcmp(a, "--compact-lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.compact_lambda_ratio)) BAD_VALUE();
+        } else if (!strcmp(a, "--max-distortion")) {
+            NEED_VALUE();
+            if (!cli_parse_double(v, &opt.max_distortion)) BAD_VALUE();
+            if (!(opt.max_distortion == 0.0 || opt.max_distortion > 4.0))
+                CLI_OUT_OF_RANGE("atlas", "> 4 (4 is an isometry), or 0: never split");
+        } else if (!strcmp(a, "--split-charts")) {
+            opt.split_charts = 1;
+        } else if (!strcmp(a, "--no-split-charts")) {
+            opt.split_charts = 0;
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
-        } else if (!strcmp(a, "--max-distortion")) {
+        } else if (!strcmp(a, "--seams")) {
             NEED_VALUE();
-            if (!cli_parse_double(v, &refine.max_distortion)) BAD_VALUE();
-            if (!(refine.max_distortion > 4.0)) CLI_OUT_OF_RANGE("atlas", "> 4 (4 is an isometry)");
-            refine_on = 1;
-        } else if (!strcmp(a, "--split-charts")) {
-            refine.min_fill = ATLAS_CHARTS_MIN_FILL;
-            refine_on = 1;
+            if (!cli_seams_parse(v, &opt.base.seams)) BAD_VALUE();
         } else if (!strcmp(a, "--no-rotate")) {
             opt.rotate = 0;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
@@ -253,12 +262,6 @@ static int atlas_main(int argc, char **argv)
         return EXIT_USAGE;
     }
     if (cli_png_finish("atlas", &png) < 0) return EXIT_USAGE;
-    if (refine_on && opt.init_input) {
-        fprintf(stderr,
-                "scaf atlas: --max-distortion and --split-charts change the charts, so "
-                "they cannot start from the input UVs (--init input)\n");
-        return EXIT_USAGE;
-    }
     /* The padding is --padding P, or K texels of an R-texel texture:
      * --padding-texels K (default 4) at --resolution R (default 1024), so
      * mip levels of a baked texture do not bleed between charts;
@@ -296,24 +299,18 @@ static int atlas_main(int argc, char **argv)
     atlas a;
     progress_state ps = {0};
     double *UV = NULL;
-    scaf_status st = SCAF_OK;
-    if (refine_on && mesh_has_uv(&m)) {
-        atlas_charts_info ri;
-        st = atlas_charts_refine(&m, &opt, &refine, &ri, &err);
-        if (st == SCAF_OK && !quiet)
-            fprintf(stderr,
-                    "scaf atlas: %s: charts %d -> %d (%d split and %d slit for distortion, %d "
-                    "split for packing)\n",
-                    in, ri.charts_before, ri.charts_after, ri.distortion_splits,
-                    ri.distortion_slits, ri.fill_splits);
-    }
-    if (st == SCAF_OK) st = atlas_init(&a, &m, &opt, &err);
+    seam_edges seams = {0};
+    scaf_status st = atlas_init(&a, &m, &opt, &err);
     if (st != SCAF_OK) {
         fprintf(stderr, "scaf atlas: %s: %s\n", in, err.message);
         mesh_free(&m);
         return exit_code_for(st);
     }
     double setup = timer_now() - t_start;
+    if (cli_seams_report("atlas", &m, a.Fw, a.seams_used, a.seams_why, a.ncharts, quiet, &seams)) {
+        rc = EXIT_NOMEM;
+        goto done;
+    }
     ps.live = !quiet && isatty(fileno(stderr));
     if (!quiet && !ps.live)
         fprintf(stderr, "scaf atlas: %s: %d faces, %d chart(s)%s, padding %g\n", in, m.nf,
@@ -387,6 +384,7 @@ static int atlas_main(int argc, char **argv)
     }
 done:
     cli_outputs_abort(&job.outs);
+    seam_edges_free(&seams);
     free(UV);
     free(ps.it);
     atlas_free(&a);

@@ -17,6 +17,7 @@
 
 #include "cli_args.h"
 #include "cli_mesh_io.h"
+#include "cli_seams.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "edit_api.h"
@@ -45,7 +46,8 @@ static void usage(FILE *o)
             "\n"
             "IN: OBJ (.obj), OFF (.off) or PLY (.ply), optionally gzip-compressed (.gz).\n"
             "With UVs (vt) that are bijective and keep the padding (a `scaf atlas` output)\n"
-            "the editor starts from them; otherwise from the atlas `scaf atlas` would make.\n"
+            "the editor starts from them; otherwise from the atlas `scaf atlas` would make\n"
+            "(on a closed mesh or one without vt: automatic charts, see --seams).\n"
             "\n"
             "options:\n"
             "  -o, --output FILE   where save writes (default: IN's name with -edited.obj,\n"
@@ -54,6 +56,11 @@ static void usage(FILE *o)
             "  --start S           auto (default: input when its UVs qualify, else atlas),\n"
             "                      input, atlas (`scaf atlas`'s result) or layout (charts\n"
             "                      as circles on a grid)\n"
+            "  --seams S           where the charts are cut: input (the vt seams), auto\n"
+            "                      (automatic charts, the vt ignored) or extend (the vt\n"
+            "                      seams plus cuts where a chart is not a disk); default:\n"
+            "                      input when the vt cut the mesh into disks, else auto,\n"
+            "                      as `scaf atlas`\n"
             "  --padding P         minimum distance between two charts in the unit square\n"
             "                      (default 4 / 1024 = 0.00390625)\n"
             "  --quiet             no messages but errors\n"
@@ -103,11 +110,12 @@ static int default_output(const char *in, char *out, size_t size)
 }
 
 /* The drag context on m: start as asked; auto tries the input first. */
-static int make_layout(const char *in, const mesh *m, const char *start, double padding, int quiet,
-                       scaf_drag_t **out)
+static int make_layout(const char *in, const mesh *m, const char *start, double padding,
+                       scaf_seams seams, int quiet, scaf_drag_t **out)
 {
     scaf_drag_options_t opt = scaf_drag_options_default();
     opt.padding = padding;
+    opt.seams = seams;
     int tries[2], ntries = 0;
     if (!strcmp(start, "auto")) {
         if (m->nuv > 0) tries[ntries++] = SCAF_DRAG_START_INPUT;
@@ -125,9 +133,11 @@ static int make_layout(const char *in, const mesh *m, const char *start, double 
             fprintf(stderr, "scaf edit: out of memory\n");
             return EXIT_NOMEM;
         }
+        /* the vt give the seams of every start (as `scaf atlas`), and
+         * the positions of the input start */
         int uvs = opt.start == SCAF_DRAG_START_INPUT;
-        st = scaf_drag_set_mesh(d, m->V, m->nv, m->F, m->nf, uvs ? m->UV : NULL, uvs ? m->nuv : 0,
-                                uvs ? m->FT : NULL);
+        st = scaf_drag_set_mesh(d, m->V, m->nv, m->F, m->nf, m->nuv ? m->UV : NULL, m->nuv,
+                                m->nuv ? m->FT : NULL);
         if (st == SCAF_OK) {
             if (!quiet)
                 fprintf(stderr, "scaf edit: %s: %d faces, %d charts, starting from %s\n", in, m->nf,
@@ -188,6 +198,7 @@ static int edit_main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *start = "auto";
     int port = 0, quiet = 0;
+    scaf_seams seams = SCAF_SEAMS_DEFAULT;
     double padding = DEFAULT_PADDING;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -208,6 +219,9 @@ static int edit_main(int argc, char **argv)
                 strcmp(v, "layout"))
                 CLI_BAD_VALUE("edit");
             start = v;
+        } else if (!strcmp(a, "--seams")) {
+            CLI_NEED_VALUE("edit");
+            if (!cli_seams_parse(v, &seams)) CLI_BAD_VALUE("edit");
         } else if (!strcmp(a, "--padding")) {
             CLI_NEED_VALUE("edit");
             if (!cli_parse_double(v, &padding)) CLI_BAD_VALUE("edit");
@@ -247,7 +261,7 @@ static int edit_main(int argc, char **argv)
     rc = cli_read_mesh("edit", in, quiet, &m, &rinfo);
     if (rc != EXIT_OK) return rc;
     scaf_drag_t *d = NULL;
-    rc = make_layout(in, &m, start, padding, quiet, &d);
+    rc = make_layout(in, &m, start, padding, seams, quiet, &d);
     if (rc != EXIT_OK) {
         mesh_free(&m);
         return rc;

@@ -20,6 +20,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
+#include "cli_seams.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
@@ -37,8 +38,12 @@ static void usage(FILE *o)
             "\n"
             "Computes a bijective, low-distortion UV map (no flipped triangle, no overlap)\n"
             "with SCAF and writes the mesh as OBJ with `vt` and `f v/vt` (the `v` lines are\n"
-            "kept). Charts: the connected components of a mesh without UVs, or the pieces of\n"
-            "the mesh cut along its UV seams; each must be a disk, possibly with holes.\n"
+            "kept). Charts: the pieces of the mesh cut along its UV seams, or the connected\n"
+            "components of a mesh without UVs. A chart that is not a disk (possibly with\n"
+            "holes) is cut open automatically (see --seams): handles along a shortest system\n"
+            "of loops, a closed piece along a tree of short seams through its points of\n"
+            "highest curvature, so any manifold mesh, closed or not, of any genus, gets one\n"
+            "chart per component (docs/seams.md).\n"
             "\n"
             "IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
             "gzip-compressed (.gz); an unknown extension is recognized by the content.\n"
@@ -67,13 +72,16 @@ static void usage(FILE *o)
             "                         too where the map presses its boundary against\n"
             "                         itself: camel_b); when one does not, the stop\n"
             "                         reason and the final criterion say how far it is\n"
-            "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n"
+            "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n");
+    fputs(CLI_SEAMS_HELP, o);
+    fprintf(o,
             "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
             "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01;\n"
             "                         a tenth of it in Newton iterations; arap: E_M + the\n"
             "                         3D area, since E_M is about 0 at its minimum)\n"
             "  --min-angle DEG        scaffold minimum angle (default 20)\n"
-            "  --quiet                no progress line\n"
+            "  --quiet                no progress line\n");
+    fprintf(o,
             "  --threads N            threads of the per-triangle work (assembly, line\n"
             "                         search) and of the solver's dense kernels (default:\n"
             "                         all cores, or OPENBLAS_NUM_THREADS when set); the\n"
@@ -211,6 +219,9 @@ static int parse_args(int argc, char **argv, param_args *o)
             else if (!strcmp(v, "harmonic")) o->opt.init = SCAF_INIT_HARMONIC;
             else if (!strcmp(v, "mvc")) o->opt.init = SCAF_INIT_MVC;
             else BAD_VALUE();
+        } else if (!strcmp(a, "--seams")) {
+            NEED_VALUE();
+            if (!cli_seams_parse(v, &o->opt.seams)) BAD_VALUE();
         } else if (!strcmp(a, "--box-scale")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &o->opt.box_scale)) BAD_VALUE();
@@ -287,6 +298,7 @@ static int param_main(int argc, char **argv)
     ps.criterion = INFINITY;
     double *UV = NULL;
     int *FT = NULL;
+    seam_edges seams = {0};
     if (!p) {
         fprintf(stderr, "scaf param: out of memory\n");
         mesh_free(&m);
@@ -309,6 +321,15 @@ static int param_main(int argc, char **argv)
     if (!quiet && !ps.live)
         fprintf(stderr, "scaf param: %s: %d faces, %d chart(s), initial E = %.6f\n", in, m.nf,
                 scaf_param_chart_count(p), e0);
+    {
+        param_map pm;
+        param_working_map(p, &pm);
+        if (cli_seams_report("param", &m, pm.FT, scaf_param_seams_used(p), param_seams_why(p),
+                             scaf_param_chart_count(p), quiet, &seams)) {
+            rc = EXIT_NOMEM;
+            goto done;
+        }
+    }
     if (cli_signal_report("param")) {
         rc = EXIT_CANCELLED;
         goto done;
@@ -419,6 +440,7 @@ static int param_main(int argc, char **argv)
     rc = cli_outputs_commit(&job.outs);
 done:
     cli_outputs_abort(&job.outs);
+    seam_edges_free(&seams);
     free(UV);
     free(FT);
     free(ps.it);

@@ -7,8 +7,10 @@
  * scaf_status and leaves a message readable by scaf_atlas_error.
  *
  * What it computes (`scaf atlas` on the command line): every chart
- * (connected component of a mesh without UVs, or piece cut along the UV
- * seams of a mesh with UVs) starts as a Tutte embedding on a circle of its
+ * (piece cut along the UV seams of a mesh with UVs; by default, when those
+ * do not cut it into disks or there are none, automatic charts: the
+ * segmentation of the surface, each cut into a disk, see scaf_seams)
+ * starts as a Tutte embedding on a circle of its
  * 3D area, the circles on a grid; all charts are optimized together inside
  * one scaffold (settle phase), re-placed rigidly by a raster packer when
  * that is proved valid and packs better, then packed tightly by SCAF
@@ -81,6 +83,11 @@ typedef struct scaf_atlas_options {
                                     (0.01, the paper's 1/100) */
     double compact_lambda_ratio; /* scaffold weight while compacting, > 0
                                     (1) */
+    scaf_seams seams;            /* seam source (SCAF_SEAMS_DEFAULT: the
+                                    input's UV seams when they cut the mesh
+                                    into disks, else automatic charts: the
+                                    surface segmented, each chart cut into
+                                    a disk; see scaf_seams). Added last */
 } scaf_atlas_options_t;
 
 /* The documented defaults above. */
@@ -153,6 +160,12 @@ SCAF_API scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int n
  * or SCAF_ERR_INTERNAL when the final layout fails its certificate (see
  * scaf_atlas_get_uv; a bug). */
 SCAF_API scaf_status scaf_atlas_run(scaf_atlas_t *a, scaf_atlas_progress_fn progress, void *user);
+
+/* The seam source scaf_atlas_set_mesh used: SCAF_SEAMS_INPUT,
+ * SCAF_SEAMS_AUTO or SCAF_SEAMS_EXTEND (SCAF_SEAMS_DEFAULT without a
+ * mesh). The seams themselves are the edges whose sides get different
+ * UV indices in scaf_atlas_get_uv's FT. */
+SCAF_API scaf_seams scaf_atlas_seams_used(const scaf_atlas_t *a);
 
 /* Number of charts; of output UV coordinates (one per chart corner fan:
  * a vertex on a seam gets one UV per chart); of finished iterations in

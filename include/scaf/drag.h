@@ -102,6 +102,10 @@ typedef struct scaf_drag_options {
     int undo_depth;        /* checkpoints kept by scaf_drag_checkpoint,
                               the oldest dropped beyond, in [1, 4096]
                               (64) */
+    scaf_seams seams;      /* seam source of the atlas (see scaf_seams;
+                              SCAF_SEAMS_DEFAULT: the input's seams when
+                              they cut the mesh into disks, else automatic
+                              charts). Added last */
 } scaf_drag_options_t;
 
 /* The documented defaults above. */

@@ -76,7 +76,10 @@ SCAF_API int scaf_set_threads(int n);
  * Charts: a mesh without UVs has one chart per connected component; a mesh
  * with UVs (UV + FT) has one chart per piece of the mesh cut along its UV
  * seams (edges whose two sides use different UV indices). Every chart must
- * be a manifold, orientable disk, possibly with holes. Each chart starts
+ * be a manifold, orientable disk, possibly with holes: by default
+ * (options.seams, scaf_seams) a component or UV chart that is not (closed,
+ * with handles) is cut open automatically, so any manifold mesh goes
+ * through; the returned FT then carries the new seams. Each chart starts
  * as a mean-value (or Tutte, or harmonic) embedding on a circle of the
  * chart's 3D area;
  * several charts start on a grid of circles that do not touch. Then the
@@ -127,6 +130,27 @@ typedef enum scaf_solver {
     SCAF_SOLVER_NEWTON    /* projected Newton from the first iteration */
 } scaf_solver;
 
+/* Where the charts' seams come from (see docs/seams.md). */
+typedef enum scaf_seams {
+    SCAF_SEAMS_DEFAULT = 0, /* the input's UV seams when the mesh has UVs
+                               and they cut it into disks (possibly with
+                               holes); automatic seams otherwise (no UVs,
+                               or a UV chart closed, with handles or not a
+                               manifold) */
+    SCAF_SEAMS_INPUT,       /* the input's UV seams (or the connected
+                               components without UVs); a chart that is
+                               not a disk is an error, as before */
+    SCAF_SEAMS_AUTO,        /* automatic seams, the input's UVs ignored:
+                               the parametrization cuts each component
+                               into one disk (handle loops, and on a
+                               closed piece a tree of short seams through
+                               its points of highest curvature); the atlas
+                               segments the surface into charts first */
+    SCAF_SEAMS_EXTEND       /* the input's UV seams kept, and cuts added
+                               where a UV chart is not a disk; without UVs
+                               as SCAF_SEAMS_AUTO */
+} scaf_seams;
+
 typedef struct scaf_options {
     scaf_energy energy;      /* mesh distortion energy
                                 (SCAF_ENERGY_SYMMETRIC_DIRICHLET) */
@@ -170,6 +194,9 @@ typedef struct scaf_options {
     double step_fraction;    /* line search starts at this fraction of the
                                 largest flip-free step (0.8) */
     scaf_solver solver;      /* step computation (SCAF_SOLVER_AUTO) */
+    scaf_seams seams;        /* seam source (SCAF_SEAMS_DEFAULT); added
+                                last: the layout of the fields above is
+                                unchanged */
 } scaf_options_t;
 
 /* The documented defaults above. */
@@ -325,6 +352,10 @@ SCAF_API double scaf_param_energy(const scaf_param_t *p);
 
 /* Number of charts, of finished iterations. */
 SCAF_API int scaf_param_chart_count(const scaf_param_t *p);
+/* The seam source scaf_param_set_mesh used: SCAF_SEAMS_INPUT (the input's
+ * UV seams, or the components), SCAF_SEAMS_AUTO or SCAF_SEAMS_EXTEND;
+ * SCAF_SEAMS_DEFAULT without a mesh. */
+SCAF_API scaf_seams scaf_param_seams_used(const scaf_param_t *p);
 SCAF_API int scaf_param_iterations(const scaf_param_t *p);
 
 /* Number of output UV coordinates: one per (chart, vertex) pair. */

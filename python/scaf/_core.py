@@ -88,6 +88,8 @@ def _fill(struct, options):
             value = _enum_value(value, _lib.SOLVERS, "solver")
         elif key == "start":
             value = _enum_value(value, _lib.DRAG_STARTS, "start")
+        elif key == "seams":
+            value = _enum_value(value, _lib.SEAMS, "seams")
         elif key in _BOOL_FIELDS:
             value = 1 if value else 0
         ctype = dict(struct._fields_)[key]
@@ -117,6 +119,8 @@ def _as_dict(struct):
             v = _enum_name(v, _lib.SOLVERS)
         elif key == "start":
             v = _enum_name(v, _lib.DRAG_STARTS)
+        elif key == "seams":
+            v = _enum_name(v, _lib.SEAMS)
         elif key in _BOOL_FIELDS:
             v = bool(v)
         out[key] = v
@@ -267,7 +271,10 @@ class ParamResult:
     stopped, "iteration_limit", "converged" (the estimated relative
     distance to the minimum below the tolerance), "zero_step" (no step
     lowers the energy any more: converged, also with tolerance 0), "cancelled",
-    "error", or "not_run" before a run."""
+    "error", or "not_run" before a run; seams: where the charts were cut,
+    "input" (the UV seams, or the components), "auto" (automatic seams) or
+    "extend" (the UV seams plus cuts): the seams are the edges whose two
+    sides have different indices in ft."""
 
     uv: Any
     ft: Any
@@ -275,6 +282,7 @@ class ParamResult:
     iterations: int
     chart_count: int
     stop_reason: str = "not_run"
+    seams: str = "input"
 
     def __repr__(self):
         return "<scaf.ParamResult uv %s, %d chart(s), energy %.6g after %d iteration(s), stop reason %s>" % (
@@ -293,7 +301,8 @@ class AtlasResult:
     {"settle": ..., "compact": ...} ("iteration_limit", "converged",
     "zero_step", "distortion_limit", "packing_stalled", "cancelled",
     "error", "not_run" for a phase that did not take place); stop_reason:
-    the reason of the last phase that ran."""
+    the reason of the last phase that ran; seams: "input", "auto" or
+    "extend" (see ParamResult)."""
 
     uv: Any
     ft: Any
@@ -306,6 +315,7 @@ class AtlasResult:
     padding: float
     iterations: Dict[str, int] = field(default_factory=dict)
     stop_reasons: Dict[str, str] = field(default_factory=dict)
+    seams: str = "input"
 
     @property
     def stop_reason(self):
@@ -473,6 +483,13 @@ class Param(_Handle):
             return lib.scaf_param_chart_count(h)
 
     @property
+    def seams_used(self):
+        """The seam source set_mesh used: "input" (the UV seams, or the
+        components), "auto" or "extend"."""
+        with self._use() as h:
+            return _enum_name(lib.scaf_param_seams_used(h), _lib.SEAMS)
+
+    @property
     def iterations(self):
         with self._use() as h:
             return lib.scaf_param_iterations(h)
@@ -516,7 +533,8 @@ class Param(_Handle):
     def result(self):
         """The current map and its numbers as a ParamResult."""
         uv, ft = self.get_uv()
-        return ParamResult(uv, ft, self.energy, self.iterations, self.chart_count, self.stop_reason)
+        return ParamResult(uv, ft, self.energy, self.iterations, self.chart_count, self.stop_reason,
+                           self.seams_used)
 
 
 class Atlas(_Handle):
@@ -550,6 +568,12 @@ class Atlas(_Handle):
     def chart_count(self):
         with self._use() as h:
             return lib.scaf_atlas_chart_count(h)
+
+    @property
+    def seams_used(self):
+        """The seam source set_mesh used: "input", "auto" or "extend"."""
+        with self._use() as h:
+            return _enum_name(lib.scaf_atlas_seams_used(h), _lib.SEAMS)
 
     @property
     def uv_count(self):
@@ -620,7 +644,7 @@ class Atlas(_Handle):
         uv, ft, chart = self.get_uv()
         return AtlasResult(uv, ft, chart, self.chart_count, self.chart_distortion(), self.energy,
                            self.efficiency, self.min_gap, self._mesh_opts.padding, self.iterations,
-                           self.stop_reasons)
+                           self.stop_reasons, self.seams_used)
 
 
 # --- one-call functions ----------------------------------------------------------
@@ -632,7 +656,8 @@ def param(V, F, UV=None, FT=None, *, energy="symmetric_dirichlet", init="mvc", i
     V #V x 3 positions, F #F x 3 vertex indices (counter-clockwise); with
     UV #UV x 2 and FT #F x 3 the charts are the pieces cut along the UV
     seams (the UV values are not used), else one chart per connected
-    component. energy: "symmetric_dirichlet" | "arap" | "conformal";
+    component; seams="default" (cut open automatically what is not a disk:
+    a closed mesh, handles), "input", "auto" or "extend" (see scaf_seams). energy: "symmetric_dirichlet" | "arap" | "conformal";
     init: "mvc" | "tutte" | "harmonic"; iterations: cap (default: the C default,
     50); more options as keywords (see Param). progress(IterationInfo)
     after each iteration, true to cancel. Returns a ParamResult; raises

@@ -46,6 +46,7 @@ PHASES = ("assembly", "analysis", "factorization", "solve", "line_search", "scaf
 PHASE_COUNT = len(PHASES)  # SCAF_PHASE_COUNT
 ATLAS_PHASES = ("settle", "compact")  # SCAF_ATLAS_SETTLE, SCAF_ATLAS_COMPACT
 DRAG_STARTS = {"layout": 0, "input": 1, "atlas": 2}  # scaf_drag_start
+SEAMS = {"default": 0, "input": 1, "auto": 2, "extend": 3}  # scaf_seams
 
 c_enum = ctypes.c_int
 
@@ -65,6 +66,7 @@ class Options(ctypes.Structure):
         ("min_angle_deg", ctypes.c_double),
         ("step_fraction", ctypes.c_double),
         ("solver", c_enum),
+        ("seams", c_enum),
     ]
 
 
@@ -106,6 +108,7 @@ class AtlasOptions(ctypes.Structure):
         ("box_scale", ctypes.c_double),
         ("lambda_ratio", ctypes.c_double),
         ("compact_lambda_ratio", ctypes.c_double),
+        ("seams", c_enum),
     ]
 
 
@@ -135,6 +138,7 @@ class DragOptions(ctypes.Structure):
         ("box_scale", ctypes.c_double),
         ("lambda_ratio", ctypes.c_double),
         ("undo_depth", ctypes.c_int),
+        ("seams", c_enum),
     ]
 
 
@@ -182,6 +186,7 @@ SIGNATURES = {
     "scaf_param_run": (c_enum, [_P, _int, PARAM_PROGRESS, ctypes.c_void_p]),
     "scaf_param_energy": (ctypes.c_double, [_P]),
     "scaf_param_chart_count": (_int, [_P]),
+    "scaf_param_seams_used": (_int, [_P]),
     "scaf_param_iterations": (_int, [_P]),
     "scaf_param_stop_reason": (c_enum, [_P]),
     "scaf_param_uv_count": (_int, [_P]),
@@ -195,6 +200,7 @@ SIGNATURES = {
     "scaf_atlas_set_mesh": (c_enum, [_P, _D, _int, _I, _int, _D, _int, _I]),
     "scaf_atlas_run": (c_enum, [_P, ATLAS_PROGRESS, ctypes.c_void_p]),
     "scaf_atlas_chart_count": (_int, [_P]),
+    "scaf_atlas_seams_used": (_int, [_P]),
     "scaf_atlas_uv_count": (_int, [_P]),
     "scaf_atlas_iterations": (_int, [_P, c_enum]),
     "scaf_atlas_stop_reason": (c_enum, [_P, c_enum]),

@@ -32,6 +32,7 @@ int main(void)
     FIELD(scaf_options_t, min_angle_deg);
     FIELD(scaf_options_t, step_fraction);
     FIELD(scaf_options_t, solver);
+    FIELD(scaf_options_t, seams);
 
     SIZE(scaf_iteration_info_t);
     FIELD(scaf_iteration_info_t, iteration);
@@ -63,6 +64,7 @@ int main(void)
     FIELD(scaf_atlas_options_t, box_scale);
     FIELD(scaf_atlas_options_t, lambda_ratio);
     FIELD(scaf_atlas_options_t, compact_lambda_ratio);
+    FIELD(scaf_atlas_options_t, seams);
 
     SIZE(scaf_atlas_iteration_info_t);
     FIELD(scaf_atlas_iteration_info_t, phase);
@@ -82,6 +84,7 @@ int main(void)
     FIELD(scaf_drag_options_t, box_scale);
     FIELD(scaf_drag_options_t, lambda_ratio);
     FIELD(scaf_drag_options_t, undo_depth);
+    FIELD(scaf_drag_options_t, seams);
 
     SIZE(scaf_drag_chart_info_t);
     FIELD(scaf_drag_chart_info_t, faces);

@@ -531,10 +531,11 @@ class InputTest(unittest.TestCase):
         self.assertGreater(min(signed_areas(r.uv, r.ft)), 0)
 
     def test_closed_chart_is_a_mesh_error_naming_the_chart(self):
+        # with the components as they are (seams="input")
         V, F, _, _ = scaf.read_obj(gen("tetrahedron"))
         for fn in (scaf.param, scaf.atlas):
             with self.assertRaises(scaf.MeshError) as cm:
-                fn(V, F)
+                fn(V, F, seams="input")
             self.assertIn("chart 0", str(cm.exception))
             self.assertIn("closed", str(cm.exception))
             self.assertEqual(cm.exception.status, 4)
@@ -542,8 +543,21 @@ class InputTest(unittest.TestCase):
         V2 = rows(self.V) + [[x + 10, y, z] for x, y, z in rows(V)]
         F2 = rows(self.F) + [[a + 4, b + 4, c + 4] for a, b, c in rows(F)]
         with self.assertRaises(scaf.MeshError) as cm:
-            scaf.atlas(V2, F2)
+            scaf.atlas(V2, F2, seams="input")
         self.assertIn("chart 1", str(cm.exception))
+
+    def test_closed_mesh_without_uvs_is_cut_by_default(self):
+        # scaf.atlas(V, F) and scaf.param(V, F) on a closed mesh, no UVs
+        V, F, _, _ = scaf.read_obj(gen("icosphere", 3))
+        p = scaf.param(V, F, iterations=5)
+        self.assertEqual(p.seams, "auto")
+        self.assertEqual(p.chart_count, 1)
+        self.assertGreater(min(signed_areas(p.uv, p.ft)), 0)
+        self.assertGreater(len(p.uv), len(rows(V)))  # seam vertices split
+        a = scaf.atlas(V, F, settle_iterations=5, compact_iterations=3)
+        self.assertEqual(a.seams, "auto")
+        self.assertGreater(min(signed_areas(a.uv, a.ft)), 0)
+        self.assertEqual(len(a.chart), len(rows(F)))
 
     def test_read_obj_errors(self):
         d = tempfile.mkdtemp(prefix="py-", dir=TMP)
@@ -621,7 +635,8 @@ class AtlasTest(unittest.TestCase):
         V, F, _, _ = scaf.read_obj(gen("hemisphere", 4))
         V2 = rows(V) + [[x + 5.0, y, z] for x, y, z in rows(V)]
         F2 = rows(F) + [[a + len(V), b + len(V), c + len(V)] for a, b, c in rows(F)]
-        r = scaf.atlas(V2, F2, padding=0.0, compact_iterations=3)
+        # seams="input": the components are the charts (automatic seams would segment them)
+        r = scaf.atlas(V2, F2, padding=0.0, compact_iterations=3, seams="input")
         self.assertEqual(r.chart_count, 2)
         self.assertEqual(rows(r.chart), [0] * len(F) + [1] * len(F))
         self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
@@ -695,7 +710,8 @@ class AtlasTest(unittest.TestCase):
 
 @unittest.skipIf(np is None, "numpy absent: the whole suite already runs without it")
 class DragTest(unittest.TestCase):
-    """scaf.Drag on two hemispheres side by side (two charts, no UVs)."""
+    """scaf.Drag on two hemispheres side by side (two charts, no UVs: seams="input"
+    keeps the components as charts; automatic seams would segment them)."""
 
     @classmethod
     def setUpClass(cls):
@@ -716,7 +732,7 @@ class DragTest(unittest.TestCase):
         self.assertAlmostEqual(sum(signed_areas(out.uv, out.ft)), out.efficiency, delta=1e-9)
 
     def test_drag_chart_onto_the_other(self):
-        with scaf.Drag() as d:
+        with scaf.Drag(seams="input") as d:
             d.set_mesh(self.V, self.F)
             self.assertEqual((d.chart_count, d.face_count), (2, len(self.F)))
             if np is not None:
@@ -737,7 +753,7 @@ class DragTest(unittest.TestCase):
             self.assertGreater(math.dist(d.chart_info(1).centroid, c1), 0.0)  # pushed
 
     def test_vertex_rotation_cancel_undo(self):
-        with scaf.Drag() as d:
+        with scaf.Drag(seams="input") as d:
             d.set_mesh(self.V, self.F)
             before = rows(d.uv)
             d.checkpoint()
@@ -775,7 +791,7 @@ class DragTest(unittest.TestCase):
             self.assertAlmostEqual(mean, d.energy, delta=1e-9 * d.energy)
 
     def test_errors(self):
-        d = scaf.Drag(start="input")
+        d = scaf.Drag(start="input", seams="input")
         self.assertEqual(d.options["start"], "input")
         with self.assertRaises(scaf.UsageError) as cm:
             d.set_mesh(self.V, self.F)  # no UVs to start from

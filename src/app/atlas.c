@@ -8,6 +8,8 @@
  * chart pairs stiffened) and `feasible` (the padding constraint).
  */
 #include "app/atlas.h"
+#include "app/atlas_charts.h"
+#include "app/seam_source.h"
 
 #include <limits.h>
 #include <math.h>
@@ -59,6 +61,8 @@ atlas_options atlas_options_default(void)
     o.pack_gap_factor = 2.0;
     o.pack_picks = 2;
     o.compact_lambda_ratio = 1.0;
+    o.max_distortion = -1.0;
+    o.split_charts = -1;
     return o;
 }
 
@@ -352,6 +356,11 @@ scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
         bad = "progress_tolerance must be a finite number >= 0";
     else if (o->progress_window < 1 || o->progress_window > 64)
         bad = "progress_window must be in [1, 64]";
+    else if (!(o->max_distortion < 0.0 || o->max_distortion == 0.0 ||
+               (o->max_distortion > 4.0 && isfinite(o->max_distortion))))
+        bad = "max_distortion must be > 4 (4 is an isometry), 0 (never split) or < 0 (default)";
+    else if (o->split_charts < -1 || o->split_charts > 1)
+        bad = "split_charts must be -1 (default), 0 or 1";
     /* the output's padding is certified exactly (geom/chart_gap), which
      * takes paddings of at least 2^-200 */
     else if (!(o->padding == 0.0 || (o->padding >= CHART_GAP_EXACT_MIN && o->padding < 0.5))) {
@@ -375,14 +384,46 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         return err_set(err, SCAF_ERR_USAGE, "%s", msg);
     if (a->opt.init_input && !mesh_has_uv(m))
         return err_set(err, SCAF_ERR_USAGE, "--init input: the mesh has no UVs (vt) to start from");
+    /* the seams (app/seam_source): the input's, or automatic charts cut
+     * into disks; the rest runs on them as if the input had them */
+    seam_plan plan;
+    st = seam_plan_make(m, a->opt.base.seams, 1, &plan, err);
+    if (st != SCAF_OK) return st;
+    a->seams_used = plan.used;
+    a->seam_segments = plan.segments;
+    snprintf(a->seams_why, sizeof a->seams_why, "%s", plan.why);
+    mesh planned = *m;
+    if (plan.changed) {
+        planned.nuv = plan.nuv;
+        planned.UV = plan.UV;
+        planned.FT = plan.FT;
+    }
+    m = &planned;
+    /* automatic charts split where they distort or pack badly (app/atlas_charts) */
+    st = atlas_charts_apply(&planned, &a->opt, &plan, err);
+    if (st != SCAF_OK) {
+        seam_plan_free(&plan);
+        return st;
+    }
+    if (a->opt.init_input && plan.used != SCAF_SEAMS_INPUT) {
+        seam_plan_free(&plan);
+        return err_set(err, SCAF_ERR_MESH,
+                       "--init input: the input's seams do not cut the mesh into disks (%s); "
+                       "start from the default instead",
+                       a->seams_why);
+    }
     if (a->opt.init_input) {
         /* the verdict of `scaf check` on the same data, with its counts */
         bij_report r;
         st = mesh_uv_verdict(m, &r, err);
-        if (st != SCAF_OK) return st;
+        if (st != SCAF_OK) {
+            seam_plan_free(&plan);
+            return st;
+        }
         if (!r.bijective) {
             char defects[320];
             bij_report_defects(&r, defects, sizeof defects);
+            seam_plan_free(&plan);
             return err_set(err, SCAF_ERR_MESH,
                            "--init input: the input UVs are not bijective (as scaf check reports: "
                            "%s); "
@@ -411,6 +452,7 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
             memcpy(UV2 + 2 * (size_t)i, m->UV + 2 * (size_t)map[i], sizeof(double) * 2);
     }
     scaf_options_t po = a->opt.base;
+    po.seams = SCAF_SEAMS_INPUT; /* decided above */
     p = scaf_param_new(&po);
     if (!p) {
         st = err_nomem(err, "atlas");
@@ -549,6 +591,7 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
     a->loop.hooks.restrict_dir = freeze_close;
 
 done:
+    seam_plan_free(&plan);
     scaf_param_destroy(p);
     free(FT2);
     free(map);

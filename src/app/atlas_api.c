@@ -56,6 +56,7 @@ scaf_atlas_options_t scaf_atlas_options_default(void)
     o.box_scale = in.base.box_scale;
     o.lambda_ratio = in.base.lambda_ratio;
     o.compact_lambda_ratio = in.compact_lambda_ratio;
+    o.seams = in.base.seams;
     return o;
 }
 
@@ -75,6 +76,7 @@ static atlas_options to_internal(const scaf_atlas_options_t *o)
     in.base.box_scale = o->box_scale;
     in.base.lambda_ratio = o->lambda_ratio;
     in.compact_lambda_ratio = o->compact_lambda_ratio;
+    in.base.seams = o->seams;
     return in;
 }
 
@@ -173,6 +175,11 @@ scaf_status scaf_atlas_set_mesh(scaf_atlas_t *a, const double *V, int nv, const 
     }
     a->has_mesh = 1;
     return SCAF_OK;
+}
+
+scaf_seams scaf_atlas_seams_used(const scaf_atlas_t *a)
+{
+    return a && a->has_mesh ? a->at.seams_used : SCAF_SEAMS_DEFAULT;
 }
 
 /* ---- verified output ----------------------------------------------------------- */

@@ -566,3 +566,48 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
     free(label);
     return st;
 }
+
+scaf_status atlas_charts_apply(mesh *planned, const atlas_options *opt, seam_plan *plan,
+                               scaf_error *err)
+{
+    int automatic = plan->used != SCAF_SEAMS_INPUT;
+    atlas_charts_options o = atlas_charts_options_default();
+    o.max_distortion = opt->max_distortion < 0.0 ? (automatic ? ATLAS_CHARTS_MAX_DISTORTION : 0.0)
+                                                 : opt->max_distortion;
+    int split = opt->split_charts < 0 ? automatic : opt->split_charts;
+    o.min_fill = split ? ATLAS_CHARTS_MIN_FILL : 0.0;
+    if ((o.max_distortion <= 0.0 && o.min_fill <= 0.0) || opt->init_input || !mesh_has_uv(planned))
+        return SCAF_OK;
+    mesh work = *planned;
+    work.FT = malloc(sizeof(int) * 3 * (size_t)planned->nf);
+    work.UV = malloc(sizeof(double) * 2 * (size_t)(planned->nuv > 0 ? planned->nuv : 1));
+    if (!work.FT || !work.UV) {
+        free(work.FT);
+        free(work.UV);
+        return err_nomem(err, "chart refinement");
+    }
+    memcpy(work.FT, planned->FT, sizeof(int) * 3 * (size_t)planned->nf);
+    memcpy(work.UV, planned->UV, sizeof(double) * 2 * (size_t)planned->nuv);
+    /* the measuring runs take these seams as they are and split nothing */
+    atlas_options inner = *opt;
+    inner.base.seams = SCAF_SEAMS_INPUT;
+    inner.max_distortion = 0.0;
+    inner.split_charts = 0;
+    atlas_charts_info info;
+    scaf_status st = atlas_charts_refine(&work, &inner, &o, &info, err);
+    if (st != SCAF_OK || work.nuv == planned->nuv) {
+        free(work.FT);
+        free(work.UV);
+        return st;
+    }
+    free(plan->FT);
+    free(plan->UV);
+    plan->FT = work.FT;
+    plan->UV = work.UV;
+    plan->nuv = work.nuv;
+    plan->changed = 1;
+    planned->FT = work.FT;
+    planned->UV = work.UV;
+    planned->nuv = work.nuv;
+    return SCAF_OK;
+}

@@ -28,6 +28,7 @@
 #define SCAF_APP_ATLAS_CHARTS_H
 
 #include "app/atlas.h"
+#include "app/seam_source.h"
 #include "base/error.h"
 #include "mesh/mesh.h"
 
@@ -61,5 +62,13 @@ atlas_charts_options atlas_charts_options_default(void);
  * options of the settling (energy, threads, ...). info may be NULL. */
 scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_charts_options *o,
                                 atlas_charts_info *info, scaf_error *err);
+
+/* The hook of atlas_init: with the atlas options' max_distortion and
+ * split_charts (defaults: both for automatic seams, neither for input
+ * seams, nothing with init_input), refine the charts of the planned mesh
+ * (the input with the seam plan's UV topology) and hand the new seams to
+ * the plan (which then owns them) and to planned. */
+scaf_status atlas_charts_apply(mesh *planned, const atlas_options *opt, seam_plan *plan,
+                               scaf_error *err);
 
 #endif /* SCAF_APP_ATLAS_CHARTS_H */

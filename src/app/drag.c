@@ -81,6 +81,7 @@ static atlas_options to_atlas(const scaf_drag_options_t *o)
     in.base.solver = o->solver;
     in.base.box_scale = o->box_scale;
     in.base.lambda_ratio = o->lambda_ratio;
+    in.base.seams = o->seams;
     return in;
 }
 
@@ -94,6 +95,9 @@ static scaf_status options_check(const scaf_drag_options_t *o, scaf_error *err)
         return err_set(err, SCAF_ERR_USAGE,
                        "invalid drag option: weight_ratio %g must be a finite number >= 0",
                        o->weight_ratio);
+    if ((int)o->seams < 0 || o->seams > SCAF_SEAMS_EXTEND)
+        return err_set(err, SCAF_ERR_USAGE, "invalid drag option: seams %d is not a scaf_seams",
+                       (int)o->seams);
     if (o->solver != SCAF_SOLVER_AUTO && o->solver != SCAF_SOLVER_SLIM &&
         o->solver != SCAF_SOLVER_NEWTON)
         return err_set(err, SCAF_ERR_USAGE, "invalid drag option: solver %d is not a scaf_solver",

@@ -9,6 +9,7 @@
  * stopping rules. Errors leave a message readable by scaf_param_error.
  */
 #include "app/param.h"
+#include "app/seam_source.h"
 #include "app/uv_fans.h"
 
 #include <float.h>
@@ -47,6 +48,8 @@ struct scaf_param {
     scaf_stop_reason stop;   /* why the last run stopped */
     opt_handle_term handles; /* soft positional constraints (scaf_param_set_handles) */
     int handles_added;       /* the term is in the loop */
+    scaf_seams seams_used;   /* the seam source set_mesh used */
+    char seams_why[200];     /* and why (app/seam_source) */
 };
 
 scaf_options_t scaf_options_default(void)
@@ -128,6 +131,8 @@ scaf_status param_options_check(const scaf_options_t *o, char *msg, size_t size)
         bad = "step_fraction must be in (0, 1)";
     else if ((int)o->solver < 0 || o->solver > SCAF_SOLVER_NEWTON)
         bad = "solver is not auto, slim or newton";
+    else if ((int)o->seams < 0 || o->seams > SCAF_SEAMS_EXTEND)
+        bad = "seams is not default, input, auto or extend";
     if (!bad) return SCAF_OK;
     if (msg && size) snprintf(msg, size, "invalid option: %s", bad);
     return SCAF_ERR_USAGE;
@@ -168,6 +173,7 @@ static void drop_mesh(scaf_param_t *p)
     p->has_mesh = 0;
     p->nf = p->nw = p->ncharts = 0;
     p->stop = SCAF_STOP_NONE;
+    p->seams_used = SCAF_SEAMS_DEFAULT;
 }
 
 void scaf_param_destroy(scaf_param_t *p)
@@ -198,6 +204,8 @@ int param_face_energy(const scaf_param_t *p, double *E)
     scaf_loop_face_energy(&p->loop, E);
     return 1;
 }
+
+const char *param_seams_why(const scaf_param_t *p) { return p && p->has_mesh ? p->seams_why : ""; }
 
 int param_last_scaffold(const scaf_param_t *p, scaffold_view *v)
 {
@@ -470,6 +478,16 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     memset(&ch, 0, sizeof ch);
     int *FTs = NULL, *widx = NULL, *local = NULL, nw = 0;
     double *W3 = NULL, *uv = NULL, *radius = NULL;
+    /* the seams: the input's, or cut automatically where a chart is not
+     * a disk (app/seam_source); the UV values are not used here */
+    seam_plan plan;
+    st = seam_plan_make(&m, p->opt.seams, 0, &plan, err);
+    if (st != SCAF_OK) goto fail;
+    if (plan.changed) {
+        m.nuv = plan.nuv;
+        m.UV = plan.UV;
+        m.FT = plan.FT;
+    }
     st = split_fans(&m, &FTs, err);
     if (st == SCAF_OK) st = find_charts(&m, V_in, p->pos_exp, &ch, err);
     if (st != SCAF_OK) goto fail;
@@ -506,6 +524,8 @@ scaf_status scaf_param_set_mesh(scaf_param_t *p, const double *V, int nv, const 
     st = scaf_loop_init(&p->loop, nw, W3, nf, p->Fw, uv, &lo, err);
     if (st != SCAF_OK) goto fail;
     p->has_mesh = 1;
+    p->seams_used = plan.used;
+    snprintf(p->seams_why, sizeof p->seams_why, "%s", plan.why);
     goto done;
 fail:
     free(p->Fw);
@@ -513,6 +533,7 @@ fail:
     p->nf = p->nw = p->ncharts = 0;
     if (err->code == SCAF_OK) err->code = st;
 done:
+    seam_plan_free(&plan);
     mesh_charts_free(&ch);
     free(widx);
     free(local);
@@ -617,6 +638,10 @@ double scaf_param_energy(const scaf_param_t *p)
     return p && p->has_mesh ? scaf_loop_energy(&p->loop) : NAN;
 }
 int scaf_param_chart_count(const scaf_param_t *p) { return p ? p->ncharts : 0; }
+scaf_seams scaf_param_seams_used(const scaf_param_t *p)
+{
+    return p ? p->seams_used : SCAF_SEAMS_DEFAULT;
+}
 int scaf_param_iterations(const scaf_param_t *p)
 {
     return p && p->has_mesh ? p->loop.iterations : 0;

@@ -41,6 +41,10 @@ int param_face_energy(const scaf_param_t *p, double *E);
  * pictures; valid until the next run. Returns 0 when no mesh is set. */
 int param_last_scaffold(const scaf_param_t *p, scaffold_view *v);
 
+/* Why set_mesh used its seam source (scaf_param_seams_used), for the
+ * terminal; "" without a mesh. */
+const char *param_seams_why(const scaf_param_t *p);
+
 /* Validate options: SCAF_OK or SCAF_ERR_USAGE with a message. */
 scaf_status param_options_check(const scaf_options_t *o, char *msg, size_t size);
 

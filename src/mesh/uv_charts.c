@@ -314,12 +314,13 @@ scaf_status mesh_chart_check(const mesh_charts *c, int chart, int allow_holes, s
     case MESH_CHART_CLOSED:
         return err_set(err, SCAF_ERR_MESH,
                        "chart %d is a closed surface (no boundary, Euler characteristic %d): cut "
-                       "it open first",
+                       "it open first (automatic seams: --seams auto or extend)",
                        chart, cx->group_euler[chart]);
     case MESH_CHART_HIGHER_GENUS:
         if (cx->group_genus[chart] > 0)
             return err_set(err, SCAF_ERR_MESH,
-                           "chart %d has genus %d (%d boundary loops): cut its handles first",
+                           "chart %d has genus %d (%d boundary loops): cut its handles first "
+                           "(automatic seams: --seams auto or extend)",
                            chart, cx->group_genus[chart], cx->group_loops[chart]);
         return err_set(err, SCAF_ERR_MESH,
                        "chart %d has an invalid Euler characteristic %d with %d boundary loops",

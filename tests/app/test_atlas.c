@@ -293,9 +293,19 @@ static void closed_chart_is_refused(void **state)
     assert_int_equal(mesh_sample_make("tetrahedron", 1, &m, &err), SCAF_OK);
     atlas a;
     atlas_options o = atlas_options_default();
+    o.base.seams = SCAF_SEAMS_INPUT; /* the components as they are */
     err_clear(&err);
     assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_ERR_MESH);
     assert_non_null(strstr(err.message, "chart"));
+    /* by default it is cut open (automatic seams) and certified */
+    o = atlas_options_default();
+    o.settle_iterations = 10;
+    o.compact_iterations = 5;
+    assert_int_equal(atlas_init(&a, &m, &o, &err), SCAF_OK);
+    assert_int_equal(a.seams_used, SCAF_SEAMS_AUTO);
+    assert_int_equal(atlas_run(&a, NULL, NULL, &err), SCAF_OK);
+    check_output(&a, o.padding);
+    atlas_free(&a);
     mesh_free(&m);
 }
 

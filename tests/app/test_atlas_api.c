@@ -564,9 +564,18 @@ static void argument_errors(void **state)
     m.V[5] = NAN;
     EXPECT(scaf_atlas_set_mesh(a, m.V, nv, m.F, nf, m.UV, m.nuv, m.FT), SCAF_ERR_MESH);
     m.V[5] = kv;
-    /* a closed mesh (charts = components: the whole sphere) names the chart */
+    /* a closed mesh with the components as charts (SCAF_SEAMS_INPUT) names
+     * the chart; by default it is cut open */
+    scaf_atlas_options_t oi = o;
+    oi.seams = SCAF_SEAMS_INPUT;
+    assert_int_equal(scaf_atlas_set_options(a, &oi), SCAF_OK);
     EXPECT(scaf_atlas_set_mesh(a, m.V, nv, m.F, nf, NULL, 0, NULL), SCAF_ERR_MESH);
     assert_non_null(strstr(scaf_atlas_error(a), "chart"));
+    assert_int_equal(scaf_atlas_set_options(a, &o), SCAF_OK);
+    assert_int_equal(scaf_atlas_set_mesh(a, m.V, nv, m.F, nf, NULL, 0, NULL), SCAF_OK);
+    assert_int_equal(scaf_atlas_seams_used(a), SCAF_SEAMS_AUTO);
+    oi.seams = (scaf_seams)9;
+    EXPECT(scaf_atlas_set_options(a, &oi), SCAF_ERR_USAGE);
     /* a degenerate face */
     int t0[3] = {m.F[0], m.F[1], m.F[2]};
     m.F[2] = m.F[1];

@@ -159,12 +159,16 @@ static void multi_chart_with_seams(void **state)
     print_message("cubesphere: E %.6f -> %.6f\n", e0, e1);
 }
 
+/* With the input's seams only (SCAF_SEAMS_INPUT), as before automatic
+ * seams: the sample is refused naming the chart. */
 static void expect_mesh_error(const char *name, const char *needle)
 {
     mesh m;
     scaf_error err;
     assert_int_equal(mesh_sample_make(name, 0, &m, &err), SCAF_OK);
-    scaf_param_t *p = scaf_param_new(NULL);
+    scaf_options_t o = scaf_options_default();
+    o.seams = SCAF_SEAMS_INPUT;
+    scaf_param_t *p = scaf_param_new(&o);
     scaf_status st = scaf_param_set_mesh(p, m.V, m.nv, m.F, m.nf, NULL, 0, NULL);
     assert_int_equal(st, SCAF_ERR_MESH);
     const char *msg = scaf_param_error(p);
@@ -182,6 +186,44 @@ static void closed_mesh_is_rejected_naming_the_chart(void **state)
     expect_mesh_error("cubesphere", "chart 0"); /* without its UVs: one closed component */
 }
 
+/* The default seams cut a closed or handled mesh without UVs open:
+ * set_mesh succeeds, says so, and the map after a few iterations is
+ * bijective (exact check) with one chart per component. */
+static void expect_cut_and_bijective(const double *V, int nv, const int *F, int nf)
+{
+    scaf_param_t *p = scaf_param_new(NULL);
+    scaf_status st = scaf_param_set_mesh(p, V, nv, F, nf, NULL, 0, NULL);
+    if (st != SCAF_OK) print_error("%s\n", scaf_param_error(p));
+    assert_int_equal(st, SCAF_OK);
+    assert_int_equal(scaf_param_seams_used(p), SCAF_SEAMS_AUTO);
+    assert_int_equal(scaf_param_chart_count(p), 1);
+    assert_int_equal(scaf_param_run(p, 5, NULL, NULL), SCAF_OK);
+    int nuv = scaf_param_uv_count(p);
+    assert_true(nuv > nv); /* the seams split vertices */
+    double *UV = malloc(sizeof(double) * 2 * (size_t)nuv);
+    int *FT = malloc(sizeof(int) * 3 * (size_t)nf);
+    assert_int_equal(scaf_param_get_uv(p, UV, FT), SCAF_OK);
+    bij_report r;
+    assert_int_equal(bij_check(nuv, UV, nf, FT, NULL, NULL, &r, NULL), SCAF_OK);
+    assert_true(r.bijective);
+    free(UV);
+    free(FT);
+    scaf_param_destroy(p);
+}
+
+static void closed_mesh_is_cut_by_default(void **state)
+{
+    (void)state;
+    const char *names[] = {"tetrahedron", "cubesphere", "icosphere"};
+    for (int i = 0; i < 3; i++) {
+        mesh m;
+        scaf_error err;
+        assert_int_equal(mesh_sample_make(names[i], 0, &m, &err), SCAF_OK);
+        expect_cut_and_bijective(m.V, m.nv, m.F, m.nf); /* cubesphere: its UVs left out */
+        mesh_free(&m);
+    }
+}
+
 static void genus_and_non_manifold_are_rejected(void **state)
 {
     (void)state;
@@ -192,8 +234,13 @@ static void genus_and_non_manifold_are_rejected(void **state)
     double V[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1};
     int F[] = {0, 1, 2, 1, 0, 3, 0, 1, 4};
     scaf_param_t *p = scaf_param_new(NULL);
+    /* non-manifold: refused whatever the seams, naming the edge */
     assert_int_equal(scaf_param_set_mesh(p, V, 5, F, 3, NULL, 0, NULL), SCAF_ERR_MESH);
     assert_non_null(strstr(scaf_param_error(p), "chart 0"));
+    assert_non_null(strstr(scaf_param_error(p), "0-1 has 3 faces"));
+    scaf_options_t o = scaf_options_default();
+    o.seams = SCAF_SEAMS_INPUT;
+    assert_int_equal(scaf_param_set_options(p, &o), SCAF_OK);
     /* Torus: 3 x 3 grid with both directions wrapped. */
     double TV[9 * 3];
     int TF[18 * 3];
@@ -219,6 +266,8 @@ static void genus_and_non_manifold_are_rejected(void **state)
     assert_int_equal(scaf_param_set_mesh(p, TV, 9, TF, 18, NULL, 0, NULL), SCAF_ERR_MESH);
     assert_non_null(strstr(scaf_param_error(p), "chart 0"));
     scaf_param_destroy(p);
+    /* by default its handle is cut */
+    expect_cut_and_bijective(TV, 9, TF, 18);
 }
 
 static void bad_arrays_and_options(void **state)
@@ -289,6 +338,7 @@ int main(void)
         cmocka_unit_test(surface_with_holes),
         cmocka_unit_test(multi_chart_with_seams),
         cmocka_unit_test(closed_mesh_is_rejected_naming_the_chart),
+        cmocka_unit_test(closed_mesh_is_cut_by_default),
         cmocka_unit_test(genus_and_non_manifold_are_rejected),
         cmocka_unit_test(bad_arrays_and_options),
         cmocka_unit_test(callback_can_cancel),

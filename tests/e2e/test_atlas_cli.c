@@ -115,7 +115,11 @@ static void cli_atlas_errors(void **state)
     test_tmp_path("e2e_atlas_bad_out.obj", out, sizeof out);
     remove(out);
     assert_int_equal(test_run("%s gen tetrahedron -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(test_run("%s atlas %s -o %s --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
+    assert_int_equal(
+        test_run("%s atlas %s -o %s --seams input --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
+    assert_false(test_exists(out));
+    assert_int_equal(
+        test_run("%s atlas %s -o %s --seams nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
     assert_false(test_exists(out));
     assert_int_equal(test_run("%s atlas %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY,
                               SCAF_TEST_TMPDIR, out),

@@ -1,8 +1,9 @@
 /* End-to-end tests of chart splitting in `scaf atlas` (app/atlas_charts):
  * a long thin chart (a spiral strip given one UV chart) is split by
  * --split-charts into more charts that pack better, still bijective by
- * `scaf check`; a curved disk above --max-distortion is split; bad values
- * are refused with the usage exit status. Generated meshes only. */
+ * `scaf check`; a curved disk above --max-distortion is split; a closed
+ * mesh without vt gets automatic seams refined by default; bad values are
+ * refused with the usage exit status. Generated meshes only. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -110,14 +111,28 @@ static void bad_values_refused(void **state)
     test_tmp_path("e2e_split_bad.obj", in, sizeof in);
     test_tmp_path("e2e_split_bad_out.obj", out, sizeof out);
     write_one_chart("grid", 4, in);
+    remove(out);
     assert_int_equal(
         test_run("%s atlas %s -o %s --max-distortion 3 2> /dev/null", SCAF_BINARY, in, out), 2);
     assert_int_equal(
         test_run("%s atlas %s -o %s --max-distortion x 2> /dev/null", SCAF_BINARY, in, out), 2);
-    assert_int_equal(test_run("%s atlas %s -o %s --split-charts --init input 2> /dev/null",
-                              SCAF_BINARY, in, out),
-                     2);
     assert_false(test_exists(out));
+}
+
+/* A closed mesh without vt: automatic seams, split by default where a
+ * chart distorts or packs badly; bijective, nothing mirrored. */
+static void automatic_seams_refined_by_default(void **state)
+{
+    (void)state;
+    char in[512], out[512];
+    test_tmp_path("e2e_split_ball.obj", in, sizeof in);
+    test_tmp_path("e2e_split_ball_out.obj", out, sizeof out);
+    assert_int_equal(test_run("%s gen icosphere --size 6 -o %s", SCAF_BINARY, in), 0);
+    assert_int_equal(test_run("%s atlas %s -o %s --quiet", SCAF_BINARY, in, out), 0);
+    char *c = check_bijective(out, "e2e_split_ball.json");
+    assert_true(json_num(c, "charts") >= 2.0);
+    assert_true(json_num(c, "mirrored_charts") == 0.0);
+    free(c);
 }
 
 int main(void)
@@ -126,6 +141,7 @@ int main(void)
         cmocka_unit_test(long_thin_chart_is_split_and_packs_better),
         cmocka_unit_test(distorted_chart_is_split),
         cmocka_unit_test(bad_values_refused),
+        cmocka_unit_test(automatic_seams_refined_by_default),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

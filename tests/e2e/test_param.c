@@ -82,7 +82,11 @@ static void cli_bad_input_leaves_no_output(void **state)
     test_tmp_path("e2e_param_bad_out.obj", out, sizeof out);
     remove(out);
     assert_int_equal(test_run("%s gen tetrahedron -o %s", SCAF_BINARY, in), 0);
-    assert_int_equal(test_run("%s param %s -o %s --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
+    assert_int_equal(
+        test_run("%s param %s -o %s --seams input --quiet 2> /dev/null", SCAF_BINARY, in, out), 4);
+    assert_false(test_exists(out));
+    assert_int_equal(
+        test_run("%s param %s -o %s --seams nonsense 2> /dev/null", SCAF_BINARY, in, out), 2);
     assert_false(test_exists(out));
     assert_int_equal(test_run("%s param %s/no-such-file.obj -o %s 2> /dev/null", SCAF_BINARY,
                               SCAF_TEST_TMPDIR, out),
