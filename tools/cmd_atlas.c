@@ -69,6 +69,12 @@ static void usage(FILE *o)
             "                           seams plus cuts where a chart is not a disk);\n"
             "                           default: input when the vt cut the mesh into disks,\n"
             "                           else auto\n"
+            "  --max-distortion E       split every chart whose settled E exceeds E in two\n"
+            "                           along its normal cones, round by round (default 4.2\n"
+            "                           for automatic seams, off for input seams; 0: never)\n"
+            "  --split-charts           split the chart filling least of its least-area box\n"
+            "                           while below 0.45, one a round (default for automatic\n"
+            "                           seams; --no-split-charts: never)\n"
             "  --padding P              minimum distance between two charts, in units of the\n"
             "                           unit square (default K / R below: 4 / 1024 =\n"
             "                           0.00390625; --padding 0: charts only never overlap)\n"
@@ -217,6 +223,15 @@ static int atlas_main(int argc, char **argv)
         } else if (!strcmp(a, "--compact-lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.compact_lambda_ratio)) BAD_VALUE();
+        } else if (!strcmp(a, "--max-distortion")) {
+            NEED_VALUE();
+            if (!cli_parse_double(v, &opt.max_distortion)) BAD_VALUE();
+            if (!(opt.max_distortion == 0.0 || opt.max_distortion > 4.0))
+                CLI_OUT_OF_RANGE("atlas", "> 4 (4 is an isometry), or 0: never split");
+        } else if (!strcmp(a, "--split-charts")) {
+            opt.split_charts = 1;
+        } else if (!strcmp(a, "--no-split-charts")) {
+            opt.split_charts = 0;
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();

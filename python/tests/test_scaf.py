@@ -636,7 +636,8 @@ class AtlasTest(unittest.TestCase):
         V, F, _, _ = scaf.read_obj(gen("hemisphere", 4))
         V2 = rows(V) + [[x + 5.0, y, z] for x, y, z in rows(V)]
         F2 = rows(F) + [[a + len(V), b + len(V), c + len(V)] for a, b, c in rows(F)]
-        r = scaf.atlas(V2, F2, padding=0.0, compact_iterations=3)
+        # seams="input": the components are the charts (automatic seams would segment them)
+        r = scaf.atlas(V2, F2, padding=0.0, compact_iterations=3, seams="input")
         self.assertEqual(r.chart_count, 2)
         self.assertEqual(rows(r.chart), [0] * len(F) + [1] * len(F))
         self.assertGreater(min(signed_areas(r.uv, r.ft)), 0.0)
@@ -747,7 +748,8 @@ class SplitSeamsTest(unittest.TestCase):
 
 
 class DragTest(unittest.TestCase):
-    """scaf.Drag on two hemispheres side by side (two charts, no UVs)."""
+    """scaf.Drag on two hemispheres side by side (two charts, no UVs: seams="input"
+    keeps the components as charts; automatic seams would segment them)."""
 
     @classmethod
     def setUpClass(cls):
@@ -768,7 +770,7 @@ class DragTest(unittest.TestCase):
         self.assertAlmostEqual(sum(signed_areas(out.uv, out.ft)), out.efficiency, delta=1e-9)
 
     def test_drag_chart_onto_the_other(self):
-        with scaf.Drag() as d:
+        with scaf.Drag(seams="input") as d:
             d.set_mesh(self.V, self.F)
             self.assertEqual((d.chart_count, d.face_count), (2, len(self.F)))
             if np is not None:
@@ -789,7 +791,7 @@ class DragTest(unittest.TestCase):
             self.assertGreater(math.dist(d.chart_info(1).centroid, c1), 0.0)  # pushed
 
     def test_vertex_rotation_cancel_undo(self):
-        with scaf.Drag() as d:
+        with scaf.Drag(seams="input") as d:
             d.set_mesh(self.V, self.F)
             before = rows(d.uv)
             d.checkpoint()
@@ -827,7 +829,7 @@ class DragTest(unittest.TestCase):
             self.assertAlmostEqual(mean, d.energy, delta=1e-9 * d.energy)
 
     def test_errors(self):
-        d = scaf.Drag(start="input")
+        d = scaf.Drag(start="input", seams="input")
         self.assertEqual(d.options["start"], "input")
         with self.assertRaises(scaf.UsageError) as cm:
             d.set_mesh(self.V, self.F)  # no UVs to start from

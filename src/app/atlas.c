@@ -8,6 +8,7 @@
  * chart pairs stiffened) and `feasible` (the padding constraint).
  */
 #include "app/atlas.h"
+#include "app/atlas_charts.h"
 #include "app/seam_source.h"
 
 #include <limits.h>
@@ -61,6 +62,8 @@ atlas_options atlas_options_default(void)
     o.pack_gap_factor = 2.0;
     o.pack_picks = 2;
     o.compact_lambda_ratio = 1.0;
+    o.max_distortion = -1.0;
+    o.split_charts = -1;
     return o;
 }
 
@@ -354,6 +357,11 @@ scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
         bad = "progress_tolerance must be a finite number >= 0";
     else if (o->progress_window < 1 || o->progress_window > 64)
         bad = "progress_window must be in [1, 64]";
+    else if (!(o->max_distortion < 0.0 || o->max_distortion == 0.0 ||
+               (o->max_distortion > 4.0 && isfinite(o->max_distortion))))
+        bad = "max_distortion must be > 4 (4 is an isometry), 0 (never split) or < 0 (default)";
+    else if (o->split_charts < -1 || o->split_charts > 1)
+        bad = "split_charts must be -1 (default), 0 or 1";
     /* the output's padding is certified exactly (geom/chart_gap), which
      * takes paddings of at least 2^-200 */
     else if (!(o->padding == 0.0 || (o->padding >= CHART_GAP_EXACT_MIN && o->padding < 0.5))) {
@@ -392,6 +400,12 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
         planned.FT = plan.FT;
     }
     m = &planned;
+    /* automatic charts split where they distort or pack badly (app/atlas_charts) */
+    st = atlas_charts_apply(&planned, &a->opt, &plan, err);
+    if (st != SCAF_OK) {
+        seam_plan_free(&plan);
+        return st;
+    }
     if (a->opt.init_input && plan.used != SCAF_SEAMS_INPUT) {
         seam_plan_free(&plan);
         return err_set(err, SCAF_ERR_MESH,

@@ -127,6 +127,12 @@ typedef struct atlas_options {
     int progress_window;         /* see progress_tolerance (4; 1..64; 8
                                     before: human_neutral gained 0.0004
                                     efficiency in its last 18 iterations) */
+    /* chart splitting before the run (app/atlas_charts): */
+    double max_distortion; /* split charts settling above this E; < 0 (default):
+                              ATLAS_CHARTS_MAX_DISTORTION for automatic seams,
+                              never for input seams; 0: never */
+    int split_charts;      /* split charts filling little of their box; < 0
+                              (default): for automatic seams only; 0 never; 1 always */
 } atlas_options;
 
 atlas_options atlas_options_default(void);

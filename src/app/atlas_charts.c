@@ -1,0 +1,613 @@
+/* app/atlas_charts: charts split for distortion and packing (see the header). */
+#include "app/atlas_charts.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/half_edges.h"
+#include "geom/min_box.h"
+#include "mesh/chart_segment.h"
+#include "mesh/uv_charts.h"
+
+/* A chart is split only when each half can have this many faces (small
+ * charts distort too: a 60-face chart of bunny settled at E 6.3). */
+#define MIN_SPLIT_FACES 8
+/* Settling caps of a measuring round: enough to rank charts, far below a
+ * full run's (the final atlas settles to convergence). */
+#define ROUND_ITERATIONS 40
+#define ROUND_TOLERANCE 1e-3
+
+atlas_charts_options atlas_charts_options_default(void)
+{
+    atlas_charts_options o;
+    o.max_distortion = ATLAS_CHARTS_MAX_DISTORTION;
+    o.min_fill = ATLAS_CHARTS_MIN_FILL;
+    o.max_rounds = 3;
+    o.max_splits = 0;
+    o.slit_cones = 0;
+    return o;
+}
+
+typedef struct split_candidate {
+    int chart;
+    int reason; /* 0 distortion, 1 fill */
+    double score;
+} split_candidate;
+
+static int candidate_cmp(const void *p, const void *q)
+{
+    const split_candidate *a = p, *b = q;
+    if (a->score != b->score) return a->score > b->score ? -1 : 1;
+    return a->chart - b->chart;
+}
+
+/* UV area / least-area bounding box area of every chart of a settled atlas. */
+static int chart_fill(const atlas *a, const double *UV, double *fill)
+{
+    int nc = a->ncharts;
+    double *area = calloc((size_t)nc, sizeof(double));
+    int *start = calloc((size_t)nc + 1, sizeof(int));
+    int *verts = malloc(sizeof(int) * (size_t)(a->nw > 0 ? a->nw : 1));
+    double *P = malloc(sizeof(double) * 2 * (size_t)(a->nw > 0 ? a->nw : 1));
+    int *hull = malloc(sizeof(int) * (size_t)(a->nw + 1));
+    if (!area || !start || !verts || !P || !hull) {
+        free(area);
+        free(start);
+        free(verts);
+        free(P);
+        free(hull);
+        return 0;
+    }
+    for (int f = 0; f < a->nf; f++) {
+        const double *p = UV + 2 * a->Fw[3 * f], *q = UV + 2 * a->Fw[3 * f + 1],
+                     *r = UV + 2 * a->Fw[3 * f + 2];
+        area[a->chart[f]] +=
+            fabs(0.5 * ((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])));
+    }
+    for (int w = 0; w < a->nw; w++) start[a->wchart[w] + 1]++;
+    for (int c = 0; c < nc; c++) start[c + 1] += start[c];
+    int *fillpos = hull; /* cursor, before the hulls need it */
+    for (int c = 0; c <= nc && c <= a->nw; c++) fillpos[c] = 0;
+    for (int w = 0; w < a->nw; w++) {
+        int c = a->wchart[w];
+        verts[start[c] + fillpos[c]++] = w;
+    }
+    for (int c = 0; c < nc; c++) {
+        int n = start[c + 1] - start[c];
+        for (int i = 0; i < n; i++) {
+            P[2 * i] = UV[2 * verts[start[c] + i]];
+            P[2 * i + 1] = UV[2 * verts[start[c] + i] + 1];
+        }
+        int nh = min_box_hull(P, n, hull);
+        if (nh < 0) {
+            free(area);
+            free(start);
+            free(verts);
+            free(P);
+            free(hull);
+            return 0;
+        }
+        double w = 0.0, h = 0.0;
+        if (nh >= 3) min_box_extent(P, hull, nh, min_box_area_angle(P, hull, nh), &w, &h);
+        fill[c] = w * h > 0.0 ? area[c] / (w * h) : 1.0;
+    }
+    free(area);
+    free(start);
+    free(verts);
+    free(P);
+    free(hull);
+    return 1;
+}
+
+/* Two-way segmentation of chart c (faces with label c) in its own vt
+ * index space; faces of the second part get label `fresh`. Returns 1
+ * when it split, 0 when it did not, -1 when out of memory. */
+static int split_chart(const mesh *m, int *label, int c, int fresh, scaf_error *err)
+{
+    int nf = 0;
+    for (int f = 0; f < m->nf; f++) nf += label[f] == c;
+    if (nf < 2 * MIN_SPLIT_FACES) return 0;
+    int *map = malloc(sizeof(int) * (size_t)m->nuv);
+    int *F = malloc(sizeof(int) * 3 * (size_t)nf);
+    int *faces = malloc(sizeof(int) * (size_t)nf);
+    int *part = malloc(sizeof(int) * (size_t)nf);
+    double *V = malloc(sizeof(double) * 3 * 3 * (size_t)nf);
+    int rc = -1;
+    if (!map || !F || !faces || !part || !V) goto out;
+    for (int i = 0; i < m->nuv; i++) map[i] = -1;
+    int nv = 0, k = 0;
+    for (int f = 0; f < m->nf; f++) {
+        if (label[f] != c) continue;
+        faces[k] = f;
+        for (int j = 0; j < 3; j++) {
+            int t = m->FT[3 * f + j];
+            if (map[t] < 0) {
+                map[t] = nv;
+                memcpy(V + 3 * nv, m->V + 3 * m->F[3 * f + j], sizeof(double) * 3);
+                nv++;
+            }
+            F[3 * k + j] = map[t];
+        }
+        k++;
+    }
+    chart_segment_options o;
+    chart_segment_defaults(&o);
+    o.target_charts = 2;
+    int n = 0;
+    if (chart_segment(nv, V, nf, F, &o, part, &n, err) != SCAF_OK) goto out;
+    rc = 0;
+    if (n < 2) goto out;
+    /* parts beyond two (a part cut in pieces) join the second */
+    for (int i = 0; i < nf; i++)
+        if (part[i] != part[0]) label[faces[i]] = fresh;
+    rc = 1;
+out:
+    free(map);
+    free(F);
+    free(faces);
+    free(part);
+    free(V);
+    return rc;
+}
+
+/* ---- slits: a cut from a chart's boundary to its worst cone ---- */
+
+/* Per vt index: the area-weighted excess sum A_f (E_f - 4) of its faces. */
+static void vertex_excess(const mesh *m, const double *fe, const double *farea, double *ex)
+{
+    for (int t = 0; t < m->nuv; t++) ex[t] = 0.0;
+    for (int f = 0; f < m->nf; f++) {
+        double x = farea[f] * (fe[f] - 4.0);
+        if (!(x > 0)) continue;
+        for (int k = 0; k < 3; k++) ex[m->FT[3 * f + k]] += x;
+    }
+}
+
+typedef struct vt_graph {
+    int *twin;               /* 3 nf: half-edge across the same vt edge, or -1 */
+    int *first;              /* nuv + 1: half-edges leaving t, CSR */
+    int *out;                /* 3 nf */
+    unsigned char *boundary; /* nuv: t on a chart boundary */
+} vt_graph;
+
+static void vt_graph_free(vt_graph *g)
+{
+    free(g->twin);
+    free(g->first);
+    free(g->out);
+    free(g->boundary);
+}
+
+static int vt_graph_build(const mesh *m, vt_graph *g, scaf_error *err)
+{
+    int nf = m->nf, nuv = m->nuv;
+    g->twin = malloc(sizeof(int) * 3 * (size_t)nf);
+    g->first = calloc((size_t)nuv + 1, sizeof(int));
+    g->out = malloc(sizeof(int) * 3 * (size_t)nf);
+    g->boundary = calloc((size_t)nuv, 1);
+    int *order = malloc(sizeof(int) * 3 * (size_t)nf);
+    int ok = g->twin && g->first && g->out && g->boundary && order;
+    int count = 0;
+    if (ok && half_edges_sort(nuv, nf, m->FT, NULL, order, &count, err) != SCAF_OK) ok = 0;
+    if (!ok) {
+        free(order);
+        vt_graph_free(g);
+        return 0;
+    }
+    for (int h = 0; h < 3 * nf; h++) g->twin[h] = -1;
+    for (int i = 0; i < count;) {
+        int j = i + 1;
+        while (j < count && half_edges_same_edge(m->FT, order[i], order[j])) j++;
+        /* two sides in opposite directions: an inside edge */
+        if (j - i == 2 && m->FT[order[i]] == m->FT[half_edge_next(order[i + 1])]) {
+            g->twin[order[i]] = order[i + 1];
+            g->twin[order[i + 1]] = order[i];
+        }
+        i = j;
+    }
+    free(order);
+    for (int h = 0; h < 3 * nf; h++) {
+        g->first[m->FT[h] + 1]++;
+        if (g->twin[h] < 0) g->boundary[m->FT[h]] = g->boundary[m->FT[half_edge_next(h)]] = 1;
+    }
+    for (int t = 0; t < nuv; t++) g->first[t + 1] += g->first[t];
+    int *pos = malloc(sizeof(int) * (size_t)(nuv > 0 ? nuv : 1));
+    if (!pos) {
+        vt_graph_free(g);
+        return 0;
+    }
+    for (int t = 0; t < nuv; t++) pos[t] = g->first[t];
+    for (int h = 0; h < 3 * nf; h++) g->out[pos[m->FT[h]]++] = h;
+    free(pos);
+    return 1;
+}
+
+static double corner_length(const mesh *m, int h)
+{
+    const double *a = m->V + 3 * m->F[h], *b = m->V + 3 * m->F[half_edge_next(h)];
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/* Cut chart c open from its boundary to its vertex of largest excess
+ * along the shortest inside path (Dijkstra over vt edges). New vt
+ * indices are appended to the lists *newFT (a copy of FT, updated) and
+ * the count *nuv. Returns 1 when it cut, 0 when there was nothing to cut
+ * (no interior vertex with excess), -1 when out of memory. */
+static int slit_chart(const mesh *m, const vt_graph *g, const int *label, int c, const double *ex,
+                      int *FT, int *nuv, int **src)
+{
+    int cone = -1;
+    for (int f = 0; f < m->nf; f++) {
+        if (label[f] != c) continue;
+        for (int k = 0; k < 3; k++) {
+            int t = m->FT[3 * f + k];
+            if (!g->boundary[t] && ex[t] > 0 &&
+                (cone < 0 || ex[t] > ex[cone] || (ex[t] == ex[cone] && t < cone)))
+                cone = t;
+        }
+    }
+    if (cone < 0) return 0;
+    int nt = m->nuv;
+    double *dist = malloc(sizeof(double) * (size_t)nt);
+    int *prev = malloc(sizeof(int) * (size_t)nt); /* half-edge into t on the path */
+    unsigned char *done = calloc((size_t)nt, 1);
+    if (!dist || !prev || !done) {
+        free(dist);
+        free(prev);
+        free(done);
+        return -1;
+    }
+    for (int t = 0; t < nt; t++) {
+        dist[t] = HUGE_VAL;
+        prev[t] = -1;
+    }
+    /* Dijkstra with a linear scan of the front: the front is the rim of a
+     * disk around the cone, stopped at the first boundary vertex */
+    int *front = malloc(sizeof(int) * (size_t)nt), nfront = 0;
+    if (!front) {
+        free(dist);
+        free(prev);
+        free(done);
+        return -1;
+    }
+    dist[cone] = 0.0;
+    front[nfront++] = cone;
+    int end = -1;
+    while (nfront > 0) {
+        int bi = 0;
+        for (int i = 1; i < nfront; i++)
+            if (dist[front[i]] < dist[front[bi]] ||
+                (dist[front[i]] == dist[front[bi]] && front[i] < front[bi]))
+                bi = i;
+        int t = front[bi];
+        front[bi] = front[--nfront];
+        if (done[t]) continue;
+        done[t] = 1;
+        if (g->boundary[t]) {
+            end = t;
+            break;
+        }
+        for (int i = g->first[t]; i < g->first[t + 1]; i++) {
+            int h = g->out[i], u = m->FT[half_edge_next(h)];
+            double nd = dist[t] + corner_length(m, h);
+            if (!done[u] && nd < dist[u]) {
+                if (dist[u] == HUGE_VAL) front[nfront++] = u;
+                dist[u] = nd;
+                prev[u] = h;
+            }
+        }
+    }
+    free(front);
+    free(done);
+    free(dist);
+    if (end < 0) {
+        free(prev);
+        return 0;
+    }
+    /* the path w0 = end (on the boundary), w1, ..., wk = cone: prev[w] is
+     * the half-edge from the path's next vertex into w */
+    int k = 0;
+    for (int w = end; w != cone; w = m->FT[prev[w]]) k++;
+    int *path = malloc(sizeof(int) * (size_t)(k + 1));
+    if (!path) {
+        free(prev);
+        return -1;
+    }
+    k = 0;
+    for (int w = end;; w = m->FT[prev[w]]) {
+        path[k++] = w;
+        if (w == cone) break;
+    }
+    int rc = 1;
+    /* every path vertex but the cone gets a new vt on one side of the
+     * path: the faces from the one holding w -> next (the path's left
+     * side), turning about w, up to the previous path edge (or the
+     * boundary at w0). Consecutive vertices agree: the face holding
+     * w_i -> w_i+1 is the first of w_i and the last of w_i+1. */
+    for (int i = 0; i + 1 < k; i++) {
+        int w = path[i], before = i > 0 ? path[i - 1] : -1;
+        int id = (*nuv)++;
+        int *grown = realloc(*src, sizeof(int) * (size_t)*nuv);
+        if (!grown) {
+            rc = -1;
+            break;
+        }
+        *src = grown;
+        (*src)[id] = w;
+        int h = g->twin[prev[w]];
+        for (int guard = 0; h >= 0 && guard < 3 * m->nf; guard++) {
+            FT[h] = id;
+            int hp = h - h % 3 + (h % 3 + 2) % 3; /* the side into w */
+            if (m->FT[hp] == before) break;
+            h = g->twin[hp];
+        }
+    }
+    free(path);
+    free(prev);
+    return rc;
+}
+
+/* New vt indices: one per (old vt, label) pair; UVs copied (placeholders). */
+static int relabel_uvs(mesh *m, const int *label)
+{
+    int *first = malloc(sizeof(int) * (size_t)m->nuv);
+    int *next = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    int *key_label = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    int *key_vt = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    int *FT = malloc(sizeof(int) * 3 * (size_t)m->nf);
+    double *UV = NULL;
+    int ok = 0;
+    if (!first || !next || !key_label || !key_vt || !FT) goto out;
+    for (int t = 0; t < m->nuv; t++) first[t] = -1;
+    int n = 0;
+    for (int h = 0; h < 3 * m->nf; h++) {
+        int t = m->FT[h], l = label[h / 3], id = first[t];
+        while (id >= 0 && key_label[id] != l) id = next[id];
+        if (id < 0) {
+            id = n++;
+            key_label[id] = l;
+            key_vt[id] = t;
+            next[id] = first[t];
+            first[t] = id;
+        }
+        FT[h] = id;
+    }
+    UV = malloc(sizeof(double) * 2 * (size_t)(n > 0 ? n : 1));
+    if (!UV) goto out;
+    for (int i = 0; i < n; i++) {
+        UV[2 * i] = m->UV[2 * key_vt[i]];
+        UV[2 * i + 1] = m->UV[2 * key_vt[i] + 1];
+    }
+    free(m->FT);
+    free(m->UV);
+    m->FT = FT;
+    m->UV = UV;
+    m->nuv = n;
+    FT = NULL;
+    UV = NULL;
+    ok = 1;
+out:
+    free(first);
+    free(next);
+    free(key_label);
+    free(key_vt);
+    free(FT);
+    free(UV);
+    return ok;
+}
+
+scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_charts_options *o,
+                                atlas_charts_info *info, scaf_error *err)
+{
+    atlas_charts_info local;
+    if (!info) info = &local;
+    memset(info, 0, sizeof *info);
+    if (!m || !base || !o || !mesh_has_uv(m))
+        return err_set(err, SCAF_ERR_USAGE,
+                       "atlas_charts_refine: the mesh needs UV seams (vt) that cut it into charts");
+    int *label = malloc(sizeof(int) * (size_t)(m->nf > 0 ? m->nf : 1));
+    if (!label) return err_nomem(err, "chart refinement");
+    int n = 0;
+    scaf_status st = mesh_uv_chart_labels(m, label, &n, err);
+    if (st != SCAF_OK) {
+        free(label);
+        return st;
+    }
+    info->charts_before = info->charts_after = n;
+    atlas_options opt = *base;
+    opt.compact_iterations = 0;
+    opt.repack = 0;
+    opt.rotate = 0;
+    opt.padding = 0.0;
+    opt.init_input = 0;
+    if (opt.settle_iterations > ROUND_ITERATIONS) opt.settle_iterations = ROUND_ITERATIONS;
+    if (opt.settle_tolerance < ROUND_TOLERANCE) opt.settle_tolerance = ROUND_TOLERANCE;
+    for (int round = 0; round < o->max_rounds; round++) {
+        atlas a;
+        st = atlas_init(&a, m, &opt, err);
+        if (st != SCAF_OK) break;
+        st = atlas_run(&a, NULL, NULL, err);
+        if (st != SCAF_OK) {
+            atlas_free(&a);
+            break;
+        }
+        info->rounds++;
+        int nc = a.ncharts;
+        double *E = malloc(sizeof(double) * (size_t)nc);
+        double *fill = malloc(sizeof(double) * (size_t)nc);
+        double *UV = malloc(sizeof(double) * 2 * (size_t)(a.nw > 0 ? a.nw : 1));
+        split_candidate *cand = malloc(sizeof *cand * (size_t)nc);
+        if (!E || !fill || !UV || !cand) {
+            free(E);
+            free(fill);
+            free(UV);
+            free(cand);
+            atlas_free(&a);
+            st = err_nomem(err, "chart refinement");
+            break;
+        }
+        atlas_chart_energy(&a, E);
+        atlas_normalized_uv(&a, UV);
+        int ok = chart_fill(&a, UV, fill);
+        double *fe = malloc(sizeof(double) * (size_t)m->nf);
+        double *farea = calloc((size_t)m->nf, sizeof(double));
+        double *ex = malloc(sizeof(double) * (size_t)m->nuv);
+        if (!fe || !farea || !ex) ok = 0;
+        if (ok) {
+            scaf_loop_face_energy(&a.loop, fe);
+            for (int i = 0; i < a.nf; i++) farea[a.loop.chart_face[i]] = a.loop.chart.weight[i];
+            vertex_excess(m, fe, farea, ex);
+        }
+        /* the atlas's charts are the mesh's UV charts (pinched vt split
+         * apart keep their faces): label faces by them */
+        for (int f = 0; f < m->nf; f++) label[f] = a.chart[f];
+        atlas_free(&a);
+        free(UV);
+        if (!ok) {
+            free(E);
+            free(fill);
+            free(cand);
+            free(fe);
+            free(farea);
+            free(ex);
+            st = err_nomem(err, "chart refinement");
+            break;
+        }
+        /* every chart above the distortion bound; of those below the fill
+         * bound only the emptiest, one a round, since its halves change
+         * the ranking */
+        int ncand = 0, emptiest = -1;
+        for (int c = 0; c < nc; c++) {
+            if (o->max_distortion > 0 && E[c] > o->max_distortion)
+                cand[ncand++] = (split_candidate){c, 0, 1.0 + (E[c] - o->max_distortion)};
+            else if (o->min_fill > 0 && fill[c] < o->min_fill &&
+                     (emptiest < 0 || fill[c] < fill[emptiest]))
+                emptiest = c;
+        }
+        if (emptiest >= 0)
+            cand[ncand++] = (split_candidate){emptiest, 1, o->min_fill - fill[emptiest]};
+        qsort(cand, (size_t)ncand, sizeof *cand, candidate_cmp);
+        if (o->max_splits > 0 && ncand > o->max_splits) ncand = o->max_splits;
+        /* with slit_cones a distorted chart is cut open from its boundary
+         * to its worst interior vertex; otherwise (and when it has no
+         * interior vertex with excess) it is split in two */
+        int slits = 0;
+        if (o->slit_cones) {
+            vt_graph g;
+            memset(&g, 0, sizeof g);
+            int *FT = malloc(sizeof(int) * 3 * (size_t)m->nf), *src = NULL, nuv = m->nuv;
+            if (!FT || !vt_graph_build(m, &g, err)) {
+                free(FT);
+                free(fe);
+                free(farea);
+                free(ex);
+                free(E);
+                free(fill);
+                free(cand);
+                st = err_nomem(err, "chart refinement");
+                break;
+            }
+            memcpy(FT, m->FT, sizeof(int) * 3 * (size_t)m->nf);
+            for (int i = 0; i < ncand && st == SCAF_OK; i++) {
+                int c = cand[i].chart;
+                if (cand[i].reason != 0) continue;
+                int r = slit_chart(m, &g, label, c, ex, FT, &nuv, &src);
+                if (r < 0) st = err_nomem(err, "chart refinement");
+                if (r != 1) continue;
+                cand[i].reason = 2; /* done */
+                slits++;
+            }
+            if (st == SCAF_OK && slits > 0) {
+                double *UVn = realloc(m->UV, sizeof(double) * 2 * (size_t)nuv);
+                if (!UVn) st = err_nomem(err, "chart refinement");
+                else {
+                    m->UV = UVn;
+                    for (int t = m->nuv; t < nuv; t++) {
+                        m->UV[2 * t] = m->UV[2 * src[t]];
+                        m->UV[2 * t + 1] = m->UV[2 * src[t] + 1];
+                    }
+                    memcpy(m->FT, FT, sizeof(int) * 3 * (size_t)m->nf);
+                    m->nuv = nuv;
+                    info->distortion_slits += slits;
+                }
+            }
+            free(FT);
+            free(src);
+            vt_graph_free(&g);
+        }
+        free(fe);
+        free(farea);
+        free(ex);
+        int split = 0;
+        for (int i = 0; i < ncand && st == SCAF_OK; i++) {
+            if (cand[i].reason == 2) continue;
+            int r = split_chart(m, label, cand[i].chart, nc + split, err);
+            if (r < 0) {
+                st = err_nomem(err, "chart refinement");
+                break;
+            }
+            if (r == 0) continue;
+            split++;
+            if (cand[i].reason == 0) info->distortion_splits++;
+            else info->fill_splits++;
+        }
+        free(E);
+        free(fill);
+        free(cand);
+        if (st != SCAF_OK || split + slits == 0) break;
+        if (split > 0 && !relabel_uvs(m, label)) {
+            st = err_nomem(err, "chart refinement");
+            break;
+        }
+        info->charts_after = nc + split;
+    }
+    free(label);
+    return st;
+}
+
+scaf_status atlas_charts_apply(mesh *planned, const atlas_options *opt, seam_plan *plan,
+                               scaf_error *err)
+{
+    int automatic = plan->used != SCAF_SEAMS_INPUT;
+    atlas_charts_options o = atlas_charts_options_default();
+    o.max_distortion = opt->max_distortion < 0.0 ? (automatic ? ATLAS_CHARTS_MAX_DISTORTION : 0.0)
+                                                 : opt->max_distortion;
+    int split = opt->split_charts < 0 ? automatic : opt->split_charts;
+    o.min_fill = split ? ATLAS_CHARTS_MIN_FILL : 0.0;
+    if ((o.max_distortion <= 0.0 && o.min_fill <= 0.0) || opt->init_input || !mesh_has_uv(planned))
+        return SCAF_OK;
+    mesh work = *planned;
+    work.FT = malloc(sizeof(int) * 3 * (size_t)planned->nf);
+    work.UV = malloc(sizeof(double) * 2 * (size_t)(planned->nuv > 0 ? planned->nuv : 1));
+    if (!work.FT || !work.UV) {
+        free(work.FT);
+        free(work.UV);
+        return err_nomem(err, "chart refinement");
+    }
+    memcpy(work.FT, planned->FT, sizeof(int) * 3 * (size_t)planned->nf);
+    memcpy(work.UV, planned->UV, sizeof(double) * 2 * (size_t)planned->nuv);
+    /* the measuring runs take these seams as they are and split nothing */
+    atlas_options inner = *opt;
+    inner.base.seams = SCAF_SEAMS_INPUT;
+    inner.max_distortion = 0.0;
+    inner.split_charts = 0;
+    atlas_charts_info info;
+    scaf_status st = atlas_charts_refine(&work, &inner, &o, &info, err);
+    if (st != SCAF_OK || work.nuv == planned->nuv) {
+        free(work.FT);
+        free(work.UV);
+        return st;
+    }
+    free(plan->FT);
+    free(plan->UV);
+    plan->FT = work.FT;
+    plan->UV = work.UV;
+    plan->nuv = work.nuv;
+    plan->changed = 1;
+    planned->FT = work.FT;
+    planned->UV = work.UV;
+    planned->nuv = work.nuv;
+    return SCAF_OK;
+}
