@@ -10,7 +10,8 @@ from mirrored UVs), each written map checked by the build's `scaf check
 --json` on an OBJ written here (bijective, min_chart_gap >= the padding);
 vertex count, positions, a second UV map and a custom attribute
 unchanged; Ctrl-Z (ed.undo) restores the previous UVs; Check selects
-exactly a face made flipped; Esc's flag cancels a run. Any failed
+a face made flipped (and the neighbours it touches only), and faces of both of two islands moved
+onto each other; Esc's flag cancels a run. Any failed
 assertion exits 1 (--python-exit-code).
 """
 
@@ -194,11 +195,34 @@ def main():
     bpy.ops.uv.scaf_check()
     bpy.ops.object.mode_set(mode="OBJECT")
     selected = [p.index for p in me.polygons if p.select]
-    if selected != [tri.index]:
-        fail("check selected %s, expected the flipped face [%d]" % (selected, tri.index))
+    # the swapped corners also make the face's UV edges boundaries touching
+    # its neighbours' (scaf check counts boundary_touchings): those are selected too
+    near = [p.index for p in me.polygons if set(p.vertices) & set(tri.vertices)]
+    if tri.index not in selected or not set(selected) <= set(near):
+        fail("check selected %s, expected the flipped face %d and some of its neighbours %s"
+             % (selected, tri.index, near))
     if scaf_check(obj, "flipped")["flipped"] < 1:
         fail("the test's flipped face is not flipped")
     print("check: selected", selected)
+    # two islands moved onto each other (no flipped triangle): faces of both are selected
+    uv[[a, b]] = uv[[b, a]]
+    uv[north] += uv[~north].mean(axis=0) - uv[north].mean(axis=0)
+    me.uv_layers.active.data.foreach_set("uv", uv.reshape(-1))
+    rep = scaf_check(obj, "overlap")
+    if rep["flipped"] != 0 or rep["boundary_crossings"] < 1:
+        fail("the test's overlapping islands: %s" % rep)
+    bpy.ops.object.mode_set(mode="EDIT")
+    bpy.ops.uv.scaf_check()
+    bpy.ops.object.mode_set(mode="OBJECT")
+    sel = np.array([p.select for p in me.polygons])
+    pole_north = np.array([p.center.z > 0 for p in me.polygons])
+    if not (sel & pole_north).any() or not (sel & ~pole_north).any():
+        fail("check on overlapping islands selected %d faces, not faces of both islands" % sel.sum())
+    seam_edges = {tuple(sorted(e.vertices)) for e in me.edges if e.use_seam}
+    off_boundary = [p.index for p in me.polygons if p.select and not (set(p.edge_keys) & seam_edges)]
+    if off_boundary:
+        fail("check selected faces with no island boundary edge: %s" % off_boundary)
+    print("check on overlapping islands: %d faces selected, all on the islands' boundaries" % sel.sum())
 
     # -- Esc: the job's cancel flag is returned by the progress callback
     m = operators.mesh_data.MeshArrays(obj)

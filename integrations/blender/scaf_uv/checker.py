@@ -4,9 +4,10 @@ Neither the C API nor the Python package exposes the checker
 (geom/bijectivity) yet, so Check runs the `scaf` program: it writes the
 triangulated mesh with its UVs to a temporary OBJ (doubles printed with
 repr, which reads back bit for bit) and parses `scaf check --json`. Which
-triangles are flipped or degenerate is decided here exactly
-(scaf_uv.orientation) so they can be selected; the overlap counts
-(crossing, touching, nested boundaries...) come from the program.
+triangles are flipped or degenerate, and whose boundaries cross or touch,
+is decided in the add-on, exactly (scaf_uv.orientation, scaf_uv.overlaps),
+so they can be selected; the verdict and every count come from the
+program.
 Fails with CheckError naming the program and its message.
 """
 

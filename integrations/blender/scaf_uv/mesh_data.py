@@ -103,12 +103,16 @@ def write_uvs(obj, loop_uv):
         me.update()
 
 
-def select_polygons(obj, bad):
+def select_polygons(obj, bad, tool_settings):
     """Select exactly the polygons where bad (#polygons bool) is True, in
-    the mesh and (edit mode) in the UV editor's own selection."""
+    the mesh and (edit mode) in the UV editor's own selection. Edit mode
+    switches to face select mode: in vertex mode every face whose vertices
+    are all selected would be selected too."""
     me = obj.data
     if obj.mode == "EDIT":
+        tool_settings.mesh_select_mode = (False, False, True)
         bm = bmesh.from_edit_mesh(me)
+        bm.select_mode = {"FACE"}
         layer = bm.loops.layers.uv.active
         flags = bad.tolist()
         for f in bm.faces:

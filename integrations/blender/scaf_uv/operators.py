@@ -16,7 +16,7 @@ import threading
 import bpy
 import numpy as np
 
-from . import charts, checker, library, mesh_data, orientation
+from . import charts, checker, library, mesh_data, orientation, overlaps
 
 # Requested padding = texels / resolution + this margin, so that rounding
 # the certified doubles to Blender's float32 UVs (each coordinate in [0,1]
@@ -238,12 +238,12 @@ from the current layout when it is bijective, else lays the islands out afresh""
             pad = _padding(self)
 
             def run(progress, m=m, ft=ft, uv=uv, pad=pad):
-                try:  # the current UVs as the start: accepted only when exactly bijective
+                try:  # the current UVs as the start: accepted only when exactly bijective and padded
                     return scaf.atlas(m.Vt, m.Ft, uv, ft, padding=pad, init_input=True, progress=progress,
                                       **options)
-                except scaf.MeshError as e:
+                except (scaf.MeshError, scaf.UsageError) as e:  # not bijective / padding not met
                     r = scaf.atlas(m.Vt, m.Ft, uv, ft, padding=pad, progress=progress, **options)
-                    r.note = "the current UVs are not bijective (%s): islands laid out afresh" % e
+                    r.note = "the current UVs cannot be the start (%s): islands laid out afresh" % e
                     return r
             tasks.append((obj.name, run))
         return tasks
@@ -251,7 +251,7 @@ from the current layout when it is bijective, else lays the islands out afresh""
 
 class SCAF_OT_check(bpy.types.Operator):
     """Check the active UV map with scaf's exact checker: select the faces with a flipped or \
-zero-area triangle and report every defect"""
+zero-area triangle or an overlapping boundary, and report every defect"""
 
     bl_idname = "uv.scaf_check"
     bl_label = "Check Bijectivity"
@@ -278,9 +278,11 @@ zero-area triangle and report every defect"""
             ids, uv = charts.ids_from_uvs(m.loop_vert, m.loop_uv)
             ft = ids[m.tri_loops]
             signs = orientation.orient(uv, ft)
+            crossing, _ = overlaps.overlapping_triangles(uv, ft)
             bad_poly = np.zeros(len(m.poly_start), bool)
             bad_poly[m.tri_poly[signs <= 0]] = True
-            mesh_data.select_polygons(obj, bad_poly)
+            bad_poly[m.tri_poly[crossing]] = True
+            mesh_data.select_polygons(obj, bad_poly, context.tool_settings)
             nbad = int(np.count_nonzero(bad_poly))
             total += nbad
             if program:
@@ -291,8 +293,9 @@ zero-area triangle and report every defect"""
                     return {"CANCELLED"}
                 verdict = checker.summary(rep)
             else:
-                verdict = ("%d flipped or zero-area triangle(s); overlaps not checked: the scaf program "
-                           "was not found (set it in the add-on preferences)" % int(np.count_nonzero(signs <= 0)))
+                verdict = ("%d flipped or zero-area triangle(s), %d with crossing or touching boundaries; "
+                           "folds and nesting not checked: the scaf program was not found (set it in the "
+                           "add-on preferences)" % (int(np.count_nonzero(signs <= 0)), len(crossing)))
             self.report({"INFO"} if verdict == "bijective" else {"WARNING"},
                         "%s: %s; %d face(s) selected" % (obj.name, verdict, nbad))
         return {"FINISHED"}
