@@ -20,6 +20,7 @@ PACKAGES=(
   libmicrohttpd-dev                                 # `scaf edit`: the local HTTP server
   chromium nodejs                                   # tests/browser: `scaf edit` in headless Chromium
   blender                                           # tests/blender: the add-on (integrations/blender) run headless
+  xvfb xauth                                        # tests/blender: the add-on's modal run in a window (xvfb-run)
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

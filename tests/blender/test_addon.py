@@ -186,9 +186,13 @@ def main():
     bpy.ops.object.mode_set(mode="OBJECT")
     if any(p.select for p in me.polygons):
         fail("check selected faces of a bijective map")
-    tri = next(p for p in me.polygons if p.loop_total == 3)  # a pole triangle: swap two corners' UVs
+    # a pole triangle: swap two corners' UVs (plain values: polygon
+    # references dangle once the mode changes)
+    tri = next(p for p in me.polygons if p.loop_total == 3)
+    tri_index, tri_verts, a = tri.index, set(tri.vertices), tri.loop_start
+    b = a + 1
+    del tri
     uv = uvs(me).copy()
-    a, b = tri.loop_start, tri.loop_start + 1
     uv[[a, b]] = uv[[b, a]]
     me.uv_layers.active.data.foreach_set("uv", uv.reshape(-1))
     bpy.ops.object.mode_set(mode="EDIT")
@@ -197,10 +201,10 @@ def main():
     selected = [p.index for p in me.polygons if p.select]
     # the swapped corners also make the face's UV edges boundaries touching
     # its neighbours' (scaf check counts boundary_touchings): those are selected too
-    near = [p.index for p in me.polygons if set(p.vertices) & set(tri.vertices)]
-    if tri.index not in selected or not set(selected) <= set(near):
+    near = [p.index for p in me.polygons if set(p.vertices) & tri_verts]
+    if tri_index not in selected or not set(selected) <= set(near):
         fail("check selected %s, expected the flipped face %d and some of its neighbours %s"
-             % (selected, tri.index, near))
+             % (selected, tri_index, near))
     if scaf_check(obj, "flipped")["flipped"] < 1:
         fail("the test's flipped face is not flipped")
     print("check: selected", selected)
