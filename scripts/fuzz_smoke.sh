@@ -33,7 +33,7 @@ runs_of() {
     fuzz_mesh_parse) echo 1000000 ;;
     fuzz_topology) echo 700000 ;;
     fuzz_deform_targets) echo 1000000 ;;
-    fuzz_deform_paths) echo 3000 ;; # each input expands to up to 65536 path points
+    fuzz_deform_paths) echo 1000 ;; # each input expands to up to 65536 path points
     *) echo 10000 ;;
   esac
 }

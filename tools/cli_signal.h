@@ -17,7 +17,9 @@
  * the signals SIG (INT, TERM or HUP; SIGINT when none is given) itself, in
  * order, at POINT: a number N = in the progress callback of iteration N,
  * "write" = after the first output file has been written to its temporary
- * file, or a named phase of base/interrupt ("parse", "setup", ...).
+ * file, or a named phase: "parse" (reading the input mesh), "targets"
+ * (reading `scaf deform --targets`), "setup" (the charts' setup),
+ * "analysis" (the solver's analysis), "pack" (the atlas's packer).
  */
 #ifndef SCAF_TOOLS_CLI_SIGNAL_H
 #define SCAF_TOOLS_CLI_SIGNAL_H

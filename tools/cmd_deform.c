@@ -272,7 +272,8 @@ static int deform_main(int argc, char **argv)
     opt_handle_term h;
     opt_handle_term_init(&h, 2, 0);
     scaf_status st = deform_targets_read(a.targets, &t, &err);
-    if (st == SCAF_ERR_CANCELLED && cli_signal_report("deform")) {
+    if (st == SCAF_ERR_CANCELLED) { /* the reader stopped at SIGINT / SIGTERM */
+        fprintf(stderr, "scaf deform: %s; nothing written\n", err.message);
         rc = EXIT_CANCELLED;
         goto done;
     }

@@ -22,6 +22,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_closed_surface.h"
+#include "cli_unit_scale.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
@@ -245,13 +246,17 @@ static int flow_main(int argc, char **argv)
     mesh m;
     mesh_read_info info;
     if ((rc = cli_read_mesh("flow", in, quiet, &m, &info)) != EXIT_OK) return rc;
+    int e = 0;
     flow_log g = {0, malloc(sizeof(double) * (size_t)steps),
                   malloc(sizeof(long long) * (size_t)steps), -1};
     double *start = kp >= 0 ? malloc(sizeof(double) * 3 * (size_t)(m.nv > 0 ? m.nv : 1)) : NULL;
     if (!g.seconds || !g.defects || (kp >= 0 && !start)) {
         fprintf(stderr, "scaf flow: out of memory\n");
         rc = EXIT_NOMEM;
-    } else if ((rc = cli_check_closed_surface("flow", in, &m, "the flow")) == EXIT_OK) {
+    } else if ((rc = cli_check_closed_surface("flow", in, &m, "the flow")) == EXIT_OK &&
+               (rc = cli_unit_scale("flow", in, &m, &e)) == EXIT_OK) {
+        /* at unit scale (tools/cli_unit_scale); the flow normalizes the
+         * surface anyway, so the output needs no scaling back */
         rc = run_flow(&m, steps, delta, until_free, quiet, &g, start);
     }
     if (rc == EXIT_OK && cli_signal_report("flow")) rc = EXIT_CANCELLED;

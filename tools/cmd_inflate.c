@@ -15,6 +15,7 @@
  * self-intersections (nothing to mesh), 5 output not written, 6 numerical
  * failure, 7 out of memory, 8 interrupted.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +26,7 @@
 #include "base/json_write.h"
 #include "cli_args.h"
 #include "cli_closed_surface.h"
+#include "cli_unit_scale.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
@@ -183,7 +185,7 @@ static int run_inflate(const char *in, mesh *m, double K, int iterations,
 }
 
 /* The final tets: surface vertices at X, then the scaffold's own. */
-static scaf_status write_tets(const char *path, const volume_deform *vd, scaf_error *err)
+static scaf_status write_tets(const char *path, const volume_deform *vd, int e, scaf_error *err)
 {
     const scaffold_view *v = volume_deform_scaffold(vd);
     const signed char *inside = scaffold_tet_inside(vd->scaffold);
@@ -194,6 +196,7 @@ static scaf_status write_tets(const char *path, const volume_deform *vd, scaf_er
     if (st == SCAF_OK) {
         memcpy(P, volume_deform_positions(vd), sizeof(double) * 3 * (size_t)v->nmesh);
         memcpy(P + 3 * (size_t)v->nmesh, v->extra, sizeof(double) * 3 * (size_t)v->nextra);
+        for (size_t i = 0; i < 3 * (size_t)nv; i++) P[i] = ldexp(P[i], e); /* input's units */
         for (int t = 0; t < v->n; t++) label[t] = inside[t] ? 1 : 2;
         st = tet_medit_write(path, nv, P, v->n, v->simplices, label, err);
     }
@@ -280,6 +283,7 @@ static int inflate_main(int argc, char **argv)
     mesh m;
     mesh_read_info info;
     if ((rc = cli_read_mesh("inflate", in, quiet, &m, &info)) != EXIT_OK) return rc;
+    int e = 0;
     inflate_log g;
     memset(&g, 0, sizeof g);
     g.it = malloc(sizeof *g.it * (size_t)iterations);
@@ -290,8 +294,15 @@ static int inflate_main(int argc, char **argv)
     if (!g.it || (kp >= 0 && !start)) {
         fprintf(stderr, "scaf inflate: out of memory\n");
         rc = EXIT_NOMEM;
-    } else if ((rc = cli_check_closed_surface("inflate", in, &m, "inflate")) == EXIT_OK) {
+    } else if ((rc = cli_check_closed_surface("inflate", in, &m, "inflate")) == EXIT_OK &&
+               (rc = cli_unit_scale("inflate", in, &m, &e)) == EXIT_OK) {
+        /* at unit scale (tools/cli_unit_scale), multiplied back for the outputs */
         rc = run_inflate(in, &m, K, iterations, &o, quiet, &g, &vd);
+        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, m.V, 3 * (size_t)m.nv, e);
+        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, g.box_lo, 3, e);
+        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, g.box_hi, 3, e);
+        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, &g.diag0, 1, e);
+        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, &g.diag1, 1, e);
     }
     if (rc == EXIT_OK && cli_signal_report("inflate")) rc = EXIT_CANCELLED;
     if (rc == EXIT_OK) {
@@ -301,7 +312,8 @@ static int inflate_main(int argc, char **argv)
         rc = cli_outputs_end(&outs, k, path ? mesh_write_obj(path, &m, &err) : SCAF_ERR_IO, &err);
         if (rc == EXIT_OK && kt >= 0) {
             path = cli_outputs_begin(&outs, kt, &err);
-            rc = cli_outputs_end(&outs, kt, path ? write_tets(path, &vd, &err) : SCAF_ERR_IO, &err);
+            rc = cli_outputs_end(&outs, kt, path ? write_tets(path, &vd, e, &err) : SCAF_ERR_IO,
+                                 &err);
         }
         if (rc == EXIT_OK && kr >= 0) {
             path = cli_outputs_begin(&outs, kr, &err);

@@ -17,6 +17,7 @@
 #include "cli_args.h"
 #include "cli_closed_surface.h"
 #include "cli_mesh_io.h"
+#include "cli_unit_scale.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "exit_codes.h"
@@ -87,6 +88,11 @@ static int tet_main(int argc, char **argv)
         mesh_free(&m);
         return status;
     }
+    int e = 0; /* at unit scale (tools/cli_unit_scale), multiplied back below */
+    if ((status = cli_unit_scale("tet", in, &m, &e)) != EXIT_OK) {
+        mesh_free(&m);
+        return status;
+    }
     double lo[3], hi[3];
     tet_box_around(m.nv, m.V, scale, lo, hi);
     tet_box_mesh tm;
@@ -105,6 +111,11 @@ static int tet_main(int argc, char **argv)
         return EXIT_NOMEM;
     }
     for (int t = 0; t < tm.nt; t++) label[t] = tm.inside[t] ? 1 : 2;
+    if ((status = cli_unit_unscale("tet", in, tm.V, 3 * (size_t)tm.nv, e)) != EXIT_OK) {
+        free(label);
+        tet_box_mesh_free(&tm);
+        return status;
+    }
     const char *path = cli_outputs_begin(&outs, k, &err);
     s = path ? tet_medit_write(path, tm.nv, tm.V, tm.nt, tm.T, label, &err) : SCAF_ERR_IO;
     int rc = cli_outputs_end(&outs, k, s, &err);

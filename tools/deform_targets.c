@@ -271,7 +271,7 @@ scaf_status deform_targets_parse(const char *text, size_t size, const char *name
     memset(t, 0, sizeof *t);
     if (memchr(text, '\0', size) || text[size] != '\0')
         return err_set(err, SCAF_ERR_PARSE, "%s: contains a NUL byte (not a JSON text)", name);
-    interrupt_test_point("parse");
+    interrupt_test_point("targets");
     reader r = {text, name, 1, 0, NULL, -1, 0, t, err};
     scaf_status st = document(&r);
     if (st == SCAF_OK && r.path_len > 0) { /* handle-major -> frame-major */

@@ -8,6 +8,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -207,6 +208,79 @@ static void options_out_of_range_say_the_range(void **state)
     }
 }
 
+/* A tetrahedron's surface with corners 0, s e_x, s e_y, s e_z (text s). */
+static void write_tetra(const char *path, const char *s)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fprintf(f, "v 0 0 0\nv %s 0 0\nv 0 %s 0\nv 0 0 %s\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n", s, s,
+            s);
+    fclose(f);
+}
+
+/* issue 29: the 3D commands at 1e300 and 1e-300. `scaf tet` made TetGen
+ * assert (exit 70) at 1e300 and saw "facets intersect" at 1e-300;
+ * `flow` and `inflate` called face 0 "zero area". Now they work at unit
+ * scale (tools/cli_unit_scale): the tets check positive, the inflated
+ * surface is written in the input's units; a range a double cannot hold
+ * at once, or a box beyond the largest double, is exit 4 saying so. */
+static void three_d_commands_at_any_scale(void **state)
+{
+    (void)state;
+    char in[512], o[512], t[512], log[512];
+    test_tmp_path("extreme_tetra.obj", in, sizeof in);
+    test_tmp_path("extreme_tetra_out.obj", o, sizeof o);
+    test_tmp_path("extreme_tetra.mesh", t, sizeof t);
+    test_tmp_path("extreme_tetra.txt", log, sizeof log);
+    static const char *const scales[] = {"1e300", "1e-300", "3e-310"};
+    for (int i = 0; i < 3; i++) {
+        write_tetra(in, scales[i]);
+        assert_int_equal(test_run("%s tet %s -o %s -q", SCAF_BINARY, in, t), 0);
+        assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, t), 0);
+        assert_int_equal(test_run("%s flow %s -o %s --steps 2 -q", SCAF_BINARY, in, o), 0);
+        assert_int_equal(
+            test_run("%s inflate %s -o %s --scale 1.5 -n 3 -q --tets %s", SCAF_BINARY, in, o, t),
+            0);
+        assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, t), 0);
+        /* in the input's units: the largest coordinate within 4x of s */
+        char *out = test_slurp(o);
+        assert_non_null(out);
+        double big = 0.0, sc = strtod(scales[i], NULL);
+        for (const char *p = out; (p = strstr(p, "v ")) != NULL; p += 2) {
+            double x, y, z;
+            if (sscanf(p, "v %lf %lf %lf", &x, &y, &z) == 3)
+                big = fmax(big, fmax(fabs(x), fmax(fabs(y), fabs(z))));
+        }
+        free(out);
+        assert_true(big > sc / 4 && big < sc * 4);
+    }
+    /* 1e308: the box around it is beyond the largest double */
+    write_tetra(in, "1e308");
+    assert_int_equal(test_run("%s tet %s -o %s -q 2> %s", SCAF_BINARY, in, t, log), 4);
+    char *e = test_slurp(log);
+    assert_non_null(e);
+    assert_non_null(strstr(e, "beyond the largest double"));
+    free(e);
+    /* 1e300 and 1e-300 in one surface: more than a double holds at once */
+    FILE *f = fopen(in, "w");
+    assert_non_null(f);
+    fputs("v 1e-300 0 0\nv 1e300 0 0\nv 0 1e300 0\nv 0 0 1e300\nf 1 3 2\nf 1 2 4\nf 1 4 "
+          "3\nf 2 3 4\n",
+          f);
+    fclose(f);
+    static const char *const cmds[] = {"tet %s -o %s -q 2> %s",
+                                       "inflate %s -o %s.obj --scale 1.5 -q 2> %s"};
+    for (int c = 0; c < 2; c++) {
+        char fmt[128];
+        snprintf(fmt, sizeof fmt, "%%s %s", cmds[c]);
+        assert_int_equal(test_run(fmt, SCAF_BINARY, in, t, log), 4);
+        e = test_slurp(log);
+        assert_non_null(e);
+        assert_non_null(strstr(e, "the coordinates range from 1e-300 to 1e+300"));
+        free(e);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -216,6 +290,7 @@ int main(void)
         cmocka_unit_test(atlas_smallest_padding_runs),
         cmocka_unit_test(options_out_of_range_say_the_range),
         cmocka_unit_test(one_degeneracy_verdict_at_any_scale),
+        cmocka_unit_test(three_d_commands_at_any_scale),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
