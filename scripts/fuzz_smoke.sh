@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Bounded fuzz smoke run of every fuzz/fuzz_* target (libFuzzer, clang):
 # mesh readers, topology, CDT, the optimizer on tiny binary meshes, the
-# `scaf deform --targets` JSON reader (also with long paths), and
+# `scaf deform --targets` JSON reader (also with long paths), the save path
+# of `scaf edit` (fuzz_edit_save: request bodies, the input moved, deleted,
+# rewritten with random text, the output linked to it), and
 # the `scaf` commands' option values on meshes with extreme coordinates.
 # By default the run is deterministic (what CI needs: the same inputs every
 # run, so a red run is never the luck of the draw): libFuzzer with a fixed
@@ -34,6 +36,7 @@ runs_of() {
     fuzz_topology) echo 700000 ;;
     fuzz_deform_targets) echo 1000000 ;;
     fuzz_deform_paths) echo 1000 ;; # each input expands to up to 65536 path points
+    fuzz_edit_save) echo 600 ;; # each save syncs a file: ~10-50 runs a second
     *) echo 10000 ;;
   esac
 }
