@@ -3,13 +3,15 @@
  * line search: base/parallel) and of the dense kernels of the sparse
  * Cholesky factorization (scaf_set_threads).
  *
- * Results are the same bits for any N (so the same command gives the
- * same file on every machine, whatever its cores): scaf's reductions are
- * cut into chunks by their size only and added in chunk order
- * (base/parallel), the factorization's tree is cut into a fixed number of
- * bins that N threads work (opt/supernodal_plan), and OpenBLAS runs
+ * Every sum over simplices is the same bits for any N (cut into chunks by
+ * its size only, added in chunk order: base/parallel), and OpenBLAS runs
  * one-threaded inside scaf's kernels (its split of a product changes with
- * its thread count). CHOLMOD's
+ * its thread count); the factorization's tree is cut into N bins, so
+ * outputs for different N may differ in the last bits, unless
+ * --deterministic (scaf_set_deterministic) fixes the bins at
+ * OPT_SNUM_BINS: then the same bytes for any N, at a cost per iteration
+ * (bench/RESULTS-param.md, session 16). The same N gives the same bytes
+ * run after run. CHOLMOD's
  * own OpenMP loops stay at one thread whatever N (they only move data;
  * opt/cholmod_solver.c says why that pays). */
 #ifndef SCAF_TOOLS_CLI_THREADS_H

@@ -106,7 +106,10 @@ static void usage(FILE *o)
             "  --threads N              threads of the per-triangle work (assembly, line\n"
             "                           search) and of the solver's dense kernels (default:\n"
             "                           all cores, or OPENBLAS_NUM_THREADS when set); the\n"
-            "                           output is the same bytes for any N\n"
+            "                           same N gives the same bytes\n"
+            "  --deterministic          the same bytes for any --threads N (the\n"
+            "                           factorization's tree cut into 4 bins whatever N;\n"
+            "                           slower, most with one thread)\n"
             "  --report FILE.json       per-iteration energy, gap and packing efficiency,\n"
             "                           before/after compaction, per-chart distortion\n"
             "  --svg FILE               picture of the atlas, charts in distinct colours\n"
@@ -246,6 +249,8 @@ static int atlas_main(int argc, char **argv)
             NEED_VALUE();
             if (!cli_parse_int(v, &threads)) BAD_VALUE();
             if (threads < 1) CLI_OUT_OF_RANGE("atlas", ">= 1");
+        } else if (!strcmp(a, "--deterministic")) {
+            scaf_set_deterministic(1);
         } else if (!strcmp(a, "--report")) {
             NEED_VALUE();
             report = v;

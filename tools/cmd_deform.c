@@ -65,8 +65,8 @@ static void usage(FILE *o)
             "  --verify               check bijectivity exactly after every iteration\n"
             "  --quiet                no summary on stderr\n"
             "  --threads N            threads of the per-triangle work and of the\n"
-            "                         factorization (default 1); the output is the same\n"
-            "                         bytes for any N\n"
+            "                         factorization (default 1)\n"
+            "  --deterministic        the same bytes for any --threads N (slower)\n"
             "  --report FILE.json     energy, max_handle_error, iterations, stop_reason and\n"
             "                         per-iteration history\n"
             "  --svg FILE             picture of the deformed mesh\n"
@@ -132,6 +132,8 @@ static int parse_args(int argc, char **argv, deform_args *o)
             CLI_NEED_VALUE("deform");
             if (!cli_parse_int(v, &o->threads)) CLI_BAD_VALUE("deform");
             if (o->threads < 1) CLI_OUT_OF_RANGE("deform", ">= 1");
+        } else if (!strcmp(a, "--deterministic")) {
+            scaf_set_deterministic(1);
         } else if (cli_take_input("deform", a, &o->in) != EXIT_OK) {
             return EXIT_USAGE;
         }

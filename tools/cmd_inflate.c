@@ -44,7 +44,7 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: scaf inflate IN -o OUT.obj --scale K [--iterations N] [--tets OUT.mesh]\n"
             "                    [--report R.json] [--png P.png [--png-size N]] [--box-scale S]\n"
-            "                    [--solver slim|newton] [--threads N] [--quiet]\n"
+            "                    [--solver slim|newton] [--threads N] [--deterministic] [--quiet]\n"
             "\n"
             "Grow the closed surface IN toward K times its size (scaled about its centroid)\n"
             "inside a fixed box around it: the 3D SCAF loop, with tetrahedra filling the box\n"
@@ -58,7 +58,8 @@ static void usage(FILE *out)
             "  -k, --scale K      the target's size factor, > 0 (< 1 shrinks)\n"
             "  -n, --iterations N iterations, 1..%d (default 50)\n"
             "  --threads N        threads of the per-tet work and of the factorization\n"
-            "                     (default 1); the output is the same bytes for any N\n"
+            "                     (default 1)\n"
+            "  --deterministic    the same bytes for any --threads N (slower)\n"
             "  --tets FILE        also write the final tets (MEDIT .mesh; label 1 inside\n"
             "                     the surface, 2 outside)\n"
             "  --report FILE      a JSON report: the box, the bounding-box diagonal before\n"
@@ -247,6 +248,8 @@ static int inflate_main(int argc, char **argv)
             CLI_NEED_VALUE("inflate");
             if (!cli_parse_int(v, &threads)) CLI_BAD_VALUE("inflate");
             if (threads < 1) CLI_OUT_OF_RANGE("inflate", ">= 1");
+        } else if (!strcmp(a, "--deterministic")) {
+            scaf_set_deterministic(1);
         } else if (!strcmp(a, "--tets")) {
             CLI_NEED_VALUE("inflate");
             tets = v;
@@ -277,8 +280,7 @@ static int inflate_main(int argc, char **argv)
     if (rc != EXIT_OK) return rc;
     /* one thread unless asked: the 3D systems are small next to their
      * assembly and line search, and idle OpenBLAS threads spin (bunny x30:
-     * 12% of the time in sched_yield with two); the bits are the same for
-     * any count */
+     * 12% of the time in sched_yield with two) */
     scaf_set_threads(threads);
     mesh m;
     mesh_read_info info;

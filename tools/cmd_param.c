@@ -87,7 +87,10 @@ static void usage(FILE *o)
             "  --threads N            threads of the per-triangle work (assembly, line\n"
             "                         search) and of the solver's dense kernels (default:\n"
             "                         all cores, or OPENBLAS_NUM_THREADS when set); the\n"
-            "                         output is the same bytes for any N\n"
+            "                         same N gives the same bytes\n"
+            "  --deterministic        the same bytes for any --threads N (the\n"
+            "                         factorization's tree cut into 4 bins whatever N;\n"
+            "                         slower, most with one thread)\n"
             "  --report FILE.json     options, per-iteration energy and time, phase split\n"
             "  --svg FILE             picture of the UV layout shaded by distortion\n"
             "  --svg-scaffold         also draw the scaffold in the picture\n"
@@ -239,6 +242,8 @@ static int parse_args(int argc, char **argv, param_args *o)
             NEED_VALUE();
             if (!cli_parse_int(v, &o->threads)) BAD_VALUE();
             if (o->threads < 1) CLI_OUT_OF_RANGE("param", ">= 1");
+        } else if (!strcmp(a, "--deterministic")) {
+            scaf_set_deterministic(1);
         } else if (!strcmp(a, "--report")) {
             NEED_VALUE();
             o->report = v;

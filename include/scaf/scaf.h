@@ -51,12 +51,21 @@ SCAF_API const char *scaf_version(void);
  * process, every handle. n >= 1: n threads; n = 0: every core the process
  * may run on. Until called, the per-simplex work runs in one thread and
  * OpenBLAS's own default holds (all cores, or OPENBLAS_NUM_THREADS).
- * Results are the same bits for every count (sums are cut by their length
- * only, the factorization into a fixed number of bins, and OpenBLAS runs
- * one-threaded inside scaf's kernels). Returns the BLAS's count now in effect, 0 when the BLAS has no
- * such setting (the per-simplex count is set all the same), -1 for n < 0
- * (nothing changed). */
+ * Results are the same run after run for the same count; every sum over
+ * simplices is the same bits for any count, but the factorization's cut
+ * follows the count unless scaf_set_deterministic(1) (below), so
+ * different counts may differ in the last digits. Returns the BLAS's
+ * count now in effect, 0 when the BLAS has no such setting (the
+ * per-simplex count is set all the same), -1 for n < 0 (nothing changed). */
 SCAF_API int scaf_set_threads(int n);
+
+/* on != 0: results are the same bits for every thread count (the sparse
+ * factorization's tree is cut into a fixed number of bins, which the
+ * threads take in turn, instead of one per thread); costs time per
+ * iteration, most with one thread (bench/RESULTS-param.md, session 16).
+ * Process-wide; applies to factorizations of patterns analyzed after the
+ * call. Until called: off. */
+SCAF_API void scaf_set_deterministic(int on);
 
 /* ------------------------------------------------------------------------
  * Bijective parametrization (SCAF).

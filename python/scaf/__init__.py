@@ -27,7 +27,7 @@ from ._errors import (Cancelled, Error, InputError, InternalError, MeshError, Nu
                       OutOfMemory, UsageError)
 from ._core import (Atlas, AtlasIterationInfo, AtlasResult, IterationInfo, Param, ParamResult,
                     __version__, atlas, default_atlas_options, default_options, library_path,
-                    param, set_threads)
+                    param, set_threads, set_deterministic)
 from ._drag import Drag, DragChartInfo, DragOutput, default_drag_options
 from . import _lib
 from .obj import read_obj
@@ -40,8 +40,9 @@ __all__ = [
     "param", "atlas", "Param", "Atlas", "ParamResult", "AtlasResult", "IterationInfo",
     "AtlasIterationInfo", "default_options", "default_atlas_options", "read_obj", "Error",
     "UsageError", "InputError", "MeshError", "NumericError", "OutOfMemory", "Cancelled",
-    "InternalError", "library_path", "__version__", "ENERGIES", "INITS", "set_threads", "Drag",
-    "DragChartInfo", "DragOutput", "default_drag_options", "split_seams",
+    "InternalError", "library_path", "__version__", "ENERGIES", "INITS", "set_threads",
+    "set_deterministic", "Drag", "DragChartInfo", "DragOutput", "default_drag_options",
+    "split_seams",
 ]
 
 # Show the public names as scaf.X (in tracebacks and reprs), not scaf._core.X.

@@ -141,11 +141,19 @@ def set_threads(n=0):
     """Threads of the per-triangle work (assembly, energies, line search)
     and of the sparse solver's dense kernels for the whole process
     (scaf_set_threads): n >= 1 threads, 0 = every core this process may run
-    on. Results are the same bits whatever the count. Returns the count in effect (0: the BLAS
-    has no such setting)."""
+    on. The same count gives the same numbers run after run; different
+    counts the same bits only after set_deterministic(True). Returns the
+    count in effect (0: the BLAS has no such setting)."""
     if isinstance(n, bool) or not isinstance(n, int) or n < 0:
         raise UsageError("set_threads: n must be an int >= 0 (0 = all cores), not %r" % (n,))
     return lib.scaf_set_threads(n)
+
+
+def set_deterministic(on=True):
+    """The same bits for every thread count (scaf_set_deterministic): the
+    factorization's tree is cut into a fixed number of bins instead of one
+    per thread; slower, most with one thread. Process-wide."""
+    lib.scaf_set_deterministic(1 if on else 0)
 
 
 # --- progress ----------------------------------------------------------------

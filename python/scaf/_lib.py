@@ -178,6 +178,7 @@ SIGNATURES = {
     "scaf_status_name": (ctypes.c_char_p, [c_enum]),
     "scaf_version": (ctypes.c_char_p, []),
     "scaf_set_threads": (_int, [_int]),
+    "scaf_set_deterministic": (None, [_int]),
     "scaf_stop_reason_name": (ctypes.c_char_p, [c_enum]),
     "scaf_options_default": (Options, []),
     "scaf_param_new": (_P, [ctypes.POINTER(Options)]),

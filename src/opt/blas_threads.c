@@ -5,6 +5,7 @@
 #include "opt/blas_threads.h"
 
 #include <sched.h>
+#include <stdatomic.h>
 #include <unistd.h>
 
 #include "base/parallel.h"
@@ -35,6 +36,12 @@ int scaf_set_threads(int n)
     openblas_set_num_threads(t);
     return opt_blas_threads();
 }
+
+static atomic_int deterministic = 0;
+
+void scaf_set_deterministic(int on) { atomic_store(&deterministic, on != 0); }
+
+int opt_deterministic(void) { return atomic_load(&deterministic); }
 
 int opt_blas_serial_begin(void)
 {

@@ -6,6 +6,11 @@
 #ifndef SCAF_OPT_BLAS_THREADS_H
 #define SCAF_OPT_BLAS_THREADS_H
 
+/* Whether scaf_set_deterministic asked for the same bits at every thread
+ * count (opt/cholmod_solver then plans OPT_SNUM_BINS bins, not one per
+ * thread). */
+int opt_deterministic(void);
+
 /* Cores this process may run on (its CPU affinity), at least 1. */
 int opt_blas_cores(void);
 

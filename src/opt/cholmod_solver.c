@@ -534,13 +534,16 @@ static scaf_status factor_numeric(opt_chol *c, const opt_csc *A, const double *b
     c->factored = 0;
     int ok;
     if (c->own_numeric && c->L->is_super && !c->snum) {
-        /* values for the supernodal L L^T factor, then the plan (its
-         * bins fixed, not the thread count: the same factor for any);
-         * without a plan (out of memory) cholmod_factorize does the work */
+        /* values for the supernodal L L^T factor, then the plan: one bin
+         * per thread of scaf's loops (base/parallel), or, deterministic,
+         * OPT_SNUM_BINS whatever the count (the same factor for any; one
+         * thread then pays for the cut, bench/RESULTS-param.md session
+         * 16); without a plan (out of memory) cholmod_factorize does the
+         * work */
         if (c->L->xtype == CHOLMOD_PATTERN) lend_values(c);
+        int bins = opt_deterministic() ? OPT_SNUM_BINS : par_threads();
         if (c->L->xtype == CHOLMOD_REAL && c->L->is_ll)
-            c->snum =
-                opt_snum_create_kept(c->L, A, OPT_SNUM_BINS, c->nfixed, c->fixed_pattern, &c->kept);
+            c->snum = opt_snum_create_kept(c->L, A, bins, c->nfixed, c->fixed_pattern, &c->kept);
         if (c->snum) c->st.kept_scatters += c->snum->kept_reused;
     }
     if (c->snum) {

@@ -9,13 +9,14 @@
  *     supernodes above the cut follow, in one thread, which cuts the large
  *     ones into B shares for the threads (top_parallel);
  *   - each bin's (and share's) workspaces.
- * B is the caller's (opt/cholmod_solver: OPT_SNUM_BINS), not the thread
- * count: the bins and shares are worked by however many threads
- * base/parallel has, one bin or share whole in one thread, and every
- * value is computed the same way whichever thread does it. So the factor
- * and the solves are the same bits for any thread count (the same output
- * on every machine), and one thread runs the same bins one after another. Supernode s holds columns
- * [super[s], super[s+1]) as a dense column-major block of nsrow x nscol
+ * B is the caller's (opt/cholmod_solver: the thread count, or
+ * OPT_SNUM_BINS when deterministic), not necessarily the thread count:
+ * the bins and shares are worked by however many threads base/parallel
+ * has, one bin or share whole in one thread, and every value is computed
+ * the same way whichever thread does it. So for a given B the factor and
+ * the solves are the same bits for any thread count (the same output
+ * on every machine), and one thread runs the same bins one after another.
+ * Supernode s holds columns [super[s], super[s+1]) as a dense column-major block of nsrow x nscol
  * values at x + px[s]; its rows are s[pi[s] .. pi[s+1]), its own columns
  * first, then the rows below, ascending. The struct is shared by the
  * factorization and the solve only.
@@ -67,10 +68,11 @@ typedef struct opt_snum {
  * block took 1.65 ms shared against 1.29 ms in one thread. */
 #define OPT_SNUM_DIAG_SHARE_MIN 4194304.0
 
-/* Bins of the plans of opt/cholmod_solver: fixed, so that the factor does
- * not change with the thread count. Threads beyond it do not speed up the
- * factorization; fewer run the bins in turn (one thread: factorization
- * about as fast as with no cut, see bench/RESULTS-param.md, session 16). */
+/* Bins of the deterministic plans of opt/cholmod_solver
+ * (scaf_set_deterministic): fixed, so that the factor does not change with
+ * the thread count. Threads beyond it do not speed up the factorization;
+ * fewer run the bins in turn (one thread pays for the cut and for scaf's
+ * small update kernel: bench/RESULTS-param.md, session 16). */
 #define OPT_SNUM_BINS 4
 
 /* Plan for matrices with A's pattern (upper, natural order) on L, a

@@ -1,16 +1,18 @@
-/* End-to-end: `--threads N` of `scaf param`, `scaf atlas`, `scaf deform`
- * and `scaf inflate` (tools/cli_threads). The output is the same bytes
- * for N = 1, 2 and 3 (issue 29: the default is every core, and a file
- * must not depend on the machine it was made on), and the same run after
- * run, and with the default count (every core for param and atlas); the
- * maps are bijective (`scaf check`); N < 1 or a non-number is a usage error (exit 2)
- * with no output. The inputs are small (seconds under ASan) and the runs
- * set SCAF_MIN_CHUNK=64 (tools/main.c: loops cut into chunks of 64
- * simplices instead of 4096), so every parallel path is taken: chunked
- * sums, parallel fills, a factorization tree cut into bins with shared
+/* End-to-end: `--threads N` and `--deterministic` of `scaf param`, `scaf
+ * atlas`, `scaf deform` and `scaf inflate` (tools/cli_threads). With
+ * --deterministic the output is the same bytes for N = 1, 2 and 3 and for
+ * the default count (issue 29: the default is every core, and a file must
+ * be able not to depend on the machine it was made on); without it, the
+ * same N gives the same bytes run after run; the maps are bijective
+ * (`scaf check`); N < 1 or a non-number is a usage error (exit 2) with no
+ * output. The inputs are small (seconds under ASan) and the runs set
+ * SCAF_MIN_CHUNK=64 (tools/main.c: loops cut into chunks of 64 simplices
+ * instead of 4096), so every parallel path is taken: chunked sums,
+ * parallel fills, a factorization tree cut into bins with shared
  * supernodes above the cut. On the code before (02ab067) param and atlas
- * gave three different files; with the sums' chunks following the thread
- * count again, or the factorization's bins, all four commands do. */
+ * gave three different files (and knew no --deterministic); with the
+ * sums' chunks following the thread count again, or the deterministic
+ * factorization's bins, all four commands do. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -57,16 +59,22 @@ static void run_threads_case(const threads_case *c)
     test_tmp_path(name, in, sizeof in);
     assert_int_equal(test_run("%s gen %s -o %s", SCAF_BINARY, c->sample, in), 0);
 
-    char *one = run_out(c, in, "1", "OPENBLAS_NUM_THREADS=1", "--threads 1");
-    char *two = run_out(c, in, "2", "OPENBLAS_NUM_THREADS=1", "--threads 2");
-    char *three = run_out(c, in, "3", "OPENBLAS_NUM_THREADS=1", "--threads 3");
-    char *again = run_out(c, in, "3b", "OPENBLAS_NUM_THREADS=3", "--threads 3");
-    char *dflt = run_out(c, in, "default", "env -u OPENBLAS_NUM_THREADS", "");
+    char *one = run_out(c, in, "1", "OPENBLAS_NUM_THREADS=1", "--threads 1 --deterministic");
+    char *two = run_out(c, in, "2", "OPENBLAS_NUM_THREADS=1", "--threads 2 --deterministic");
+    char *three = run_out(c, in, "3", "OPENBLAS_NUM_THREADS=1", "--threads 3 --deterministic");
+    char *again = run_out(c, in, "3b", "OPENBLAS_NUM_THREADS=3", "--threads 3 --deterministic");
+    char *dflt = run_out(c, in, "default", "env -u OPENBLAS_NUM_THREADS", "--deterministic");
     assert_true(strlen(one) > 100);
     assert_string_equal(one, two);
     assert_string_equal(one, three);
     assert_string_equal(one, again);
     assert_string_equal(one, dflt);
+    /* without --deterministic: the same bytes for the same N */
+    char *two_a = run_out(c, in, "2a", "OPENBLAS_NUM_THREADS=1", "--threads 2");
+    char *two_b = run_out(c, in, "2b", "OPENBLAS_NUM_THREADS=2", "--threads 2");
+    assert_string_equal(two_a, two_b);
+    free(two_a);
+    free(two_b);
     free(dflt);
     free(one);
     free(two);
