@@ -9,6 +9,7 @@
 #ifndef SCAF_TOOLS_CLI_SEAMS_H
 #define SCAF_TOOLS_CLI_SEAMS_H
 
+#include "cli_outputs.h"
 #include "mesh/mesh.h"
 #include "mesh/seam_edges.h"
 #include "scaf/scaf.h"
@@ -20,6 +21,10 @@
     "                         seams plus cuts where a chart is not a disk); default:\n"            \
     "                         input when the vt cut the mesh into disks, else auto\n"
 
+#define CLI_SEAMS_PNG_HELP                                                                         \
+    "  --png-seams FILE       the 3D surface from the front and from the back, each\n"             \
+    "                         chart in its own colour, the seams drawn dark\n"
+
 /* "input" / "auto" / "extend": 1 and *out set; else 0. */
 int cli_seams_parse(const char *v, scaf_seams *out);
 
@@ -29,5 +34,13 @@ int cli_seams_parse(const char *v, scaf_seams *out);
  * (message printed). */
 int cli_seams_report(const char *cmd, const mesh *m, const int *FT, scaf_seams used,
                      const char *why, int charts, int quiet, seam_edges *s);
+
+/* --png-seams: two panels of 512 x 512 (the surface seen from the front
+ * and, turned half a turn about the vertical, from the back; app/
+ * surface_render), faces in the colour of their chart (face_chart, the
+ * atlas's colours), the seams s drawn dark, into output k of outs (k < 0:
+ * nothing). 0, or the exit status after printing why. */
+int cli_seams_png(cli_outputs *outs, int k, const mesh *m, const int *face_chart,
+                  const seam_edges *s);
 
 #endif

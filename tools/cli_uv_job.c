@@ -15,6 +15,7 @@ int cli_uv_job_start(cli_uv_job *j, const char *cmd, const char *in, const cli_u
     *m = (mesh){0};
     cli_outputs_init(&j->outs, cmd, in);
     cli_outputs_add_input(&j->outs, p->extra_input_option, p->extra_input);
+    j->png_seams = cli_outputs_add(&j->outs, "--png-seams", p->png_seams, CLI_OUTPUT_FILE);
     int rc = cli_outputs_uv(&j->outs, p->out, p->svg, p->png, p->report, &j->k);
     if (rc != EXIT_OK) return rc;
     rc = cli_read_mesh(cmd, in, quiet, m, &j->rinfo);

@@ -20,6 +20,7 @@ typedef struct cli_uv_job {
     const char *cmd, *in;
     cli_outputs outs; /* commit or abort them at the end */
     cli_uv_outputs k;
+    int png_seams;        /* output index of --png-seams (-1: not asked for) */
     mesh_read_info rinfo; /* what reading the input said */
 } cli_uv_job;
 
@@ -30,6 +31,7 @@ typedef struct cli_uv_job {
 typedef struct cli_uv_job_paths {
     const char *out, *svg, *png, *report;
     const char *extra_input_option, *extra_input;
+    const char *png_seams; /* --png-seams (cli_seams), or NULL */
 } cli_uv_job_paths;
 
 int cli_uv_job_start(cli_uv_job *j, const char *cmd, const char *in, const cli_uv_job_paths *p,

@@ -75,6 +75,8 @@ static void usage(FILE *o)
             "  --split-charts           split the chart filling least of its least-area box\n"
             "                           while below 0.45, one a round (default for automatic\n"
             "                           seams; --no-split-charts: never)\n"
+            "  --png-seams FILE         the 3D surface from the front and from the back,\n"
+            "                           each chart in its --png colour, seams drawn dark\n"
             "  --padding P              minimum distance between two charts, in units of the\n"
             "                           unit square (default K / R below: 4 / 1024 =\n"
             "                           0.00390625; --padding 0: charts only never overlap)\n"
@@ -172,7 +174,7 @@ static unsigned chart_colour(int f, const void *ctx)
 
 static int atlas_main(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL;
+    const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL, *png_seams = NULL;
     int quiet = 0, threads = 0; /* threads 0: the default (cli_threads_apply) */
     double resolution = 0.0, texels = -1.0, padding = -1.0;
     atlas_options opt = atlas_options_default();
@@ -241,6 +243,9 @@ static int atlas_main(int argc, char **argv)
         } else if (!strcmp(a, "--seams")) {
             NEED_VALUE();
             if (!cli_seams_parse(v, &opt.base.seams)) BAD_VALUE();
+        } else if (!strcmp(a, "--png-seams")) {
+            NEED_VALUE();
+            png_seams = v;
         } else if (!strcmp(a, "--no-rotate")) {
             opt.rotate = 0;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
@@ -296,7 +301,7 @@ static int atlas_main(int argc, char **argv)
     /* every output checked before any work; written all together at the end */
     double t_start = timer_now();
     cli_uv_job job;
-    cli_uv_job_paths paths = {out, svg, png.path, report, NULL, NULL};
+    cli_uv_job_paths paths = {out, svg, png.path, report, NULL, NULL, png_seams};
     mesh m;
     int read_rc = cli_uv_job_start(&job, "atlas", in, &paths, quiet, &m);
     if (read_rc != EXIT_OK) return read_rc;
@@ -375,6 +380,7 @@ static int atlas_main(int argc, char **argv)
                              &png.opt)) != EXIT_OK)
         goto done;
     double total = timer_now() - t_start;
+    if ((rc = cli_seams_png(&job.outs, job.png_seams, &m, a.chart, &seams)) != EXIT_OK) goto done;
     if (report) {
         seam_report sr = {a.seams_used, a.seams_why, a.ncharts, a.nf, a.chart, &seams};
         atlas_report r = {in, out, &a, resolution, setup, total, gap, eff, ps.n, ps.it, &sr};

@@ -263,7 +263,7 @@ static int deform_main(int argc, char **argv)
 
     /* every output checked before any work; written all together at the end */
     cli_uv_job job;
-    cli_uv_job_paths paths = {a.out, a.svg, a.png.path, a.report, "--targets", a.targets};
+    cli_uv_job_paths paths = {a.out, a.svg, a.png.path, a.report, "--targets", a.targets, NULL};
     mesh m;
     if ((rc = cli_uv_job_start(&job, "deform", a.in, &paths, a.quiet, &m)) != EXIT_OK) return rc;
     scaf_error err;

@@ -75,7 +75,7 @@ static void usage(FILE *o)
             "                         itself: camel_b); when one does not, the stop\n"
             "                         reason and the final criterion say how far it is\n"
             "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n");
-    fputs(CLI_SEAMS_HELP, o);
+    fputs(CLI_SEAMS_HELP CLI_SEAMS_PNG_HELP, o);
     fprintf(o,
             "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
             "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01;\n"
@@ -168,7 +168,7 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
 
 /* The command line of `scaf param`. */
 typedef struct param_args {
-    const char *in, *out, *report, *svg;
+    const char *in, *out, *report, *svg, *png_seams;
     int quiet, svg_scaffold, verify;
     int threads; /* --threads N, 0 = the default (cli_threads_apply) */
     scaf_options_t opt;
@@ -227,6 +227,9 @@ static int parse_args(int argc, char **argv, param_args *o)
         } else if (!strcmp(a, "--seams")) {
             NEED_VALUE();
             if (!cli_seams_parse(v, &o->opt.seams)) BAD_VALUE();
+        } else if (!strcmp(a, "--png-seams")) {
+            NEED_VALUE();
+            o->png_seams = v;
         } else if (!strcmp(a, "--box-scale")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &o->opt.box_scale)) BAD_VALUE();
@@ -293,7 +296,7 @@ static int param_main(int argc, char **argv)
     double t_start = timer_now();
     /* every output checked before any work; written all together at the end */
     cli_uv_job job;
-    cli_uv_job_paths paths = {out, svg, png.path, report, NULL, NULL};
+    cli_uv_job_paths paths = {out, svg, png.path, report, NULL, NULL, args.png_seams};
     mesh m;
     int read_rc = cli_uv_job_start(&job, "param", in, &paths, quiet, &m);
     if (read_rc != EXIT_OK) return read_rc;
@@ -428,6 +431,19 @@ static int param_main(int argc, char **argv)
         rc = cli_uv_job_png(&job, pm.nuv, pm.uv, pm.nf, pm.FT, energy_colour, E, m.nv, m.V, m.F,
                             &png.opt);
         free(E);
+        if (rc != EXIT_OK) goto done;
+    }
+    if (job.png_seams >= 0) {
+        /* the chart of every face: the pieces of the output's UV topology */
+        int *fc = malloc(sizeof(int) * (size_t)m.nf), nc = 0;
+        if (!fc || chart_gap_labels(nuv, m.nf, FT, fc, &nc, &err) != SCAF_OK) {
+            fprintf(stderr, "scaf param: %s\n", fc ? err.message : "out of memory");
+            free(fc);
+            rc = fc ? exit_code_for(err.code) : EXIT_NOMEM;
+            goto done;
+        }
+        rc = cli_seams_png(&job.outs, job.png_seams, &m, fc, &seams);
+        free(fc);
         if (rc != EXIT_OK) goto done;
     }
     if (report) {

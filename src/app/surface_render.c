@@ -106,6 +106,13 @@ static scaf_status check_surface(const surface_view *s, int panel, scaf_error *e
                                "picture panel %d: vertex %d has a non-finite coordinate", panel + 1,
                                v);
         }
+    if (s->nlines < 0 || (s->nlines > 0 && !s->lines))
+        return err_set(err, SCAF_ERR_USAGE, "picture panel %d: %d lines", panel + 1, s->nlines);
+    for (int i = 0; i < 2 * s->nlines; i++)
+        if (s->lines[i] < 0 || s->lines[i] >= s->nv)
+            return err_set(err, SCAF_ERR_MESH,
+                           "picture panel %d: line %d references vertex %d but there are %d",
+                           panel + 1, i / 2, s->lines[i], s->nv);
     return SCAF_OK;
 }
 
@@ -141,7 +148,7 @@ static void camera_frame(camera *c, int n, const surface_view *s, const surface_
  * 0 for a zero-area face or one seen edge-on. p receives the pixel
  * positions counter-clockwise on screen, z their depths (larger = nearer). */
 static int face_setup(const camera *c, const double *x[3], double p[3][2], double z[3],
-                      unsigned char rgb[3])
+                      const unsigned char *front_base, unsigned char rgb[3])
 {
     for (int k = 0; k < 3; k++) {
         p[k][0] = c->ox + (dot3(x[k], c->right) - c->cx) * c->scale;
@@ -156,7 +163,7 @@ static int face_setup(const camera *c, const double *x[3], double p[3][2], doubl
     normalize3(n);
     /* pixel y points down: a face turned toward the viewer is clockwise on screen */
     int front = o < 0.0;
-    const unsigned char *base = front ? front_rgb : back_rgb;
+    const unsigned char *base = front ? front_base : back_rgb;
     double lit = dot3(n, c->light) * (front ? 1.0 : -1.0);
     double t = ambient + diffuse * (lit > 0.0 ? lit : 0.0);
     for (int k = 0; k < 3; k++) rgb[k] = (unsigned char)lround(base[k] * t);
@@ -166,6 +173,41 @@ static int face_setup(const camera *c, const double *x[3], double p[3][2], doubl
         p[2][0] = tp[0], p[2][1] = tp[1], z[2] = tz;
     }
     return 1;
+}
+
+/* The lines of s (seams) over its drawn faces: sampled every half pixel,
+ * a sample drawn (2 x 2 pixels, dark) where it is not behind the surface
+ * by more than 2 pixels' worth of depth, so a line on the visible side
+ * shows and one on the far side does not. */
+static void draw_lines(const camera *c, const surface_view *s, const surface_render_options *o,
+                       unsigned char *rgb, int stride, int x0, const double *zbuf)
+{
+    int W = o->width, H = o->height;
+    double slack = 2.0 / c->scale;
+    for (int e = 0; e < s->nlines; e++) {
+        double p[2][2], z[2];
+        for (int k = 0; k < 2; k++) {
+            const double *x = s->V + 3 * (size_t)s->lines[2 * e + k];
+            p[k][0] = c->ox + (dot3(x, c->right) - c->cx) * c->scale;
+            p[k][1] = c->oy - (dot3(x, c->up) - c->cy) * c->scale;
+            z[k] = dot3(x, c->view);
+        }
+        double len = hypot(p[1][0] - p[0][0], p[1][1] - p[0][1]);
+        int n = (int)ceil(2.0 * len) + 1;
+        for (int t = 0; t <= n; t++) {
+            double a = (double)t / n;
+            double px = p[0][0] + a * (p[1][0] - p[0][0]), py = p[0][1] + a * (p[1][1] - p[0][1]);
+            double depth = z[0] + a * (z[1] - z[0]);
+            int i0 = (int)floor(px - 0.5), j0 = (int)floor(py - 0.5);
+            for (int j = j0; j <= j0 + 1; j++)
+                for (int i = i0; i <= i0 + 1; i++) {
+                    if (i < 0 || j < 0 || i >= W || j >= H) continue;
+                    if (depth + slack < zbuf[(size_t)j * W + i]) continue;
+                    unsigned char *q = rgb + 3 * ((size_t)j * stride + (size_t)(x0 + i));
+                    q[0] = 30, q[1] = 30, q[2] = 30;
+                }
+        }
+    }
 }
 
 /* Draw surface s into the columns [x0, x0 + o->width) of the picture. */
@@ -178,8 +220,13 @@ static void draw_panel(const camera *c, const surface_view *s, const surface_ren
         const double *x[3];
         for (int k = 0; k < 3; k++) x[k] = s->V + 3 * (size_t)s->F[3 * (size_t)f + k];
         double p[3][2], z[3];
-        unsigned char col[3];
-        if (!face_setup(c, x, p, z, col)) continue;
+        unsigned char col[3], base[3] = {front_rgb[0], front_rgb[1], front_rgb[2]};
+        if (s->face_rgb) {
+            unsigned u = s->face_rgb[f];
+            base[0] = (unsigned char)(u >> 16), base[1] = (unsigned char)(u >> 8),
+            base[2] = (unsigned char)u;
+        }
+        if (!face_setup(c, x, p, z, base, col)) continue;
         pixel_cover cov;
         if (!pixel_cover_init(&cov, (const double(*)[2])p, W, H)) continue;
         for (int j = cov.j0; j <= cov.j1; j++)
@@ -195,6 +242,7 @@ static void draw_panel(const camera *c, const surface_view *s, const surface_ren
                 px[0] = col[0], px[1] = col[1], px[2] = col[2];
             }
     }
+    draw_lines(c, s, o, rgb, stride, x0, zbuf);
 }
 
 scaf_status surface_render_panels(int n, const surface_view *s, const surface_render_options *o,
@@ -229,7 +277,7 @@ scaf_status surface_render_panels(int n, const surface_view *s, const surface_re
 scaf_status surface_render(int nv, const double *V, int nf, const int *F,
                            const surface_render_options *o, unsigned char **rgb, scaf_error *err)
 {
-    surface_view s = {nv, V, nf, F};
+    surface_view s = {nv, V, nf, F, NULL, 0, NULL};
     int w, h;
     return surface_render_panels(1, &s, o, rgb, &w, &h, err);
 }

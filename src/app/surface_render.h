@@ -47,6 +47,11 @@ typedef struct surface_view {
     const double *V; /* nv by 3 vertex positions (finite where referenced) */
     int nf;
     const int *F; /* nf by 3 vertex indices, 0-based */
+    /* optional (zero / NULL: none), for pictures of seams and charts: */
+    const unsigned *face_rgb; /* nf front colours 0xRRGGBB (NULL: grey blue) */
+    int nlines;
+    const int *lines; /* nlines by 2 vertex indices: edges drawn dark over the
+                         faces where they are not hidden (seams) */
 } surface_view;
 
 /* n surfaces (1..SURFACE_RENDER_MAX_PANELS) side by side, left to right,

@@ -273,6 +273,27 @@ static void overlapping_uvs_start_from_the_atlas(void **state)
                      4);
 }
 
+/* A closed mesh without vt starts from the atlas `scaf atlas` makes:
+ * automatic charts, cut open. */
+static void closed_mesh_starts_from_the_atlas(void **state)
+{
+    (void)state;
+    char in[512], out[512], args[1200];
+    test_tmp_path("edit_cli_ball.obj", in, sizeof in);
+    test_tmp_path("edit_cli_ball_out.obj", out, sizeof out);
+    assert_int_equal(test_run("%s gen icosphere --size 3 -o %s", SCAF_BINARY, in), 0);
+    server s;
+    snprintf(args, sizeof args, "%s -o %s", in, out);
+    assert_true(start(&s, args));
+    assert_int_equal(stop(&s, SIGTERM), 0);
+    char *err = test_slurp(s.err);
+    assert_non_null(strstr(err, "starting from the atlas"));
+    free(err);
+    /* the components as they are: refused, naming the chart */
+    assert_int_equal(test_run("%s edit %s -o %s --seams input 2> /dev/null", SCAF_BINARY, in, out),
+                     4);
+}
+
 static void bad_command_lines(void **state)
 {
     (void)state;
@@ -641,6 +662,7 @@ int main(void)
         cmocka_unit_test_teardown(serves_and_refuses, stop_running),
         cmocka_unit_test_teardown(sigterm_stops, stop_running),
         cmocka_unit_test_teardown(overlapping_uvs_start_from_the_atlas, stop_running),
+        cmocka_unit_test_teardown(closed_mesh_starts_from_the_atlas, stop_running),
         cmocka_unit_test(bad_command_lines),
         cmocka_unit_test_teardown(save_after_the_input_is_gone, stop_running),
         cmocka_unit_test_teardown(save_refuses_a_link_to_the_input, stop_running),

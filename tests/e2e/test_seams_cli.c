@@ -78,9 +78,19 @@ static void closed_sphere_and_torus(void **state)
     char *log;
     test_tmp_path("e2e_seams_ball.obj", in, sizeof in);
     assert_int_equal(test_run("%s gen icosphere --size 5 -o %s", SCAF_BINARY, in), 0);
-    run_ok("param", in, "--iterations 30", "seams: auto", &log);
+    char png[512], extra[1100];
+    test_tmp_path("e2e_seams_ball.png", png, sizeof png);
+    remove(png);
+    snprintf(extra, sizeof extra, "--iterations 30 --png-seams %s", png);
+    run_ok("param", in, extra, "seams: auto", &log);
     assert_int_equal(charts_of(log), 1);
     free(log);
+    /* the picture: two 512 x 512 panels */
+    char *pic = test_slurp(png);
+    assert_non_null(pic);
+    assert_memory_equal(pic, "\x89PNG", 4);
+    assert_memory_equal(pic + 16, "\0\0\x04\0\0\0\x02\0", 8); /* IHDR 1024 x 512 */
+    free(pic);
     run_ok("atlas", in, "--iterations 20 --compact-iterations 5", "seams: auto", &log);
     assert_true(charts_of(log) >= 1);
     free(log);
