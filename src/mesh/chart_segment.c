@@ -615,6 +615,27 @@ static int place_seeds(grower *g, int *seed)
     return n;
 }
 
+/* Faces a front never reached (costs that overflowed on a degenerate
+ * input) join a labelled neighbour, pass by pass: every label stays
+ * edge-connected. A component always holds a seed, so all get one. */
+static void fill_unreached(const seg_mesh *s, int *label)
+{
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (int f = 0; f < s->nf; f++) {
+            if (label[f] >= 0) continue;
+            for (int k = 0; k < 3; k++) {
+                int to = s->nbr[3 * f + k];
+                if (to >= 0 && label[to] >= 0) {
+                    label[f] = label[to];
+                    changed = 1;
+                    break;
+                }
+            }
+        }
+    }
+}
+
 /* ---- cleaning up ---- */
 
 /* A face whose neighbours in one other chart outnumber those in its own
@@ -770,11 +791,22 @@ scaf_status chart_segment(int nv, const double *V, int nf, const int *F,
         chart_segment_defaults(&def);
         o = &def;
     }
+    /* work on V scaled by a power of two into [-1, 1] (exact): the
+     * segmentation is scale-free, and areas of huge or tiny meshes would
+     * overflow or underflow */
+    double big = 0.0;
+    for (int i = 0; i < 3 * nv; i++)
+        if (fabs(V[i]) > big && isfinite(V[i])) big = fabs(V[i]);
+    int e = 0;
+    if (big > 0) frexp(big, &e);
+    double *Vs = malloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
+    if (!Vs) return err_nomem(err, "chart segmentation");
+    for (int i = 0; i < 3 * nv; i++) Vs[i] = ldexp(V[i], -e);
     seg_mesh s;
     memset(&s, 0, sizeof s);
     s.nv = nv;
     s.nf = nf;
-    s.V = V;
+    s.V = Vs;
     s.F = F;
     size_t h3 = 3 * (size_t)nf;
     s.nbr = malloc(sizeof(int) * h3);
@@ -814,11 +846,14 @@ scaf_status chart_segment(int nv, const double *V, int nf, const int *F,
     if (!seed || !g.proxy || !g.radius) goto nomem;
     int n = place_seeds(&g, seed);
     if (n < 0) goto nomem;
+    fill_unreached(&s, face_chart);
     for (int c = 0; c < n; c++) g.radius[c] = s.comp_radius[s.comp[seed[c]]];
     int rounds = o->lloyd_rounds > 0 ? o->lloyd_rounds : 8;
     for (int it = 0; it < rounds; it++) {
         fit_proxies(&g, seed, n);
+        for (int f = 0; f < nf; f++) face_chart[f] = -1;
         if (!grow_charts(&g, seed, n)) goto nomem;
+        fill_unreached(&s, face_chart);
         if (it + 1 < rounds && !recenter_seeds(&g, seed, n)) goto nomem;
     }
     smooth_boundaries(&s, face_chart);
@@ -830,6 +865,7 @@ nomem:
     st = err_nomem(err, "chart segmentation");
 done:
     seg_free(&s);
+    free(Vs);
     free(g.dist);
     free(g.proxy);
     free(g.radius);

@@ -195,6 +195,32 @@ static void test_count_follows_curvature(void **state)
     mesh_free(&ball);
 }
 
+/* The same charts at any scale (areas of 1e200 would overflow). */
+static void test_scale_free(void **state)
+{
+    (void)state;
+    mesh m;
+    sample("cubesphere", 6, &m);
+    int *a = malloc(sizeof(int) * (size_t)m.nf), *b = malloc(sizeof(int) * (size_t)m.nf);
+    assert_non_null(a);
+    assert_non_null(b);
+    int n = segment_checked(&m, NULL, a);
+    const double scales[] = {1e200, 1e-200, 3.0};
+    for (int i = 0; i < 3; i++) {
+        mesh t;
+        scaf_error e;
+        assert_int_equal(mesh_alloc(&t, m.nv, m.nf, 0, &e), SCAF_OK);
+        for (int j = 0; j < 3 * m.nv; j++) t.V[j] = m.V[j] * scales[i];
+        memcpy(t.F, m.F, sizeof(int) * 3 * (size_t)m.nf);
+        assert_int_equal(segment_checked(&t, NULL, b), n);
+        if (i < 2) assert_memory_equal(a, b, sizeof(int) * (size_t)m.nf);
+        mesh_free(&t);
+    }
+    free(a);
+    free(b);
+    mesh_free(&m);
+}
+
 static void test_bad_arguments(void **state)
 {
     (void)state;
@@ -220,6 +246,7 @@ int main(void)
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_box_charts_follow_creases),
         cmocka_unit_test(test_count_follows_curvature),
+        cmocka_unit_test(test_scale_free),
         cmocka_unit_test(test_bad_arguments),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
