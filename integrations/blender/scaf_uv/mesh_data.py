@@ -65,12 +65,6 @@ class MeshArrays:
         self.Vt = self.V[used]
         self.Ft = inverse.reshape(-1, 3).astype(np.int32)
 
-    def closed(self):
-        """Every edge of the faces has exactly two faces."""
-        counts = np.bincount(self.loop_edge, minlength=len(self.edge_seam))
-        used = counts > 0
-        return bool(np.all(counts[used] == 2))
-
     def corner_uvs(self, uv, ft):
         """Per-loop UVs (#loops x 2 float32) from a per-triangle-corner map
         (uv #UV x 2, ft #T x 3) and the number of loops whose triangles

@@ -116,7 +116,10 @@ class _AtlasOperator:
             if isinstance(job.error, scaf.Cancelled):
                 self.report({"WARNING"}, "scaf: cancelled, UVs unchanged")
             elif isinstance(job.error, scaf.Error):
-                self.report({"ERROR"}, "scaf: %s" % job.error)
+                hint = ""
+                if "closed surface" in str(job.error) or "cut it open" in str(job.error):
+                    hint = " (mark seams in edit mode: Edge > Mark Seam)"
+                self.report({"ERROR"}, "scaf: %s%s" % (job.error, hint))
             else:
                 self.report({"ERROR"}, "scaf: %s: %s" % (type(job.error).__name__, job.error))
             return {"CANCELLED"}
