@@ -37,6 +37,7 @@
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "edit_api.h"
+#include "base/interrupt.h"
 #include "edit_page.h"
 #include "edit_server.h"
 #include "exit_codes.h"
@@ -327,6 +328,7 @@ static int serve(edit_api *api, int port, int quiet)
     sigemptyset(&block);
     sigaddset(&block, SIGINT);
     sigaddset(&block, SIGTERM);
+    sigaddset(&block, SIGHUP);
     pthread_sigmask(SIG_BLOCK, &block, &old);
     edit_server server;
     scaf_error err;
@@ -358,7 +360,7 @@ static int serve(edit_api *api, int port, int quiet)
         autosave(&e); /* what changed since the last one */
         if (!quiet)
             fprintf(stderr, "scaf edit: stopped by %s; %d save(s)\n",
-                    cli_signal_caught() == SIGTERM ? "SIGTERM" : "SIGINT", api->saves);
+                    interrupt_signal_name(cli_signal_caught()), api->saves);
         if (edit_api_unsaved(api) && api->autosaved_changes == api->changes)
             fprintf(stderr,
                     "scaf edit: the unsaved changes are in %s: `scaf edit %s -o %s --resume` "
