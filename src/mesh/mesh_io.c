@@ -111,6 +111,13 @@ static scaf_status load_plain(int fd, const char *path, size_t size, char **out,
 
 /* Bytes inflated between two looks at them (a signal, a NUL byte). */
 #define GZIP_CHUNK ((size_t)1 << 20)
+/* A bomb of valid text (one short line repeated) has no NUL byte: it is
+ * stopped by its ratio. Mesh files compress 2-10x (text) and less
+ * (binary PLY); deflate's best is about 1030x. Past GZIP_RATIO_FROM
+ * decompressed bytes, more than GZIP_MAX_RATIO times the compressed size
+ * is refused, with the way around it (a plain file has no limit). */
+#define GZIP_MAX_RATIO 100
+#define GZIP_RATIO_FROM ((size_t)16 << 20)
 
 /* The data decompressed so far is buf[0, n + r), of which [n, n + r) is
  * new. Every text format has no NUL byte in its text: OBJ and OFF
@@ -196,6 +203,13 @@ static scaf_status load_gzip(int fd, const char *path, size_t compressed, char *
         }
         st = text_prefix_check(buf, n, (size_t)r, path, &text_end, err);
         n += (size_t)r;
+        if (st == SCAF_OK && n > GZIP_RATIO_FROM && compressed <= SIZE_MAX / GZIP_MAX_RATIO &&
+            n > compressed * GZIP_MAX_RATIO)
+            st = err_set(err, SCAF_ERR_PARSE,
+                         "%s: decompresses to more than %d times its %zu compressed bytes "
+                         "(stopped after %zu bytes): a decompression bomb? Mesh files compress "
+                         "far less; to read it anyway, decompress it first (gunzip)",
+                         path, GZIP_MAX_RATIO, compressed, n);
         if (st == SCAF_OK) st = interrupt_check(NULL, "decompressing the mesh", err);
     }
     gzclose(gz);

@@ -222,6 +222,47 @@ static void gzip_bomb_stops_at_the_first_chunk(void **state)
     remove(path);
 }
 
+/* A bomb of valid text (no NUL byte) is stopped by its ratio, not
+ * inflated whole: 64 MiB of one vertex line compress to about 64 KiB. */
+static void gzip_text_bomb_stops_at_the_ratio(void **state)
+{
+    (void)state;
+    char path[512];
+    test_tmp_path("read_errors_text_bomb.obj.gz", path, sizeof path);
+    gzFile g = gzopen(path, "wb9");
+    assert_non_null(g);
+    size_t line = 8, n = (1 << 20) / line;
+    char *lines = malloc(n * line);
+    assert_non_null(lines);
+    for (size_t i = 0; i < n; i++) memcpy(lines + i * line, "v 0 0 0\n", line);
+    for (int i = 0; i < 64; i++)
+        assert_int_equal(gzwrite(g, lines, (unsigned)(n * line)), n * line);
+    free(lines);
+    assert_int_equal(gzclose(g), Z_OK);
+    mesh m;
+    scaf_error err;
+    err_clear(&err);
+    assert_int_equal(mesh_read(path, &m, NULL, &err), SCAF_ERR_PARSE);
+    assert_non_null(strstr(err.message, "decompresses to more than 100 times"));
+    assert_non_null(strstr(err.message, "gunzip"));
+    const char *after = strstr(err.message, "stopped after ");
+    assert_non_null(after);
+    double bytes = strtod(after + strlen("stopped after "), NULL);
+    assert_true(bytes > 16 << 20 && bytes <= 18 << 20); /* at the ratio, not 64 MiB */
+    remove(path);
+    /* an ordinary compressed mesh still reads (a few times smaller) */
+    test_tmp_path("read_errors_fine.obj.gz", path, sizeof path);
+    g = gzopen(path, "wb9");
+    assert_non_null(g);
+    for (int i = 0; i < 3; i++) gzprintf(g, "v %d %d 0\n", i == 1, i == 2);
+    gzputs(g, "f 1 2 3\n");
+    assert_int_equal(gzclose(g), Z_OK);
+    assert_int_equal(mesh_read(path, &m, NULL, &err), SCAF_OK);
+    assert_int_equal(m.nf, 1);
+    mesh_free(&m);
+    remove(path);
+}
+
 static void unreadable_files(void **state)
 {
     (void)state;
@@ -277,6 +318,7 @@ int main(void)
         cmocka_unit_test(ply_body_errors),
         cmocka_unit_test(unreadable_files),
         cmocka_unit_test(gzip_bomb_stops_at_the_first_chunk),
+        cmocka_unit_test(gzip_text_bomb_stops_at_the_ratio),
         cmocka_unit_test(line_numbers_with_crlf),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
