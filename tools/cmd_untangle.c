@@ -11,6 +11,7 @@
  * not free the surface or a solve failed, 7 out of memory, 8 interrupted,
  * 70 an exact check failed (a bug). Nothing is written on failure.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +25,7 @@
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "cli_surface_png.h"
+#include "cli_unit_scale.h"
 #include "exit_codes.h"
 #include "mesh/mesh_io.h"
 
@@ -235,6 +237,13 @@ static int untangle_main(int argc, char **argv)
     mesh m;
     mesh_read_info info;
     if ((rc = cli_read_mesh("untangle", in, quiet, &m, &info)) != EXIT_OK) return rc;
+    /* at unit scale (tools/cli_unit_scale): areas overflow at 1e300 and
+     * vanish at 1e-300; the results are multiplied back before writing */
+    int e = 0;
+    if ((rc = cli_unit_scale("untangle", in, &m, &e)) != EXIT_OK) {
+        mesh_free(&m);
+        return rc;
+    }
     progress_state ps = {quiet, 0};
     untangle_result r;
     double t0 = timer_now();
@@ -261,6 +270,11 @@ static int untangle_main(int argc, char **argv)
                     untangle_stop_name(r.stop), r.rms, r.max, seconds);
     }
     if (cli_signal_report("untangle")) rc = EXIT_CANCELLED;
+    size_t n3 = 3 * (size_t)m.nv;
+    if (rc == EXIT_OK) rc = cli_unit_unscale("untangle", in, m.V, n3, e);
+    if (rc == EXIT_OK) rc = cli_unit_unscale("untangle", in, r.X, n3, e);
+    if (rc == EXIT_OK && r.flowed) rc = cli_unit_unscale("untangle", in, r.flowed, n3, e);
+    r.diagonal = ldexp(r.diagonal, e); /* distances are relative to it: unchanged */
     if (rc == EXIT_OK) {
         /* the input's mesh (and its UVs, if any) at the final positions */
         double *V = m.V;

@@ -281,6 +281,45 @@ static void three_d_commands_at_any_scale(void **state)
     }
 }
 
+/* untangle on a self-intersecting sphere at 1e300 and 1e-300 (was exit 6
+ * "the surface has area -nan" / "area 0: cannot normalize it"): freed,
+ * written in the input's units. */
+static void untangle_at_any_scale(void **state)
+{
+    (void)state;
+    static const double scales[] = {1e300, 1e-300};
+    for (int i = 0; i < 2; i++) {
+        mesh m;
+        scaf_error err;
+        assert_int_equal(mesh_sample_make("dented", 3, &m, &err), SCAF_OK);
+        char in[512], out[512];
+        test_tmp_path("extreme_dented.obj", in, sizeof in);
+        test_tmp_path("extreme_dented_out.obj", out, sizeof out);
+        FILE *f = fopen(in, "w");
+        assert_non_null(f);
+        for (int v = 0; v < m.nv; v++)
+            fprintf(f, "v %.17g %.17g %.17g\n", m.V[3 * v] * scales[i], m.V[3 * v + 1] * scales[i],
+                    m.V[3 * v + 2] * scales[i]);
+        for (int t = 0; t < m.nf; t++)
+            fprintf(f, "f %d %d %d\n", m.F[3 * t] + 1, m.F[3 * t + 1] + 1, m.F[3 * t + 2] + 1);
+        fclose(f);
+        mesh_free(&m);
+        assert_int_not_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, in), 0);
+        assert_int_equal(test_run("%s untangle %s -o %s -q", SCAF_BINARY, in, out), 0);
+        assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+        char *text = test_slurp(out);
+        assert_non_null(text);
+        double big = 0.0;
+        for (const char *p = text; (p = strstr(p, "v ")) != NULL; p += 2) {
+            double x, y, z;
+            if (sscanf(p, "v %lf %lf %lf", &x, &y, &z) == 3)
+                big = fmax(big, fmax(fabs(x), fmax(fabs(y), fabs(z))));
+        }
+        free(text);
+        assert_true(big > scales[i] / 4 && big < scales[i] * 4);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -291,6 +330,7 @@ int main(void)
         cmocka_unit_test(options_out_of_range_say_the_range),
         cmocka_unit_test(one_degeneracy_verdict_at_any_scale),
         cmocka_unit_test(three_d_commands_at_any_scale),
+        cmocka_unit_test(untangle_at_any_scale),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
