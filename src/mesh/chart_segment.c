@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "base/half_edges.h"
+#include "base/min_heap.h"
 #include "base/union_find.h"
 
 /* Step cost per unit of normal deviation (1 - n.N): a face at right angles
@@ -40,60 +41,6 @@ void chart_segment_defaults(chart_segment_options *o)
     o->target_charts = 0;
     o->curvature_per_chart = CHART_SEGMENT_CURVATURE_PER_CHART;
     o->lloyd_rounds = 8;
-}
-
-/* ---- a binary min-heap of (key, face) with ties by face index ---- */
-
-typedef struct heap_entry {
-    double key;
-    int face;
-} heap_entry;
-
-typedef struct face_heap {
-    heap_entry *e;
-    int n, cap;
-} face_heap;
-
-static int entry_less(heap_entry a, heap_entry b)
-{
-    return a.key < b.key || (a.key == b.key && a.face < b.face);
-}
-
-static int heap_push(face_heap *h, double key, int face)
-{
-    if (h->n == h->cap) {
-        int cap = h->cap ? 2 * h->cap : 256;
-        heap_entry *e = realloc(h->e, sizeof *e * (size_t)cap);
-        if (!e) return 0;
-        h->e = e;
-        h->cap = cap;
-    }
-    int i = h->n++;
-    heap_entry x = {key, face};
-    while (i > 0) {
-        int p = (i - 1) / 2;
-        if (!entry_less(x, h->e[p])) break;
-        h->e[i] = h->e[p];
-        i = p;
-    }
-    h->e[i] = x;
-    return 1;
-}
-
-static heap_entry heap_pop(face_heap *h)
-{
-    heap_entry top = h->e[0], x = h->e[--h->n];
-    int i = 0;
-    for (;;) {
-        int c = 2 * i + 1;
-        if (c >= h->n) break;
-        if (c + 1 < h->n && entry_less(h->e[c + 1], h->e[c])) c++;
-        if (!entry_less(h->e[c], x)) break;
-        h->e[i] = h->e[c];
-        i = c;
-    }
-    if (h->n > 0) h->e[i] = x;
-    return top;
 }
 
 /* ---- the surface as the segmentation sees it ---- */
@@ -432,7 +379,7 @@ typedef struct grower {
     int *label;     /* nf */
     double *proxy;  /* 3 per chart */
     double *radius; /* per chart: the component's expected chart radius */
-    face_heap heap;
+    min_heap heap;
 } grower;
 
 static double step_cost(const grower *g, enum grow_mode mode, int f, int k, int to)
@@ -453,8 +400,8 @@ static int grow_run(grower *g, enum grow_mode mode)
 {
     seg_mesh *s = g->s;
     while (g->heap.n > 0) {
-        heap_entry e = heap_pop(&g->heap);
-        int f = e.face;
+        min_heap_item e = min_heap_pop(&g->heap);
+        int f = e.id;
         if (e.key > g->dist[f]) continue;
         for (int k = 0; k < 3; k++) {
             int to = s->nbr[3 * f + k];
@@ -464,7 +411,7 @@ static int grow_run(grower *g, enum grow_mode mode)
             if (nd < g->dist[to]) {
                 g->dist[to] = nd;
                 if (mode != GROW_DEPTH) g->label[to] = g->label[f];
-                if (!heap_push(&g->heap, nd, to)) return 0;
+                if (!min_heap_push(&g->heap, nd, to)) return 0;
             }
         }
     }
@@ -499,7 +446,7 @@ static int grow_charts(grower *g, const int *seed, int n)
     for (int c = 0; c < n; c++) {
         g->dist[seed[c]] = 0.0;
         g->label[seed[c]] = c;
-        if (!heap_push(&g->heap, 0.0, seed[c])) return 0;
+        if (!min_heap_push(&g->heap, 0.0, seed[c])) return 0;
     }
     return grow_run(g, GROW_CHARTS);
 }
@@ -516,7 +463,7 @@ static int recenter_seeds(grower *g, int *seed, int n)
             int to = s->nbr[3 * f + k];
             if (to < 0 || g->label[to] != g->label[f]) {
                 g->dist[f] = 0.5 * sqrt(s->area[f]);
-                if (!heap_push(&g->heap, g->dist[f], f)) return 0;
+                if (!min_heap_push(&g->heap, g->dist[f], f)) return 0;
                 break;
             }
         }
@@ -555,7 +502,7 @@ static int place_seeds(grower *g, int *seed)
     for (int c = 0; c < s->ncomp; c++) {
         g->dist[first[c]] = 0.0;
         g->label[first[c]] = c;
-        if (!heap_push(&g->heap, 0.0, first[c])) {
+        if (!min_heap_push(&g->heap, 0.0, first[c])) {
             free(first);
             return -1;
         }
@@ -574,7 +521,7 @@ static int place_seeds(grower *g, int *seed)
         seed[n] = first[c];
         g->dist[first[c]] = 0.0;
         g->label[first[c]] = n++;
-        if (!heap_push(&g->heap, 0.0, first[c])) {
+        if (!min_heap_push(&g->heap, 0.0, first[c])) {
             free(first);
             return -1;
         }
@@ -604,7 +551,7 @@ static int place_seeds(grower *g, int *seed)
             g->label[far] = n++;
             have[c]++;
             added = 1;
-            if (!heap_push(&g->heap, 0.0, far) || !grow_run(g, GROW_SEEDING)) {
+            if (!min_heap_push(&g->heap, 0.0, far) || !grow_run(g, GROW_SEEDING)) {
                 free(first);
                 return -1;
             }
@@ -869,7 +816,7 @@ done:
     free(g.dist);
     free(g.proxy);
     free(g.radius);
-    free(g.heap.e);
+    min_heap_free(&g.heap);
     free(seed);
     return st;
 }

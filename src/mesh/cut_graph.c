@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "base/half_edges.h"
+#include "base/min_heap.h"
 #include "base/union_find.h"
 
 static const double PI = 3.14159265358979323846;
@@ -26,57 +27,6 @@ void cut_graph_free(cut_graph *g)
     free(g->split_vertex);
     free(g->face_chart);
     memset(g, 0, sizeof *g);
-}
-
-/* ---- a binary min-heap of (distance, vertex), ties by vertex ------------- */
-
-typedef struct heap_item {
-    double d;
-    int v;
-} heap_item;
-
-typedef struct min_heap {
-    heap_item *a;
-    int n, cap;
-} min_heap;
-
-static int item_less(heap_item x, heap_item y) { return x.d < y.d || (x.d == y.d && x.v < y.v); }
-
-static int heap_push(min_heap *h, double d, int v)
-{
-    if (h->n == h->cap) {
-        int cap = h->cap ? 2 * h->cap : 256;
-        heap_item *a = realloc(h->a, sizeof *a * (size_t)cap);
-        if (!a) return 0;
-        h->a = a;
-        h->cap = cap;
-    }
-    int i = h->n++;
-    heap_item x = {d, v};
-    while (i > 0) {
-        int p = (i - 1) / 2;
-        if (!item_less(x, h->a[p])) break;
-        h->a[i] = h->a[p];
-        i = p;
-    }
-    h->a[i] = x;
-    return 1;
-}
-
-static heap_item heap_pop(min_heap *h)
-{
-    heap_item top = h->a[0], x = h->a[--h->n];
-    int i = 0;
-    for (;;) {
-        int c = 2 * i + 1;
-        if (c >= h->n) break;
-        if (c + 1 < h->n && item_less(h->a[c + 1], h->a[c])) c++;
-        if (!item_less(h->a[c], x)) break;
-        h->a[i] = h->a[c];
-        i = c;
-    }
-    if (h->n > 0) h->a[i] = x;
-    return top;
 }
 
 /* ---- the working surface ------------------------------------------------- */
@@ -413,18 +363,18 @@ static int paths_add(const surface *s, paths *P, int v, int o)
     P->dist[v] = 0.0;
     P->pred[v] = -1;
     P->owner[v] = o;
-    if (!heap_push(&P->heap, 0.0, v)) return 0;
+    if (!min_heap_push(&P->heap, 0.0, v)) return 0;
     while (P->heap.n > 0) {
-        heap_item it = heap_pop(&P->heap);
-        if (it.d > P->dist[it.v]) continue;
-        for (int k = s->adj_start[it.v]; k < s->adj_start[it.v + 1]; k++) {
-            int e = s->adj_edge[k], u = edge_other(s, e, it.v);
-            double nd = it.d + s->e_w[e];
+        min_heap_item it = min_heap_pop(&P->heap);
+        if (it.key > P->dist[it.id]) continue;
+        for (int k = s->adj_start[it.id]; k < s->adj_start[it.id + 1]; k++) {
+            int e = s->adj_edge[k], u = edge_other(s, e, it.id);
+            double nd = it.key + s->e_w[e];
             if (nd < P->dist[u]) {
                 P->dist[u] = nd;
                 P->pred[u] = e;
-                P->owner[u] = P->owner[it.v];
-                if (!heap_push(&P->heap, nd, u)) return 0;
+                P->owner[u] = P->owner[it.id];
+                if (!min_heap_push(&P->heap, nd, u)) return 0;
             }
         }
     }
@@ -870,7 +820,7 @@ done:
     free(c.P.dist);
     free(c.P.pred);
     free(c.P.owner);
-    free(c.P.heap.a);
+    min_heap_free(&c.P.heap);
     free(c.mark);
     free(c.in_tree);
     free(c.deg);
