@@ -308,6 +308,7 @@ static int param_main(int argc, char **argv)
     ps.criterion = INFINITY;
     double *UV = NULL;
     int *FT = NULL;
+    int *fc = NULL, nc = 0; /* chart of every face, for --png-seams and --report */
     seam_edges seams = {0};
     if (!p) {
         fprintf(stderr, "scaf param: out of memory\n");
@@ -433,28 +434,19 @@ static int param_main(int argc, char **argv)
         free(E);
         if (rc != EXIT_OK) goto done;
     }
-    if (job.png_seams >= 0) {
+    if (job.png_seams >= 0 || report) {
         /* the chart of every face: the pieces of the output's UV topology */
-        int *fc = malloc(sizeof(int) * (size_t)m.nf), nc = 0;
+        fc = malloc(sizeof(int) * (size_t)m.nf);
         if (!fc || chart_gap_labels(nuv, m.nf, FT, fc, &nc, &err) != SCAF_OK) {
             fprintf(stderr, "scaf param: %s\n", fc ? err.message : "out of memory");
-            free(fc);
             rc = fc ? exit_code_for(err.code) : EXIT_NOMEM;
             goto done;
         }
-        rc = cli_seams_png(&job.outs, job.png_seams, &m, fc, &seams);
-        free(fc);
-        if (rc != EXIT_OK) goto done;
     }
+    if (job.png_seams >= 0 &&
+        (rc = cli_seams_png(&job.outs, job.png_seams, &m, fc, &seams)) != EXIT_OK)
+        goto done;
     if (report) {
-        /* the chart of every face: the pieces of the output's UV topology */
-        int *fc = malloc(sizeof(int) * (size_t)m.nf), nc = 0;
-        if (!fc || chart_gap_labels(nuv, m.nf, FT, fc, &nc, &err) != SCAF_OK) {
-            fprintf(stderr, "scaf param: %s\n", fc ? err.message : "out of memory");
-            free(fc);
-            rc = fc ? exit_code_for(err.code) : EXIT_NOMEM;
-            goto done;
-        }
         seam_report sr = {scaf_param_seams_used(p), param_seams_why(p), nc, m.nf, fc, &seams};
         param_report r = {in,
                           out,
@@ -472,13 +464,13 @@ static int param_main(int argc, char **argv)
                           &sr};
         path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? param_report_write(path, &r, &err) : SCAF_ERR_IO;
-        free(fc);
         if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&job.outs);
 done:
     cli_outputs_abort(&job.outs);
     seam_edges_free(&seams);
+    free(fc);
     free(UV);
     free(FT);
     free(ps.it);

@@ -51,14 +51,8 @@ static int chart_fill(const atlas *a, const double *UV, double *fill)
     int *verts = malloc(sizeof(int) * (size_t)(a->nw > 0 ? a->nw : 1));
     double *P = malloc(sizeof(double) * 2 * (size_t)(a->nw > 0 ? a->nw : 1));
     int *hull = malloc(sizeof(int) * (size_t)(a->nw + 1));
-    if (!area || !start || !verts || !P || !hull) {
-        free(area);
-        free(start);
-        free(verts);
-        free(P);
-        free(hull);
-        return 0;
-    }
+    int ok = 0;
+    if (!area || !start || !verts || !P || !hull) goto out;
     for (int f = 0; f < a->nf; f++) {
         const double *p = UV + 2 * a->Fw[3 * f], *q = UV + 2 * a->Fw[3 * f + 1],
                      *r = UV + 2 * a->Fw[3 * f + 2];
@@ -80,24 +74,19 @@ static int chart_fill(const atlas *a, const double *UV, double *fill)
             P[2 * i + 1] = UV[2 * verts[start[c] + i] + 1];
         }
         int nh = min_box_hull(P, n, hull);
-        if (nh < 0) {
-            free(area);
-            free(start);
-            free(verts);
-            free(P);
-            free(hull);
-            return 0;
-        }
+        if (nh < 0) goto out;
         double w = 0.0, h = 0.0;
         if (nh >= 3) min_box_extent(P, hull, nh, min_box_area_angle(P, hull, nh), &w, &h);
         fill[c] = w * h > 0.0 ? area[c] / (w * h) : 1.0;
     }
+    ok = 1;
+out:
     free(area);
     free(start);
     free(verts);
     free(P);
     free(hull);
-    return 1;
+    return ok;
 }
 
 /* Two-way segmentation of chart c (faces with label c) in its own vt
