@@ -40,9 +40,9 @@ ls "$libdir"/libscaf.so.0 >/dev/null   # SOVERSION link
 if command -v nm >/dev/null; then
   other="$(nm -D --defined-only "$libdir/libscaf.so" | awk '{print $3}' | grep -v '^scaf_' | grep -v '^_\(_\|init\|fini\|edata\|end\)' || true)"
   [ -z "$other" ] || { echo "libscaf.so exports non-API symbols:"; echo "$other" | head; exit 1; }
-  nm -D --defined-only "$libdir/libscaf.so" | grep -q ' scaf_atlas_get_uv$'
+  nm -D --defined-only "$libdir/libscaf.so" | grep ' scaf_atlas_get_uv$' >/dev/null
 fi
-"$tmp/prefix/bin/scaf" --version | grep -qx "scaf $(pkg-config --modversion scaf)"
+"$tmp/prefix/bin/scaf" --version | grep -x "scaf $(pkg-config --modversion scaf)" >/dev/null
 flags=(-std=c17 -Wall -Wextra -Wpedantic -Werror $extra)
 for ex in atlas_example param_example; do
   # shared: the only include path and library come from pkg-config
@@ -64,8 +64,12 @@ for app in app_shared app_static; do
   grep -q "^scaf $(pkg-config --modversion scaf): E " "$tmp/$app.txt" || { cat "$tmp/$app.txt"; exit 1; }
 done
 # the shared app loads the installed library (the build tree's rpath is not used)
-ldd "$tmp/consumer/app_shared" | grep -q "$tmp/prefix" || { ldd "$tmp/consumer/app_shared"; exit 1; }
-! ldd "$tmp/consumer/app_static" | grep -q libscaf || { echo "app_static loads libscaf.so"; exit 1; }
+# (whole outputs captured: `ldd | grep -q` under pipefail fails at random
+# when grep quits early and ldd dies of SIGPIPE)
+shared_libs="$(ldd "$tmp/consumer/app_shared")"
+static_libs="$(ldd "$tmp/consumer/app_static" || true)"
+grep -qF "$tmp/prefix" <<<"$shared_libs" || { echo "$shared_libs"; exit 1; }
+! grep -q libscaf <<<"$static_libs" || { echo "app_static loads libscaf.so"; exit 1; }
 echo "cmake consumer: $(cat "$tmp/app_shared.txt") (shared), $(cat "$tmp/app_static.txt") (static)"
 "$tmp/param_example" >"$tmp/param.txt"
 "$tmp/param_example-static" >/dev/null
