@@ -1,5 +1,5 @@
 /* tools/exit_codes: the exit statuses of the `scaf` program.
- * Documented in README.md; scripts depend on them, never renumber. */
+ * Documented in docs/cli.md; scripts depend on them, never renumber. */
 #ifndef SCAF_TOOLS_EXIT_CODES_H
 #define SCAF_TOOLS_EXIT_CODES_H
 
@@ -23,7 +23,7 @@ enum {
 /* Every exit status and what it means, in one table: the help texts print
  * it (exit_codes_print), so a code added to the enum above and here shows
  * up in every help at once (tests/docs/test_help.py compares the enum, this
- * list and README.md's table). */
+ * list and docs/cli.md's table). */
 typedef struct exit_code_meaning {
     int code;
     const char *meaning;

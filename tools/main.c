@@ -98,7 +98,7 @@ static void default_threads(void)
 
 /* SCAF_MIN_CHUNK=N: scaf's loops are cut into chunks of at least N items
  * (default PAR_MIN_CHUNK, 4096) so that tests take the parallel paths on
- * small inputs (README: Parametrizing a mesh). Not a number >= 1: ignored. */
+ * small inputs (docs/param.md). Not a number >= 1: ignored. */
 static void min_chunk_from_environment(void)
 {
     const char *e = getenv("SCAF_MIN_CHUNK");

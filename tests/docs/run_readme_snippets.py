@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""tests/docs/run_readme_snippets: README.md runs as written.
+"""tests/docs/run_readme_snippets: README.md and docs/*.md run as written.
 
-The ctest docs/readme_snippets. A newcomer copies the README's commands
-into a terminal in a fresh clone; this test does the same:
+The ctest docs/readme_snippets. A newcomer copies the commands of the
+README and of the pages in docs/ into a terminal in a fresh clone; this
+test does the same:
 
-  1. Every fenced code block of README.md is tagged: ```sh (run), ```c or
+  1. Every fenced code block of README.md and docs/*.md is tagged: ```sh (run), ```c or
      ```python with file=NAME (written to NAME, which a ```sh block must
      compile or run), or ```text (synopses, trees: not code). A block may
      opt out of running with `skip=REASON` after the language (REASON says
@@ -13,9 +14,12 @@ into a terminal in a fresh clone; this test does the same:
      still exist, be executable and pass `bash -n`.
   2. The files git would clone (tracked + untracked-not-ignored) are copied
      into a temporary folder, with `build` a link to the build tree ctest
-     just built. The ```sh blocks run there in README order in one bash
-     (set -euo pipefail, so state like `export` carries over as in one
-     terminal), with HOME a temporary folder. Building again would take
+     just built. The ```sh blocks run there in one bash (set -euo
+     pipefail, so state like `export` carries over as in one terminal),
+     with HOME a temporary folder: README.md's first, then each page of
+     docs/ in name order, each page's in its order. A page must not need
+     files another page makes (each starts with the `scaf gen` lines it
+     needs), so a reader can start on any page. Building again would take
      minutes, so a `cmake` on PATH turns `cmake -S . -B build` and `cmake
      --build build` into checks that `build` is that tree, and passes
      everything else (`cmake --install build ...`) to the real cmake.
@@ -79,11 +83,11 @@ def parse_blocks(path):
     return blocks
 
 
-def check_blocks(blocks, src):
+def check_blocks(doc, blocks, src):
     errors = []
     runnable_text = "".join(t for _, lang, a, t in blocks if lang in RUNNABLE and "skip" not in a)
     for line, lang, attrs, text in blocks:
-        where = "README.md:%d" % line
+        where = "%s:%d" % (doc, line)
         if lang not in LANGS:
             errors.append("%s: a code block tagged %r: tag it sh (runs), c/python with file=NAME, "
                           "or text (not code)" % (where, lang))
@@ -205,7 +209,8 @@ def sanitizer_env(src, lib):
     return {"LD_PRELOAD": preload, "ASAN_OPTIONS": asan} if preload else {}
 
 
-def run_snippets(src, build, blocks, files, cflags):
+def run_snippets(src, build, docs, files, cflags):
+    """docs: [(name, blocks)] in the order they run."""
     real_cmake = shutil.which("cmake")
     tmp_root = os.path.join(build, "test-tmp")
     os.makedirs(tmp_root, exist_ok=True)
@@ -238,23 +243,25 @@ def run_snippets(src, build, blocks, files, cflags):
                 write_shim(shims, "python3", '#!/bin/sh\nLD_PRELOAD="%s" ASAN_OPTIONS="%s" exec "%s" "$@"\n'
                            % (extra["LD_PRELOAD"], extra["ASAN_OPTIONS"], py))
         script = []
-        for line, lang, attrs, text in blocks:
-            if "file" in attrs and "skip" not in attrs:
-                with open(os.path.join(repo, attrs["file"]), "w") as f:
-                    f.write(text)
-            if lang in RUNNABLE and "skip" not in attrs:
-                script.append('echo "### README.md:%d"\n%s\n' % (line, text))
+        for doc, blocks in docs:
+            for line, lang, attrs, text in blocks:
+                if "file" in attrs and "skip" not in attrs:
+                    with open(os.path.join(repo, attrs["file"]), "w") as f:
+                        f.write(text)
+                if lang in RUNNABLE and "skip" not in attrs:
+                    script.append('echo "### %s:%d"\n%s\n' % (doc, line, text))
         with open(os.path.join(tmp, "readme.sh"), "w") as f:
             f.write("set -euo pipefail\n" + "".join(script))
         r = subprocess.run(["bash", os.path.join(tmp, "readme.sh")], cwd=repo, env=env,
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=500)
         print(r.stdout[-6000:])
         if r.returncode != 0:
-            last = re.findall(r"### (README\.md:\d+)", r.stdout)
+            last = re.findall(r"### (\S+\.md:\d+)", r.stdout)
             return fail("the block at %s exited with status %d" % (last[-1] if last else "?", r.returncode))
-        print("README.md: %d sh blocks ran, %d files written, %d blocks skipped with a reason" % (
-            len(script), sum("file" in a for _, _, a, _ in blocks),
-            sum("skip" in a for _, _, a, _ in blocks)))
+        every = [b for _, blocks in docs for b in blocks]
+        print("README.md and %d pages of docs/: %d sh blocks ran, %d files written, %d blocks skipped"
+              " with a reason" % (len(docs) - 1, len(script), sum("file" in a for _, _, a, _ in every),
+                                  sum("skip" in a for _, _, a, _ in every)))
         return 0
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
@@ -266,14 +273,17 @@ def main(argv):
         return 2
     src, build = os.path.abspath(argv[1]), os.path.abspath(argv[2])
     cflags = argv[3] if len(argv) > 3 else ""
-    blocks = parse_blocks(os.path.join(src, "README.md"))
     files = repo_files(src)
-    errors = check_blocks(blocks, src) + check_links(src, files)
+    names = ["README.md"] + sorted(f for f in files if f.startswith("docs/") and f.endswith(".md"))
+    docs = [(name, parse_blocks(os.path.join(src, name))) for name in names]
+    errors = check_links(src, files)
+    for name, blocks in docs:
+        errors += check_blocks(name, blocks, src)
     for e in errors:
         print("FAIL: " + e)
     if errors:
         return 1
-    return run_snippets(src, build, blocks, files, cflags)
+    return run_snippets(src, build, docs, files, cflags)
 
 
 if __name__ == "__main__":

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""tests/docs/test_help: the help texts and the README tell the whole truth.
+"""tests/docs/test_help: the help texts and docs/cli.md tell the whole truth.
 
 The ctest docs/test_help. The exit codes are read from the enum of
 tools/exit_codes.h (the source, not the table the help prints), then:
   - `scaf --help` and the help of param, atlas, check, deform, flow and
     edit list every code on a line of its own ("  CODE  meaning");
-  - README.md's exit status table has exactly these codes;
+  - docs/cli.md's exit status table has exactly these codes;
   - `scaf param --help` and `scaf atlas --help` name the input formats
     (OBJ, OFF, PLY, .gz) and the stopping rules (stop_reason names);
   - `scaf atlas --help` gives the default of --resolution and of
@@ -43,12 +43,12 @@ def main(argv):
         if "Exit status:" not in r.stdout or missing:
             errors.append("%s --help: exit codes %s not listed" % (name, missing or codes))
 
-    with open(src + "/README.md", encoding="utf-8") as f:
-        readme = f.read()
-    table = readme.split("## Exit status of `scaf`")[-1].split("\n## ")[0]
-    in_readme = sorted({int(c) for c in re.findall(r"^\|\s*(\d+)\s*\|", table, re.M)})
-    if in_readme != codes:
-        errors.append("README.md exit status table has %s, tools/exit_codes.h %s" % (in_readme, codes))
+    with open(src + "/docs/cli.md", encoding="utf-8") as f:
+        page = f.read()
+    table = page.split("## Exit status of `scaf`")[-1].split("\n## ")[0]
+    in_page = sorted({int(c) for c in re.findall(r"^\|\s*(\d+)\s*\|", table, re.M)})
+    if in_page != codes:
+        errors.append("docs/cli.md exit status table has %s, tools/exit_codes.h %s" % (in_page, codes))
 
     for name in ("scaf param", "scaf atlas"):
         h = helps[name]
@@ -66,7 +66,7 @@ def main(argv):
     for e in errors:
         print("FAIL: " + e)
     if not errors:
-        print("help texts list exit codes %s; README agrees; formats, stopping rules and defaults named"
+        print("help texts list exit codes %s; docs/cli.md agrees; formats, stopping rules and defaults named"
               % codes)
     return 1 if errors else 0
 
