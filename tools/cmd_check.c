@@ -34,11 +34,13 @@ static void usage(FILE *out)
             "and no two triangles overlapping (boundary segments neither cross nor touch,\n"
             "no chart inside another).\n"
             "\n"
-            "  --json   print one JSON object (keys: triangles, positive, flipped,\n"
+            "  --json   print one JSON object (docs/reports.md; keys: schema, command,\n"
+            "           input, triangles, positive, flipped,\n"
             "           degenerate, charts, mirrored_charts, mixed_charts, boundary_edges,\n"
             "           boundary_loops, boundary_crossings, boundary_touchings,\n"
             "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops,\n"
-            "           corner_overlaps, bijective, min_chart_gap, packing_efficiency)\n"
+            "           corner_overlaps, bijective, min_chart_gap, packing_efficiency,\n"
+            "           energy)\n"
             "  --3d     check the 3D surface for self-intersections instead (exact\n"
             "           triangle-triangle tests; the default for a closed surface without\n"
             "           vt); exit 1 when two faces meet in more than the vertices or edge\n"
@@ -55,17 +57,20 @@ static void usage(FILE *out)
             "sharing a UV index are one chart; null with fewer than two charts).\n"
             "packing_efficiency: total UV area of the triangles / (longest side of the UV\n"
             "bounding box)^2, the fraction of the square the layout fills.\n"
+            "energy: E of the map with its UVs scaled to the surface's area, the figure\n"
+            "every command reports (4 at an isometry; docs/energy.md).\n"
             "A chart whose triangles are all clockwise is reported as mirrored; it counts\n"
             "as flipped (the map does not preserve orientation), so it is not bijective.\n"
             "\n");
     exit_codes_print(out);
 }
 
-static void print_json(const char *path, const bij_report *r, double gap, double eff)
+static void print_json(const char *path, const bij_report *r, double gap, double eff, double energy)
 {
-    printf("{\"file\": ");
+    json_write_report_head(stdout, "check");
+    printf(",\n  \"input\": ");
     json_write_string(stdout, path);
-    printf(", \"triangles\": %d, \"positive\": %d, \"flipped\": %d, \"degenerate\": %d, "
+    printf(",\n  \"triangles\": %d, \"positive\": %d, \"flipped\": %d, \"degenerate\": %d, "
            "\"charts\": %d, \"mirrored_charts\": %d, \"mixed_charts\": %d, "
            "\"boundary_edges\": %d, \"boundary_loops\": %d, \"boundary_crossings\": %lld, "
            "\"boundary_touchings\": %lld, \"boundary_foldbacks\": %lld, \"folded_edges\": %d, "
@@ -79,10 +84,12 @@ static void print_json(const char *path, const bij_report *r, double gap, double
     json_write_number(stdout, gap);
     printf(", \"packing_efficiency\": ");
     json_write_number(stdout, eff);
+    printf(", \"energy\": ");
+    json_write_number(stdout, energy);
     printf("}\n");
 }
 
-static void print_text(const char *path, const bij_report *r, double gap, double eff)
+static void print_text(const char *path, const bij_report *r, double gap, double eff, double energy)
 {
     printf("%s: %s\n", path, r->bijective ? "bijective" : "NOT bijective");
     printf("  triangles            %d\n", r->triangles);
@@ -102,6 +109,8 @@ static void print_text(const char *path, const bij_report *r, double gap, double
     if (isfinite(gap)) printf("  min chart gap        %.6g\n", gap);
     else printf("  min chart gap        none (fewer than two charts)\n");
     printf("  packing efficiency   %.4f\n", eff);
+    if (isfinite(energy)) printf("  E (area-matched)     %.6f\n", energy);
+    else printf("  E (area-matched)     none (a triangle is flipped or flat)\n");
 }
 
 int cmd_check(int argc, char **argv)
@@ -161,12 +170,14 @@ int cmd_check(int argc, char **argv)
     double gap = INFINITY, eff = 0.0;
     if (s == SCAF_OK) s = chart_gap_min(m.nuv, m.UV, m.nf, m.FT, NULL, 0.0, &gap, NULL, &err);
     if (s == SCAF_OK) eff = chart_packing_efficiency(m.nuv, m.UV, m.nf, m.FT);
+    double energy = NAN; /* docs/energy.md; stays NaN for faces without vt */
+    if (s == SCAF_OK) scaf_area_matched_energy(m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT, &energy);
     mesh_free(&m);
     if (s != SCAF_OK) {
         fprintf(stderr, "scaf check: %s: %s\n", path, err.message);
         return exit_code_for(s);
     }
-    if (json) print_json(path, &r, gap, eff);
-    else print_text(path, &r, gap, eff);
+    if (json) print_json(path, &r, gap, eff, energy);
+    else print_text(path, &r, gap, eff, energy);
     return r.bijective ? EXIT_OK : EXIT_NOT_BIJECTIVE;
 }

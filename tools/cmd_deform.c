@@ -67,8 +67,8 @@ static void usage(FILE *o)
             "  --threads N            threads of the per-triangle work and of the\n"
             "                         factorization (default 1)\n"
             "  --deterministic        the same bytes for any --threads N (slower)\n"
-            "  --report FILE.json     energy, max_handle_error, iterations, stop_reason and\n"
-            "                         per-iteration history\n"
+            "  --report FILE.json     energy (area-matched), final_energy, max_handle_error,\n"
+            "                         stop_reason, iterations (docs/reports.md)\n"
             "  --svg FILE             picture of the deformed mesh\n"
             "  --png FILE             the same as PNG\n"
             "  -h, --help             this help\n" CLI_OUTPUTS_HELP "\n");
@@ -187,22 +187,26 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
 }
 
 static scaf_status write_report(const char *path, const deform_args *a, int nh,
-                                const deform_result *r, const progress_state *s, scaf_error *err)
+                                const deform_result *r, double energy, const progress_state *s,
+                                scaf_error *err)
 {
     FILE *f = fopen(path, "wb");
     if (!f) return err_set(err, SCAF_ERR_IO, "cannot write '%s'", path);
-    fputs("{\n  \"input\": ", f);
+    json_write_report_head(f, "deform");
+    fputs(",\n  \"input\": ", f);
     json_write_string(f, a->in);
     fputs(",\n  \"targets\": ", f);
     json_write_string(f, a->targets);
-    fprintf(f, ",\n  \"handles\": %d,\n  \"remesh\": %s,\n  \"energy\": ", nh,
+    fprintf(f, ",\n  \"handles\": %d,\n  \"remesh\": %s,\n  \"final_energy\": ", nh,
             a->no_remesh ? "false" : "true");
     json_write_number(f, r->energy);
+    fputs(",\n  \"energy\": ", f);
+    json_write_number(f, energy);
     fputs(",\n  \"max_handle_error\": ", f);
     json_write_number(f, r->max_handle_error);
-    fprintf(f, ",\n  \"iterations\": %d,\n  \"stop_reason\": ", r->iterations);
+    fprintf(f, ",\n  \"iteration_count\": %d,\n  \"stop_reason\": ", r->iterations);
     json_write_string(f, scaf_stop_reason_name(r->stop));
-    fputs(",\n  \"history\": [", f);
+    fputs(",\n  \"iterations\": [", f);
     for (int i = 0; i < s->n; i++) {
         fprintf(f, "%s\n    {\"iteration\": %d, \"energy\": ", i ? "," : "", s->rec[i].iteration);
         json_write_number(f, s->rec[i].energy);
@@ -345,6 +349,12 @@ static int deform_main(int argc, char **argv)
         rc = EXIT_NOMEM;
         goto done;
     }
+    /* the area-matched E of rest -> deformed (docs/energy.md), then V3
+     * becomes the deformed positions */
+    for (int v = 0; v < nv; v++)
+        V3[3 * v] = P[2 * v], V3[3 * v + 1] = P[2 * v + 1], V3[3 * v + 2] = 0.0;
+    double e_matched = NAN;
+    scaf_area_matched_energy(V3, nv, F, m.nf, X, nv, F, &e_matched);
     for (int v = 0; v < nv; v++)
         V3[3 * v] = X[2 * v], V3[3 * v + 1] = X[2 * v + 1], V3[3 * v + 2] = 0.0;
     mesh out = {nv, V3, m.nf, (int *)F, nv, X, (int *)F};
@@ -366,7 +376,7 @@ static int deform_main(int argc, char **argv)
         goto done;
     if (a.report) {
         path = cli_outputs_begin(&job.outs, job.k.report, &err);
-        st = path ? write_report(path, &a, t.n, &r, &ps, &err) : SCAF_ERR_IO;
+        st = path ? write_report(path, &a, t.n, &r, e_matched, &ps, &err) : SCAF_ERR_IO;
         if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&job.outs);

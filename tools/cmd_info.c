@@ -81,7 +81,8 @@ static void print_json(FILE *out, const char *path, const mesh_read_info *ri, co
     const tri_complex *cx = &t->cx;
     int kinds[MESH_CHART_NON_ORIENTABLE + 1] = {0};
     for (int c = 0; c < ch->ncharts; c++) kinds[mesh_chart_classify(ch, c)]++;
-    fputs("{\n  \"file\": ", out);
+    json_write_report_head(out, "info");
+    fputs(",\n  \"input\": ", out);
     json_write_string(out, path);
     fprintf(out, ",\n  \"format\": \"%s\",\n", format_name(ri->format));
     fprintf(out, "  \"vertices\": %d,\n", t->vertices);

@@ -42,7 +42,7 @@ static void spiral_end_to_end(void **state)
     assert_non_null(r);
     assert_true(report_number(r, "max_handle_error") < 1e-3);
     assert_true(report_number(r, "energy") < 4.1);
-    assert_true(report_number(r, "iterations") > 92); /* the drag: 23 waypoints x 4 */
+    assert_true(report_number(r, "iteration_count") > 92); /* the drag: 23 waypoints x 4 */
     assert_non_null(strstr(r, "\"stop_reason\": \"tolerance\""));
     free(r);
     /* v and vt agree, z = 0 */
