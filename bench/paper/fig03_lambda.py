@@ -27,7 +27,7 @@ def body(fig):
         out, rep = fig.tmp("fig03_%s.obj" % tag), fig.tmp("fig03_%s.json" % tag)
         png = fig.path("fig03_lambda_%s.png" % tag)
         _, _, _, wall = fig.scaf("param", mesh, "-o", out, "--lambda-ratio", r, "--report", rep,
-                                 "--png", png, "--png-size", 300, "--checker", "--quiet")
+                                 "--png", png, "--png-size", 220, "--checker", "--quiet")
         d = read_json(rep)
         E = [i["energy"] for i in d["iterations"]]
         f = d["final_energy"]

@@ -38,7 +38,7 @@ def one(fig, mesh, label, tag, paper_model, stand_in, png):
 
 def body(fig):
     mesh = fig.data("disk/hilbert.obj")
-    runs = [("disk/hilbert.obj", one(fig, mesh, "disk/hilbert.obj", "hilbert", "Space Filling (Fig. 11)", True,
+    runs = [("disk/hilbert.obj", one(fig, mesh, "disk/hilbert.obj (the strip, not subdivided)", "hilbert", "Space Filling (Fig. 11)", True,
                                      "fig11_hilbert.png"))]
     if fig.args.large:
         sub = fig.tmp("hilbert_x4.obj")

@@ -151,7 +151,7 @@ def page(recs, args, md_dir, out_dir, failed):
     L = ["# The SCAF paper, figure by figure, remade by scaf", "",
          "Jiang, Schaefer and Panozzo, *Simplicial Complex Augmentation Framework for Bijective Maps* "
          "(SIGGRAPH Asia 2017): every figure with a result, and Table 1, remade with this repository's "
-         "`scaf` on public meshes (the shared test meshes, `../shared/data`, or meshes scaf generates). "
+         "`scaf` on public meshes (the shared test meshes, shared/data beside the checkout or SCAF_DATA_DIR, or meshes scaf generates). "
          "Every picture below was written by scaf itself (`--png`, `--png-seams`, `--checker`).", "",
          "Regenerate it (a few minutes on one core; `--large` adds the large meshes; a missing mesh is "
          "skipped with a line saying so):", "",
