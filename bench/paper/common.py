@@ -121,7 +121,7 @@ class Figure:
         return os.path.join(d, name)
 
     # --- running scaf -----------------------------------------------------------
-    def scaf(self, *args, ok=(0,), timeout=3600):
+    def scaf(self, *args, ok=(0,), timeout=None):
         """Run `scaf ARGS` (with --threads 1 where the command takes it);
         returns (exit code, stdout, stderr, wall seconds)."""
         args = [str(a) for a in args]

@@ -19,7 +19,7 @@ PAPER = ("Smith and Schaefer's space-filling-curve test: SCAF reaches the same m
 
 
 def one(fig, mesh, label, tag, paper_model, stand_in, png):
-    out, rep = fig.tmp("%s.obj" % tag), fig.tmp("%s.json" % tag)
+    out, rep = fig.tmp("%s_uv.obj" % tag), fig.tmp("%s_uv.json" % tag)
     args = ["param", mesh, "-o", out, "--report", rep, "--quiet"]
     if png:
         args += ["--png", fig.path(png), "--png-size", 360, "--checker", 60]

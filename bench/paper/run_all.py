@@ -2,7 +2,7 @@
 """bench/paper/run_all: remake the SCAF paper's figures and Table 1, write docs/paper.md.
 
     python3 bench/paper/run_all.py [--large] [--out docs/paper] [--md docs/paper.md]
-    python3 bench/paper/run_all.py --small --only 3,4,13,14 --out /tmp/p --md /tmp/p/paper.md
+    python3 bench/paper/run_all.py --small --only 3,4,10,13,14 --out /tmp/p --md /tmp/p/paper.md
 
 Runs every figure script of bench/paper (fig*.py, each in its own process)
 with the built build/scaf (SCAF_BINARY) and libscaf.so (SCAF_LIBRARY), one
