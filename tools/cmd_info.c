@@ -45,6 +45,8 @@ static void usage(FILE *out)
             "\n"
             "options:\n"
             "  --json     one JSON object on stdout instead of text\n"
+            "  --input-format F  obj, off, ply, gltf or glb whatever FILE's name (FILE\n"
+            "             \"-\": the standard input, its format from the first bytes)\n"
             "  -h, --help this help\n"
             "\n"
             "Exit status: 0 reported (defects do not fail), 2 usage, 3 file missing or\n"
@@ -194,7 +196,7 @@ static void print_text(FILE *out, const char *path, const mesh_read_info *ri, co
 
 int cmd_info(int argc, char **argv)
 {
-    int json = 0;
+    int json = 0, pr;
     const char *path = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -202,6 +204,8 @@ int cmd_info(int argc, char **argv)
             return EXIT_OK;
         } else if (!strcmp(argv[i], "--json")) {
             json = 1;
+        } else if ((pr = cli_input_format_option("info", argc, argv, &i)) != 0) {
+            if (pr < 0) return EXIT_USAGE;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             fprintf(stderr, "scaf info: unknown option '%s' (see `scaf info --help`)\n", argv[i]);
             return EXIT_USAGE;

@@ -29,7 +29,8 @@ typedef enum mesh_format {
     MESH_FORMAT_UNKNOWN = 0,
     MESH_FORMAT_OBJ,
     MESH_FORMAT_OFF,
-    MESH_FORMAT_PLY
+    MESH_FORMAT_PLY,
+    MESH_FORMAT_GLTF /* glTF 2.0, .gltf (JSON) or .glb (binary): mesh/gltf_mesh */
 } mesh_format;
 
 /* What a reader noticed that is not an error (reported as warnings). */
@@ -53,6 +54,22 @@ scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_erro
 /* The whole content of a file, gzip decompressed when it starts with the
  * gzip magic bytes: *data (malloc'd, free it) of *size bytes. */
 scaf_status mesh_load_file(const char *path, char **data, size_t *size, scaf_error *err);
+
+/* Read everything from descriptor fd (a pipe, standard input) up to its
+ * end: *data (malloc'd, free it) of *size bytes; `name` in messages.
+ * SCAF_ERR_IO when the read fails, SCAF_ERR_PARSE when the data is
+ * gzip-compressed (decompress it first: only files are inflated),
+ * SCAF_ERR_CANCELLED on SIGINT / SIGTERM. An empty stream is not an error
+ * here (the caller says what it expected). */
+scaf_status mesh_load_fd(int fd, const char *name, char **data, size_t *size, scaf_error *err);
+
+/* The format a file name implies (.obj, .off, .ply, .gltf, .glb, each
+ * optionally .gz), MESH_FORMAT_UNKNOWN otherwise. */
+mesh_format mesh_format_from_name(const char *path);
+
+/* The format the first bytes show: "ply", an "...OFF" first token, the
+ * binary glTF magic "glTF", a JSON object ('{' first) for glTF, else OBJ. */
+mesh_format mesh_format_from_content(const char *data, size_t size);
 
 /* Parse a whole file already in memory; `name` is used in messages. */
 scaf_status mesh_parse(const char *data, size_t size, mesh_format format, const char *name, mesh *m,
