@@ -101,8 +101,10 @@ int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_re
 }
 
 scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info,
-                         const char *out, const mesh *o, scaf_error *err)
+                         const char *target, const char *out, const mesh *o, scaf_error *err)
 {
+    mesh_format to = strcmp(target, "-") ? mesh_format_from_name(target) : MESH_FORMAT_OBJ;
+    if (to == MESH_FORMAT_PLY) return mesh_write_ply(out, o, err);
     if (info && info->format == MESH_FORMAT_OBJ) {
         size_t n;
         const char *text = !strcmp(in, "-") ? cli_stdin_data(&n) : NULL;

@@ -44,9 +44,12 @@ const char *cli_stdin_data(size_t *size);
 int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_read_info *info);
 
 /* cmd: command name for messages; in/info: the input path and what its
- * read said; o: the mesh as read with the new UV and FT. */
+ * read said; target: the output's name as the user gave it (its extension
+ * picks the format: .ply (mesh/write_ply), otherwise OBJ; "-" OBJ); out:
+ * the path to write (the staged file of tools/cli_outputs); o: the mesh
+ * as read with the new UV and FT. */
 scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info,
-                         const char *out, const mesh *o, scaf_error *err);
+                         const char *target, const char *out, const mesh *o, scaf_error *err);
 
 /* The same for `scaf edit`, whose input may be moved, deleted or replaced
  * while it runs: the input's text is read from `source` (a path to the

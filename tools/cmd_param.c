@@ -50,7 +50,9 @@ static void usage(FILE *o)
             "IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
             "gzip-compressed (.gz); an unknown extension is recognized by the content;\n"
             "\"-\" reads the standard input (format: --input-format, or the first bytes).\n"
-            "Polygons are fan-triangulated. UVs (vt) are read from OBJ only.\n"
+            "Polygons are fan-triangulated. UVs: OBJ vt; PLY face texcoord lists or vertex\n"
+            "s,t / u,v / texture_u,texture_v. -o OUT.ply writes a binary PLY with a\n"
+            "texcoord list per face (the corners of a seam differ).\n"
             "\n");
     /* two strings: one would pass the 4095 characters C17 guarantees */
     fprintf(o,

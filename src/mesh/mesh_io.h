@@ -16,6 +16,10 @@
  * indices; when only some faces have them, the UVs are dropped and
  * info->faces_without_uv counts the faces without (a warning to print).
  * Unreferenced vertices are kept (nv counts every `v`).
+ * PLY UVs: a face list `texcoord` (u v per corner; corners of one vertex
+ * with the same (u, v) share a UV, mesh/uv_weld), else per-vertex
+ * s,t / u,v / texture_u,texture_v / texture_s,texture_t (the first pair
+ * declared).
  */
 #ifndef SCAF_MESH_MESH_IO_H
 #define SCAF_MESH_MESH_IO_H
@@ -39,6 +43,8 @@ typedef struct mesh_read_info {
     int polygons_triangulated; /* faces with more than 3 corners, fanned */
     int normals_ignored;       /* `vn` lines (OBJ) */
     int faces_without_uv;      /* OBJ faces lacking vt while others have it */
+    const char *uv_source;     /* where the mesh's UVs came from ("OBJ vt", "PLY face
+                                  texcoord", "PLY vertex u, v", ...), NULL: none */
 } mesh_read_info;
 
 /* The warnings of a read as one line of text for people (no trailing
@@ -80,5 +86,11 @@ scaf_status mesh_parse(const char *data, size_t size, mesh_format format, const 
  * faces. Written to a temporary file in the target folder, then renamed:
  * on failure no partial file is left and the target is untouched. */
 scaf_status mesh_write_obj(const char *path, const mesh *m, scaf_error *err);
+
+/* Write a binary little-endian PLY: double x y z per vertex, each face's
+ * vertex_indices and, with UVs, its `texcoord` list (u v per corner), the
+ * convention Blender and MeshLab read (mesh/write_ply). Atomic as
+ * mesh_write_obj. */
+scaf_status mesh_write_ply(const char *path, const mesh *m, scaf_error *err);
 
 #endif /* SCAF_MESH_MESH_IO_H */
