@@ -32,7 +32,9 @@ int cli_uv_job_write_map(cli_uv_job *j, const mesh *o)
     scaf_error err;
     err_clear(&err);
     const char *path = cli_outputs_begin(&j->outs, j->k.mesh, &err);
-    scaf_status st = path ? cli_write_uv(j->cmd, j->in, &j->rinfo, path, o, &err) : SCAF_ERR_IO;
+    scaf_status st = path
+        ? cli_write_uv(j->cmd, j->in, &j->rinfo, j->outs.out[j->k.mesh].path, path, o, &err)
+        : SCAF_ERR_IO;
     return cli_outputs_end(&j->outs, j->k.mesh, st, &err);
 }
 

@@ -58,8 +58,11 @@ static void usage(FILE *o)
             "mesh, closed or open, of any genus, with or without vt (docs/seams.md).\n"
             "\n"
             "IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
-            "gzip-compressed (.gz); an unknown extension is recognized by the content.\n"
-            "Polygons are fan-triangulated. UVs (vt) are read from OBJ only.\n"
+            "gzip-compressed (.gz); an unknown extension is recognized by the content;\n"
+            "\"-\" reads the standard input (format: --input-format, or the first bytes).\n"
+            "Polygons are fan-triangulated. UVs: OBJ vt; PLY face texcoord lists or vertex\n"
+            "s,t / u,v / texture_u,texture_v. -o OUT.ply writes a binary PLY with a\n"
+            "texcoord list per face (the corners of a seam differ).\n"
             "\n"
             "options:\n"
             "  -o, --output FILE        output OBJ (required)\n"
@@ -105,6 +108,9 @@ static void usage(FILE *o)
             "                           also to their least-area box, and the layout to its\n"
             "                           smallest bounding square)\n"
             "  --quiet                  no progress line\n"
+            "  --input-format F         obj, off, ply, gltf or glb: the input's format\n"
+            "                           whatever its name (default: the extension, or for\n"
+            "                           \"-\" (standard input) the first bytes)\n"
             "  --threads N              threads of the per-triangle work (assembly, line\n"
             "                           search) and of the solver's dense kernels (default:\n"
             "                           all cores, or OPENBLAS_NUM_THREADS when set); the\n"
@@ -184,6 +190,7 @@ static int atlas_main(int argc, char **argv)
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         int pr = cli_png_option("atlas", argc, argv, &i, &png);
+        if (pr == 0) pr = cli_input_format_option("atlas", argc, argv, &i);
         if (pr < 0) return EXIT_USAGE;
         if (pr > 0) continue;
 #define NEED_VALUE() CLI_NEED_VALUE("atlas")

@@ -15,6 +15,7 @@
 
 #include "check_surface.h"
 #include "check_tets.h"
+#include "cli_mesh_io.h"
 #include "commands.h"
 #include "base/json_write.h"
 #include "exit_codes.h"
@@ -29,7 +30,8 @@ static void usage(FILE *out)
             "usage: scaf check [--json] [--3d] FILE\n"
             "       scaf check [--json] FILE.mesh\n"
             "\n"
-            "Checks whether the UV map of FILE (.obj with vt, optionally .gz) is bijective,\n"
+            "Checks whether the UV map of FILE (.obj with vt, .ply with texcoord or s,t,\n"
+            "optionally .gz; \"-\": the standard input) is bijective,\n"
             "with exact arithmetic: every UV triangle counter-clockwise with nonzero area,\n"
             "and no two triangles overlapping (boundary segments neither cross nor touch,\n"
             "no chart inside another).\n"
@@ -51,6 +53,8 @@ static void usage(FILE *out)
             "  FILE.mesh  a tetrahedral mesh (Medit): every tet must be positively\n"
             "           oriented (exact orient3d); exit 1 when one is inverted or flat.\n"
             "           JSON keys: tets, positive, inverted, degenerate, first_bad, valid\n"
+            "  --input-format F  obj, off, ply, gltf or glb whatever FILE's name (FILE \"-\":\n"
+            "           the standard input, its format from the first bytes by default)\n"
             "  --help   this text\n"
             "\n"
             "min_chart_gap: the smallest distance between two different charts (triangles\n"
@@ -115,7 +119,7 @@ static void print_text(const char *path, const bij_report *r, double gap, double
 
 int cmd_check(int argc, char **argv)
 {
-    int json = 0, surface3d = 0;
+    int json = 0, surface3d = 0, pr;
     const char *path = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -123,6 +127,8 @@ int cmd_check(int argc, char **argv)
             return EXIT_OK;
         } else if (!strcmp(argv[i], "--json")) {
             json = 1;
+        } else if ((pr = cli_input_format_option("check", argc, argv, &i)) != 0) {
+            if (pr < 0) return EXIT_USAGE;
         } else if (!strcmp(argv[i], "--3d") || !strcmp(argv[i], "--self-intersections")) {
             surface3d = 1;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
@@ -147,11 +153,9 @@ int cmd_check(int argc, char **argv)
     mesh_read_info info;
     scaf_error err;
     err_clear(&err);
-    scaf_status s = mesh_read(path, &m, &info, &err);
-    if (s != SCAF_OK) {
-        fprintf(stderr, "scaf check: %s\n", err.message);
-        return exit_code_for(s);
-    }
+    int read_rc = cli_read_mesh("check", path, 1, &m, &info);
+    if (read_rc != EXIT_OK) return read_rc;
+    scaf_status s;
     if (surface3d || (!mesh_has_uv(&m) && check_surface_is_closed(&m))) {
         int status = check_surface_run(path, &m, json);
         mesh_free(&m);

@@ -48,8 +48,11 @@ static void usage(FILE *o)
             "chart per component (docs/seams.md).\n"
             "\n"
             "IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
-            "gzip-compressed (.gz); an unknown extension is recognized by the content.\n"
-            "Polygons are fan-triangulated. UVs (vt) are read from OBJ only.\n"
+            "gzip-compressed (.gz); an unknown extension is recognized by the content;\n"
+            "\"-\" reads the standard input (format: --input-format, or the first bytes).\n"
+            "Polygons are fan-triangulated. UVs: OBJ vt; PLY face texcoord lists or vertex\n"
+            "s,t / u,v / texture_u,texture_v. -o OUT.ply writes a binary PLY with a\n"
+            "texcoord list per face (the corners of a seam differ).\n"
             "\n");
     /* two strings: one would pass the 4095 characters C17 guarantees */
     fprintf(o,
@@ -82,7 +85,7 @@ static void usage(FILE *o)
             "                         a tenth of it in Newton iterations; arap: E_M + the\n"
             "                         3D area, since E_M is about 0 at its minimum)\n"
             "  --min-angle DEG        scaffold minimum angle (default 20)\n"
-            "  --quiet                no progress line\n");
+            "  --quiet                no progress line\n" CLI_INPUT_FORMAT_HELP);
     fprintf(o,
             "  --threads N            threads of the per-triangle work (assembly, line\n"
             "                         search) and of the solver's dense kernels (default:\n"
@@ -188,6 +191,7 @@ static int parse_args(int argc, char **argv, param_args *o)
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         int pr = cli_png_option("param", argc, argv, &i, &o->png);
+        if (pr == 0) pr = cli_input_format_option("param", argc, argv, &i);
         if (pr < 0) return EXIT_USAGE;
         if (pr > 0) continue;
 #define NEED_VALUE() CLI_NEED_VALUE("param")
