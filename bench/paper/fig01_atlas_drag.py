@@ -67,14 +67,14 @@ def body(fig):
     fig.picture("fig01_atlas.png", "the atlas: E %.4f, packing efficiency %.3f" %
                 (d["final_energy"] if "final_energy" in d else float("nan"), chk["packing_efficiency"]))
     fig.picture("fig01_dragged.png", "chart %d dragged by (0.15, 0.10) and turned 1 rad, 40 iterations" % c)
-    m = {"vertices": d["vertices"], "faces": d["faces"]}
-    fig.row("seams/spot.obj (13 charts)", "Nefertiti (Fig. 1)", True, v=d["vertices"], f=d["faces"],
-            it=_iterations(d), seconds=d["total_seconds"], it_seconds=d["total_seconds"] / _iterations(d),
+    m = {"vertices": d["mesh"]["vertices"], "faces": d["mesh"]["faces"]}
+    fig.row("seams/spot.obj (13 charts)", "Nefertiti (Fig. 1)", True, v=d["mesh"]["vertices"], f=d["mesh"]["faces"],
+            it=_iterations(d), seconds=d["seconds"], it_seconds=d["seconds"] / _iterations(d),
             **report_rows(d))
     fig.rec["numbers"] = {"atlas": {"E": d.get("final_energy"), "efficiency": chk["packing_efficiency"],
                                     "min_gap": chk["min_chart_gap"], "iterations": _iterations(d),
                                     "settle": d["settle_iterations_run"], "compact": d["compact_iterations_run"],
-                                    "seconds": d["total_seconds"]},
+                                    "seconds": d["seconds"]},
                           "drag": {"chart": c, "pull": pull, "handle_error": trace, "start_error": e0,
                                    "min_gap": chk2["min_chart_gap"], "efficiency": out.efficiency}}
     fig.rec["scaf"] = (
@@ -85,12 +85,12 @@ def body(fig):
         "over %d iterations while the other charts make room; the layout stays bijective with the "
         "padding (min gap %.6f)." %
         (m["vertices"], m["faces"], _iterations(d), d["settle_iterations_run"], d["compact_iterations_run"],
-         d["total_seconds"], chk["packing_efficiency"], c, e0,
+         d["seconds"], chk["packing_efficiency"], c, e0,
          " -> ".join("%.3f" % e for _, e in trace[1::2]), trace[-1][0], chk2["min_chart_gap"]))
     fig.rec["headline"] = {
         "paper": "Nefertiti atlas in 0.71 s (50 iterations); drag keeps it bijective",
         "scaf": "spot atlas in %.2f s (%d iterations), bijective, gap >= padding; drag: handle error %.3f -> %.3f, "
-                "bijective" % (d["total_seconds"], _iterations(d), e0, trace[-1][1])}
+                "bijective" % (d["seconds"], _iterations(d), e0, trace[-1][1])}
     fig.rec["differs"] = ("The model is spot, not Nefertiti: the paper's Nefertiti with prescribed seams is "
                           "not public (shared/data has a Nefertiti without seams).")
 

@@ -34,15 +34,15 @@ def body(fig):
         fig.claim("%s: the deformed map is bijective (scaf check)" % name.replace("_", " "), chk["bijective"])
         fig.picture("fig04_%s.png" % name, "%s: max handle error %.2g after %d iterations (%s)" %
                     ("re-meshed every iteration" if name == "remesh" else "--no-remesh",
-                     d["max_handle_error"], d["iterations"], d["stop_reason"]))
+                     d["max_handle_error"], d["iteration_count"], d["stop_reason"]))
     er, en = res["remesh"][0]["max_handle_error"], res["no_remesh"][0]["max_handle_error"]
     fig.claim("with re-meshing the spiral is reached: max handle error %.2e < 1e-2" % er, er < 1e-2)
     fig.claim("without re-meshing it locks: max handle error %.3g > 10 x %.2e" % (en, er), en > 10 * er)
     d, wall, _ = res["remesh"]
-    fig.row("generated spiral (scaf gen spiral)", "Spiral (Fig. 4)", False, v=54, f=52, it=d["iterations"],
+    fig.row("generated spiral (scaf gen spiral)", "Spiral (Fig. 4)", False, v=54, f=52, it=d["iteration_count"],
             seconds=wall)
     fig.rec["numbers"] = {k: {"max_handle_error": v[0]["max_handle_error"], "energy": v[0]["energy"],
-                              "iterations": v[0]["iterations"], "stop_reason": v[0]["stop_reason"],
+                              "iterations": v[0]["iteration_count"], "stop_reason": v[0]["stop_reason"],
                               "seconds_wall": v[1]} for k, v in res.items()}
     dn = res["no_remesh"][0]
     fig.rec["headline"] = {"paper": "re-meshed: reaches the spiral; frozen scaffold: locks",
@@ -52,7 +52,7 @@ def body(fig):
         "handle error **%.1e** (the ring's radius is 1); with `--no-remesh`, %d iterations (%s), E %.2f, "
         "largest handle error **%.3f**: the first scaffold's slivers lock the strip, as in the paper. "
         "Both maps are bijective (`scaf check`)." %
-        (d["iterations"], d["energy"], er, dn["iterations"], dn["stop_reason"], dn["energy"], en))
+        (d["iteration_count"], d["energy"], er, dn["iteration_count"], dn["stop_reason"], dn["energy"], en))
 
 
 if __name__ == "__main__":

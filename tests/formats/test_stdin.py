@@ -45,8 +45,8 @@ def main():
         rc2, j2, err = run(["info", "--json", "-"], stdin=text)
         expect(rc1 == 0 and rc2 == 0, "info -: " + err)
         j1, j2 = json.loads(j1), json.loads(j2)
-        j1.pop("file", None)
-        j2.pop("file", None)
+        j1.pop("input", None)
+        j2.pop("input", None)
         expect(j1 == j2, "info - differs from info FILE")
 
         # OFF sniffed from the first bytes, and forced by --input-format
