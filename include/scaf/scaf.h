@@ -395,5 +395,8 @@ SCAF_API void scaf_param_destroy(scaf_param_t *p);
 #include "atlas.h"
 /* Interactive dragging of an atlas's charts and vertices (scaf_drag_*). */
 #include "drag.h"
+/* The 3D functions: inflate, untangle, flow, exact surface and tet checks
+ * (scaf_inflate, scaf_untangle, scaf_flow, scaf_check_*). */
+#include "volume.h"
 
 #endif /* SCAF_SCAF_H */
