@@ -98,9 +98,6 @@ TOOLS_INTERNAL_ALLOWED = {
     # `scaf deform` (2D handles): its progress reads the handle term's error
     # and checks each iteration with geom/bijectivity
     "tools/cmd_deform.c": "handle error (opt/handle_term), 2D bijectivity",
-    # `scaf tet`: TetGen's box mesh (geom/tet_box_mesh) has no public
-    # function yet
-    "tools/cmd_tet.c": "geom/tet_box_mesh",
 }
 tools_internal = set()
 for dirpath, _, files in os.walk(os.path.join(root, "tools")):

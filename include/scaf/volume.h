@@ -1,7 +1,7 @@
 /* scaf/volume.h: the public C API of scaf's 3D functions: a closed surface
  * inflated inside a box of tets (scaf_inflate), its self-intersections
  * removed (scaf_untangle), conformalized mean curvature flow (scaf_flow),
- * and the exact checks of a surface (scaf_check_surface) and of a tet
+ * the initial tet scaffold (scaf_tet_mesh), and the exact checks of a surface (scaf_check_surface) and of a tet
  * mesh (scaf_check_tets).
  *
  * Included by scaf/scaf.h; it may also be included on its own. Same
@@ -156,16 +156,42 @@ SCAF_API scaf_status scaf_inflate(scaf_volume_t *h, const double *V, int nv, con
                                   const scaf_inflate_options_t *options,
                                   scaf_volume_progress_fn progress, void *user);
 
-/* The final tet mesh of scaf_inflate: #P = the surface's vertices (at the
- * result positions) then the scaffold's own, #T tets. Counts are 0
- * without an inflate result. */
+/* The final tet mesh of scaf_inflate (or the mesh of scaf_tet_mesh): #P =
+ * the surface's vertices (at the result positions) then the scaffold's
+ * own, #T tets. Counts are 0 without an inflate or tet result. */
 SCAF_API int scaf_volume_tet_vertex_count(const scaf_volume_t *h);
 SCAF_API int scaf_volume_tet_count(const scaf_volume_t *h);
 
 /* Copy them out: P #P by 3, T #T by 4 (positively oriented), label #T
  * (1 inside the surface, 2 outside); any may be NULL. SCAF_ERR_USAGE
- * without an inflate result. */
+ * without an inflate or tet result. */
 SCAF_API scaf_status scaf_volume_get_tets(const scaf_volume_t *h, double *P, int *T, int *label);
+
+/* ------------------------------------------------------------------------
+ * scaf_tet_mesh: the initial 3D scaffold alone. The space inside a box
+ * around a closed surface (its bounding box scaled box_scale times about
+ * its centre, each side cut into box_cells squares) tetrahedralized by
+ * TetGen with every surface triangle kept (no point added on the surface
+ * or the box), then checked exactly: every tet positive, every surface
+ * triangle a face of one tet inside and one outside. The tets are read
+ * with scaf_volume_get_tets (the surface's vertices first, unmoved).
+ * ---------------------------------------------------------------------- */
+
+typedef struct scaf_tet_options {
+    size_t struct_size; /* sizeof(scaf_tet_options_t) (see the top) */
+    double box_scale;   /* > 1, <= 1e6 (3) */
+    int box_cells;      /* squares per box side edge, 1..64 (8) */
+} scaf_tet_options_t;
+
+SCAF_API scaf_tet_options_t scaf_tet_options_default(void);
+
+/* Errors: SCAF_ERR_USAGE (bad options, NULL arrays), SCAF_ERR_MESH (an
+ * index out of range, a non-finite coordinate, the surface cannot be
+ * meshed: open, non-manifold, self-intersecting, the message says which;
+ * units), SCAF_ERR_NOMEM, SCAF_ERR_INTERNAL (TetGen's output failed a
+ * check). */
+SCAF_API scaf_status scaf_tet_mesh(scaf_volume_t *h, const double *V, int nv, const int *F, int nf,
+                                   const scaf_tet_options_t *options);
 
 /* ------------------------------------------------------------------------
  * scaf_untangle: remove the self-intersections of a closed genus-0
@@ -279,7 +305,8 @@ typedef struct scaf_volume_summary {
                                   checked (scaf_flow without until_free;
                                   scaf_inflate) */
     long long defects;       /* scaf_flow with until_free: of the result */
-    double box_lo[3];        /* scaf_inflate: the box (input's units) */
+    double box_lo[3];        /* scaf_inflate, scaf_tet_mesh: the box
+                                (input's units) */
     double box_hi[3];
     double diagonal_before;  /* bounding-box diagonal of the input (all) */
     double diagonal_after;   /* scaf_inflate: ... of the result */
@@ -288,6 +315,10 @@ typedef struct scaf_volume_summary {
     double flowed_rms;       /* scaf_untangle: distances of the flowed */
     double flowed_max;       /* and of the result surface to the input, */
     double rms, max;         /* relative to diagonal_before */
+    int box_vertices;        /* scaf_tet_mesh: the box's vertices (after
+                                the surface's in the tets' points) */
+    int tets_inside;         /* scaf_tet_mesh, scaf_inflate: tets inside
+                                the surface (label 1) */
 } scaf_volume_summary_t;
 
 /* Fill s (its first s->struct_size bytes). SCAF_ERR_USAGE without a

@@ -12,7 +12,7 @@ it, inputs and outputs are nested lists (one list per row).
     p = scaf.param(V, F, iterations=20, progress=lambda i: print(i.energy))
 
 One-call functions: param, atlas; in 3D inflate, untangle, flow,
-check_surface, check_tets (scaf/volume.h); split_seams turns a per-corner UV map
+tet_mesh, check_surface, check_tets (scaf/volume.h); split_seams turns a per-corner UV map
 into one vertex per UV (vmapping, indices, uvs) for glTF or trimesh. Handles mirroring the C contexts
 (context managers that free the C object on exit): Param, Atlas, and
 Drag (interactive: handles pulled by SCAF iterations, undo, certified
@@ -34,7 +34,8 @@ from . import _lib
 from .obj import read_obj
 from .seam_split import split_seams
 from ._volume import (FlowResult, InflateResult, SurfaceReport, TetsReport, UntangleResult,
-                      VolumeStepInfo, check_surface, check_tets, flow, inflate, untangle)
+                      VolumeStepInfo, check_surface, check_tets, flow, inflate, tet_mesh,
+                      untangle)
 
 ENERGIES = tuple(_lib.ENERGIES)  # names accepted for energy= (or the C int)
 INITS = tuple(_lib.INITS)  # names accepted for init= (or the C int)
@@ -45,7 +46,7 @@ __all__ = [
     "UsageError", "InputError", "MeshError", "NumericError", "OutOfMemory", "Cancelled",
     "InternalError", "library_path", "__version__", "ENERGIES", "INITS", "set_threads",
     "set_deterministic", "Drag", "DragChartInfo", "DragOutput", "default_drag_options",
-    "split_seams", "inflate", "untangle", "flow", "check_surface", "check_tets",
+    "split_seams", "inflate", "untangle", "flow", "tet_mesh", "check_surface", "check_tets",
     "InflateResult", "UntangleResult", "FlowResult", "SurfaceReport", "TetsReport",
     "VolumeStepInfo",
 ]

@@ -244,6 +244,18 @@ class VolumeSummary(ctypes.Structure):
         ("flowed_max", ctypes.c_double),
         ("rms", ctypes.c_double),
         ("max", ctypes.c_double),
+        ("box_vertices", ctypes.c_int),
+        ("tets_inside", ctypes.c_int),
+    ]
+
+
+class TetOptions(ctypes.Structure):
+    """scaf_tet_options_t"""
+
+    _fields_ = [
+        ("struct_size", _size_t),
+        ("box_scale", ctypes.c_double),
+        ("box_cells", ctypes.c_int),
     ]
 
 
@@ -297,6 +309,7 @@ STRUCTS = {
     "scaf_inflate_options_t": InflateOptions,
     "scaf_untangle_options_t": UntangleOptions,
     "scaf_flow_options_t": FlowOptions,
+    "scaf_tet_options_t": TetOptions,
     "scaf_volume_step_info_t": VolumeStepInfo,
     "scaf_volume_summary_t": VolumeSummary,
     "scaf_surface_report_t": SurfaceReport,
@@ -394,6 +407,8 @@ SIGNATURES = {
     "scaf_inflate_options_default": (InflateOptions, []),
     "scaf_untangle_options_default": (UntangleOptions, []),
     "scaf_flow_options_default": (FlowOptions, []),
+    "scaf_tet_options_default": (TetOptions, []),
+    "scaf_tet_mesh": (c_enum, [_P, _D, _int, _I, _int, ctypes.POINTER(TetOptions)]),
     "scaf_inflate": (c_enum, [_P, _D, _int, _I, _int, ctypes.POINTER(InflateOptions),
                               VOLUME_PROGRESS, ctypes.c_void_p]),
     "scaf_untangle": (c_enum, [_P, _D, _int, _I, _int, ctypes.POINTER(UntangleOptions),

@@ -1,6 +1,6 @@
 """scaf._volume: the 3D functions of scaf/volume.h on arrays.
 
-inflate, untangle and flow each run on one C scaf_volume_t, freed before
+inflate, untangle, flow and tet_mesh each run on one C scaf_volume_t, freed before
 they return; check_surface and check_tets fill a C report. Arrays in as
 scaf.param takes them (numpy array-likes or nested lists), positions out
 as #V x 3 float64. Progress callbacks and cancellation as scaf.param: a
@@ -295,6 +295,23 @@ def flow(V, F, *, steps=10, delta=1e-3, until_free=False, progress=None):
             e.result = result()
             raise
         return result()
+
+
+def tet_mesh(V, F, *, box_scale=3.0, box_cells=8):
+    """The tets of the box around the closed surface (V, F), every surface
+    triangle kept (scaf_tet_mesh: TetGen, checked exactly): (P #P x 3 with
+    the surface's vertices first, T #T x 4 positively oriented, label #T:
+    1 inside the surface, 2 outside). box_scale > 1, box_cells 1..64.
+    MeshError when the surface cannot be meshed (the message says why)."""
+    opts = _options(lib.scaf_tet_options_default, {"box_scale": box_scale, "box_cells": box_cells})
+    v, f = _surface(V, F)
+    with _Volume() as vol:
+        vol.check(lib.scaf_tet_mesh(vol.h, v.ptr, v.rows, f.ptr, f.rows, ctypes.byref(opts)))
+        P = _arrays.Output(lib.scaf_volume_tet_vertex_count(vol.h), 3, False)
+        T = _arrays.Output(lib.scaf_volume_tet_count(vol.h), 4, True)
+        label = _arrays.Output(lib.scaf_volume_tet_count(vol.h), None, True)
+        vol.check(lib.scaf_volume_get_tets(vol.h, P.ptr, T.ptr, label.ptr))
+        return P.value(), T.value(), label.value()
 
 
 def _report_check(status, report):

@@ -151,6 +151,13 @@ int main(void)
     FIELD(scaf_volume_summary_t, flowed_max);
     FIELD(scaf_volume_summary_t, rms);
     FIELD(scaf_volume_summary_t, max);
+    FIELD(scaf_volume_summary_t, box_vertices);
+    FIELD(scaf_volume_summary_t, tets_inside);
+
+    SIZE(scaf_tet_options_t);
+    FIELD(scaf_tet_options_t, struct_size);
+    FIELD(scaf_tet_options_t, box_scale);
+    FIELD(scaf_tet_options_t, box_cells);
 
     SIZE(scaf_surface_report_t);
     FIELD(scaf_surface_report_t, struct_size);

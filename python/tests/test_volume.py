@@ -125,6 +125,15 @@ class VolumeTest(unittest.TestCase):
         with self.assertRaisesRegex(scaf.MeshError, "open"):
             scaf.inflate(V, rows(F)[:-1])
 
+    def test_tet_mesh(self):
+        V, F = self.ico
+        P, T, label = scaf.tet_mesh(V, F, box_cells=3)
+        self.assertEqual(rows(P)[: len(rows(V))], rows(V))
+        self.assertTrue(scaf.check_tets(P, T).valid)
+        self.assertEqual(set(rows(label)), {1, 2})
+        with self.assertRaisesRegex(scaf.UsageError, "box_cells"):
+            scaf.tet_mesh(V, F, box_cells=0)
+
     def test_checks_by_hand(self):
         V = [[0, 0, 0], [2, 0, 0], [0, 2, 0], [0.5, 0.5, -1], [0.5, 0.5, 1], [3, 3, 0]]
         r = scaf.check_surface(V, [[0, 1, 2], [3, 4, 5]])

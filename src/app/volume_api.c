@@ -1,6 +1,6 @@
 /* app/volume_api: the public 3D functions of scaf/volume.h (scaf_inflate,
  * scaf_untangle, scaf_flow and their handle) on app/volume_deform,
- * app/inflate, app/untangle and app/surface_flow.
+ * app/inflate, app/untangle, app/surface_flow and geom/tet_box_mesh.
  *
  * Each run: options read up to their struct_size and validated (never
  * replaced) -> arrays validated -> the input checked as the CLI checks it
@@ -18,13 +18,14 @@
 #include "app/untangle.h"
 #include "app/volume_deform.h"
 #include "geom/simplex_arrays.h"
+#include "geom/tet_box_mesh.h"
 #include "mesh/closed_surface.h"
 #include "scaf/volume.h"
 #include "scaffold/scaffold_tet.h"
 
 #define VOLUME_MAX_STEPS 100000
 
-enum { RESULT_NONE = 0, RESULT_INFLATE, RESULT_UNTANGLE, RESULT_FLOW };
+enum { RESULT_NONE = 0, RESULT_INFLATE, RESULT_UNTANGLE, RESULT_FLOW, RESULT_TET };
 
 struct scaf_volume {
     scaf_error err;
@@ -85,19 +86,18 @@ scaf_status scaf_volume_get_flowed(const scaf_volume_t *h, double *X)
     return SCAF_OK;
 }
 
-int scaf_volume_tet_vertex_count(const scaf_volume_t *h)
+static int has_tets(const scaf_volume_t *h)
 {
-    return h && h->kind == RESULT_INFLATE ? h->tet_nv : 0;
+    return h && (h->kind == RESULT_INFLATE || h->kind == RESULT_TET);
 }
 
-int scaf_volume_tet_count(const scaf_volume_t *h)
-{
-    return h && h->kind == RESULT_INFLATE ? h->nt : 0;
-}
+int scaf_volume_tet_vertex_count(const scaf_volume_t *h) { return has_tets(h) ? h->tet_nv : 0; }
+
+int scaf_volume_tet_count(const scaf_volume_t *h) { return has_tets(h) ? h->nt : 0; }
 
 scaf_status scaf_volume_get_tets(const scaf_volume_t *h, double *P, int *T, int *label)
 {
-    if (!h || h->kind != RESULT_INFLATE) return SCAF_ERR_USAGE;
+    if (!has_tets(h)) return SCAF_ERR_USAGE;
     if (P) memcpy(P, h->P, sizeof(double) * 3 * (size_t)h->tet_nv);
     if (T) memcpy(T, h->T, sizeof(int) * 4 * (size_t)h->nt);
     if (label) memcpy(label, h->label, sizeof(int) * (size_t)h->nt);
@@ -155,6 +155,16 @@ scaf_untangle_options_t scaf_untangle_options_default(void)
     return o;
 }
 
+scaf_tet_options_t scaf_tet_options_default(void)
+{
+    scaf_tet_options_t o;
+    memset(&o, 0, sizeof o);
+    o.struct_size = sizeof o;
+    o.box_scale = 3.0;
+    o.box_cells = 8;
+    return o;
+}
+
 scaf_flow_options_t scaf_flow_options_default(void)
 {
     scaf_flow_options_t o;
@@ -197,6 +207,15 @@ static scaf_status inflate_options_check(const scaf_inflate_options_t *o, scaf_e
         return err_set(err, SCAF_ERR_USAGE,
                        "inflate: solver %d, expected SCAF_SOLVER_NEWTON or SCAF_SOLVER_SLIM",
                        (int)o->solver);
+    return SCAF_OK;
+}
+
+static scaf_status tet_options_check(const scaf_tet_options_t *o, scaf_error *err)
+{
+    if (!(o->box_scale > 1.0) || !(o->box_scale <= 1e6))
+        return err_set(err, SCAF_ERR_USAGE, "tet: box_scale %g must be in (1, 1e6]", o->box_scale);
+    if (o->box_cells < 1 || o->box_cells > 64)
+        return err_set(err, SCAF_ERR_USAGE, "tet: box_cells %d, expected 1..64", o->box_cells);
     return SCAF_OK;
 }
 
@@ -295,7 +314,10 @@ static scaf_status keep_inflated(scaf_volume_t *h, const volume_deform *vd, int 
     memcpy(h->P, h->X, sizeof(double) * 3 * (size_t)v->nmesh);
     memcpy(h->P + 3 * (size_t)v->nmesh, v->extra, sizeof(double) * 3 * (size_t)v->nextra);
     memcpy(h->T, v->simplices, sizeof(int) * 4 * (size_t)v->n);
-    for (int t = 0; t < v->n; t++) h->label[t] = inside[t] ? 1 : 2;
+    for (int t = 0; t < v->n; t++) {
+        h->label[t] = inside[t] ? 1 : 2;
+        h->sum.tets_inside += inside[t] ? 1 : 0;
+    }
     for (int k = 0; k < 3; k++) {
         h->sum.box_lo[k] = v->box_lo[k];
         h->sum.box_hi[k] = v->box_hi[k];
@@ -387,6 +409,62 @@ scaf_status scaf_inflate(scaf_volume_t *h, const double *V, int nv, const int *F
     }
     volume_deform_free(&vd);
     if (st != SCAF_OK && st != SCAF_ERR_CANCELLED) drop_result(h);
+    return st;
+}
+
+/* ---- tet ---------------------------------------------------------------- */
+
+scaf_status scaf_tet_mesh(scaf_volume_t *h, const double *V, int nv, const int *F, int nf,
+                          const scaf_tet_options_t *options)
+{
+    scaf_tet_options_t o;
+    OPTIONS_CHECK(scaf_tet_options_t, options, o, scaf_tet_options_default(), tet_options_check);
+    scaf_error *err = &h->err;
+    scaf_status st = simplex_arrays_check(nv, V, nf, F, 3, "face", err);
+    /* the same words as flow, inflate and untangle for an open surface */
+    if (st == SCAF_OK) st = closed_input(nv, V, nf, F, "tet", err);
+    if (st != SCAF_OK) return st;
+    int e = 0;
+    double *W = unit_copy(nv, V, nf, F, &e, err);
+    if (!W) return err->code;
+    double lo[3], hi[3];
+    tet_box_around(nv, W, o.box_scale, lo, hi);
+    tet_box_mesh tm;
+    st = tet_box_mesh_build(nv, W, nf, F, lo, hi, o.box_cells, &tm, err);
+    /* the options were checked above: what the mesher refuses is the surface */
+    if (st == SCAF_ERR_USAGE) err->code = st = SCAF_ERR_MESH;
+    if (st == SCAF_OK) {
+        h->nv = nv;
+        h->tet_nv = tm.nv;
+        h->nt = tm.nt;
+        h->X = malloc(sizeof(double) * 3 * (size_t)(nv > 0 ? nv : 1));
+        h->label = malloc(sizeof(int) * (size_t)(tm.nt > 0 ? tm.nt : 1));
+        if (!h->X || !h->label) st = err_nomem(err, "tet result");
+    }
+    if (st == SCAF_OK) {
+        memcpy(h->X, V, sizeof(double) * 3 * (size_t)nv);
+        h->P = tm.V; /* taken over from tm */
+        h->T = tm.T;
+        tm.V = NULL;
+        tm.T = NULL;
+        for (int t = 0; t < tm.nt; t++) h->label[t] = tm.inside[t] ? 1 : 2;
+        h->kind = RESULT_TET;
+        h->sum.box_vertices = tm.nbox;
+        h->sum.tets_inside = tm.ninside;
+        h->sum.input_defects = -1;
+        h->sum.diagonal_before = inflate_bbox_diagonal(nv, W);
+        for (int k = 0; k < 3; k++) {
+            h->sum.box_lo[k] = lo[k];
+            h->sum.box_hi[k] = hi[k];
+        }
+        st = unit_scale_up(h->P, 3 * (size_t)h->tet_nv, e, err);
+        if (st == SCAF_OK) st = unit_scale_up(h->sum.box_lo, 3, e, err);
+        if (st == SCAF_OK) st = unit_scale_up(h->sum.box_hi, 3, e, err);
+        if (st == SCAF_OK) st = unit_scale_up(&h->sum.diagonal_before, 1, e, err);
+    }
+    tet_box_mesh_free(&tm); /* empty after a failure */
+    free(W);
+    if (st != SCAF_OK) drop_result(h);
     return st;
 }
 

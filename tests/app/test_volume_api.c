@@ -2,7 +2,8 @@
  * scaf_inflate grows a generated sphere inside its box with every tet
  * positive (checked with scaf_check_tets, and the surface free with
  * scaf_check_surface); scaf_untangle frees the generated dented sphere;
- * scaf_flow with until_free stops at the first free step; the checks count
+ * scaf_flow with until_free stops at the first free step; scaf_tet_mesh
+ * gives positive tets around the unmoved surface; the checks count
  * what a hand-made case has (two crossing triangles, an inverted tet).
  * Every run is cancelled from its progress callback (SCAF_ERR_CANCELLED,
  * the callback not called again), and bad options and arrays fail with
@@ -19,6 +20,13 @@
 
 #include "mesh/samples.h"
 #include "scaf/scaf.h"
+
+#define ASSERT_USAGE(call, words)                                                                  \
+    do {                                                                                           \
+        assert_int_equal((call), SCAF_ERR_USAGE);                                                  \
+        if (!strstr(scaf_volume_error(h), (words)))                                                \
+            fail_msg("message '%s' lacks '%s'", scaf_volume_error(h), (words));                    \
+    } while (0)
 
 typedef struct watch {
     int calls;
@@ -234,6 +242,48 @@ static void flow_until_free(void **state)
     mesh_free(&m);
 }
 
+/* The tet scaffold alone: the surface's vertices first and unmoved, every
+ * tet positive, the counts of the summary those of the labels. */
+static void tet_mesh_alone(void **state)
+{
+    (void)state;
+    mesh m;
+    sample("icosphere", 2, &m);
+    scaf_tet_options_t o = scaf_tet_options_default();
+    o.box_cells = 3;
+    scaf_volume_t *h = scaf_volume_new();
+    assert_int_equal(scaf_tet_mesh(h, m.V, m.nv, m.F, m.nf, &o), SCAF_OK);
+    int np = scaf_volume_tet_vertex_count(h), nt = scaf_volume_tet_count(h);
+    assert_true(np > m.nv && nt > 0);
+    double *P = malloc(sizeof(double) * 3 * (size_t)np);
+    int *T = malloc(sizeof(int) * 4 * (size_t)nt), *label = malloc(sizeof(int) * (size_t)nt);
+    assert_int_equal(scaf_volume_get_tets(h, P, T, label), SCAF_OK);
+    assert_memory_equal(P, m.V, sizeof(double) * 3 * (size_t)m.nv);
+    scaf_volume_summary_t s = {.struct_size = sizeof s};
+    assert_int_equal(scaf_volume_get_summary(h, &s), SCAF_OK);
+    int inside = 0;
+    for (int t = 0; t < nt; t++) inside += label[t] == 1;
+    assert_int_equal(s.tets_inside, inside);
+    assert_true(inside > 0 && inside < nt);
+    assert_int_equal(s.box_vertices, 6 * 3 * 3 + 2); /* a 3 x 3 grid on each side */
+    for (int i = 0; i < np; i++)
+        for (int k = 0; k < 3; k++)
+            assert_true(P[3 * i + k] >= s.box_lo[k] && P[3 * i + k] <= s.box_hi[k]);
+    scaf_tets_report_t tr = {.struct_size = sizeof tr};
+    assert_int_equal(scaf_check_tets(P, np, T, nt, &tr), SCAF_OK);
+    assert_true(tr.valid);
+    o.box_cells = 65;
+    ASSERT_USAGE(scaf_tet_mesh(h, m.V, m.nv, m.F, m.nf, &o), "box_cells 65");
+    assert_int_equal(scaf_volume_tet_count(h), 0);
+    assert_int_equal(scaf_tet_mesh(h, m.V, m.nv, m.F, m.nf - 1, NULL), SCAF_ERR_MESH);
+    assert_non_null(strstr(scaf_volume_error(h), "tet needs a closed manifold"));
+    free(P);
+    free(T);
+    free(label);
+    scaf_volume_destroy(h);
+    mesh_free(&m);
+}
+
 /* Cancelled from the callback: SCAF_ERR_CANCELLED, no call after it. */
 static void cancel_from_progress(void **state)
 {
@@ -264,13 +314,6 @@ static void cancel_from_progress(void **state)
     mesh_free(&m);
     mesh_free(&d);
 }
-
-#define ASSERT_USAGE(call, words)                                                                  \
-    do {                                                                                           \
-        assert_int_equal((call), SCAF_ERR_USAGE);                                                  \
-        if (!strstr(scaf_volume_error(h), (words)))                                                \
-            fail_msg("message '%s' lacks '%s'", scaf_volume_error(h), (words));                    \
-    } while (0)
 
 static void bad_options_and_arrays(void **state)
 {
@@ -371,6 +414,7 @@ int main(void)
         cmocka_unit_test(inflate_scale_free),
         cmocka_unit_test(untangle_frees_the_dented_sphere),
         cmocka_unit_test(flow_until_free),
+        cmocka_unit_test(tet_mesh_alone),
         cmocka_unit_test(cancel_from_progress),
         cmocka_unit_test(bad_options_and_arrays),
         cmocka_unit_test(checks_count_by_hand),

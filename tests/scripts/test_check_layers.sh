@@ -41,11 +41,11 @@ grep -q "^tools/cmd_flow.c:$line: includes \"opt/cmcf.h\" (opt), but tools/ stan
 [ "$(grep -c ' includes ' "$tmp/out")" -eq 1 ] || fail "more than the injected include reported: $(cat "$tmp/out")"
 # an allow-listed file that no longer needs it is reported, to be struck off
 cp "$src/tools/cmd_flow.c" "$tmp/tree/tools/cmd_flow.c"
-sed -i '/#include "geom\//d' "$tmp/tree/tools/cmd_tet.c"
+sed -i '/#include "geom\//d' "$tmp/tree/tools/cmd_check.c"
 rc=0
 bash "$script" "$tmp/tree" >"$tmp/out" 2>&1 || rc=$?
 [ "$rc" -eq 1 ] || fail "stale allow-list entry: exit $rc, expected 1"
-grep -q "^tools/cmd_tet.c: allow-listed for scaffold/opt/geom includes but has none" "$tmp/out" ||
+grep -q "^tools/cmd_check.c: allow-listed for scaffold/opt/geom includes but has none" "$tmp/out" ||
   fail "stale allow-list entry not named: $(cat "$tmp/out")"
 
 # ---- calls: objects laid out as CMake builds them ----
