@@ -8,6 +8,12 @@
 # Checks, in ROOT (default: this repository):
 #   includes  every `#include "layer/..."` in src/<layer>/ and tools/
 #             (the public headers "scaf/..." belong to no layer);
+#   tools     the program stands on the public API (include/scaf/), base/,
+#             mesh/ (its I/O) and app/: a tools/ file that includes
+#             scaffold/, opt/ or geom/ is a violation unless it is on the
+#             commented allow-list TOOLS_INTERNAL_ALLOWED below (which
+#             should only shrink); an allow-listed file that no longer
+#             includes any of them is reported too, to be struck off;
 #   calls     with --build DIR (a configured and built CMake tree): every
 #             function or variable an object file of src/<layer>/ or tools/
 #             uses (nm: undefined symbols) that another object of the
@@ -76,6 +82,45 @@ for top in ("src", "tools"):
                         violations.append(
                             f"{rel}:{lineno}: includes {line.strip()[len('#include '):].strip()} "
                             f"({m.group(1)}), but {user} may use only {may_use(user)}")
+
+# ---- tools/ on the public API (issue 31, item 4) ---------------------------
+INTERNAL = ("scaffold", "opt", "geom")
+# tools/ files that still include scaffold/, opt/ or geom/, and why. The
+# goal is an empty list: move the work behind include/scaf/ and strike the
+# file off.
+TOOLS_INTERNAL_ALLOWED = {
+    # the 2D verdict and gap (geom/bijectivity's bij_report, geom/chart_gap)
+    # that `scaf check`, `param` and `atlas` print: the public API has no UV
+    # check that returns these counts yet
+    "tools/cmd_check.c": "2D bijectivity report",
+    "tools/cmd_param.c": "2D bijectivity report, chart gap",
+    "tools/cmd_atlas.c": "2D bijectivity report, chart gap",
+    # `scaf deform` (2D handles): its progress reads the handle term's error
+    # and checks each iteration with geom/bijectivity
+    "tools/cmd_deform.c": "handle error (opt/handle_term), 2D bijectivity",
+}
+tools_internal = set()
+for dirpath, _, files in os.walk(os.path.join(root, "tools")):
+    for name in sorted(files):
+        if not name.endswith((".c", ".h")):
+            continue
+        path = os.path.join(dirpath, name)
+        rel = os.path.relpath(path, root).replace(os.sep, "/")
+        with open(path, encoding="utf-8", errors="replace") as f:
+            for lineno, line in enumerate(f, 1):
+                m = INCLUDE.match(line)
+                if not m or m.group(1) not in INTERNAL:
+                    continue
+                tools_internal.add(rel)
+                if rel not in TOOLS_INTERNAL_ALLOWED:
+                    violations.append(
+                        f"{rel}:{lineno}: includes {line.strip()[len('#include '):].strip()} "
+                        f"({m.group(1)}), but tools/ stands on the public API (include/scaf/), "
+                        f"base, mesh and app (or the allow-list in scripts/check_layers.sh)")
+for rel in sorted(TOOLS_INTERNAL_ALLOWED):
+    if rel not in tools_internal and os.path.exists(os.path.join(root, rel)):
+        violations.append(f"{rel}: allow-listed for scaffold/opt/geom includes but has none: "
+                          f"strike it off TOOLS_INTERNAL_ALLOWED")
 
 # ---- calls (symbols of the built objects) ---------------------------------
 if build:

@@ -17,6 +17,7 @@ PACKAGES=(
   valgrind                                          # bench: instruction counts
   python3 python3-numpy                             # the Python package and its tests
   python3-jsonschema                                # tests/docs/test_report_schemas: reports against docs/schemas
+  python3-meshio                                    # python tests + examples/volume_example.py: a meshio mesh into scaf.inflate (python3-trimesh is not in Debian 12)
   python3-setuptools python3-wheel python3-build python3-venv python3-pip  # pip install . offline (tests/install/test_pip.sh)
   libmicrohttpd-dev                                 # `scaf edit`: the local HTTP server
   chromium nodejs                                   # tests/browser: `scaf edit` in headless Chromium

@@ -1,14 +1,14 @@
-/* tools/check_surface: `scaf check` on a 3D surface: exact self-intersection
- * pairs plus the topology facts that say whether the count is meaningful
- * for a solid (closed, manifold). */
+/* tools/check_surface: `scaf check` on a 3D surface: the public
+ * scaf_check_surface (exact self-intersection pairs plus the topology facts
+ * that say whether the count is meaningful for a solid), printed. */
 #include "check_surface.h"
 
 #include <stdio.h>
 
 #include "base/json_write.h"
 #include "exit_codes.h"
-#include "geom/self_intersect.h"
 #include "mesh/topology.h"
+#include "scaf/volume.h"
 
 int check_surface_is_closed(const mesh *m)
 {
@@ -19,7 +19,7 @@ int check_surface_is_closed(const mesh *m)
     return closed;
 }
 
-static void print_json(const char *path, const mesh_topology *t, const si_report *r)
+static void print_json(const char *path, const scaf_surface_report_t *r)
 {
     printf("{\"file\": ");
     json_write_string(stdout, path);
@@ -29,20 +29,20 @@ static void print_json(const char *path, const mesh_topology *t, const si_report
            "%lld, "
            "\"crossing_pairs\": %lld, \"vertex_pairs\": %lld, \"edge_pairs\": %lld, "
            "\"duplicate_pairs\": %lld, \"first_pairs\": [",
-           r->faces, t->vertices, t->boundary_edges, t->boundary_edges == 0 ? "true" : "false",
-           t->manifold ? "true" : "false", r->degenerate_faces, r->pairs, r->crossing_pairs,
+           r->faces, r->vertices, r->boundary_edges, r->closed ? "true" : "false",
+           r->manifold ? "true" : "false", r->degenerate_faces, r->pairs, r->crossing_pairs,
            r->vertex_pairs, r->edge_pairs, r->duplicate_pairs);
     for (int i = 0; i < r->nfirst; i++)
         printf("%s[%d, %d]", i ? ", " : "", r->first[i][0], r->first[i][1]);
     printf("], \"intersection_free\": %s}\n", r->intersection_free ? "true" : "false");
 }
 
-static void print_text(const char *path, const mesh_topology *t, const si_report *r)
+static void print_text(const char *path, const scaf_surface_report_t *r)
 {
     printf("%s: %s\n", path, r->intersection_free ? "intersection-free" : "SELF-INTERSECTING");
     printf("  faces                %d\n", r->faces);
-    printf("  closed               %s (%d boundary edges), %smanifold\n",
-           t->boundary_edges == 0 ? "yes" : "no", t->boundary_edges, t->manifold ? "" : "NOT ");
+    printf("  closed               %s (%d boundary edges), %smanifold\n", r->closed ? "yes" : "no",
+           r->boundary_edges, r->manifold ? "" : "NOT ");
     printf("  degenerate faces     %d", r->degenerate_faces);
     if (r->first_degenerate >= 0) printf(" (first: face %d)", r->first_degenerate);
     printf("\n  intersecting pairs   %lld\n", r->pairs);
@@ -59,21 +59,13 @@ static void print_text(const char *path, const mesh_topology *t, const si_report
 
 int check_surface_run(const char *path, const mesh *m, int json)
 {
-    scaf_error err;
-    err_clear(&err);
-    mesh_topology t;
-    si_report r;
-    scaf_status s = mesh_topology_compute(m, &t, &err);
-    if (s == SCAF_OK) {
-        s = si_check(m->nv, m->V, m->nf, m->F, &r, &err);
-        if (s != SCAF_OK) mesh_topology_free(&t);
-    }
+    scaf_surface_report_t r = {.struct_size = sizeof r};
+    scaf_status s = scaf_check_surface(m->V, m->nv, m->F, m->nf, &r);
     if (s != SCAF_OK) {
-        fprintf(stderr, "scaf check: %s: %s\n", path, err.message);
+        fprintf(stderr, "scaf check: %s: %s\n", path, r.message);
         return exit_code_for(s);
     }
-    if (json) print_json(path, &t, &r);
-    else print_text(path, &t, &r);
-    mesh_topology_free(&t);
+    if (json) print_json(path, &r);
+    else print_text(path, &r);
     return r.intersection_free ? EXIT_OK : EXIT_NOT_BIJECTIVE;
 }

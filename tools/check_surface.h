@@ -1,5 +1,5 @@
 /* tools/check_surface: the 3D half of `scaf check`, self-intersections of
- * a triangle surface (geom/self_intersect), printed as text or JSON.
+ * a triangle surface (scaf_check_surface), printed as text or JSON.
  *
  * Used for a closed surface without UVs, or for any surface with --3d.
  * Exit status as the UV check: 0 intersection-free, 1 self-intersecting

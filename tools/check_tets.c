@@ -1,4 +1,5 @@
-/* tools/check_tets: see check_tets.h. */
+/* tools/check_tets: see check_tets.h; the check is the public
+ * scaf_check_tets. */
 #include "check_tets.h"
 
 #include <stdio.h>
@@ -6,8 +7,8 @@
 
 #include "base/json_write.h"
 #include "exit_codes.h"
-#include "geom/tet_orient.h"
 #include "mesh/tet_medit.h"
+#include "scaf/volume.h"
 
 int check_tets_applies(const char *path)
 {
@@ -20,31 +21,33 @@ int check_tets_run(const char *path, int json)
     scaf_error err;
     err_clear(&err);
     tet_medit m;
-    tet_orient_report r;
+    scaf_tets_report_t r = {.struct_size = sizeof r};
     scaf_status s = tet_medit_read(path, &m, &err);
     if (s == SCAF_OK) {
-        s = tet_orient_check(m.nv, m.V, m.nt, m.T, &r, &err);
+        s = scaf_check_tets(m.V, m.nv, m.T, m.nt, &r);
         tet_medit_free(&m);
+        if (s != SCAF_OK) snprintf(err.message, sizeof err.message, "%s: %s", path, r.message);
     }
     if (s != SCAF_OK) {
         fprintf(stderr, "scaf check: %s\n", err.message);
         return exit_code_for(s);
     }
-    int ok = r.positive == r.tets;
     if (json) {
         printf("{\"file\": ");
         json_write_string(stdout, path);
         printf(", \"check\": \"tet_orientation\", \"tets\": %d, \"positive\": %d, \"inverted\": "
                "%d, "
                "\"degenerate\": %d, \"first_bad\": %d, \"valid\": %s}\n",
-               r.tets, r.positive, r.inverted, r.degenerate, r.first_bad, ok ? "true" : "false");
+               r.tets, r.positive, r.inverted, r.degenerate, r.first_bad,
+               r.valid ? "true" : "false");
     } else {
-        printf("%s: %s\n", path, ok ? "every tet positively oriented" : "INVERTED OR FLAT TETS");
+        printf("%s: %s\n", path,
+               r.valid ? "every tet positively oriented" : "INVERTED OR FLAT TETS");
         printf("  tets                 %d\n", r.tets);
         printf("  positive             %d\n", r.positive);
         printf("  inverted             %d\n", r.inverted);
         printf("  degenerate (flat)    %d\n", r.degenerate);
         if (r.first_bad >= 0) printf("  first bad tet        %d (0-based)\n", r.first_bad);
     }
-    return ok ? EXIT_OK : EXIT_NOT_BIJECTIVE;
+    return r.valid ? EXIT_OK : EXIT_NOT_BIJECTIVE;
 }

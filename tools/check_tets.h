@@ -1,5 +1,5 @@
 /* tools/check_tets: `scaf check FILE.mesh`, the orientation of every
- * tetrahedron of a Medit tet mesh (geom/tet_orient, exact orient3d).
+ * tetrahedron of a Medit tet mesh (scaf_check_tets, exact orient3d).
  * Exit status: 0 every tet positively oriented, 1 some inverted or flat,
  * 3 unreadable or malformed file, 7 out of memory. */
 #ifndef SCAF_TOOLS_CHECK_TETS_H

@@ -1,10 +1,10 @@
 /* tools/cmd_flow: `scaf flow IN -o OUT --steps N`, conformalized mean
- * curvature flow of a closed surface (opt/cmcf).
+ * curvature flow of a closed surface (scaf_flow, scaf/volume.h).
  *
  * The surface is normalized (area-weighted centroid at the origin, unit
  * area: --delta then means the same for every input) and flowed N steps;
  * with --until-free the run stops at the first step whose surface the
- * exact checker (geom/self_intersect) proves free of self-intersections,
+ * exact checker proves free of self-intersections,
  * and fails (exit 6, nothing written) when none of the N steps is. The
  * output is an OBJ with the input's vertices and faces at the flowed,
  * normalized positions. Exit status: 0 written, 2 usage, 3 input
@@ -21,16 +21,13 @@
 #include "base/json_write.h"
 #include "base/timer.h"
 #include "cli_args.h"
-#include "cli_closed_surface.h"
-#include "cli_unit_scale.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "cli_surface_png.h"
 #include "exit_codes.h"
-#include "geom/self_intersect.h"
 #include "mesh/mesh_io.h"
-#include "opt/cmcf.h"
+#include "scaf/volume.h"
 
 #define FLOW_MAX_STEPS 100000
 
@@ -74,27 +71,6 @@ static void usage(FILE *out)
     exit_codes_print(out);
 }
 
-/* The exact check of the current surface: its defects (intersecting face
- * pairs + zero-area faces; 0 = free), or -1 after printing why it could
- * not run. The text for the step line goes into what. */
-static long long surface_defects(const mesh *m, char *what, size_t size, int *status)
-{
-    si_report r;
-    scaf_error err;
-    err_clear(&err);
-    scaf_status st = si_check(m->nv, m->V, m->nf, m->F, &r, &err);
-    if (st != SCAF_OK) {
-        fprintf(stderr, "scaf flow: self-intersection check: %s\n", err.message);
-        *status = exit_code_for(st);
-        return -1;
-    }
-    if (r.degenerate_faces > 0)
-        snprintf(what, size, "%lld intersecting face pairs, %d zero-area faces", r.pairs,
-                 r.degenerate_faces);
-    else snprintf(what, size, "%lld intersecting face pairs", r.pairs);
-    return r.pairs + r.degenerate_faces;
-}
-
 /* What the run did, for --report. */
 typedef struct flow_log {
     int steps;               /* steps done */
@@ -130,64 +106,81 @@ static scaf_status write_report(const char *path, const char *in, double delta, 
     return atomic_commit(&a, err);
 }
 
-/* Flow m->V in place; the normalized input is copied to start (NULL: not
- * kept). 0, or the exit status after printing why. */
-static int run_flow(mesh *m, int steps, double delta, int until_free, int quiet, flow_log *g,
-                    double *start)
+/* The progress of scaf_flow: the step lines, the report's log, the
+ * signal's safe point. */
+typedef struct flow_watch {
+    int until_free, quiet;
+    flow_log *g;
+    char what[128]; /* the last check, for the lines */
+    double *start;  /* NULL, or room for the normalized input */
+    int nv;
+} flow_watch;
+
+static void describe(const scaf_volume_step_info_t *e, char *what, size_t size)
 {
-    scaf_error err;
-    err_clear(&err);
-    cmcf f;
-    scaf_status st = cmcf_init(&f, m->nv, m->V, m->nf, m->F, delta, &err);
-    if (st == SCAF_OK) st = cmcf_normalize(m->nv, m->V, m->nf, m->F, &err);
-    if (st != SCAF_OK) {
-        fprintf(stderr, "scaf flow: %s\n", err.message);
-        cmcf_free(&f);
-        return exit_code_for(st);
-    }
-    if (start) memcpy(start, m->V, sizeof(double) * 3 * (size_t)m->nv);
-    int rc = EXIT_OK;
-    long long defects = -1;
-    char what[128] = "";
-    if (until_free) {
-        g->input_defects = defects = surface_defects(m, what, sizeof what, &rc);
-        if (defects == 0 && !quiet)
+    if (e->degenerate_faces > 0)
+        snprintf(what, size, "%lld intersecting face pairs, %d zero-area faces", e->pairs,
+                 e->degenerate_faces);
+    else snprintf(what, size, "%lld intersecting face pairs", e->pairs);
+}
+
+static int on_flow_step(const scaf_volume_step_info_t *e, void *user)
+{
+    flow_watch *w = user;
+    if (w->until_free) describe(e, w->what, sizeof w->what);
+    if (e->step == 0) { /* the start: the normalized input, checked with until_free */
+        if (w->start) memcpy(w->start, e->X, sizeof(double) * 3 * (size_t)w->nv);
+        if (!w->until_free) return 0;
+        w->g->input_defects = e->defects;
+        if (e->defects == 0 && !w->quiet)
             fprintf(stderr, "scaf flow: the input is already free of self-intersections\n");
-        else if (defects > 0 && !quiet) fprintf(stderr, "scaf flow: input: %s\n", what);
+        else if (e->defects > 0 && !w->quiet) fprintf(stderr, "scaf flow: input: %s\n", w->what);
+        return 0;
     }
-    for (int s = 1; s <= steps && defects != 0 && rc == EXIT_OK; s++) {
-        double t0 = timer_now();
-        st = cmcf_step(&f, m->V, &err);
-        if (st != SCAF_OK) {
-            fprintf(stderr, "scaf flow: %s\n", err.message);
-            rc = exit_code_for(st);
-            break;
-        }
-        double t_step = timer_now() - t0;
-        if (until_free && (defects = surface_defects(m, what, sizeof what, &rc)) < 0) break;
-        g->seconds[g->steps] = t_step;
-        g->defects[g->steps++] = defects;
-        if (!quiet) {
-            if (until_free)
-                fprintf(stderr, "scaf flow: step %d: %.3f s, check %.3f s, %s\n", s, t_step,
-                        timer_now() - t0 - t_step, what);
-            else fprintf(stderr, "scaf flow: step %d: %.3f s\n", s, t_step);
-        }
-        cli_signal_test_point(s);
-        if (cli_signal_caught()) break;
+    w->g->seconds[w->g->steps] = e->seconds;
+    w->g->defects[w->g->steps++] = e->defects;
+    if (!w->quiet) {
+        if (w->until_free)
+            fprintf(stderr, "scaf flow: step %d: %.3f s, check %.3f s, %s\n", e->step, e->seconds,
+                    e->check_seconds, w->what);
+        else fprintf(stderr, "scaf flow: step %d: %.3f s\n", e->step, e->seconds);
     }
-    int done = f.steps;
-    cmcf_free(&f);
-    if (rc == EXIT_OK && until_free && defects == 0 && done > 0 && !quiet)
-        fprintf(stderr, "scaf flow: free of self-intersections after %d step%s\n", done,
-                done > 1 ? "s" : "");
-    if (rc == EXIT_OK && until_free && defects != 0 && !cli_signal_caught()) {
-        fprintf(stderr,
-                "scaf flow: the surface still intersects itself after %d steps (%s); nothing "
-                "written\n",
-                steps, what);
-        rc = EXIT_NUMERIC;
+    cli_signal_test_point(e->step);
+    return cli_signal_caught() != 0;
+}
+
+/* Flow m->V in place (scaf_flow: normalized, at unit scale inside); the
+ * normalized input is copied to start (NULL: not kept). 0, or the exit
+ * status after printing why. */
+static int run_flow(const char *in, mesh *m, int steps, double delta, int until_free, int quiet,
+                    flow_log *g, double *start)
+{
+    scaf_flow_options_t o = scaf_flow_options_default();
+    o.steps = steps;
+    o.delta = delta;
+    o.until_free = until_free;
+    flow_watch w = {until_free, quiet, g, "", start, m->nv};
+    scaf_volume_t *h = scaf_volume_new();
+    if (!h) {
+        fprintf(stderr, "scaf flow: out of memory\n");
+        return EXIT_NOMEM;
     }
+    int rc = EXIT_OK;
+    scaf_status st = scaf_flow(h, m->V, m->nv, m->F, m->nf, &o, on_flow_step, &w);
+    if (st == SCAF_OK) {
+        scaf_volume_summary_t s = {.struct_size = sizeof s};
+        scaf_volume_get_summary(h, &s);
+        scaf_volume_get_positions(h, m->V);
+        if (until_free && s.steps > 0 && !quiet)
+            fprintf(stderr, "scaf flow: free of self-intersections after %d step%s\n", s.steps,
+                    s.steps > 1 ? "s" : "");
+    } else if (!(st == SCAF_ERR_CANCELLED && cli_signal_caught())) {
+        if (st == SCAF_ERR_NUMERIC && until_free && g->steps == steps)
+            fprintf(stderr, "scaf flow: %s; nothing written\n", scaf_volume_error(h));
+        else fprintf(stderr, "scaf flow: %s: %s\n", in, scaf_volume_error(h));
+        rc = exit_code_for(st);
+    }
+    scaf_volume_destroy(h);
     return rc;
 }
 
@@ -246,18 +239,14 @@ static int flow_main(int argc, char **argv)
     mesh m;
     mesh_read_info info;
     if ((rc = cli_read_mesh("flow", in, quiet, &m, &info)) != EXIT_OK) return rc;
-    int e = 0;
     flow_log g = {0, malloc(sizeof(double) * (size_t)steps),
                   malloc(sizeof(long long) * (size_t)steps), -1};
     double *start = kp >= 0 ? malloc(sizeof(double) * 3 * (size_t)(m.nv > 0 ? m.nv : 1)) : NULL;
     if (!g.seconds || !g.defects || (kp >= 0 && !start)) {
         fprintf(stderr, "scaf flow: out of memory\n");
         rc = EXIT_NOMEM;
-    } else if ((rc = cli_check_closed_surface("flow", in, &m, "the flow")) == EXIT_OK &&
-               (rc = cli_unit_scale("flow", in, &m, &e)) == EXIT_OK) {
-        /* at unit scale (tools/cli_unit_scale); the flow normalizes the
-         * surface anyway, so the output needs no scaling back */
-        rc = run_flow(&m, steps, delta, until_free, quiet, &g, start);
+    } else {
+        rc = run_flow(in, &m, steps, delta, until_free, quiet, &g, start);
     }
     if (rc == EXIT_OK && cli_signal_report("flow")) rc = EXIT_CANCELLED;
     if (rc == EXIT_OK) {

@@ -1,10 +1,10 @@
 /* tools/cmd_inflate: `scaf inflate IN -o OUT.obj --scale K`, a closed
  * surface grown toward K times its size inside a fixed box of tets,
- * never passing through itself or the box (app/volume_deform, the 3D SCAF
- * loop; the paper's Figure 10).
+ * never passing through itself or the box (scaf_inflate of the public
+ * scaf/volume.h: the 3D SCAF loop; the paper's Figure 10).
  *
  * The target is the surface scaled K times about its area-weighted
- * centroid (app/inflate); each of the N iterations pulls the surface
+ * centroid; each of the N iterations pulls the surface
  * toward it (spokes-and-rims ARAP) as far as the scaffold allows, and
  * every tet stays positively oriented (exact), so the surface stays free
  * of self-intersections. Writes the input's vertices and faces at the new
@@ -20,13 +20,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "app/inflate.h"
-#include "app/volume_deform.h"
 #include "base/atomic_file.h"
 #include "base/json_write.h"
 #include "cli_args.h"
-#include "cli_closed_surface.h"
-#include "cli_unit_scale.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
@@ -34,13 +30,13 @@
 #include "exit_codes.h"
 #include "mesh/mesh_io.h"
 #include "mesh/tet_medit.h"
-#include "scaffold/scaffold_tet.h"
+#include "scaf/volume.h"
 
 #define INFLATE_MAX_ITERATIONS 100000
 
 static void usage(FILE *out)
 {
-    volume_deform_options d = volume_deform_options_default();
+    scaf_inflate_options_t d = scaf_inflate_options_default();
     fprintf(out,
             "usage: scaf inflate IN -o OUT.obj --scale K [--iterations N] [--tets OUT.mesh]\n"
             "                    [--report R.json] [--png P.png [--png-size N]] [--box-scale S]\n"
@@ -84,9 +80,17 @@ static void usage(FILE *out)
     exit_codes_print(out);
 }
 
+/* One iteration's numbers, as the progress callback gave them. */
+typedef struct inflate_iteration {
+    int iteration;
+    double energy, step;
+    int tets, scaffold_vertices;
+    double quality_min, quality_p5, seconds;
+} inflate_iteration;
+
 typedef struct inflate_log {
     int n; /* iterations done */
-    volume_deform_iteration *it;
+    inflate_iteration *it;
     double diag0, diag1, box_lo[3], box_hi[3];
 } inflate_log;
 
@@ -117,7 +121,7 @@ static scaf_status write_report(const char *path, const char *in, double K, cons
     json_write_number(o, g->diag1);
     fputs(",\n  \"per_iteration\": [", o);
     for (int i = 0; i < g->n; i++) {
-        const volume_deform_iteration *r = &g->it[i];
+        const inflate_iteration *r = &g->it[i];
         fprintf(o, "%s\n    {\"iteration\": %d, \"energy\": ", i ? "," : "", r->iteration);
         json_write_number(o, r->energy);
         fputs(", \"step\": ", o);
@@ -135,73 +139,68 @@ static scaf_status write_report(const char *path, const char *in, double K, cons
     return atomic_commit(&a, err);
 }
 
-/* Run the iterations on m->V (updated). 0, or the exit status after
- * printing why. */
-static int run_inflate(const char *in, mesh *m, double K, int iterations,
-                       const volume_deform_options *o, int quiet, inflate_log *g, volume_deform *vd)
+typedef struct inflate_watch {
+    int quiet;
+    inflate_log *g;
+} inflate_watch;
+
+static int on_iteration(const scaf_volume_step_info_t *e, void *user)
 {
-    scaf_error err;
-    err_clear(&err);
-    double *target = malloc(sizeof(double) * 3 * (size_t)m->nv);
-    if (!target) {
-        fprintf(stderr, "scaf inflate: out of memory\n");
-        return EXIT_NOMEM;
-    }
-    inflate_target(m->nv, m->V, m->nf, m->F, K, target);
-    scaf_status st = volume_deform_init(vd, m->nv, m->V, m->nf, m->F, target, o, &err);
-    free(target);
+    inflate_watch *w = user;
+    inflate_iteration *r = &w->g->it[w->g->n++];
+    *r = (inflate_iteration){
+        e->step,        e->energy,     e->step_length, e->tets, e->scaffold_vertices,
+        e->quality_min, e->quality_p5, e->seconds};
+    if (!w->quiet)
+        fprintf(stderr,
+                "scaf inflate: iteration %d: energy %.6g, step %.3g, %d tets, quality min "
+                "%.3g p5 %.3g, %.3f s\n",
+                r->iteration, r->energy, r->step, r->tets, r->quality_min, r->quality_p5,
+                r->seconds);
+    cli_signal_test_point(e->step);
+    return cli_signal_caught() != 0;
+}
+
+/* Run scaf_inflate on m->V (updated) into h. 0, or the exit status after
+ * printing why. */
+static int run_inflate(const char *in, mesh *m, const scaf_inflate_options_t *o, int quiet,
+                       inflate_log *g, scaf_volume_t *h)
+{
+    inflate_watch w = {quiet, g};
+    scaf_status st = scaf_inflate(h, m->V, m->nv, m->F, m->nf, o, on_iteration, &w);
+    if (st == SCAF_ERR_CANCELLED && cli_signal_caught())
+        return EXIT_OK; /* reported by the caller */
     if (st != SCAF_OK) {
-        fprintf(stderr, "scaf inflate: %s: %s\n", in, err.message);
-        return st == SCAF_ERR_USAGE ? EXIT_MESH : exit_code_for(st);
+        fprintf(stderr, "scaf inflate: %s: %s\n", in, scaf_volume_error(h));
+        return exit_code_for(st);
     }
-    g->diag0 = inflate_bbox_diagonal(m->nv, m->V);
-    const scaffold_view *v = volume_deform_scaffold(vd);
-    for (int i = 0; i < iterations; i++) {
-        st = volume_deform_step(vd, &g->it[g->n], &err);
-        if (st != SCAF_OK) {
-            fprintf(stderr, "scaf inflate: iteration %d: %s\n", i + 1, err.message);
-            return exit_code_for(st);
-        }
-        const volume_deform_iteration *r = &g->it[g->n++];
-        if (!quiet)
-            fprintf(stderr,
-                    "scaf inflate: iteration %d: energy %.6g, step %.3g, %d tets, quality min "
-                    "%.3g p5 %.3g, %.3f s\n",
-                    r->iteration, r->energy, r->step, r->tets, r->quality_min, r->quality_p5,
-                    r->seconds);
-        cli_signal_test_point(i + 1);
-        if (cli_signal_caught()) break;
-    }
-    v = volume_deform_scaffold(vd);
+    scaf_volume_summary_t s = {.struct_size = sizeof s};
+    scaf_volume_get_summary(h, &s);
+    scaf_volume_get_positions(h, m->V);
     for (int k = 0; k < 3; k++) {
-        g->box_lo[k] = v->box_lo[k];
-        g->box_hi[k] = v->box_hi[k];
+        g->box_lo[k] = s.box_lo[k];
+        g->box_hi[k] = s.box_hi[k];
     }
-    memcpy(m->V, volume_deform_positions(vd), sizeof(double) * 3 * (size_t)m->nv);
-    g->diag1 = inflate_bbox_diagonal(m->nv, m->V);
+    g->diag0 = s.diagonal_before;
+    g->diag1 = s.diagonal_after;
     if (!quiet)
         fprintf(stderr, "scaf inflate: bounding-box diagonal x%.4g after %d iterations\n",
                 g->diag0 > 0 ? g->diag1 / g->diag0 : 0.0, g->n);
     return EXIT_OK;
 }
 
-/* The final tets: surface vertices at X, then the scaffold's own. */
-static scaf_status write_tets(const char *path, const volume_deform *vd, int e, scaf_error *err)
+/* The final tets: surface vertices at the result, then the scaffold's own. */
+static scaf_status write_tets(const char *path, const scaf_volume_t *h, scaf_error *err)
 {
-    const scaffold_view *v = volume_deform_scaffold(vd);
-    const signed char *inside = scaffold_tet_inside(vd->scaffold);
-    int nv = v->nmesh + v->nextra;
-    double *P = malloc(sizeof(double) * 3 * (size_t)nv);
-    int *label = malloc(sizeof(int) * (size_t)(v->n > 0 ? v->n : 1));
-    scaf_status st = P && label ? SCAF_OK : err_nomem(err, "tet output");
-    if (st == SCAF_OK) {
-        memcpy(P, volume_deform_positions(vd), sizeof(double) * 3 * (size_t)v->nmesh);
-        memcpy(P + 3 * (size_t)v->nmesh, v->extra, sizeof(double) * 3 * (size_t)v->nextra);
-        for (size_t i = 0; i < 3 * (size_t)nv; i++) P[i] = ldexp(P[i], e); /* input's units */
-        for (int t = 0; t < v->n; t++) label[t] = inside[t] ? 1 : 2;
-        st = tet_medit_write(path, nv, P, v->n, v->simplices, label, err);
-    }
+    int np = scaf_volume_tet_vertex_count(h), nt = scaf_volume_tet_count(h);
+    double *P = malloc(sizeof(double) * 3 * (size_t)(np > 0 ? np : 1));
+    int *T = malloc(sizeof(int) * 4 * (size_t)(nt > 0 ? nt : 1));
+    int *label = malloc(sizeof(int) * (size_t)(nt > 0 ? nt : 1));
+    scaf_status st = P && T && label ? SCAF_OK : err_nomem(err, "tet output");
+    if (st == SCAF_OK) st = scaf_volume_get_tets(h, P, T, label);
+    if (st == SCAF_OK) st = tet_medit_write(path, np, P, nt, T, label, err);
     free(P);
+    free(T);
     free(label);
     return st;
 }
@@ -211,7 +210,7 @@ static int inflate_main(int argc, char **argv)
     const char *in = NULL, *out = NULL, *report = NULL, *tets = NULL;
     double K = 0.0;
     int iterations = 50, quiet = 0, threads = 1;
-    volume_deform_options o = volume_deform_options_default();
+    scaf_inflate_options_t o = scaf_inflate_options_default();
     cli_surface_png png;
     cli_surface_png_init(&png);
     for (int i = 1; i < argc; i++) {
@@ -285,26 +284,19 @@ static int inflate_main(int argc, char **argv)
     mesh m;
     mesh_read_info info;
     if ((rc = cli_read_mesh("inflate", in, quiet, &m, &info)) != EXIT_OK) return rc;
-    int e = 0;
     inflate_log g;
     memset(&g, 0, sizeof g);
     g.it = malloc(sizeof *g.it * (size_t)iterations);
     double *start = kp >= 0 ? malloc(sizeof(double) * 3 * (size_t)(m.nv > 0 ? m.nv : 1)) : NULL;
     if (start) memcpy(start, m.V, sizeof(double) * 3 * (size_t)m.nv);
-    volume_deform vd;
-    memset(&vd, 0, sizeof vd);
-    if (!g.it || (kp >= 0 && !start)) {
+    scaf_volume_t *h = scaf_volume_new();
+    if (!g.it || (kp >= 0 && !start) || !h) {
         fprintf(stderr, "scaf inflate: out of memory\n");
         rc = EXIT_NOMEM;
-    } else if ((rc = cli_check_closed_surface("inflate", in, &m, "inflate")) == EXIT_OK &&
-               (rc = cli_unit_scale("inflate", in, &m, &e)) == EXIT_OK) {
-        /* at unit scale (tools/cli_unit_scale), multiplied back for the outputs */
-        rc = run_inflate(in, &m, K, iterations, &o, quiet, &g, &vd);
-        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, m.V, 3 * (size_t)m.nv, e);
-        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, g.box_lo, 3, e);
-        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, g.box_hi, 3, e);
-        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, &g.diag0, 1, e);
-        if (rc == EXIT_OK) rc = cli_unit_unscale("inflate", in, &g.diag1, 1, e);
+    } else {
+        o.scale = K;
+        o.iterations = iterations;
+        rc = run_inflate(in, &m, &o, quiet, &g, h);
     }
     if (rc == EXIT_OK && cli_signal_report("inflate")) rc = EXIT_CANCELLED;
     if (rc == EXIT_OK) {
@@ -314,8 +306,7 @@ static int inflate_main(int argc, char **argv)
         rc = cli_outputs_end(&outs, k, path ? mesh_write_obj(path, &m, &err) : SCAF_ERR_IO, &err);
         if (rc == EXIT_OK && kt >= 0) {
             path = cli_outputs_begin(&outs, kt, &err);
-            rc = cli_outputs_end(&outs, kt, path ? write_tets(path, &vd, e, &err) : SCAF_ERR_IO,
-                                 &err);
+            rc = cli_outputs_end(&outs, kt, path ? write_tets(path, h, &err) : SCAF_ERR_IO, &err);
         }
         if (rc == EXIT_OK && kr >= 0) {
             path = cli_outputs_begin(&outs, kr, &err);
@@ -329,7 +320,7 @@ static int inflate_main(int argc, char **argv)
     }
     cli_outputs_abort(&outs);
     free(start);
-    volume_deform_free(&vd);
+    scaf_volume_destroy(h);
     free(g.it);
     mesh_free(&m);
     return rc;

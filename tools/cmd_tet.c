@@ -3,7 +3,7 @@
  * A closed surface inside a box (its bounding box scaled --box-scale times
  * about its centre, each side cut into --box-cells squares) is
  * tetrahedralized by TetGen with the surface kept as it is, then checked
- * exactly (geom/tet_box_mesh) and written as a Medit .mesh whose tet
+ * exactly (scaf_tet_mesh of scaf/volume.h) and written as a Medit .mesh whose tet
  * references are 1 inside the surface and 2 between it and the box.
  * `scaf check OUT.mesh` verifies it again. Exit status: 0 written,
  * 2 usage, 3 input unreadable, 4 the surface cannot be meshed (open,
@@ -15,14 +15,12 @@
 #include <string.h>
 
 #include "cli_args.h"
-#include "cli_closed_surface.h"
 #include "cli_mesh_io.h"
-#include "cli_unit_scale.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "exit_codes.h"
-#include "geom/tet_box_mesh.h"
 #include "mesh/tet_medit.h"
+#include "scaf/volume.h"
 
 static void usage(FILE *out)
 {
@@ -83,50 +81,48 @@ static int tet_main(int argc, char **argv)
     mesh_read_info info;
     status = cli_read_mesh("tet", in, quiet, &m, &info);
     if (status != EXIT_OK) return status;
-    /* the same words as flow, inflate and untangle for an open surface */
-    if ((status = cli_check_closed_surface("tet", in, &m, "tet")) != EXIT_OK) {
-        mesh_free(&m);
-        return status;
-    }
-    int e = 0; /* at unit scale (tools/cli_unit_scale), multiplied back below */
-    if ((status = cli_unit_scale("tet", in, &m, &e)) != EXIT_OK) {
-        mesh_free(&m);
-        return status;
-    }
-    double lo[3], hi[3];
-    tet_box_around(m.nv, m.V, scale, lo, hi);
-    tet_box_mesh tm;
-    scaf_error err;
-    err_clear(&err);
-    scaf_status s = tet_box_mesh_build(m.nv, m.V, m.nf, m.F, lo, hi, cells, &tm, &err);
+    scaf_volume_t *h = scaf_volume_new();
+    scaf_tet_options_t o = scaf_tet_options_default();
+    o.box_scale = scale;
+    o.box_cells = cells;
+    scaf_status s = h ? scaf_tet_mesh(h, m.V, m.nv, m.F, m.nf, &o) : SCAF_ERR_NOMEM;
+    int nv = m.nv;
     mesh_free(&m);
     if (s != SCAF_OK) {
-        fprintf(stderr, "scaf tet: %s: %s\n", in, err.message);
-        return s == SCAF_ERR_USAGE ? EXIT_MESH : exit_code_for(s);
+        fprintf(stderr, "scaf tet: %s: %s\n", in, h ? scaf_volume_error(h) : "out of memory");
+        scaf_volume_destroy(h);
+        return exit_code_for(s);
     }
-    int *label = malloc(sizeof(int) * (size_t)(tm.nt > 0 ? tm.nt : 1));
-    if (!label) {
-        tet_box_mesh_free(&tm);
+    int np = scaf_volume_tet_vertex_count(h), nt = scaf_volume_tet_count(h);
+    double *P = malloc(sizeof(double) * 3 * (size_t)(np > 0 ? np : 1));
+    int *T = malloc(sizeof(int) * 4 * (size_t)(nt > 0 ? nt : 1));
+    int *label = malloc(sizeof(int) * (size_t)(nt > 0 ? nt : 1));
+    scaf_volume_summary_t sum = {.struct_size = sizeof sum};
+    if (!P || !T || !label) {
+        free(P);
+        free(T);
+        free(label);
+        scaf_volume_destroy(h);
         fprintf(stderr, "scaf tet: out of memory\n");
         return EXIT_NOMEM;
     }
-    for (int t = 0; t < tm.nt; t++) label[t] = tm.inside[t] ? 1 : 2;
-    if ((status = cli_unit_unscale("tet", in, tm.V, 3 * (size_t)tm.nv, e)) != EXIT_OK) {
-        free(label);
-        tet_box_mesh_free(&tm);
-        return status;
-    }
+    scaf_volume_get_tets(h, P, T, label);
+    scaf_volume_get_summary(h, &sum);
+    scaf_volume_destroy(h);
+    scaf_error err;
+    err_clear(&err);
     const char *path = cli_outputs_begin(&outs, k, &err);
-    s = path ? tet_medit_write(path, tm.nv, tm.V, tm.nt, tm.T, label, &err) : SCAF_ERR_IO;
+    s = path ? tet_medit_write(path, np, P, nt, T, label, &err) : SCAF_ERR_IO;
     int rc = cli_outputs_end(&outs, k, s, &err);
     if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     cli_outputs_abort(&outs);
     if (rc == EXIT_OK && !quiet)
         fprintf(stderr,
-                "scaf tet: %d vertices (%d surface, %d box, %d added), %d tets (%d inside)\n",
-                tm.nv, tm.nsurface, tm.nbox, tm.nv - tm.nsurface - tm.nbox, tm.nt, tm.ninside);
+                "scaf tet: %d vertices (%d surface, %d box, %d added), %d tets (%d inside)\n", np,
+                nv, sum.box_vertices, np - nv - sum.box_vertices, nt, sum.tets_inside);
+    free(P);
+    free(T);
     free(label);
-    tet_box_mesh_free(&tm);
     return rc;
 }
 

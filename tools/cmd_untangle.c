@@ -1,6 +1,7 @@
 /* tools/cmd_untangle: `scaf untangle IN -o OUT.obj`, remove the
- * self-intersections of a closed genus-0 surface (app/untangle: cMCF out
- * until free, the 3D SCAF loop back toward the input).
+ * self-intersections of a closed genus-0 surface (scaf_untangle of the
+ * public scaf/volume.h: cMCF out until free, the 3D SCAF loop back toward
+ * the input).
  *
  * Writes the input's vertices and faces at the final positions (an input
  * already free of self-intersections unchanged, with a message), and with
@@ -11,12 +12,10 @@
  * not free the surface or a solve failed, 7 out of memory, 8 interrupted,
  * 70 an exact check failed (a bug). Nothing is written on failure.
  */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "app/untangle.h"
 #include "base/atomic_file.h"
 #include "base/json_write.h"
 #include "base/timer.h"
@@ -25,13 +24,13 @@
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "cli_surface_png.h"
-#include "cli_unit_scale.h"
 #include "exit_codes.h"
 #include "mesh/mesh_io.h"
+#include "scaf/volume.h"
 
 static void usage(FILE *out)
 {
-    untangle_options d = untangle_options_default();
+    scaf_untangle_options_t d = scaf_untangle_options_default();
     fprintf(out,
             "usage: scaf untangle IN -o OUT.obj [--iterations N] [--tolerance T] [--anchor W]\n"
             "                     [--flow-steps N] [--delta D] [--verify] [--report R.json]\n"
@@ -62,7 +61,7 @@ static void usage(FILE *out)
             "  --delta D          flow time step on the unit-area surface (default %g)\n"
             "  --verify           prove the surface free of self-intersections after every\n"
             "                     iteration too (exact; exit 70 if it ever is not)\n",
-            d.iterations, UNTANGLE_WINDOW, d.tolerance, d.anchor_ratio, d.flow_steps, d.delta);
+            d.iterations, SCAF_UNTANGLE_WINDOW, d.tolerance, d.anchor, d.flow_steps, d.delta);
     fputs("  --report FILE      a JSON report: the flow steps (seconds, intersecting\n"
           "                     pairs, distance) and per iteration the surface energy,\n"
           "                     RMS and maximum distance of the vertices to their input\n"
@@ -76,16 +75,44 @@ static void usage(FILE *out)
     exit_codes_print(out);
 }
 
+/* One step of either phase, as the progress callback gave it. */
+typedef struct untangle_event {
+    scaf_volume_phase phase;
+    int step;
+    double seconds;
+    long long pairs; /* intersecting pairs + zero-area faces (-1 unchecked) */
+    double energy, arap, rms, max;
+    int tets;
+    double quality;
+} untangle_event;
+
 typedef struct progress_state {
     int quiet;
     int events; /* flow steps and iterations so far: the signal test points */
+    int nlog, cap;
+    untangle_event *log; /* every step, for --report */
+    int nomem;
 } progress_state;
 
-static int on_step(const untangle_event *e, void *user)
+static int on_step(const scaf_volume_step_info_t *i, void *user)
 {
     progress_state *p = user;
+    untangle_event ev = {i->phase, i->step, i->seconds, i->defects, i->energy,
+                         i->arap,  i->rms,  i->max,     i->tets,    i->quality_min};
+    const untangle_event *e = &ev;
+    if (p->nlog == p->cap) {
+        int n = p->cap ? 2 * p->cap : 64;
+        untangle_event *g = realloc(p->log, sizeof *g * (size_t)n);
+        if (!g) {
+            p->nomem = 1;
+            return 1;
+        }
+        p->log = g;
+        p->cap = n;
+    }
+    p->log[p->nlog++] = ev;
     if (!p->quiet) {
-        if (e->phase == UNTANGLE_FLOW)
+        if (e->phase == SCAF_VOLUME_FLOW_STEP)
             fprintf(stderr,
                     "scaf untangle: flow step %d: %lld intersecting face pairs, distance RMS "
                     "%.4g max %.4g, %.3f s\n",
@@ -103,10 +130,11 @@ static int on_step(const untangle_event *e, void *user)
 
 static void write_event(FILE *o, const untangle_event *e)
 {
-    fprintf(o, "{\"%s\": %d, \"seconds\": ", e->phase == UNTANGLE_FLOW ? "step" : "iteration",
+    fprintf(o,
+            "{\"%s\": %d, \"seconds\": ", e->phase == SCAF_VOLUME_FLOW_STEP ? "step" : "iteration",
             e->step);
     json_write_number(o, e->seconds);
-    if (e->phase == UNTANGLE_BACK) {
+    if (e->phase == SCAF_VOLUME_ITERATION) {
         fputs(", \"energy\": ", o);
         json_write_number(o, e->energy);
         fputs(", \"arap\": ", o);
@@ -116,7 +144,7 @@ static void write_event(FILE *o, const untangle_event *e)
     json_write_number(o, e->rms);
     fputs(", \"max\": ", o);
     json_write_number(o, e->max);
-    if (e->phase == UNTANGLE_BACK) {
+    if (e->phase == SCAF_VOLUME_ITERATION) {
         fprintf(o, ", \"tets\": %d, \"quality_min\": ", e->tets);
         json_write_number(o, e->quality);
     }
@@ -124,8 +152,9 @@ static void write_event(FILE *o, const untangle_event *e)
     fputc('}', o);
 }
 
-static scaf_status write_report(const char *path, const char *in, const untangle_options *opt,
-                                const untangle_result *r, int nv, int nf, double seconds,
+static scaf_status write_report(const char *path, const char *in,
+                                const scaf_untangle_options_t *opt, const scaf_volume_summary_t *r,
+                                const progress_state *log, int nv, int nf, double seconds,
                                 scaf_error *err)
 {
     atomic_file a;
@@ -135,21 +164,21 @@ static scaf_status write_report(const char *path, const char *in, const untangle
     fputs("{\n  \"input\": ", o);
     json_write_string(o, in);
     fprintf(o, ",\n  \"vertices\": %d,\n  \"faces\": %d,\n  \"diagonal\": ", nv, nf);
-    json_write_number(o, r->diagonal);
+    json_write_number(o, r->diagonal_before);
     fprintf(o,
-            ",\n  \"input_pairs\": %lld,\n  \"already_free\": %s,\n  \"delta\": ", r->input_pairs,
-            r->stop == UNTANGLE_ALREADY_FREE ? "true" : "false");
+            ",\n  \"input_pairs\": %lld,\n  \"already_free\": %s,\n  \"delta\": ", r->input_defects,
+            r->stop == SCAF_UNTANGLE_ALREADY_FREE ? "true" : "false");
     json_write_number(o, opt->delta);
-    fprintf(o, ",\n  \"flow_steps\": %d,\n  \"flowed_rms\": ", r->flow_steps);
+    fprintf(o, ",\n  \"flow_steps\": %d,\n  \"flowed_rms\": ", r->steps);
     json_write_number(o, r->flowed_rms);
     fputs(",\n  \"flowed_max\": ", o);
     json_write_number(o, r->flowed_max);
     fputs(",\n  \"anchor\": ", o);
-    json_write_number(o, opt->anchor_ratio);
+    json_write_number(o, opt->anchor);
     fprintf(o,
             ",\n  \"iterations\": %d,\n  \"best_iteration\": %d,\n  \"stop_reason\": \"%s\",\n  "
             "\"rms\": ",
-            r->iterations, r->best_iteration, untangle_stop_name(r->stop));
+            r->iterations, r->best_iteration, scaf_untangle_stop_name(r->stop));
     json_write_number(o, r->rms);
     fputs(",\n  \"max\": ", o);
     json_write_number(o, r->max);
@@ -159,10 +188,10 @@ static scaf_status write_report(const char *path, const char *in, const untangle
     for (int phase = 0; phase < 2; phase++) {
         fputs(phase ? ",\n  \"per_iteration\": [" : ",\n  \"per_flow_step\": [", o);
         int first = 1;
-        for (int i = 0; i < r->nlog; i++) {
-            if ((int)r->log[i].phase != phase) continue;
+        for (int i = 0; i < log->nlog; i++) {
+            if ((int)log->log[i].phase != phase) continue;
             fputs(first ? "\n    " : ",\n    ", o);
-            write_event(o, &r->log[i]);
+            write_event(o, &log->log[i]);
             first = 0;
         }
         fputs("\n  ]", o);
@@ -174,7 +203,7 @@ static scaf_status write_report(const char *path, const char *in, const untangle
 static int untangle_main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL;
-    untangle_options opt = untangle_options_default();
+    scaf_untangle_options_t opt = scaf_untangle_options_default();
     int quiet = 0;
     cli_surface_png png;
     cli_surface_png_init(&png);
@@ -200,7 +229,7 @@ static int untangle_main(int argc, char **argv)
             if (!cli_parse_double(v, &opt.tolerance)) CLI_BAD_VALUE("untangle");
         } else if (!strcmp(a, "--anchor")) {
             CLI_NEED_VALUE("untangle");
-            if (!cli_parse_double(v, &opt.anchor_ratio)) CLI_BAD_VALUE("untangle");
+            if (!cli_parse_double(v, &opt.anchor)) CLI_BAD_VALUE("untangle");
         } else if (!strcmp(a, "--delta")) {
             CLI_NEED_VALUE("untangle");
             if (!cli_parse_double(v, &opt.delta)) CLI_BAD_VALUE("untangle");
@@ -220,43 +249,61 @@ static int untangle_main(int argc, char **argv)
                 !in ? "missing the input surface" : "missing -o OUT.obj");
         return EXIT_USAGE;
     }
-    scaf_error err;
-    err_clear(&err);
-    if (untangle_options_check(&opt, &err) != SCAF_OK) {
-        fprintf(stderr, "scaf untangle: %s\n", err.message);
+    /* the options first (exit 2 before reading anything): with no surface
+     * scaf_untangle checks them alone */
+    scaf_volume_t *h = scaf_volume_new();
+    if (!h) {
+        fprintf(stderr, "scaf untangle: out of memory\n");
+        return EXIT_NOMEM;
+    }
+    if (scaf_untangle(h, NULL, 0, NULL, 0, &opt, NULL, NULL) == SCAF_ERR_USAGE) {
+        fprintf(stderr, "scaf untangle: %s\n", scaf_volume_error(h));
+        scaf_volume_destroy(h);
         return EXIT_USAGE;
     }
-    if (cli_surface_png_finish("untangle", &png) < 0) return EXIT_USAGE;
+    int rc = cli_surface_png_finish("untangle", &png) < 0 ? EXIT_USAGE : EXIT_OK;
     cli_outputs outs;
-    cli_outputs_init(&outs, "untangle", in);
-    int k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
-    int kr = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
-    int kp = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
-    int rc = cli_outputs_check(&outs);
-    if (rc != EXIT_OK) return rc;
+    int k = -1, kr = -1, kp = -1;
+    if (rc == EXIT_OK) {
+        cli_outputs_init(&outs, "untangle", in);
+        k = cli_outputs_add(&outs, "-o", out, CLI_OUTPUT_MESH);
+        kr = cli_outputs_add(&outs, "--report", report, CLI_OUTPUT_FILE);
+        kp = cli_outputs_add(&outs, "--png", png.path, CLI_OUTPUT_FILE);
+        rc = cli_outputs_check(&outs);
+    }
     mesh m;
     mesh_read_info info;
-    if ((rc = cli_read_mesh("untangle", in, quiet, &m, &info)) != EXIT_OK) return rc;
-    /* at unit scale (tools/cli_unit_scale): areas overflow at 1e300 and
-     * vanish at 1e-300; the results are multiplied back before writing */
-    int e = 0;
-    if ((rc = cli_unit_scale("untangle", in, &m, &e)) != EXIT_OK) {
-        mesh_free(&m);
+    if (rc == EXIT_OK) rc = cli_read_mesh("untangle", in, quiet, &m, &info);
+    if (rc != EXIT_OK) {
+        scaf_volume_destroy(h);
         return rc;
     }
-    progress_state ps = {quiet, 0};
-    untangle_result r;
+    progress_state ps = {quiet, 0, 0, 0, NULL, 0};
     double t0 = timer_now();
-    scaf_status st = untangle_run(m.nv, m.V, m.nf, m.F, &opt, on_step, &ps, &r, &err);
+    scaf_status st = scaf_untangle(h, m.V, m.nv, m.F, m.nf, &opt, on_step, &ps);
     double seconds = timer_now() - t0;
+    size_t n3 = 3 * (size_t)m.nv;
+    double *X = st == SCAF_OK ? malloc(sizeof(double) * n3) : NULL;
+    double *flowed = st == SCAF_OK ? malloc(sizeof(double) * n3) : NULL;
+    if (st == SCAF_OK && (!X || !flowed)) st = SCAF_ERR_NOMEM;
+    if (ps.nomem) st = SCAF_ERR_NOMEM;
     if (st != SCAF_OK) {
-        if (!cli_signal_report("untangle"))
-            fprintf(stderr, "scaf untangle: %s: %s\n", in, err.message);
+        if (st == SCAF_ERR_NOMEM) fprintf(stderr, "scaf untangle: out of memory\n");
+        else if (!cli_signal_report("untangle"))
+            fprintf(stderr, "scaf untangle: %s: %s\n", in, scaf_volume_error(h));
+        free(X);
+        free(flowed);
+        free(ps.log);
+        scaf_volume_destroy(h);
         mesh_free(&m);
         return exit_code_for(st);
     }
+    scaf_volume_get_positions(h, X);
+    scaf_volume_get_flowed(h, flowed);
+    scaf_volume_summary_t r = {.struct_size = sizeof r};
+    scaf_volume_get_summary(h, &r);
     if (!quiet) {
-        if (r.stop == UNTANGLE_ALREADY_FREE)
+        if (r.stop == SCAF_UNTANGLE_ALREADY_FREE)
             fprintf(stderr,
                     "scaf untangle: %s is already free of self-intersections: written "
                     "unchanged\n",
@@ -266,38 +313,39 @@ static int untangle_main(int argc, char **argv)
                     "scaf untangle: %lld intersecting face pairs, free after %d flow steps "
                     "(distance RMS %.4g), %d iterations back (%s): distance RMS %.4g max %.4g, "
                     "%.2f s\n",
-                    r.input_pairs, r.flow_steps, r.flowed_rms, r.iterations,
-                    untangle_stop_name(r.stop), r.rms, r.max, seconds);
+                    r.input_defects, r.steps, r.flowed_rms, r.iterations,
+                    scaf_untangle_stop_name(r.stop), r.rms, r.max, seconds);
     }
     if (cli_signal_report("untangle")) rc = EXIT_CANCELLED;
-    size_t n3 = 3 * (size_t)m.nv;
-    if (rc == EXIT_OK) rc = cli_unit_unscale("untangle", in, m.V, n3, e);
-    if (rc == EXIT_OK) rc = cli_unit_unscale("untangle", in, r.X, n3, e);
-    if (rc == EXIT_OK && r.flowed) rc = cli_unit_unscale("untangle", in, r.flowed, n3, e);
-    r.diagonal = ldexp(r.diagonal, e); /* distances are relative to it: unchanged */
     if (rc == EXIT_OK) {
+        scaf_error err;
+        err_clear(&err);
         /* the input's mesh (and its UVs, if any) at the final positions */
         double *V = m.V;
-        m.V = r.X;
+        m.V = X;
         const char *path = cli_outputs_begin(&outs, k, &err);
         rc = cli_outputs_end(&outs, k, path ? mesh_write_obj(path, &m, &err) : SCAF_ERR_IO, &err);
         m.V = V;
         if (rc == EXIT_OK && kr >= 0) {
             path = cli_outputs_begin(&outs, kr, &err);
-            rc = cli_outputs_end(&outs, kr,
-                                 path ? write_report(path, in, &opt, &r, m.nv, m.nf, seconds, &err)
-                                      : SCAF_ERR_IO,
-                                 &err);
+            rc = cli_outputs_end(
+                &outs, kr,
+                path ? write_report(path, in, &opt, &r, &ps, m.nv, m.nf, seconds, &err)
+                     : SCAF_ERR_IO,
+                &err);
         }
         surface_view panels[3] = {{m.nv, m.V, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, r.flowed, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, r.X, m.nf, m.F, NULL, 0, NULL}};
-        int n = r.stop == UNTANGLE_ALREADY_FREE ? 1 : 3;
+                                  {m.nv, flowed, m.nf, m.F, NULL, 0, NULL},
+                                  {m.nv, X, m.nf, m.F, NULL, 0, NULL}};
+        int n = r.stop == SCAF_UNTANGLE_ALREADY_FREE ? 1 : 3;
         if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, n, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }
     cli_outputs_abort(&outs);
-    untangle_result_free(&r);
+    free(X);
+    free(flowed);
+    free(ps.log);
+    scaf_volume_destroy(h);
     mesh_free(&m);
     return rc;
 }

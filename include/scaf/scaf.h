@@ -409,5 +409,8 @@ SCAF_API scaf_status scaf_area_matched_energy(const double *V, int nv, const int
 #include "atlas.h"
 /* Interactive dragging of an atlas's charts and vertices (scaf_drag_*). */
 #include "drag.h"
+/* The 3D functions: inflate, untangle, flow, exact surface and tet checks
+ * (scaf_inflate, scaf_untangle, scaf_flow, scaf_check_*). */
+#include "volume.h"
 
 #endif /* SCAF_SCAF_H */

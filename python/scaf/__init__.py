@@ -11,7 +11,8 @@ it, inputs and outputs are nested lists (one list per row).
     r.uv, r.ft, r.chart, r.efficiency, r.min_gap   # UVs in [0,1]^2
     p = scaf.param(V, F, iterations=20, progress=lambda i: print(i.energy))
 
-One-call functions: param, atlas; split_seams turns a per-corner UV map
+One-call functions: param, atlas; in 3D inflate, untangle, flow,
+tet_mesh, check_surface, check_tets (scaf/volume.h); split_seams turns a per-corner UV map
 into one vertex per UV (vmapping, indices, uvs) for glTF or trimesh. Handles mirroring the C contexts
 (context managers that free the C object on exit): Param, Atlas, and
 Drag (interactive: handles pulled by SCAF iterations, undo, certified
@@ -32,6 +33,9 @@ from ._drag import Drag, DragChartInfo, DragOutput, default_drag_options
 from . import _lib
 from .obj import read_obj
 from .seam_split import split_seams
+from ._volume import (FlowResult, InflateResult, SurfaceReport, TetsReport, UntangleResult,
+                      VolumeStepInfo, check_surface, check_tets, flow, inflate, tet_mesh,
+                      untangle)
 
 ENERGIES = tuple(_lib.ENERGIES)  # names accepted for energy= (or the C int)
 INITS = tuple(_lib.INITS)  # names accepted for init= (or the C int)
@@ -42,7 +46,9 @@ __all__ = [
     "UsageError", "InputError", "MeshError", "NumericError", "OutOfMemory", "Cancelled",
     "InternalError", "library_path", "__version__", "ENERGIES", "INITS", "set_threads",
     "set_deterministic", "Drag", "DragChartInfo", "DragOutput", "default_drag_options",
-    "split_seams", "area_matched_energy",
+    "split_seams", "area_matched_energy", "inflate", "untangle", "flow", "tet_mesh", "check_surface", "check_tets",
+    "InflateResult", "UntangleResult", "FlowResult", "SurfaceReport", "TetsReport",
+    "VolumeStepInfo",
 ]
 
 # Show the public names as scaf.X (in tracebacks and reprs), not scaf._core.X.

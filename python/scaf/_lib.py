@@ -1,7 +1,7 @@
 """scaf._lib: finds libscaf.so and declares the C API to ctypes.
 
 Nothing here computes anything: it loads the shared library, mirrors the
-structs of include/scaf/scaf.h, atlas.h and drag.h field by field
+structs of include/scaf/scaf.h, atlas.h, drag.h and volume.h field by field
 (same order, same C types; a test compares every ctypes.sizeof and field
 offset with the C compiler's), and declares argtypes/restype of every
 function the package calls.
@@ -155,6 +155,149 @@ class DragChartInfo(ctypes.Structure):
     ]
 
 
+# --- scaf/volume.h ------------------------------------------------------------
+
+VOLUME_PHASES = ("flow_step", "iteration")  # scaf_volume_phase
+SOLVER_NEWTON_OR_SLIM = {"newton": 2, "slim": 1}  # what scaf_inflate accepts
+REPORT_MESSAGE_MAX = 512  # SCAF_REPORT_MESSAGE_MAX
+SURFACE_FIRST_PAIRS = 16  # SCAF_SURFACE_FIRST_PAIRS
+_size_t = ctypes.c_size_t
+
+
+class InflateOptions(ctypes.Structure):
+    """scaf_inflate_options_t"""
+
+    _fields_ = [
+        ("struct_size", _size_t),
+        ("scale", ctypes.c_double),
+        ("iterations", ctypes.c_int),
+        ("box_scale", ctypes.c_double),
+        ("solver", c_enum),
+    ]
+
+
+class UntangleOptions(ctypes.Structure):
+    """scaf_untangle_options_t"""
+
+    _fields_ = [
+        ("struct_size", _size_t),
+        ("delta", ctypes.c_double),
+        ("flow_steps", ctypes.c_int),
+        ("iterations", ctypes.c_int),
+        ("tolerance", ctypes.c_double),
+        ("anchor", ctypes.c_double),
+        ("verify", ctypes.c_int),
+    ]
+
+
+class FlowOptions(ctypes.Structure):
+    """scaf_flow_options_t"""
+
+    _fields_ = [
+        ("struct_size", _size_t),
+        ("steps", ctypes.c_int),
+        ("delta", ctypes.c_double),
+        ("until_free", ctypes.c_int),
+    ]
+
+
+class VolumeStepInfo(ctypes.Structure):
+    """scaf_volume_step_info_t"""
+
+    _fields_ = [
+        ("phase", c_enum),
+        ("step", ctypes.c_int),
+        ("seconds", ctypes.c_double),
+        ("check_seconds", ctypes.c_double),
+        ("defects", ctypes.c_longlong),
+        ("pairs", ctypes.c_longlong),
+        ("degenerate_faces", ctypes.c_int),
+        ("energy", ctypes.c_double),
+        ("arap", ctypes.c_double),
+        ("step_length", ctypes.c_double),
+        ("rms", ctypes.c_double),
+        ("max", ctypes.c_double),
+        ("tets", ctypes.c_int),
+        ("scaffold_vertices", ctypes.c_int),
+        ("quality_min", ctypes.c_double),
+        ("quality_p5", ctypes.c_double),
+        ("X", ctypes.POINTER(ctypes.c_double)),
+    ]
+
+
+class VolumeSummary(ctypes.Structure):
+    """scaf_volume_summary_t"""
+
+    _fields_ = [
+        ("struct_size", _size_t),
+        ("steps", ctypes.c_int),
+        ("iterations", ctypes.c_int),
+        ("input_defects", ctypes.c_longlong),
+        ("defects", ctypes.c_longlong),
+        ("box_lo", ctypes.c_double * 3),
+        ("box_hi", ctypes.c_double * 3),
+        ("diagonal_before", ctypes.c_double),
+        ("diagonal_after", ctypes.c_double),
+        ("best_iteration", ctypes.c_int),
+        ("stop", c_enum),
+        ("flowed_rms", ctypes.c_double),
+        ("flowed_max", ctypes.c_double),
+        ("rms", ctypes.c_double),
+        ("max", ctypes.c_double),
+        ("box_vertices", ctypes.c_int),
+        ("tets_inside", ctypes.c_int),
+    ]
+
+
+class TetOptions(ctypes.Structure):
+    """scaf_tet_options_t"""
+
+    _fields_ = [
+        ("struct_size", _size_t),
+        ("box_scale", ctypes.c_double),
+        ("box_cells", ctypes.c_int),
+    ]
+
+
+class SurfaceReport(ctypes.Structure):
+    """scaf_surface_report_t"""
+
+    _fields_ = [
+        ("struct_size", _size_t),
+        ("message", ctypes.c_char * REPORT_MESSAGE_MAX),
+        ("faces", ctypes.c_int),
+        ("vertices", ctypes.c_int),
+        ("boundary_edges", ctypes.c_int),
+        ("closed", ctypes.c_int),
+        ("manifold", ctypes.c_int),
+        ("degenerate_faces", ctypes.c_int),
+        ("first_degenerate", ctypes.c_int),
+        ("pairs", ctypes.c_longlong),
+        ("crossing_pairs", ctypes.c_longlong),
+        ("vertex_pairs", ctypes.c_longlong),
+        ("edge_pairs", ctypes.c_longlong),
+        ("duplicate_pairs", ctypes.c_longlong),
+        ("nfirst", ctypes.c_int),
+        ("first", (ctypes.c_int * 2) * SURFACE_FIRST_PAIRS),
+        ("intersection_free", ctypes.c_int),
+    ]
+
+
+class TetsReport(ctypes.Structure):
+    """scaf_tets_report_t"""
+
+    _fields_ = [
+        ("struct_size", _size_t),
+        ("message", ctypes.c_char * REPORT_MESSAGE_MAX),
+        ("tets", ctypes.c_int),
+        ("positive", ctypes.c_int),
+        ("inverted", ctypes.c_int),
+        ("degenerate", ctypes.c_int),
+        ("first_bad", ctypes.c_int),
+        ("valid", ctypes.c_int),
+    ]
+
+
 # The C names of the mirrored structs, for the layout test.
 STRUCTS = {
     "scaf_options_t": Options,
@@ -163,10 +306,19 @@ STRUCTS = {
     "scaf_atlas_iteration_info_t": AtlasIterationInfo,
     "scaf_drag_options_t": DragOptions,
     "scaf_drag_chart_info_t": DragChartInfo,
+    "scaf_inflate_options_t": InflateOptions,
+    "scaf_untangle_options_t": UntangleOptions,
+    "scaf_flow_options_t": FlowOptions,
+    "scaf_tet_options_t": TetOptions,
+    "scaf_volume_step_info_t": VolumeStepInfo,
+    "scaf_volume_summary_t": VolumeSummary,
+    "scaf_surface_report_t": SurfaceReport,
+    "scaf_tets_report_t": TetsReport,
 }
 
 PARAM_PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.POINTER(IterationInfo), ctypes.c_void_p)
 ATLAS_PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.POINTER(AtlasIterationInfo), ctypes.c_void_p)
+VOLUME_PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.POINTER(VolumeStepInfo), ctypes.c_void_p)
 
 _P = ctypes.c_void_p  # opaque scaf_param_t * / scaf_atlas_t *
 _D = ctypes.POINTER(ctypes.c_double)
@@ -243,6 +395,30 @@ SIGNATURES = {
     "scaf_drag_get_output": (c_enum, [_P, _D, _I, _I, _D, _D]),
     "scaf_drag_error": (ctypes.c_char_p, [_P]),
     "scaf_drag_destroy": (None, [_P]),
+    "scaf_volume_new": (_P, []),
+    "scaf_volume_destroy": (None, [_P]),
+    "scaf_volume_error": (ctypes.c_char_p, [_P]),
+    "scaf_volume_vertex_count": (_int, [_P]),
+    "scaf_volume_get_positions": (c_enum, [_P, _D]),
+    "scaf_volume_get_flowed": (c_enum, [_P, _D]),
+    "scaf_volume_tet_vertex_count": (_int, [_P]),
+    "scaf_volume_tet_count": (_int, [_P]),
+    "scaf_volume_get_tets": (c_enum, [_P, _D, _I, _I]),
+    "scaf_volume_get_summary": (c_enum, [_P, ctypes.POINTER(VolumeSummary)]),
+    "scaf_inflate_options_default": (InflateOptions, []),
+    "scaf_untangle_options_default": (UntangleOptions, []),
+    "scaf_flow_options_default": (FlowOptions, []),
+    "scaf_tet_options_default": (TetOptions, []),
+    "scaf_tet_mesh": (c_enum, [_P, _D, _int, _I, _int, ctypes.POINTER(TetOptions)]),
+    "scaf_inflate": (c_enum, [_P, _D, _int, _I, _int, ctypes.POINTER(InflateOptions),
+                              VOLUME_PROGRESS, ctypes.c_void_p]),
+    "scaf_untangle": (c_enum, [_P, _D, _int, _I, _int, ctypes.POINTER(UntangleOptions),
+                               VOLUME_PROGRESS, ctypes.c_void_p]),
+    "scaf_flow": (c_enum, [_P, _D, _int, _I, _int, ctypes.POINTER(FlowOptions), VOLUME_PROGRESS,
+                           ctypes.c_void_p]),
+    "scaf_untangle_stop_name": (ctypes.c_char_p, [c_enum]),
+    "scaf_check_surface": (c_enum, [_D, _int, _I, _int, ctypes.POINTER(SurfaceReport)]),
+    "scaf_check_tets": (c_enum, [_D, _int, _I, _int, ctypes.POINTER(TetsReport)]),
 }
 
 

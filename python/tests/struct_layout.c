@@ -1,8 +1,8 @@
 /* python/tests/struct_layout: prints the C layout of the public structs.
  *
  * The Python package mirrors scaf_options_t, scaf_iteration_info_t,
- * scaf_atlas_options_t, scaf_atlas_iteration_info_t, scaf_drag_options_t
- * and scaf_drag_chart_info_t as ctypes
+ * scaf_atlas_options_t, scaf_atlas_iteration_info_t, scaf_drag_options_t,
+ * scaf_drag_chart_info_t and the structs of scaf/volume.h as ctypes
  * structures. This test-only program prints, for each, one line
  * "STRUCT sizeof N" and one line "STRUCT FIELD OFFSET SIZE" per field, as
  * the C compiler lays them out; python/tests/test_scaf.py compares them
@@ -94,6 +94,100 @@ int main(void)
     FIELD(scaf_drag_chart_info_t, energy);
     FIELD(scaf_drag_chart_info_t, held);
 
+    SIZE(scaf_inflate_options_t);
+    FIELD(scaf_inflate_options_t, struct_size);
+    FIELD(scaf_inflate_options_t, scale);
+    FIELD(scaf_inflate_options_t, iterations);
+    FIELD(scaf_inflate_options_t, box_scale);
+    FIELD(scaf_inflate_options_t, solver);
+
+    SIZE(scaf_untangle_options_t);
+    FIELD(scaf_untangle_options_t, struct_size);
+    FIELD(scaf_untangle_options_t, delta);
+    FIELD(scaf_untangle_options_t, flow_steps);
+    FIELD(scaf_untangle_options_t, iterations);
+    FIELD(scaf_untangle_options_t, tolerance);
+    FIELD(scaf_untangle_options_t, anchor);
+    FIELD(scaf_untangle_options_t, verify);
+
+    SIZE(scaf_flow_options_t);
+    FIELD(scaf_flow_options_t, struct_size);
+    FIELD(scaf_flow_options_t, steps);
+    FIELD(scaf_flow_options_t, delta);
+    FIELD(scaf_flow_options_t, until_free);
+
+    SIZE(scaf_volume_step_info_t);
+    FIELD(scaf_volume_step_info_t, phase);
+    FIELD(scaf_volume_step_info_t, step);
+    FIELD(scaf_volume_step_info_t, seconds);
+    FIELD(scaf_volume_step_info_t, check_seconds);
+    FIELD(scaf_volume_step_info_t, defects);
+    FIELD(scaf_volume_step_info_t, pairs);
+    FIELD(scaf_volume_step_info_t, degenerate_faces);
+    FIELD(scaf_volume_step_info_t, energy);
+    FIELD(scaf_volume_step_info_t, arap);
+    FIELD(scaf_volume_step_info_t, step_length);
+    FIELD(scaf_volume_step_info_t, rms);
+    FIELD(scaf_volume_step_info_t, max);
+    FIELD(scaf_volume_step_info_t, tets);
+    FIELD(scaf_volume_step_info_t, scaffold_vertices);
+    FIELD(scaf_volume_step_info_t, quality_min);
+    FIELD(scaf_volume_step_info_t, quality_p5);
+    FIELD(scaf_volume_step_info_t, X);
+
+    SIZE(scaf_volume_summary_t);
+    FIELD(scaf_volume_summary_t, struct_size);
+    FIELD(scaf_volume_summary_t, steps);
+    FIELD(scaf_volume_summary_t, iterations);
+    FIELD(scaf_volume_summary_t, input_defects);
+    FIELD(scaf_volume_summary_t, defects);
+    FIELD(scaf_volume_summary_t, box_lo);
+    FIELD(scaf_volume_summary_t, box_hi);
+    FIELD(scaf_volume_summary_t, diagonal_before);
+    FIELD(scaf_volume_summary_t, diagonal_after);
+    FIELD(scaf_volume_summary_t, best_iteration);
+    FIELD(scaf_volume_summary_t, stop);
+    FIELD(scaf_volume_summary_t, flowed_rms);
+    FIELD(scaf_volume_summary_t, flowed_max);
+    FIELD(scaf_volume_summary_t, rms);
+    FIELD(scaf_volume_summary_t, max);
+    FIELD(scaf_volume_summary_t, box_vertices);
+    FIELD(scaf_volume_summary_t, tets_inside);
+
+    SIZE(scaf_tet_options_t);
+    FIELD(scaf_tet_options_t, struct_size);
+    FIELD(scaf_tet_options_t, box_scale);
+    FIELD(scaf_tet_options_t, box_cells);
+
+    SIZE(scaf_surface_report_t);
+    FIELD(scaf_surface_report_t, struct_size);
+    FIELD(scaf_surface_report_t, message);
+    FIELD(scaf_surface_report_t, faces);
+    FIELD(scaf_surface_report_t, vertices);
+    FIELD(scaf_surface_report_t, boundary_edges);
+    FIELD(scaf_surface_report_t, closed);
+    FIELD(scaf_surface_report_t, manifold);
+    FIELD(scaf_surface_report_t, degenerate_faces);
+    FIELD(scaf_surface_report_t, first_degenerate);
+    FIELD(scaf_surface_report_t, pairs);
+    FIELD(scaf_surface_report_t, crossing_pairs);
+    FIELD(scaf_surface_report_t, vertex_pairs);
+    FIELD(scaf_surface_report_t, edge_pairs);
+    FIELD(scaf_surface_report_t, duplicate_pairs);
+    FIELD(scaf_surface_report_t, nfirst);
+    FIELD(scaf_surface_report_t, first);
+    FIELD(scaf_surface_report_t, intersection_free);
+
+    SIZE(scaf_tets_report_t);
+    FIELD(scaf_tets_report_t, struct_size);
+    FIELD(scaf_tets_report_t, message);
+    FIELD(scaf_tets_report_t, tets);
+    FIELD(scaf_tets_report_t, positive);
+    FIELD(scaf_tets_report_t, inverted);
+    FIELD(scaf_tets_report_t, degenerate);
+    FIELD(scaf_tets_report_t, first_bad);
+    FIELD(scaf_tets_report_t, valid);
+
     /* enum values the binding names (it passes other ints through) */
     printf("enum SCAF_PHASE_COUNT %d\n", (int)SCAF_PHASE_COUNT);
     printf("enum SCAF_ERR_INTERNAL %d\n", (int)SCAF_ERR_INTERNAL);
@@ -103,6 +197,10 @@ int main(void)
     printf("enum SCAF_INIT_MVC %d\n", (int)SCAF_INIT_MVC);
     printf("enum SCAF_ATLAS_COMPACT %d\n", (int)SCAF_ATLAS_COMPACT);
     printf("enum SCAF_DRAG_START_ATLAS %d\n", (int)SCAF_DRAG_START_ATLAS);
+    printf("enum SCAF_VOLUME_ITERATION %d\n", (int)SCAF_VOLUME_ITERATION);
+    printf("enum SCAF_UNTANGLE_ITERATION_LIMIT %d\n", (int)SCAF_UNTANGLE_ITERATION_LIMIT);
+    printf("enum SCAF_REPORT_MESSAGE_MAX %d\n", (int)SCAF_REPORT_MESSAGE_MAX);
+    printf("enum SCAF_SURFACE_FIRST_PAIRS %d\n", (int)SCAF_SURFACE_FIRST_PAIRS);
     printf("enum sizeof %zu\n", sizeof(scaf_init));
     return 0;
 }

@@ -177,6 +177,9 @@ class LibraryTest(unittest.TestCase):
         self.assertEqual(enums["SCAF_INIT_HARMONIC"], _lib.INITS["harmonic"])
         self.assertEqual(enums["SCAF_INIT_MVC"], _lib.INITS["mvc"])
         self.assertEqual(enums["SCAF_ATLAS_COMPACT"], len(_lib.ATLAS_PHASES) - 1)
+        self.assertEqual(enums["SCAF_VOLUME_ITERATION"], len(_lib.VOLUME_PHASES) - 1)
+        self.assertEqual(enums["SCAF_REPORT_MESSAGE_MAX"], _lib.REPORT_MESSAGE_MAX)
+        self.assertEqual(enums["SCAF_SURFACE_FIRST_PAIRS"], _lib.SURFACE_FIRST_PAIRS)
         self.assertEqual(enums["sizeof"], ctypes.sizeof(_lib.c_enum))
 
     def test_version_is_the_programs(self):

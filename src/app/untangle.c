@@ -12,10 +12,9 @@
 #include <string.h>
 
 #include "app/inflate.h"
-#include "base/timer.h"
+#include "app/surface_flow.h"
 #include "geom/self_intersect.h"
 #include "mesh/closed_surface.h"
-#include "opt/cmcf.h"
 #include "opt/handle_term.h"
 
 #define UNTANGLE_MAX_STEPS 100000
@@ -132,49 +131,54 @@ static scaf_status record(untangle_result *r, int *cap, const untangle_event *e,
     return SCAF_OK;
 }
 
-/* Flow r->flowed (a copy of V) until it is free in V's frame. */
+/* The flow's steps as untangle's events (app/surface_flow calls it). */
+typedef struct flow_events {
+    untangle_result *r;
+    int *cap;
+    const double *V;
+    int nv;
+    untangle_progress progress;
+    void *user;
+    scaf_status status; /* of record(): the reason to stop */
+    scaf_error err;
+} flow_events;
+
+static int on_flow_step(const surface_flow_event *f, void *user)
+{
+    flow_events *a = user;
+    if (f->step == 0) return 0; /* the input's check: already done in r->input_pairs */
+    untangle_event e;
+    memset(&e, 0, sizeof e);
+    e.phase = UNTANGLE_FLOW;
+    e.step = a->r->flow_steps = f->step;
+    e.seconds = f->seconds + f->check_seconds;
+    e.pairs = f->pairs + f->degenerate_faces;
+    e.X = f->X;
+    distances(a->nv, f->X, a->V, a->r->diagonal, &e.rms, &e.max);
+    a->status = record(a->r, a->cap, &e, a->progress, a->user, &a->err);
+    return a->status != SCAF_OK;
+}
+
+/* Flow r->flowed (a copy of V) until it is free in V's frame (the one
+ * flow-until-free loop, app/surface_flow); r->input_pairs its start. */
 static scaf_status flow_out(int nv, const double *V, int nf, const int *F,
                             const untangle_options *o, untangle_progress progress, void *user,
                             untangle_result *r, int *cap, scaf_error *err)
 {
-    double c[3], area;
-    cmcf f;
-    scaf_status st = cmcf_frame(nv, V, nf, F, c, &area, err);
-    if (st == SCAF_OK) st = cmcf_init(&f, nv, V, nf, F, o->delta, err);
-    if (st != SCAF_OK) return st;
-    double *U = malloc(sizeof(double) * 3 * (size_t)nv);
-    if (!U) {
-        cmcf_free(&f);
-        return err_nomem(err, "untangle flow");
+    surface_flow_options fo = {o->delta, o->flow_steps, 1, 1};
+    flow_events a = {r, cap, V, nv, progress, user, SCAF_OK, {SCAF_OK, ""}};
+    surface_flow_result fr;
+    scaf_status st = surface_flow_run(nv, V, nf, F, &fo, r->flowed, on_flow_step, &a, &fr, err);
+    r->input_pairs = fr.input_defects;
+    if (a.status != SCAF_OK) {
+        *err = a.err;
+        return a.status;
     }
-    memcpy(U, V, sizeof(double) * 3 * (size_t)nv);
-    double s = sqrt(area);
-    st = cmcf_normalize(nv, U, nf, F, err);
-    long long left = r->input_pairs;
-    for (int step = 1; st == SCAF_OK && step <= o->flow_steps && left != 0; step++) {
-        double t0 = timer_now();
-        st = cmcf_step(&f, U, err);
-        if (st != SCAF_OK) break;
-        for (size_t i = 0; i < 3 * (size_t)nv; i++) r->flowed[i] = c[i % 3] + s * U[i];
-        st = defects(nv, r->flowed, nf, F, &left, err);
-        if (st != SCAF_OK) break;
-        untangle_event e;
-        memset(&e, 0, sizeof e);
-        e.phase = UNTANGLE_FLOW;
-        e.step = r->flow_steps = step;
-        e.seconds = timer_now() - t0;
-        e.pairs = left;
-        e.X = r->flowed;
-        distances(nv, r->flowed, V, r->diagonal, &e.rms, &e.max);
-        st = record(r, cap, &e, progress, user, err);
-    }
-    free(U);
-    cmcf_free(&f);
-    if (st == SCAF_OK && left != 0)
+    if (st == SCAF_OK && fr.defects != 0)
         st = err_set(err, SCAF_ERR_NUMERIC,
                      "the flow did not free the surface in %d steps of %g (%lld intersecting "
                      "face pairs left)",
-                     o->flow_steps, o->delta, left);
+                     o->flow_steps, o->delta, fr.defects);
     return st;
 }
 
@@ -285,13 +289,12 @@ scaf_status untangle_run(int nv, const double *V, int nf, const int *F, const un
     memcpy(r->flowed, V, sizeof(double) * 3 * (size_t)nv);
     memcpy(r->X, V, sizeof(double) * 3 * (size_t)nv);
     r->diagonal = inflate_bbox_diagonal(nv, V);
-    st = defects(nv, V, nf, F, &r->input_pairs, err);
     int cap = 0;
+    st = flow_out(nv, V, nf, F, o, progress, user, r, &cap, err);
     if (st == SCAF_OK && r->input_pairs == 0) {
         r->stop = UNTANGLE_ALREADY_FREE;
         return SCAF_OK;
     }
-    if (st == SCAF_OK) st = flow_out(nv, V, nf, F, o, progress, user, r, &cap, err);
     if (st == SCAF_OK) {
         distances(nv, r->flowed, V, r->diagonal, &r->flowed_rms, &r->flowed_max);
         memcpy(r->X, r->flowed, sizeof(double) * 3 * (size_t)nv);

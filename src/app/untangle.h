@@ -44,7 +44,7 @@
 #include "app/volume_deform.h"
 #include "base/error.h"
 
-#define UNTANGLE_WINDOW 10
+#define UNTANGLE_WINDOW SCAF_UNTANGLE_WINDOW /* scaf/volume.h */
 #define UNTANGLE_ANCHOR_DEFAULT 1000.0
 
 typedef struct untangle_options {

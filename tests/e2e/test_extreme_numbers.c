@@ -221,7 +221,7 @@ static void write_tetra(const char *path, const char *s)
 /* issue 29: the 3D commands at 1e300 and 1e-300. `scaf tet` made TetGen
  * assert (exit 70) at 1e300 and saw "facets intersect" at 1e-300;
  * `flow` and `inflate` called face 0 "zero area". Now they work at unit
- * scale (tools/cli_unit_scale): the tets check positive, the inflated
+ * scale (app/unit_scale): the tets check positive, the inflated
  * surface is written in the input's units; a range a double cannot hold
  * at once, or a box beyond the largest double, is exit 4 saying so. */
 static void three_d_commands_at_any_scale(void **state)

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # scripts/check_layers.sh: passes a tree that keeps the layering, and fails,
 # naming the file and the layers, on an upward include (injected into a copy
-# of the real src/) and on an upward call (two tiny objects built here).
+# of the real src/), on a tools/ file including opt/ (and on an allow-list
+# entry no longer needed) and on an upward call (two tiny objects built
+# here).
 #   test_check_layers.sh SOURCE_DIR [CC]
 set -euo pipefail
 src="$1"
@@ -25,6 +27,26 @@ bash "$script" "$tmp/tree" >"$tmp/out" 2>&1 || rc=$?
 grep -q "^src/geom/predicates.c:$line: includes \"app/param.h\" (app), but geom may use only base, geom$" "$tmp/out" ||
   fail "upward include not named: $(cat "$tmp/out")"
 [ "$(grep -c ' includes ' "$tmp/out")" -eq 1 ] || fail "more than the injected include reported: $(cat "$tmp/out")"
+
+# ---- tools/ including scaffold/, opt/ or geom/ outside the allow-list ----
+rm -rf "$tmp/tree" && mkdir "$tmp/tree"
+cp -r "$src/src" "$src/tools" "$tmp/tree/"
+line=$(($(wc -l <"$tmp/tree/tools/cmd_flow.c") + 1))
+echo '#include "opt/cmcf.h"' >>"$tmp/tree/tools/cmd_flow.c"
+rc=0
+bash "$script" "$tmp/tree" >"$tmp/out" 2>&1 || rc=$?
+[ "$rc" -eq 1 ] || fail "tools/ including opt/: exit $rc, expected 1"
+grep -q "^tools/cmd_flow.c:$line: includes \"opt/cmcf.h\" (opt), but tools/ stands on the public API" "$tmp/out" ||
+  fail "tools/ including opt/ not named: $(cat "$tmp/out")"
+[ "$(grep -c ' includes ' "$tmp/out")" -eq 1 ] || fail "more than the injected include reported: $(cat "$tmp/out")"
+# an allow-listed file that no longer needs it is reported, to be struck off
+cp "$src/tools/cmd_flow.c" "$tmp/tree/tools/cmd_flow.c"
+sed -i '/#include "geom\//d' "$tmp/tree/tools/cmd_check.c"
+rc=0
+bash "$script" "$tmp/tree" >"$tmp/out" 2>&1 || rc=$?
+[ "$rc" -eq 1 ] || fail "stale allow-list entry: exit $rc, expected 1"
+grep -q "^tools/cmd_check.c: allow-listed for scaffold/opt/geom includes but has none" "$tmp/out" ||
+  fail "stale allow-list entry not named: $(cat "$tmp/out")"
 
 # ---- calls: objects laid out as CMake builds them ----
 t="$tmp/calls"
