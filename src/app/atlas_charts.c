@@ -338,7 +338,30 @@ static int slit_chart(const mesh *m, const vt_graph *g, const int *label, int c,
     return rc;
 }
 
-/* New vt indices: one per (old vt, label) pair; UVs copied (placeholders). */
+/* m's vt indices and UVs become the settled atlas's working vertices and
+ * layout (pinch points split, as the atlas splits them): the start of the
+ * next round and of the final atlas. */
+static int take_layout(mesh *m, const atlas *a)
+{
+    int *FT = malloc(sizeof(int) * 3 * (size_t)a->nf);
+    double *UV = malloc(sizeof(double) * 2 * (size_t)(a->nw > 0 ? a->nw : 1));
+    if (!FT || !UV) {
+        free(FT);
+        free(UV);
+        return 0;
+    }
+    memcpy(FT, a->Fw, sizeof(int) * 3 * (size_t)a->nf);
+    memcpy(UV, a->loop.uv, sizeof(double) * 2 * (size_t)a->nw);
+    free(m->FT);
+    free(m->UV);
+    m->FT = FT;
+    m->UV = UV;
+    m->nuv = a->nw;
+    return 1;
+}
+
+/* New vt indices: one per (old vt, label) pair; UVs copied, so both sides
+ * of a new seam keep their place in the layout. */
 static int relabel_uvs(mesh *m, const int *label)
 {
     int *first = malloc(sizeof(int) * (size_t)m->nuv);
@@ -413,8 +436,10 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
     opt.init_input = 0;
     if (opt.settle_iterations > ROUND_ITERATIONS) opt.settle_iterations = ROUND_ITERATIONS;
     if (opt.settle_tolerance < ROUND_TOLERANCE) opt.settle_tolerance = ROUND_TOLERANCE;
+    int warm = 0; /* m's UVs are the last round's layout, its new seams opened */
     for (int round = 0; round < o->max_rounds; round++) {
         atlas a;
+        opt.init_warm = warm;
         st = atlas_init(&a, m, &opt, err);
         if (st != SCAF_OK) break;
         st = atlas_run(&a, NULL, NULL, err);
@@ -423,6 +448,7 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             break;
         }
         info->rounds++;
+        info->warm_charts = a.warm_charts;
         int nc = a.ncharts;
         double *E = malloc(sizeof(double) * (size_t)nc);
         double *fill = malloc(sizeof(double) * (size_t)nc);
@@ -452,6 +478,7 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
         /* the atlas's charts are the mesh's UV charts (pinched vt split
          * apart keep their faces): label faces by them */
         for (int f = 0; f < m->nf; f++) label[f] = a.chart[f];
+        if (ok) ok = take_layout(m, &a);
         atlas_free(&a);
         free(UV);
         if (!ok) {
@@ -546,6 +573,9 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
         free(fill);
         free(cand);
         if (st != SCAF_OK || split + slits == 0) break;
+        /* a slit leaves its two sides at one place: that chart cannot
+         * start from its layout, and the others need not */
+        warm = slits == 0;
         if (split > 0 && !relabel_uvs(m, label)) {
             st = err_nomem(err, "chart refinement");
             break;
@@ -584,17 +614,19 @@ scaf_status atlas_charts_apply(mesh *planned, const atlas_options *opt, seam_pla
     inner.split_charts = 0;
     atlas_charts_info info;
     scaf_status st = atlas_charts_refine(&work, &inner, &o, &info, err);
-    if (st != SCAF_OK || work.nuv == planned->nuv) {
+    if (st != SCAF_OK || info.rounds == 0) {
         free(work.FT);
         free(work.UV);
         return st;
     }
+    /* the charts and their last layout: the atlas starts from it */
     free(plan->FT);
     free(plan->UV);
     plan->FT = work.FT;
     plan->UV = work.UV;
     plan->nuv = work.nuv;
     plan->changed = 1;
+    plan->uv_start = 1;
     planned->FT = work.FT;
     planned->UV = work.UV;
     planned->nuv = work.nuv;
