@@ -56,6 +56,14 @@ typedef struct atlas_charts_options {
                               worst vertex (largest area-weighted excess of E over 4)
                               instead of splitting it (0; measured: splitting gives
                               the lower E, spot 4.23 against 4.30) */
+    int merge;             /* 1: after the splitting rounds, join pairs of neighbours
+                              (a common seam, their union a disk) within the bound
+                              whose area-weighted mean E is below 4 + 1/2 (bound - 4);
+                              one round settles them, the next parts again every
+                              joined chart settling above 4 + 3/4 (bound - 4), or
+                              filling its least-area box less than its parts did
+                              (area-weighted) or less than min_fill (0; on for
+                              automatic seams) */
 } atlas_charts_options;
 
 typedef struct atlas_charts_info {
@@ -63,6 +71,7 @@ typedef struct atlas_charts_info {
     int rounds;                         /* rounds run */
     int distortion_splits, fill_splits; /* charts split for each reason */
     int distortion_slits;               /* cuts from a boundary to a cone */
+    int merges;                         /* pairs of charts joined for good */
     int warm_charts;                    /* charts of the last round started from
                                            the previous round's layout */
 } atlas_charts_info;
