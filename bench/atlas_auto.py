@@ -17,6 +17,13 @@ row per mesh and tool:
   gap         the smallest distance between two charts in texels (scaf check)
   bijective   scaf check's exact verdict
   s           wall time of the whole command (segmentation included)
+  cpu         CPU time (user + system) of the command: on a shared
+              machine the wall time follows the load, the CPU time less
+
+With --versus BIN, a second scaf (e.g. main's build) runs on each mesh
+right after the first (interleaved, so both see the same load) and a row
+"versus" follows each scaf row, with the ratios of the two wall and CPU
+times (first / second) in a last column.
 
 scaf runs `scaf atlas IN -o OUT --seams auto` when the program has the
 option; before that it segments with bench/segment_obj (mesh/chart_segment)
@@ -30,6 +37,7 @@ Without node or the package the xatlas rows are skipped with a note.
     bench/atlas_auto.py [--scaf BIN] [--segment BIN] [--data DIR]
                         [--xatlas DIR] [--resolution R] [--gap K]
                         [--only NAME[,NAME...]] [--refine OPTIONS]
+                        [--versus BIN]
 
 Prints a Markdown table (paste into bench/RESULTS-atlas.md).
 """
@@ -37,6 +45,7 @@ import argparse
 import json
 import math
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -160,12 +169,20 @@ def has_seams_option(scaf):
     return "--seams" in r.stdout
 
 
-def run_scaf(args, mesh, tmp, name):
-    out = os.path.join(tmp, name + "_scaf.obj")
+def child_cpu():
+    u = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return u.ru_utime + u.ru_stime
+
+
+def run_scaf(args, mesh, tmp, name, scaf=None, tool="scaf"):
+    scaf = scaf or args.scaf
+    out = os.path.join(tmp, name + "_" + tool + ".obj")
     t0 = time.monotonic()
-    if has_seams_option(args.scaf):
-        cmd = [args.scaf, "atlas", mesh, "-o", out, "--seams", "auto", "--quiet",
+    c0 = child_cpu()
+    if has_seams_option(scaf):
+        cmd = [scaf, "atlas", mesh, "-o", out, "--seams", "auto", "--quiet",
                "--resolution", str(args.resolution), "--padding-texels", str(args.gap)]
+        c0 = child_cpu()
         r = subprocess.run(cmd, capture_output=True, text=True)
         how = "scaf atlas --seams auto"
     else:
@@ -177,9 +194,10 @@ def run_scaf(args, mesh, tmp, name):
             r = subprocess.run(cmd, capture_output=True, text=True)
         how = ("segment_obj + scaf atlas " + args.refine).strip()
     seconds = time.monotonic() - t0
+    cpu = child_cpu() - c0
     if r.returncode != 0:
-        return {"tool": "scaf", "how": how, "error": (r.stderr or r.stdout).strip()[:200]}
-    return metrics(args, out, "scaf", how, seconds)
+        return {"tool": tool, "how": how, "error": (r.stderr or r.stdout).strip()[:200]}
+    return metrics(args, out, tool, how, seconds, {"cpu": cpu})
 
 
 def metrics(args, out, tool, how, seconds, extra=None):
@@ -206,24 +224,27 @@ def run_xatlas(args, mesh, tmp, name):
     row = None
     for _ in range(3):
         t0 = time.monotonic()
+        c0 = child_cpu()
         r = subprocess.run(["node", "run.mjs", "auto", mesh, out, str(pad), str(args.resolution)],
                            cwd=args.xatlas, capture_output=True, text=True)
         seconds = time.monotonic() - t0
         if r.returncode != 0:
             return {"tool": "xatlas", "how": "xatlas-wasm auto", "error": r.stderr.strip()[:200]}
-        row = metrics(args, out, "xatlas", "xatlas-wasm auto, padding %d" % pad, seconds)
+        row = metrics(args, out, "xatlas", "xatlas-wasm auto, padding %d" % pad, seconds,
+                      {"cpu": child_cpu() - c0})
         if row["gap"] >= args.gap:
             break
         pad += 1
     return row
 
 
-def fmt(row, name):
+def fmt(row, name, ratio=""):
     if "error" in row:
-        return "| %s | %s | failed: %s | | | | | | | | |" % (name, row["tool"], row["error"].replace("|", "/"))
-    return "| %s | %s | %d | %.3f | %.3f | %.2f | %.2f | %s | %.1f | %s | %.1f |" % (
+        return "| %s | %s | failed: %s | | | | | | | | | | |" % (name, row["tool"], row["error"].replace("|", "/"))
+    return "| %s | %s | %d | %.3f | %.3f | %.2f | %.2f | %s | %.1f | %s | %.1f | %.1f | %s |" % (
         name, row["tool"], row["charts"], row["efficiency"], row["E"], row["p99"], row["seam"],
-        row["mirrored"], row["gap"], "yes" if row["bijective"] else "no", row["seconds"])
+        row["mirrored"], row["gap"], "yes" if row["bijective"] else "no", row["seconds"],
+        row.get("cpu", float("nan")), ratio)
 
 
 def main():
@@ -238,14 +259,15 @@ def main():
     ap.add_argument("--only", default=None)
     ap.add_argument("--refine", default="--max-distortion 4.2 --split-charts",
                     help="chart splitting options of scaf atlas in the segment_obj path")
+    ap.add_argument("--versus", default=None, help="a second scaf binary run right after each scaf run")
     args = ap.parse_args()
     meshes = MESHES
     if args.only:
         keep = args.only.split(",")
         meshes = [m for m in MESHES if os.path.splitext(os.path.basename(m))[0] in keep]
     use_xatlas = xatlas_usable(args.xatlas)
-    print("| mesh | tool | charts | efficiency | E mean | E p99 | seam | mirrored | gap (texels) | bijective | s |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| mesh | tool | charts | efficiency | E mean | E p99 | seam | mirrored | gap (texels) | bijective | s | cpu s | s, cpu ratio |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     hows = set()
     with tempfile.TemporaryDirectory(prefix="atlas_auto_") as tmp:
         for rel in meshes:
@@ -260,7 +282,15 @@ def main():
                 strip_vt(src, mesh)
             row = run_scaf(args, mesh, tmp, name)
             hows.add(row["how"])
-            print(fmt(row, name), flush=True)
+            if args.versus:
+                other = run_scaf(args, mesh, tmp, name, args.versus, "versus")
+                ratio = ""
+                if "error" not in row and "error" not in other:
+                    ratio = "%.2f, %.2f" % (row["seconds"] / other["seconds"], row["cpu"] / other["cpu"])
+                print(fmt(row, name, ratio), flush=True)
+                print(fmt(other, name), flush=True)
+            else:
+                print(fmt(row, name), flush=True)
             if use_xatlas:
                 print(fmt(run_xatlas(args, mesh, tmp, name), name), flush=True)
     print()

@@ -103,13 +103,21 @@ int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_re
 scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info,
                          const char *target, const char *out, const mesh *o, scaf_error *err)
 {
+    return cli_write_uv_grouped(cmd, in, info, target, out, o, NULL, err);
+}
+
+scaf_status cli_write_uv_grouped(const char *cmd, const char *in, const mesh_read_info *info,
+                                 const char *target, const char *out, const mesh *o,
+                                 const int *face_group, scaf_error *err)
+{
     mesh_format to = strcmp(target, "-") ? mesh_format_from_name(target) : MESH_FORMAT_OBJ;
     if (to == MESH_FORMAT_PLY) return mesh_write_ply(out, o, err);
     if (info && info->format == MESH_FORMAT_OBJ) {
         size_t n;
         const char *text = !strcmp(in, "-") ? cli_stdin_data(&n) : NULL;
-        scaf_status st = text ? obj_rewrite_uv_text("<stdin>", text, n, out, o, err)
-                              : obj_rewrite_uv(in, out, o, err);
+        scaf_status st =
+            text ? obj_rewrite_uv_text_grouped("<stdin>", text, n, out, o, face_group, err)
+                 : obj_rewrite_uv_grouped(in, out, o, face_group, err);
         if (st != SCAF_ERR_MESH) return st;
         fprintf(stderr,
                 "scaf %s: warning: %s; writing a plain OBJ (normals, materials and groups not "
@@ -117,7 +125,7 @@ scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *
                 cmd, err->message);
         err_clear(err);
     }
-    return mesh_write_obj(out, o, err);
+    return mesh_write_obj_grouped(out, o, face_group, err);
 }
 
 scaf_status cli_write_uv_from(const char *in, const char *source, const mesh_read_info *info,

@@ -51,6 +51,13 @@ int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_re
 scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info,
                          const char *target, const char *out, const mesh *o, scaf_error *err);
 
+/* The same with face_group (nf ids, or NULL): `g chart_N` lines for the
+ * faces' groups in an OBJ output (mesh/obj_rewrite's obj_rewrite_uv_grouped,
+ * or the plain writer's mesh_write_obj_grouped; a PLY has no groups). */
+scaf_status cli_write_uv_grouped(const char *cmd, const char *in, const mesh_read_info *info,
+                                 const char *target, const char *out, const mesh *o,
+                                 const int *face_group, scaf_error *err);
+
 /* The same for `scaf edit`, whose input may be moved, deleted or replaced
  * while it runs: the input's text is read from `source` (a path to the
  * same file; the editor passes /proc/self/fd/N of a descriptor it keeps

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/atlas_picture.h"
 #include "app/atlas_report.h"
 #include "app/seam_source.h"
 #include "app/surface_render.h"
@@ -40,7 +41,7 @@ int cli_seams_report(const char *cmd, const mesh *m, const int *FT, scaf_seams u
 }
 
 int cli_seams_png(cli_outputs *outs, int k, const mesh *m, const int *face_chart,
-                  const seam_edges *s)
+                  const seam_edges *s, const mesh *atlas)
 {
     if (k < 0) return EXIT_OK;
     unsigned *col = malloc(sizeof(unsigned) * (size_t)(m->nf ? m->nf : 1));
@@ -73,7 +74,10 @@ int cli_seams_png(cli_outputs *outs, int k, const mesh *m, const int *face_chart
     scaf_error err;
     err_clear(&err);
     const char *path = cli_outputs_begin(outs, k, &err);
-    scaf_status st = path ? surface_render_png(path, 2, v, NULL, &err) : SCAF_ERR_IO;
+    scaf_status st = !path ? SCAF_ERR_IO
+        : atlas ? atlas_picture_png(path, v, atlas->nuv, atlas->UV, atlas->nf, atlas->FT, col,
+                                    surface_render_options_default().width, &err)
+                : surface_render_png(path, 2, v, NULL, &err);
     int rc = cli_outputs_end(outs, k, st, &err);
     free(col);
     free(back);

@@ -38,9 +38,11 @@ int cli_seams_report(const char *cmd, const mesh *m, const int *FT, scaf_seams u
 /* --png-seams: two panels of 512 x 512 (the surface seen from the front
  * and, turned half a turn about the vertical, from the back; app/
  * surface_render), faces in the colour of their chart (face_chart, the
- * atlas's colours), the seams s drawn dark, into output k of outs (k < 0:
+ * atlas's colours), the seams s drawn dark, and with atlas (the mesh with
+ * its UVs in the unit square, or NULL) a third panel: the atlas in the
+ * same colours (app/atlas_picture); into output k of outs (k < 0:
  * nothing). 0, or the exit status after printing why. */
 int cli_seams_png(cli_outputs *outs, int k, const mesh *m, const int *face_chart,
-                  const seam_edges *s);
+                  const seam_edges *s, const mesh *atlas);
 
 #endif

@@ -12,6 +12,7 @@ int cli_uv_job_start(cli_uv_job *j, const char *cmd, const char *in, const cli_u
 {
     j->cmd = cmd;
     j->in = in;
+    j->face_group = NULL;
     *m = (mesh){0};
     cli_outputs_init(&j->outs, cmd, in);
     cli_outputs_add_input(&j->outs, p->extra_input_option, p->extra_input);
@@ -33,7 +34,8 @@ int cli_uv_job_write_map(cli_uv_job *j, const mesh *o)
     err_clear(&err);
     const char *path = cli_outputs_begin(&j->outs, j->k.mesh, &err);
     scaf_status st = path
-        ? cli_write_uv(j->cmd, j->in, &j->rinfo, j->outs.out[j->k.mesh].path, path, o, &err)
+        ? cli_write_uv_grouped(j->cmd, j->in, &j->rinfo, j->outs.out[j->k.mesh].path, path, o,
+                               j->face_group, &err)
         : SCAF_ERR_IO;
     return cli_outputs_end(&j->outs, j->k.mesh, st, &err);
 }

@@ -20,8 +20,9 @@ typedef struct cli_uv_job {
     const char *cmd, *in;
     cli_outputs outs; /* commit or abort them at the end */
     cli_uv_outputs k;
-    int png_seams;        /* output index of --png-seams (-1: not asked for) */
-    mesh_read_info rinfo; /* what reading the input said */
+    int png_seams;         /* output index of --png-seams (-1: not asked for) */
+    mesh_read_info rinfo;  /* what reading the input said */
+    const int *face_group; /* nf: -o gets `g chart_N` groups (NULL: none) */
 } cli_uv_job;
 
 /* The paths asked for (NULL: not asked for); extra_input (with its option

@@ -74,12 +74,19 @@ static void usage(FILE *o)
             "                           else auto\n"
             "  --max-distortion E       split every chart whose settled E exceeds E in two\n"
             "                           along its normal cones, round by round (default 4.2\n"
-            "                           for automatic seams, off for input seams; 0: never)\n"
+            "                           for automatic seams, off for input seams; 0: never);\n"
+            "                           automatic seams: neighbours whose union settles\n"
+            "                           below 4 + 3/4 (E - 4) and fills its box as well are\n"
+            "                           then joined\n"
             "  --split-charts           split the chart filling least of its least-area box\n"
             "                           while below 0.45, one a round (default for automatic\n"
             "                           seams; --no-split-charts: never)\n"
+            "  --chart-groups           the output OBJ groups each chart's faces under\n"
+            "                           `g chart_N` (N as in --report's face_chart), in\n"
+            "                           place of the input's `g` lines\n"
             "  --png-seams FILE         the 3D surface from the front and from the back,\n"
-            "                           each chart in its --png colour, seams drawn dark\n"
+            "                           each chart in its --png colour, seams drawn dark,\n"
+            "                           beside the packed atlas in the same colours\n"
             "  --padding P              minimum distance between two charts, in units of the\n"
             "                           unit square (default K / R below: 4 / 1024 =\n"
             "                           0.00390625; --padding 0: charts only never overlap)\n"
@@ -181,6 +188,7 @@ static unsigned chart_colour(int f, const void *ctx)
 static int atlas_main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL, *report = NULL, *svg = NULL, *png_seams = NULL;
+    int chart_groups = 0;
     int quiet = 0, threads = 0; /* threads 0: the default (cli_threads_apply) */
     double resolution = 0.0, texels = -1.0, padding = -1.0;
     atlas_options opt = atlas_options_default();
@@ -244,6 +252,8 @@ static int atlas_main(int argc, char **argv)
             opt.split_charts = 1;
         } else if (!strcmp(a, "--no-split-charts")) {
             opt.split_charts = 0;
+        } else if (!strcmp(a, "--chart-groups")) {
+            chart_groups = 1;
         } else if (!strcmp(a, "--lambda-ratio")) {
             NEED_VALUE();
             if (!cli_parse_double(v, &opt.base.lambda_ratio)) BAD_VALUE();
@@ -375,6 +385,7 @@ static int atlas_main(int argc, char **argv)
     double e_matched = NAN;
     scaf_area_matched_energy(m.V, m.nv, m.F, m.nf, UV, a.nw, a.Fw, &e_matched);
     mesh o = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
+    if (chart_groups) job.face_group = a.chart;
     if ((rc = cli_uv_job_write_map(&job, &o)) != EXIT_OK) goto done;
     const char *path;
     if (svg) {
@@ -391,7 +402,8 @@ static int atlas_main(int argc, char **argv)
                              &png.opt)) != EXIT_OK)
         goto done;
     double total = timer_now() - t_start;
-    if ((rc = cli_seams_png(&job.outs, job.png_seams, &m, a.chart, &seams)) != EXIT_OK) goto done;
+    if ((rc = cli_seams_png(&job.outs, job.png_seams, &m, a.chart, &seams, &o)) != EXIT_OK)
+        goto done;
     if (report) {
         seam_report sr = {a.seams_used, a.seams_why, a.ncharts, a.nf, a.chart, &seams};
         atlas_report r = {in,  out, &a,        resolution, setup, total,

@@ -453,7 +453,7 @@ static int param_main(int argc, char **argv)
         }
     }
     if (job.png_seams >= 0 &&
-        (rc = cli_seams_png(&job.outs, job.png_seams, &m, fc, &seams)) != EXIT_OK)
+        (rc = cli_seams_png(&job.outs, job.png_seams, &m, fc, &seams, NULL)) != EXIT_OK)
         goto done;
     if (report) {
         seam_report sr = {scaf_param_seams_used(p), param_seams_why(p), nc, m.nf, fc, &seams};

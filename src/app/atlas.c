@@ -20,6 +20,7 @@
 #include "base/interrupt.h"
 #include "app/atlas_align.h"
 #include "app/atlas_pack.h"
+#include "app/atlas_warm.h"
 #include "app/param.h"
 #include "app/uv_fans.h"
 #include "geom/bijectivity.h"
@@ -47,6 +48,7 @@ atlas_options atlas_options_default(void)
     o.base.solver = SCAF_SOLVER_AUTO;
     o.padding = 0.0;
     o.init_input = 0;
+    o.init_warm = 0;
     o.settle_iterations = 200;
     o.settle_tolerance = 1e-4;
     o.compact_iterations = 150;
@@ -333,6 +335,7 @@ scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
     if (param_options_check(&o->base, msg, size) != SCAF_OK) return SCAF_ERR_USAGE;
     const char *bad = NULL;
     if (o->init_input != 0 && o->init_input != 1) bad = "init_input must be 0 or 1";
+    else if (o->init_warm != 0 && o->init_warm != 1) bad = "init_warm must be 0 or 1";
     else if (o->settle_iterations < 0) bad = "settle_iterations must be >= 0";
     else if (!finite_at_least(o->settle_tolerance, 0.0))
         bad = "settle_tolerance must be a finite number >= 0";
@@ -373,6 +376,40 @@ scaf_status atlas_options_check(const atlas_options *o, char *msg, size_t size)
     if (!bad) return SCAF_OK;
     if (msg && size) snprintf(msg, size, "%s", bad);
     return SCAF_ERR_USAGE;
+}
+
+/* Every chart from its shape in UV2 (by FT2's corners) where valid, the
+ * others from their Tutte shape in uv0, re-placed (app/atlas_warm); uv0
+ * takes the result only when the exact checker proves it bijective. */
+static scaf_status warm_start(atlas *a, const double *UV2, const int *FT2, double *uv0,
+                              scaf_error *err)
+{
+    size_t n2 = 2 * (size_t)a->nw;
+    double *shape = malloc(sizeof(double) * (n2 ? n2 : 1));
+    double *out = malloc(sizeof(double) * (n2 ? n2 : 1));
+    scaf_status st = SCAF_OK;
+    if (!shape || !out) {
+        st = err_nomem(err, "atlas");
+        goto out;
+    }
+    for (int f = 0; f < a->nf; f++)
+        for (int j = 0; j < 3; j++)
+            memcpy(shape + 2 * (size_t)a->Fw[3 * f + j], UV2 + 2 * (size_t)FT2[3 * f + j],
+                   sizeof(double) * 2);
+    int warm = 0;
+    st = atlas_warm_layout(a->nw, a->nf, a->Fw, a->wchart, a->ncharts, shape, uv0,
+                           a->opt.padding * PAD_MARGIN, out, &warm, err);
+    if (st != SCAF_OK || warm == 0) goto out;
+    bij_report r;
+    st = bij_check(a->nw, out, a->nf, a->Fw, a->chart, NULL, &r, err);
+    if (st == SCAF_OK && r.bijective) {
+        memcpy(uv0, out, sizeof(double) * n2);
+        a->warm_charts = warm;
+    }
+out:
+    free(shape);
+    free(out);
+    return st;
 }
 
 scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_error *err)
@@ -568,6 +605,12 @@ scaf_status atlas_init(atlas *a, const mesh *m, const atlas_options *o, scaf_err
                          bad);
             goto done;
         }
+    }
+
+    /* ---- start from a layout settled before: only when proved bijective -- */
+    if (!a->opt.init_input && (a->opt.init_warm || plan.uv_start) && UV2) {
+        st = warm_start(a, UV2, FT2, uv0, err);
+        if (st != SCAF_OK) goto done;
     }
 
     /* ---- the padding must hold at the start ------------------------------ */

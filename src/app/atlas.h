@@ -76,6 +76,13 @@ typedef struct atlas_options {
     double padding;              /* minimum gap between charts in the unit
                                     square (0: charts only never overlap) */
     int init_input;              /* 1: start from the input UVs (0) */
+    int init_warm;               /* 1: start every chart from the input UVs
+                                    as its shape when that is valid (a layout
+                                    settled before, app/atlas_warm), charts
+                                    re-placed on shelves; the others from
+                                    Tutte; the whole start from Tutte unless
+                                    the exact checker proves it bijective (0;
+                                    chart splitting sets it between rounds) */
     int settle_iterations;       /* cap of phase 1 (200) */
     double settle_tolerance;     /* phase 1 ends when the estimated
                                     relative distance to the minimum is
@@ -177,6 +184,9 @@ typedef struct atlas {
                                    (SCAF_STOP_NONE: not run) */
     scaf_seams seams_used;                      /* the seam source (app/seam_source) */
     int seam_segments;                          /* charts of the segmentation (automatic) */
+    int warm_charts;                            /* charts started from their previous
+                                                   flattening (init_warm, or after
+                                                   chart splitting) */
     char seams_why[200];                        /* why that source, for the terminal */
 } atlas;
 

@@ -26,6 +26,7 @@ atlas_charts_options atlas_charts_options_default(void)
     o.max_rounds = 3;
     o.max_splits = 0;
     o.slit_cones = 0;
+    o.merge = 0;
     return o;
 }
 
@@ -338,7 +339,30 @@ static int slit_chart(const mesh *m, const vt_graph *g, const int *label, int c,
     return rc;
 }
 
-/* New vt indices: one per (old vt, label) pair; UVs copied (placeholders). */
+/* m's vt indices and UVs become the settled atlas's working vertices and
+ * layout (pinch points split, as the atlas splits them): the start of the
+ * next round and of the final atlas. */
+static int take_layout(mesh *m, const atlas *a)
+{
+    int *FT = malloc(sizeof(int) * 3 * (size_t)a->nf);
+    double *UV = malloc(sizeof(double) * 2 * (size_t)(a->nw > 0 ? a->nw : 1));
+    if (!FT || !UV) {
+        free(FT);
+        free(UV);
+        return 0;
+    }
+    memcpy(FT, a->Fw, sizeof(int) * 3 * (size_t)a->nf);
+    memcpy(UV, a->loop.uv, sizeof(double) * 2 * (size_t)a->nw);
+    free(m->FT);
+    free(m->UV);
+    m->FT = FT;
+    m->UV = UV;
+    m->nuv = a->nw;
+    return 1;
+}
+
+/* New vt indices: one per (old vt, label) pair; UVs copied, so both sides
+ * of a new seam keep their place in the layout. */
 static int relabel_uvs(mesh *m, const int *label)
 {
     int *first = malloc(sizeof(int) * (size_t)m->nuv);
@@ -387,6 +411,212 @@ out:
     return ok;
 }
 
+/* ---- merges: two neighbours whose union settles within the bound ---- */
+
+/* A joined chart must settle below this (and its parts' mean E must
+ * predict so): a quarter of the bound's room above an isometry is left
+ * for the compaction, which raises E by up to 5% after settling. */
+#define MERGE_LIMIT(bound) (4.0 + 0.75 * ((bound)-4.0))
+/* Pairs tried: their area-weighted mean E below this (a union settles
+ * above its parts' mean: the common seam no longer relieves it). */
+#define MERGE_PREDICT(bound) (4.0 + 0.5 * ((bound)-4.0))
+
+static int uf_find(int *parent, int x)
+{
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+}
+
+typedef struct merge_pair {
+    int a, b;       /* charts, a < b */
+    double shared;  /* 3D length of their common seam */
+    double predict; /* area-weighted mean of their E */
+} merge_pair;
+
+static int merge_pair_cmp(const void *p, const void *q)
+{
+    const merge_pair *x = p, *y = q;
+    if (x->predict != y->predict) return x->predict < y->predict ? -1 : 1;
+    if (x->shared != y->shared) return x->shared > y->shared ? -1 : 1;
+    if (x->a != y->a) return x->a - y->a;
+    return x->b - y->b;
+}
+
+/* Join the chart pairs chosen in partner[] (partner[c]: the chart c joins,
+ * or -1): the vt on both sides of their common seam become one, labels of
+ * b become a's, and the joined charts' UVs NaN (their two shapes do not
+ * fit together: they start from Tutte). A pair whose union is not a disk
+ * (they meet along more than one stretch) is not joined: partner reset.
+ * Returns 1, or 0 out of memory. */
+static int join_pairs(mesh *m, int *label, int *partner, scaf_error *err)
+{
+    int nf = m->nf, ok = 0;
+    int *order = malloc(sizeof(int) * 3 * (size_t)nf), count = 0;
+    int *parent = malloc(sizeof(int) * (size_t)(m->nuv > 0 ? m->nuv : 1));
+    int *newid = malloc(sizeof(int) * (size_t)(m->nuv > 0 ? m->nuv : 1));
+    int *FT = malloc(sizeof(int) * 3 * (size_t)nf);
+    int *trial = malloc(sizeof(int) * (size_t)(nf > 0 ? nf : 1));
+    double *UV = NULL;
+    mesh_charts ch;
+    memset(&ch, 0, sizeof ch);
+    if (!order || !parent || !newid || !FT || !trial) goto out;
+    if (half_edges_sort(m->nv, nf, m->F, NULL, order, &count, err) != SCAF_OK) goto out;
+    for (int t = 0; t < m->nuv; t++) parent[t] = t;
+    for (int i = 0; i < count;) {
+        int j = i + 1;
+        while (j < count && half_edges_same_edge(m->F, order[i], order[j])) j++;
+        if (j - i == 2) {
+            int g = order[i], h = order[i + 1], la = label[g / 3], lb = label[h / 3];
+            if (la != lb && partner[la] == lb) {
+                /* g: u -> v in one face, h: v -> u in the other */
+                int gu = g, gv = half_edge_next(g), hv = h, hu = half_edge_next(h);
+                int x = uf_find(parent, m->FT[gu]), y = uf_find(parent, m->FT[hu]);
+                if (x != y) parent[x < y ? y : x] = x < y ? x : y;
+                x = uf_find(parent, m->FT[gv]);
+                y = uf_find(parent, m->FT[hv]);
+                if (x != y) parent[x < y ? y : x] = x < y ? x : y;
+            }
+        }
+        i = j;
+    }
+    int n = 0;
+    for (int t = 0; t < m->nuv; t++) newid[t] = -1;
+    for (int t = 0; t < m->nuv; t++) {
+        int r = uf_find(parent, t);
+        if (newid[r] < 0) newid[r] = n++;
+        newid[t] = newid[r];
+    }
+    for (int h = 0; h < 3 * nf; h++) FT[h] = newid[m->FT[h]];
+    for (int f = 0; f < nf; f++) {
+        int l = label[f];
+        trial[f] = partner[l] >= 0 && partner[l] < l ? partner[l] : l;
+    }
+    /* every joined chart must be a disk: else leave the pair apart */
+    mesh tm = *m;
+    tm.FT = FT;
+    tm.nuv = n;
+    if (mesh_charts_compute(&tm, &ch, err) != SCAF_OK) goto out;
+    int undo = 0;
+    for (int f = 0; f < nf; f++) {
+        int l = label[f];
+        if (partner[l] < 0 || partner[l] < l) continue;
+        int c = ch.cx.face_group[f];
+        if (mesh_chart_classify(&ch, c) != MESH_CHART_DISK) {
+            partner[partner[l]] = -1;
+            partner[l] = -1;
+            undo = 1;
+        }
+    }
+    if (undo) {
+        /* again with the pairs left */
+        mesh_charts_free(&ch);
+        free(order);
+        free(parent);
+        free(newid);
+        free(FT);
+        free(trial);
+        return join_pairs(m, label, partner, err);
+    }
+    UV = malloc(sizeof(double) * 2 * (size_t)(n > 0 ? n : 1));
+    if (!UV) goto out;
+    for (int t = 0; t < m->nuv; t++) {
+        UV[2 * newid[t]] = m->UV[2 * t];
+        UV[2 * newid[t] + 1] = m->UV[2 * t + 1];
+    }
+    for (int h = 0; h < 3 * nf; h++)
+        if (partner[label[h / 3]] >= 0) UV[2 * FT[h]] = UV[2 * FT[h] + 1] = NAN;
+    memcpy(label, trial, sizeof(int) * (size_t)nf);
+    free(m->FT);
+    free(m->UV);
+    m->FT = FT;
+    m->UV = UV;
+    m->nuv = n;
+    FT = NULL;
+    UV = NULL;
+    ok = 1;
+out:
+    mesh_charts_free(&ch);
+    free(order);
+    free(parent);
+    free(newid);
+    free(FT);
+    free(trial);
+    free(UV);
+    return ok;
+}
+
+/* The pairs to try: neighbours (a common seam) both within the bound
+ * whose area-weighted mean E is below 4 + 3/4 (bound - 4), lowest first,
+ * each chart in one pair at most: partner[] (nc, -1: none). Returns the
+ * number of pairs, -1 out of memory. */
+static int choose_pairs(const mesh *m, const int *label, int nc, const double *E,
+                        const double *farea, double bound, int *partner, scaf_error *err)
+{
+    int nf = m->nf, np = 0, cap = 0, count = 0;
+    int *order = malloc(sizeof(int) * 3 * (size_t)nf);
+    double *area = calloc((size_t)(nc > 0 ? nc : 1), sizeof(double));
+    merge_pair *pairs = NULL;
+    if (!order || !area || half_edges_sort(m->nv, nf, m->F, NULL, order, &count, err) != SCAF_OK) {
+        free(order);
+        free(area);
+        return -1;
+    }
+    for (int f = 0; f < nf; f++) area[label[f]] += farea[f];
+    for (int i = 0; i < count;) {
+        int j = i + 1;
+        while (j < count && half_edges_same_edge(m->F, order[i], order[j])) j++;
+        if (j - i == 2) {
+            int a = label[order[i] / 3], b = label[order[i + 1] / 3];
+            if (a > b) {
+                int t = a;
+                a = b;
+                b = t;
+            }
+            if (a != b && E[a] <= bound && E[b] <= bound) {
+                int k = 0;
+                while (k < np && (pairs[k].a != a || pairs[k].b != b)) k++;
+                if (k == np) {
+                    if (np == cap) {
+                        cap = cap ? 2 * cap : 64;
+                        merge_pair *g = realloc(pairs, sizeof *pairs * (size_t)cap);
+                        if (!g) {
+                            free(pairs);
+                            free(order);
+                            free(area);
+                            return -1;
+                        }
+                        pairs = g;
+                    }
+                    double w = area[a] + area[b];
+                    pairs[np++] = (merge_pair){
+                        a, b, 0.0, w > 0 ? (area[a] * E[a] + area[b] * E[b]) / w : E[a]};
+                }
+                const double *p = m->V + 3 * (size_t)m->F[order[i]],
+                             *q = m->V + 3 * (size_t)m->F[half_edge_next(order[i])];
+                pairs[k].shared +=
+                    sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                         (p[2] - q[2]) * (p[2] - q[2]));
+            }
+        }
+        i = j;
+    }
+    free(order);
+    free(area);
+    if (np > 0) qsort(pairs, (size_t)np, sizeof *pairs, merge_pair_cmp);
+    for (int c = 0; c < nc; c++) partner[c] = -1;
+    int chosen = 0;
+    double limit = MERGE_PREDICT(bound);
+    for (int k = 0; k < np; k++) {
+        const merge_pair *q = pairs + k;
+        if (q->predict > limit || partner[q->a] >= 0 || partner[q->b] >= 0) continue;
+        partner[q->a] = q->b;
+        partner[q->b] = q->a;
+        chosen++;
+    }
+    free(pairs);
+    return chosen;
+}
+
 scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_charts_options *o,
                                 atlas_charts_info *info, scaf_error *err)
 {
@@ -413,8 +643,15 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
     opt.init_input = 0;
     if (opt.settle_iterations > ROUND_ITERATIONS) opt.settle_iterations = ROUND_ITERATIONS;
     if (opt.settle_tolerance < ROUND_TOLERANCE) opt.settle_tolerance = ROUND_TOLERANCE;
-    for (int round = 0; round < o->max_rounds; round++) {
+    int warm = 0; /* m's UVs are the last round's layout, its new seams opened */
+    /* merges after the splitting rounds: one round tries them, the next
+     * keeps those that settled within the bounds */
+    int merging = 0, nmerged = 0;
+    int *pre = NULL, *rep = NULL;
+    double *fill_parts = NULL; /* per trial pair: its parts' area-weighted fill */
+    for (int round = 0; round < o->max_rounds + (o->merge ? 2 : 0); round++) {
         atlas a;
+        opt.init_warm = warm;
         st = atlas_init(&a, m, &opt, err);
         if (st != SCAF_OK) break;
         st = atlas_run(&a, NULL, NULL, err);
@@ -423,6 +660,7 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             break;
         }
         info->rounds++;
+        info->warm_charts = a.warm_charts;
         int nc = a.ncharts;
         double *E = malloc(sizeof(double) * (size_t)nc);
         double *fill = malloc(sizeof(double) * (size_t)nc);
@@ -452,6 +690,7 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
         /* the atlas's charts are the mesh's UV charts (pinched vt split
          * apart keep their faces): label faces by them */
         for (int f = 0; f < m->nf; f++) label[f] = a.chart[f];
+        if (ok) ok = take_layout(m, &a);
         atlas_free(&a);
         free(UV);
         if (!ok) {
@@ -462,6 +701,31 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             free(farea);
             free(ex);
             st = err_nomem(err, "chart refinement");
+            break;
+        }
+        if (merging) {
+            /* the trial settled: a joined chart above a bound parts again
+             * along its old seam (both parts keep the joined shape) */
+            int undone = 0;
+            for (int k = 0; k < nmerged; k++) {
+                int c = label[rep[2 * k]];
+                if (!(E[c] > MERGE_LIMIT(o->max_distortion)) &&
+                    !(o->min_fill > 0 && fill[c] < o->min_fill) && !(fill[c] < fill_parts[k])) {
+                    info->merges++;
+                    continue;
+                }
+                for (int f = 0; f < m->nf; f++)
+                    if (label[f] == c && pre[f] == pre[rep[2 * k + 1]]) label[f] = nc + undone;
+                undone++;
+            }
+            info->charts_after = nc + undone;
+            if (undone > 0 && !relabel_uvs(m, label)) st = err_nomem(err, "chart refinement");
+            free(E);
+            free(fill);
+            free(cand);
+            free(fe);
+            free(farea);
+            free(ex);
             break;
         }
         /* every chart above the distortion bound; of those below the fill
@@ -479,6 +743,59 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             cand[ncand++] = (split_candidate){emptiest, 1, o->min_fill - fill[emptiest]};
         qsort(cand, (size_t)ncand, sizeof *cand, candidate_cmp);
         if (o->max_splits > 0 && ncand > o->max_splits) ncand = o->max_splits;
+        if (round >= o->max_rounds) ncand = 0; /* the rounds for splits are spent */
+        if (ncand == 0) {
+            /* nothing to split: try merges once, or stop */
+            int *partner = o->merge ? malloc(sizeof(int) * (size_t)nc) : NULL;
+            int np =
+                partner ? choose_pairs(m, label, nc, E, farea, o->max_distortion, partner, err) : 0;
+            if (o->merge && (!partner || np < 0)) st = err_nomem(err, "chart refinement");
+            if (np > 0) {
+                pre = malloc(sizeof(int) * (size_t)m->nf);
+                rep = malloc(sizeof(int) * 2 * (size_t)np);
+                fill_parts = malloc(sizeof(double) * (size_t)np);
+                if (!pre || !rep || !fill_parts) st = err_nomem(err, "chart refinement");
+                else {
+                    memcpy(pre, label, sizeof(int) * (size_t)m->nf);
+                    if (!join_pairs(m, label, partner, err))
+                        st = err_nomem(err, "chart refinement");
+                }
+                /* a face of each joined chart and of its second part */
+                nmerged = 0;
+                for (int c = 0; c < nc && st == SCAF_OK; c++) {
+                    if (partner[c] < 0 || partner[c] < c) continue;
+                    int fa = -1, fb = -1;
+                    for (int f = 0; f < m->nf && (fa < 0 || fb < 0); f++) {
+                        if (pre[f] == c && fa < 0) fa = f;
+                        if (pre[f] == partner[c] && fb < 0) fb = f;
+                    }
+                    double wa = 0.0, wb = 0.0;
+                    for (int f = 0; f < m->nf; f++) {
+                        if (pre[f] == c) wa += farea[f];
+                        if (pre[f] == partner[c]) wb += farea[f];
+                    }
+                    fill_parts[nmerged] =
+                        wa + wb > 0.0 ? (wa * fill[c] + wb * fill[partner[c]]) / (wa + wb) : 0.0;
+                    rep[2 * nmerged] = fa;
+                    rep[2 * nmerged + 1] = fb;
+                    nmerged++;
+                }
+                if (st == SCAF_OK && nmerged > 0) {
+                    if (!relabel_uvs(m, label)) st = err_nomem(err, "chart refinement");
+                    merging = 1;
+                    warm = 1;
+                }
+            }
+            free(partner);
+            free(E);
+            free(fill);
+            free(cand);
+            free(fe);
+            free(farea);
+            free(ex);
+            if (st != SCAF_OK || !merging) break;
+            continue;
+        }
         /* with slit_cones a distorted chart is cut open from its boundary
          * to its worst interior vertex; otherwise (and when it has no
          * interior vertex with excess) it is split in two */
@@ -546,6 +863,9 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
         free(fill);
         free(cand);
         if (st != SCAF_OK || split + slits == 0) break;
+        /* a slit leaves its two sides at one place: that chart cannot
+         * start from its layout, and the others need not */
+        warm = slits == 0;
         if (split > 0 && !relabel_uvs(m, label)) {
             st = err_nomem(err, "chart refinement");
             break;
@@ -553,6 +873,9 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
         info->charts_after = nc + split;
     }
     free(label);
+    free(pre);
+    free(rep);
+    free(fill_parts);
     return st;
 }
 
@@ -565,6 +888,7 @@ scaf_status atlas_charts_apply(mesh *planned, const atlas_options *opt, seam_pla
                                                  : opt->max_distortion;
     int split = opt->split_charts < 0 ? automatic : opt->split_charts;
     o.min_fill = split ? ATLAS_CHARTS_MIN_FILL : 0.0;
+    o.merge = automatic && o.max_distortion > 0.0; /* never join the input's charts */
     if ((o.max_distortion <= 0.0 && o.min_fill <= 0.0) || opt->init_input || !mesh_has_uv(planned))
         return SCAF_OK;
     mesh work = *planned;
@@ -584,17 +908,19 @@ scaf_status atlas_charts_apply(mesh *planned, const atlas_options *opt, seam_pla
     inner.split_charts = 0;
     atlas_charts_info info;
     scaf_status st = atlas_charts_refine(&work, &inner, &o, &info, err);
-    if (st != SCAF_OK || work.nuv == planned->nuv) {
+    if (st != SCAF_OK || info.rounds == 0) {
         free(work.FT);
         free(work.UV);
         return st;
     }
+    /* the charts and their last layout: the atlas starts from it */
     free(plan->FT);
     free(plan->UV);
     plan->FT = work.FT;
     plan->UV = work.UV;
     plan->nuv = work.nuv;
     plan->changed = 1;
+    plan->uv_start = 1;
     planned->FT = work.FT;
     planned->UV = work.UV;
     planned->nuv = work.nuv;

@@ -16,10 +16,19 @@
  * first phase, capped, without packing), measure every chart, split the
  * worst offenders, until none is left or max_rounds.
  *
+ * Only the first round starts from Tutte: a later round starts from the
+ * layout the previous one settled, every chart (both halves of a split
+ * one too) keeping its flattened shape, re-placed apart (app/atlas_warm),
+ * so it settles in a few iterations. A slit chart's two sides coincide,
+ * so a round after slits starts from Tutte.
+ *
  * Works on the mesh's UV charts: m must have FT (vt seams) whose charts
  * are disks (with holes); a part of a disk is planar, so every chart
- * stays a disk with holes. The new seams split vt indices; the UV
- * coordinates are placeholders (the caller starts from Tutte).
+ * stays a disk with holes. On return m's vt indices are those of the last
+ * settled atlas (one per working vertex: pinch points split, indices
+ * renumbered, the seams the same up to the new cuts) and its UVs that
+ * layout (in the atlas's units), both halves of a new seam at the same
+ * place: the warm start of the final atlas (seam_plan.uv_start).
  * Fails with the atlas's errors (SCAF_ERR_MESH naming the chart,
  * SCAF_ERR_NUMERIC, SCAF_ERR_NOMEM) or SCAF_ERR_USAGE (no vt); on failure
  * m keeps the charts of the last round that completed.
@@ -47,6 +56,14 @@ typedef struct atlas_charts_options {
                               worst vertex (largest area-weighted excess of E over 4)
                               instead of splitting it (0; measured: splitting gives
                               the lower E, spot 4.23 against 4.30) */
+    int merge;             /* 1: after the splitting rounds, join pairs of neighbours
+                              (a common seam, their union a disk) within the bound
+                              whose area-weighted mean E is below 4 + 1/2 (bound - 4);
+                              one round settles them, the next parts again every
+                              joined chart settling above 4 + 3/4 (bound - 4), or
+                              filling its least-area box less than its parts did
+                              (area-weighted) or less than min_fill (0; on for
+                              automatic seams) */
 } atlas_charts_options;
 
 typedef struct atlas_charts_info {
@@ -54,6 +71,9 @@ typedef struct atlas_charts_info {
     int rounds;                         /* rounds run */
     int distortion_splits, fill_splits; /* charts split for each reason */
     int distortion_slits;               /* cuts from a boundary to a cone */
+    int merges;                         /* pairs of charts joined for good */
+    int warm_charts;                    /* charts of the last round started from
+                                           the previous round's layout */
 } atlas_charts_info;
 
 atlas_charts_options atlas_charts_options_default(void);
@@ -66,8 +86,9 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
 /* The hook of atlas_init: with the atlas options' max_distortion and
  * split_charts (defaults: both for automatic seams, neither for input
  * seams, nothing with init_input), refine the charts of the planned mesh
- * (the input with the seam plan's UV topology) and hand the new seams to
- * the plan (which then owns them) and to planned. */
+ * (the input with the seam plan's UV topology) and hand the new seams and
+ * the last settled layout to the plan (which then owns them, uv_start
+ * set: the atlas starts from that layout) and to planned. */
 scaf_status atlas_charts_apply(mesh *planned, const atlas_options *opt, seam_plan *plan,
                                scaf_error *err);
 

@@ -31,6 +31,8 @@ typedef struct seam_plan {
                    one (extend), else 0 */
     int *FT;          /* nf by 3 */
     int segments;     /* charts of the segmentation (atlas, automatic) */
+    int uv_start;     /* 1: UV is a layout settled by chart splitting
+                         (app/atlas_charts), a warm start for the atlas */
     int cut_edges;    /* interior edges cut open by mesh/cut_graph */
     int handle_loops; /* loops cut for handles */
     int cones;        /* cone vertices of cut trees on closed pieces */

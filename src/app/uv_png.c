@@ -50,6 +50,21 @@ scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, co
                          const unsigned *colour, int nv, const double *V, const int *F3,
                          const uv_png_options *o, scaf_error *err)
 {
+    uv_raster r;
+    scaf_status st = uv_png_render(path, nuv, uv, nf, F, colour, nv, V, F3, o, &r, err);
+    if (st != SCAF_OK) return st;
+    st = png_write_rgba(path, r.width, r.height, r.rgba, err);
+    uv_raster_free(&r);
+    return st;
+}
+
+scaf_status uv_png_render(const char *name, int nuv, const double *uv, int nf, const int *F,
+                          const unsigned *colour, int nv, const double *V, const int *F3,
+                          const uv_png_options *o, uv_raster *r, scaf_error *err)
+{
+    const char *path = name;
+    r->rgba = NULL;
+    r->width = r->height = 0;
     uv_png_options d = uv_png_options_default();
     if (!o) o = &d;
     if (o->size < UV_PNG_MIN_SIZE || o->size > UV_PNG_MAX_SIZE)
@@ -107,21 +122,18 @@ scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, co
             m.checker = diag / o->checker;
         }
     }
-    uv_raster r;
-    scaf_status st = uv_raster_new(&r, W, H, err);
+    scaf_status st = uv_raster_new(r, W, H, err);
     if (st != SCAF_OK) {
         free(Vs);
         err_prefix(err, "%s", path);
         return st;
     }
-    uv_raster_fill(&r, &fr, &m);
+    uv_raster_fill(r, &fr, &m);
     free(Vs);
-    if (o->outline && (st = outline(&r, &fr, uv, nf, F, err)) != SCAF_OK) {
+    if (o->outline && (st = outline(r, &fr, uv, nf, F, err)) != SCAF_OK) {
         err_prefix(err, "%s", path);
-        uv_raster_free(&r);
+        uv_raster_free(r);
         return st;
     }
-    st = png_write_rgba(path, W, H, r.rgba, err);
-    uv_raster_free(&r);
-    return st;
+    return SCAF_OK;
 }

@@ -12,6 +12,7 @@
 #ifndef SCAF_APP_UV_PNG_H
 #define SCAF_APP_UV_PNG_H
 
+#include "app/uv_raster.h"
 #include "base/error.h"
 
 #define UV_PNG_MIN_SIZE 16
@@ -38,5 +39,12 @@ uv_png_options uv_png_options_default(void);
 scaf_status uv_png_write(const char *path, int nuv, const double *uv, int nf, const int *F,
                          const unsigned *colour, int nv, const double *V, const int *F3,
                          const uv_png_options *o, scaf_error *err);
+
+/* The same picture into *r (the caller frees it with uv_raster_free)
+ * instead of a file, for pictures made of several panels; name (the
+ * file's) only prefixes messages. Same errors but SCAF_ERR_IO. */
+scaf_status uv_png_render(const char *name, int nuv, const double *uv, int nf, const int *F,
+                          const unsigned *colour, int nv, const double *V, const int *F3,
+                          const uv_png_options *o, uv_raster *r, scaf_error *err);
 
 #endif /* SCAF_APP_UV_PNG_H */

@@ -92,5 +92,10 @@ scaf_status mesh_write_obj(const char *path, const mesh *m, scaf_error *err);
  * convention Blender and MeshLab read (mesh/write_ply). Atomic as
  * mesh_write_obj. */
 scaf_status mesh_write_ply(const char *path, const mesh *m, scaf_error *err);
+/* The same with face_group (nf ids >= 0, or NULL: none): `g chart_N`
+ * before each run of faces of group N (OBJ groups; readers that ignore
+ * groups read the same mesh). */
+scaf_status mesh_write_obj_grouped(const char *path, const mesh *m, const int *face_group,
+                                   scaf_error *err);
 
 #endif /* SCAF_MESH_MESH_IO_H */

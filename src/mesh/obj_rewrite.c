@@ -30,6 +30,7 @@ typedef struct rewriter {
     long long nv_seen; /* `v` lines so far (relative indices) */
     int face;          /* next face of m */
     int vt_written;
+    const int *group; /* nf face groups written as `g chart_N`, or NULL */
 } rewriter;
 
 /* Parse the vertex index of token [s, e) (up to the first '/'). */
@@ -135,6 +136,10 @@ static scaf_status rewrite_face(rewriter *R, long line, const char *s, const cha
             R->line = l;
             R->linecap = need;
         }
+        const int *g = R->group;
+        if (g && (fi == 0 || g[fi] != g[fi - 1]) &&
+            fprintf(R->f, "g chart_%d%s", g[fi], R->eol) < 0)
+            return err_set(err, SCAF_ERR_IO, "write failed");
         char *o = R->line;
         *o++ = 'f';
         for (int j = 0; j < 3; j++) {
@@ -181,6 +186,8 @@ static scaf_status rewrite(rewriter *R, const char *data, size_t size, scaf_erro
         size_t kn = (size_t)(ke - k);
         if (kn == 2 && k[0] == 'v' && k[1] == 't') {
             /* old texture coordinate: dropped */
+        } else if (kn == 1 && k[0] == 'g' && R->group) {
+            /* the input's groups give way to the charts' */
         } else if (kn == 1 && k[0] == 'f') {
             if (!R->vt_written && write_vt_block(R) != 0)
                 return err_set(err, SCAF_ERR_IO, "write failed");
@@ -202,7 +209,8 @@ static scaf_status rewrite(rewriter *R, const char *data, size_t size, scaf_erro
 
 /* Both entry points: checks, then the text rewritten into out_path. */
 static scaf_status rewrite_text(const char *name, const char *data, size_t size,
-                                const char *out_path, const mesh *m, scaf_error *err)
+                                const char *out_path, const mesh *m, const int *group,
+                                scaf_error *err)
 {
     atomic_file af;
     scaf_status st = atomic_open(&af, out_path, err);
@@ -210,7 +218,7 @@ static scaf_status rewrite_text(const char *name, const char *data, size_t size,
     static const size_t bufsize = 1 << 20;
     char *buf = malloc(bufsize);
     if (buf) setvbuf(af.f, buf, _IOFBF, bufsize);
-    rewriter R = {.name = name, .m = m, .f = af.f};
+    rewriter R = {.name = name, .m = m, .f = af.f, .group = group};
     st = rewrite(&R, data, size, err);
     if (st == SCAF_ERR_IO) err_set(err, SCAF_ERR_IO, "%s: cannot write (disk full?)", out_path);
     if (st == SCAF_OK) st = atomic_commit(&af, err);
@@ -235,6 +243,12 @@ static scaf_status check_args(const char *out_path, const mesh *m, scaf_error *e
 scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh *m,
                            scaf_error *err)
 {
+    return obj_rewrite_uv_grouped(in_path, out_path, m, NULL, err);
+}
+
+scaf_status obj_rewrite_uv_grouped(const char *in_path, const char *out_path, const mesh *m,
+                                   const int *face_group, scaf_error *err)
+{
     if (!in_path) return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv: missing path, faces or UVs");
     scaf_status st = check_args(out_path, m, err);
     if (st != SCAF_OK) return st;
@@ -242,7 +256,7 @@ scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh
     size_t size = 0;
     st = mesh_load_file(in_path, &data, &size, err);
     if (st != SCAF_OK) return st;
-    st = rewrite_text(in_path, data, size, out_path, m, err);
+    st = rewrite_text(in_path, data, size, out_path, m, face_group, err);
     free(data);
     return st;
 }
@@ -250,9 +264,16 @@ scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh
 scaf_status obj_rewrite_uv_text(const char *name, const char *data, size_t size,
                                 const char *out_path, const mesh *m, scaf_error *err)
 {
+    return obj_rewrite_uv_text_grouped(name, data, size, out_path, m, NULL, err);
+}
+
+scaf_status obj_rewrite_uv_text_grouped(const char *name, const char *data, size_t size,
+                                        const char *out_path, const mesh *m,
+                                        const int *face_group, scaf_error *err)
+{
     if (!name || (!data && size))
         return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv_text: no text");
     scaf_status st = check_args(out_path, m, err);
     if (st != SCAF_OK) return st;
-    return rewrite_text(name, data ? data : "", size, out_path, m, err);
+    return rewrite_text(name, data ? data : "", size, out_path, m, face_group, err);
 }

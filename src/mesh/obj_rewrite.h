@@ -37,10 +37,20 @@
 scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh *m,
                            scaf_error *err);
 
+/* The same with face_group (nf ids >= 0, or NULL): the input's `g` lines
+ * are dropped and `g chart_N` is written before the first triangle and
+ * before every triangle whose group N differs from the previous one's. */
+scaf_status obj_rewrite_uv_grouped(const char *in_path, const char *out_path, const mesh *m,
+                                   const int *face_group, scaf_error *err);
+
 /* The same with the input's text already in memory (size bytes of data,
  * decompressed; name for messages): for a caller that read the file
  * itself, e.g. through a descriptor it kept open. */
 scaf_status obj_rewrite_uv_text(const char *name, const char *data, size_t size,
                                 const char *out_path, const mesh *m, scaf_error *err);
+/* ... with face_group as in obj_rewrite_uv_grouped (e.g. standard input). */
+scaf_status obj_rewrite_uv_text_grouped(const char *name, const char *data, size_t size,
+                                        const char *out_path, const mesh *m,
+                                        const int *face_group, scaf_error *err);
 
 #endif /* SCAF_MESH_OBJ_REWRITE_H */

@@ -2,7 +2,9 @@
  *
  * Output: one comment line naming scaf, `v x y z` for every vertex in
  * order, `vt u v` for every UV when the mesh has them, then `f a/t b/t c/t`
- * (or `f a b c`), 1-based. Each number is printed with the fewest of 15,
+ * (or `f a b c`), 1-based; with face groups (mesh_write_obj_grouped), a
+ * line `g chart_N` before the first face and before every face whose
+ * group N differs from the previous face's. Each number is printed with the fewest of 15,
  * 16 or 17 significant digits that reads back to the same double, so a
  * read-write-read cycle is bitwise exact and short inputs stay short.
  *
@@ -46,7 +48,7 @@ static scaf_status check_mesh(const mesh *m, scaf_error *err)
     return SCAF_OK;
 }
 
-static int write_body(FILE *f, const mesh *m)
+static int write_body(FILE *f, const mesh *m, const int *group)
 {
     char a[40], b[40], c[40];
     int digits = 15; /* what the last number needed (text_scan.h) */
@@ -67,6 +69,9 @@ static int write_body(FILE *f, const mesh *m)
     for (int i = 0; i < m->nf; i++) {
         const int *t = m->F + 3 * (size_t)i;
         int r;
+        if (group && (i == 0 || group[i] != group[i - 1]) &&
+            fprintf(f, "g chart_%d\n", group[i]) < 0)
+            return -1;
         if (uv) {
             const int *u = m->FT + 3 * (size_t)i;
             r = fprintf(f, "f %d/%d %d/%d %d/%d\n", t[0] + 1, u[0] + 1, t[1] + 1, u[1] + 1,
@@ -81,6 +86,12 @@ static int write_body(FILE *f, const mesh *m)
 
 scaf_status mesh_write_obj(const char *path, const mesh *m, scaf_error *err)
 {
+    return mesh_write_obj_grouped(path, m, NULL, err);
+}
+
+scaf_status mesh_write_obj_grouped(const char *path, const mesh *m, const int *face_group,
+                                   scaf_error *err)
+{
     if (!path || !*path || !m)
         return err_set(err, SCAF_ERR_USAGE, "mesh_write_obj: no path or mesh");
     scaf_status st = check_mesh(m, err);
@@ -94,7 +105,7 @@ scaf_status mesh_write_obj(const char *path, const mesh *m, scaf_error *err)
     static const size_t bufsize = 1 << 20;
     char *buf = malloc(bufsize);
     if (buf) setvbuf(af.f, buf, _IOFBF, bufsize);
-    if (write_body(af.f, m) != 0) {
+    if (write_body(af.f, m, face_group) != 0) {
         atomic_abort(&af);
         free(buf);
         return err_set(err, SCAF_ERR_IO, "%s: cannot write (disk full?)", path);
