@@ -13,6 +13,7 @@ PACKAGES=(
   libcmocka-dev                                     # tests
   libgmp-dev                                        # tests: exact rational reference
   libtet1.5-dev g++                                 # TetGen (AGPL-3.0+): the initial 3D scaffold
+  libtinygltf-dev                                   # glTF 2.0 in and out (src/mesh/gltf_io.cpp; MIT)
   tetgen                                            # tests/checks: `tetgen -d`, an independent self-intersection check
   valgrind                                          # bench: instruction counts
   python3 python3-numpy                             # the Python package and its tests

@@ -4,10 +4,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
+#include "cli_args.h"
 #include "exit_codes.h"
+#include "geom/chart_gap.h"
 
+#include "mesh/gltf_io.h"
 #include "mesh/obj_rewrite.h"
 
 /* --input-format (MESH_FORMAT_UNKNOWN: from the name or the content) */
@@ -20,6 +24,16 @@ static void free_stdin_bytes(void) { free(stdin_bytes); }
 
 int cli_input_format_option(const char *cmd, int argc, char **argv, int *i)
 {
+    if (!strcmp(argv[*i], "--uv-set")) {
+        int n;
+        if (*i + 1 >= argc || !cli_parse_int(argv[*i + 1], &n) || n > 65535) {
+            fprintf(stderr, "scaf %s: --uv-set needs a number 0..65535 (TEXCOORD_N)\n", cmd);
+            return -1;
+        }
+        ++*i;
+        gltf_set_uv_set(n);
+        return 1;
+    }
     if (strcmp(argv[*i], "--input-format") != 0) return 0;
     if (*i + 1 >= argc) {
         fprintf(stderr, "scaf %s: --input-format needs a value (see --help)\n", cmd);
@@ -37,6 +51,50 @@ int cli_input_format_option(const char *cmd, int argc, char **argv, int *i)
         return -1;
     }
     return 1;
+}
+
+void cli_gltf_pieces_report(const char *cmd, const char *in, const mesh_read_info *info, int quiet,
+                            const mesh *o)
+{
+    if (quiet || !info || info->format != MESH_FORMAT_GLTF || !mesh_has_uv(o)) return;
+    scaf_error err;
+    err_clear(&err);
+    char *data = NULL;
+    size_t n = 0;
+    const char *bytes = !strcmp(in, "-") ? cli_stdin_data(&n) : NULL;
+    scaf_status st = bytes ? SCAF_OK : mesh_load_file(in, &data, &n, &err);
+    gltf_piece *pc = NULL;
+    int np = 0, nc = 0;
+    int *chart = malloc(sizeof(int) * (size_t)(o->nf ? o->nf : 1));
+    if (st == SCAF_OK) st = gltf_pieces(bytes ? bytes : data, n, in, &pc, &np, &err);
+    if (st == SCAF_OK && !chart) st = err_nomem(&err, "chart labels");
+    if (st == SCAF_OK) st = chart_gap_labels(o->nuv, o->nf, o->FT, chart, &nc, &err);
+    if (st != SCAF_OK)
+        fprintf(stderr, "scaf %s: warning: no glTF primitive table: %s\n", cmd, err.message);
+    for (int k = 0; st == SCAF_OK && k < np; k++) {
+        /* the charts of the primitive's faces, as ranges (charts are numbered
+         * in face order, so a primitive's are mostly consecutive) */
+        char *seen = calloc((size_t)nc + 1, 1);
+        int count = 0;
+        for (int f = pc[k].first_face; seen && f < pc[k].first_face + pc[k].faces; f++)
+            if (!seen[chart[f]]++) count++;
+        fprintf(stderr, "scaf %s: glTF mesh %d '%s' primitive %d: faces %d-%d, chart%s", cmd,
+                pc[k].mesh, pc[k].mesh_name, pc[k].primitive, pc[k].first_face,
+                pc[k].first_face + pc[k].faces - 1, count == 1 ? "" : "s");
+        for (int c = 0, first = 1; seen && c < nc; c++) {
+            if (!seen[c] || (c > 0 && seen[c - 1])) continue; /* not the start of a run */
+            int e = c;
+            while (e + 1 < nc && seen[e + 1]) e++;
+            fprintf(stderr, "%s %d", first ? "" : ",", c);
+            if (e > c) fprintf(stderr, "-%d", e);
+            first = 0;
+        }
+        free(seen);
+        fputc('\n', stderr);
+    }
+    free(chart);
+    free(pc);
+    free(data);
 }
 
 const char *cli_stdin_data(size_t *size)
@@ -112,6 +170,20 @@ scaf_status cli_write_uv_grouped(const char *cmd, const char *in, const mesh_rea
 {
     mesh_format to = strcmp(target, "-") ? mesh_format_from_name(target) : MESH_FORMAT_OBJ;
     if (to == MESH_FORMAT_PLY) return mesh_write_ply(out, o, err);
+    if (to == MESH_FORMAT_GLTF) { /* the input document again, with the UVs */
+        size_t n = 0, tl = strlen(target);
+        int binary = (tl >= 4 && !strcasecmp(target + tl - 4, ".glb")) ||
+            (tl >= 7 && !strcasecmp(target + tl - 7, ".glb.gz"));
+        if (!strcmp(in, "-")) {
+            const char *bytes = cli_stdin_data(&n);
+            return gltf_rewrite_uv(bytes, n, "<stdin>", o, out, binary, err);
+        }
+        char *bytes = NULL;
+        scaf_status st = mesh_load_file(in, &bytes, &n, err);
+        if (st == SCAF_OK) st = gltf_rewrite_uv(bytes, n, in, o, out, binary, err);
+        free(bytes);
+        return st;
+    }
     if (info && info->format == MESH_FORMAT_OBJ) {
         size_t n;
         const char *text = !strcmp(in, "-") ? cli_stdin_data(&n) : NULL;

@@ -29,12 +29,21 @@
 #define CLI_INPUT_FORMAT_HELP                                                                      \
     "  --input-format F       obj, off, ply, gltf or glb: the input's format whatever\n"           \
     "                         its name (default: the extension, or for \"-\" (standard\n"          \
-    "                         input) and unknown names the first bytes)\n"
+    "                         input) and unknown names the first bytes)\n"                         \
+    "  --uv-set N             glTF: the TEXCOORD_N read and written (default 0)\n"
 
-/* At argv[*i] inside an argument loop: --input-format F taken (1, *i
- * advanced), not this option (0), or a usage error printed (-1). The
- * format applies to every later cli_read_mesh of the process. */
+/* At argv[*i] inside an argument loop: --input-format F or --uv-set N
+ * taken (1, *i advanced), not one of them (0), or a usage error printed
+ * (-1). They apply to every later read and write of the process. */
 int cli_input_format_option(const char *cmd, int argc, char **argv, int *i);
+
+/* For a glTF input (info->format), one line per primitive on stderr: its
+ * faces in the scaf mesh and the charts of the map o (the mesh with its
+ * new UV, FT) they went to, e.g. "scaf atlas: glTF mesh 1 'cap' primitive
+ * 0: faces 72-77, chart 2". Prints nothing for other inputs or when
+ * quiet; a failure to re-read the document is a warning. */
+void cli_gltf_pieces_report(const char *cmd, const char *in, const mesh_read_info *info, int quiet,
+                            const mesh *o);
 
 /* The input's bytes when it was "-" (NULL otherwise), and their size. */
 const char *cli_stdin_data(size_t *size);

@@ -67,9 +67,11 @@ static int check_format(cli_outputs *o, cli_output *c)
     int uv = c->kind == CLI_OUTPUT_UV_MESH; /* PLY too */
     if (c->kind == CLI_OUTPUT_FILE || c->to_stdout || ends_with(c->path, ".obj") ||
         ends_with(c->path, ".obj.gz") ||
-        (uv && (ends_with(c->path, ".ply") || ends_with(c->path, ".ply.gz"))))
+        (uv &&
+         (ends_with(c->path, ".ply") || ends_with(c->path, ".ply.gz") ||
+          ends_with(c->path, ".gltf") || ends_with(c->path, ".glb"))))
         return 0;
-    const char *names = uv ? ".obj or .ply (optionally .gz)" : ".obj or .obj.gz";
+    const char *names = uv ? ".obj, .ply (optionally .gz), .gltf or .glb" : ".obj or .obj.gz";
     static const char *const no_uv[][2] = {{".ply", "PLY"},    {".off", "OFF"},
                                            {".stl", "STL"},    {".ply.gz", "PLY"},
                                            {".off.gz", "OFF"}, {".stl.gz", "STL"}};

@@ -1,7 +1,9 @@
 /* tools/cli_uv_job: see cli_uv_job.h. */
 #include "cli_uv_job.h"
 
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cli_mesh_io.h"
 #include "cli_signal.h"
@@ -21,6 +23,15 @@ int cli_uv_job_start(cli_uv_job *j, const char *cmd, const char *in, const cli_u
     if (rc != EXIT_OK) return rc;
     rc = cli_read_mesh(cmd, in, quiet, m, &j->rinfo);
     if (rc != EXIT_OK) return rc;
+    if (j->k.mesh >= 0 && strcmp(p->out, "-") != 0 &&
+        mesh_format_from_name(p->out) == MESH_FORMAT_GLTF && j->rinfo.format != MESH_FORMAT_GLTF) {
+        fprintf(stderr,
+                "scaf %s: -o %s: glTF output is the input glTF document with its UVs added; "
+                "this input is not glTF (name the output .obj or .ply)\n",
+                cmd, p->out);
+        mesh_free(m);
+        return EXIT_USAGE;
+    }
     if (cli_signal_report(cmd)) {
         mesh_free(m);
         return EXIT_CANCELLED;

@@ -118,6 +118,7 @@ static void usage(FILE *o)
             "  --input-format F         obj, off, ply, gltf or glb: the input's format\n"
             "                           whatever its name (default: the extension, or for\n"
             "                           \"-\" (standard input) the first bytes)\n"
+            "  --uv-set N               glTF: the TEXCOORD_N read and written (default 0)\n"
             "  --threads N              threads of the per-triangle work (assembly, line\n"
             "                           search) and of the solver's dense kernels (default:\n"
             "                           all cores, or OPENBLAS_NUM_THREADS when set); the\n"
@@ -387,6 +388,7 @@ static int atlas_main(int argc, char **argv)
     mesh o = {m.nv, m.V, m.nf, m.F, a.nw, UV, a.Fw};
     if (chart_groups) job.face_group = a.chart;
     if ((rc = cli_uv_job_write_map(&job, &o)) != EXIT_OK) goto done;
+    cli_gltf_pieces_report("atlas", in, &job.rinfo, quiet, &o);
     const char *path;
     if (svg) {
         char title[256];

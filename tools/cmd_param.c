@@ -402,6 +402,7 @@ static int param_main(int argc, char **argv)
     }
     mesh o = {m.nv, m.V, m.nf, m.F, nuv, UV, FT};
     if ((rc = cli_uv_job_write_map(&job, &o)) != EXIT_OK) goto done;
+    cli_gltf_pieces_report("param", in, &job.rinfo, quiet, &o);
     const char *path;
     if (svg) {
         param_map pm;

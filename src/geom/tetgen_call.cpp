@@ -1,5 +1,5 @@
-// geom/tetgen_call: TetGen behind a C interface (see tetgen_call.h). The
-// project's only C++.
+// geom/tetgen_call: TetGen behind a C interface (see tetgen_call.h). One
+// of the project's two C++ files (src/mesh/gltf_io.cpp is the other).
 //
 // Why a child process: TetGen 1.5.0 reports an error by freeing its mesh
 // (terminatetetgen -> freememory) and then `throw int`; unwinding runs

@@ -1,5 +1,6 @@
-/* geom/tetgen_call: the C face of TetGen (tetgen_call.cpp, the project's
- * only C++), a constrained tetrahedralization of triangle facets.
+/* geom/tetgen_call: the C face of TetGen (tetgen_call.cpp, one of the
+ * project's two C++ files; src/mesh/gltf_io.cpp is the other), a
+ * constrained tetrahedralization of triangle facets.
  *
  * TetGen 1.5 (Debian libtet1.5-dev, Hang Si, AGPL-3.0-or-later; linked
  * into a GPL-3.0-or-later program, which GPLv3 section 13 allows) meshes

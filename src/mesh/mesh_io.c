@@ -28,7 +28,9 @@
 #include <zlib.h>
 
 #include "base/interrupt.h"
+#include "mesh/gltf_io.h"
 #include "mesh/mesh_readers.h"
+#include "mesh/uv_weld.h"
 
 /* Case-insensitive "does s end with suffix". */
 static int ends_with(const char *s, size_t n, const char *suffix)
@@ -78,19 +80,31 @@ scaf_status mesh_parse(const char *data, size_t size, mesh_format format, const 
     if (!data) data = "";
     /* lines ended by CR alone (classic Mac OS): every parser would see one
      * long first line ("no faces"); say so instead */
-    const char *cr = memchr(data, '\r', size);
+    if (format == MESH_FORMAT_UNKNOWN) format = mesh_format_from_content(data, size);
+    const char *cr = format == MESH_FORMAT_GLTF ? NULL : memchr(data, '\r', size);
     if (cr && cr + 1 < data + size && !memchr(data, '\n', size))
         return err_set(err, SCAF_ERR_PARSE,
                        "%s:1: the lines end in CR alone (classic Mac OS line endings); convert "
                        "them to LF or CRLF",
                        name);
-    if (format == MESH_FORMAT_UNKNOWN) format = mesh_format_from_content(data, size);
     switch (format) {
     case MESH_FORMAT_OBJ: return mesh_parse_obj(data, size, name, m, info, err);
     case MESH_FORMAT_OFF: return mesh_parse_off(data, size, name, m, info, err);
     case MESH_FORMAT_PLY: return mesh_parse_ply(data, size, name, m, info, err);
-    case MESH_FORMAT_GLTF:
-        return err_set(err, SCAF_ERR_PARSE, "%s: glTF input is not supported yet", name);
+    case MESH_FORMAT_GLTF: {
+        scaf_status st = gltf_parse(data, size, name, m, &info->faces_without_uv, err);
+        /* one UV per glTF vertex: corners of one scaf vertex with the same UV
+         * are one UV point (glTF splits vertices for normals too) */
+        if (st == SCAF_OK) st = uv_weld_corners(m, err);
+        if (st != SCAF_OK) mesh_free(m);
+        if (st == SCAF_OK) {
+            static char source[32];
+            snprintf(source, sizeof source, "glTF TEXCOORD_%d", gltf_uv_set());
+            info->format = MESH_FORMAT_GLTF;
+            info->uv_source = mesh_has_uv(m) ? source : NULL;
+        }
+        return st;
+    }
     default: return err_set(err, SCAF_ERR_USAGE, "%s: unknown mesh format", name);
     }
 }
