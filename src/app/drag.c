@@ -352,6 +352,31 @@ int scaf_drag_handle_count(const scaf_drag_t *d)
     return d && d->has_mesh ? drag_handles_count(&d->handles) : 0;
 }
 
+/* ---- pins ------------------------------------------------------------------------- */
+
+scaf_status scaf_drag_pin_vertex(scaf_drag_t *d, int uv, int pinned)
+{
+    if (!d) return SCAF_ERR_USAGE;
+    err_clear(&d->err);
+    scaf_status st = need_mesh(d);
+    if (st != SCAF_OK) return st;
+    if (uv < 0 || uv >= d->at.nw)
+        return err_set(&d->err, SCAF_ERR_USAGE,
+                       "vertex %d does not exist: the layout has %d (0..%d)", uv, d->at.nw,
+                       d->at.nw - 1);
+    return scaf_loop_pin(&d->at.loop, uv, pinned != 0, &d->err);
+}
+
+int scaf_drag_is_pinned(const scaf_drag_t *d, int uv)
+{
+    return d && d->has_mesh && scaf_loop_pinned(&d->at.loop, uv);
+}
+
+int scaf_drag_pinned_count(const scaf_drag_t *d)
+{
+    return d && d->has_mesh ? scaf_loop_pinned_count(&d->at.loop) : 0;
+}
+
 /* The term made to match the handle set (targets of chart handles are
  * computed here, from their grab poses). */
 static scaf_status sync_handles(scaf_drag_t *d)
