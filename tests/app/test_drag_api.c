@@ -296,6 +296,70 @@ static void test_pinned_vertices_keep_their_bits(void **state)
     scaf_drag_destroy(d);
 }
 
+/* A hard vertex target (a quarter of the way into its chart) is met
+ * exactly (the same doubles; soft, the same pull stays short) within a
+ * few steps, the vertex is then pinned and stays while another chart is
+ * dragged; bijective and padded after every step. */
+static void test_hard_vertex_target(void **state)
+{
+    (void)state;
+    patches m;
+    make_patches(&m, 2);
+    scaf_drag_options_t o = scaf_drag_options_default();
+    scaf_drag_t *d = drag_on(&m, &o);
+    layout l0;
+    layout_read(d, &l0);
+    double c0[2], c1[2];
+    vertex_mean(&l0, 0, c0);
+    vertex_mean(&l0, 1, c1);
+    /* the vertex of chart 0 farthest from chart 1, pulled a quarter of the
+     * way to its chart's middle: past its neighbours, so not at once */
+    int v = -1;
+    double far = -1.0;
+    int *wc = malloc(sizeof(int) * (size_t)l0.nw);
+    assert_non_null(wc);
+    assert_int_equal(scaf_drag_uv_charts(d, wc), SCAF_OK);
+    for (int u = 0; u < l0.nw; u++)
+        if (wc[u] == 0 && dist(l0.UV + 2 * u, c1) > far) far = dist(l0.UV + 2 * u, c1), v = u;
+    double t[2] = {l0.UV[2 * v] + 0.25 * (c0[0] - l0.UV[2 * v]),
+                   l0.UV[2 * v + 1] + 0.25 * (c0[1] - l0.UV[2 * v + 1])};
+    assert_int_equal(scaf_drag_move_vertex_hard(d, v, t[0], t[1]), SCAF_OK);
+    assert_int_equal(scaf_drag_hard_pending(d), 1);
+    assert_int_equal(scaf_drag_is_pinned(d, v), 0);
+    int steps = 0;
+    while (scaf_drag_hard_pending(d) > 0 && steps < 30) {
+        assert_int_equal(scaf_drag_step(d, 1, NULL, NULL), SCAF_OK);
+        assert_valid(d, o.padding);
+        steps++;
+    }
+    print_message("hard vertex target met after %d steps\n", steps);
+    assert_int_equal(scaf_drag_hard_pending(d), 0);
+    assert_int_equal(scaf_drag_is_pinned(d, v), 1);
+    layout l1;
+    layout_read(d, &l1);
+    assert_true(l1.UV[2 * v] == t[0] && l1.UV[2 * v + 1] == t[1]);
+    /* chart 1 dragged toward chart 0: v stays */
+    assert_int_equal(scaf_drag_clear_handles(d), SCAF_OK);
+    assert_int_equal(scaf_drag_move_chart(d, 1, 0.5 * (c0[0] - c1[0]), 0.5 * (c0[1] - c1[1]), 0),
+                     SCAF_OK);
+    assert_int_equal(scaf_drag_step(d, 6, NULL, NULL), SCAF_OK);
+    assert_valid(d, o.padding);
+    layout l2;
+    layout_read(d, &l2);
+    assert_true(l2.UV[2 * v] == t[0] && l2.UV[2 * v + 1] == t[1]);
+    scaf_drag_destroy(d);
+    /* the control: soft, the same pull stays short of the target */
+    d = drag_on(&m, &o);
+    assert_int_equal(scaf_drag_move_vertex(d, v, t[0], t[1]), SCAF_OK);
+    assert_int_equal(scaf_drag_step(d, steps + 5, NULL, NULL), SCAF_OK);
+    assert_true(scaf_drag_max_handle_error(d) > 0.0);
+    free(wc);
+    layout_free(&l0);
+    layout_free(&l1);
+    layout_free(&l2);
+    scaf_drag_destroy(d);
+}
+
 /* A settled chart (the finished atlas: its distortion at a minimum) pulled
  * a short way into free space reaches its target: nothing holds it back.
  * (From the Tutte start the soft pull stops about 2% of the chart's size
@@ -723,6 +787,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_drag_chart_onto_another),
         cmocka_unit_test(test_pinned_vertices_keep_their_bits),
+        cmocka_unit_test(test_hard_vertex_target),
         cmocka_unit_test(test_drag_chart_free_space),
         cmocka_unit_test(test_drag_compacted_atlas),
         cmocka_unit_test(test_rigid_rotation),
