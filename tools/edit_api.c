@@ -150,9 +150,9 @@ static void reply_state(edit_api *a, edit_response *rs, const char *extra_key, i
     json_key_number(j.f, "energy", e);
     json_key_number(j.f, "objective", scaf_drag_energy(a->drag));
     json_key_number(j.f, "efficiency", scaf_drag_packing_efficiency(a->drag));
-    fprintf(j.f, ", \"handles\": %d, \"undo\": %d, \"unsaved\": %s",
-            scaf_drag_handle_count(a->drag), scaf_drag_undo_count(a->drag),
-            edit_api_unsaved(a) ? "true" : "false");
+    fprintf(j.f, ", \"handles\": %d, \"pinned\": %d, \"undo\": %d, \"unsaved\": %s",
+            scaf_drag_handle_count(a->drag), scaf_drag_pinned_count(a->drag),
+            scaf_drag_undo_count(a->drag), edit_api_unsaved(a) ? "true" : "false");
     json_key_number(j.f, "max_handle_error", scaf_drag_max_handle_error(a->drag));
     fputs(", ", j.f);
     write_doubles(j.f, "uv", a->uv, 2 * (size_t)a->nuv);
@@ -339,6 +339,24 @@ static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
     a->changes++; /* a failed step keeps its last finished iteration */
     if (st != SCAF_OK && st != SCAF_ERR_CANCELLED) {
         reply_failure(a, rs, "step");
+        return;
+    }
+    reply_state(a, rs, NULL, 0);
+}
+
+/* Pin or unpin one vertex (the layout does not change). */
+static void pin(edit_api *a, const edit_request *rq, edit_response *rs)
+{
+    edit_json_field f[] = {{"vertex", EDIT_JSON_INTEGER, 0, 0, 0},
+                           {"pinned", EDIT_JSON_INTEGER, 0, 0, 0}};
+    if (!parse(rq, rs, f, 2)) return;
+    if (!f[0].seen || !f[1].seen || f[1].value > 1) {
+        reply_error(rs, 400, "give \"vertex\" and \"pinned\" (1: pin, 0: unpin)");
+        return;
+    }
+    if (!check_vertex(a, rs, f[0].value)) return;
+    if (scaf_drag_pin_vertex(a->drag, (int)f[0].value, (int)f[1].value) != SCAF_OK) {
+        reply_failure(a, rs, "pin");
         return;
     }
     reply_state(a, rs, NULL, 0);
@@ -552,6 +570,7 @@ enum {
     R_GRAB,
     R_DRAG,
     R_RELEASE,
+    R_PIN,
     R_OPTIMIZE,
     R_COMPACT,
     R_UNDO,
@@ -567,6 +586,7 @@ static const route routes[] = {
     {"/api/grab", "POST", R_GRAB},
     {"/api/drag", "POST", R_DRAG},
     {"/api/release", "POST", R_RELEASE},
+    {"/api/pin", "POST", R_PIN},
     {"/api/optimize", "POST", R_OPTIMIZE},
     {"/api/compact", "POST", R_COMPACT},
     {"/api/undo", "POST", R_UNDO},
@@ -619,6 +639,7 @@ void edit_api_handle(void *user, const edit_request *rq, edit_response *rs)
     case R_GRAB: grab(a, rq, rs); return;
     case R_DRAG: drag_to(a, rq, rs); return;
     case R_RELEASE: release(a, rq, rs); return;
+    case R_PIN: pin(a, rq, rs); return;
     case R_OPTIMIZE: run(a, rq, rs, 0); return;
     case R_COMPACT: run(a, rq, rs, 1); return;
     case R_UNDO: undo(a, rq, rs); return;

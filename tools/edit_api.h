@@ -21,6 +21,11 @@
  *   POST /api/compact   {"steps"?}: compaction iterations (default 30),
  *                       E kept within 1.05 times its value at the click
  *                       (scaf_drag_compact: the rule of `scaf atlas`)
+ *   POST /api/pin       {"vertex": i, "pinned": 1 | 0}: pin or unpin a
+ *                       layout vertex: a pinned vertex keeps its bits
+ *                       through every drag, optimize and compact
+ *                       (scaf_drag_pin_vertex); the state's "pinned" is
+ *                       their count
  *   POST /api/undo      {}: back to the layout before the last grab,
  *                       optimize or compact (409 when there is none)
  *   POST /api/save      {}: the layout normalized into the unit square,

@@ -197,6 +197,32 @@ SCAF_API scaf_status scaf_drag_clear_handles(scaf_drag_t *d);
 /* Number of handles (vertex handles + chart handles); 0 without a mesh. */
 SCAF_API int scaf_drag_handle_count(const scaf_drag_t *d);
 
+/* ---- pins -----------------------------------------------------------------
+ * A pinned layout vertex never moves in a step or a compaction: it is
+ * eliminated from every iteration's system and its step is zero, so its
+ * coordinates keep their bits (a handle on it, or on its chart, has no
+ * effect on it). Undo and cancel restore whole layouts, pinned vertices
+ * included; pins stay until unpinned (scaf_drag_set_mesh drops them).
+ * Errors (SCAF_ERR_USAGE, nothing changed): no mesh, uv out of range. */
+
+/* Pin layout vertex uv (pinned nonzero) or unpin it (0). */
+SCAF_API scaf_status scaf_drag_pin_vertex(scaf_drag_t *d, int uv, int pinned);
+
+/* A hard vertex target: uv is pulled to (x, y) as by
+ * scaf_drag_move_vertex, and after every step from then on, as soon as it
+ * can be placed exactly on (x, y) with no triangle of the layout or of the
+ * scaffold flipped (decided exactly) and the padding kept, it is put there
+ * and pinned: it then is exactly (x, y), bit for bit, until unpinned.
+ * scaf_drag_hard_pending says how many hard targets are not met yet
+ * (a new hard target for uv replaces its pending one; unpinning or
+ * clearing its handle drops it). Errors as scaf_drag_move_vertex. */
+SCAF_API scaf_status scaf_drag_move_vertex_hard(scaf_drag_t *d, int uv, double x, double y);
+SCAF_API int scaf_drag_hard_pending(const scaf_drag_t *d);
+
+/* Whether uv is pinned (0 for no mesh or uv out of range); how many are. */
+SCAF_API int scaf_drag_is_pinned(const scaf_drag_t *d, int uv);
+SCAF_API int scaf_drag_pinned_count(const scaf_drag_t *d);
+
 /* Largest distance of a handled vertex to its target (layout units); 0
  * without handles, NAN without a mesh. */
 SCAF_API double scaf_drag_max_handle_error(const scaf_drag_t *d);

@@ -176,6 +176,21 @@ class Drag(_Handle):
         with self._use() as h:
             self._check(lib.scaf_drag_clear_handles(h))
 
+    # --- pins ---------------------------------------------------------------------
+
+    def pin_vertex(self, uv, pinned=True):
+        """Pin layout vertex uv (it keeps its exact coordinates through every
+        step and compaction) or unpin it (pinned=False)."""
+        i = _index(uv, "uv")
+        with self._use() as h:
+            self._check(lib.scaf_drag_pin_vertex(h, i, 1 if pinned else 0))
+
+    def is_pinned(self, uv):
+        with self._use() as h:
+            return bool(lib.scaf_drag_is_pinned(h, _index(uv, "uv")))
+
+    pinned_count = property(lambda self: self._get(lib.scaf_drag_pinned_count))
+
     @property
     def max_handle_error(self):
         """Largest handle-to-target distance (layout units); 0 without handles."""

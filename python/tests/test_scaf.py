@@ -807,6 +807,27 @@ class DragTest(unittest.TestCase):
             self.assertLess(math.dist(n0, c1), 0.8 * math.dist(c0, c1))
             self.assertGreater(math.dist(d.chart_info(1).centroid, c1), 0.0)  # pushed
 
+    def test_pinned_vertex_keeps_its_coordinates(self):
+        with scaf.Drag(seams="input") as d:
+            d.set_mesh(self.V, self.F)
+            charts = list(rows(d.uv_charts())) if np is None else d.uv_charts().tolist()
+            v = charts.index(1)  # a vertex of the chart that gets pushed
+            d.pin_vertex(v)
+            self.assertTrue(d.is_pinned(v))
+            self.assertEqual(d.pinned_count, 1)
+            before = rows(d.uv)[v]
+            c0, c1 = d.chart_info(0).centroid, d.chart_info(1).centroid
+            d.move_chart(0, c1[0] - c0[0], c1[1] - c0[1])
+            moved = rows(d.uv)
+            for _ in range(6):  # one iteration each (the callback cannot read d)
+                d.step(1)
+                self.assertEqual(list(rows(d.uv)[v]), list(before))  # the same doubles
+            self.assertNotEqual(rows(d.uv), moved)
+            d.pin_vertex(v, False)
+            self.assertEqual(d.pinned_count, 0)
+            with self.assertRaises(scaf.UsageError):
+                d.pin_vertex(d.uv_count)
+
     def test_vertex_rotation_cancel_undo(self):
         with scaf.Drag(seams="input") as d:
             d.set_mesh(self.V, self.F)

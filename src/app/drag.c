@@ -46,6 +46,9 @@ struct scaf_drag {
     int handles_dirty; /* the term does not reflect the handle set */
     drag_state before; /* the layout before the last step */
     int has_before;
+    int *hard_v;     /* pending hard vertex targets: vertices */
+    double *hard_xy; /* and targets (nhard by 2) */
+    int nhard, cap_hard;
     drag_state *stack; /* checkpoints, oldest first */
     int nstack;
     /* the verified output of the current layout (out_state: 0 not
@@ -55,6 +58,8 @@ struct scaf_drag {
     atlas_output out;
     scaf_error out_err;
 };
+
+static void drop_hard(scaf_drag_t *d, int uv);
 
 /* ---- options ---------------------------------------------------------------- */
 
@@ -155,6 +160,11 @@ static void drop_mesh(scaf_drag_t *d)
     memset(&d->before, 0, sizeof d->before);
     d->has_before = 0;
     drop_stack(d);
+    free(d->hard_v);
+    free(d->hard_xy);
+    d->hard_v = NULL;
+    d->hard_xy = NULL;
+    d->nhard = d->cap_hard = 0;
     free(d->UVn);
     d->UVn = NULL;
     d->out_state = 0;
@@ -324,7 +334,9 @@ scaf_status scaf_drag_clear_vertex(scaf_drag_t *d, int uv)
     err_clear(&d->err);
     scaf_status st = need_mesh(d);
     if (st != SCAF_OK) return st;
-    return handles_changed(d, drag_handles_clear_vertex(&d->handles, uv, &d->err));
+    st = handles_changed(d, drag_handles_clear_vertex(&d->handles, uv, &d->err));
+    if (st == SCAF_OK) drop_hard(d, uv);
+    return st;
 }
 
 scaf_status scaf_drag_clear_chart(scaf_drag_t *d, int chart)
@@ -344,12 +356,94 @@ scaf_status scaf_drag_clear_handles(scaf_drag_t *d)
     if (st != SCAF_OK) return st;
     drag_handles_clear(&d->handles);
     d->handles_dirty = 1;
+    d->nhard = 0;
     return SCAF_OK;
 }
 
 int scaf_drag_handle_count(const scaf_drag_t *d)
 {
     return d && d->has_mesh ? drag_handles_count(&d->handles) : 0;
+}
+
+/* ---- pins ------------------------------------------------------------------------- */
+
+/* Drop uv's pending hard target, if any. */
+static void drop_hard(scaf_drag_t *d, int uv)
+{
+    for (int i = 0; i < d->nhard; i++)
+        if (d->hard_v[i] == uv) {
+            d->hard_v[i] = d->hard_v[d->nhard - 1];
+            d->hard_xy[2 * i] = d->hard_xy[2 * (d->nhard - 1)];
+            d->hard_xy[2 * i + 1] = d->hard_xy[2 * (d->nhard - 1) + 1];
+            d->nhard--;
+            return;
+        }
+}
+
+scaf_status scaf_drag_move_vertex_hard(scaf_drag_t *d, int uv, double x, double y)
+{
+    scaf_status st = scaf_drag_move_vertex(d, uv, x, y);
+    if (st != SCAF_OK) return st;
+    drop_hard(d, uv);
+    if (d->nhard == d->cap_hard) {
+        int cap = d->cap_hard ? 2 * d->cap_hard : 8;
+        int *v = realloc(d->hard_v, sizeof(int) * (size_t)cap);
+        if (v) d->hard_v = v;
+        double *p = realloc(d->hard_xy, sizeof(double) * 2 * (size_t)cap);
+        if (p) d->hard_xy = p;
+        if (!v || !p) {
+            drag_handles_clear_vertex(&d->handles, uv, &d->err);
+            return err_nomem(&d->err, "hard target");
+        }
+        d->cap_hard = cap;
+    }
+    d->hard_v[d->nhard] = uv;
+    d->hard_xy[2 * d->nhard] = x;
+    d->hard_xy[2 * d->nhard + 1] = y;
+    d->nhard++;
+    return scaf_loop_pin(&d->at.loop, uv, 0, &d->err); /* pinned once met */
+}
+
+int scaf_drag_hard_pending(const scaf_drag_t *d) { return d && d->has_mesh ? d->nhard : 0; }
+
+/* After a step: every pending hard target that can be met exactly now is
+ * met and pinned. */
+static scaf_status place_hard(scaf_drag_t *d)
+{
+    for (int i = 0; i < d->nhard;) {
+        if (!scaf_loop_place(&d->at.loop, d->hard_v[i], d->hard_xy + 2 * i)) {
+            i++;
+            continue;
+        }
+        scaf_status st = scaf_loop_pin(&d->at.loop, d->hard_v[i], 1, &d->err);
+        if (st != SCAF_OK) return st;
+        drop_hard(d, d->hard_v[i]);
+    }
+    return SCAF_OK;
+}
+
+scaf_status scaf_drag_pin_vertex(scaf_drag_t *d, int uv, int pinned)
+{
+    if (!d) return SCAF_ERR_USAGE;
+    err_clear(&d->err);
+    scaf_status st = need_mesh(d);
+    if (st != SCAF_OK) return st;
+    if (uv < 0 || uv >= d->at.nw)
+        return err_set(&d->err, SCAF_ERR_USAGE,
+                       "vertex %d does not exist: the layout has %d (0..%d)", uv, d->at.nw,
+                       d->at.nw - 1);
+    if (!pinned) drop_hard(d, uv);
+    return scaf_loop_pin(&d->at.loop, uv, pinned != 0, &d->err);
+}
+
+int scaf_drag_is_pinned(const scaf_drag_t *d, int uv)
+{
+    return d && d->has_mesh && scaf_loop_pinned(&d->at.loop, uv);
+}
+
+int scaf_drag_pinned_count(const scaf_drag_t *d)
+{
+    return d && d->has_mesh ? scaf_loop_pinned_count(&d->at.loop) : 0;
 }
 
 /* The term made to match the handle set (targets of chart handles are
@@ -462,6 +556,7 @@ static scaf_status iterate(scaf_drag_t *d, int n, scaf_param_progress_fn progres
             if (d->err.code == SCAF_OK) d->err.code = st;
             return st;
         }
+        if (d->nhard > 0 && (st = place_hard(d)) != SCAF_OK) return st;
         if (progress && progress(&info, user))
             return err_set(&d->err, SCAF_ERR_CANCELLED,
                            "stopped by the progress callback after iteration %d", info.iteration);

@@ -375,6 +375,18 @@ int scaf_loop_place(scaf_loop *L, int v, const double p[2])
         const int *t = sc->simplices + 3 * (size_t)s;
         if ((t[0] == v || t[1] == v || t[2] == v) && !(orient_with(L, t, v, p) > 0.0)) return 0;
     }
+    if (L->hooks.feasible) { /* e.g. the atlas's padding */
+        int nall = L->nv + sc->nextra;
+        double *X = malloc(sizeof(double) * 2 * (size_t)nall);
+        if (!X) return 0;
+        memcpy(X, L->uv, sizeof(double) * 2 * (size_t)L->nv);
+        memcpy(X + 2 * (size_t)L->nv, sc->extra, sizeof(double) * 2 * (size_t)sc->nextra);
+        X[2 * (size_t)v] = p[0];
+        X[2 * (size_t)v + 1] = p[1];
+        int ok = L->hooks.feasible(L->hooks.user, L, X, nall);
+        free(X);
+        if (!ok) return 0;
+    }
     L->uv[2 * (size_t)v] = p[0];
     L->uv[2 * (size_t)v + 1] = p[1];
     return 1;

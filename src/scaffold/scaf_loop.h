@@ -199,9 +199,12 @@ int scaf_loop_pinned_count(const scaf_loop *L);
 /* Move mesh vertex v to exactly p (2D, between iterations) when that
  * keeps every mesh and scaffold triangle around v positively oriented,
  * decided exactly (geom/predicates): the mesh and the scaffold then still
- * tile the fixed box, so the map stays bijective. 1: moved; 0: not (a
- * flip, a non-finite p, no scaffold yet: before the first iteration, or
- * after a failed one), nothing changed. How a hard target is reached
+ * tile the fixed box, so the map stays bijective; and the feasibility hook
+ * (when set: the atlas's padding) accepts the moved state. 1: moved; 0:
+ * not (a flip, the hook, a non-finite p, no scaffold yet: before the
+ * first iteration, or after a failed one), nothing changed. The scaffold
+ * is the last step's: call it right after a step (or a place), not after
+ * the caller replaced uv. How a hard target is reached
  * exactly (app/deform, app/drag). */
 int scaf_loop_place(scaf_loop *L, int v, const double p[2]);
 

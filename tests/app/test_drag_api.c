@@ -189,6 +189,177 @@ static void test_drag_chart_onto_another(void **state)
     scaf_drag_destroy(d);
 }
 
+/* Pins: the layout read after every iteration (from the progress
+ * callback) has the pinned vertices' bits, while chart 0 is dragged onto
+ * chart 1 (one of its own vertices pinned, three of chart 1's) and then
+ * compacted; bijective and padded after every step. Without the pins the
+ * same vertices move. */
+typedef struct pin_watch {
+    scaf_drag_t *d;
+    const int *pins;
+    int npins;
+    const double *at; /* nw by 2: the pinned vertices' positions */
+    double *uv;       /* scratch */
+    int iterations, moved;
+} pin_watch;
+
+static int pins_unmoved(const scaf_iteration_info_t *it, void *user)
+{
+    (void)it;
+    pin_watch *w = user;
+    assert_int_equal(scaf_drag_get_uv(w->d, w->uv, NULL, NULL), SCAF_OK);
+    for (int i = 0; i < w->npins; i++)
+        if (memcmp(w->uv + 2 * w->pins[i], w->at + 2 * w->pins[i], 2 * sizeof(double)) != 0)
+            w->moved++;
+    w->iterations++;
+    return 0;
+}
+
+static int pinned_drag(int pin, int pins[4], int *moved)
+{
+    patches m;
+    make_patches(&m, 2);
+    scaf_drag_options_t o = scaf_drag_options_default();
+    scaf_drag_t *d = drag_on(&m, &o);
+    layout l0;
+    layout_read(d, &l0);
+    int *wc = malloc(sizeof(int) * (size_t)l0.nw);
+    assert_non_null(wc);
+    assert_int_equal(scaf_drag_uv_charts(d, wc), SCAF_OK);
+    /* chart 0's first vertex, chart 1's first three */
+    int np = 0;
+    for (int v = 0; v < l0.nw && np < 1; v++)
+        if (wc[v] == 0) pins[np++] = v;
+    for (int v = 0; v < l0.nw && np < 4; v++)
+        if (wc[v] == 1) pins[np++] = v;
+    assert_int_equal(np, 4);
+    for (int i = 0; pin && i < 4; i++)
+        assert_int_equal(scaf_drag_pin_vertex(d, pins[i], 1), SCAF_OK);
+    assert_int_equal(scaf_drag_pinned_count(d), pin ? 4 : 0);
+    assert_int_equal(scaf_drag_is_pinned(d, pins[0]), pin);
+    double c0[2], c1[2];
+    vertex_mean(&l0, 0, c0);
+    vertex_mean(&l0, 1, c1);
+    pin_watch w = {d, pins, 4, l0.UV, malloc(sizeof(double) * 2 * (size_t)l0.nw), 0, 0};
+    assert_non_null(w.uv);
+    assert_int_equal(scaf_drag_move_chart(d, 0, c1[0] - c0[0], c1[1] - c0[1], 0.0), SCAF_OK);
+    for (int k = 0; k < 10; k++) {
+        assert_int_equal(scaf_drag_step(d, 1, pins_unmoved, &w), SCAF_OK);
+        assert_valid(d, o.padding);
+    }
+    assert_int_equal(scaf_drag_clear_handles(d), SCAF_OK);
+    assert_int_equal(scaf_drag_compact(d, 5, pins_unmoved, &w), SCAF_OK);
+    assert_valid(d, o.padding);
+    assert_true(w.iterations >= 11);
+    layout l1;
+    layout_read(d, &l1);
+    *moved = 0;
+    for (int i = 0; i < 4; i++)
+        *moved += memcmp(l1.UV + 2 * pins[i], l0.UV + 2 * pins[i], 2 * sizeof(double)) != 0;
+    /* the dragged chart still came closer */
+    double d0[2];
+    vertex_mean(&l1, 0, d0);
+    assert_true(dist(d0, c1) < dist(c0, c1));
+    int moved_seen = w.moved;
+    free(w.uv);
+    free(wc);
+    layout_free(&l0);
+    layout_free(&l1);
+    scaf_drag_destroy(d);
+    return moved_seen;
+}
+
+static void test_pinned_vertices_keep_their_bits(void **state)
+{
+    (void)state;
+    int pins[4], moved;
+    assert_int_equal(pinned_drag(1, pins, &moved), 0);
+    assert_int_equal(moved, 0);
+    /* the control */
+    assert_true(pinned_drag(0, pins, &moved) > 0);
+    assert_int_equal(moved, 4);
+    /* bad pins: nothing changes */
+    patches m;
+    make_patches(&m, 2);
+    scaf_drag_options_t o = scaf_drag_options_default();
+    scaf_drag_t *d = drag_on(&m, &o);
+    int nw = scaf_drag_uv_count(d);
+    assert_int_equal(scaf_drag_pin_vertex(d, nw, 1), SCAF_ERR_USAGE);
+    assert_non_null(strstr(scaf_drag_error(d), "does not exist"));
+    assert_int_equal(scaf_drag_pin_vertex(d, -1, 1), SCAF_ERR_USAGE);
+    assert_int_equal(scaf_drag_pinned_count(d), 0);
+    assert_int_equal(scaf_drag_pin_vertex(d, 3, 1), SCAF_OK);
+    assert_int_equal(scaf_drag_pin_vertex(d, 3, 1), SCAF_OK);
+    assert_int_equal(scaf_drag_pinned_count(d), 1);
+    assert_int_equal(scaf_drag_pin_vertex(d, 3, 0), SCAF_OK);
+    assert_int_equal(scaf_drag_pinned_count(d), 0);
+    scaf_drag_destroy(d);
+}
+
+/* A hard vertex target (a quarter of the way into its chart) is met
+ * exactly (the same doubles; soft, the same pull stays short) within a
+ * few steps, the vertex is then pinned and stays while another chart is
+ * dragged; bijective and padded after every step. */
+static void test_hard_vertex_target(void **state)
+{
+    (void)state;
+    patches m;
+    make_patches(&m, 2);
+    scaf_drag_options_t o = scaf_drag_options_default();
+    scaf_drag_t *d = drag_on(&m, &o);
+    layout l0;
+    layout_read(d, &l0);
+    double c0[2], c1[2];
+    vertex_mean(&l0, 0, c0);
+    vertex_mean(&l0, 1, c1);
+    /* the vertex of chart 0 farthest from chart 1, pulled a quarter of the
+     * way to its chart's middle: past its neighbours, so not at once */
+    int v = -1;
+    double far = -1.0;
+    int *wc = malloc(sizeof(int) * (size_t)l0.nw);
+    assert_non_null(wc);
+    assert_int_equal(scaf_drag_uv_charts(d, wc), SCAF_OK);
+    for (int u = 0; u < l0.nw; u++)
+        if (wc[u] == 0 && dist(l0.UV + 2 * u, c1) > far) far = dist(l0.UV + 2 * u, c1), v = u;
+    double t[2] = {l0.UV[2 * v] + 0.25 * (c0[0] - l0.UV[2 * v]),
+                   l0.UV[2 * v + 1] + 0.25 * (c0[1] - l0.UV[2 * v + 1])};
+    assert_int_equal(scaf_drag_move_vertex_hard(d, v, t[0], t[1]), SCAF_OK);
+    assert_int_equal(scaf_drag_hard_pending(d), 1);
+    assert_int_equal(scaf_drag_is_pinned(d, v), 0);
+    int steps = 0;
+    while (scaf_drag_hard_pending(d) > 0 && steps < 30) {
+        assert_int_equal(scaf_drag_step(d, 1, NULL, NULL), SCAF_OK);
+        assert_valid(d, o.padding);
+        steps++;
+    }
+    print_message("hard vertex target met after %d steps\n", steps);
+    assert_int_equal(scaf_drag_hard_pending(d), 0);
+    assert_int_equal(scaf_drag_is_pinned(d, v), 1);
+    layout l1;
+    layout_read(d, &l1);
+    assert_true(l1.UV[2 * v] == t[0] && l1.UV[2 * v + 1] == t[1]);
+    /* chart 1 dragged toward chart 0: v stays */
+    assert_int_equal(scaf_drag_clear_handles(d), SCAF_OK);
+    assert_int_equal(scaf_drag_move_chart(d, 1, 0.5 * (c0[0] - c1[0]), 0.5 * (c0[1] - c1[1]), 0),
+                     SCAF_OK);
+    assert_int_equal(scaf_drag_step(d, 6, NULL, NULL), SCAF_OK);
+    assert_valid(d, o.padding);
+    layout l2;
+    layout_read(d, &l2);
+    assert_true(l2.UV[2 * v] == t[0] && l2.UV[2 * v + 1] == t[1]);
+    scaf_drag_destroy(d);
+    /* the control: soft, the same pull stays short of the target */
+    d = drag_on(&m, &o);
+    assert_int_equal(scaf_drag_move_vertex(d, v, t[0], t[1]), SCAF_OK);
+    assert_int_equal(scaf_drag_step(d, steps + 5, NULL, NULL), SCAF_OK);
+    assert_true(scaf_drag_max_handle_error(d) > 0.0);
+    free(wc);
+    layout_free(&l0);
+    layout_free(&l1);
+    layout_free(&l2);
+    scaf_drag_destroy(d);
+}
+
 /* A settled chart (the finished atlas: its distortion at a minimum) pulled
  * a short way into free space reaches its target: nothing holds it back.
  * (From the Tutte start the soft pull stops about 2% of the chart's size
@@ -615,6 +786,8 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_drag_chart_onto_another),
+        cmocka_unit_test(test_pinned_vertices_keep_their_bits),
+        cmocka_unit_test(test_hard_vertex_target),
         cmocka_unit_test(test_drag_chart_free_space),
         cmocka_unit_test(test_drag_compacted_atlas),
         cmocka_unit_test(test_rigid_rotation),

@@ -327,12 +327,62 @@ static void drag_undo_save(void **state)
     remove(x->out);
 }
 
+/* A pinned vertex keeps its bits while its chart is dragged, optimized
+ * and compacted; bad pin requests are 400 and change nothing. */
+static void pinned_vertex_stays(void **state)
+{
+    fixture *x = *state;
+    char *text;
+    int *ch = malloc(sizeof(int) * (size_t)scaf_drag_uv_count(x->d));
+    assert_non_null(ch);
+    assert_int_equal(scaf_drag_uv_charts(x->d, ch), SCAF_OK);
+    int v = 0;
+    while (ch[v] != 2) v++;
+    free(ch);
+    edit_request bad1 = good("POST", "/api/pin", "{\"vertex\": 100000, \"pinned\": 1}");
+    assert_int_equal(send(x, &bad1, NULL), 400);
+    edit_request bad2 = good("POST", "/api/pin", "{\"vertex\": 0, \"pinned\": 2}");
+    assert_int_equal(send(x, &bad2, NULL), 400);
+    edit_request bad3 = good("POST", "/api/pin", "{\"vertex\": 0}");
+    assert_int_equal(send(x, &bad3, NULL), 400);
+    assert_int_equal(scaf_drag_pinned_count(x->d), 0);
+    char body[96];
+    snprintf(body, sizeof body, "{\"vertex\": %d, \"pinned\": 1}", v);
+    edit_request p = good("POST", "/api/pin", body);
+    assert_int_equal(send(x, &p, &text), 200);
+    assert_non_null(strstr(text, "\"pinned\": 1"));
+    free(text);
+    snapshot before = snap(x);
+    double x0 = chart_x(x, 2);
+    edit_request g = good("POST", "/api/grab", "{\"chart\": 2}");
+    assert_int_equal(send(x, &g, NULL), 200);
+    edit_request d = good("POST", "/api/drag",
+                          "{\"chart\": 2, \"dx\": 0.05, \"dy\": 0, \"angle\": 0, \"steps\": 4}");
+    assert_int_equal(send(x, &d, NULL), 200);
+    edit_request r = good("POST", "/api/release", "{}");
+    assert_int_equal(send(x, &r, NULL), 200);
+    assert_true(chart_x(x, 2) > x0 + 0.005); /* the rest of the chart follows */
+    edit_request o = good("POST", "/api/optimize", "{\"steps\": 3}");
+    assert_int_equal(send(x, &o, NULL), 200);
+    edit_request c = good("POST", "/api/compact", "{\"steps\": 2}");
+    assert_int_equal(send(x, &c, NULL), 200);
+    snapshot after = snap(x);
+    assert_memory_equal(after.uv + 2 * v, before.uv + 2 * v, 2 * sizeof(double));
+    free(after.uv);
+    free(before.uv);
+    snprintf(body, sizeof body, "{\"vertex\": %d, \"pinned\": 0}", v);
+    edit_request up = good("POST", "/api/pin", body);
+    assert_int_equal(send(x, &up, NULL), 200);
+    assert_int_equal(scaf_drag_pinned_count(x->d), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(bad_requests_change_nothing, setup, teardown),
         cmocka_unit_test_setup_teardown(undo_with_nothing_to_undo_is_409, setup, teardown),
         cmocka_unit_test_setup_teardown(drag_undo_save, setup, teardown),
+        cmocka_unit_test_setup_teardown(pinned_vertex_stays, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
