@@ -21,9 +21,10 @@ int check_surface_is_closed(const mesh *m)
 
 static void print_json(const char *path, const scaf_surface_report_t *r)
 {
-    printf("{\"file\": ");
+    json_write_report_head(stdout, "check");
+    printf(",\n  \"input\": ");
     json_write_string(stdout, path);
-    printf(", \"check\": \"self_intersections\", \"faces\": %d, \"vertices\": %d, "
+    printf(",\n  \"check\": \"self_intersections\", \"faces\": %d, \"vertices\": %d, "
            "\"boundary_edges\": %d, "
            "\"closed\": %s, \"manifold\": %s, \"degenerate_faces\": %d, \"intersecting_pairs\": "
            "%lld, "

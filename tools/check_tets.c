@@ -33,9 +33,10 @@ int check_tets_run(const char *path, int json)
         return exit_code_for(s);
     }
     if (json) {
-        printf("{\"file\": ");
+        json_write_report_head(stdout, "check");
+        printf(",\n  \"input\": ");
         json_write_string(stdout, path);
-        printf(", \"check\": \"tet_orientation\", \"tets\": %d, \"positive\": %d, \"inverted\": "
+        printf(",\n  \"check\": \"tet_orientation\", \"tets\": %d, \"positive\": %d, \"inverted\": "
                "%d, "
                "\"degenerate\": %d, \"first_bad\": %d, \"valid\": %s}\n",
                r.tets, r.positive, r.inverted, r.degenerate, r.first_bad,

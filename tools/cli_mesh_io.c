@@ -187,9 +187,9 @@ scaf_status cli_write_uv_grouped(const char *cmd, const char *in, const mesh_rea
     if (info && info->format == MESH_FORMAT_OBJ) {
         size_t n;
         const char *text = !strcmp(in, "-") ? cli_stdin_data(&n) : NULL;
-        scaf_status st =
-            text ? obj_rewrite_uv_text_grouped("<stdin>", text, n, out, o, face_group, err)
-                 : obj_rewrite_uv_grouped(in, out, o, face_group, err);
+        scaf_status st = text
+            ? obj_rewrite_uv_text_grouped("<stdin>", text, n, out, o, face_group, err)
+            : obj_rewrite_uv_grouped(in, out, o, face_group, err);
         if (st != SCAF_ERR_MESH) return st;
         fprintf(stderr,
                 "scaf %s: warning: %s; writing a plain OBJ (normals, materials and groups not "

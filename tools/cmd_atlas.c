@@ -63,7 +63,8 @@ static void usage(FILE *o)
             "Polygons are fan-triangulated. UVs: OBJ vt; PLY face texcoord lists or vertex\n"
             "s,t / u,v / texture_u,texture_v. -o OUT.ply writes a binary PLY with a\n"
             "texcoord list per face (the corners of a seam differ).\n"
-            "\n"
+            "\n");
+    fprintf(o,
             "options:\n"
             "  -o, --output FILE        output OBJ (required)\n"
             "  --seams S                where the charts are cut: input (the vt seams; each\n"

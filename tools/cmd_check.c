@@ -74,7 +74,8 @@ static void print_json(const char *path, const bij_report *r, double gap, double
     json_write_report_head(stdout, "check");
     printf(",\n  \"input\": ");
     json_write_string(stdout, path);
-    printf(",\n  \"triangles\": %d, \"positive\": %d, \"flipped\": %d, \"degenerate\": %d, "
+    printf(",\n  \"check\": \"uv_bijectivity\", \"triangles\": %d, \"positive\": %d, \"flipped\": "
+           "%d, \"degenerate\": %d, "
            "\"charts\": %d, \"mirrored_charts\": %d, \"mixed_charts\": %d, "
            "\"boundary_edges\": %d, \"boundary_loops\": %d, \"boundary_crossings\": %lld, "
            "\"boundary_touchings\": %lld, \"boundary_foldbacks\": %lld, \"folded_edges\": %d, "

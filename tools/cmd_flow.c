@@ -86,16 +86,17 @@ static scaf_status write_report(const char *path, const char *in, double delta, 
     scaf_status st = atomic_open(&a, path, err);
     if (st != SCAF_OK) return st;
     FILE *o = a.f;
-    fputs("{\n  \"input\": ", o);
+    json_write_report_head(o, "flow");
+    fputs(",\n  \"input\": ", o);
     json_write_string(o, in);
     fputs(",\n  \"delta\": ", o);
     json_write_number(o, delta);
-    fprintf(o, ",\n  \"until_free\": %s,\n  \"steps\": %d", until_free ? "true" : "false",
+    fprintf(o, ",\n  \"until_free\": %s,\n  \"flow_steps\": %d", until_free ? "true" : "false",
             g->steps);
     if (until_free)
         fprintf(o, ",\n  \"input_defects\": %lld,\n  \"intersection_free\": %s", g->input_defects,
                 (g->steps ? g->defects[g->steps - 1] : g->input_defects) == 0 ? "true" : "false");
-    fputs(",\n  \"per_step\": [", o);
+    fputs(",\n  \"flow\": [", o);
     for (int s = 0; s < g->steps; s++) {
         fprintf(o, "%s\n    {\"step\": %d, \"seconds\": ", s ? "," : "", s + 1);
         json_write_number(o, g->seconds[s]);

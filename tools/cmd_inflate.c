@@ -101,11 +101,12 @@ static scaf_status write_report(const char *path, const char *in, double K, cons
     scaf_status st = atomic_open(&a, path, err);
     if (st != SCAF_OK) return st;
     FILE *o = a.f;
-    fputs("{\n  \"input\": ", o);
+    json_write_report_head(o, "inflate");
+    fputs(",\n  \"input\": ", o);
     json_write_string(o, in);
     fputs(",\n  \"scale\": ", o);
     json_write_number(o, K);
-    fprintf(o, ",\n  \"iterations\": %d,\n  \"box_lo\": [", g->n);
+    fprintf(o, ",\n  \"iteration_count\": %d,\n  \"box_lo\": [", g->n);
     for (int k = 0; k < 3; k++) {
         if (k) fputs(", ", o);
         json_write_number(o, g->box_lo[k]);
@@ -119,7 +120,7 @@ static scaf_status write_report(const char *path, const char *in, double K, cons
     json_write_number(o, g->diag0);
     fputs(",\n  \"bbox_diagonal_after\": ", o);
     json_write_number(o, g->diag1);
-    fputs(",\n  \"per_iteration\": [", o);
+    fputs(",\n  \"iterations\": [", o);
     for (int i = 0; i < g->n; i++) {
         const inflate_iteration *r = &g->it[i];
         fprintf(o, "%s\n    {\"iteration\": %d, \"energy\": ", i ? "," : "", r->iteration);

@@ -161,9 +161,10 @@ static scaf_status write_report(const char *path, const char *in,
     scaf_status st = atomic_open(&a, path, err);
     if (st != SCAF_OK) return st;
     FILE *o = a.f;
-    fputs("{\n  \"input\": ", o);
+    json_write_report_head(o, "untangle");
+    fputs(",\n  \"input\": ", o);
     json_write_string(o, in);
-    fprintf(o, ",\n  \"vertices\": %d,\n  \"faces\": %d,\n  \"diagonal\": ", nv, nf);
+    fprintf(o, ",\n  \"mesh\": {\"vertices\": %d, \"faces\": %d},\n  \"diagonal\": ", nv, nf);
     json_write_number(o, r->diagonal_before);
     fprintf(o,
             ",\n  \"input_pairs\": %lld,\n  \"already_free\": %s,\n  \"delta\": ", r->input_defects,
@@ -176,7 +177,8 @@ static scaf_status write_report(const char *path, const char *in,
     fputs(",\n  \"anchor\": ", o);
     json_write_number(o, opt->anchor);
     fprintf(o,
-            ",\n  \"iterations\": %d,\n  \"best_iteration\": %d,\n  \"stop_reason\": \"%s\",\n  "
+            ",\n  \"iteration_count\": %d,\n  \"best_iteration\": %d,\n  \"stop_reason\": "
+            "\"%s\",\n  "
             "\"rms\": ",
             r->iterations, r->best_iteration, scaf_untangle_stop_name(r->stop));
     json_write_number(o, r->rms);
@@ -186,7 +188,7 @@ static scaf_status write_report(const char *path, const char *in,
             opt->verify ? "true" : "false");
     json_write_number(o, seconds);
     for (int phase = 0; phase < 2; phase++) {
-        fputs(phase ? ",\n  \"per_iteration\": [" : ",\n  \"per_flow_step\": [", o);
+        fputs(phase ? ",\n  \"iterations\": [" : ",\n  \"flow\": [", o);
         int first = 1;
         for (int i = 0; i < log->nlog; i++) {
             if ((int)log->log[i].phase != phase) continue;

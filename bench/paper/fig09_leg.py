@@ -38,7 +38,7 @@ def body(fig):
     fig.claim("TetGen meshes the result (scaf tet: exit %d, every tet checked positive)" % code, code == 0)
     if code == 0:
         os.remove(fig.tmp("leg_free.mesh"))
-    its = d["per_iteration"]
+    its = d["iterations"]
     rms = d["rms"]
     if rms is not None:
         fig.claim("the result stays close to the input: RMS distance %.4f of the diagonal (< 0.02)" % rms, rms < 0.02)

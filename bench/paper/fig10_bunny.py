@@ -30,7 +30,7 @@ def body(fig):
     fig.claim("every one of the %d tets is positive (scaf check on the .mesh)" % ct["tets"], ct["valid"])
     grow = d["bbox_diagonal_after"] / d["bbox_diagonal_before"]
     fig.claim("the surface grew: bounding-box diagonal x%.2f" % grow, grow > 1.5)
-    its = d["per_iteration"]
+    its = d["iterations"]
     fig.picture("fig10_bunny.png", "the bunny (left) and after %d iterations toward x30 in its box (right)" % n)
     secs = sum(i["seconds"] for i in its)
     fig.row("closed/bunny.obj", "Bunny (Fig. 10)", False, v=568, f=1132, vs0=its[0]["scaffold_vertices"],

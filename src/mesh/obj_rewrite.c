@@ -268,8 +268,8 @@ scaf_status obj_rewrite_uv_text(const char *name, const char *data, size_t size,
 }
 
 scaf_status obj_rewrite_uv_text_grouped(const char *name, const char *data, size_t size,
-                                        const char *out_path, const mesh *m,
-                                        const int *face_group, scaf_error *err)
+                                        const char *out_path, const mesh *m, const int *face_group,
+                                        scaf_error *err)
 {
     if (!name || (!data && size))
         return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv_text: no text");

@@ -50,7 +50,7 @@ scaf_status obj_rewrite_uv_text(const char *name, const char *data, size_t size,
                                 const char *out_path, const mesh *m, scaf_error *err);
 /* ... with face_group as in obj_rewrite_uv_grouped (e.g. standard input). */
 scaf_status obj_rewrite_uv_text_grouped(const char *name, const char *data, size_t size,
-                                        const char *out_path, const mesh *m,
-                                        const int *face_group, scaf_error *err);
+                                        const char *out_path, const mesh *m, const int *face_group,
+                                        scaf_error *err);
 
 #endif /* SCAF_MESH_OBJ_REWRITE_H */

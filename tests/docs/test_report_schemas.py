@@ -95,9 +95,21 @@ def main(argv):
         run("info", "--json", "cube.obj", stdout="info.json")
         run("deform", "spiral.obj", "--targets", "spiral.targets.json", "-o", "spiral_out.obj",
             "--iterations", "3", "--report", "deform.json", "--quiet")
+        run("gen", "icosphere", "--size", "3", "-o", "ball.obj")
+        run("gen", "dented", "-o", "dented.obj")
+        run("inflate", "ball.obj", "-o", "ball_big.obj", "--scale", "1.5", "--iterations", "2",
+            "--tets", "ball_big.mesh", "--report", "inflate.json", "--quiet")
+        run("untangle", "dented.obj", "-o", "dented_free.obj", "--verify", "--report", "untangle.json",
+            "--quiet")
+        run("flow", "dented.obj", "-o", "dented_flow.obj", "--steps", "20", "--until-free",
+            "--report", "flow.json", "--quiet")
+        run("check", "--json", "--3d", "ball_big.obj", stdout="check_3d.json")
+        run("check", "--json", "ball_big.mesh", stdout="check_tets.json")
         for command, name in (("param", "param.json"), ("atlas", "atlas.json"), ("check", "check.json"),
                               ("check", "check_param.json"), ("info", "info.json"),
-                              ("deform", "deform.json")):
+                              ("deform", "deform.json"), ("inflate", "inflate.json"),
+                              ("untangle", "untangle.json"), ("flow", "flow.json"),
+                              ("check", "check_3d.json"), ("check", "check_tets.json")):
             validate(command, load(name), name)
 
         # the validation bites: an unknown key, a wrong type
