@@ -67,7 +67,7 @@ static void until_free(void **state)
                      0);
     char *json = test_slurp(rep);
     assert_non_null(json);
-    long long steps = test_json_field(json, "steps");
+    long long steps = test_json_field(json, "flow_steps");
     assert_true(steps > 1 && steps <= 30);
     assert_true(test_json_field(json, "input_defects") > 0);
     assert_int_equal(test_json_field(json, "intersection_free"), 1);
@@ -240,7 +240,7 @@ static void dented_sample(void **state)
                      0);
     char *json = test_slurp(rep);
     assert_non_null(json);
-    assert_true(test_json_field(json, "steps") <= 6);
+    assert_true(test_json_field(json, "flow_steps") <= 6);
     free(json);
     assert_int_equal(test_run("'%s' check --3d '%s' >/dev/null", SCAF_BINARY, res), 0);
     int W, H, inside, drawn;

@@ -49,7 +49,7 @@ static void grows_and_writes(void **state)
     assert_int_equal(test_run("'%s' check '%s' >/dev/null", SCAF_BINARY, tets), 0);
     char *json = test_slurp(rep);
     assert_non_null(json);
-    assert_int_equal(test_json_field(json, "iterations"), 8);
+    assert_int_equal(test_json_field(json, "iteration_count"), 8);
     assert_int_equal(count(json, "\"quality_p5\""), 8);
     free(json);
     mesh a, b;
