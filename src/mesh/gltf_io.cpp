@@ -94,6 +94,32 @@ std::string folder_of(const char *name)
     return k == std::string::npos ? std::string() : s.substr(0, k);
 }
 
+// The deepest nesting of JSON arrays and objects in [p, p + n) (strings
+// skipped). tinygltf turns extras and extensions into its own values by
+// recursion, one call per level: a hostile file nested a million deep
+// would overflow the stack, so such a file is refused before parsing.
+size_t json_depth(const char *p, size_t n)
+{
+    size_t depth = 0, deepest = 0;
+    bool in_string = false;
+    for (size_t i = 0; i < n; i++) {
+        char c = p[i];
+        if (in_string) {
+            if (c == '\\') i++;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            depth--;
+        }
+    }
+    return deepest;
+}
+
+const size_t max_json_depth = 512;
+
 void load(const char *data, size_t size, const char *name, tinygltf::Model &model)
 {
     if (size > 0xffffffffu) refuse(SCAF_ERR_PARSE, "larger than 4 GiB, more than tinygltf reads");
@@ -106,6 +132,11 @@ void load(const char *data, size_t size, const char *name, tinygltf::Model &mode
         if (size < 20)
             refuse(SCAF_ERR_PARSE,
                    "truncated .glb (" + std::to_string(size) + " bytes, the header needs 20)");
+        uint32_t json_length = 0;
+        std::memcpy(&json_length, data + 12, 4); // the first chunk: JSON (checked by tinygltf)
+        if (json_depth(data + 20, std::min<size_t>(json_length, size - 20)) > max_json_depth)
+            refuse(SCAF_ERR_PARSE,
+                   "JSON nested more than " + std::to_string(max_json_depth) + " levels deep");
         ok = loader.LoadBinaryFromMemory(&model, &err, &warn,
                                          reinterpret_cast<const unsigned char *>(data),
                                          unsigned(size), folder_of(name));
@@ -116,6 +147,9 @@ void load(const char *data, size_t size, const char *name, tinygltf::Model &mode
             i++;
         if (i == size || data[i] != '{')
             refuse(SCAF_ERR_PARSE, "not glTF (neither the .glb magic 'glTF' nor a JSON object)");
+        if (json_depth(data, size) > max_json_depth)
+            refuse(SCAF_ERR_PARSE,
+                   "JSON nested more than " + std::to_string(max_json_depth) + " levels deep");
         ok = loader.LoadASCIIFromString(&model, &err, &warn, data, unsigned(size), folder_of(name));
     }
     if (!ok) {

@@ -119,6 +119,12 @@ def bad_cases(d, doc, binbuf):
     huge = copy.deepcopy(doc)
     huge["accessors"][huge["meshes"][0]["primitives"][0]["attributes"]["POSITION"]]["count"] = 10**9
     out.append(("huge_count.glb", (huge, binbuf), 3, ["mesh 0 primitive 0"]))
+    deep = copy.deepcopy(doc)  # refused before tinygltf's recursive walk of extras
+    nest = []
+    for _ in range(600):  # past scaf's 512 levels, within Python's recursion limit
+        nest = [nest]
+    deep["extras"]["deep"] = nest
+    out.append(("deep.gltf", (deep, binbuf), 3, ["nested"]))
     return out
 
 
