@@ -242,8 +242,28 @@ try {
     if ((await view()).s !== s) fail("the release refitted the zoomed view");
     // Ctrl-Z: back to the layout before that drag, number for number
     await pressAndWait("Control+z");
-    if (JSON.stringify((await editor(() => window.scafEditor.state())).uv) !== kept2)
-      fail("Ctrl-Z did not restore the layout before the drag");
+    const uvNow = async () => JSON.stringify((await editor(() => window.scafEditor.state())).uv);
+    if (await uvNow() !== kept2) fail("Ctrl-Z did not restore the layout before the drag");
+    // Ctrl-Shift-Z and Ctrl-Y: the dragged layout again, number for number
+    await pressAndWait("Control+Shift+z");
+    if (await uvNow() !== JSON.stringify(moved.uv)) fail("Ctrl-Shift-Z did not redo the drag");
+    if (!(await page.isDisabled("#redo"))) fail("redo enabled with nothing to redo");
+    await pressAndWait("Control+z");
+    await pressAndWait("Control+y");
+    if (await uvNow() !== JSON.stringify(moved.uv)) fail("Ctrl-Y did not redo the drag");
+    // the history is the server's: a reload of the page undoes the same
+    const leave = d => d.accept();  // the unsaved-changes question: leave
+    page.on("dialog", leave);
+    await page.reload();
+    page.off("dialog", leave);
+    await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.ready || window.scafEditor.error));
+    if (await uvNow() !== JSON.stringify(moved.uv)) fail("the reload did not show the layout");
+    await pressAndWait("Control+z");
+    if (await uvNow() !== kept2) fail("after a reload Ctrl-Z did not restore the layout before the drag");
+    await page.mouse.move(cursor[0], cursor[1]);
+    await page.mouse.wheel(0, -1500);  // the zoom again (the reload fitted the view)
+    await page.evaluate(s0 => window.scafEditor.when(
+      () => Math.abs(window.scafEditor.view().s / s0 - Math.pow(1.25, 15)) < 1e-9), s0);
   }
   // pan: the middle button and space + left button move the view with the
   // mouse, exactly, and never the layout
