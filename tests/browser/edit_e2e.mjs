@@ -8,8 +8,14 @@
 // browser: nothing downloaded), drags one chart with the mouse onto its
 // neighbour, waits until the server has answered every request (the page's
 // own counters, never a sleep), screenshots the page into WORK_DIR, shades
-// distortion, turns a chart (shift + drag), drags a vertex, undoes both
-// (the layout comes back number for number), optimizes and compacts, clicks
+// distortion (its legend: labels and bar against the page's own colour
+// scale), turns a chart (shift + drag), drags a vertex, undoes both
+// (the layout comes back number for number), checks the unit square and
+// the texel grid, zooms with the wheel (the point under the cursor stays
+// within a pixel), drags at that zoom (the motion asked for is the mouse's
+// through the view), Ctrl-Z / Ctrl-Shift-Z / Ctrl-Y (number for number, also
+// after a reload of the page), pans (middle button, space + drag, arrows:
+// exactly with the mouse, no request), F fits; optimizes and compacts, clicks
 // save and checks the saved file with `scaf check`: bijective, every two
 // charts at least the padding apart. Then a request with a wrong token is
 // refused (403) and changes nothing. The unsaved-changes mark shows after
