@@ -150,9 +150,10 @@ static void reply_state(edit_api *a, edit_response *rs, const char *extra_key, i
     json_key_number(j.f, "energy", e);
     json_key_number(j.f, "objective", scaf_drag_energy(a->drag));
     json_key_number(j.f, "efficiency", scaf_drag_packing_efficiency(a->drag));
-    fprintf(j.f, ", \"handles\": %d, \"pinned\": %d, \"undo\": %d, \"unsaved\": %s",
+    fprintf(j.f, ", \"handles\": %d, \"pinned\": %d, \"undo\": %d, \"redo\": %d, \"unsaved\": %s",
             scaf_drag_handle_count(a->drag), scaf_drag_pinned_count(a->drag),
-            scaf_drag_undo_count(a->drag), edit_api_unsaved(a) ? "true" : "false");
+            scaf_drag_undo_count(a->drag), scaf_drag_redo_count(a->drag),
+            edit_api_unsaved(a) ? "true" : "false");
     json_key_number(j.f, "max_handle_error", scaf_drag_max_handle_error(a->drag));
     fputs(", ", j.f);
     write_doubles(j.f, "uv", a->uv, 2 * (size_t)a->nuv);
@@ -421,6 +422,23 @@ static void undo(edit_api *a, const edit_request *rq, edit_response *rs)
     reply_state(a, rs, NULL, 0);
 }
 
+/* Redo: the layout the last undo left, bit for bit (the drag API keeps it
+ * until the next change). */
+static void redo(edit_api *a, const edit_request *rq, edit_response *rs)
+{
+    if (!parse(rq, rs, NULL, 0)) return;
+    if (scaf_drag_redo_count(a->drag) == 0) {
+        reply_error(rs, 409, "nothing to redo");
+        return;
+    }
+    a->changes++;
+    if (scaf_drag_redo(a->drag) != SCAF_OK) {
+        reply_failure(a, rs, "redo");
+        return;
+    }
+    reply_state(a, rs, NULL, 0);
+}
+
 /* The output checked again before each save: it may have become a link
  * to the input (or the input a hard link of it) since the start. The
  * rules of cli_outputs_check (input, autosave and output as they are
@@ -574,6 +592,7 @@ enum {
     R_OPTIMIZE,
     R_COMPACT,
     R_UNDO,
+    R_REDO,
     R_SAVE
 };
 
@@ -590,6 +609,7 @@ static const route routes[] = {
     {"/api/optimize", "POST", R_OPTIMIZE},
     {"/api/compact", "POST", R_COMPACT},
     {"/api/undo", "POST", R_UNDO},
+    {"/api/redo", "POST", R_REDO},
     {"/api/save", "POST", R_SAVE},
 };
 
@@ -643,6 +663,7 @@ void edit_api_handle(void *user, const edit_request *rq, edit_response *rs)
     case R_OPTIMIZE: run(a, rq, rs, 0); return;
     case R_COMPACT: run(a, rq, rs, 1); return;
     case R_UNDO: undo(a, rq, rs); return;
+    case R_REDO: redo(a, rq, rs); return;
     case R_SAVE: save(a, rq, rs); return;
     }
     reply_error(rs, 500, "internal error: route %d", r->kind);

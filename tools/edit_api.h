@@ -28,6 +28,9 @@
  *                       their count
  *   POST /api/undo      {}: back to the layout before the last grab,
  *                       optimize or compact (409 when there is none)
+ *   POST /api/redo      {}: the layout the last undo left, bit for bit
+ *                       (409 when there is none: nothing undone since
+ *                       the last grab, optimize or compact)
  *   POST /api/save      {}: the layout normalized into the unit square,
  *                       proved bijective with the padding kept (exact),
  *                       written atomically to the output OBJ: the input
@@ -54,7 +57,7 @@
  * JSON {"error": "..."} that says why, before anything is touched:
  * 400 malformed JSON, unknown key, unknown chart or vertex, a value out
  * of range (a drag farther than 1000 times the layout's size); 403 wrong Host, Origin or token; 404 unknown path; 405 wrong
- * method; 409 nothing to undo; 413 a body over EDIT_MAX_BODY bytes.
+ * method; 409 nothing to undo or redo; 413 a body over EDIT_MAX_BODY bytes.
  * 500: the library failed (its message; the layout of the last finished
  * iteration stays).
  */

@@ -263,6 +263,14 @@ SCAF_API scaf_status scaf_drag_checkpoint(scaf_drag_t *d);
 SCAF_API scaf_status scaf_drag_undo(scaf_drag_t *d);
 SCAF_API int scaf_drag_undo_count(const scaf_drag_t *d);
 
+/* Redo: each undo keeps the layout it left; scaf_drag_redo restores the
+ * last one bit for bit (and checkpoints the current one, so undo goes back
+ * again). A checkpoint, a step or a compaction drops what can be redone
+ * (SCAF_ERR_USAGE when nothing is left). scaf_drag_redo_count: layouts
+ * that can be redone. */
+SCAF_API scaf_status scaf_drag_redo(scaf_drag_t *d);
+SCAF_API int scaf_drag_redo_count(const scaf_drag_t *d);
+
 /* Compaction, the atlas's second phase, from the current layout: n >= 1
  * iterations with a contracting scaffold (the box pushed inward), charts
  * packing tighter with the padding kept, handles ignored; stops early when

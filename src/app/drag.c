@@ -51,6 +51,8 @@ struct scaf_drag {
     int nhard, cap_hard;
     drag_state *stack; /* checkpoints, oldest first */
     int nstack;
+    drag_state *redo; /* layouts undone, the last undone last; a change drops them */
+    int nredo;
     /* the verified output of the current layout (out_state: 0 not
      * computed, 1 verified, -1 failed with out_err) */
     int out_state;
@@ -139,12 +141,21 @@ scaf_status scaf_drag_set_options(scaf_drag_t *d, const scaf_drag_options_t *opt
 
 /* ---- mesh ---------------------------------------------------------------------- */
 
+static void drop_redo(scaf_drag_t *d)
+{
+    for (int i = 0; i < d->nredo; i++) free(d->redo[i].uv);
+    free(d->redo);
+    d->redo = NULL;
+    d->nredo = 0;
+}
+
 static void drop_stack(scaf_drag_t *d)
 {
     for (int i = 0; i < d->nstack; i++) free(d->stack[i].uv);
     free(d->stack);
     d->stack = NULL;
     d->nstack = 0;
+    drop_redo(d);
 }
 
 static void drop_mesh(scaf_drag_t *d)
@@ -492,28 +503,38 @@ scaf_status scaf_drag_cancel(scaf_drag_t *d)
     return SCAF_OK;
 }
 
+/* The current layout pushed on *stack (at most undo_depth, the oldest
+ * dropped); on failure nothing changes. */
+static scaf_status push_current(scaf_drag_t *d, drag_state **stack, int *n, const char *what)
+{
+    drag_state s = {malloc(sizeof(double) * 2 * (size_t)d->at.nw), 0};
+    if (!s.uv) return err_nomem(&d->err, what);
+    save_state(d, &s);
+    drag_state *q =
+        *n == d->opt.undo_depth ? *stack : realloc(*stack, sizeof *q * (size_t)(*n + 1));
+    if (!q) {
+        free(s.uv);
+        return err_nomem(&d->err, what);
+    }
+    if (*n == d->opt.undo_depth) { /* full: the oldest goes */
+        free(q[0].uv);
+        memmove(q, q + 1, sizeof *q * (size_t)(*n - 1));
+        (*n)--;
+    }
+    *stack = q;
+    q[(*n)++] = s;
+    return SCAF_OK;
+}
+
 scaf_status scaf_drag_checkpoint(scaf_drag_t *d)
 {
     if (!d) return SCAF_ERR_USAGE;
     err_clear(&d->err);
     scaf_status st = need_mesh(d);
     if (st != SCAF_OK) return st;
-    drag_state s = {malloc(sizeof(double) * 2 * (size_t)d->at.nw), 0};
-    if (!s.uv) return err_nomem(&d->err, "checkpoint");
-    save_state(d, &s);
-    if (d->nstack == d->opt.undo_depth) { /* full: the oldest goes */
-        free(d->stack[0].uv);
-        memmove(d->stack, d->stack + 1, sizeof *d->stack * (size_t)(d->nstack - 1));
-        d->nstack--;
-    }
-    drag_state *q = realloc(d->stack, sizeof *q * (size_t)(d->nstack + 1));
-    if (!q) {
-        free(s.uv);
-        return err_nomem(&d->err, "checkpoint");
-    }
-    d->stack = q;
-    d->stack[d->nstack++] = s;
-    return SCAF_OK;
+    st = push_current(d, &d->stack, &d->nstack, "checkpoint");
+    if (st == SCAF_OK) drop_redo(d); /* a new change: what was undone is gone */
+    return st;
 }
 
 scaf_status scaf_drag_undo(scaf_drag_t *d)
@@ -524,6 +545,8 @@ scaf_status scaf_drag_undo(scaf_drag_t *d)
     if (st != SCAF_OK) return st;
     if (d->nstack == 0)
         return err_set(&d->err, SCAF_ERR_USAGE, "nothing to undo: no checkpoint is left");
+    st = push_current(d, &d->redo, &d->nredo, "undo"); /* for scaf_drag_redo */
+    if (st != SCAF_OK) return st;
     drag_state *s = &d->stack[--d->nstack];
     restore_state(d, s);
     free(s->uv);
@@ -532,6 +555,26 @@ scaf_status scaf_drag_undo(scaf_drag_t *d)
 }
 
 int scaf_drag_undo_count(const scaf_drag_t *d) { return d && d->has_mesh ? d->nstack : 0; }
+
+scaf_status scaf_drag_redo(scaf_drag_t *d)
+{
+    if (!d) return SCAF_ERR_USAGE;
+    err_clear(&d->err);
+    scaf_status st = need_mesh(d);
+    if (st != SCAF_OK) return st;
+    if (d->nredo == 0)
+        return err_set(&d->err, SCAF_ERR_USAGE,
+                       "nothing to redo: no undo since the last checkpoint or step");
+    st = push_current(d, &d->stack, &d->nstack, "redo"); /* undo goes back again */
+    if (st != SCAF_OK) return st;
+    drag_state *s = &d->redo[--d->nredo];
+    restore_state(d, s);
+    free(s->uv);
+    d->has_before = 0;
+    return SCAF_OK;
+}
+
+int scaf_drag_redo_count(const scaf_drag_t *d) { return d && d->has_mesh ? d->nredo : 0; }
 
 int scaf_drag_iterations(const scaf_drag_t *d)
 {
@@ -549,6 +592,7 @@ static scaf_status iterate(scaf_drag_t *d, int n, scaf_param_progress_fn progres
     save_state(d, &d->before);
     d->has_before = 1;
     d->out_state = 0;
+    drop_redo(d); /* the layout changes: what was undone is gone */
     for (int k = 0; k < n; k++) {
         scaf_iteration_info_t info;
         scaf_status st = scaf_loop_step(&d->at.loop, &info, &d->err);

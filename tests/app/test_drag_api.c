@@ -553,6 +553,62 @@ static void test_cancel_and_undo_restore_bytes(void **state)
     scaf_drag_destroy(d);
 }
 
+/* Redo restores what each undo left, bit for bit, undo goes back again;
+ * a checkpoint or a step drops what can be redone. */
+static void test_redo_restores_bytes(void **state)
+{
+    (void)state;
+    patches m;
+    make_patches(&m, 2);
+    scaf_drag_t *d = drag_on(&m, NULL);
+    layout a, b, c, r;
+    layout_read(d, &a);
+    assert_int_equal(scaf_drag_redo(d), SCAF_ERR_USAGE); /* nothing undone */
+    assert_true(strstr(scaf_drag_error(d), "redo") != NULL);
+    assert_int_equal(scaf_drag_checkpoint(d), SCAF_OK);
+    assert_int_equal(scaf_drag_move_chart(d, 0, 0.5, 0.2, 0.3), SCAF_OK);
+    assert_int_equal(scaf_drag_step(d, 2, NULL, NULL), SCAF_OK);
+    assert_int_equal(scaf_drag_checkpoint(d), SCAF_OK);
+    layout_read(d, &b);
+    assert_int_equal(scaf_drag_step(d, 2, NULL, NULL), SCAF_OK);
+    layout_read(d, &c);
+    assert_int_equal(scaf_drag_undo(d), SCAF_OK);
+    assert_int_equal(scaf_drag_undo(d), SCAF_OK);
+    assert_int_equal(scaf_drag_redo_count(d), 2);
+    assert_int_equal(scaf_drag_undo_count(d), 0);
+    assert_int_equal(scaf_drag_redo(d), SCAF_OK);
+    layout_read(d, &r);
+    assert_memory_equal(b.UV, r.UV, sizeof(double) * 2 * (size_t)a.nw);
+    assert_int_equal(scaf_drag_iterations(d), 2);
+    layout_free(&r);
+    assert_int_equal(scaf_drag_redo(d), SCAF_OK);
+    layout_read(d, &r);
+    assert_memory_equal(c.UV, r.UV, sizeof(double) * 2 * (size_t)a.nw);
+    assert_int_equal(scaf_drag_iterations(d), 4);
+    layout_free(&r);
+    assert_int_equal(scaf_drag_redo_count(d), 0);
+    assert_int_equal(scaf_drag_undo_count(d), 2);
+    /* undo after redo: back again */
+    assert_int_equal(scaf_drag_undo(d), SCAF_OK);
+    layout_read(d, &r);
+    assert_memory_equal(b.UV, r.UV, sizeof(double) * 2 * (size_t)a.nw);
+    layout_free(&r);
+    assert_int_equal(scaf_drag_redo_count(d), 1);
+    /* a step drops the redo; so does a checkpoint */
+    assert_int_equal(scaf_drag_step(d, 1, NULL, NULL), SCAF_OK);
+    assert_int_equal(scaf_drag_redo_count(d), 0);
+    assert_int_equal(scaf_drag_redo(d), SCAF_ERR_USAGE);
+    assert_int_equal(scaf_drag_undo(d), SCAF_OK);
+    assert_int_equal(scaf_drag_redo_count(d), 1);
+    assert_int_equal(scaf_drag_checkpoint(d), SCAF_OK);
+    assert_int_equal(scaf_drag_redo_count(d), 0);
+    assert_valid(d, scaf_drag_options_default().padding);
+    layout_free(&a);
+    layout_free(&b);
+    layout_free(&c);
+    scaf_drag_destroy(d);
+}
+
 /* The stack keeps undo_depth checkpoints, the oldest dropped. */
 static void test_undo_depth(void **state)
 {
@@ -793,6 +849,7 @@ int main(void)
         cmocka_unit_test(test_rigid_rotation),
         cmocka_unit_test(test_drag_vertex),
         cmocka_unit_test(test_cancel_and_undo_restore_bytes),
+        cmocka_unit_test(test_redo_restores_bytes),
         cmocka_unit_test(test_undo_depth),
         cmocka_unit_test(test_progress_cancels),
         cmocka_unit_test(test_start_from_input),

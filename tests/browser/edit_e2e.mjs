@@ -8,8 +8,14 @@
 // browser: nothing downloaded), drags one chart with the mouse onto its
 // neighbour, waits until the server has answered every request (the page's
 // own counters, never a sleep), screenshots the page into WORK_DIR, shades
-// distortion, turns a chart (shift + drag), drags a vertex, undoes both
-// (the layout comes back number for number), optimizes and compacts, clicks
+// distortion (its legend: labels and bar against the page's own colour
+// scale), turns a chart (shift + drag), drags a vertex, undoes both
+// (the layout comes back number for number), checks the unit square and
+// the texel grid, zooms with the wheel (the point under the cursor stays
+// within a pixel), drags at that zoom (the motion asked for is the mouse's
+// through the view), Ctrl-Z / Ctrl-Shift-Z / Ctrl-Y (number for number, also
+// after a reload of the page), pans (middle button, space + drag, arrows:
+// exactly with the mouse, no request), F fits; optimizes and compacts, clicks
 // save and checks the saved file with `scaf check`: bijective, every two
 // charts at least the padding apart. Then a request with a wrong token is
 // refused (403) and changes nothing. The unsaved-changes mark shows after
@@ -124,6 +130,27 @@ try {
   }).then(() => window.scafEditor.distortion().face_energy));
   if (energies.length !== 192 || !energies.every(e => e >= 4 - 1e-9))
     fail("distortion: " + energies.length + " faces, min " + Math.min(...energies));
+  // the legend shows with the shading: its bar painted with the page's
+  // own colour scale at every tick, its labels that scale's numbers
+  if (!(await page.isVisible("#legend"))) fail("no legend beside the distortion shading");
+  const legend = await page.evaluate(() => {
+    const bar = document.getElementById("legend-bar").getContext("2d");
+    const texts = [...document.querySelectorAll("#legend-ticks span")].map(t => t.textContent);
+    return { texts, ticks: window.scafEditor.legend().map(t => {
+      const d = bar.getImageData(t.column, 6, 1, 1).data;
+      return { label: t.label, value: t.value, bar: [d[0], d[1], d[2]], heat: window.scafEditor.heat(t.value) };
+    }) };
+  });
+  const rgb = c => c.match(/\d+/g).map(Number);
+  if (legend.texts.join(" ") !== "4 5 6 7 8+" || legend.ticks.map(t => t.label).join(" ") !== "4 5 6 7 8+")
+    fail("legend labels: " + JSON.stringify(legend.texts));
+  for (const t of legend.ticks) {
+    const want = rgb(t.heat);
+    if (want.some((c, k) => Math.abs(c - t.bar[k]) > 2)) fail(`legend at ${t.label}: bar ${t.bar}, the shading ${t.heat}`);
+  }
+  if (legend.ticks[0].heat !== "rgb(255,255,255)" || legend.ticks[4].heat !== "rgb(255,0,0)")
+    fail("the shading's scale is not white at 4 .. red at 8: " + JSON.stringify(legend.ticks));
+  await page.screenshot({ path: path.join(work, "scaf-edit-distortion.png") });
 
   // a rotation (shift + drag) and a vertex drag (the radio button), then
   // undo twice with the button: back to the layout after the first drag,
@@ -159,6 +186,131 @@ try {
   await undoOnce();
   if (JSON.stringify((await page.evaluate(() => window.scafEditor.state())).uv) !== kept)
     fail("two undos did not restore the layout after the first drag");
+
+  // ---- the view: zoom to the cursor, pan, fit; the unit square and texels
+  const editor = fn => page.evaluate(fn);
+  const viewChanges = () => editor(() => window.scafEditor.viewChanges);
+  const view = () => editor(() => window.scafEditor.view());
+  const toPage = uv => page.evaluate(uv => window.scafEditor.toPage(uv[0], uv[1]), uv);
+  const toLayout = p => page.evaluate(p => window.scafEditor.toLayout(p[0], p[1]), p);
+  // a key whose request the page sends at once; waits for its answer
+  const pressAndWait = async key => {
+    const r0 = await editor(() => window.scafEditor.requests);
+    await page.keyboard.press(key);
+    await page.evaluate(r0 => window.scafEditor.when(() => window.scafEditor.requests > r0 && window.scafEditor.idle()), r0);
+  };
+  const near = (p, q, tol) => Math.hypot(p[0] - q[0], p[1] - q[1]) <= tol;
+  // the unit square: the save's normalization (lower corner, longer side)
+  const fr = await editor(() => window.scafEditor.frame());
+  {
+    const uv = (await editor(() => window.scafEditor.state())).uv;
+    const us = uv.filter((_, i) => i % 2 === 0), vs = uv.filter((_, i) => i % 2 === 1);
+    const side = Math.max(Math.max(...us) - Math.min(...us), Math.max(...vs) - Math.min(...vs));
+    if (fr.u !== Math.min(...us) || fr.v !== Math.min(...vs) || fr.side !== side) fail("unit square " + JSON.stringify(fr));
+  }
+  // fitted: a texel of 1024 is under a pixel, no grid; 64 texels show one
+  const sidePixels = async () => (await toPage([fr.u + fr.side, fr.v]))[0] - (await toPage([fr.u, fr.v]))[0];
+  if (await editor(() => window.scafEditor.grid())) fail("a texel grid at 1024 texels in the fitted view");
+  await page.fill("#resolution", "64");
+  const grid64 = await editor(() => window.scafEditor.grid());
+  if (!grid64 || grid64.resolution !== 64 || Math.abs(grid64.texelPixels - await sidePixels() / 64) > 1e-9 ||
+      grid64.lines !== 130)
+    fail("texel grid at 64: " + JSON.stringify(grid64));
+  await page.fill("#resolution", "1024");
+  // the wheel over a point keeps that layout point under the cursor
+  const c4 = await editor(() => window.scafEditor.chartPoint(4));
+  // (whole pixels: Chromium's wheel events carry integer clientX/Y)
+  const cursor = [Math.round(c4[0]) + 17, Math.round(c4[1]) - 10];
+  const under = await toLayout(cursor);
+  const s0 = (await view()).s;
+  await page.mouse.move(cursor[0], cursor[1]);
+  await page.mouse.wheel(0, -1500);  // fifteen notches in: 1.25^15
+  await page.evaluate(s0 => window.scafEditor.when(
+    () => Math.abs(window.scafEditor.view().s / s0 - Math.pow(1.25, 15)) < 1e-9), s0);
+  const back = await toPage(under);
+  console.log(`zoom x${((await view()).s / s0).toFixed(3)}: the point under the cursor moved ` +
+              `${Math.hypot(back[0] - cursor[0], back[1] - cursor[1]).toExponential(2)} px`);
+  if (!near(back, cursor, 1)) fail(`zoom: the point under the cursor went from ${cursor} to ${back}`);
+  const grid = await editor(() => window.scafEditor.grid());
+  if (!grid || grid.resolution !== 1024 || !(grid.texelPixels >= 4)) fail("no texel grid zoomed in: " + JSON.stringify(grid));
+  await page.screenshot({ path: path.join(work, "scaf-edit-zoom.png") });
+  // dragging at this zoom: the motion asked for is the mouse's through the view
+  {
+    const kept2 = JSON.stringify((await editor(() => window.scafEditor.state())).uv);
+    const s = (await view()).s, dpr = await editor(() => window.devicePixelRatio);
+    await mouseDrag(cursor, [cursor[0] + 40, cursor[1] + 24], 4);
+    const motion = await editor(() => window.scafEditor.lastDrag);
+    if (motion.chart !== 4 || Math.abs(motion.dx - 40 * dpr / s) > 1e-9 * Math.abs(motion.dx) ||
+        Math.abs(motion.dy + 24 * dpr / s) > 1e-9 * Math.abs(motion.dy))
+      fail(`drag at zoom: asked ${JSON.stringify(motion)} for 40, 24 px at scale ${s}`);
+    const moved = await editor(() => window.scafEditor.state());
+    if (JSON.stringify(moved.uv) === kept2) fail("a drag at zoom moved nothing");
+    if ((await view()).s !== s) fail("the release refitted the zoomed view");
+    // Ctrl-Z: back to the layout before that drag, number for number
+    await pressAndWait("Control+z");
+    const uvNow = async () => JSON.stringify((await editor(() => window.scafEditor.state())).uv);
+    if (await uvNow() !== kept2) fail("Ctrl-Z did not restore the layout before the drag");
+    // Ctrl-Shift-Z and Ctrl-Y: the dragged layout again, number for number
+    await pressAndWait("Control+Shift+z");
+    if (await uvNow() !== JSON.stringify(moved.uv)) fail("Ctrl-Shift-Z did not redo the drag");
+    if (!(await page.isDisabled("#redo"))) fail("redo enabled with nothing to redo");
+    await pressAndWait("Control+z");
+    await pressAndWait("Control+y");
+    if (await uvNow() !== JSON.stringify(moved.uv)) fail("Ctrl-Y did not redo the drag");
+    // the history is the server's: a reload of the page undoes the same
+    const leave = d => d.accept();  // the unsaved-changes question: leave
+    page.on("dialog", leave);
+    await page.reload();
+    page.off("dialog", leave);
+    await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.ready || window.scafEditor.error));
+    if (await uvNow() !== JSON.stringify(moved.uv)) fail("the reload did not show the layout");
+    await pressAndWait("Control+z");
+    if (await uvNow() !== kept2) fail("after a reload Ctrl-Z did not restore the layout before the drag");
+    await page.mouse.move(cursor[0], cursor[1]);
+    await page.mouse.wheel(0, -1500);  // the zoom again (the reload fitted the view)
+    await page.evaluate(s0 => window.scafEditor.when(
+      () => Math.abs(window.scafEditor.view().s / s0 - Math.pow(1.25, 15)) < 1e-9), s0);
+  }
+  // pan: the middle button and space + left button move the view with the
+  // mouse, exactly, and never the layout
+  const requests0 = await editor(() => window.scafEditor.requests);
+  for (const how of ["middle", "space"]) {
+    const p = await toPage(under), n = await viewChanges();
+    await page.mouse.move(p[0], p[1]);
+    if (how === "space") await page.keyboard.down(" ");
+    await page.mouse.down({ button: how === "middle" ? "middle" : "left" });
+    await page.mouse.move(p[0] - 30, p[1] + 20);
+    await page.mouse.up({ button: how === "middle" ? "middle" : "left" });
+    if (how === "space") await page.keyboard.up(" ");
+    await page.evaluate(n => window.scafEditor.when(() => window.scafEditor.viewChanges > n), n);
+    const q = await toPage(under);
+    if (!near(q, [p[0] - 30, p[1] + 20], 1e-6)) fail(`pan (${how}): ${p} -> ${q}, not by (-30, 20)`);
+  }
+  if ((await editor(() => window.scafEditor.requests)) !== requests0) fail("panning sent requests");
+  // arrow keys: a tenth of the view; F: the fit
+  {
+    const v0 = await view(), n = await viewChanges();
+    await page.keyboard.press("ArrowRight");
+    await page.evaluate(n => window.scafEditor.when(() => window.scafEditor.viewChanges > n), n);
+    const v1 = await view();
+    const w = await editor(() => Math.min(document.getElementById("view").width, document.getElementById("view").height));
+    if (v1.s !== v0.s || Math.abs(v1.ox - (v0.ox - 0.1 * w)) > 1e-9 || v1.oy !== v0.oy)
+      fail(`ArrowRight: ${JSON.stringify(v0)} -> ${JSON.stringify(v1)}`);
+    await page.keyboard.press("f");
+    await page.evaluate(n => window.scafEditor.when(() => window.scafEditor.view().fitted), n);
+    const fitted = await view();
+    await page.click("#fit");
+    const again = await view();
+    if (JSON.stringify(fitted) !== JSON.stringify(again))
+      fail(`F and the fit button differ: ${JSON.stringify(fitted)} ${JSON.stringify(again)}`);
+    const box = await page.locator("#view").boundingBox();
+    for (let c = 0; c < 6; c++) {
+      const q = await page.evaluate(c => window.scafEditor.chartPoint(c), c);
+      if (!(q[0] > box.x && q[0] < box.x + box.width && q[1] > box.y && q[1] < box.y + box.height))
+        fail(`after F chart ${c} is outside the view: ${q}`);
+    }
+  }
+
   for (const button of ["#optimize", "#compact"]) {
     await page.click(button);
     await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle()));

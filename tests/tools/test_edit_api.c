@@ -301,15 +301,31 @@ static void drag_undo_save(void **state)
     edit_request dv = good("POST", "/api/drag", "{\"vertex\": 0, \"x\": 0, \"y\": 0}");
     assert_int_equal(send(x, &dv, NULL), 200);
     assert_int_equal(send(x, &r, NULL), 200);
-    /* three undos: back to the start, bit for bit */
+    /* three undos: back to the start, bit for bit; three redos: the
+     * vertex drag's layout again, bit for bit; then nothing to redo */
+    snapshot dragged = snap(x);
     edit_request u = good("POST", "/api/undo", "{}");
+    edit_request re = good("POST", "/api/redo", "{}");
+    assert_int_equal(send(x, &re, &text), 409);
+    assert_non_null(strstr(text, "nothing to redo"));
+    free(text);
     assert_int_equal(send(x, &u, NULL), 200);
     assert_int_equal(send(x, &u, NULL), 200);
-    assert_int_equal(send(x, &u, NULL), 200);
+    assert_int_equal(send(x, &u, &text), 200);
+    assert_non_null(strstr(text, "\"redo\": 3"));
+    free(text);
     snapshot back = snap(x);
     assert_int_equal(back.n, start.n);
     assert_memory_equal(back.uv, start.uv, sizeof(double) * 2 * (size_t)start.n);
     free(back.uv);
+    for (int k = 0; k < 3; k++) assert_int_equal(send(x, &re, NULL), 200);
+    snapshot again = snap(x);
+    assert_memory_equal(again.uv, dragged.uv, sizeof(double) * 2 * (size_t)start.n);
+    assert_int_equal(again.iterations, dragged.iterations);
+    assert_int_equal(send(x, &re, NULL), 409);
+    for (int k = 0; k < 3; k++) assert_int_equal(send(x, &u, NULL), 200);
+    free(again.uv);
+    free(dragged.uv);
     free(start.uv);
 
     edit_request o = good("POST", "/api/optimize", "{\"steps\": 3}");
