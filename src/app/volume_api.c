@@ -287,7 +287,7 @@ static double *unit_copy(int nv, const double *V, int nf, const int *F, int *e, 
         err_nomem(err, "a copy of the surface");
         return NULL;
     }
-    memcpy(W, V, sizeof(double) * 3 * (size_t)nv);
+    if (nv > 0) memcpy(W, V, sizeof(double) * 3 * (size_t)nv); /* V may be NULL without vertices */
     if (unit_scale_down(nv, W, nf, F, e, err) != SCAF_OK) {
         free(W);
         return NULL;

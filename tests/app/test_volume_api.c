@@ -337,7 +337,11 @@ static void bad_options_and_arrays(void **state)
     scaf_untangle_options_t uo = scaf_untangle_options_default();
     uo.tolerance = 1.0;
     ASSERT_USAGE(scaf_untangle(h, m.V, m.nv, m.F, m.nf, &uo, NULL, NULL), "tolerance");
+    /* no surface: the options alone are checked (what `scaf untangle` does
+     * before reading its input) */
+    ASSERT_USAGE(scaf_untangle(h, NULL, 0, NULL, 0, &uo, NULL, NULL), "tolerance");
     uo = scaf_untangle_options_default();
+    assert_int_equal(scaf_untangle(h, NULL, 0, NULL, 0, &uo, NULL, NULL), SCAF_ERR_MESH);
     uo.struct_size = 0;
     ASSERT_USAGE(scaf_untangle(h, m.V, m.nv, m.F, m.nf, &uo, NULL, NULL), "struct_size");
     scaf_flow_options_t fo = scaf_flow_options_default();
