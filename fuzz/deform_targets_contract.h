@@ -3,7 +3,8 @@
  * `scaf deform --targets` (tools/deform_targets): no crash, overflow or
  * leak (the sanitizers), and abort() when a text the reader accepts
  * breaks the documented contract (a vertex < 0, a target or waypoint that
- * is not finite, a path length < 0, a weight that is not finite or < 0),
+ * is not finite, a path length < 0, a weight that is not finite or < 0, a
+ * hard flag not 0 or 1, a pin < 0),
  * when writing what was read and reading it back does not give the same
  * handles bit for bit, or when a refused text comes without a message
  * naming the input. */
@@ -61,6 +62,11 @@ static void check_targets_contract(const char *text, size_t size)
     for (size_t k = 0; k < 2 * (size_t)t.n * (size_t)t.nframes; k++)
         if (!isfinite(t.frames[k])) abort();
     if (t.has_weight && (!isfinite(t.weight) || t.weight < 0.0)) abort();
+    for (int i = 0; i < t.n; i++)
+        if (t.hard[i] > 1) abort();
+    if (t.npins < 0 || (t.npins > 0 && !t.pins)) abort();
+    for (int i = 0; i < t.npins; i++)
+        if (t.pins[i] < 0) abort();
     round_trip(&t);
     deform_targets_free(&t);
 }

@@ -16,6 +16,7 @@ PACKAGES=(
   tetgen                                            # tests/checks: `tetgen -d`, an independent self-intersection check
   valgrind                                          # bench: instruction counts
   python3 python3-numpy                             # the Python package and its tests
+  python3-jsonschema                                # tests/docs/test_report_schemas: reports against docs/schemas
   python3-setuptools python3-wheel python3-build python3-venv python3-pip  # pip install . offline (tests/install/test_pip.sh)
   libmicrohttpd-dev                                 # `scaf edit`: the local HTTP server
   chromium nodejs                                   # tests/browser: `scaf edit` in headless Chromium

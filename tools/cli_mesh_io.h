@@ -6,6 +6,12 @@
  * malformed, 7 out of memory), and prints the read's warnings (polygons
  * fanned, UVs dropped) unless quiet.
  *
+ * The input "-" is the standard input: read whole into memory (refused
+ * when it is a terminal, exit 2; empty, exit 3), its format from
+ * --input-format or sniffed from the first bytes (mesh_format_from_content);
+ * the bytes are kept for the run, so the output can be the input document
+ * again (OBJ rewrite) as for a file. gzip data on stdin is refused (zcat it).
+ *
  * cli_write_uv writes the result of `scaf param` / `scaf atlas`: when the
  * input was an OBJ, the output is that file again with the new texture
  * coordinates (mesh/obj_rewrite: normals, materials, groups and comments
@@ -19,21 +25,38 @@
 #include "mesh/mesh.h"
 #include "mesh/mesh_io.h"
 
+/* The help line of --input-format (commands that read a mesh). */
+#define CLI_INPUT_FORMAT_HELP                                                                      \
+    "  --input-format F       obj, off, ply, gltf or glb: the input's format whatever\n"           \
+    "                         its name (default: the extension, or for \"-\" (standard\n"          \
+    "                         input) and unknown names the first bytes)\n"
+
+/* At argv[*i] inside an argument loop: --input-format F taken (1, *i
+ * advanced), not this option (0), or a usage error printed (-1). The
+ * format applies to every later cli_read_mesh of the process. */
+int cli_input_format_option(const char *cmd, int argc, char **argv, int *i);
+
+/* The input's bytes when it was "-" (NULL otherwise), and their size. */
+const char *cli_stdin_data(size_t *size);
+
 /* 0 (EXIT_OK) with *m and *info filled, or the exit status after printing
  * why (*m empty). */
 int cli_read_mesh(const char *cmd, const char *path, int quiet, mesh *m, mesh_read_info *info);
 
 /* cmd: command name for messages; in/info: the input path and what its
- * read said; o: the mesh as read with the new UV and FT. */
+ * read said; target: the output's name as the user gave it (its extension
+ * picks the format: .ply (mesh/write_ply), otherwise OBJ; "-" OBJ); out:
+ * the path to write (the staged file of tools/cli_outputs); o: the mesh
+ * as read with the new UV and FT. */
 scaf_status cli_write_uv(const char *cmd, const char *in, const mesh_read_info *info,
-                         const char *out, const mesh *o, scaf_error *err);
+                         const char *target, const char *out, const mesh *o, scaf_error *err);
 
 /* The same with face_group (nf ids, or NULL): `g chart_N` lines for the
- * faces' groups (mesh/obj_rewrite's obj_rewrite_uv_grouped, or the plain
- * writer's mesh_write_obj_grouped). */
+ * faces' groups in an OBJ (mesh/obj_rewrite's obj_rewrite_uv_grouped, or
+ * the plain writer's mesh_write_obj_grouped; a PLY has no groups). */
 scaf_status cli_write_uv_grouped(const char *cmd, const char *in, const mesh_read_info *info,
-                                 const char *out, const mesh *o, const int *face_group,
-                                 scaf_error *err);
+                                 const char *target, const char *out, const mesh *o,
+                                 const int *face_group, scaf_error *err);
 
 /* The same for `scaf edit`, whose input may be moved, deleted or replaced
  * while it runs: the input's text is read from `source` (a path to the

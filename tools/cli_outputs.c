@@ -64,22 +64,29 @@ static int ends_with(const char *path, const char *suffix)
 static int check_format(cli_outputs *o, cli_output *c)
 {
     c->gz = ends_with(c->path, ".gz");
-    if (c->kind != CLI_OUTPUT_MESH || c->to_stdout || ends_with(c->path, ".obj") ||
-        ends_with(c->path, ".obj.gz"))
+    int uv = c->kind == CLI_OUTPUT_UV_MESH; /* PLY too */
+    if (c->kind == CLI_OUTPUT_FILE || c->to_stdout || ends_with(c->path, ".obj") ||
+        ends_with(c->path, ".obj.gz") ||
+        (uv && (ends_with(c->path, ".ply") || ends_with(c->path, ".ply.gz"))))
         return 0;
+    const char *names = uv ? ".obj or .ply (optionally .gz)" : ".obj or .obj.gz";
     static const char *const no_uv[][2] = {{".ply", "PLY"},    {".off", "OFF"},
                                            {".stl", "STL"},    {".ply.gz", "PLY"},
                                            {".off.gz", "OFF"}, {".stl.gz", "STL"}};
     for (size_t i = 0; i < sizeof no_uv / sizeof no_uv[0]; i++)
         if (ends_with(c->path, no_uv[i][0])) {
-            say(o,
-                "%s %s: scaf cannot write %s (it has no per-corner texture coordinates); "
-                "name the output .obj or .obj.gz",
-                c->option, c->path, no_uv[i][1]);
+            if (uv)
+                say(o,
+                    "%s %s: scaf cannot write %s (it has no per-corner texture coordinates); "
+                    "name the output %s",
+                    c->option, c->path, no_uv[i][1], names);
+            else
+                say(o, "%s %s: scaf %s writes OBJ only; name the output %s", c->option, c->path,
+                    o->cmd, names);
             return EXIT_USAGE;
         }
-    say(o, "%s %s: unknown output format; name the output .obj or .obj.gz (gzip-compressed)",
-        c->option, c->path);
+    say(o, "%s %s: unknown output format; name the output %s (.gz: gzip-compressed)", c->option,
+        c->path, names);
     return EXIT_USAGE;
 }
 
@@ -179,7 +186,7 @@ int cli_outputs_check(cli_outputs *o)
 int cli_outputs_uv(cli_outputs *o, const char *mesh, const char *svg, const char *png,
                    const char *report, cli_uv_outputs *k)
 {
-    k->mesh = cli_outputs_add(o, "-o", mesh, CLI_OUTPUT_MESH);
+    k->mesh = cli_outputs_add(o, "-o", mesh, CLI_OUTPUT_UV_MESH);
     k->svg = cli_outputs_add(o, "--svg", svg, CLI_OUTPUT_FILE);
     k->png = cli_outputs_add(o, "--png", png, CLI_OUTPUT_FILE);
     k->report = cli_outputs_add(o, "--report", report, CLI_OUTPUT_FILE);

@@ -2,9 +2,10 @@
  *
  * A command declares its outputs (-o, --report, --svg, --png ...) and its
  * input, and cli_outputs_check refuses, before any work:
- *   - a mesh output whose extension scaf cannot write (exit 2): only OBJ
- *     (.obj, or .obj.gz written gzip-compressed) carries the per-corner
- *     texture coordinates; .ply, .off, .stl and unknown names are refused;
+ *   - a mesh output whose extension scaf cannot write (exit 2): OBJ
+ *     (.obj) and PLY (.ply, binary with per-corner `texcoord` lists),
+ *     each optionally .gz (written gzip-compressed), carry the per-corner
+ *     texture coordinates; .off, .stl and unknown names are refused;
  *   - an output that is a directory, FIFO, device or socket, or whose
  *     folder is missing or not writable (exit 5; a temporary file is
  *     created and removed there to prove it);
@@ -39,16 +40,19 @@
 /* The paragraph of the commands' --help that says the above. */
 #define CLI_OUTPUTS_HELP                                                                           \
     "\n"                                                                                           \
-    "Output files: -o ends in .obj, or .obj.gz for a gzip-compressed OBJ (any output\n"            \
-    "ending in .gz is compressed). Every output is checked before the work starts\n"               \
+    "Output files: -o ends in .obj (the input OBJ again with new vt, or a plain OBJ)\n"            \
+    "or .ply (binary little-endian PLY, double x y z and a texcoord list per face);\n"             \
+    "any output ending in .gz is compressed. Every output is checked before the work starts\n"     \
     "and all are written together at the end, or none is: a directory, FIFO or\n"                  \
     "device, a missing or read-only folder, or two of the input and the outputs\n"                 \
     "naming the same file are refused. A symbolic link is written through (the\n"                  \
     "file it points to is replaced). \"-\" writes to the standard output.\n"
 
 typedef enum cli_output_kind {
-    CLI_OUTPUT_MESH, /* the mesh with UVs: .obj or .obj.gz */
-    CLI_OUTPUT_FILE  /* a report or picture: any name */
+    CLI_OUTPUT_MESH,    /* a mesh: .obj or .obj.gz */
+    CLI_OUTPUT_UV_MESH, /* the mesh with its UVs (param, atlas, deform): .obj or .ply,
+                           optionally .gz */
+    CLI_OUTPUT_FILE     /* a report or picture: any name */
 } cli_output_kind;
 
 typedef struct cli_output {

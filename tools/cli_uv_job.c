@@ -34,7 +34,8 @@ int cli_uv_job_write_map(cli_uv_job *j, const mesh *o)
     err_clear(&err);
     const char *path = cli_outputs_begin(&j->outs, j->k.mesh, &err);
     scaf_status st = path
-        ? cli_write_uv_grouped(j->cmd, j->in, &j->rinfo, path, o, j->face_group, &err)
+        ? cli_write_uv_grouped(j->cmd, j->in, &j->rinfo, j->outs.out[j->k.mesh].path, path, o,
+                               j->face_group, &err)
         : SCAF_ERR_IO;
     return cli_outputs_end(&j->outs, j->k.mesh, st, &err);
 }

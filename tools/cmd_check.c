@@ -15,6 +15,7 @@
 
 #include "check_surface.h"
 #include "check_tets.h"
+#include "cli_mesh_io.h"
 #include "commands.h"
 #include "base/json_write.h"
 #include "exit_codes.h"
@@ -29,16 +30,19 @@ static void usage(FILE *out)
             "usage: scaf check [--json] [--3d] FILE\n"
             "       scaf check [--json] FILE.mesh\n"
             "\n"
-            "Checks whether the UV map of FILE (.obj with vt, optionally .gz) is bijective,\n"
+            "Checks whether the UV map of FILE (.obj with vt, .ply with texcoord or s,t,\n"
+            "optionally .gz; \"-\": the standard input) is bijective,\n"
             "with exact arithmetic: every UV triangle counter-clockwise with nonzero area,\n"
             "and no two triangles overlapping (boundary segments neither cross nor touch,\n"
             "no chart inside another).\n"
             "\n"
-            "  --json   print one JSON object (keys: triangles, positive, flipped,\n"
+            "  --json   print one JSON object (docs/reports.md; keys: schema, command,\n"
+            "           input, triangles, positive, flipped,\n"
             "           degenerate, charts, mirrored_charts, mixed_charts, boundary_edges,\n"
             "           boundary_loops, boundary_crossings, boundary_touchings,\n"
             "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops,\n"
-            "           corner_overlaps, bijective, min_chart_gap, packing_efficiency)\n"
+            "           corner_overlaps, bijective, min_chart_gap, packing_efficiency,\n"
+            "           energy)\n"
             "  --3d     check the 3D surface for self-intersections instead (exact\n"
             "           triangle-triangle tests; the default for a closed surface without\n"
             "           vt); exit 1 when two faces meet in more than the vertices or edge\n"
@@ -49,23 +53,28 @@ static void usage(FILE *out)
             "  FILE.mesh  a tetrahedral mesh (Medit): every tet must be positively\n"
             "           oriented (exact orient3d); exit 1 when one is inverted or flat.\n"
             "           JSON keys: tets, positive, inverted, degenerate, first_bad, valid\n"
+            "  --input-format F  obj, off, ply, gltf or glb whatever FILE's name (FILE \"-\":\n"
+            "           the standard input, its format from the first bytes by default)\n"
             "  --help   this text\n"
             "\n"
             "min_chart_gap: the smallest distance between two different charts (triangles\n"
             "sharing a UV index are one chart; null with fewer than two charts).\n"
             "packing_efficiency: total UV area of the triangles / (longest side of the UV\n"
             "bounding box)^2, the fraction of the square the layout fills.\n"
+            "energy: E of the map with its UVs scaled to the surface's area, the figure\n"
+            "every command reports (4 at an isometry; docs/energy.md).\n"
             "A chart whose triangles are all clockwise is reported as mirrored; it counts\n"
             "as flipped (the map does not preserve orientation), so it is not bijective.\n"
             "\n");
     exit_codes_print(out);
 }
 
-static void print_json(const char *path, const bij_report *r, double gap, double eff)
+static void print_json(const char *path, const bij_report *r, double gap, double eff, double energy)
 {
-    printf("{\"file\": ");
+    json_write_report_head(stdout, "check");
+    printf(",\n  \"input\": ");
     json_write_string(stdout, path);
-    printf(", \"triangles\": %d, \"positive\": %d, \"flipped\": %d, \"degenerate\": %d, "
+    printf(",\n  \"triangles\": %d, \"positive\": %d, \"flipped\": %d, \"degenerate\": %d, "
            "\"charts\": %d, \"mirrored_charts\": %d, \"mixed_charts\": %d, "
            "\"boundary_edges\": %d, \"boundary_loops\": %d, \"boundary_crossings\": %lld, "
            "\"boundary_touchings\": %lld, \"boundary_foldbacks\": %lld, \"folded_edges\": %d, "
@@ -79,10 +88,12 @@ static void print_json(const char *path, const bij_report *r, double gap, double
     json_write_number(stdout, gap);
     printf(", \"packing_efficiency\": ");
     json_write_number(stdout, eff);
+    printf(", \"energy\": ");
+    json_write_number(stdout, energy);
     printf("}\n");
 }
 
-static void print_text(const char *path, const bij_report *r, double gap, double eff)
+static void print_text(const char *path, const bij_report *r, double gap, double eff, double energy)
 {
     printf("%s: %s\n", path, r->bijective ? "bijective" : "NOT bijective");
     printf("  triangles            %d\n", r->triangles);
@@ -102,11 +113,13 @@ static void print_text(const char *path, const bij_report *r, double gap, double
     if (isfinite(gap)) printf("  min chart gap        %.6g\n", gap);
     else printf("  min chart gap        none (fewer than two charts)\n");
     printf("  packing efficiency   %.4f\n", eff);
+    if (isfinite(energy)) printf("  E (area-matched)     %.6f\n", energy);
+    else printf("  E (area-matched)     none (a triangle is flipped or flat)\n");
 }
 
 int cmd_check(int argc, char **argv)
 {
-    int json = 0, surface3d = 0;
+    int json = 0, surface3d = 0, pr;
     const char *path = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -114,6 +127,8 @@ int cmd_check(int argc, char **argv)
             return EXIT_OK;
         } else if (!strcmp(argv[i], "--json")) {
             json = 1;
+        } else if ((pr = cli_input_format_option("check", argc, argv, &i)) != 0) {
+            if (pr < 0) return EXIT_USAGE;
         } else if (!strcmp(argv[i], "--3d") || !strcmp(argv[i], "--self-intersections")) {
             surface3d = 1;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
@@ -138,11 +153,9 @@ int cmd_check(int argc, char **argv)
     mesh_read_info info;
     scaf_error err;
     err_clear(&err);
-    scaf_status s = mesh_read(path, &m, &info, &err);
-    if (s != SCAF_OK) {
-        fprintf(stderr, "scaf check: %s\n", err.message);
-        return exit_code_for(s);
-    }
+    int read_rc = cli_read_mesh("check", path, 1, &m, &info);
+    if (read_rc != EXIT_OK) return read_rc;
+    scaf_status s;
     if (surface3d || (!mesh_has_uv(&m) && check_surface_is_closed(&m))) {
         int status = check_surface_run(path, &m, json);
         mesh_free(&m);
@@ -161,12 +174,14 @@ int cmd_check(int argc, char **argv)
     double gap = INFINITY, eff = 0.0;
     if (s == SCAF_OK) s = chart_gap_min(m.nuv, m.UV, m.nf, m.FT, NULL, 0.0, &gap, NULL, &err);
     if (s == SCAF_OK) eff = chart_packing_efficiency(m.nuv, m.UV, m.nf, m.FT);
+    double energy = NAN; /* docs/energy.md; stays NaN for faces without vt */
+    if (s == SCAF_OK) scaf_area_matched_energy(m.V, m.nv, m.F, m.nf, m.UV, m.nuv, m.FT, &energy);
     mesh_free(&m);
     if (s != SCAF_OK) {
         fprintf(stderr, "scaf check: %s: %s\n", path, err.message);
         return exit_code_for(s);
     }
-    if (json) print_json(path, &r, gap, eff);
-    else print_text(path, &r, gap, eff);
+    if (json) print_json(path, &r, gap, eff, energy);
+    else print_text(path, &r, gap, eff, energy);
     return r.bijective ? EXIT_OK : EXIT_NOT_BIJECTIVE;
 }

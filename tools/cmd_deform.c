@@ -49,6 +49,17 @@ static void usage(FILE *o)
             "--frame-iterations each; every handle's path has the same length). One handle\n"
             "per vertex; every target and waypoint within 1e6 mesh sizes of the mesh\n"
             "(otherwise exit 4 naming the handle).\n"
+            "Hard constraints: a handle with \"hard\": true (or every handle, --hard) must\n"
+            "end exactly on its target: it pulls with the soft weight until its vertex can\n"
+            "be placed exactly there without flipping a triangle (decided exactly, also\n"
+            "against the scaffold, so the map stays bijective), then it is pinned. A\n"
+            "top-level \"pins\": [i, ...] holds vertices where they are: a pinned vertex\n"
+            "never moves, its coordinates stay the same bits through every iteration.\n"
+            "When the pins and hard targets flip a triangle whose three corners they all\n"
+            "hold, no bijective map exists: exit 9 before any work, naming the triangle.\n"
+            "Hard targets still missing when the run stalls (%d iterations without one\n"
+            "reached and without their error shrinking), stops or hits --iterations: exit\n"
+            "9 naming how many; nothing is written.\n"
             "OUT: OBJ with the deformed positions as `v` (z = 0) and as `vt`.\n"
             "\n"
             "options:\n"
@@ -60,6 +71,7 @@ static void usage(FILE *o)
             "                         file's \"weight\" when given): w = R / #handles per\n"
             "                         squared distance, against the distortion energy\n"
             "                         (an area): scale-free\n"
+            "  --hard                 every handle's target is hard (see above)\n"
             "  --no-remesh            keep the first scaffold's connectivity (the paper's\n"
             "                         Figure 4 baseline: the deformation locks)\n"
             "  --verify               check bijectivity exactly after every iteration\n"
@@ -67,17 +79,18 @@ static void usage(FILE *o)
             "  --threads N            threads of the per-triangle work and of the\n"
             "                         factorization (default 1)\n"
             "  --deterministic        the same bytes for any --threads N (slower)\n"
-            "  --report FILE.json     energy, max_handle_error, iterations, stop_reason and\n"
-            "                         per-iteration history\n"
+            "  --report FILE.json     energy (area-matched), final_energy, max_handle_error,\n"
+            "                         stop_reason, iterations (docs/reports.md)\n"
             "  --svg FILE             picture of the deformed mesh\n"
             "  --png FILE             the same as PNG\n"
-            "  -h, --help             this help\n" CLI_OUTPUTS_HELP "\n");
+            "  -h, --help             this help\n" CLI_OUTPUTS_HELP "\n",
+            deform_options_default().stall_iterations);
     exit_codes_print(o);
 }
 
 typedef struct deform_args {
     const char *in, *out, *targets, *report, *svg;
-    int iterations, frame_iterations, no_remesh, verify, quiet;
+    int iterations, frame_iterations, no_remesh, verify, quiet, hard;
     int threads; /* --threads N; 0: one */
     double weight;
     int weight_given;
@@ -122,6 +135,8 @@ static int parse_args(int argc, char **argv, deform_args *o)
             if (!cli_parse_double(v, &o->weight)) CLI_BAD_VALUE("deform");
             if (o->weight < 0) CLI_OUT_OF_RANGE("deform", ">= 0");
             o->weight_given = 1;
+        } else if (!strcmp(a, "--hard")) {
+            o->hard = 1;
         } else if (!strcmp(a, "--no-remesh")) {
             o->no_remesh = 1;
         } else if (!strcmp(a, "--verify")) {
@@ -187,22 +202,27 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
 }
 
 static scaf_status write_report(const char *path, const deform_args *a, int nh,
-                                const deform_result *r, const progress_state *s, scaf_error *err)
+                                const deform_result *r, double energy, const progress_state *s,
+                                scaf_error *err)
 {
     FILE *f = fopen(path, "wb");
     if (!f) return err_set(err, SCAF_ERR_IO, "cannot write '%s'", path);
-    fputs("{\n  \"input\": ", f);
+    json_write_report_head(f, "deform");
+    fputs(",\n  \"input\": ", f);
     json_write_string(f, a->in);
     fputs(",\n  \"targets\": ", f);
     json_write_string(f, a->targets);
-    fprintf(f, ",\n  \"handles\": %d,\n  \"remesh\": %s,\n  \"energy\": ", nh,
+    fprintf(f, ",\n  \"handles\": %d,\n  \"remesh\": %s,\n  \"final_energy\": ", nh,
             a->no_remesh ? "false" : "true");
     json_write_number(f, r->energy);
+    fputs(",\n  \"energy\": ", f);
+    json_write_number(f, energy);
     fputs(",\n  \"max_handle_error\": ", f);
     json_write_number(f, r->max_handle_error);
-    fprintf(f, ",\n  \"iterations\": %d,\n  \"stop_reason\": ", r->iterations);
+    fprintf(f, ",\n  \"hard_targets\": %d,\n  \"hard_targets_met\": %d", r->hard, r->hard_reached);
+    fprintf(f, ",\n  \"iteration_count\": %d,\n  \"stop_reason\": ", r->iterations);
     json_write_string(f, scaf_stop_reason_name(r->stop));
-    fputs(",\n  \"history\": [", f);
+    fputs(",\n  \"iterations\": [", f);
     for (int i = 0; i < s->n; i++) {
         fprintf(f, "%s\n    {\"iteration\": %d, \"energy\": ", i ? "," : "", s->rec[i].iteration);
         json_write_number(f, s->rec[i].energy);
@@ -310,6 +330,11 @@ static int deform_main(int argc, char **argv)
     o.iterations = a.iterations;
     o.no_remesh = a.no_remesh;
     o.frame_iterations = a.frame_iterations;
+    if (a.hard)
+        for (int i = 0; i < t.n; i++) t.hard[i] = 1;
+    o.hard = t.hard;
+    o.npins = t.npins;
+    o.pins = t.pins;
     if (t.has_weight) o.weight_ratio = t.weight;
     if (a.weight_given) o.weight_ratio = a.weight;
     progress_state ps = {&o, &h, nv, m.nf, F, a.verify, 0, rec, 0};
@@ -322,8 +347,21 @@ static int deform_main(int argc, char **argv)
         goto done;
     }
     if (st != SCAF_OK) {
-        fprintf(stderr, "scaf deform: %s: %s\n", a.in, err.message);
-        rc = exit_code_for(st);
+        fprintf(stderr, "scaf deform: %s: %s%s\n", a.in, err.message,
+                r.infeasible ? "; nothing written" : "");
+        rc = r.infeasible ? EXIT_INFEASIBLE : exit_code_for(st);
+        goto done;
+    }
+    if (r.infeasible) {
+        fprintf(stderr,
+                "scaf deform: %s: infeasible: %d of %d hard targets not met after %d iterations "
+                "(%s; the largest miss %.3g): no flip-free placement on them was found, the "
+                "pins and hard targets may admit no bijective map; nothing written\n",
+                a.in, r.hard - r.hard_reached, r.hard, r.iterations,
+                r.stop == SCAF_STOP_ITERATIONS ? "the --iterations cap"
+                                               : "the run stalled or stopped",
+                r.max_handle_error);
+        rc = EXIT_INFEASIBLE;
         goto done;
     }
     if (ps.not_bijective) {
@@ -336,6 +374,9 @@ static int deform_main(int argc, char **argv)
         fprintf(stderr, "scaf deform: %d iterations, E %.6f, max handle error %.3g%s\n",
                 r.iterations, r.energy, r.max_handle_error,
                 a.verify ? " (bijective after every iteration: verified)" : "");
+        if (r.hard > 0 || t.npins > 0)
+            fprintf(stderr, "scaf deform: %d of %d hard targets met exactly, %d pins held\n",
+                    r.hard_reached, r.hard, t.npins);
         fprintf(stderr, "scaf deform: stop reason: %s (%s)\n", scaf_stop_reason_name(r.stop),
                 stop_reason_explained(r.stop));
     }
@@ -345,6 +386,12 @@ static int deform_main(int argc, char **argv)
         rc = EXIT_NOMEM;
         goto done;
     }
+    /* the area-matched E of rest -> deformed (docs/energy.md), then V3
+     * becomes the deformed positions */
+    for (int v = 0; v < nv; v++)
+        V3[3 * v] = P[2 * v], V3[3 * v + 1] = P[2 * v + 1], V3[3 * v + 2] = 0.0;
+    double e_matched = NAN;
+    scaf_area_matched_energy(V3, nv, F, m.nf, X, nv, F, &e_matched);
     for (int v = 0; v < nv; v++)
         V3[3 * v] = X[2 * v], V3[3 * v + 1] = X[2 * v + 1], V3[3 * v + 2] = 0.0;
     mesh out = {nv, V3, m.nf, (int *)F, nv, X, (int *)F};
@@ -366,7 +413,7 @@ static int deform_main(int argc, char **argv)
         goto done;
     if (a.report) {
         path = cli_outputs_begin(&job.outs, job.k.report, &err);
-        st = path ? write_report(path, &a, t.n, &r, &ps, &err) : SCAF_ERR_IO;
+        st = path ? write_report(path, &a, t.n, &r, e_matched, &ps, &err) : SCAF_ERR_IO;
         if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&job.outs);

@@ -37,6 +37,7 @@
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "edit_api.h"
+#include "edit_start.h"
 #include "base/interrupt.h"
 #include "edit_page.h"
 #include "edit_server.h"
@@ -65,17 +66,24 @@ static void usage(FILE *o)
             "proved bijective with the padding kept exactly, written atomically to OUT).\n"
             "\n"
             "IN: OBJ (.obj), OFF (.off) or PLY (.ply), optionally gzip-compressed (.gz).\n"
-            "With UVs (vt) that are bijective and keep the padding (a `scaf atlas` output)\n"
-            "the editor starts from them; otherwise from the atlas `scaf atlas` would make\n"
-            "(on a closed mesh or one without vt: automatic charts, see --seams).\n"
+            "Any mesh `scaf atlas` maps opens. With UVs (vt) that the exact checker proves\n"
+            "bijective with the padding kept (a `scaf atlas` output, an earlier save) the\n"
+            "editor starts from them as they are. Otherwise (vt flipped, overlapping or\n"
+            "touching, as in many scanned or hand-made files; or no vt; or a closed mesh)\n"
+            "it says why on the standard error and starts from the atlas `scaf atlas IN`\n"
+            "makes with its defaults and this --padding: the charts cut along the vt when\n"
+            "they cut the mesh into disks, else automatic seams (segmented, cut open where\n"
+            "not a disk: --seams); each chart started by Tutte's embedding, all settled\n"
+            "together, packed and compacted; the vt positions are not used.\n"
             "\n"
             "options:\n"
             "  -o, --output FILE   where save writes (default: IN's name with -edited.obj,\n"
             "                      e.g. a.obj -> a-edited.obj); checked before the start\n"
             "  --port N            the port (default 0: a free port the system picks)\n"
             "  --start S           auto (default: input when its UVs qualify, else atlas),\n"
-            "                      input, atlas (`scaf atlas`'s result) or layout (charts\n"
-            "                      as circles on a grid)\n"
+            "                      input (refused, exit 4, when they do not; exit 2\n"
+            "                      without vt), atlas (`scaf atlas`'s result) or layout\n"
+            "                      (charts as circles on a grid)\n"
             "  --seams S           where the charts are cut: input (the vt seams), auto\n"
             "                      (automatic charts, the vt ignored) or extend (the vt\n"
             "                      seams plus cuts where a chart is not a disk); default:\n"
@@ -148,54 +156,6 @@ static int default_output(const char *in, char *out, size_t size)
         }
     }
     return snprintf(out, size, "%.*s-edited.obj", (int)n, in) < (int)size;
-}
-
-/* The drag context on m: start as asked; auto tries the input first. */
-static int make_layout(const char *in, const mesh *m, const char *start, double padding,
-                       scaf_seams seams, int quiet, scaf_drag_t **out)
-{
-    scaf_drag_options_t opt = scaf_drag_options_default();
-    opt.padding = padding;
-    opt.seams = seams;
-    int tries[2], ntries = 0;
-    if (!strcmp(start, "auto")) {
-        if (m->nuv > 0) tries[ntries++] = SCAF_DRAG_START_INPUT;
-        tries[ntries++] = SCAF_DRAG_START_ATLAS;
-    } else {
-        tries[ntries++] = !strcmp(start, "input") ? SCAF_DRAG_START_INPUT
-            : !strcmp(start, "atlas")             ? SCAF_DRAG_START_ATLAS
-                                                  : SCAF_DRAG_START_LAYOUT;
-    }
-    scaf_status st = SCAF_OK;
-    for (int t = 0; t < ntries; t++) {
-        opt.start = (scaf_drag_start)tries[t];
-        scaf_drag_t *d = scaf_drag_new(&opt);
-        if (!d) {
-            fprintf(stderr, "scaf edit: out of memory\n");
-            return EXIT_NOMEM;
-        }
-        /* the vt give the seams of every start (as `scaf atlas`), and
-         * the positions of the input start */
-        int uvs = opt.start == SCAF_DRAG_START_INPUT;
-        st = scaf_drag_set_mesh(d, m->V, m->nv, m->F, m->nf, m->nuv ? m->UV : NULL, m->nuv,
-                                m->nuv ? m->FT : NULL);
-        if (st == SCAF_OK) {
-            if (!quiet)
-                fprintf(stderr, "scaf edit: %s: %d faces, %d charts, starting from %s\n", in, m->nf,
-                        scaf_drag_chart_count(d),
-                        uvs                                      ? "its UVs"
-                            : opt.start == SCAF_DRAG_START_ATLAS ? "the atlas (`scaf atlas`)"
-                                                                 : "circles on a grid");
-            *out = d;
-            return EXIT_OK;
-        }
-        if (t + 1 < ntries && !quiet)
-            fprintf(stderr, "scaf edit: %s: not starting from its UVs: %s\n", in,
-                    scaf_drag_error(d));
-        else if (t + 1 == ntries) fprintf(stderr, "scaf edit: %s: %s\n", in, scaf_drag_error(d));
-        scaf_drag_destroy(d);
-    }
-    return exit_code_for(st);
 }
 
 /* OUT's name with .autosave.obj instead of .obj or .obj.gz (any case). */
@@ -429,9 +389,7 @@ static int edit_main(int argc, char **argv)
             if (port > 65535) CLI_OUT_OF_RANGE("edit", "in 0..65535");
         } else if (!strcmp(a, "--start")) {
             CLI_NEED_VALUE("edit");
-            if (strcmp(v, "auto") && strcmp(v, "input") && strcmp(v, "atlas") &&
-                strcmp(v, "layout"))
-                CLI_BAD_VALUE("edit");
+            if (!edit_start_name_ok(v)) CLI_BAD_VALUE("edit");
             start = v;
         } else if (!strcmp(a, "--seams")) {
             CLI_NEED_VALUE("edit");
@@ -505,7 +463,8 @@ static int edit_main(int argc, char **argv)
         start = "input";
     }
     scaf_drag_t *d = NULL;
-    rc = make_layout(in, &m, start, padding, seams, quiet, &d);
+    edit_start_kind from;
+    rc = edit_start_layout(in, &m, start, padding, seams, quiet, &d, &from);
     if (rc != EXIT_OK) {
         mesh_free(&m);
         return rc;

@@ -36,6 +36,8 @@ static void usage(FILE *out)
             "unreferenced vertices, UV charts (faces joined through shared vt edges; one\n"
             "per component without vt) and seam edges (interior edges whose two sides\n"
             "use different vt), and what each chart is (disk, disk with holes, ...).\n"
+            "UVs: OBJ vt, PLY face texcoord lists or vertex s,t / u,v / texture_u,v /\n"
+            "texture_s,t (uv_source says which), glTF TEXCOORD_n.\n"
             "\n"
             "Genus: per component (2 - chi - b) / 2, defined when the component is\n"
             "manifold and orientable. The top-level `genus` is the SUM over the\n"
@@ -45,6 +47,8 @@ static void usage(FILE *out)
             "\n"
             "options:\n"
             "  --json     one JSON object on stdout instead of text\n"
+            "  --input-format F  obj, off, ply, gltf or glb whatever FILE's name (FILE\n"
+            "             \"-\": the standard input, its format from the first bytes)\n"
             "  -h, --help this help\n"
             "\n"
             "Exit status: 0 reported (defects do not fail), 2 usage, 3 file missing or\n"
@@ -58,6 +62,7 @@ static const char *format_name(mesh_format f)
     case MESH_FORMAT_OBJ: return "OBJ";
     case MESH_FORMAT_OFF: return "OFF";
     case MESH_FORMAT_PLY: return "PLY";
+    case MESH_FORMAT_GLTF: return "glTF";
     default: return "unknown";
     }
 }
@@ -81,7 +86,8 @@ static void print_json(FILE *out, const char *path, const mesh_read_info *ri, co
     const tri_complex *cx = &t->cx;
     int kinds[MESH_CHART_NON_ORIENTABLE + 1] = {0};
     for (int c = 0; c < ch->ncharts; c++) kinds[mesh_chart_classify(ch, c)]++;
-    fputs("{\n  \"file\": ", out);
+    json_write_report_head(out, "info");
+    fputs(",\n  \"input\": ", out);
     json_write_string(out, path);
     fprintf(out, ",\n  \"format\": \"%s\",\n", format_name(ri->format));
     fprintf(out, "  \"vertices\": %d,\n", t->vertices);
@@ -107,6 +113,10 @@ static void print_json(FILE *out, const char *path, const mesh_read_info *ri, co
     fprintf(out, "  \"unreferenced_vertices\": %d,\n", t->unreferenced_vertices);
     fprintf(out, "  \"has_uv\": %s,\n", t->has_uv ? "true" : "false");
     fprintf(out, "  \"uv_coordinates\": %d,\n", m->nuv);
+    fputs("  \"uv_source\": ", out);
+    if (t->has_uv && ri->uv_source) json_write_string(out, ri->uv_source);
+    else fputs("null", out);
+    fputs(",\n", out);
     fprintf(out, "  \"uv_charts\": %d,\n", t->uv_charts);
     fprintf(out, "  \"seam_edges\": %d,\n", t->seam_edges);
     fputs("  \"chart_kinds\": {", out);
@@ -165,8 +175,8 @@ static void print_text(FILE *out, const char *path, const mesh_read_info *ri, co
     fprintf(out, "degenerate      %d faces (%d with a repeated vertex), %d duplicate faces\n",
             t->degenerate_faces, t->repeated_index_faces, t->duplicate_faces);
     if (t->has_uv)
-        fprintf(out, "uv              %d vt, %d charts, %d seam edges\n", m->nuv, t->uv_charts,
-                t->seam_edges);
+        fprintf(out, "uv              %d vt (%s), %d charts, %d seam edges\n", m->nuv,
+                ri->uv_source ? ri->uv_source : "input", t->uv_charts, t->seam_edges);
     else fprintf(out, "uv              none (%d charts = components)\n", t->uv_charts);
     int kinds[MESH_CHART_NON_ORIENTABLE + 1] = {0};
     for (int c = 0; c < ch->ncharts; c++) kinds[mesh_chart_classify(ch, c)]++;
@@ -194,7 +204,7 @@ static void print_text(FILE *out, const char *path, const mesh_read_info *ri, co
 
 int cmd_info(int argc, char **argv)
 {
-    int json = 0;
+    int json = 0, pr;
     const char *path = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -202,6 +212,8 @@ int cmd_info(int argc, char **argv)
             return EXIT_OK;
         } else if (!strcmp(argv[i], "--json")) {
             json = 1;
+        } else if ((pr = cli_input_format_option("info", argc, argv, &i)) != 0) {
+            if (pr < 0) return EXIT_USAGE;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
             fprintf(stderr, "scaf info: unknown option '%s' (see `scaf info --help`)\n", argv[i]);
             return EXIT_USAGE;

@@ -128,6 +128,49 @@ static scaf_status read_path(reader *r, int *len)
     return SCAF_OK;
 }
 
+/* A JSON true or false. */
+static scaf_status boolean(reader *r, unsigned char *v, const char *what)
+{
+    skip_ws(r);
+    if (!strncmp(r->s, "true", 4)) *v = 1, r->s += 4;
+    else if (!strncmp(r->s, "false", 5)) *v = 0, r->s += 5;
+    else
+        return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: %s must be true or false", r->path, r->line,
+                       what);
+    return SCAF_OK;
+}
+
+/* "pins": [i, ...] */
+static scaf_status read_pins(reader *r)
+{
+    deform_targets *t = r->t;
+    if (!eat(r, '[')) return fail(r, "\"pins\" must be an array of vertex indices");
+    if (eat(r, ']')) return SCAF_OK;
+    int cap = 0;
+    do {
+        if (t->npins == cap) {
+            if (cap >= INT32_MAX / 4) return fail(r, "\"pins\" too long");
+            cap = cap ? 2 * cap : 16;
+            int *p = realloc(t->pins, sizeof(int) * (size_t)cap);
+            if (!p) return err_nomem(r->err, "pins");
+            t->pins = p;
+        }
+        if (t->npins % POINTS_PER_INTERRUPT_CHECK == 0 && interrupt_pending())
+            return err_set(r->err, SCAF_ERR_CANCELLED, "%s:%d: interrupted by %s while reading",
+                           r->path, r->line, interrupt_signal_name(interrupt_pending()));
+        double v;
+        char what[48];
+        snprintf(what, sizeof what, "pin %d", t->npins + 1);
+        scaf_status st = number(r, &v, what);
+        if (st) return st;
+        if (v != floor(v) || v < 0 || v > 2147483647.0)
+            return fail(r, "a pin must be a vertex index, an integer >= 0");
+        t->pins[t->npins++] = (int)v;
+    } while (eat(r, ','));
+    if (!eat(r, ']')) return fail(r, "expected ',' or ']' in \"pins\"");
+    return SCAF_OK;
+}
+
 static scaf_status handle(reader *r)
 {
     deform_targets *t = r->t;
@@ -137,16 +180,19 @@ static scaf_status handle(reader *r)
         if (v) t->vertex = v;
         double *x = realloc(t->target, sizeof(double) * 2 * (size_t)cap);
         if (x) t->target = x;
+        unsigned char *hd = realloc(t->hard, (size_t)cap);
+        if (hd) t->hard = hd;
         double *pp = r->path_len > 0
             ? realloc(r->paths, sizeof(double) * 2 * (size_t)r->path_len * (size_t)cap)
             : r->paths;
         if (pp) r->paths = pp;
-        if (!v || !x || (r->path_len > 0 && !pp)) return err_nomem(r->err, "handles");
+        if (!v || !x || !hd || (r->path_len > 0 && !pp)) return err_nomem(r->err, "handles");
         r->cap = cap;
     }
     if (!eat(r, '{'))
         return fail(r, "a handle must be an object {\"vertex\": i, \"target\": [x, y]}");
-    int seen_v = 0, seen_t = 0, len = 0;
+    int seen_v = 0, seen_t = 0, seen_hard = 0, len = 0;
+    t->hard[t->n] = 0;
     char k[32];
     do {
         scaf_status st = key(r, k, sizeof k);
@@ -170,6 +216,9 @@ static scaf_status handle(reader *r)
             seen_t = 1;
         } else if (!strcmp(k, "path") && len == 0) {
             if ((st = read_path(r, &len))) return st;
+        } else if (!strcmp(k, "hard") && !seen_hard) {
+            if ((st = boolean(r, &t->hard[t->n], "\"hard\""))) return st;
+            seen_hard = 1;
         } else {
             return err_set(r->err, SCAF_ERR_PARSE,
                            "%s:%d: unknown or repeated key \"%s\" in a handle", r->path, r->line,
@@ -203,7 +252,7 @@ static scaf_status document(reader *r)
                        "%s:%d: no \"handles\" array (the object is empty; expected "
                        "{\"handles\": [{\"vertex\": i, \"target\": [x, y]}, ...]})",
                        r->path, r->line);
-    int seen_h = 0;
+    int seen_h = 0, seen_p = 0;
     char k[32];
     do {
         scaf_status st = key(r, k, sizeof k);
@@ -225,6 +274,9 @@ static scaf_status document(reader *r)
             if ((st = number(r, &r->t->weight, "\"weight\""))) return st;
             if (r->t->weight < 0) return fail(r, "\"weight\" must be >= 0");
             r->t->has_weight = 1;
+        } else if (!strcmp(k, "pins") && !seen_p) {
+            if ((st = read_pins(r))) return st;
+            seen_p = 1;
         } else {
             return err_set(r->err, SCAF_ERR_PARSE, "%s:%d: unknown or repeated key \"%s\"", r->path,
                            r->line, k);
@@ -371,6 +423,22 @@ scaf_status deform_targets_check(const deform_targets *t, int nv, const double *
                              hi[0], lo[1], hi[1]);
         }
     }
+    for (int i = 0; i < t->npins && st == SCAF_OK; i++) {
+        int v = t->pins[i];
+        if (v < 0 || v >= nv)
+            st = err_set(err, SCAF_ERR_MESH,
+                         "%s: pin %d: vertex %d is not one of the mesh's %d (0-based)", name, i + 1,
+                         v, nv);
+        else if (owner[v] >= 0)
+            st = err_set(err, SCAF_ERR_MESH,
+                         "%s: pin %d: vertex %d has a handle (handle %d): a pinned vertex stays "
+                         "where it is, give it a hard handle instead",
+                         name, i + 1, v, owner[v] + 1);
+        else if (owner[v] < -1)
+            st = err_set(err, SCAF_ERR_MESH, "%s: pin %d: vertex %d is pinned twice (pin %d)", name,
+                         i + 1, v, -owner[v] - 1);
+        else owner[v] = -(i + 2);
+    }
     free(owner);
     return st;
 }
@@ -380,5 +448,7 @@ void deform_targets_free(deform_targets *t)
     free(t->vertex);
     free(t->target);
     free(t->frames);
+    free(t->hard);
+    free(t->pins);
     memset(t, 0, sizeof *t);
 }

@@ -4,7 +4,12 @@
  *
  * A handle may also carry "path": [[x, y], ...], waypoints it visits in
  * order before its target (a drag: `scaf deform` spends a few iterations
- * on each); every handle then has a path of the same length.
+ * on each); every handle then has a path of the same length; and "hard":
+ * true (or false, the default): the target must be met exactly (app/deform
+ * places it there once that flips nothing, then pins it). "pins": [i, ...]
+ * (optional, top level) lists vertices that never move. The checks below
+ * also refuse a pin out of range, a vertex pinned twice, or pinned and a
+ * handle.
  *
  * A strict reader for exactly this: one object with "handles" (required,
  * an array of objects each with an integer "vertex", 0-based, and a
@@ -36,6 +41,9 @@ typedef struct deform_targets {
     double *frames; /* nframes by n by 2: frame f of handle i at (f n + i) 2 */
     int has_weight;
     double weight;
+    unsigned char *hard; /* n: 1 for "hard": true (met exactly, then pinned) */
+    int npins;
+    int *pins; /* npins vertices held where they are ("pins": [i, ...]) */
 } deform_targets;
 
 /* Read path into *t (free with deform_targets_free); SCAF_ERR_IO when it

@@ -17,6 +17,7 @@ enum {
     EXIT_NUMERIC = 6,       /* numerical failure */
     EXIT_NOMEM = 7,         /* out of memory */
     EXIT_CANCELLED = 8,     /* interrupted */
+    EXIT_INFEASIBLE = 9,    /* `scaf deform`: pins / hard targets not met */
     EXIT_INTERNAL = 70      /* a bug in scaf */
 };
 
@@ -45,6 +46,10 @@ static inline const exit_code_meaning *exit_code_meanings(int *count)
         {EXIT_NUMERIC, "numerical failure"},
         {EXIT_NOMEM, "out of memory"},
         {EXIT_CANCELLED, "interrupted (SIGINT, SIGTERM, SIGHUP): nothing partial is left behind"},
+        {EXIT_INFEASIBLE,
+         "`scaf deform`: the pins and hard targets cannot all be met by a bijective\n"
+         "map (found before any work, or hard targets still missing when the run\n"
+         "stalled or stopped); nothing is written"},
         {EXIT_INTERNAL, "internal error (a bug: please report it)"},
     };
     *count = (int)(sizeof table / sizeof table[0]);

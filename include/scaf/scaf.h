@@ -387,6 +387,20 @@ SCAF_API const char *scaf_param_error(const scaf_param_t *p);
 /* Free everything. NULL is allowed. */
 SCAF_API void scaf_param_destroy(scaf_param_t *p);
 
+/* The distortion figure every command, report and the editor show
+ * (docs/energy.md): the symmetric Dirichlet energy of the map with its UVs
+ * scaled uniformly so that their total area equals the surface's,
+ *   E = sum_f A_f (||s J_f||_F^2 + ||(s J_f)^-1||_F^2) / sum_f A_f,
+ *   s^2 = sum_f A_f / sum_f a_f    (A_f 3D area, a_f UV area of face f),
+ * 4 at an isometry and the same for any uniform scaling, rotation or
+ * translation of the UVs. V nv by 3, F nf by 3, UV nuv by 2, FT nf by 3
+ * (NULL: F indexes UV too, nuv = nv). Sets *E (+INFINITY when a face of
+ * positive 3D area has a UV area <= 0). SCAF_ERR_USAGE on a NULL array,
+ * a count < 1 or an index out of range; SCAF_ERR_MESH when the surface
+ * has no area. */
+SCAF_API scaf_status scaf_area_matched_energy(const double *V, int nv, const int *F, int nf,
+                                              const double *UV, int nuv, const int *FT, double *E);
+
 #ifdef __cplusplus
 }
 #endif

@@ -27,7 +27,7 @@ from ._errors import (Cancelled, Error, InputError, InternalError, MeshError, Nu
                       OutOfMemory, UsageError)
 from ._core import (Atlas, AtlasIterationInfo, AtlasResult, IterationInfo, Param, ParamResult,
                     __version__, atlas, default_atlas_options, default_options, library_path,
-                    param, set_threads, set_deterministic)
+                    area_matched_energy, param, set_threads, set_deterministic)
 from ._drag import Drag, DragChartInfo, DragOutput, default_drag_options
 from . import _lib
 from .obj import read_obj
@@ -42,7 +42,7 @@ __all__ = [
     "UsageError", "InputError", "MeshError", "NumericError", "OutOfMemory", "Cancelled",
     "InternalError", "library_path", "__version__", "ENERGIES", "INITS", "set_threads",
     "set_deterministic", "Drag", "DragChartInfo", "DragOutput", "default_drag_options",
-    "split_seams",
+    "split_seams", "area_matched_energy",
 ]
 
 # Show the public names as scaf.X (in tracebacks and reprs), not scaf._core.X.

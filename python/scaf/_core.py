@@ -335,6 +335,30 @@ class AtlasResult:
                                                    self.min_gap, self.energy, self.iterations, self.stop_reason))
 
 
+def area_matched_energy(V, F, UV, FT=None):
+    """E of the map (V, F) -> UV, its UVs scaled to the surface's area: the
+    figure every command and report shows (docs/energy.md; C:
+    scaf_area_matched_energy). 4 at an isometry; math.inf when a UV
+    triangle is flipped or flat. FT None: F indexes UV too."""
+    v = _arrays.matrix(V, "V", 3, False)
+    f = _arrays.matrix(F, "F", 3, True)
+    uv = _arrays.matrix(UV, "UV", 2, False)
+    ft = None
+    if FT is not None:
+        ft = _arrays.matrix(FT, "FT", 3, True)
+        if ft.rows != f.rows:
+            raise ValueError("FT has %d rows, F has %d: one row of UV indices per face" % (ft.rows, f.rows))
+    elif uv.rows != v.rows:
+        raise ValueError("UV has %d rows, V has %d: without FT, one UV per vertex" % (uv.rows, v.rows))
+    out = ctypes.c_double()
+    st = lib.scaf_area_matched_energy(v.ptr, v.rows, f.ptr, f.rows, uv.ptr, uv.rows,
+                                      ft.ptr if ft is not None else None, ctypes.byref(out))
+    if st != 0:
+        _raise(st, "scaf_area_matched_energy: an index out of range, an empty mesh or a surface "
+               "without area")
+    return out.value
+
+
 # --- handles -------------------------------------------------------------------
 
 def _mesh_args(V, F, UV, FT):

@@ -180,6 +180,7 @@ SIGNATURES = {
     "scaf_set_threads": (_int, [_int]),
     "scaf_set_deterministic": (None, [_int]),
     "scaf_stop_reason_name": (ctypes.c_char_p, [c_enum]),
+    "scaf_area_matched_energy": (c_enum, [_D, _int, _I, _int, _D, _int, _I, _D]),
     "scaf_options_default": (Options, []),
     "scaf_param_new": (_P, [ctypes.POINTER(Options)]),
     "scaf_param_set_options": (c_enum, [_P, ctypes.POINTER(Options)]),

@@ -253,6 +253,20 @@ class ParamTest(unittest.TestCase):
             self.assertEqual(r.ft.dtype, np.int32)
             self.assertEqual(r.uv.shape[1], 2)
 
+    def test_area_matched_energy(self):
+        r = scaf.param(self.V, self.F, iterations=8)
+        e = scaf.area_matched_energy(self.V, self.F, r.uv, r.ft)
+        self.assertGreaterEqual(e, 4.0)
+        # scale-free: the map shrunk into a small square reads the same
+        uv = [[0.001 * a + 3.0, 0.001 * b - 1.0] for a, b in rows(r.uv)]
+        self.assertAlmostEqual(scaf.area_matched_energy(self.V, self.F, uv, r.ft), e, delta=1e-9 * e)
+        # near the optimizer's E for a converged disk, not 1e6 times it
+        self.assertLess(abs(e - r.energy), 0.05 * r.energy)
+        mirrored = [[-a, b] for a, b in rows(r.uv)]
+        self.assertEqual(scaf.area_matched_energy(self.V, self.F, mirrored, r.ft), math.inf)
+        with self.assertRaises(scaf.UsageError):
+            scaf.area_matched_energy(self.V, [[0, 1, 10 ** 6]], r.uv, [[0, 1, 2]])
+
     def test_handles_pull_a_vertex_bijectively(self):
         with scaf.Param() as p:
             p.set_mesh(self.V, self.F)

@@ -24,7 +24,8 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     }
     FILE *o = af.f;
     const atlas_options *op = &a->opt;
-    fputs("{\n  \"command\": \"atlas\",\n  \"input\": ", o);
+    json_write_report_head(o, "atlas");
+    fputs(",\n  \"input\": ", o);
     json_write_string(o, r->input);
     fputs(",\n  \"output\": ", o);
     json_write_string(o, r->output);
@@ -52,14 +53,17 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     fputs(", \"compact_lambda_ratio\": ", o);
     json_write_number(o, op->compact_lambda_ratio);
     fprintf(o,
-            "},\n  \"vertices\": %d,\n  \"faces\": %d,\n  \"charts\": %d,\n  \"split_uvs\": %d,\n",
+            "},\n  \"mesh\": {\"vertices\": %d, \"faces\": %d, \"charts\": %d},\n  \"split_uvs\": "
+            "%d,\n",
             a->nv, a->nf, a->ncharts, a->split_uvs);
     fputs("  \"setup_seconds\": ", o);
     json_write_number(o, r->setup_seconds);
-    fputs(",\n  \"total_seconds\": ", o);
+    fputs(",\n  \"seconds\": ", o);
     json_write_number(o, r->total_seconds);
-    fprintf(o, ",\n  \"settle_iterations_run\": %d,\n  \"compact_iterations_run\": %d,\n",
-            a->settle_done, a->compact_done);
+    fprintf(o,
+            ",\n  \"iteration_count\": %d,\n  \"settle_iterations_run\": %d,\n"
+            "  \"compact_iterations_run\": %d,\n",
+            r->niterations, a->settle_done, a->compact_done);
     fprintf(o, "  \"compaction_kept_earlier_layout\": %s,\n",
             a->compact_restored ? "true" : "false");
     fprintf(o,
@@ -71,6 +75,8 @@ scaf_status atlas_report_write(const char *path, const atlas_report *r, scaf_err
     json_write_number(o, a->settled_energy);
     fputs(",\n  \"final_energy\": ", o);
     json_write_number(o, scaf_loop_energy(&a->loop));
+    fputs(",\n  \"energy\": ", o);
+    json_write_number(o, r->out_energy);
     fputs(",\n  \"packing_efficiency_before_compaction\": ", o);
     json_write_number(o, a->eff_before);
     fputs(",\n  \"packing_efficiency_after_repack\": ", o);

@@ -1,11 +1,12 @@
 /* app/atlas_report: the JSON report and the SVG picture of an atlas run.
  *
- * Report: one JSON object with the input/output names, options, chart
- * count, split UVs, why the run stopped (stop_reason: the last phase's
+ * Report: one JSON object (docs/reports.md) with the schema and command,
+ * the input/output names, options, mesh sizes and chart count, split UVs, why the run stopped (stop_reason: the last phase's
  * reason, phase_stop_reasons: each phase's), every iteration (phase, E, total energy before/after
  * the step, step, seconds, side, normalized smallest chart gap, packing
  * efficiency), packing efficiency and min_chart_gap before and after
- * compaction, the final ones of the output, and per-chart distortion.
+ * compaction, the final ones of the output, the area-matched E of the
+ * output (scaf_area_matched_energy) and per-chart distortion.
  * Picture: the normalized atlas in the unit square, each chart filled in
  * its own colour (golden-ratio hues), the unit square outlined. Both
  * written atomically
@@ -23,6 +24,7 @@ typedef struct atlas_report {
     double resolution; /* texels (0: not given) */
     double setup_seconds, total_seconds;
     double out_gap, out_efficiency; /* of the written, normalized layout */
+    double out_energy;              /* its area-matched E */
     int niterations;
     const atlas_iteration *iterations;
     const seam_report *seams; /* the seams and the chart of every face

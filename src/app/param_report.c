@@ -49,7 +49,8 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
     if (st != SCAF_OK) return st;
     FILE *o = a.f;
     const scaf_options_t *op = r->options;
-    fputs("{\n  \"input\": ", o);
+    json_write_report_head(o, "param");
+    fputs(",\n  \"input\": ", o);
     json_write_string(o, r->input);
     fputs(",\n  \"output\": ", o);
     json_write_string(o, r->output);
@@ -86,6 +87,8 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
     json_write_number(o, r->initial_energy);
     fputs(",\n  \"final_energy\": ", o);
     json_write_number(o, r->final_energy);
+    fputs(",\n  \"energy\": ", o);
+    json_write_number(o, r->energy);
     fprintf(o, ",\n  \"iteration_count\": %d", r->niterations);
     /* the convergence criterion of the last step (see scaf_options_t) and
      * its Newton part */

@@ -1,6 +1,6 @@
 /* app/param_report: the JSON report of a parametrization run.
  *
- * One JSON object: input/output names, status, why the run stopped
+ * One JSON object (docs/reports.md): schema and command, input/output names, status, why the run stopped
  * (stop_reason: scaf_stop_reason_name), the options, mesh sizes, initial and
  * final energy, every iteration (energy, total energy before/after the
  * step, lambda, step, scaffold size, seconds and phase split), the summed
@@ -20,7 +20,9 @@ typedef struct param_report {
     int vertices, faces, charts;
     double setup_seconds; /* reading + charts + initial embedding */
     double initial_energy;
-    double final_energy;
+    double final_energy;          /* the optimizer's, at the layout's scale */
+    double energy;                /* area-matched E of the output (scaf.h:
+                                     scaf_area_matched_energy) */
     const char *status;           /* "ok", "cancelled", ... */
     scaf_stop_reason stop_reason; /* why the run stopped */
     int niterations;

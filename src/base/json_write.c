@@ -23,3 +23,9 @@ void json_write_number(FILE *out, double x)
     if (isfinite(x)) fprintf(out, "%.17g", x);
     else fputs("null", out);
 }
+
+void json_write_report_head(FILE *out, const char *command)
+{
+    fputs("{\n  \"schema\": \"" SCAF_REPORT_SCHEMA "\",\n  \"command\": ", out);
+    json_write_string(out, command);
+}

@@ -37,20 +37,27 @@ static int ends_with(const char *s, size_t n, const char *suffix)
     return n >= k && strncasecmp(s + n - k, suffix, k) == 0;
 }
 
-static mesh_format format_from_name(const char *path)
+mesh_format mesh_format_from_name(const char *path)
 {
     size_t n = strlen(path);
     if (ends_with(path, n, ".gz")) n -= 3;
     if (ends_with(path, n, ".obj")) return MESH_FORMAT_OBJ;
     if (ends_with(path, n, ".off")) return MESH_FORMAT_OFF;
     if (ends_with(path, n, ".ply")) return MESH_FORMAT_PLY;
+    if (ends_with(path, n, ".gltf") || ends_with(path, n, ".glb")) return MESH_FORMAT_GLTF;
     return MESH_FORMAT_UNKNOWN;
 }
 
-static mesh_format format_from_content(const char *data, size_t size)
+mesh_format mesh_format_from_content(const char *data, size_t size)
 {
     if (size >= 3 && memcmp(data, "ply", 3) == 0) return MESH_FORMAT_PLY;
+    if (size >= 4 && memcmp(data, "glTF", 4) == 0) return MESH_FORMAT_GLTF;
     size_t i = 0;
+    if (size >= 3 && memcmp(data, "\xEF\xBB\xBF", 3) == 0) i = 3; /* UTF-8 BOM */
+    while (i < size && (data[i] == ' ' || data[i] == '\t' || data[i] == '\r' || data[i] == '\n'))
+        i++;
+    if (i < size && data[i] == '{') return MESH_FORMAT_GLTF; /* no OBJ/OFF line starts so */
+    i = 0;
     while (i < size && (data[i] == ' ' || data[i] == '\t' || data[i] == '\r' || data[i] == '\n'))
         i++;
     size_t j = i;
@@ -77,11 +84,13 @@ scaf_status mesh_parse(const char *data, size_t size, mesh_format format, const 
                        "%s:1: the lines end in CR alone (classic Mac OS line endings); convert "
                        "them to LF or CRLF",
                        name);
-    if (format == MESH_FORMAT_UNKNOWN) format = format_from_content(data, size);
+    if (format == MESH_FORMAT_UNKNOWN) format = mesh_format_from_content(data, size);
     switch (format) {
     case MESH_FORMAT_OBJ: return mesh_parse_obj(data, size, name, m, info, err);
     case MESH_FORMAT_OFF: return mesh_parse_off(data, size, name, m, info, err);
     case MESH_FORMAT_PLY: return mesh_parse_ply(data, size, name, m, info, err);
+    case MESH_FORMAT_GLTF:
+        return err_set(err, SCAF_ERR_PARSE, "%s: glTF input is not supported yet", name);
     default: return err_set(err, SCAF_ERR_USAGE, "%s: unknown mesh format", name);
     }
 }
@@ -222,6 +231,51 @@ static scaf_status load_gzip(int fd, const char *path, size_t compressed, char *
     return SCAF_OK;
 }
 
+scaf_status mesh_load_fd(int fd, const char *name, char **data, size_t *size, scaf_error *err)
+{
+    *data = NULL;
+    *size = 0;
+    size_t cap = 1 << 16, n = 0;
+    char *buf = malloc(cap);
+    if (!buf) return err_set(err, SCAF_ERR_NOMEM, "%s: out of memory", name);
+    for (;;) {
+        if (n == cap) {
+            char *b = cap <= SIZE_MAX / 2 ? realloc(buf, cap * 2) : NULL;
+            if (!b) {
+                free(buf);
+                return err_set(err, SCAF_ERR_NOMEM, "%s: out of memory (%zu bytes read)", name, n);
+            }
+            buf = b;
+            cap *= 2;
+        }
+        ssize_t r = read(fd, buf + n, cap - n > (1u << 30) ? (1u << 30) : cap - n);
+        if (r < 0 && errno == EINTR) {
+            if (interrupt_pending()) break; /* reported below */
+            continue;
+        }
+        if (r < 0) {
+            int e = errno;
+            free(buf);
+            return err_set(err, SCAF_ERR_IO, "%s: cannot read: %s", name, strerror(e));
+        }
+        if (r == 0) break;
+        n += (size_t)r;
+    }
+    scaf_status st = interrupt_check(NULL, "reading the mesh", err);
+    if (st == SCAF_OK && n >= 2 && (unsigned char)buf[0] == 0x1f && (unsigned char)buf[1] == 0x8b)
+        st = err_set(err, SCAF_ERR_PARSE,
+                     "%s:1: gzip-compressed data; only files are decompressed: decompress it "
+                     "first (zcat FILE.gz | scaf ...)",
+                     name);
+    if (st != SCAF_OK) {
+        free(buf);
+        return st;
+    }
+    *data = buf;
+    *size = n;
+    return SCAF_OK;
+}
+
 scaf_status mesh_load_file(const char *path, char **data, size_t *size, scaf_error *err)
 {
     *data = NULL;
@@ -263,7 +317,7 @@ scaf_status mesh_read(const char *path, mesh *m, mesh_read_info *info, scaf_erro
     interrupt_test_point("parse");
     scaf_status st = mesh_load_file(path, &data, &n, err);
     if (st != SCAF_OK) return st;
-    st = mesh_parse(data, n, format_from_name(path), path, m, info, err);
+    st = mesh_parse(data, n, mesh_format_from_name(path), path, m, info, err);
     free(data);
     return st;
 }

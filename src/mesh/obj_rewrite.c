@@ -268,5 +268,16 @@ scaf_status obj_rewrite_uv_text(const char *name, const char *data, size_t size,
         return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv_text: no text");
     scaf_status st = check_args(out_path, m, err);
     if (st != SCAF_OK) return st;
-    return rewrite_text(name, data ? data : "", size, out_path, m, NULL, err);
+    return obj_rewrite_uv_text_grouped(name, data, size, out_path, m, NULL, err);
+}
+
+scaf_status obj_rewrite_uv_text_grouped(const char *name, const char *data, size_t size,
+                                        const char *out_path, const mesh *m, const int *face_group,
+                                        scaf_error *err)
+{
+    if (!name || (!data && size))
+        return err_set(err, SCAF_ERR_USAGE, "obj_rewrite_uv_text: no text");
+    scaf_status st = check_args(out_path, m, err);
+    if (st != SCAF_OK) return st;
+    return rewrite_text(name, data ? data : "", size, out_path, m, face_group, err);
 }

@@ -271,5 +271,6 @@ scaf_status mesh_parse_obj(const char *data, size_t size, const char *name, mesh
     info->normals_ignored = clamp_int(P.normals);
     int keep_uv = P.with_uv > 0 && P.without_uv == 0;
     info->faces_without_uv = P.with_uv > 0 ? clamp_int(P.without_uv) : 0;
+    if (keep_uv) info->uv_source = "OBJ vt";
     return mesh_builder_finish(&P.b, keep_uv, m, err);
 }

@@ -28,6 +28,7 @@
 #include "mesh/mesh_builder.h"
 #include "mesh/mesh_readers.h"
 #include "mesh/text_scan.h"
+#include "mesh/uv_weld.h"
 
 typedef enum ply_type {
     PT_NONE,
@@ -53,7 +54,20 @@ static const struct {
 static int type_size(ply_type t) { return t == PT_NONE ? 0 : ply_types[t - 1].size; }
 static int type_is_int(ply_type t) { return t >= PT_I8 && t <= PT_U32; }
 
-typedef enum ply_role { ROLE_SKIP, ROLE_X, ROLE_Y, ROLE_Z, ROLE_INDICES } ply_role;
+typedef enum ply_role {
+    ROLE_SKIP,
+    ROLE_X,
+    ROLE_Y,
+    ROLE_Z,
+    ROLE_INDICES,
+    ROLE_U,       /* vertex s / u / texture_u / texture_s */
+    ROLE_V,       /* vertex t / v / texture_v / texture_t */
+    ROLE_TEXCOORD /* face list texcoord: u v per corner */
+} ply_role;
+
+/* The names of a per-vertex UV pair, in the order they are looked for. */
+static const char *const uv_names[][2] = {
+    {"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
 
 typedef struct ply_prop {
     ply_type type;       /* scalar type, or list item type */
@@ -374,7 +388,16 @@ static scaf_status parse_header(const char *data, size_t size, const char *name,
                 if (word_is(pname, pnl, "x")) pr.role = ROLE_X;
                 else if (word_is(pname, pnl, "y")) pr.role = ROLE_Y;
                 else if (word_is(pname, pnl, "z")) pr.role = ROLE_Z;
+                for (size_t q = 0; q < sizeof uv_names / sizeof uv_names[0]; q++) {
+                    if (word_is(pname, pnl, uv_names[q][0])) pr.role = ROLE_U;
+                    if (word_is(pname, pnl, uv_names[q][1])) pr.role = ROLE_V;
+                }
+                /* a second UV pair (u,v besides s,t) is skipped: the first one counts */
+                for (int k = 0; (pr.role == ROLE_U || pr.role == ROLE_V) && k < el->nprops; k++)
+                    if (el->props[k].role == pr.role) pr.role = ROLE_SKIP;
             }
+            if (el->is_face && pr.count_type != PT_NONE && word_is(pname, pnl, "texcoord"))
+                pr.role = ROLE_TEXCOORD;
             if (el->is_face && pr.count_type != PT_NONE &&
                 (word_is(pname, pnl, "vertex_indices") || word_is(pname, pnl, "vertex_index"))) {
                 if (!type_is_int(pr.type))
@@ -421,6 +444,39 @@ static long long min_item_bytes(const ply_elem *el, ply_format fmt)
     return s;
 }
 
+/* The triangles of one face (corners[0..n), fanned), with its texcoord
+ * list tc (2 per corner, ntc values) when not NULL, or per-vertex UV
+ * indices (the builder's UVs are the vertices') when the builder has FT. */
+static scaf_status emit_face(mesh_builder *b, const int *corners, long long n, const double *tc,
+                             long long ntc, const char *name, long line, long long it,
+                             scaf_error *err)
+{
+    if (n < 0) return mesh_parse_fail(err, name, line, "face %lld has no vertex_indices list", it);
+    int base = (int)b->nuv;
+    if (tc) {
+        if (ntc != 2 * n)
+            return mesh_parse_fail(err, name, line,
+                                   "face %lld: texcoord list has %lld values for %lld corners "
+                                   "(needs 2 per corner: u v)",
+                                   it, ntc < 0 ? 0 : ntc, n);
+        for (long long j = 0; j < n; j++)
+            if (mesh_builder_add_uv(b, tc[2 * j], tc[2 * j + 1]))
+                return err_nomem(err, "texture coordinates");
+    }
+    for (long long j = 1; j + 1 < n; j++) {
+        int ta = corners[0], tb = corners[j], tcn = corners[j + 1];
+        if (tc) {
+            ta = base;
+            tb = base + (int)j;
+            tcn = base + (int)j + 1;
+        }
+        if (mesh_builder_add_f(b, corners[0], corners[j], corners[j + 1], ta, tb, tcn))
+            return err_set(err, SCAF_ERR_NOMEM, "%s: out of memory (or more than INT_MAX faces)",
+                           name);
+    }
+    return SCAF_OK;
+}
+
 scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh *m,
                            mesh_read_info *info, scaf_error *err)
 {
@@ -430,6 +486,9 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
     mesh_builder_init(&b, 0);
     int *corners = NULL;
     size_t ccap = 0;
+    double *tc = NULL; /* one face's texcoord list */
+    size_t tcap = 0;
+    int face_tc = 0, vertex_uv = 0; /* where the UVs come from */
     long long polygons = 0;
     scaf_status st = parse_header(data, size, name, &h, err);
     if (st) goto done;
@@ -486,6 +545,11 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
         st = mesh_parse_fail(err, name, h.end_line, "face element lacks a 'vertex_indices' list");
         goto done;
     }
+    /* UVs: a face texcoord list (per corner) wins over per-vertex u, v */
+    vertex_uv = (roles & (1 << ROLE_U)) && (roles & (1 << ROLE_V));
+    for (int k = 0; k < ef->nprops; k++) face_tc |= ef->props[k].role == ROLE_TEXCOORD;
+    if (face_tc) vertex_uv = 0;
+    b.with_ft = face_tc || vertex_uv;
     if (mesh_builder_reserve(&b, (size_t)ev->count, (size_t)ef->count)) {
         st = err_nomem(err, "mesh arrays");
         goto done;
@@ -503,7 +567,8 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
                 st = interrupt_check(NULL, "reading the mesh", err);
                 break;
             }
-            double x[3] = {0, 0, 0};
+            double x[3] = {0, 0, 0}, t[2] = {0, 0};
+            long long n = -1, ntc = -1; /* corners and texcoord values of this face */
             for (int q = 0; q < el->nprops && !st; q++) {
                 const ply_prop *pr = &el->props[q];
                 if (el == ev && pr->role >= ROLE_X && pr->role <= ROLE_Z) {
@@ -512,8 +577,39 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
                     if (!isfinite(*d))
                         st = mesh_parse_fail(err, name, R.line,
                                              "vertex %lld: coordinate is not finite", it);
+                } else if (el == ev && vertex_uv && (pr->role == ROLE_U || pr->role == ROLE_V) &&
+                           pr->count_type == PT_NONE) {
+                    double *d = &t[pr->role - ROLE_U];
+                    if ((st = ply_value(&R, pr->type, 0, d, NULL, what, it))) break;
+                    if (!isfinite(*d))
+                        st = mesh_parse_fail(err, name, R.line,
+                                             "vertex %lld: texture coordinate is not finite", it);
+                } else if (el == ef && pr->role == ROLE_TEXCOORD) {
+                    if ((st = ply_value(&R, pr->count_type, 1, NULL, &ntc, what, it))) break;
+                    size_t minb = h.fmt == PLY_ASCII ? 2 : (size_t)type_size(pr->type);
+                    if (ntc < 0 || (unsigned long long)ntc > (size_t)(R.end - R.p) / minb + 1) {
+                        st = ntc < 0 ? mesh_parse_fail(err, name, R.line,
+                                                       "face %lld: negative texcoord count", it)
+                                     : ply_truncated(&R, what, it);
+                        break;
+                    }
+                    if ((size_t)ntc > tcap) {
+                        size_t cap = (size_t)ntc < 16 ? 16 : (size_t)ntc;
+                        double *a = realloc(tc, cap * sizeof *a);
+                        if (!a) {
+                            st = err_nomem(err, "face texture coordinates");
+                            break;
+                        }
+                        tc = a;
+                        tcap = cap;
+                    }
+                    for (long long j = 0; j < ntc && !st; j++) {
+                        if ((st = ply_value(&R, pr->type, 0, &tc[j], NULL, what, it))) break;
+                        if (!isfinite(tc[j]))
+                            st = mesh_parse_fail(err, name, R.line,
+                                                 "face %lld: texture coordinate is not finite", it);
+                    }
                 } else if (el == ef && pr->role == ROLE_INDICES) {
-                    long long n;
                     if ((st = ply_value(&R, pr->count_type, 1, NULL, &n, what, it))) break;
                     if (n < 3) {
                         st =
@@ -557,23 +653,23 @@ scaf_status mesh_parse_ply(const char *data, size_t size, const char *name, mesh
                                                        it, dup);
                         break;
                     }
-                    for (long long j = 1; j + 1 < n; j++)
-                        if (mesh_builder_add_f(&b, corners[0], corners[j], corners[j + 1], 0, 0,
-                                               0)) {
-                            st = err_set(err, SCAF_ERR_NOMEM,
-                                         "%s: out of memory (or more than INT_MAX faces)", name);
-                            break;
-                        }
-                    if (n > 3) polygons++;
                 } else {
                     st = ply_skip_prop(&R, pr, what, it);
                 }
             }
-            if (!st && el == ev) mesh_builder_add_v(&b, x[0], x[1], x[2]); /* reserved */
+            if (!st && el == ev) {
+                mesh_builder_add_v(&b, x[0], x[1], x[2]); /* reserved */
+                if (vertex_uv && mesh_builder_add_uv(&b, t[0], t[1]))
+                    st = err_nomem(err, "texture coordinates");
+            }
+            if (!st && el == ef)
+                st = emit_face(&b, corners, n, face_tc ? tc : NULL, ntc, name, R.line, it, err);
+            if (!st && el == ef && n > 3) polygons++;
         }
     }
 done:
     free(corners);
+    free(tc);
     header_free(&h);
     if (st != SCAF_OK) {
         mesh_builder_free(&b);
@@ -581,5 +677,9 @@ done:
     }
     info->format = MESH_FORMAT_PLY;
     info->polygons_triangulated = polygons > INT_MAX ? INT_MAX : (int)polygons;
-    return mesh_builder_finish(&b, 0, m, err);
+    info->uv_source = face_tc ? "PLY face texcoord" : vertex_uv ? "PLY vertex u, v" : NULL;
+    st = mesh_builder_finish(&b, b.with_ft, m, err);
+    if (st == SCAF_OK && face_tc) st = uv_weld_corners(m, err); /* corners of a vertex joined */
+    if (st != SCAF_OK) mesh_free(m);
+    return st;
 }

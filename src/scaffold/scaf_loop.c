@@ -119,6 +119,8 @@ struct scaf_loop_work {
     double seen_em, seen_e;
     opt_energy seen_kind;
     int seen_valid;
+    unsigned char *pinned; /* nv flags (NULL until a vertex is pinned) */
+    int npinned;
 };
 
 scaf_loop_options scaf_loop_options_default(void)
@@ -159,6 +161,7 @@ void scaf_loop_free(scaf_loop *L)
         free(w->dir);
         free(w->kept);
         free(w->seen_uv);
+        free(w->pinned);
         free(w);
     }
     memset(L, 0, sizeof *L);
@@ -317,6 +320,111 @@ int scaf_loop_newton_available(const scaf_loop *L)
     for (int k = 0; k < w->nterms; k++)
         if (w->terms[k].ops->fill && !w->terms[k].ops->hessian_fill) return 0;
     return 1;
+}
+
+/* ---- pinned vertices --------------------------------------------------- */
+
+scaf_status scaf_loop_pin(scaf_loop *L, int v, int pinned, scaf_error *err)
+{
+    scaf_loop_work *w = L->work;
+    if (v < 0 || v >= L->nv)
+        return err_set(err, SCAF_ERR_USAGE, "SCAF loop: vertex %d to pin is not in [0, %d)", v,
+                       L->nv);
+    if (!w->pinned) {
+        if (!pinned) return SCAF_OK;
+        w->pinned = calloc((size_t)L->nv, 1);
+        if (!w->pinned) return err_nomem(err, "pinned vertices");
+    }
+    pinned = pinned != 0;
+    if (w->pinned[v] != pinned) w->npinned += pinned ? 1 : -1;
+    w->pinned[v] = (unsigned char)pinned;
+    return SCAF_OK;
+}
+
+int scaf_loop_pinned(const scaf_loop *L, int v)
+{
+    const scaf_loop_work *w = L->work;
+    return w->pinned && v >= 0 && v < L->nv && w->pinned[v];
+}
+
+int scaf_loop_pinned_count(const scaf_loop *L) { return L->work->npinned; }
+
+/* Orientation of triangle t (3 ids into the mesh vertices, then the
+ * scaffold's extra vertices) with vertex v at p instead of its position. */
+static double orient_with(const scaf_loop *L, const int *t, int v, const double p[2])
+{
+    const scaffold_view *sc = &L->work->view;
+    const double *q[3];
+    for (int k = 0; k < 3; k++)
+        q[k] = t[k] == v   ? p
+            : t[k] < L->nv ? L->uv + 2 * (size_t)t[k]
+                           : sc->extra + 2 * (size_t)(t[k] - L->nv);
+    return orient2d(q[0], q[1], q[2]);
+}
+
+int scaf_loop_place(scaf_loop *L, int v, const double p[2])
+{
+    const scaffold_view *sc = &L->work->view;
+    if (L->d != 2 || v < 0 || v >= L->nv || !isfinite(p[0]) || !isfinite(p[1])) return 0;
+    if (sc->n <= 0 || sc->nmesh != L->nv) return 0; /* no scaffold of the current map yet */
+    for (int f = 0; f < L->nf; f++) {
+        const int *t = L->F + 3 * (size_t)f;
+        if ((t[0] == v || t[1] == v || t[2] == v) && !(orient_with(L, t, v, p) > 0.0)) return 0;
+    }
+    for (int s = 0; s < sc->n; s++) {
+        const int *t = sc->simplices + 3 * (size_t)s;
+        if ((t[0] == v || t[1] == v || t[2] == v) && !(orient_with(L, t, v, p) > 0.0)) return 0;
+    }
+    L->uv[2 * (size_t)v] = p[0];
+    L->uv[2 * (size_t)v + 1] = p[1];
+    return 1;
+}
+
+/* Pinned mesh vertices out of the assembled system (n unknowns): their
+ * rows and columns zeroed but for a unit diagonal, their coupling to the
+ * free unknowns moved to the right-hand side. The pattern stays (the
+ * analysis is kept); the free unknowns get the minimizer of the proxy
+ * with the pinned ones held. SLIM's unknowns are positions (rhs_i -=
+ * a_ij X_j, the pinned rows solve to X_j); Newton's are steps (0 on the
+ * pinned rows, nothing to move). Mesh vertex v owns unknowns d v .. d v +
+ * d - 1 (box vertices are the only fixed dofs: see the banner). */
+static void pins_eliminate(scaf_loop *L, const double *X, int newton, size_t n)
+{
+    scaf_loop_work *w = L->work;
+    if (!w->npinned) return;
+    opt_csc *A = &w->sys.A;
+    size_t d = (size_t)L->d, nm = d * (size_t)L->nv;
+    for (size_t c = 0; c < n; c++) {
+        int pc = c < nm && w->pinned[c / d];
+        for (int e = A->colptr[c]; e < A->colptr[c + 1]; e++) {
+            size_t r = (size_t)A->rowidx[e];
+            int pr = r < nm && w->pinned[r / d];
+            if (!pc && !pr) continue;
+            if (r == c) {
+                A->val[e] = 1.0;
+                continue;
+            }
+            if (!newton) {
+                if (pc && !pr) w->rhs[r] -= A->val[e] * X[c];
+                else if (pr && !pc) w->rhs[c] -= A->val[e] * X[r];
+            }
+            A->val[e] = 0.0;
+        }
+    }
+    for (int v = 0; v < L->nv; v++)
+        if (w->pinned[v])
+            for (size_t a = 0; a < d; a++) w->rhs[d * (size_t)v + a] = newton ? 0.0 : X[d * v + a];
+}
+
+/* The step is exactly zero on pinned vertices, whatever the solve's
+ * rounding. */
+static void pins_zero_direction(const scaf_loop *L, double *dir)
+{
+    const scaf_loop_work *w = L->work;
+    if (!w->npinned) return;
+    for (int v = 0; v < L->nv; v++)
+        if (w->pinned[v])
+            for (int a = 0; a < L->d; a++) dir[(size_t)L->d * (size_t)v + a] = 0.0;
 }
 
 /* ---- energies ---------------------------------------------------------- */
@@ -507,7 +615,9 @@ static scaf_status newton_fill(scaf_loop *L, const int *dof, const double *X, in
         if (st != SCAF_OK) return st;
         bl[nb++] = &t->blk;
     }
-    return opt_proxy_system_sum(&w->sys, bl, nb, err);
+    scaf_status st = opt_proxy_system_sum(&w->sys, bl, nb, err);
+    if (st == SCAF_OK) pins_eliminate(L, X, 1, n);
+    return st;
 }
 
 /* The Newton system, ordered and factored: exact Hessian after a full
@@ -580,6 +690,7 @@ static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, 
         }
         st = opt_proxy_system_sum(&w->sys, bl, nb, err);
         if (st != SCAF_OK) return st;
+        pins_eliminate(L, X, 0, n);
         tm->assembly = timer_now() - t0;
         st = order_and_factor(L, n, &t_metis, err);
         if (st == SCAF_ERR_NUMERIC) st = regularized_factor(L, nall, dof, X, n, 0, err);
@@ -597,6 +708,7 @@ static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, 
     if (newton) newton_direction(d, nall, dof, w->sol, w->dir);
     else if (d == 2) direction(2, nall, dof, w->sol, X, w->dir); /* d known: the loop unrolls */
     else direction(d, nall, dof, w->sol, X, w->dir);
+    pins_zero_direction(L, w->dir);
     opt_ls_options lo;
     opt_ls_options_default(&lo);
     lo.safety = L->opt.step_fraction;
@@ -894,6 +1006,11 @@ scaf_status scaf_loop_step(scaf_loop *L, scaf_iteration_info_t *info, scaf_error
     t1 = timer_now();
     t0 = t1;
 
+    /* pinned vertices keep their bits (X0 + t 0 turns -0.0 into +0.0) */
+    for (int v = 0; w->npinned && v < L->nv; v++)
+        if (w->pinned[v])
+            for (int a = 0; a < d; a++)
+                X[(size_t)d * (size_t)v + a] = L->uv[(size_t)d * (size_t)v + a];
     memcpy(L->uv, X, sizeof(double) * d * (size_t)L->nv);
     memcpy(sc->extra, X + (size_t)d * L->nv, sizeof(double) * d * (size_t)sc->nextra);
     L->iterations++;

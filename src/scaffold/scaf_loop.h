@@ -186,6 +186,25 @@ scaf_status scaf_loop_add_term(scaf_loop *L, const opt_obj_term *t, scaf_error *
  * a Hessian (hessian_fill; the mesh term has one for every opt_energy). */
 int scaf_loop_newton_available(const scaf_loop *L);
 
+/* Pin mesh vertex v (pinned 1) or free it (0): a pinned vertex never
+ * moves; its coordinates stay bit for bit through every iteration (it is
+ * eliminated from the system and its step is zero; the caller may still
+ * move it between iterations, as any position). SCAF_ERR_USAGE for v not
+ * a mesh vertex, SCAF_ERR_NOMEM. Positions the pins make impossible to
+ * improve give zero steps, never a flip. */
+scaf_status scaf_loop_pin(scaf_loop *L, int v, int pinned, scaf_error *err);
+int scaf_loop_pinned(const scaf_loop *L, int v);
+int scaf_loop_pinned_count(const scaf_loop *L);
+
+/* Move mesh vertex v to exactly p (2D, between iterations) when that
+ * keeps every mesh and scaffold triangle around v positively oriented,
+ * decided exactly (geom/predicates): the mesh and the scaffold then still
+ * tile the fixed box, so the map stays bijective. 1: moved; 0: not (a
+ * flip, a non-finite p, no scaffold yet: before the first iteration, or
+ * after a failed one), nothing changed. How a hard target is reached
+ * exactly (app/deform, app/drag). */
+int scaf_loop_place(scaf_loop *L, int v, const double p[2]);
+
 /* One iteration; fills info (may be NULL; info->solver says which step
  * was taken, info->decrement the relative Newton decrement). A Newton
  * step that the line search cannot use (zero step) is replaced by a SLIM

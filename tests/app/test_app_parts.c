@@ -128,7 +128,7 @@ static void report_is_json_with_phases(void **state)
     }
     it[1].lambda = NAN; /* non-finite numbers become null */
     scaf_options_t o = scaf_options_default();
-    param_report r = {"in \"quoted\".obj", "out.obj", &o, 10,  12, 1, 0.5, 7.0, 3.0, "ok",
+    param_report r = {"in \"quoted\".obj", "out.obj", &o, 10,  12, 1, 0.5, 7.0, 3.0, 3.25, "ok",
                       SCAF_STOP_TOLERANCE, 3,         it, NULL};
     char path[512];
     test_tmp_path("parts.json", path, sizeof path);
@@ -143,6 +143,9 @@ static void report_is_json_with_phases(void **state)
     assert_int_equal(count(s, "\"iteration\":"), 3);
     assert_non_null(strstr(s, "\"phase_fraction\""));
     assert_non_null(strstr(s, "\"stop_reason\": \"tolerance\""));
+    assert_true(strncmp(s, "{\n  \"schema\": \"scaf-report/1\",\n  \"command\": \"param\"", 51) ==
+                0);
+    assert_non_null(strstr(s, "\"energy\": 3.25"));
     assert_null(strstr(s, "nan"));
     free(s);
     assert_true(fabs(param_report_median_seconds(it, 2) - 0.15) < 1e-15);

@@ -42,7 +42,7 @@ static void spiral_end_to_end(void **state)
     assert_non_null(r);
     assert_true(report_number(r, "max_handle_error") < 1e-3);
     assert_true(report_number(r, "energy") < 4.1);
-    assert_true(report_number(r, "iterations") > 92); /* the drag: 23 waypoints x 4 */
+    assert_true(report_number(r, "iteration_count") > 92); /* the drag: 23 waypoints x 4 */
     assert_non_null(strstr(r, "\"stop_reason\": \"tolerance\""));
     free(r);
     /* v and vt agree, z = 0 */
@@ -71,6 +71,77 @@ static void spiral_end_to_end(void **state)
     assert_non_null(r);
     assert_true(report_number(r, "max_handle_error") > 0.1);
     free(r);
+}
+
+/* Hard targets: the spiral with every target hard ends exactly on them
+ * (max_handle_error 0 in the report, the vt checked by `scaf check`);
+ * two corners of a triangle swapping hard targets is infeasible (exit 9,
+ * before any iteration, the triangle named, nothing written); a hard
+ * target on a pinned vertex stalls and ends with exit 9. */
+static void hard_targets_end_to_end(void **state)
+{
+    (void)state;
+    char s[512], t[512], bad[512], out[512], rep[512], log[512];
+    test_tmp_path("e2e_deform_hard_S.obj", s, sizeof s);
+    test_tmp_path("e2e_deform_hard_S.targets.json", t, sizeof t);
+    test_tmp_path("e2e_deform_hard_bad.json", bad, sizeof bad);
+    test_tmp_path("e2e_deform_hard_out.obj", out, sizeof out);
+    test_tmp_path("e2e_deform_hard_report.json", rep, sizeof rep);
+    test_tmp_path("e2e_deform_hard_log.txt", log, sizeof log);
+    assert_int_equal(test_run("%s gen spiral -o %s", SCAF_BINARY, s), 0);
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s --report %s --hard --verify 2> %s",
+                              SCAF_BINARY, s, t, out, rep, log),
+                     0);
+    assert_int_equal(test_run("%s check %s > /dev/null", SCAF_BINARY, out), 0);
+    char *r = test_slurp(rep);
+    assert_non_null(r);
+    assert_true(report_number(r, "max_handle_error") == 0.0);
+    assert_true(report_number(r, "hard_targets") == 54.0);
+    assert_true(report_number(r, "hard_targets_met") == 54.0);
+    free(r);
+    char *e = test_slurp(log);
+    assert_non_null(strstr(e, "54 of 54 hard targets met exactly"));
+    free(e);
+    /* vertices 0 and 1 (corners of triangle 1) swap targets */
+    FILE *f = fopen(bad, "w");
+    assert_non_null(f);
+    fputs("{\"handles\": [{\"vertex\": 0, \"target\": [1.03, 0]}, {\"vertex\": 1, \"target\": "
+          "[0.97, 0]}, {\"vertex\": 3, \"target\": [1.03, 0.01], \"hard\": true}], \"pins\": "
+          "[]}\n",
+          f);
+    fclose(f);
+    remove(out);
+    assert_int_equal(
+        test_run("%s deform %s --targets %s -o %s --hard 2> %s", SCAF_BINARY, s, bad, out, log), 9);
+    assert_false(test_exists(out));
+    e = test_slurp(log);
+    assert_non_null(strstr(e, "infeasible: triangle 1 has all three corners held"));
+    free(e);
+    /* vertex 0 onto pinned vertex 30 (its position as written) */
+    char *obj = test_slurp(s);
+    assert_non_null(obj);
+    const char *line = obj;
+    for (int k = 0; k <= 30; k++) {
+        line = strstr(line + 1, "\nv ");
+        assert_non_null(line);
+    }
+    char x30[64], y30[64];
+    assert_int_equal(sscanf(line, " v %63s %63s", x30, y30), 2);
+    free(obj);
+    f = fopen(bad, "w");
+    assert_non_null(f);
+    fprintf(f,
+            "{\"handles\": [{\"vertex\": 0, \"target\": [%s, %s], \"hard\": true}], \"pins\": "
+            "[30]}\n",
+            x30, y30);
+    fclose(f);
+    assert_int_equal(test_run("%s deform %s --targets %s -o %s --iterations 1000 2> %s",
+                              SCAF_BINARY, s, bad, out, log),
+                     9);
+    assert_false(test_exists(out));
+    e = test_slurp(log);
+    assert_non_null(strstr(e, "infeasible: 1 of 1 hard targets not met"));
+    free(e);
 }
 
 /* A targets file with TEXT: exit status and a stderr that names WHAT. */
@@ -150,6 +221,18 @@ static void bad_input(void **state)
                 3, ":3: \"vertex\" must be an integer");
     bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [1]}]}", 3, "two numbers");
     bad_targets(g, "{\"handles\": [], \"wieght\": 3}", 3, "unknown or repeated key \"wieght\"");
+    /* pins and hard targets */
+    bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [1, 2], \"hard\": 1}]}", 3,
+                "\"hard\" must be true or false");
+    bad_targets(g, "{\"handles\": [], \"pins\": [0, 0]}", 4, "pin 2: vertex 0 is pinned twice");
+    bad_targets(g, "{\"handles\": [], \"pins\": [99]}", 4, "pin 1: vertex 99 is not one");
+    bad_targets(g, "{\"handles\": [], \"pins\": [1.5]}", 3, "a pin must be a vertex index");
+    bad_targets(g, "{\"handles\": [{\"vertex\": 3, \"target\": [1, 2]}], \"pins\": [3]}", 4,
+                "pin 1: vertex 3 has a handle");
+    bad_targets(g,
+                "{\"handles\": [{\"vertex\": 0, \"target\": [0.1, 0.1], \"hard\": true}], "
+                "\"pins\": [1, 2]}",
+                0, "");
     bad_targets(g, "{\"handles\": []} x", 3, "unexpected text after the object");
     bad_targets(g, "{\"weight\": 1}", 3, "no \"handles\"");
     bad_targets(g, "{\"handles\": [{\"vertex\": 0, \"target\": [0x1p3, 2]}]}", 3,
@@ -214,6 +297,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(spiral_end_to_end),
         cmocka_unit_test(bad_input),
+        cmocka_unit_test(hard_targets_end_to_end),
         cmocka_unit_test(interrupted_while_reading_targets),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

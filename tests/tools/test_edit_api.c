@@ -248,6 +248,23 @@ static void drag_undo_save(void **state)
                           "{\"chart\": 2, \"dx\": 0.05, \"dy\": 0, \"angle\": 0, \"steps\": 4}");
     assert_int_equal(send(x, &d, &text), 200);
     assert_non_null(strstr(text, "\"handles\": 1"));
+    {
+        /* energy is the area-matched E of the layout drawn (docs/energy.md),
+         * the drag's own figure is the objective */
+        const char *e = strstr(text, "\"energy\": ");
+        assert_non_null(e);
+        assert_non_null(strstr(text, "\"objective\": "));
+        int nuv = scaf_drag_uv_count(x->d), nf = scaf_drag_face_count(x->d);
+        double *uv = malloc(sizeof(double) * 2 * (size_t)nuv), expect = 0.0;
+        int *ft = malloc(sizeof(int) * 3 * (size_t)nf);
+        assert_int_equal(scaf_drag_get_uv(x->d, uv, ft, NULL), SCAF_OK);
+        assert_int_equal(scaf_area_matched_energy(x->api.m->V, x->api.m->nv, x->api.m->F, nf, uv,
+                                                  nuv, ft, &expect),
+                         SCAF_OK);
+        assert_true(expect >= 4.0 && fabs(strtod(e + 10, NULL) - expect) <= 1e-8 * expect);
+        free(uv);
+        free(ft);
+    }
     free(text);
     assert_int_equal(scaf_drag_iterations(x->d), start.iterations + 4);
     assert_true(chart_x(x, 2) > x0 + 0.01); /* it follows the pull */
