@@ -171,7 +171,7 @@ static void chart_groups_name_every_face(void **state)
     test_tmp_path("e2e_auto_again.obj", again, sizeof again);
     /* an OBJ input with a group of its own: ours replace it */
     assert_int_equal(
-        test_run("(echo 'g mine'; %s gen icosphere --size 4 -o -) > %s", SCAF_BINARY, ball), 0);
+        test_run("(echo 'g mine'; %s gen icosphere --size 3 -o -) > %s", SCAF_BINARY, ball), 0);
     mesh b;
     scaf_error e;
     assert_int_equal(mesh_read(ball, &b, NULL, &e), SCAF_OK);
