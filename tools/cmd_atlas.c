@@ -87,7 +87,8 @@ static void usage(FILE *o)
             "                           place of the input's `g` lines\n"
             "  --png-seams FILE         the 3D surface from the front and from the back,\n"
             "                           each chart in its --png colour, seams drawn dark,\n"
-            "                           beside the packed atlas in the same colours\n"
+            "                           beside the packed atlas in the same colours\n");
+    fprintf(o,
             "  --padding P              minimum distance between two charts, in units of the\n"
             "                           unit square (default K / R below: 4 / 1024 =\n"
             "                           0.00390625; --padding 0: charts only never overlap)\n"

@@ -43,6 +43,11 @@ scaf_status obj_rewrite_uv(const char *in_path, const char *out_path, const mesh
 scaf_status obj_rewrite_uv_grouped(const char *in_path, const char *out_path, const mesh *m,
                                    const int *face_group, scaf_error *err);
 
+/* obj_rewrite_uv_text with face groups (as obj_rewrite_uv_grouped). */
+scaf_status obj_rewrite_uv_text_grouped(const char *name, const char *data, size_t size,
+                                        const char *out_path, const mesh *m, const int *face_group,
+                                        scaf_error *err);
+
 /* The same with the input's text already in memory (size bytes of data,
  * decompressed; name for messages): for a caller that read the file
  * itself, e.g. through a descriptor it kept open. */

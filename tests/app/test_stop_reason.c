@@ -199,14 +199,15 @@ static void atlas_reasons(void **state)
     assert_int_equal(r[0], SCAF_STOP_CONVERGED);
     assert_int_equal(r[1], SCAF_STOP_NONE);
 
-    /* settle with tolerance 0 on a mesh that converges: a zero step (the
-     * hemisphere as one chart: its automatic charts, two since the merges,
-     * settle to a floor where E moves by an ulp both ways and run to the cap) */
+    /* settle with tolerance 0 on a mesh that converges: a zero step (a
+     * flat grid, E 4 exactly: the hemisphere without vt reached it from
+     * Tutte, but its automatic charts now start from the layout their
+     * refinement settled, from which steps in the last digits go on past
+     * 1000 iterations, as on cubesphere 3) */
     o = small_atlas();
     o.settle_tolerance = 0.0;
     o.settle_iterations = 1000;
-    o.seams = SCAF_SEAMS_INPUT;
-    assert_int_equal(atlas_run_on("hemisphere", 4, &o, &s, r), SCAF_OK);
+    assert_int_equal(atlas_run_on("grid", 6, &o, &s, r), SCAF_OK);
     assert_true(s.settle < 1000);
     assert_int_equal(r[0], SCAF_STOP_ZERO_STEP);
 
