@@ -53,9 +53,5 @@ scaf_status obj_rewrite_uv_text_grouped(const char *name, const char *data, size
  * itself, e.g. through a descriptor it kept open. */
 scaf_status obj_rewrite_uv_text(const char *name, const char *data, size_t size,
                                 const char *out_path, const mesh *m, scaf_error *err);
-/* ... with face_group as in obj_rewrite_uv_grouped (e.g. standard input). */
-scaf_status obj_rewrite_uv_text_grouped(const char *name, const char *data, size_t size,
-                                        const char *out_path, const mesh *m, const int *face_group,
-                                        scaf_error *err);
 
 #endif /* SCAF_MESH_OBJ_REWRITE_H */
