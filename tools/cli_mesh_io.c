@@ -13,6 +13,7 @@
 
 #include "mesh/gltf_io.h"
 #include "mesh/obj_rewrite.h"
+#include "mesh/uv_verdict.h"
 
 /* --input-format (MESH_FORMAT_UNKNOWN: from the name or the content) */
 static mesh_format forced_format = MESH_FORMAT_UNKNOWN;
@@ -171,6 +172,16 @@ scaf_status cli_write_uv_grouped(const char *cmd, const char *in, const mesh_rea
     mesh_format to = strcmp(target, "-") ? mesh_format_from_name(target) : MESH_FORMAT_OBJ;
     if (to == MESH_FORMAT_PLY) return mesh_write_ply(out, o, err);
     if (to == MESH_FORMAT_GLTF) { /* the input document again, with the UVs */
+        /* glTF keeps 32-bit floats: the map written must be bijective too */
+        bij_report rep;
+        scaf_status vs = mesh_uv_verdict_gltf(o, &rep, err);
+        if (vs != SCAF_OK) return vs;
+        if (!rep.bijective)
+            return err_set(err, SCAF_ERR_NUMERIC,
+                           "the UVs rounded to glTF's 32-bit floats are not bijective (%d "
+                           "flipped, %d degenerate, %lld crossings): nothing written; write OBJ "
+                           "or PLY, which keep doubles",
+                           rep.flipped, rep.degenerate, rep.boundary_crossings);
         size_t n = 0, tl = strlen(target);
         int binary = (tl >= 4 && !strcasecmp(target + tl - 4, ".glb")) ||
             (tl >= 7 && !strcasecmp(target + tl - 7, ".glb.gz"));
