@@ -2,6 +2,7 @@
 #define _DEFAULT_SOURCE /* madvise */
 #include "base/zeroed_pages.h"
 
+#include <assert.h>
 #include <stdint.h>
 #include <stdlib.h>
 
@@ -29,5 +30,8 @@ void *zeroed_pages(size_t n, size_t size)
         if (hi > lo) (void)madvise((void *)lo, hi - lo, MADV_HUGEPAGE);
     }
 #endif
+    /* zero from the first byte to the last (calloc's promise, kept) */
+    assert(!p || !n || !size ||
+           (((unsigned char *)p)[0] == 0 && ((unsigned char *)p)[n * size - 1] == 0));
     return p;
 }

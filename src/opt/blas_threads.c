@@ -4,6 +4,7 @@
 #define _GNU_SOURCE /* sched_getaffinity, CPU_COUNT */
 #include "opt/blas_threads.h"
 
+#include <assert.h>
 #include <sched.h>
 #include <stdatomic.h>
 #include <unistd.h>
@@ -53,5 +54,6 @@ int opt_blas_serial_begin(void)
 
 void opt_blas_serial_end(int saved)
 {
+    assert(saved >= 0); /* what opt_blas_serial_begin returned */
     if (saved > 1 && openblas_set_num_threads) openblas_set_num_threads(saved);
 }

@@ -1,8 +1,11 @@
 /* opt/block_symbolic: see block_symbolic.h. */
 #include "opt/block_symbolic.h"
 
+#include <assert.h>
 #include <limits.h>
 #include <stdlib.h>
+
+#include "opt/supernodal_check.h"
 
 int opt_block_graph(const opt_csc *A, int b, int **cp_out, int **ri_out)
 {
@@ -42,6 +45,7 @@ int opt_block_graph(const opt_csc *A, int b, int **cp_out, int **ri_out)
                 }
     }
     cp[nb] = out;
+    assert(opt_upper_pattern_valid(nb, cp, ri, 0));
     free(mark);
     *cp_out = cp;
     *ri_out = ri;
@@ -58,11 +62,13 @@ int opt_block_perm_compress(int n, int b, const int *perm, int *vperm)
             if (perm[k * b + a] != first + a) return 0;
         vperm[k] = first / b;
     }
+    assert(opt_is_permutation(n / b, vperm));
     return 1;
 }
 
 cholmod_factor *opt_block_expand_symbolic(const cholmod_factor *Lv, int b, cholmod_common *cm)
 {
+    assert(b >= 1 && opt_super_symbolic_valid(Lv));
     size_t nv = Lv->n, n = nv * (size_t)b, ns = Lv->nsuper, bb = (size_t)b * (size_t)b;
     if (Lv->xsize > (size_t)INT_MAX / bb || Lv->ssize > (size_t)INT_MAX / (size_t)b) {
         cm->status = CHOLMOD_TOO_LARGE; /* CHOLMOD's int indices */
@@ -106,5 +112,6 @@ cholmod_factor *opt_block_expand_symbolic(const cholmod_factor *Lv, int b, cholm
     L->ordering = Lv->ordering;
     cm->lnz = lnz;
     cm->fl = fl;
+    assert(opt_super_symbolic_valid(L));
     return L;
 }

@@ -11,6 +11,9 @@
  * opt_chol_analyze_given analyzes with a caller permutation
  * (cholmod_analyze_p), e.g. one reused from a previous pattern.
  * Matrices are opt_csc (upper triangle), wrapped without copying.
+ * The SCAF loop does not call it: opt/block_solver decides what to ask of
+ * it (ordering, reuse, regularization); one-shot solves (opt/embed,
+ * opt/cmcf) and the tests and benchmarks use it directly.
  * Errors: SCAF_ERR_NUMERIC with the reason ("not positive definite at
  * column k", CHOLMOD status), SCAF_ERR_NOMEM, SCAF_ERR_USAGE (solve before
  * factor, size mismatch).

@@ -10,6 +10,7 @@
  */
 #include "opt/fill_split.h"
 
+#include <assert.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -98,6 +99,13 @@ int opt_fill_split_prepare(opt_fill_split *f, const opt_simplices *S, const int 
         split_batch(S, dof, s0, s1, nc, cb + b * (size_t)(nc + 1), hist);
     }
     free(hist);
+#ifndef NDEBUG /* each batch's ranges: from 0, ascending, to INT_MAX */
+    for (size_t b = 0; b < nbatch; b++) {
+        const int *r = cb + b * (size_t)(nc + 1);
+        assert(r[0] == 0 && r[nc] == INT_MAX);
+        for (int k = 0; k < nc; k++) assert(r[k] <= r[k + 1]);
+    }
+#endif
     *f = (opt_fill_split){.nc = nc, .batch = batch, .n = n, .cb = cb};
     return 0;
 }

@@ -1,10 +1,12 @@
 /* opt/given_symbolic: see given_symbolic.h. */
 #include "opt/given_symbolic.h"
 
+#include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "opt/cholmod_view.h"
+#include "opt/supernodal_check.h"
 
 /* The symbolic analysis of A with the given permutation, as
  * cholmod_analyze_p does it for a supernodal factor (etree, column counts,
@@ -22,6 +24,7 @@
 cholmod_factor *opt_given_symbolic(cholmod_common *cm, int nn, const int *colptr, const int *rowidx,
                                    const int *perm)
 {
+    assert(nn >= 0 && colptr[0] == 0);
     size_t n = (size_t)nn, nz = (size_t)colptr[nn];
     int *iw = malloc((8 * n + 2) * sizeof *iw);
     int *si = malloc((nz ? nz : 1) * sizeof *si);
@@ -110,6 +113,7 @@ cholmod_factor *opt_given_symbolic(cholmod_common *cm, int nn, const int *colptr
     cm->fl = fl;
     cm->lnz = lnz;
 done:
+    assert(!L || (opt_super_symbolic_valid(L) && L->ordering == CHOLMOD_GIVEN));
     if (F) cholmod_free_sparse(&F, cm);
     free(iw);
     free(si);

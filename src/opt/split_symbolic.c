@@ -8,10 +8,12 @@
  * already marked for the same vertex). */
 #include "opt/split_symbolic.h"
 
+#include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "opt/given_symbolic.h"
+#include "opt/supernodal_check.h"
 
 struct opt_split_symbolic {
     int nf;
@@ -56,6 +58,8 @@ opt_split_symbolic *opt_split_create(cholmod_common *cm, int nf, const int *cp, 
         cm->status = CHOLMOD_OUT_OF_MEMORY;
         return NULL;
     }
+    /* the fixed columns hold only fixed rows (sorted columns) */
+    assert(nf >= 1 && opt_upper_pattern_valid(nf, cp, ri, 0));
     cholmod_factor *L = opt_given_symbolic(cm, nf, cp, ri, fperm);
     if (!L) {
         free(S);
@@ -130,6 +134,8 @@ cholmod_factor *opt_split_factor(const opt_split_symbolic *S, cholmod_common *cm
                                  const int *cp, const int *ri)
 {
     int nf = S->nf, nw = nv - nf, nsf = S->nsuper;
+    assert(nw >= 0 && opt_upper_pattern_valid(nv, cp, ri, 0) &&
+           memcmp(S->cp, cp, ((size_t)nf + 1) * sizeof *cp) == 0);
     size_t ncouple = (size_t)(cp[nv] - cp[nf]) + 1;
     int *mark = malloc(((size_t)nsf + 1) * sizeof *mark);
     int *cnt = calloc((size_t)nsf + 1, sizeof *cnt);
@@ -274,6 +280,9 @@ cholmod_factor *opt_split_factor(const opt_split_symbolic *S, cholmod_common *cm
     L->ordering = CHOLMOD_GIVEN;
     cm->lnz = lnz;
     cm->fl = fl;
+    /* the fixed vertices first, in the fixed analysis's order */
+    assert(opt_super_symbolic_valid(L) &&
+           memcmp(L->Perm, S->perm, (size_t)nf * sizeof *S->perm) == 0);
     goto done;
 oom:
     cm->status = CHOLMOD_OUT_OF_MEMORY;

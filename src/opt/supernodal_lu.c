@@ -14,6 +14,7 @@
  */
 #include "opt/supernodal_lu.h"
 
+#include <assert.h>
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
@@ -24,6 +25,7 @@
 #include "base/zeroed_pages.h"
 #include "opt/cholmod_view.h"
 #include "opt/dense_blas.h"
+#include "opt/supernodal_check.h"
 
 static const double one = 1.0, zero = 0.0, minus_one = -1.0;
 
@@ -348,6 +350,33 @@ done:
     return st;
 }
 
+#ifndef NDEBUG
+/* The factor's structure (for the assert below): perm a permutation;
+ * supernodes covering the columns in order, each one's rows its own
+ * columns first, then strictly ascending below them; L's and U's values
+ * in place order; every pivot finite and not zero. */
+static int lu_valid(const opt_lu *F)
+{
+    int n = F->n, ns = F->nsuper;
+    if (!opt_is_permutation(n, F->perm) || ns < 1 || F->super[0] != 0 || F->super[ns] != n)
+        return 0;
+    for (int sn = 0; sn < ns; sn++) {
+        int f = F->super[sn], nscol = F->super[sn + 1] - f, nsrow = F->pi[sn + 1] - F->pi[sn];
+        if (nscol < 1 || nsrow < nscol) return 0;
+        const int *rows = F->s + F->pi[sn];
+        for (int i = 0; i < nsrow; i++)
+            if (i < nscol ? rows[i] != f + i : (rows[i] <= rows[i - 1] || rows[i] >= n)) return 0;
+        if (F->px[sn + 1] - F->px[sn] < (size_t)nsrow * (size_t)nscol) return 0;
+        const double *X = F->Lx + F->px[sn];
+        for (int j = 0; j < nscol; j++) {
+            double p = X[(size_t)j * (size_t)nsrow + (size_t)j];
+            if (!(p != 0.0) || !isfinite(p)) return 0;
+        }
+    }
+    return 1;
+}
+#endif
+
 opt_lu *opt_lu_factor(int n, const int *Ap, const int *Ai, const double *Ax, scaf_error *err)
 {
     if (n < 1) {
@@ -377,6 +406,7 @@ opt_lu *opt_lu_factor(int n, const int *Ap, const int *Ai, const double *Ax, sca
         opt_lu_free(F);
         F = NULL;
     }
+    assert(!F || lu_valid(F));
 done:
     free(Tp);
     free(Ti);

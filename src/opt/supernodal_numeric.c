@@ -10,6 +10,7 @@
  * the supernodes above the cut take their descendants from all of them. */
 #include "opt/supernodal_numeric.h"
 
+#include <assert.h>
 #include <math.h>
 #include <string.h>
 
@@ -442,8 +443,26 @@ static int factor_top(opt_snum *P, int sn, const double *Ax, double *Lx)
     return -1;
 }
 
+#ifndef NDEBUG
+/* After a factorization without a failed pivot: every diagonal entry of L
+ * positive and finite (for the assert below). */
+static int diagonal_positive(const opt_snum *P, const double *Lx)
+{
+    for (int sn = 0; sn < P->nsuper; sn++) {
+        int nscol = P->super[sn + 1] - P->super[sn], nsrow = P->pi[sn + 1] - P->pi[sn];
+        for (int j = 0; j < nscol; j++) {
+            double d = Lx[P->px[sn] + (size_t)j * (size_t)nsrow + (size_t)j];
+            if (!(d > 0.0) || !isfinite(d)) return 0;
+        }
+    }
+    return 1;
+}
+#endif
+
 static int factor(opt_snum *P, const opt_csc *A, cholmod_factor *L, const double *b)
 {
+    /* the plan was made for A's pattern on L's structure */
+    assert(A->n == P->n && (int)L->n == P->n && L->super == P->super && L->x);
     int B = P->bins, ns = P->nsuper;
     for (int k = 0; k < B; k++) {
         for (int sn = 0; sn < ns; sn++) P->w[k].head[sn] = -1;
@@ -470,6 +489,7 @@ static int factor(opt_snum *P, const opt_csc *A, cholmod_factor *L, const double
     }
     opt_blas_serial_end(blas);
     L->minor = minor < 0 ? L->n : (size_t)minor;
+    assert(minor >= 0 || diagonal_positive(P, L->x));
     return minor;
 }
 

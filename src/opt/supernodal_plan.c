@@ -2,10 +2,12 @@
 #define _GNU_SOURCE /* qsort_r */
 #include "opt/supernodal_plan.h"
 
+#include <assert.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/parallel.h"
+#include "opt/supernodal_check.h"
 
 /* A factor whose work (sum of squared column counts) is below this is not
  * cut: waking threads costs more than it saves (a few hundred triangles,
@@ -453,6 +455,39 @@ done:
     return used;
 }
 
+#ifndef NDEBUG
+/* The plan's invariants (for the assert above): every supernode in
+ * exactly one bin or above the cut, ascending within each bin; each
+ * column in its supernode; each entry of A (those of the kept part
+ * excepted) placed inside its supernode's block; the rows above the cut
+ * numbered 0..ntop-1. */
+static int plan_valid(const opt_snum *P, const cholmod_factor *L, const opt_csc *A)
+{
+    int n = P->n, ns = P->nsuper, T = P->bins, top = P->bptr[T > 1 ? T : 0];
+    if (!opt_is_permutation(ns, P->order) || P->bptr[0] != 0 || top > ns) return 0;
+    for (int k = 0; k < T && T > 1; k++) {
+        if (P->bptr[k + 1] < P->bptr[k]) return 0;
+        for (int i = P->bptr[k] + 1; i < P->bptr[k + 1]; i++)
+            if (P->order[i] <= P->order[i - 1]) return 0;
+    }
+    for (int c = 0; c < n; c++) {
+        int sn = P->col2super[c];
+        if (sn < 0 || sn >= ns || c < P->super[sn] || c >= P->super[sn + 1]) return 0;
+    }
+    for (int sn = 0; sn < ns; sn++) {
+        long size = (long)(P->pi[sn + 1] - P->pi[sn]) * (P->super[sn + 1] - P->super[sn]);
+        for (int q = P->aptr[sn]; q < P->aptr[sn + 1]; q++)
+            if (P->asrc[q] < 0 || P->asrc[q] >= A->nnz || P->adst[q] < 0 || P->adst[q] >= size)
+                return 0;
+    }
+    int ntop = 0;
+    for (int c = 0; c < n; c++)
+        if (P->toprow[c] >= 0 && P->toprow[c] != ntop++) return 0;
+    (void)L;
+    return ntop == P->ntop;
+}
+#endif
+
 opt_snum *opt_snum_create(const cholmod_factor *L, const opt_csc *A, int bins)
 {
     return opt_snum_create_kept(L, A, bins, 0, 0, NULL);
@@ -462,6 +497,7 @@ opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int bi
                                long pattern, opt_snum_kept **kept)
 {
     if (!L->is_super || L->itype != CHOLMOD_INT || (int)L->n != A->n) return NULL;
+    assert(opt_super_symbolic_valid(L) && opt_csc_is_upper_sorted(A));
     if (bins < 1) bins = 1;
     if (bins > PAR_MAX_CHUNKS) bins = PAR_MAX_CHUNKS;
     opt_snum *P = calloc(1, sizeof *P);
@@ -507,6 +543,7 @@ opt_snum *opt_snum_create_kept(const cholmod_factor *L, const opt_csc *A, int bi
         wk->acc = malloc(((size_t)P->ntop + 1) * sizeof *wk->acc);
         if (!wk->map || !wk->rel || !wk->C || !wk->head || !wk->tmp || !wk->acc) goto fail;
     }
+    assert(plan_valid(P, L, A));
     return P;
 fail:
     opt_snum_destroy(P);

@@ -1,6 +1,8 @@
 /* opt/supernodal_solve: see supernodal_solve.h. */
 #include "opt/supernodal_solve.h"
 
+#include <assert.h>
+
 #include "base/parallel.h"
 #include "opt/blas_threads.h"
 #include "opt/dense_blas.h"
@@ -107,6 +109,7 @@ static void run_bin_backward(void *ctx, int k)
 
 void opt_snum_forward_begin(opt_snum *P, const cholmod_factor *L, const double *b)
 {
+    assert((int)L->n == P->n && L->super == P->super); /* also called as the factor begins */
     const int *perm = L->Perm;
     for (int k = 0; k < P->n; k++) P->y[k] = b[perm[k]];
     for (int h = 0; h < P->bins; h++)
@@ -125,6 +128,7 @@ void opt_snum_forward_gather(opt_snum *P)
 
 void opt_snum_backward(opt_snum *P, const cholmod_factor *L, double *x)
 {
+    assert((int)L->n == P->n && L->super == P->super && L->minor == L->n);
     int B = P->bins, ns = P->nsuper, top = P->bptr[B > 1 ? B : 0];
     const int *perm = L->Perm;
     solve_job J = {P, L->x};

@@ -5,9 +5,9 @@
  * provider refreshes the scaffold and the loop builds its term (rest =
  * current shape with the eps guard, weight = lambda); every term fills its
  * SLIM proxy block (opt/objective; the mesh term keeps its pattern), the
- * blocks are summed (opt/proxy_system), ordered and factored with CHOLMOD
- * (opt/cholmod_solver, see order_and_factor for the ordering policy),
- * solved, and opt's line search runs over all terms (flip-free bound,
+ * blocks are summed (opt/proxy_system), ordered, factored and solved by
+ * opt/block_solver (which owns the ordering, reuse and regularization
+ * policy), and opt's line search runs over all terms (flip-free bound,
  * Armijo, exact orientation checks over mesh AND scaffold). Vertex array
  * X = the mesh vertices, then the scaffold vertices; box vertices are
  * fixed (dof -1), so mesh vertices keep dofs 0..nv-1 in every iteration.
@@ -22,8 +22,7 @@
  * weights. The line search always uses the true energy.
  *
  * When a factorization fails (the proxy numerically indefinite), the
- * system is regularized with mu diag(A) for growing mu (see
- * regularized_factor); when the energy is not finite at the start of the
+ * solver regularizes the system with mu diag(A) for growing mu; when the energy is not finite at the start of the
  * line search, the iteration reports a zero step (see slim_step).
  *
  * Newton steps (opt.solver; see newton_system) fill the same pattern with
@@ -44,9 +43,9 @@
 #include "base/half_edges.h"
 #include "base/timer.h"
 #include "geom/predicates.h"
+#include "opt/block_solver.h"
 #include "opt/line_search.h"
 #include "opt/proxy_system.h"
-#include "opt/cholmod_solver.h"
 #include "scaffold/scaffold_cdt.h"
 
 /* ---- setup ------------------------------------------------------------- */
@@ -101,12 +100,8 @@ struct scaf_loop_work {
     opt_simplex_term mesh_def, scaf_def;
     opt_obj_term terms[OPT_PROXY_MAX_BLOCKS]; /* mesh, scaffold, extra terms */
     int nterms;
-    opt_proxy_system sys; /* the sum of the terms' blocks */
-    opt_chol *chol;       /* CHOLMOD, analysis reused while the pattern stays */
-    int *mesh_perm;       /* d nv: fill-reducing order of the mesh unknowns,
-                                    from the first (METIS) analysis; reused */
-    int *perm;            /* scratch: full permutation */
-    size_t cap_perm;
+    opt_proxy_system sys;     /* the sum of the terms' blocks */
+    opt_block_solver *solver; /* the linear solve and all its reuse policy */
     double *rhs, *sol, *dir;
     size_t cap_n, cap_x;
     int newton_on;    /* auto: SLIM has slowed down, Newton from now on */
@@ -153,9 +148,7 @@ void scaf_loop_free(scaf_loop *L)
         free(w->scaf_pw);
         for (int k = 0; k < w->nterms; k++) opt_obj_term_free(&w->terms[k]);
         opt_proxy_system_free(&w->sys);
-        opt_chol_destroy(w->chol);
-        free(w->mesh_perm);
-        free(w->perm);
+        opt_block_solver_destroy(w->solver);
         free(w->rhs);
         free(w->sol);
         free(w->dir);
@@ -219,14 +212,12 @@ scaf_status scaf_loop_init(scaf_loop *L, int nv, const double *V3, int nf, const
     }
     scaf_loop_work *w = L->work;
     w->scaffold = scaffold_cdt_create(nv, L->bedges, L->nbedges, err);
-    w->chol = w->scaffold ? opt_chol_create(OPT_ORDER_AMD, err) : NULL;
-    if (!w->chol) {
+    /* the mesh unknowns come first and keep their pattern */
+    w->solver = w->scaffold ? opt_block_solver_create(L->d, L->d * L->nv, err) : NULL;
+    if (!w->solver) {
         scaf_loop_free(L);
         return err && err->code ? err->code : SCAF_ERR_NOMEM;
     }
-    opt_chol_set_block(w->chol, L->d);
-    opt_chol_set_fixed_part(w->chol, L->d * L->nv); /* mesh unknowns: see order_and_factor */
-    opt_chol_set_relax(w->chol, 2); /* factorization + solve fastest (bench_factor) */
     w->mesh_def = (opt_simplex_term){&L->chart, L->opt.energy, NULL, 1};
     w->scaf_def = (opt_simplex_term){&w->scaf, OPT_ENERGY_SYMMETRIC_DIRICHLET, NULL, 0};
     w->mesh_k = 0;
@@ -263,13 +254,11 @@ scaf_status scaf_loop_init_volume(scaf_loop *L, int nv, const double *X0, scaffo
     memcpy(L->uv, X0, sizeof(double) * 3 * (size_t)nv);
     scaf_loop_work *w = L->work;
     w->scaffold = p;
-    w->chol = opt_chol_create(OPT_ORDER_AMD, err);
-    if (!w->chol) {
+    w->solver = opt_block_solver_create(3, 3 * nv, err);
+    if (!w->solver) {
         scaf_loop_free(L);
         return err && err->code ? err->code : SCAF_ERR_NOMEM;
     }
-    opt_chol_set_block(w->chol, 3);
-    opt_chol_set_relax(w->chol, 4);
     w->mesh_k = -1;
     w->scaf_k = 0;
     w->energy_floor = energy_floor;
@@ -312,7 +301,10 @@ const scaffold_view *scaf_loop_scaffold_view(const scaf_loop *L) { return &L->wo
 opt_simplices *scaf_loop_scaffold_rest(scaf_loop *L) { return &L->work->scaf; }
 double *scaf_loop_scaffold_proxy_weights(scaf_loop *L) { return L->work->scaf_pw; }
 const opt_csc *scaf_loop_last_system(const scaf_loop *L) { return &L->work->sys.A; }
-const int *scaf_loop_mesh_ordering(const scaf_loop *L) { return L->work->mesh_perm; }
+const int *scaf_loop_mesh_ordering(const scaf_loop *L)
+{
+    return opt_block_solver_fixed_ordering(L->work->solver);
+}
 
 int scaf_loop_newton_available(const scaf_loop *L)
 {
@@ -488,109 +480,6 @@ static scaf_status grow(double **p, size_t n, scaf_error *err)
     return SCAF_OK;
 }
 
-/* Fill-reducing ordering, then factorization. The mesh part of the
- * pattern never changes, so its nested-dissection (METIS) order is computed
- * once, at the first iteration, and reused: the scaffold's unknowns go
- * last, which costs little while they are few. When the scaffold is large
- * (long, folded chart boundaries: hilbert.obj has 40% scaffold unknowns)
- * a trailing block that big would be nearly dense, so AMD orders the whole
- * system afresh instead. */
-static scaf_status order_and_factor(scaf_loop *L, size_t n, double *t_metis, scaf_error *err)
-{
-    scaf_loop_work *w = L->work;
-    scaf_status st;
-    size_t nm = (size_t)L->d * (size_t)L->nv, nsc = n - nm;
-    const int *given = NULL;
-    if (!w->mesh_perm) {
-        double t0 = timer_now();
-        opt_chol *m = opt_chol_create(OPT_ORDER_METIS, err);
-        if (!m) return err && err->code ? err->code : SCAF_ERR_NOMEM;
-        opt_chol_set_block(m, L->d); /* order vertices, not scalars */
-        st = opt_chol_analyze_given(m, &w->sys.A, NULL, err);
-        const int *p = opt_chol_permutation(m);
-        w->mesh_perm = malloc(nm * sizeof *w->mesh_perm);
-        int *q = realloc(w->perm, n * sizeof *q);
-        if (q) {
-            w->perm = q;
-            w->cap_perm = n;
-        }
-        if (st == SCAF_OK && (!p || !w->mesh_perm || !q)) st = err_nomem(err, "ordering");
-        if (st == SCAF_OK) {
-            size_t k = 0;
-            for (size_t i = 0; i < n; i++)
-                if ((size_t)p[i] < nm) w->mesh_perm[k++] = p[i];
-            memcpy(w->perm, p, n * sizeof *w->perm);
-            given = w->perm;
-        }
-        opt_chol_destroy(m);
-        *t_metis = timer_now() - t0;
-        if (st != SCAF_OK) return st;
-    } else if (nsc <= 256 || nsc * 50 <= n) {
-        if (n > w->cap_perm) {
-            int *q = realloc(w->perm, n * sizeof *q);
-            if (!q) return err_nomem(err, "ordering");
-            w->perm = q;
-            w->cap_perm = n;
-        }
-        memcpy(w->perm, w->mesh_perm, nm * sizeof *w->perm);
-        for (size_t k = nm; k < n; k++) w->perm[k] = (int)k;
-        given = w->perm;
-    }
-    /* A scaffold identical to the last one (late iterations, the boundary
-     * barely moving) gives the same pattern: keep that analysis. */
-    if (w->sys.owns && L->d > 1)
-        return opt_chol_factor_vertices(w->chol, &w->sys.A, w->sys.vcolptr, w->sys.vrowidx, given,
-                                        w->rhs, err);
-    if (!opt_chol_pattern_matches(w->chol, &w->sys.A)) {
-        st = opt_chol_analyze_vertices(w->chol, &w->sys.A, w->sys.owns ? w->sys.vcolptr : NULL,
-                                       w->sys.vrowidx, given, err);
-        if (st != SCAF_OK) return st;
-    }
-    return opt_chol_factor_rhs(w->chol, &w->sys.A, w->rhs, err);
-}
-
-/* Factor A + mu diag(A) with rhs + mu diag(A) x for growing mu, after a
- * plain factorization failed (see the caller); for a Newton system (the
- * unknown is the step) the rhs stays -g. */
-static scaf_status regularized_factor(scaf_loop *L, int nall, const int *dof, const double *X,
-                                      size_t n, int newton, scaf_error *err)
-{
-    scaf_loop_work *w = L->work;
-    int d = L->d;
-    opt_csc *A = &w->sys.A;
-    double *d0 = malloc(n * sizeof *d0), *r0 = malloc(n * sizeof *r0);
-    int *pos = malloc(n * sizeof *pos);
-    if (!d0 || !r0 || !pos) {
-        free(d0);
-        free(r0);
-        free(pos);
-        return err_nomem(err, "regularized system");
-    }
-    for (size_t c = 0; c < n; c++) {
-        int e = A->colptr[c + 1] - 1;
-        pos[c] = (e >= A->colptr[c] && A->rowidx[e] == (int)c) ? e : -1;
-        d0[c] = pos[c] >= 0 ? A->val[e] : 0.0;
-    }
-    memcpy(r0, w->rhs, n * sizeof *r0);
-    scaf_status st = SCAF_ERR_NUMERIC;
-    for (double mu = 1e-10; st == SCAF_ERR_NUMERIC && mu < 10.0; mu *= 1000.0) {
-        for (size_t c = 0; c < n; c++)
-            if (pos[c] >= 0) A->val[pos[c]] = d0[c] * (1.0 + mu);
-        for (int v = 0; v < nall && !newton; v++)
-            if (dof[v] >= 0)
-                for (int a = 0; a < d; a++) {
-                    size_t c = (size_t)d * (size_t)dof[v] + a;
-                    w->rhs[c] = r0[c] + mu * d0[c] * X[(size_t)d * (size_t)v + a];
-                }
-        err_clear(err);
-        st = opt_chol_factor_rhs(w->chol, A, w->rhs, err);
-    }
-    free(d0);
-    free(r0);
-    free(pos);
-    return st;
-}
-
 /* dir = the solution minus X for free vertices, 0 for fixed ones. */
 static inline void direction(int d, int nall, const int *dof, const double *sol, const double *X,
                              double *dir)
@@ -634,22 +523,23 @@ static scaf_status newton_fill(scaf_loop *L, const int *dof, const double *X, in
 
 /* The Newton system, ordered and factored: exact Hessian after a full
  * Newton step, projected when that is not positive definite (or from the
- * start), then diagonally shifted (banner). */
+ * start), then diagonally shifted by the solver (banner). */
 static scaf_status newton_system(scaf_loop *L, int nall, const int *dof, const double *X, size_t n,
-                                 double *t_metis, scaf_error *err)
+                                 scaf_error *err)
 {
     scaf_loop_work *w = L->work;
     int project = !w->newton_exact;
+    opt_block_retry shift = {1, nall, dof, NULL}; /* the unknowns are steps */
+    opt_block_retry none = {0, 0, NULL, NULL};
     scaf_status st = newton_fill(L, dof, X, project, n, err);
-    if (st == SCAF_OK) st = order_and_factor(L, n, t_metis, err);
+    if (st == SCAF_OK) st = opt_block_solver_update(w->solver, &w->sys, err);
+    if (st == SCAF_OK)
+        st = opt_block_solver_factor(w->solver, &w->sys, w->rhs, project ? &shift : &none, err);
     if (st == SCAF_ERR_NUMERIC && !project) {
         err_clear(err);
-        double t_more = 0.0;
-        st = newton_fill(L, dof, X, 1, n, err);
-        if (st == SCAF_OK) st = order_and_factor(L, n, &t_more, err);
-        *t_metis += t_more;
+        st = newton_fill(L, dof, X, 1, n, err); /* the same pattern */
+        if (st == SCAF_OK) st = opt_block_solver_factor(w->solver, &w->sys, w->rhs, &shift, err);
     }
-    if (st == SCAF_ERR_NUMERIC) st = regularized_factor(L, nall, dof, X, n, 1, err);
     return st;
 }
 
@@ -686,11 +576,10 @@ static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, 
         st = t->ops->pattern(t, dof, nfree, err);
         if (st != SCAF_OK) return st;
     }
-    opt_chol_stats c0 = opt_chol_get_stats(w->chol);
-    double t_metis = 0.0;
+    opt_block_solver_times c0 = opt_block_solver_get_times(w->solver);
     if (newton) {
         /* assembly and factorization interleave (the fallbacks refill) */
-        st = newton_system(L, nall, dof, X, n, &t_metis, err);
+        st = newton_system(L, nall, dof, X, n, err);
         if (st != SCAF_OK) return st;
     } else {
         memset(w->rhs, 0, n * sizeof *w->rhs);
@@ -704,14 +593,15 @@ static scaf_status slim_step(scaf_loop *L, int nall, const int *dof, int nfree, 
         if (st != SCAF_OK) return st;
         pins_eliminate(L, X, 0, n);
         tm->assembly = timer_now() - t0;
-        st = order_and_factor(L, n, &t_metis, err);
-        if (st == SCAF_ERR_NUMERIC) st = regularized_factor(L, nall, dof, X, n, 0, err);
+        st = opt_block_solver_update(w->solver, &w->sys, err);
+        opt_block_retry shrink = {1, nall, dof, X}; /* the unknowns are positions */
+        if (st == SCAF_OK) st = opt_block_solver_factor(w->solver, &w->sys, w->rhs, &shrink, err);
     }
-    if (st == SCAF_OK) st = opt_chol_solve(w->chol, 1, w->rhs, w->sol, err);
-    opt_chol_stats c1 = opt_chol_get_stats(w->chol);
-    tm->analysis = c1.t_analyze - c0.t_analyze + t_metis;
-    tm->factor = c1.t_factor - c0.t_factor;
-    tm->solve = c1.t_solve - c0.t_solve;
+    if (st == SCAF_OK) st = opt_block_solver_solve(w->solver, w->sol, err);
+    opt_block_solver_times c1 = opt_block_solver_get_times(w->solver);
+    tm->analysis = c1.analysis - c0.analysis;
+    tm->factor = c1.factor - c0.factor;
+    tm->solve = c1.solve - c0.solve;
     if (newton) /* what the factorizations and orderings did not take */
         tm->assembly = timer_now() - t0 - tm->analysis - tm->factor - tm->solve;
     if (st != SCAF_OK) return st;

@@ -19,7 +19,8 @@
  *      frames of the 3D triangles, weight = 3D area, energy opt.energy),
  *      the scaffold term (symmetric Dirichlet) and any extra terms
  *      (scaf_loop_add_term) — each fill their block of one SLIM proxy
- *      system, solved with CHOLMOD (supernodal); or, for a Newton step
+ *      system, solved by opt/block_solver (which owns the ordering,
+ *      reuse and regularization policy); or, for a Newton step
  *      (opt.solver), their Hessians (hessian_fill: exact after a full
  *      Newton step, each simplex projected PSD otherwise or when the exact
  *      sum is not positive definite, then a diagonal shift) and -gradient,
