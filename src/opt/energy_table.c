@@ -11,6 +11,7 @@
     ROW(symmetric_dirichlet)                                                                       \
     ROW(arap)                                                                                      \
     ROW(conformal)                                                                                 \
+    ROW(exp_symmetric_dirichlet)                                                                   \
     /* rows are appended above this line: a row's position is its value */
 
 #define DECLARE(name) extern const opt_energy_kind opt_energy_##name;
