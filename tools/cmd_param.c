@@ -21,6 +21,7 @@
 #include "app/uv_svg.h"
 #include "base/timer.h"
 #include "cli_args.h"
+#include "cli_energy.h"
 #include "cli_png.h"
 #include "cli_seams.h"
 #include "cli_mesh_io.h"
@@ -70,14 +71,9 @@ static void usage(FILE *o)
             "  --solver NAME          auto (default: SLIM until one iteration lowers the\n"
             "                         objective by less than 1e-2 relatively, then\n"
             "                         projected Newton), slim, or newton (from the start);\n"
-            "                         for every --energy\n"
-            "  --energy NAME          symmetric-dirichlet (default), arap, conformal; arap\n"
-            "                         has a barrier below det J = 0.1 so triangles cannot\n"
-            "                         collapse. All three converge on most disks (arap\n"
-            "                         too where the map presses its boundary against\n"
-            "                         itself: camel_b); when one does not, the stop\n"
-            "                         reason and the final criterion say how far it is\n"
-            "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n");
+            "                         for every --energy\n");
+    cli_energy_help(o);
+    fprintf(o, "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n");
     fputs(CLI_SEAMS_HELP CLI_SEAMS_PNG_HELP, o);
     fprintf(o,
             "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
@@ -216,12 +212,7 @@ static int parse_args(int argc, char **argv, param_args *o)
             else BAD_VALUE();
         } else if (!strcmp(a, "--energy")) {
             NEED_VALUE();
-            if (!strcmp(v, "symmetric-dirichlet") || !strcmp(v, "sd"))
-                o->opt.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
-            else if (!strcmp(v, "arap")) o->opt.energy = SCAF_ENERGY_ARAP;
-            else if (!strcmp(v, "conformal") || !strcmp(v, "mips"))
-                o->opt.energy = SCAF_ENERGY_CONFORMAL;
-            else BAD_VALUE();
+            if (!cli_energy_parse(v, &o->opt.energy)) BAD_VALUE();
         } else if (!strcmp(a, "--init")) {
             NEED_VALUE();
             if (!strcmp(v, "tutte")) o->opt.init = SCAF_INIT_TUTTE;

@@ -96,24 +96,45 @@ SCAF_API void scaf_set_deterministic(int on);
  * flipped triangle, no overlap) after every iteration.
  * ---------------------------------------------------------------------- */
 
-/* Distortion energies. */
+/* Distortion energies: the first three by name; every energy, these and
+ * any later one, is a value 0 <= e < scaf_energy_count(), listed with its
+ * name and help by scaf_energy_info and found by name with
+ * scaf_energy_find (the `scaf` program's --energy and Python's energy=
+ * read the same list). */
 typedef enum scaf_energy {
     SCAF_ENERGY_SYMMETRIC_DIRICHLET = 0, /* ||J||^2 + ||J^-1||^2 */
     SCAF_ENERGY_ARAP,                    /* ||J - R||^2 + b(det J): ARAP alone is
-                                            no barrier (triangles it pushes
-                                            towards inversion were crushed to
-                                            det J ~ 1e-8); b = -ln(det / 0.1)^3
+                                            no barrier; b = -ln(det / 0.1)^3
                                             below det J = 0.1, 0 above, keeps
-                                            them away from collapse. Newton
-                                            as for the default; where the
-                                            boundary presses against itself
-                                            (camel_b) the scaffold's guard
-                                            holds the gap open and it
-                                            converges too */
+                                            triangles away from collapse */
     SCAF_ENERGY_CONFORMAL                /* MIPS: ||J||^2 / (2 det J), a barrier;
                                             scale-free, so areas may vary
-                                            widely; Newton as for the default */
+                                            widely */
 } scaf_energy;
+
+/* One energy's description (pointers to static strings). */
+typedef struct scaf_energy_info_t {
+    const char *name;    /* identifier, e.g. "symmetric_dirichlet"; the
+                            program also accepts it with '-' for '_' */
+    const char *aliases; /* further accepted names, space-separated ("" none) */
+    const char *help;    /* one line: the formula and what it is for */
+    double scale_offset; /* added to the mean energy per unit of area in
+                            the scaffold weight and the convergence test
+                            (1 for an energy that is 0 at its minimum,
+                            else 0) */
+} scaf_energy_info_t;
+
+/* The number of energies. */
+SCAF_API int scaf_energy_count(void);
+
+/* Energy e's description into *info. SCAF_ERR_USAGE when info is NULL or
+ * e is not in [0, scaf_energy_count()). */
+SCAF_API scaf_status scaf_energy_info(int e, scaf_energy_info_t *info);
+
+/* The energy called name (its identifier, with '-' or '_', or an alias)
+ * into *e. SCAF_ERR_USAGE when a pointer is NULL or no energy has that
+ * name (*e unchanged). */
+SCAF_API scaf_status scaf_energy_find(const char *name, scaf_energy *e);
 
 /* Initial embedding of each chart. */
 typedef enum scaf_init {

@@ -37,7 +37,7 @@ from ._volume import (FlowResult, InflateResult, SurfaceReport, TetsReport, Unta
                       VolumeStepInfo, check_surface, check_tets, flow, inflate, tet_mesh,
                       untangle)
 
-ENERGIES = tuple(_lib.ENERGIES)  # names accepted for energy= (or the C int)
+ENERGIES = tuple(_lib.ENERGIES)  # names accepted for energy= (or the C int), read from the library
 INITS = tuple(_lib.INITS)  # names accepted for init= (or the C int)
 
 __all__ = [

@@ -39,7 +39,9 @@ SCAF_ERR_CANCELLED = 7
 # Names accepted for the `energy` and `init` options. Any other int is
 # passed through to C, which validates it, so a value appended to the C
 # enum later (a new init, say) works before this table knows its name.
-ENERGIES = {"symmetric_dirichlet": 0, "arap": 1, "conformal": 2}
+# ENERGIES (identifier: value) is read from the library when it loads
+# (scaf_energy_count / scaf_energy_info), not written here.
+ENERGIES = {}
 INITS = {"tutte": 0, "harmonic": 1, "mvc": 2}
 SOLVERS = {"auto": 0, "slim": 1, "newton": 2}
 PHASES = ("assembly", "analysis", "factorization", "solve", "line_search", "scaffold", "other")
@@ -49,6 +51,17 @@ DRAG_STARTS = {"layout": 0, "input": 1, "atlas": 2}  # scaf_drag_start
 SEAMS = {"default": 0, "input": 1, "auto": 2, "extend": 3}  # scaf_seams
 
 c_enum = ctypes.c_int
+
+
+class EnergyInfo(ctypes.Structure):
+    """scaf_energy_info_t"""
+
+    _fields_ = [
+        ("name", ctypes.c_char_p),
+        ("aliases", ctypes.c_char_p),
+        ("help", ctypes.c_char_p),
+        ("scale_offset", ctypes.c_double),
+    ]
 
 
 class Options(ctypes.Structure):
@@ -300,6 +313,7 @@ class TetsReport(ctypes.Structure):
 
 # The C names of the mirrored structs, for the layout test.
 STRUCTS = {
+    "scaf_energy_info_t": EnergyInfo,
     "scaf_options_t": Options,
     "scaf_iteration_info_t": IterationInfo,
     "scaf_atlas_options_t": AtlasOptions,
@@ -333,6 +347,8 @@ SIGNATURES = {
     "scaf_set_deterministic": (None, [_int]),
     "scaf_stop_reason_name": (ctypes.c_char_p, [c_enum]),
     "scaf_area_matched_energy": (c_enum, [_D, _int, _I, _int, _D, _int, _I, _D]),
+    "scaf_energy_count": (_int, []),
+    "scaf_energy_info": (c_enum, [_int, ctypes.POINTER(EnergyInfo)]),
     "scaf_options_default": (Options, []),
     "scaf_param_new": (_P, [ctypes.POINTER(Options)]),
     "scaf_param_set_options": (c_enum, [_P, ctypes.POINTER(Options)]),
@@ -452,7 +468,17 @@ def _declare(lib):
         fn = getattr(lib, name)
         fn.restype = restype
         fn.argtypes = argtypes
+    _read_energies(lib)
     return lib
+
+
+def _read_energies(lib):
+    """ENERGIES from the library's table of energies."""
+    ENERGIES.clear()
+    for e in range(lib.scaf_energy_count()):
+        info = EnergyInfo()
+        if lib.scaf_energy_info(e, ctypes.byref(info)) == SCAF_OK:
+            ENERGIES[info.name.decode()] = e
 
 
 def load():

@@ -20,6 +20,11 @@
 
 int main(void)
 {
+    SIZE(scaf_energy_info_t);
+    FIELD(scaf_energy_info_t, name);
+    FIELD(scaf_energy_info_t, aliases);
+    FIELD(scaf_energy_info_t, help);
+    FIELD(scaf_energy_info_t, scale_offset);
     SIZE(scaf_options_t);
     FIELD(scaf_options_t, energy);
     FIELD(scaf_options_t, init);

@@ -71,20 +71,10 @@ scaf_options_t scaf_options_default(void)
     return o;
 }
 
-static opt_energy to_opt_energy(scaf_energy e)
-{
-    switch (e) {
-    case SCAF_ENERGY_ARAP: return OPT_ENERGY_ARAP;
-    case SCAF_ENERGY_CONFORMAL: return OPT_ENERGY_CONFORMAL;
-    case SCAF_ENERGY_SYMMETRIC_DIRICHLET: break;
-    }
-    return OPT_ENERGY_SYMMETRIC_DIRICHLET;
-}
-
 scaf_loop_options param_loop_options(const scaf_options_t *o)
 {
     scaf_loop_options lo = scaf_loop_options_default();
-    lo.energy = to_opt_energy(o->energy);
+    lo.energy = (opt_energy)o->energy; /* the same table index (opt/energy_kind.h) */
     lo.lambda_ratio = o->lambda_ratio;
     lo.step_fraction = o->step_fraction;
     lo.solver = o->solver;
@@ -113,8 +103,8 @@ const char *scaf_phase_name(scaf_phase phase)
 scaf_status param_options_check(const scaf_options_t *o, char *msg, size_t size)
 {
     const char *bad = NULL;
-    if ((int)o->energy < 0 || o->energy > SCAF_ENERGY_CONFORMAL)
-        bad = "energy is not a known energy";
+    if (!opt_energy_valid((int)o->energy))
+        bad = "energy is not a known energy (0 <= energy < scaf_energy_count())";
     else if ((int)o->init < 0 || o->init > SCAF_INIT_MVC)
         bad = "init is not tutte, harmonic or mvc";
     else if (o->max_iterations < 0) bad = "max_iterations must be >= 0";

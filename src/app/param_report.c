@@ -8,6 +8,7 @@
 #include "base/atomic_file.h"
 #include "app/seam_report.h"
 #include "base/json_write.h"
+#include "opt/energy.h"
 
 static int cmp_double(const void *a, const void *b)
 {
@@ -32,14 +33,15 @@ static const char *solver_name(int s)
     return s == SCAF_SOLVER_NEWTON ? "newton" : s == SCAF_SOLVER_SLIM ? "slim" : "auto";
 }
 
-static const char *energy_name(scaf_energy e)
+/* The energy's identifier with '-' for '_' (the spelling of the
+ * program's --energy): "symmetric-dirichlet", "arap", ... */
+static const char *energy_name(scaf_energy e, char *buf, size_t size)
 {
-    switch (e) {
-    case SCAF_ENERGY_ARAP: return "arap";
-    case SCAF_ENERGY_CONFORMAL: return "conformal";
-    case SCAF_ENERGY_SYMMETRIC_DIRICHLET: break;
-    }
-    return "symmetric-dirichlet";
+    const char *id = opt_energy_name((opt_energy)e);
+    size_t k = 0;
+    for (; id[k] && k + 1 < size; k++) buf[k] = id[k] == '_' ? '-' : id[k];
+    buf[k] = 0;
+    return buf;
 }
 
 scaf_status param_report_write(const char *path, const param_report *r, scaf_error *err)
@@ -59,10 +61,11 @@ scaf_status param_report_write(const char *path, const param_report *r, scaf_err
     fputs(",\n  \"stop_reason\": ", o);
     json_write_string(o, scaf_stop_reason_name(r->stop_reason));
     if (op) {
+        char ename[64];
         fprintf(o,
                 ",\n  \"options\": {\"energy\": \"%s\", \"init\": \"%s\", \"max_iterations\": %d, "
                 "\"tolerance\": ",
-                energy_name(op->energy),
+                energy_name(op->energy, ename, sizeof ename),
                 op->init == SCAF_INIT_HARMONIC  ? "harmonic"
                     : op->init == SCAF_INIT_MVC ? "mvc"
                                                 : "tutte",

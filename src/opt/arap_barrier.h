@@ -3,8 +3,7 @@
  * b(x) = -ln(x / xh)^3 below xh = OPT_ARAP_BARRIER_DET, 0 above (twice
  * continuously differentiable there, so ARAP's minimum is unchanged where
  * no simplex is squeezed that far), +INFINITY at x <= 0 (see
- * opt/energy.h). Shared by the density (opt/energy) and its Hessian
- * (opt/isotropic_hessian).
+ * opt/energy_arap.c, which uses it for the density and its Hessian).
  * Why a power of the logarithm and not of 1/x: a Newton step on x^-p
  * moves x by the factor 1 + 1/(p + 1) only, on -ln(x)^3 it about doubles
  * x, so a start with crushed triangles (mean-value start of hand_lowres:
@@ -17,7 +16,8 @@
 
 #include <math.h>
 
-#include "opt/energy.h"
+/* ARAP's barrier acts below this det J (area or volume ratio). */
+#define OPT_ARAP_BARRIER_DET 0.1
 
 static inline double arap_barrier(double x)
 {

@@ -1,35 +1,24 @@
 /* opt/energy: distortion energies of one simplex's Jacobian and their sums.
  *
- * Densities of the d by d Jacobian J (row-major), d = 2 or 3:
- *   symmetric Dirichlet  ||J||_F^2 + ||J^-1||_F^2     (2d at a rotation)
- *   ARAP                 ||J - R||_F^2 + b(det J), R closest rotation
- *                        (0 at a rotation)
- *   conformal (AMIPS)    ||J||_F^2 / (d det(J)^(2/d))  (1 at a similarity)
- * All three are +INFINITY when det J <= 0 (barriers). ARAP alone is not
- * one: a simplex can be squeezed to zero area at a finite cost, and where
- * the unconstrained ARAP minimum would invert simplices the SCAF loop then
- * crushes them (its line search stops each step at a fraction of the
- * flip-free bound, so the simplex loses most of its area every iteration
- * and the steps of the whole map shrink with it: camelhead, hand_lowres
- * ended with smallest singular values of 1e-8 after 7-10 iterations). b
- * is the barrier that prevents it: b(x) = -ln(x / xh)^3 for
- * x < xh = OPT_ARAP_BARRIER_DET, 0 above (C2 at xh; opt/arap_barrier), so the energy is
- * ARAP itself wherever no simplex is squeezed below a tenth of its rest
- * area, and infinite at zero area. Each has its derivative dE/dJ and
- * its SLIM proxy (Rabinovich et al. 2017): a symmetric weight matrix W and
- * target T with the property that the gradient of ||W (J - T)||^2 at the
- * current J equals dE/dJ. An opt_term pairs a simplex set with an energy;
- * sums are weight-weighted: E = sum_s weight_s * density(J_s).
- * Nothing here fails; non-finite input gives non-finite output.
+ * The energies are the rows of opt/energy_table (opt/energy_kind.h: one
+ * file each, with the formulas); an opt_energy is a row's index. Each is
+ * a density of the d by d Jacobian J (row-major), d = 2 or 3, +INFINITY
+ * where det J <= 0, with its derivative dE/dJ and its SLIM proxy
+ * (Rabinovich et al. 2017): a symmetric weight matrix W and target T with
+ * the property that the gradient of ||W (J - T)||^2 at the current J
+ * equals dE/dJ. An opt_term pairs a simplex set with an energy; sums are
+ * weight-weighted: E = sum_s weight_s * density(J_s).
+ * Nothing here fails; non-finite input gives non-finite output. The
+ * functions taking an opt_energy need a valid one (opt_energy_valid).
  */
 #ifndef SCAF_OPT_ENERGY_H
 #define SCAF_OPT_ENERGY_H
 
 #include "opt/simplices.h"
 
-/* ARAP's barrier acts below this det J (area or volume ratio). */
-#define OPT_ARAP_BARRIER_DET 0.1
-
+/* The first rows of opt/energy_table, named because code picks them by
+ * value (the scaffold's energy, the 2D symmetric Dirichlet lanes); any
+ * index below opt_energy_count() is an energy. */
 typedef enum opt_energy {
     OPT_ENERGY_SYMMETRIC_DIRICHLET = 0, /* default */
     OPT_ENERGY_ARAP,
@@ -44,25 +33,27 @@ typedef struct opt_term {
     opt_energy energy;
 } opt_term;
 
-/* "symmetric_dirichlet", "arap", "conformal". */
+/* The number of energies (rows of opt/energy_table). */
+int opt_energy_count(void);
+
+/* Whether e is an energy: 0 <= e < opt_energy_count(). */
+int opt_energy_valid(int e);
+
+/* The row's identifier ("symmetric_dirichlet", "arap", ...); "unknown"
+ * for an invalid e. */
 const char *opt_energy_name(opt_energy e);
 
-/* Parse a name as above; returns 0 and sets *e, or -1 if unknown. */
+/* Parse a name: a row's identifier (with '-' accepted for '_') or one of
+ * its aliases; returns 0 and sets *e, or -1 if unknown. */
 int opt_energy_parse(const char *name, opt_energy *e);
 
 /* What is added to the mean energy (per unit of rest area) where a scale
- * is needed that does not vanish at the minimum: 1 for ARAP (0 at a
- * rotation; E + 1 then weighs like symmetric Dirichlet's E >= 4 and
- * conformal's E >= 1, which need nothing: 0). Used by the scaffold weight
- * (scaffold/scaf_loop) and the convergence test (app/param). */
+ * is needed that does not vanish at the minimum (the row's scale_offset:
+ * 1 for ARAP, 0 at a rotation; E + 1 then weighs like symmetric
+ * Dirichlet's E >= 4 and conformal's E >= 1, which need nothing: 0). Used
+ * by the scaffold weight (scaffold/scaf_loop) and the convergence test
+ * (app/param). */
 double opt_energy_scale_offset(opt_energy e);
-
-/* Squared SLIM weight of symmetric Dirichlet at signed singular value s
- * (1 where s <= 0); inline for opt/sd2_lanes' vector loops. */
-static inline double opt_sd_w2(double s)
-{
-    return s > 0 ? (s + 1) * (s * s + 1) / (s * s * s) : 1.0;
-}
 
 /* Density of J (d by d). */
 double opt_density(opt_energy e, int d, const double *J);
@@ -73,8 +64,9 @@ double opt_density_grad(opt_energy e, int d, const double *J, double *dEdJ);
 /* SLIM proxy of J: W (d by d, symmetric positive definite) and T (d by d)
  * so that grad_J ||W (J - T)||_F^2 = dE/dJ where the energy is convex along
  * singular values (always for symmetric Dirichlet and ARAP with det J > 0;
- * for conformal the weights fall back to a positive value where the exact
- * ones would be negative, and the property then holds only approximately). */
+ * where a row's exact weights would be negative, as conformal's can, it
+ * falls back to a positive value and the property holds only
+ * approximately). */
 void opt_slim_proxy(opt_energy e, int d, const double *J, double *W, double *T);
 
 /* The same with each squared weight w_i^2 limited to w2_cap (INFINITY: no

@@ -2,10 +2,10 @@
  * isotropic_hessian.h).
  *
  * Per energy only the second derivatives in the singular values are
- * written out (sv_second_derivatives): the d by d scaling block and the
- * flip and twist eigenvalue of each pair, derived from Psi_i as
- * (Psi_i -+ Psi_j) / (s_i -+ s_j) with the division done by hand. Every
- * other piece is shared: the signed SVD (opt/small_svd) gives the modes,
+ * written out, in its row (opt/energy_kind.h: sv_hessian): the d by d
+ * scaling block and the flip and twist eigenvalue of each pair, derived
+ * from Psi_i as (Psi_i -+ Psi_j) / (s_i -+ s_j) with the division done by
+ * hand. Every other piece is shared here: the signed SVD (opt/small_svd) gives the modes,
  * the gradient comes from opt_density_grad (closed form in J). The scaling
  * block is diagonalized by cyclic Jacobi rotations; a diagonal block
  * (symmetric Dirichlet) is taken as it is, so that energy's modes are the
@@ -16,69 +16,8 @@
 #include <math.h>
 #include <stddef.h>
 
-#include "opt/arap_barrier.h"
+#include "opt/energy_kind.h"
 #include "opt/small_svd.h"
-
-/* d2Psi/ds_i ds_j (B, d by d) and the pair eigenvalues (flip, twist; pair
- * order (0,1), (0,2), (1,2)) at singular values s (all > 0). */
-static void sv_second_derivatives(opt_energy e, int d, const double *s, double *B, double *flip,
-                                  double *twist)
-{
-    double D = s[0] * s[1] * (d == 3 ? s[2] : 1.0), N = 0.0, other[3];
-    /* conformal: Psi = c N with c = 1 / (d det^(2/d)), N = sum s_k^2 */
-    double c = e == OPT_ENERGY_CONFORMAL ? 1.0 / (d * pow(D, 2.0 / d)) : 0.0;
-    for (int i = 0; i < d; i++) {
-        N += s[i] * s[i];
-        /* det / s_i without a division */
-        other[i] = d == 2 ? s[1 - i] : s[(i + 1) % 3] * s[(i + 2) % 3];
-    }
-    for (int i = 0, k = 0; i < d; i++)
-        for (int j = i + 1; j < d; j++, k++) {
-            /* det / (s_i s_j): 1 in 2D, the third singular value in 3D */
-            double o = d == 2 ? 1.0 : s[3 - i - j];
-            double p = s[i] * s[j];
-            double bij = 0.0; /* symmetric Dirichlet: uncoupled */
-            if (e == OPT_ENERGY_ARAP)
-                bij = arap_barrier_curvature(D) * other[i] * other[j] + arap_barrier_slope(D) * o;
-            else if (e == OPT_ENERGY_CONFORMAL)
-                bij = c * (-(4.0 / d) * (s[i] / s[j] + s[j] / s[i]) + 4.0 * N / (d * d * p));
-            B[i * d + j] = B[j * d + i] = bij;
-            switch (e) {
-            case OPT_ENERGY_SYMMETRIC_DIRICHLET: {
-                double p3 = p * p * p, q = s[i] * s[i] + s[j] * s[j];
-                flip[k] = 2.0 + 2.0 * (q + p) / p3;
-                twist[k] = 2.0 - 2.0 * (q - p) / p3;
-                break;
-            }
-            case OPT_ENERGY_ARAP: {
-                double b = arap_barrier_slope(D) * o;
-                flip[k] = 2.0 - b;
-                twist[k] = 2.0 * (s[i] + s[j] - 2.0) / (s[i] + s[j]) + b;
-                break;
-            }
-            case OPT_ENERGY_CONFORMAL: {
-                double r = 2.0 * N / (d * p);
-                flip[k] = c * (2.0 + r);
-                twist[k] = c * (2.0 - r);
-                break;
-            }
-            }
-        }
-    for (int i = 0; i < d; i++) {
-        double *bii = &B[i * d + i];
-        switch (e) {
-        case OPT_ENERGY_SYMMETRIC_DIRICHLET: {
-            double s2 = s[i] * s[i];
-            *bii = 2.0 + 6.0 / (s2 * s2);
-            break;
-        }
-        case OPT_ENERGY_ARAP: *bii = 2.0 + arap_barrier_curvature(D) * other[i] * other[i]; break;
-        case OPT_ENERGY_CONFORMAL:
-            *bii = c * (2.0 - 8.0 / d + (4.0 / (d * d) + 2.0 / d) * N / (s[i] * s[i]));
-            break;
-        }
-    }
-}
 
 /* Eigen-decomposition of the symmetric d by d matrix A (overwritten) by
  * cyclic Jacobi rotations: lambda (d) out, E (d by d) out with eigenvector
@@ -131,7 +70,7 @@ int opt_isotropic_eigensystem(opt_energy e, int d, const double *J, double *lamb
     if (!(det > 0) || !isfinite(det)) return -1;
     double U[9], s[3], V[9], B[9], E[9], flip[3], twist[3];
     svd_signed(d, J, U, s, V);
-    sv_second_derivatives(e, d, s, B, flip, twist);
+    opt_energy_table[e]->sv_hessian(d, s, B, flip, twist);
     block_eigen(d, B, lambda, E);
     int dd = d * d, k = 0;
     for (; k < d; k++) /* scaling: sum_i E[i][k] u_i v_i^T */

@@ -12,23 +12,10 @@
  *   flip     Q = (u_i v_j^T + u_j v_i^T)/sqrt2 lambda = (Psi_i - Psi_j) / (s_i - s_j)
  *   twist    Q = (u_i v_j^T - u_j v_i^T)/sqrt2 lambda = (Psi_i + Psi_j) / (s_i + s_j)
  * for i < j: d + d(d-1) = d^2 modes, orthonormal in the Frobenius product.
- * The pair eigenvalues are written per energy in closed form without
- * s_i - s_j in a denominator, so repeated singular values (a rotation, a
- * similarity) need no special case:
- *   symmetric Dirichlet  scaling 2 + 6 / s_i^4 (uncoupled),
- *                        flip 2 + 2 (s_i^2 + s_i s_j + s_j^2) / (s_i s_j)^3,
- *                        twist 2 - 2 (s_i^2 - s_i s_j + s_j^2) / (s_i s_j)^3
- *   ARAP + b(det)        flip 2 - b'(det) det / (s_i s_j),
- *                        twist 2 (s_i + s_j - 2) / (s_i + s_j) + b'(det) det / (s_i s_j)
- *   conformal (AMIPS)    with c = 1 / (d det^(2/d)), N = sum s_k^2:
- *                        flip c (2 + 2 N / (d s_i s_j)), twist c (2 - 2 N / (d s_i s_j))
- * Negative eigenvalues: symmetric Dirichlet only twists (anisotropic or
- * compressed pairs); ARAP twists of pairs with s_i + s_j < 2 (its scaling
- * block, coupled by the barrier, stayed positive on a grid of 2D singular
- * values down to 0.02; it is projected like every mode all the same);
- * conformal twists (in 2D every twist of a non-similarity), and its
- * scaling block has a zero mode along s (the energy is scale invariant),
- * which rounding may make slightly negative.
+ * Each energy's row (opt/energy_kind.h) writes its scaling block and pair
+ * eigenvalues in closed form without s_i - s_j in a denominator, so
+ * repeated singular values (a rotation, a similarity) need no special
+ * case; its file says which modes can be negative.
  * The projected Hessian keeps every mode with its eigenvalue clamped to 0
  * (exactly 0, no floor: a caller needing strict definiteness regularizes
  * the assembled system), so H_proj - H is PSD with rank = the number of

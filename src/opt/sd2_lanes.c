@@ -1,5 +1,6 @@
 /* opt/sd2_lanes: see sd2_lanes.h. Each batch: the Jacobians gathered into
- * lane arrays, the arithmetic of opt/energy's symmetric Dirichlet written
+ * lane arrays, the arithmetic of symmetric Dirichlet's row
+ * (opt/energy_symmetric_dirichlet.c, opt/energy.c's 2D proxy) written
  * lane by lane (a vector operation per line: no lane depends on another),
  * then the weighted values added one by one in simplex order. */
 #include "opt/sd2_lanes.h"
@@ -7,7 +8,7 @@
 #include <float.h>
 #include <math.h>
 
-#include "opt/energy.h"
+#include "opt/sd_weight.h"
 #include "opt/small_svd.h"
 #include "opt/vector_clones.h"
 

@@ -1,11 +1,14 @@
 /* opt/sd2_lanes: the symmetric Dirichlet energy of triangles in 2D (the
  * mesh term of every UV map) summed over a range of simplices, and its
  * SLIM proxies, a batch of simplices at a time in vector lanes. The
- * closed forms and the order of every operation are opt/energy's
- * (density, density_grad, the 2D proxy) and the sums run in simplex
+ * closed forms and the order of every operation are those of the
+ * energy's row (opt/energy_symmetric_dirichlet.c: density, density_grad)
+ * and of opt/energy's 2D proxy, and the sums run in simplex
  * order, so the results are those of the one-simplex-at-a-time loops, to
  * the bit; only the arithmetic of a batch's Jacobians goes through the
- * vector unit together. */
+ * vector unit together. Used by opt/energy, opt/objective and
+ * opt/proxy_block; it needs only the shared weight (opt/sd_weight), not
+ * opt/energy, so the two do not depend on each other. */
 #ifndef SCAF_OPT_SD2_LANES_H
 #define SCAF_OPT_SD2_LANES_H
 

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "opt/arap_barrier.h"
 #include "opt/energy.h"
 #include "opt/sd2_lanes.h"
 #include "opt/simplices.h"
