@@ -293,15 +293,21 @@ typedef enum scaf_stop_reason {
     SCAF_STOP_PACKING_STALLED, /* atlas compaction: the layout's side shrank
                                  by less than 0.15% over the last 4
                                  iterations */
-    SCAF_STOP_CONVERGED        /* the estimated relative distance to the
+    SCAF_STOP_CONVERGED,       /* the estimated relative distance to the
                                  minimum (the iteration's criterion: Newton
                                  decrement or linear tail, see the
                                  tolerance) is below the tolerance */
+    SCAF_STOP_NOISE_FLOOR      /* atlas settling: E found no new low in
+                                 the last 10 iterations (it only moves up
+                                 and down in its last digits, the loop's
+                                 noise floor: the scaffold is remeshed
+                                 every iteration); ends a run with
+                                 tolerance 0 that no zero step ends */
 } scaf_stop_reason;
 
 /* A short, static name of a stop reason, one word in snake case
  * ("iteration_limit", "tolerance", "zero_step", "cancelled", "error",
- * "distortion_limit", "packing_stalled", "converged", "not_run"), as in the JSON
+ * "distortion_limit", "packing_stalled", "converged", "noise_floor", "not_run"), as in the JSON
  * reports of `scaf param` / `scaf atlas`; "unknown" for other values. */
 SCAF_API const char *scaf_stop_reason_name(scaf_stop_reason reason);
 

@@ -306,8 +306,8 @@ class AtlasResult:
     charts (inf with one chart); iterations: finished iterations per phase
     {"settle": n, "compact": m}; stop_reasons: why each phase stopped
     {"settle": ..., "compact": ...} ("iteration_limit", "converged",
-    "zero_step", "distortion_limit", "packing_stalled", "cancelled",
-    "error", "not_run" for a phase that did not take place); stop_reason:
+    "zero_step", "noise_floor", "distortion_limit", "packing_stalled",
+    "cancelled", "error", "not_run" for a phase that did not take place); stop_reason:
     the reason of the last phase that ran; seams: "input", "auto" or
     "extend" (see ParamResult)."""
 

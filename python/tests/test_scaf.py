@@ -677,7 +677,7 @@ class AtlasTest(unittest.TestCase):
 
     def test_stop_reasons(self):
         known = {"iteration_limit", "tolerance", "converged", "zero_step", "distortion_limit",
-                 "packing_stalled"}
+                 "packing_stalled", "noise_floor"}
         self.assertEqual(set(self.r.stop_reasons), {"settle", "compact"})
         self.assertIn(self.r.stop_reasons["settle"], known)
         self.assertIn(self.r.stop_reasons["compact"], known)

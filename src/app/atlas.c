@@ -893,6 +893,12 @@ scaf_status atlas_run(atlas *a, atlas_progress_fn progress, void *user, scaf_err
             a->settle_stop = SCAF_STOP_CONVERGED;
             break;
         }
+        /* no new low for a while: E only moves at the loop's noise floor
+         * (a chart started from its settled layout, with tolerance 0) */
+        if (opt_convergence_no_new_low(&conv)) {
+            a->settle_stop = SCAF_STOP_NOISE_FLOOR;
+            break;
+        }
     }
     a->settled_energy = scaf_loop_energy(&a->loop);
     a->eff_before = chart_packing_efficiency(a->nw, a->loop.uv, a->nf, a->Fw);

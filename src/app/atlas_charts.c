@@ -339,6 +339,17 @@ static int slit_chart(const mesh *m, const vt_graph *g, const int *label, int c,
     return rc;
 }
 
+/* m's vt indices and UVs become FT (3 nf) and UV (n): both owned by m
+ * from now on, the old ones freed. */
+static void mesh_take_uvs(mesh *m, int *FT, double *UV, int n)
+{
+    free(m->FT);
+    free(m->UV);
+    m->FT = FT;
+    m->UV = UV;
+    m->nuv = n;
+}
+
 /* m's vt indices and UVs become the settled atlas's working vertices and
  * layout (pinch points split, as the atlas splits them): the start of the
  * next round and of the final atlas. */
@@ -353,11 +364,7 @@ static int take_layout(mesh *m, const atlas *a)
     }
     memcpy(FT, a->Fw, sizeof(int) * 3 * (size_t)a->nf);
     memcpy(UV, a->loop.uv, sizeof(double) * 2 * (size_t)a->nw);
-    free(m->FT);
-    free(m->UV);
-    m->FT = FT;
-    m->UV = UV;
-    m->nuv = a->nw;
+    mesh_take_uvs(m, FT, UV, a->nw);
     return 1;
 }
 
@@ -393,11 +400,7 @@ static int relabel_uvs(mesh *m, const int *label)
         UV[2 * i] = m->UV[2 * key_vt[i]];
         UV[2 * i + 1] = m->UV[2 * key_vt[i] + 1];
     }
-    free(m->FT);
-    free(m->UV);
-    m->FT = FT;
-    m->UV = UV;
-    m->nuv = n;
+    mesh_take_uvs(m, FT, UV, n);
     FT = NULL;
     UV = NULL;
     ok = 1;
@@ -450,7 +453,7 @@ static int merge_pair_cmp(const void *p, const void *q)
  * Returns 1, or 0 out of memory. */
 static int join_pairs(mesh *m, int *label, int *partner, scaf_error *err)
 {
-    int nf = m->nf, ok = 0;
+    int nf = m->nf, ok = 0, undo = 0;
     int *order = malloc(sizeof(int) * 3 * (size_t)nf), count = 0;
     int *parent = malloc(sizeof(int) * (size_t)(m->nuv > 0 ? m->nuv : 1));
     int *newid = malloc(sizeof(int) * (size_t)(m->nuv > 0 ? m->nuv : 1));
@@ -496,7 +499,6 @@ static int join_pairs(mesh *m, int *label, int *partner, scaf_error *err)
     tm.FT = FT;
     tm.nuv = n;
     if (mesh_charts_compute(&tm, &ch, err) != SCAF_OK) goto out;
-    int undo = 0;
     for (int f = 0; f < nf; f++) {
         int l = label[f];
         if (partner[l] < 0 || partner[l] < l) continue;
@@ -507,16 +509,7 @@ static int join_pairs(mesh *m, int *label, int *partner, scaf_error *err)
             undo = 1;
         }
     }
-    if (undo) {
-        /* again with the pairs left */
-        mesh_charts_free(&ch);
-        free(order);
-        free(parent);
-        free(newid);
-        free(FT);
-        free(trial);
-        return join_pairs(m, label, partner, err);
-    }
+    if (undo) goto out; /* again with the pairs left */
     UV = malloc(sizeof(double) * 2 * (size_t)(n > 0 ? n : 1));
     if (!UV) goto out;
     for (int t = 0; t < m->nuv; t++) {
@@ -526,11 +519,7 @@ static int join_pairs(mesh *m, int *label, int *partner, scaf_error *err)
     for (int h = 0; h < 3 * nf; h++)
         if (partner[label[h / 3]] >= 0) UV[2 * FT[h]] = UV[2 * FT[h] + 1] = NAN;
     memcpy(label, trial, sizeof(int) * (size_t)nf);
-    free(m->FT);
-    free(m->UV);
-    m->FT = FT;
-    m->UV = UV;
-    m->nuv = n;
+    mesh_take_uvs(m, FT, UV, n);
     FT = NULL;
     UV = NULL;
     ok = 1;
@@ -542,6 +531,7 @@ out:
     free(FT);
     free(trial);
     free(UV);
+    if (undo) return join_pairs(m, label, partner, err);
     return ok;
 }
 
@@ -617,6 +607,26 @@ static int choose_pairs(const mesh *m, const int *label, int nc, const double *E
     return chosen;
 }
 
+/* What one round measured of its settled atlas: per chart E and fill, the
+ * split candidates, per face E and area, per vt the excess. */
+typedef struct round_measure {
+    double *E, *fill;      /* nc */
+    split_candidate *cand; /* nc */
+    double *fe, *farea;    /* nf */
+    double *ex;            /* nuv */
+} round_measure;
+
+static void round_measure_free(round_measure *r)
+{
+    free(r->E);
+    free(r->fill);
+    free(r->cand);
+    free(r->fe);
+    free(r->farea);
+    free(r->ex);
+    memset(r, 0, sizeof *r);
+}
+
 scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_charts_options *o,
                                 atlas_charts_info *info, scaf_error *err)
 {
@@ -662,26 +672,22 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
         info->rounds++;
         info->warm_charts = a.warm_charts;
         int nc = a.ncharts;
-        double *E = malloc(sizeof(double) * (size_t)nc);
-        double *fill = malloc(sizeof(double) * (size_t)nc);
+        round_measure rm;
+        rm.E = malloc(sizeof(double) * (size_t)nc);
+        rm.fill = malloc(sizeof(double) * (size_t)nc);
+        rm.cand = malloc(sizeof *rm.cand * (size_t)nc);
+        rm.fe = malloc(sizeof(double) * (size_t)m->nf);
+        rm.farea = calloc((size_t)m->nf, sizeof(double));
+        rm.ex = malloc(sizeof(double) * (size_t)m->nuv);
+        double *E = rm.E, *fill = rm.fill, *fe = rm.fe, *farea = rm.farea, *ex = rm.ex;
+        split_candidate *cand = rm.cand;
         double *UV = malloc(sizeof(double) * 2 * (size_t)(a.nw > 0 ? a.nw : 1));
-        split_candidate *cand = malloc(sizeof *cand * (size_t)nc);
-        if (!E || !fill || !UV || !cand) {
-            free(E);
-            free(fill);
-            free(UV);
-            free(cand);
-            atlas_free(&a);
-            st = err_nomem(err, "chart refinement");
-            break;
+        int ok = E && fill && cand && fe && farea && ex && UV;
+        if (ok) {
+            atlas_chart_energy(&a, E);
+            atlas_normalized_uv(&a, UV);
+            ok = chart_fill(&a, UV, fill);
         }
-        atlas_chart_energy(&a, E);
-        atlas_normalized_uv(&a, UV);
-        int ok = chart_fill(&a, UV, fill);
-        double *fe = malloc(sizeof(double) * (size_t)m->nf);
-        double *farea = calloc((size_t)m->nf, sizeof(double));
-        double *ex = malloc(sizeof(double) * (size_t)m->nuv);
-        if (!fe || !farea || !ex) ok = 0;
         if (ok) {
             scaf_loop_face_energy(&a.loop, fe);
             for (int i = 0; i < a.nf; i++) farea[a.loop.chart_face[i]] = a.loop.chart.weight[i];
@@ -694,12 +700,7 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
         atlas_free(&a);
         free(UV);
         if (!ok) {
-            free(E);
-            free(fill);
-            free(cand);
-            free(fe);
-            free(farea);
-            free(ex);
+            round_measure_free(&rm);
             st = err_nomem(err, "chart refinement");
             break;
         }
@@ -720,12 +721,7 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             }
             info->charts_after = nc + undone;
             if (undone > 0 && !relabel_uvs(m, label)) st = err_nomem(err, "chart refinement");
-            free(E);
-            free(fill);
-            free(cand);
-            free(fe);
-            free(farea);
-            free(ex);
+            round_measure_free(&rm);
             break;
         }
         /* every chart above the distortion bound; of those below the fill
@@ -787,12 +783,7 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
                 }
             }
             free(partner);
-            free(E);
-            free(fill);
-            free(cand);
-            free(fe);
-            free(farea);
-            free(ex);
+            round_measure_free(&rm);
             if (st != SCAF_OK || !merging) break;
             continue;
         }
@@ -806,12 +797,7 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             int *FT = malloc(sizeof(int) * 3 * (size_t)m->nf), *src = NULL, nuv = m->nuv;
             if (!FT || !vt_graph_build(m, &g, err)) {
                 free(FT);
-                free(fe);
-                free(farea);
-                free(ex);
-                free(E);
-                free(fill);
-                free(cand);
+                round_measure_free(&rm);
                 st = err_nomem(err, "chart refinement");
                 break;
             }
@@ -843,9 +829,6 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             free(src);
             vt_graph_free(&g);
         }
-        free(fe);
-        free(farea);
-        free(ex);
         int split = 0;
         for (int i = 0; i < ncand && st == SCAF_OK; i++) {
             if (cand[i].reason == 2) continue;
@@ -859,9 +842,7 @@ scaf_status atlas_charts_refine(mesh *m, const atlas_options *base, const atlas_
             if (cand[i].reason == 0) info->distortion_splits++;
             else info->fill_splits++;
         }
-        free(E);
-        free(fill);
-        free(cand);
+        round_measure_free(&rm);
         if (st != SCAF_OK || split + slits == 0) break;
         /* a slit leaves its two sides at one place: that chart cannot
          * start from its layout, and the others need not */

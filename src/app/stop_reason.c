@@ -23,6 +23,9 @@ static const stop_reason_entry TABLE[] = {
     {SCAF_STOP_CONVERGED, "converged",
      "the estimated relative distance to the minimum (Newton decrement, linear tail) fell below "
      "the tolerance"},
+    {SCAF_STOP_NOISE_FLOOR, "noise_floor",
+     "E found no new low in the last 10 iterations: it only moves in its last digits (the "
+     "loop's noise floor)"},
 };
 
 static const stop_reason_entry *find(scaf_stop_reason reason)

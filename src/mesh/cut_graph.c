@@ -354,7 +354,32 @@ typedef struct paths {
     int *pred;    /* ns: edge it was reached by, -1 at a source */
     int *owner;   /* ns: source it was reached from */
     min_heap heap;
+    /* ns, or NULL: the outgoing border half-edge of each border vertex.
+     * When set, each boundary loop counts as one point: the first of its
+     * vertices reached brings all the others at the same distance, along
+     * the loop (so the tree holds all of a loop's border edges but one). */
+    const int *border_out;
 } paths;
+
+/* The loop of border vertex v, reached first of its loop: every other
+ * vertex of it joins the tree at v's distance by the border edge before
+ * it. Returns 0 out of memory. */
+static int paths_contract_loop(const surface *s, paths *P, int v)
+{
+    int h = P->border_out[v];
+    for (int guard = 0; guard < s->ns; guard++) {
+        int u = s->cls[half_edge_next(h)];
+        if (u == v) break;
+        P->dist[u] = P->dist[v];
+        P->pred[u] = s->edge_of[h];
+        P->owner[u] = P->owner[v];
+        if (!min_heap_push(&P->heap, P->dist[u], u)) return 0;
+        h = P->border_out[u];
+    }
+    return 1;
+}
+
+static int is_border_edge(const surface *s, int e) { return e >= 0 && s->e_t[e] < 0; }
 
 /* Add source v (owner o) and relax: Dijkstra from all sources so far
  * (distances only decrease). */
@@ -367,6 +392,11 @@ static int paths_add(const surface *s, paths *P, int v, int o)
     while (P->heap.n > 0) {
         min_heap_item it = min_heap_pop(&P->heap);
         if (it.key > P->dist[it.id]) continue;
+        /* the first vertex of its loop (a later one has a border edge as
+         * its predecessor: the loop was brought in whole) */
+        if (P->border_out && P->border_out[it.id] >= 0 && !is_border_edge(s, P->pred[it.id]) &&
+            !paths_contract_loop(s, P, it.id))
+            return 0;
         for (int k = s->adj_start[it.id]; k < s->adj_start[it.id + 1]; k++) {
             int e = s->adj_edge[k], u = edge_other(s, e, it.id);
             double nd = it.key + s->e_w[e];
@@ -468,6 +498,7 @@ typedef struct cutter {
     int *deg;               /* ns */
     int *dual;              /* nf + loops: union-find of the dual */
     int *loop_of;           /* 3 nf: dual node of the hole of each border half-edge */
+    int *border_out;        /* ns: outgoing border half-edge of a border vertex, or -1 */
     double *K;              /* ns */
     keyed *keys;            /* ne */
     int *queue;             /* ns */
@@ -511,7 +542,13 @@ static int cut_handles(cutter *c, int p, const piece_lists *L)
     const int *verts = L->verts + L->v_start[p];
     int nverts = L->v_start[p + 1] - L->v_start[p];
     paths_reset(&c->P, verts, nverts);
-    if (!paths_add(s, &c->P, verts[0], 0)) return -1;
+    /* a shortest-path tree in which each boundary loop is one point: the
+     * loops below may run along a hole for free, and each hole leaves
+     * exactly one of its border edges out of the tree */
+    c->P.border_out = c->border_out;
+    int added = paths_add(s, &c->P, verts[0], 0);
+    c->P.border_out = NULL;
+    if (!added) return -1;
     /* the edges of the piece, tree edges flagged */
     int nk = 0;
     for (int i = 0; i < nverts; i++) {
@@ -529,13 +566,17 @@ static int cut_handles(cutter *c, int p, const piece_lists *L)
             nk++;
         }
     }
-    /* maximum spanning tree of the dual (Kruskal, longest loops first) */
+    /* maximum spanning tree of the dual (Kruskal, longest loops first),
+     * over the faces only: the border edge each hole leaves out of the
+     * tree closes that hole's own loop, which is already a border. (Holes
+     * were once dual nodes too: then two sides of a cut handle could be
+     * held together by a hole alone, and the cut split the chart.) */
     qsort(c->keys, (size_t)nk, sizeof *c->keys, keyed_desc);
     int loops = 0;
     for (int i = 0; i < nk; i++) {
         int e = c->keys[i].id, h = s->e_h[e], t = s->e_t[e];
-        int x = h / 3, y = t >= 0 ? t / 3 : c->loop_of[h];
-        if (uf_union(c->dual, x, y)) continue;
+        if (t < 0) continue;
+        if (uf_union(c->dual, h / 3, t / 3)) continue;
         /* a generator: its loop through the tree */
         loops++;
         c->mark[e] = 1;
@@ -698,6 +739,7 @@ scaf_status cut_graph_compute(int nv, const double *V, int nf, const int *F, con
     c.in_tree = calloc((size_t)(s.ne ? s.ne : 1), 1);
     c.deg = malloc(sizeof(int) * (size_t)(s.ns ? s.ns : 1));
     c.loop_of = malloc(sizeof(int) * (size_t)(n3 ? n3 : 1));
+    c.border_out = malloc(sizeof(int) * (size_t)(s.ns ? s.ns : 1));
     c.K = malloc(sizeof(double) * (size_t)(s.ns ? s.ns : 1));
     c.keys = malloc(sizeof(keyed) * (size_t)(s.ne ? s.ne : 1));
     c.queue = malloc(sizeof(int) * (size_t)(s.ns ? s.ns : 1));
@@ -705,12 +747,12 @@ scaf_status cut_graph_compute(int nv, const double *V, int nf, const int *F, con
     loops = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
     fc = malloc(sizeof(int) * (size_t)(nf ? nf : 1));
     if (!c.P.dist || !c.P.pred || !c.P.owner || !c.mark || !c.in_tree || !c.deg || !c.loop_of ||
-        !c.K || !c.keys || !c.queue || !chi || !loops || !fc) {
+        !c.border_out || !c.K || !c.keys || !c.queue || !chi || !loops || !fc) {
         st = err_nomem(err, "cut graph");
         goto done;
     }
-    /* holes: one dual node per boundary loop, after the faces */
-    int *out = c.deg; /* scratch: outgoing border half-edge of each vertex */
+    /* holes: a number per boundary loop, after the faces' */
+    int *out = c.border_out;
     for (int v = 0; v < s.ns; v++) out[v] = -1;
     for (int h = 0; h < n3; h++) {
         c.loop_of[h] = -1;
@@ -832,6 +874,7 @@ done:
     free(chi);
     free(loops);
     free(fc);
+    free(c.border_out);
     if (st != SCAF_OK) cut_graph_free(g);
     return st;
 }

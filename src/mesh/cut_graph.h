@@ -7,12 +7,15 @@
  * of different labels become seams; within each edge-connected piece of a
  * label the surface is then cut until it is a disk or a disk with holes:
  *   - handles (genus g > 0) by the greedy shortest system of 2g loops of
- *     Erickson & Whittlesey (2005): a shortest-path tree T from a root,
- *     a maximum spanning tree of the dual (each hole filled by one dual
- *     node, so loops around holes are not cut) over the edges not in T,
- *     weighted by the length of the loop each edge closes in T; the
- *     edges in neither close the 2g loops, whose union is pruned of its
- *     dangling branches;
+ *     Erickson & Whittlesey (2005): a shortest-path tree T from a root
+ *     in which each boundary loop counts as one point (its vertices join
+ *     T together, along the loop: loops may follow a hole for free, and
+ *     each hole leaves one border edge out of T, whose loop is the hole's
+ *     own and is not cut), a maximum spanning tree of the dual over the
+ *     faces and the inside edges not in T, weighted by the length of the
+ *     loop each edge closes in T; the inside edges in neither close the
+ *     2g loops, whose union is pruned of its dangling branches. The dual
+ *     tree's edges are never cut, so the chart stays one piece;
  *   - a closed piece (no boundary) also gets a tree of shortest paths
  *     joining cone vertices (Gu, Gortler & Hoppe 2002 cut toward the
  *     points of concentrated curvature; here picked at once, not

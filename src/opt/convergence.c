@@ -12,6 +12,12 @@ void opt_convergence_reset(opt_convergence *c)
     c->criterion = INFINITY;
 }
 
+int opt_convergence_no_new_low(const opt_convergence *c)
+{
+    enum { S = OPT_CONV_STALL + 1 };
+    return c->n >= S && !(c->low[c->n % S] > c->low[(c->n - 1) % S]);
+}
+
 double opt_convergence_update(opt_convergence *c, double e_before, double e_after, double decrement)
 {
     enum { W = OPT_CONV_WINDOW + 1 };

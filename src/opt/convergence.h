@@ -44,6 +44,12 @@ typedef struct opt_convergence {
     double criterion;                /* the last value returned (+INFINITY at first) */
 } opt_convergence;
 
+/* 1 when the lowest energy did not go down over the last OPT_CONV_STALL
+ * iterations: the run only moves up and down at its noise floor (the
+ * SCAF loop's scaffold is remeshed every iteration, so E need not settle
+ * to a fixed point; a settled chart drifts by 1e-10 relatively). */
+int opt_convergence_no_new_low(const opt_convergence *c);
+
 /* Forget the history (the energy being minimized changed). */
 void opt_convergence_reset(opt_convergence *c);
 

@@ -211,6 +211,19 @@ static void atlas_reasons(void **state)
     assert_true(s.settle < 1000);
     assert_int_equal(r[0], SCAF_STOP_ZERO_STEP);
 
+    /* ... and where steps go on in the last digits (cubesphere 3's E
+     * drifts by 1e-10 after iteration 60; charts started from their
+     * settled layout): no new low in 10 iterations ends the run at the
+     * loop's noise floor (both ran to the cap before) */
+    o.settle_iterations = 400;
+    assert_int_equal(atlas_run_on("cubesphere", 3, &o, &s, r), SCAF_OK);
+    assert_true(s.settle < 400);
+    assert_int_equal(r[0], SCAF_STOP_NOISE_FLOOR);
+    o.compact_iterations = 0;
+    assert_int_equal(atlas_run_on("hemisphere", 4, &o, &s, r), SCAF_OK);
+    assert_true(s.settle < 400);
+    assert_int_equal(r[0], SCAF_STOP_NOISE_FLOOR);
+
     /* compaction: E may not grow at all: the distortion limit */
     o = small_atlas();
     o.distortion_tolerance = 0.0;
@@ -262,7 +275,8 @@ static void names_are_distinct_words(void **state)
     (void)state;
     const scaf_stop_reason all[] = {
         SCAF_STOP_NONE,      SCAF_STOP_ITERATIONS, SCAF_STOP_TOLERANCE,  SCAF_STOP_ZERO_STEP,
-        SCAF_STOP_CANCELLED, SCAF_STOP_ERROR,      SCAF_STOP_DISTORTION, SCAF_STOP_PACKING_STALLED};
+        SCAF_STOP_CANCELLED, SCAF_STOP_ERROR,      SCAF_STOP_DISTORTION, SCAF_STOP_PACKING_STALLED,
+        SCAF_STOP_CONVERGED, SCAF_STOP_NOISE_FLOOR};
     int n = (int)(sizeof all / sizeof all[0]);
     for (int i = 0; i < n; i++) {
         const char *a = scaf_stop_reason_name(all[i]);
@@ -273,6 +287,7 @@ static void names_are_distinct_words(void **state)
     }
     assert_string_equal(scaf_stop_reason_name(SCAF_STOP_ITERATIONS), "iteration_limit");
     assert_string_equal(scaf_stop_reason_name(SCAF_STOP_ZERO_STEP), "zero_step");
+    assert_string_equal(scaf_stop_reason_name(SCAF_STOP_NOISE_FLOOR), "noise_floor");
     assert_string_equal(scaf_stop_reason_name((scaf_stop_reason)99), "unknown");
 }
 
