@@ -23,6 +23,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
+#include "cli_progress.h"
 #include "cli_seams.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
@@ -154,10 +155,32 @@ static void usage(FILE *o)
 }
 
 typedef struct progress_state {
-    int live;
+    cli_progress bar;
+    const atlas_options *opt; /* the phases' caps and tolerances */
+    int settled;              /* settle iterations seen */
     atlas_iteration *it;
     int n, size;
 } progress_state;
+
+/* The bar's phase after iteration it: settle until atlas_run's settle
+ * rule ends it (app/atlas.c), then the packer, then compaction. */
+static void progress_phase(progress_state *s, const atlas_iteration *it)
+{
+    const atlas_options *o = s->opt;
+    if (it->phase == ATLAS_SETTLE) {
+        s->settled++;
+        int end = s->settled >= o->settle_iterations || it->info.step == 0.0 ||
+            (o->settle_tolerance > 0.0 && it->info.criterion < o->settle_tolerance);
+        cli_progress_step(&s->bar, s->settled, it->info.energy, it->info.criterion, NULL);
+        if (end) cli_progress_phase(&s->bar, o->repack ? "pack" : "compact", 0, 0, 0.0);
+        return;
+    }
+    int k = s->n - s->settled;
+    if (k == 1) cli_progress_phase(&s->bar, "compact", o->compact_iterations, 0, 0.0);
+    char extra[64];
+    snprintf(extra, sizeof extra, "efficiency %.3f", it->efficiency);
+    cli_progress_step(&s->bar, k, it->info.energy, NAN, extra);
+}
 
 static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
 {
@@ -173,12 +196,7 @@ static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
     s->it[s->n++] = *it;
     cli_signal_test_point(s->n);
     if (cli_signal_caught()) return 1; /* SIGINT / SIGTERM: stop after this iteration */
-    if (s->live) {
-        fprintf(stderr, "\rscaf atlas: %s %d  E = %.5f  efficiency %.3f  gap %.5f  %.3f s   ",
-                it->phase == ATLAS_COMPACT ? "compact" : "settle", it->info.iteration,
-                it->info.energy, it->efficiency, it->gap, it->info.seconds);
-        fflush(stderr);
-    }
+    progress_phase(s, it);
     return 0;
 }
 
@@ -332,7 +350,11 @@ static int atlas_main(int argc, char **argv)
     progress_state ps = {0};
     double *UV = NULL;
     seam_edges seams = {0};
+    ps.opt = &opt;
+    cli_progress_init(&ps.bar, "atlas", quiet);
+    cli_progress_phase(&ps.bar, "segment", 0, 0, 0.0);
     scaf_status st = atlas_init(&a, &m, &opt, &err);
+    cli_progress_clear(&ps.bar);
     if (st == SCAF_ERR_CANCELLED && cli_signal_report("atlas")) { /* during the setup */
         mesh_free(&m);
         return EXIT_CANCELLED;
@@ -347,16 +369,17 @@ static int atlas_main(int argc, char **argv)
         rc = EXIT_NOMEM;
         goto done;
     }
-    ps.live = !quiet && isatty(fileno(stderr));
-    if (!quiet && !ps.live)
+    if (!quiet && !cli_progress_live(&ps.bar))
         fprintf(stderr, "scaf atlas: %s: %d faces, %d chart(s)%s, padding %g\n", in, m.nf,
                 a.ncharts, a.split_uvs ? " (pinched vt split)" : "", opt.padding);
     if (cli_signal_report("atlas")) {
         rc = EXIT_CANCELLED;
         goto done;
     }
+    cli_progress_phase(&ps.bar, "settle", opt.settle_iterations, !(opt.settle_tolerance > 0),
+                       opt.settle_tolerance);
     st = atlas_run(&a, on_iteration, &ps, &err);
-    if (ps.live) fputc('\n', stderr);
+    cli_progress_done(&ps.bar, NULL);
     if (cli_signal_report("atlas")) {
         rc = EXIT_CANCELLED;
         goto done;

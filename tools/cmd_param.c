@@ -22,6 +22,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
+#include "cli_progress.h"
 #include "cli_seams.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
@@ -126,8 +127,7 @@ typedef struct progress_state {
     const scaf_param_t *p;
     int verify;        /* check bijectivity after every iteration */
     int not_bijective; /* iteration at which the check failed, 0 if none */
-    int live;
-    int cap;
+    cli_progress bar;
     scaf_iteration_info_t *it;
     int n, size;
     int oom;
@@ -161,11 +161,7 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
             return 1;
         }
     }
-    if (s->live) {
-        fprintf(stderr, "\rscaf param: iteration %d/%d  E = %.6f  step %.3g  %.3f s/it   ",
-                info->iteration, s->cap, info->energy, info->step, info->seconds);
-        fflush(stderr);
-    }
+    cli_progress_step(&s->bar, info->iteration, info->energy, info->criterion, NULL);
     return 0;
 }
 
@@ -335,9 +331,8 @@ static int param_main(int argc, char **argv)
     double e0 = scaf_param_energy(p);
     ps.p = p;
     ps.verify = verify;
-    ps.live = !quiet && isatty(fileno(stderr));
-    ps.cap = opt.max_iterations;
-    if (!quiet && !ps.live)
+    cli_progress_init(&ps.bar, "param", quiet);
+    if (!quiet && !cli_progress_live(&ps.bar))
         fprintf(stderr, "scaf param: %s: %d faces, %d chart(s), initial E = %.6f\n", in, m.nf,
                 scaf_param_chart_count(p), e0);
     {
@@ -353,8 +348,11 @@ static int param_main(int argc, char **argv)
         rc = EXIT_CANCELLED;
         goto done;
     }
+    /* the cap is a real count only without a tolerance */
+    cli_progress_phase(&ps.bar, "optimize", opt.max_iterations, !(opt.tolerance > 0),
+                       opt.tolerance);
     st = scaf_param_run(p, opt.max_iterations, on_iteration, &ps);
-    if (ps.live) fputc('\n', stderr);
+    cli_progress_done(&ps.bar, NULL);
     if (cli_signal_report("param")) {
         rc = EXIT_CANCELLED;
         goto done;
