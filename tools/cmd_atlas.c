@@ -132,9 +132,12 @@ static void usage(FILE *o)
             "  --report FILE.json       per-iteration energy, gap and packing efficiency,\n"
             "                           before/after compaction, per-chart distortion\n"
             "  --svg FILE               picture of the atlas, charts in distinct colours\n"
-            "  --png FILE               the same picture as a PNG texture of the unit UV\n"
-            "                           square (transparent outside the charts, chart\n"
-            "                           boundaries outlined)\n"
+            "  --png FILE               the same picture as a PNG of the unit UV square\n"
+            "                           (transparent outside the charts, chart boundaries\n"
+            "                           outlined), its border, chart numbers and, below it,\n"
+            "                           the padding's length\n"
+            "  --png-plain              the PNG without border, numbers and legend: exactly\n"
+            "                           the unit square, a texture\n"
             "  --png-size N             pixels of the PNG's side (16..16384, default 1024)\n"
             "  --checker [N]            PNG only (the SVG has none): shade the fill with a\n"
             "                           checkerboard on the 3D surface, N squares across the\n"
@@ -423,6 +426,11 @@ static int atlas_main(int argc, char **argv)
         path = cli_outputs_begin(&job.outs, job.k.svg, &err);
         st = path ? atlas_svg_write(path, &a, UV, title, &err) : SCAF_ERR_IO;
         if ((rc = cli_outputs_end(&job.outs, job.k.svg, st, &err)) != EXIT_OK) goto done;
+    }
+    if (!png.plain) {
+        png.opt.chart = a.chart;       /* the charts' numbers */
+        png.opt.padding = opt.padding; /* the legend's padding bar */
+        png.opt.frame = 1;             /* the unit square's border */
     }
     if (png.path &&
         (rc = cli_uv_job_png(&job, a.nw, UV, a.nf, a.Fw, chart_colour, &a, m.nv, m.V, m.F,

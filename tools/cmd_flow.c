@@ -270,8 +270,8 @@ static int flow_main(int argc, char **argv)
                 &outs, kr, path ? write_report(path, in, delta, until_free, &g, &err) : SCAF_ERR_IO,
                 &err);
         }
-        surface_view panels[2] = {{m.nv, start, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, m.V, m.nf, m.F, NULL, 0, NULL}};
+        surface_view panels[2] = {{m.nv, start, m.nf, m.F, NULL, 0, NULL, "input"},
+                                  {m.nv, m.V, m.nf, m.F, NULL, 0, NULL, "flowed"}};
         if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, 2, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }

@@ -322,8 +322,8 @@ static int inflate_main(int argc, char **argv)
             rc = cli_outputs_end(&outs, kr,
                                  path ? write_report(path, in, K, &g, &err) : SCAF_ERR_IO, &err);
         }
-        surface_view panels[2] = {{m.nv, start, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, m.V, m.nf, m.F, NULL, 0, NULL}};
+        surface_view panels[2] = {{m.nv, start, m.nf, m.F, NULL, 0, NULL, "input"},
+                                  {m.nv, m.V, m.nf, m.F, NULL, 0, NULL, "inflated"}};
         if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, 2, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }

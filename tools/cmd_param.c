@@ -100,7 +100,9 @@ static void usage(FILE *o)
             "  --svg-scaffold         also draw the scaffold in the picture\n"
             "  --png FILE             the same picture (without scaffold) as PNG: triangles\n"
             "                         shaded by distortion, chart boundaries outlined,\n"
-            "                         transparent outside the charts\n"
+            "                         transparent outside the charts, the colour bar of\n"
+            "                         the distortion scale below (docs/param.md)\n"
+            "  --png-plain            the PNG without the colour bar\n"
             "  --png-size N           longer PNG side in pixels (16..16384, default 1024)\n"
             "  --checker [N]          PNG only (the SVG has none): shade the fill with a\n"
             "                         checkerboard on the 3D surface, N squares across the\n"
@@ -437,8 +439,10 @@ static int param_main(int argc, char **argv)
             goto done;
         }
         param_face_energy(p, E);
+        uv_png_options po = png.opt;
+        po.energy_legend = !png.plain; /* the colours are the distortion scale's: its bar */
         rc = cli_uv_job_png(&job, pm.nuv, pm.uv, pm.nf, pm.FT, energy_colour, E, m.nv, m.V, m.F,
-                            &png.opt);
+                            &po);
         free(E);
         if (rc != EXIT_OK) goto done;
     }

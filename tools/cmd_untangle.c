@@ -353,9 +353,9 @@ static int untangle_main(int argc, char **argv)
                      : SCAF_ERR_IO,
                 &err);
         }
-        surface_view panels[3] = {{m.nv, m.V, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, flowed, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, X, m.nf, m.F, NULL, 0, NULL}};
+        surface_view panels[3] = {{m.nv, m.V, m.nf, m.F, NULL, 0, NULL, "input"},
+                                  {m.nv, flowed, m.nf, m.F, NULL, 0, NULL, "flowed"},
+                                  {m.nv, X, m.nf, m.F, NULL, 0, NULL, "untangled"}};
         int n = r.stop == SCAF_UNTANGLE_ALREADY_FREE ? 1 : 3;
         if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, n, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
