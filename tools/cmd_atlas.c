@@ -440,11 +440,15 @@ static int atlas_main(int argc, char **argv)
     if ((rc = cli_seams_png(&job.outs, job.png_seams, &m, a.chart, &seams, &o)) != EXIT_OK)
         goto done;
     if (report) {
-        seam_report sr = {a.seams_used, a.seams_why, a.ncharts, a.nf, a.chart, &seams};
+        seam_report sr = {a.seams_used, a.seams_why, a.ncharts, a.nf, a.chart, &seams, NULL, 0};
+        gltf_piece *pieces = NULL; /* a glTF input: which primitive went where */
+        cli_gltf_pieces_load("atlas", in, &job.rinfo, quiet, &pieces, &sr.npieces);
+        sr.pieces = pieces;
         atlas_report r = {in,  out, &a,        resolution, setup, total,
                           gap, eff, e_matched, ps.n,       ps.it, &sr};
         path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? atlas_report_write(path, &r, &err) : SCAF_ERR_IO;
+        free(pieces);
         if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&job.outs);

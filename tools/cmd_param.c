@@ -459,12 +459,17 @@ static int param_main(int argc, char **argv)
         (rc = cli_seams_png(&job.outs, job.png_seams, &m, fc, &seams, NULL)) != EXIT_OK)
         goto done;
     if (report) {
-        seam_report sr = {scaf_param_seams_used(p), param_seams_why(p), nc, m.nf, fc, &seams};
+        seam_report sr = {
+            scaf_param_seams_used(p), param_seams_why(p), nc, m.nf, fc, &seams, NULL, 0};
+        gltf_piece *pieces = NULL; /* a glTF input: which primitive went where */
+        cli_gltf_pieces_load("param", in, &job.rinfo, quiet, &pieces, &sr.npieces);
+        sr.pieces = pieces;
         param_report r = {in,    out,   &opt, m.nv,      m.nf, scaf_param_chart_count(p),
                           setup, e0,    e1,   e_matched, "ok", scaf_param_stop_reason(p),
                           ps.n,  ps.it, &sr};
         path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? param_report_write(path, &r, &err) : SCAF_ERR_IO;
+        free(pieces);
         if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&job.outs);
