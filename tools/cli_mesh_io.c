@@ -54,6 +54,26 @@ int cli_input_format_option(const char *cmd, int argc, char **argv, int *i)
     return 1;
 }
 
+void cli_gltf_pieces_load(const char *cmd, const char *in, const mesh_read_info *info, int quiet,
+                          gltf_piece **pieces, int *n)
+{
+    *pieces = NULL;
+    *n = 0;
+    if (!info || info->format != MESH_FORMAT_GLTF) return;
+    scaf_error err;
+    err_clear(&err);
+    char *data = NULL;
+    size_t size = 0;
+    const char *bytes = !strcmp(in, "-") ? cli_stdin_data(&size) : NULL;
+    scaf_status st = bytes ? SCAF_OK : mesh_load_file(in, &data, &size, &err);
+    if (st == SCAF_OK) st = gltf_pieces(bytes ? bytes : data, size, in, pieces, n, &err);
+    if (st != SCAF_OK && !quiet)
+        fprintf(stderr, "scaf %s: warning: no glTF primitive table in the report: %s\n", cmd,
+                err.message);
+    if (st != SCAF_OK) *pieces = NULL, *n = 0;
+    free(data);
+}
+
 void cli_gltf_pieces_report(const char *cmd, const char *in, const mesh_read_info *info, int quiet,
                             const mesh *o)
 {

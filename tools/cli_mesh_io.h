@@ -23,6 +23,7 @@
 
 #include "base/error.h"
 #include "mesh/mesh.h"
+#include "mesh/gltf_io.h"
 #include "mesh/mesh_io.h"
 
 /* The help line of --input-format (commands that read a mesh). */
@@ -42,6 +43,13 @@ int cli_input_format_option(const char *cmd, int argc, char **argv, int *i);
  * new UV, FT) they went to, e.g. "scaf atlas: glTF mesh 1 'cap' primitive
  * 0: faces 72-77, chart 2". Prints nothing for other inputs or when
  * quiet; a failure to re-read the document is a warning. */
+/* The primitives of a glTF input in mesh order, for the report's
+ * "gltf_primitives" (app/seam_report): *pieces (free it) and *n, or NULL
+ * and 0 when the input is not glTF or cannot be read again (a warning
+ * then, unless quiet). */
+void cli_gltf_pieces_load(const char *cmd, const char *in, const mesh_read_info *info, int quiet,
+                          gltf_piece **pieces, int *n);
+
 void cli_gltf_pieces_report(const char *cmd, const char *in, const mesh_read_info *info, int quiet,
                             const mesh *o);
 

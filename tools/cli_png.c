@@ -14,6 +14,7 @@ void cli_png_init(cli_png *p, int unit_square)
     p->opt = uv_png_options_default();
     p->opt.unit_square = unit_square;
     p->size_given = 0;
+    p->plain = 0;
 }
 
 int cli_png_option(const char *cmd, int argc, char **argv, int *i, cli_png *p)
@@ -46,6 +47,10 @@ int cli_png_option(const char *cmd, int argc, char **argv, int *i, cli_png *p)
         ++*i;
         return 1;
     }
+    if (!strcmp(a, "--png-plain")) {
+        p->plain = 1;
+        return 1;
+    }
     if (!strcmp(a, "--checker")) {
         double n;
         p->opt.checker = CLI_PNG_DEFAULT_CHECKER;
@@ -66,9 +71,11 @@ int cli_png_option(const char *cmd, int argc, char **argv, int *i, cli_png *p)
 
 int cli_png_finish(const char *cmd, const cli_png *p)
 {
-    if (!p->path && (p->opt.checker > 0.0 || p->size_given)) {
+    if (!p->path && (p->opt.checker > 0.0 || p->size_given || p->plain)) {
         fprintf(stderr, "scaf %s: %s draws into the PNG picture: give --png FILE as well\n", cmd,
-                p->opt.checker > 0.0 ? "--checker" : "--png-size");
+                p->opt.checker > 0.0 ? "--checker"
+                    : p->size_given  ? "--png-size"
+                                     : "--png-plain");
         return -1;
     }
     return 0;

@@ -1,6 +1,8 @@
 /* tools/cli_png: the picture options shared by `scaf param` and `scaf atlas`:
  * --png FILE, --png-size N (16..16384), --checker [N] (optional number of
- * checker squares across the 3D bounding-box diagonal, default 20).
+ * checker squares across the 3D bounding-box diagonal, default 20),
+ * --png-plain (the picture alone: no legend, chart numbers or border; for
+ * `scaf atlas` the PNG is then exactly the unit square, a texture).
  * Parsing only; the picture itself is app/uv_png. */
 #ifndef SCAF_TOOLS_CLI_PNG_H
 #define SCAF_TOOLS_CLI_PNG_H
@@ -13,6 +15,7 @@ typedef struct cli_png {
     const char *path;   /* --png FILE, or NULL */
     uv_png_options opt; /* size, checker (0 = none), outline */
     int size_given;
+    int plain; /* --png-plain: no legend, numbers or border (a texture) */
 } cli_png;
 
 /* Defaults; unit_square as in uv_png_options. */

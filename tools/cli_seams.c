@@ -69,8 +69,8 @@ int cli_seams_png(cli_outputs *outs, int k, const mesh *m, const int *face_chart
         q[1] = p[1];
         q[2] = lo[2] + hi[2] - p[2];
     }
-    surface_view v[2] = {{m->nv, m->V, m->nf, m->F, col, s->n, s->ab},
-                         {m->nv, back, m->nf, m->F, col, s->n, s->ab}};
+    surface_view v[2] = {{m->nv, m->V, m->nf, m->F, col, s->n, s->ab, "front"},
+                         {m->nv, back, m->nf, m->F, col, s->n, s->ab, "back"}};
     scaf_error err;
     err_clear(&err);
     const char *path = cli_outputs_begin(outs, k, &err);

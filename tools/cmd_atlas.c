@@ -23,6 +23,7 @@
 #include "base/timer.h"
 #include "cli_args.h"
 #include "cli_png.h"
+#include "cli_progress.h"
 #include "cli_seams.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
@@ -131,9 +132,12 @@ static void usage(FILE *o)
             "  --report FILE.json       per-iteration energy, gap and packing efficiency,\n"
             "                           before/after compaction, per-chart distortion\n"
             "  --svg FILE               picture of the atlas, charts in distinct colours\n"
-            "  --png FILE               the same picture as a PNG texture of the unit UV\n"
-            "                           square (transparent outside the charts, chart\n"
-            "                           boundaries outlined)\n"
+            "  --png FILE               the same picture as a PNG of the unit UV square\n"
+            "                           (transparent outside the charts, chart boundaries\n"
+            "                           outlined), its border, chart numbers and, below it,\n"
+            "                           the padding's length\n"
+            "  --png-plain              the PNG without border, numbers and legend: exactly\n"
+            "                           the unit square, a texture\n"
             "  --png-size N             pixels of the PNG's side (16..16384, default 1024)\n"
             "  --checker [N]            PNG only (the SVG has none): shade the fill with a\n"
             "                           checkerboard on the 3D surface, N squares across the\n"
@@ -155,10 +159,32 @@ static void usage(FILE *o)
 }
 
 typedef struct progress_state {
-    int live;
+    cli_progress bar;
+    const atlas_options *opt; /* the phases' caps and tolerances */
+    int settled;              /* settle iterations seen */
     atlas_iteration *it;
     int n, size;
 } progress_state;
+
+/* The bar's phase after iteration it: settle until atlas_run's settle
+ * rule ends it (app/atlas.c), then the packer, then compaction. */
+static void progress_phase(progress_state *s, const atlas_iteration *it)
+{
+    const atlas_options *o = s->opt;
+    if (it->phase == ATLAS_SETTLE) {
+        s->settled++;
+        int end = s->settled >= o->settle_iterations || it->info.step == 0.0 ||
+            (o->settle_tolerance > 0.0 && it->info.criterion < o->settle_tolerance);
+        cli_progress_step(&s->bar, s->settled, it->info.energy, it->info.criterion, NULL);
+        if (end) cli_progress_phase(&s->bar, o->repack ? "pack" : "compact", 0, 0, 0.0);
+        return;
+    }
+    int k = s->n - s->settled;
+    if (k == 1) cli_progress_phase(&s->bar, "compact", o->compact_iterations, 0, 0.0);
+    char extra[64];
+    snprintf(extra, sizeof extra, "efficiency %.3f", it->efficiency);
+    cli_progress_step(&s->bar, k, it->info.energy, NAN, extra);
+}
 
 static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
 {
@@ -174,12 +200,7 @@ static int on_iteration(const atlas *a, const atlas_iteration *it, void *user)
     s->it[s->n++] = *it;
     cli_signal_test_point(s->n);
     if (cli_signal_caught()) return 1; /* SIGINT / SIGTERM: stop after this iteration */
-    if (s->live) {
-        fprintf(stderr, "\rscaf atlas: %s %d  E = %.5f  efficiency %.3f  gap %.5f  %.3f s   ",
-                it->phase == ATLAS_COMPACT ? "compact" : "settle", it->info.iteration,
-                it->info.energy, it->efficiency, it->gap, it->info.seconds);
-        fflush(stderr);
-    }
+    progress_phase(s, it);
     return 0;
 }
 
@@ -333,7 +354,11 @@ static int atlas_main(int argc, char **argv)
     progress_state ps = {0};
     double *UV = NULL;
     seam_edges seams = {0};
+    ps.opt = &opt;
+    cli_progress_init(&ps.bar, "atlas", quiet);
+    cli_progress_phase(&ps.bar, "segment", 0, 0, 0.0);
     scaf_status st = atlas_init(&a, &m, &opt, &err);
+    cli_progress_clear(&ps.bar);
     if (st == SCAF_ERR_CANCELLED && cli_signal_report("atlas")) { /* during the setup */
         mesh_free(&m);
         return EXIT_CANCELLED;
@@ -348,16 +373,17 @@ static int atlas_main(int argc, char **argv)
         rc = EXIT_NOMEM;
         goto done;
     }
-    ps.live = !quiet && isatty(fileno(stderr));
-    if (!quiet && !ps.live)
+    if (!quiet && !cli_progress_live(&ps.bar))
         fprintf(stderr, "scaf atlas: %s: %d faces, %d chart(s)%s, padding %g\n", in, m.nf,
                 a.ncharts, a.split_uvs ? " (pinched vt split)" : "", opt.padding);
     if (cli_signal_report("atlas")) {
         rc = EXIT_CANCELLED;
         goto done;
     }
+    cli_progress_phase(&ps.bar, "settle", opt.settle_iterations, !(opt.settle_tolerance > 0),
+                       opt.settle_tolerance);
     st = atlas_run(&a, on_iteration, &ps, &err);
-    if (ps.live) fputc('\n', stderr);
+    cli_progress_done(&ps.bar, NULL);
     if (cli_signal_report("atlas")) {
         rc = EXIT_CANCELLED;
         goto done;
@@ -402,6 +428,11 @@ static int atlas_main(int argc, char **argv)
         st = path ? atlas_svg_write(path, &a, UV, title, &err) : SCAF_ERR_IO;
         if ((rc = cli_outputs_end(&job.outs, job.k.svg, st, &err)) != EXIT_OK) goto done;
     }
+    if (!png.plain) {
+        png.opt.chart = a.chart;       /* the charts' numbers */
+        png.opt.padding = opt.padding; /* the legend's padding bar */
+        png.opt.frame = 1;             /* the unit square's border */
+    }
     if (png.path &&
         (rc = cli_uv_job_png(&job, a.nw, UV, a.nf, a.Fw, chart_colour, &a, m.nv, m.V, m.F,
                              &png.opt)) != EXIT_OK)
@@ -410,11 +441,15 @@ static int atlas_main(int argc, char **argv)
     if ((rc = cli_seams_png(&job.outs, job.png_seams, &m, a.chart, &seams, &o)) != EXIT_OK)
         goto done;
     if (report) {
-        seam_report sr = {a.seams_used, a.seams_why, a.ncharts, a.nf, a.chart, &seams};
+        seam_report sr = {a.seams_used, a.seams_why, a.ncharts, a.nf, a.chart, &seams, NULL, 0};
+        gltf_piece *pieces = NULL; /* a glTF input: which primitive went where */
+        cli_gltf_pieces_load("atlas", in, &job.rinfo, quiet, &pieces, &sr.npieces);
+        sr.pieces = pieces;
         atlas_report r = {in,  out, &a,        resolution, setup, total,
                           gap, eff, e_matched, ps.n,       ps.it, &sr};
         path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? atlas_report_write(path, &r, &err) : SCAF_ERR_IO;
+        free(pieces);
         if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&job.outs);

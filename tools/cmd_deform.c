@@ -20,6 +20,7 @@
 #include "cli_args.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
+#include "cli_progress.h"
 #include "cli_png.h"
 #include "cli_signal.h"
 #include "cli_uv_job.h"
@@ -178,16 +179,20 @@ typedef struct progress_state {
     int verify, not_bijective;
     step_record *rec;
     int n;
+    cli_progress bar;
 } progress_state;
 
 static int on_iteration(const scaf_iteration_info_t *info, void *user)
 {
     progress_state *s = user;
+    double handle_error = opt_handle_term_max_error(s->h, s->opt->current);
     if (s->n < s->opt->iterations) {
-        step_record r = {info->iteration, info->energy,
-                         opt_handle_term_max_error(s->h, s->opt->current), info->step};
+        step_record r = {info->iteration, info->energy, handle_error, info->step};
         s->rec[s->n++] = r;
     }
+    char extra[64];
+    snprintf(extra, sizeof extra, "handle error %.3g", handle_error);
+    cli_progress_step(&s->bar, info->iteration, info->energy, info->criterion, extra);
     cli_signal_test_point(info->iteration);
     if (cli_signal_caught()) return 1;
     if (s->verify) {
@@ -337,11 +342,14 @@ static int deform_main(int argc, char **argv)
     o.pins = t.pins;
     if (t.has_weight) o.weight_ratio = t.weight;
     if (a.weight_given) o.weight_ratio = a.weight;
-    progress_state ps = {&o, &h, nv, m.nf, F, a.verify, 0, rec, 0};
+    progress_state ps = {&o, &h, nv, m.nf, F, a.verify, 0, rec, 0, {0}};
     o.progress = on_iteration;
     o.user = &ps;
     deform_result r;
+    cli_progress_init(&ps.bar, "deform", a.quiet);
+    cli_progress_phase(&ps.bar, "deform", o.iterations, 0, 0.0); /* a cap */
     st = deform_run(nv, P, m.nf, F, t.n, t.vertex, t.target, t.nframes, t.frames, &o, X, &r, &err);
+    cli_progress_done(&ps.bar, NULL);
     if (cli_signal_report("deform")) {
         rc = EXIT_CANCELLED;
         goto done;

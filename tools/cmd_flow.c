@@ -13,6 +13,7 @@
  * 7 out of memory, 8 interrupted. --report writes a JSON of the steps,
  * --png a picture of the input and the flowed surface side by side.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +24,7 @@
 #include "cli_args.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
+#include "cli_progress.h"
 #include "cli_signal.h"
 #include "cli_surface_png.h"
 #include "exit_codes.h"
@@ -115,6 +117,7 @@ typedef struct flow_watch {
     char what[128]; /* the last check, for the lines */
     double *start;  /* NULL, or room for the normalized input */
     int nv;
+    cli_progress bar;
 } flow_watch;
 
 static void describe(const scaf_volume_step_info_t *e, char *what, size_t size)
@@ -132,6 +135,7 @@ static int on_flow_step(const scaf_volume_step_info_t *e, void *user)
     if (e->step == 0) { /* the start: the normalized input, checked with until_free */
         if (w->start) memcpy(w->start, e->X, sizeof(double) * 3 * (size_t)w->nv);
         if (!w->until_free) return 0;
+        cli_progress_clear(&w->bar); /* an ordinary line follows */
         w->g->input_defects = e->defects;
         if (e->defects == 0 && !w->quiet)
             fprintf(stderr, "scaf flow: the input is already free of self-intersections\n");
@@ -140,7 +144,8 @@ static int on_flow_step(const scaf_volume_step_info_t *e, void *user)
     }
     w->g->seconds[w->g->steps] = e->seconds;
     w->g->defects[w->g->steps++] = e->defects;
-    if (!w->quiet) {
+    cli_progress_step(&w->bar, e->step, NAN, NAN, w->until_free ? w->what : NULL);
+    if (!w->quiet && !cli_progress_live(&w->bar)) {
         if (w->until_free)
             fprintf(stderr, "scaf flow: step %d: %.3f s, check %.3f s, %s\n", e->step, e->seconds,
                     e->check_seconds, w->what);
@@ -160,14 +165,18 @@ static int run_flow(const char *in, mesh *m, int steps, double delta, int until_
     o.steps = steps;
     o.delta = delta;
     o.until_free = until_free;
-    flow_watch w = {until_free, quiet, g, "", start, m->nv};
+    flow_watch w = {until_free, quiet, g, "", start, m->nv, {0}};
     scaf_volume_t *h = scaf_volume_new();
     if (!h) {
         fprintf(stderr, "scaf flow: out of memory\n");
         return EXIT_NOMEM;
     }
     int rc = EXIT_OK;
+    cli_progress_init(&w.bar, "flow", quiet);
+    /* with until_free, steps is a cap the check ends first */
+    cli_progress_phase(&w.bar, "flow", steps, !until_free, 0.0);
     scaf_status st = scaf_flow(h, m->V, m->nv, m->F, m->nf, &o, on_flow_step, &w);
+    cli_progress_done(&w.bar, NULL);
     if (st == SCAF_OK) {
         scaf_volume_summary_t s = {.struct_size = sizeof s};
         scaf_volume_get_summary(h, &s);
@@ -261,8 +270,8 @@ static int flow_main(int argc, char **argv)
                 &outs, kr, path ? write_report(path, in, delta, until_free, &g, &err) : SCAF_ERR_IO,
                 &err);
         }
-        surface_view panels[2] = {{m.nv, start, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, m.V, m.nf, m.F, NULL, 0, NULL}};
+        surface_view panels[2] = {{m.nv, start, m.nf, m.F, NULL, 0, NULL, "input"},
+                                  {m.nv, m.V, m.nf, m.F, NULL, 0, NULL, "flowed"}};
         if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, 2, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }

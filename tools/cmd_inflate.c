@@ -25,6 +25,7 @@
 #include "cli_args.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
+#include "cli_progress.h"
 #include "cli_signal.h"
 #include "cli_surface_png.h"
 #include "exit_codes.h"
@@ -143,6 +144,7 @@ static scaf_status write_report(const char *path, const char *in, double K, cons
 typedef struct inflate_watch {
     int quiet;
     inflate_log *g;
+    cli_progress bar;
 } inflate_watch;
 
 static int on_iteration(const scaf_volume_step_info_t *e, void *user)
@@ -152,7 +154,10 @@ static int on_iteration(const scaf_volume_step_info_t *e, void *user)
     *r = (inflate_iteration){
         e->step,        e->energy,     e->step_length, e->tets, e->scaffold_vertices,
         e->quality_min, e->quality_p5, e->seconds};
-    if (!w->quiet)
+    char extra[64];
+    snprintf(extra, sizeof extra, "quality min %.3g", r->quality_min);
+    cli_progress_step(&w->bar, r->iteration, r->energy, NAN, extra);
+    if (!w->quiet && !cli_progress_live(&w->bar))
         fprintf(stderr,
                 "scaf inflate: iteration %d: energy %.6g, step %.3g, %d tets, quality min "
                 "%.3g p5 %.3g, %.3f s\n",
@@ -167,8 +172,11 @@ static int on_iteration(const scaf_volume_step_info_t *e, void *user)
 static int run_inflate(const char *in, mesh *m, const scaf_inflate_options_t *o, int quiet,
                        inflate_log *g, scaf_volume_t *h)
 {
-    inflate_watch w = {quiet, g};
+    inflate_watch w = {quiet, g, {0}};
+    cli_progress_init(&w.bar, "inflate", quiet);
+    cli_progress_phase(&w.bar, "inflate", o->iterations, 1, 0.0);
     scaf_status st = scaf_inflate(h, m->V, m->nv, m->F, m->nf, o, on_iteration, &w);
+    cli_progress_done(&w.bar, NULL);
     if (st == SCAF_ERR_CANCELLED && cli_signal_caught())
         return EXIT_OK; /* reported by the caller */
     if (st != SCAF_OK) {
@@ -314,8 +322,8 @@ static int inflate_main(int argc, char **argv)
             rc = cli_outputs_end(&outs, kr,
                                  path ? write_report(path, in, K, &g, &err) : SCAF_ERR_IO, &err);
         }
-        surface_view panels[2] = {{m.nv, start, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, m.V, m.nf, m.F, NULL, 0, NULL}};
+        surface_view panels[2] = {{m.nv, start, m.nf, m.F, NULL, 0, NULL, "input"},
+                                  {m.nv, m.V, m.nf, m.F, NULL, 0, NULL, "inflated"}};
         if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, 2, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);
     }

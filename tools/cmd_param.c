@@ -23,6 +23,7 @@
 #include "cli_args.h"
 #include "cli_energy.h"
 #include "cli_png.h"
+#include "cli_progress.h"
 #include "cli_seams.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
@@ -95,7 +96,9 @@ static void usage(FILE *o)
             "  --svg-scaffold         also draw the scaffold in the picture\n"
             "  --png FILE             the same picture (without scaffold) as PNG: triangles\n"
             "                         shaded by distortion, chart boundaries outlined,\n"
-            "                         transparent outside the charts\n"
+            "                         transparent outside the charts, the colour bar of\n"
+            "                         the distortion scale below (docs/param.md)\n"
+            "  --png-plain            the PNG without the colour bar\n"
             "  --png-size N           longer PNG side in pixels (16..16384, default 1024)\n"
             "  --checker [N]          PNG only (the SVG has none): shade the fill with a\n"
             "                         checkerboard on the 3D surface, N squares across the\n"
@@ -122,8 +125,7 @@ typedef struct progress_state {
     const scaf_param_t *p;
     int verify;        /* check bijectivity after every iteration */
     int not_bijective; /* iteration at which the check failed, 0 if none */
-    int live;
-    int cap;
+    cli_progress bar;
     scaf_iteration_info_t *it;
     int n, size;
     int oom;
@@ -157,11 +159,7 @@ static int on_iteration(const scaf_iteration_info_t *info, void *user)
             return 1;
         }
     }
-    if (s->live) {
-        fprintf(stderr, "\rscaf param: iteration %d/%d  E = %.6f  step %.3g  %.3f s/it   ",
-                info->iteration, s->cap, info->energy, info->step, info->seconds);
-        fflush(stderr);
-    }
+    cli_progress_step(&s->bar, info->iteration, info->energy, info->criterion, NULL);
     return 0;
 }
 
@@ -326,9 +324,8 @@ static int param_main(int argc, char **argv)
     double e0 = scaf_param_energy(p);
     ps.p = p;
     ps.verify = verify;
-    ps.live = !quiet && isatty(fileno(stderr));
-    ps.cap = opt.max_iterations;
-    if (!quiet && !ps.live)
+    cli_progress_init(&ps.bar, "param", quiet);
+    if (!quiet && !cli_progress_live(&ps.bar))
         fprintf(stderr, "scaf param: %s: %d faces, %d chart(s), initial E = %.6f\n", in, m.nf,
                 scaf_param_chart_count(p), e0);
     {
@@ -344,8 +341,11 @@ static int param_main(int argc, char **argv)
         rc = EXIT_CANCELLED;
         goto done;
     }
+    /* the cap is a real count only without a tolerance */
+    cli_progress_phase(&ps.bar, "optimize", opt.max_iterations, !(opt.tolerance > 0),
+                       opt.tolerance);
     st = scaf_param_run(p, opt.max_iterations, on_iteration, &ps);
-    if (ps.live) fputc('\n', stderr);
+    cli_progress_done(&ps.bar, NULL);
     if (cli_signal_report("param")) {
         rc = EXIT_CANCELLED;
         goto done;
@@ -430,8 +430,10 @@ static int param_main(int argc, char **argv)
             goto done;
         }
         param_face_energy(p, E);
+        uv_png_options po = png.opt;
+        po.energy_legend = !png.plain; /* the colours are the distortion scale's: its bar */
         rc = cli_uv_job_png(&job, pm.nuv, pm.uv, pm.nf, pm.FT, energy_colour, E, m.nv, m.V, m.F,
-                            &png.opt);
+                            &po);
         free(E);
         if (rc != EXIT_OK) goto done;
     }
@@ -448,12 +450,17 @@ static int param_main(int argc, char **argv)
         (rc = cli_seams_png(&job.outs, job.png_seams, &m, fc, &seams, NULL)) != EXIT_OK)
         goto done;
     if (report) {
-        seam_report sr = {scaf_param_seams_used(p), param_seams_why(p), nc, m.nf, fc, &seams};
+        seam_report sr = {
+            scaf_param_seams_used(p), param_seams_why(p), nc, m.nf, fc, &seams, NULL, 0};
+        gltf_piece *pieces = NULL; /* a glTF input: which primitive went where */
+        cli_gltf_pieces_load("param", in, &job.rinfo, quiet, &pieces, &sr.npieces);
+        sr.pieces = pieces;
         param_report r = {in,    out,   &opt, m.nv,      m.nf, scaf_param_chart_count(p),
                           setup, e0,    e1,   e_matched, "ok", scaf_param_stop_reason(p),
                           ps.n,  ps.it, &sr};
         path = cli_outputs_begin(&job.outs, job.k.report, &err);
         st = path ? param_report_write(path, &r, &err) : SCAF_ERR_IO;
+        free(pieces);
         if ((rc = cli_outputs_end(&job.outs, job.k.report, st, &err)) != EXIT_OK) goto done;
     }
     rc = cli_outputs_commit(&job.outs);

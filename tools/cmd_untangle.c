@@ -12,6 +12,7 @@
  * not free the surface or a solve failed, 7 out of memory, 8 interrupted,
  * 70 an exact check failed (a bug). Nothing is written on failure.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +23,7 @@
 #include "cli_args.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
+#include "cli_progress.h"
 #include "cli_signal.h"
 #include "cli_surface_png.h"
 #include "exit_codes.h"
@@ -92,6 +94,9 @@ typedef struct progress_state {
     int nlog, cap;
     untangle_event *log; /* every step, for --report */
     int nomem;
+    cli_progress bar;
+    int flow_cap, iteration_cap;
+    int in_flow; /* the bar's phase: 1 flow, 0 iterations back, -1 none yet */
 } progress_state;
 
 static int on_step(const scaf_volume_step_info_t *i, void *user)
@@ -111,7 +116,17 @@ static int on_step(const scaf_volume_step_info_t *i, void *user)
         p->cap = n;
     }
     p->log[p->nlog++] = ev;
-    if (!p->quiet) {
+    int flow = e->phase == SCAF_VOLUME_FLOW_STEP;
+    if (flow != p->in_flow) {
+        p->in_flow = flow;
+        if (flow) cli_progress_phase(&p->bar, "flow", p->flow_cap, 0, 0.0);
+        else cli_progress_phase(&p->bar, "untangle", p->iteration_cap, 0, 0.0);
+    }
+    char extra[96];
+    if (flow) snprintf(extra, sizeof extra, "%lld intersecting pairs", e->pairs);
+    else snprintf(extra, sizeof extra, "distance RMS %.3g", e->rms);
+    cli_progress_step(&p->bar, e->step, flow ? NAN : e->energy, NAN, extra);
+    if (!p->quiet && !cli_progress_live(&p->bar)) {
         if (e->phase == SCAF_VOLUME_FLOW_STEP)
             fprintf(stderr,
                     "scaf untangle: flow step %d: %lld intersecting face pairs, distance RMS "
@@ -280,9 +295,11 @@ static int untangle_main(int argc, char **argv)
         scaf_volume_destroy(h);
         return rc;
     }
-    progress_state ps = {quiet, 0, 0, 0, NULL, 0};
+    progress_state ps = {quiet, 0, 0, 0, NULL, 0, {0}, opt.flow_steps, opt.iterations, -1};
+    cli_progress_init(&ps.bar, "untangle", quiet);
     double t0 = timer_now();
     scaf_status st = scaf_untangle(h, m.V, m.nv, m.F, m.nf, &opt, on_step, &ps);
+    cli_progress_done(&ps.bar, NULL);
     double seconds = timer_now() - t0;
     size_t n3 = 3 * (size_t)m.nv;
     double *X = st == SCAF_OK ? malloc(sizeof(double) * n3) : NULL;
@@ -336,9 +353,9 @@ static int untangle_main(int argc, char **argv)
                      : SCAF_ERR_IO,
                 &err);
         }
-        surface_view panels[3] = {{m.nv, m.V, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, flowed, m.nf, m.F, NULL, 0, NULL},
-                                  {m.nv, X, m.nf, m.F, NULL, 0, NULL}};
+        surface_view panels[3] = {{m.nv, m.V, m.nf, m.F, NULL, 0, NULL, "input"},
+                                  {m.nv, flowed, m.nf, m.F, NULL, 0, NULL, "flowed"},
+                                  {m.nv, X, m.nf, m.F, NULL, 0, NULL, "untangled"}};
         int n = r.stop == SCAF_UNTANGLE_ALREADY_FREE ? 1 : 3;
         if (rc == EXIT_OK) rc = cli_surface_png_write(&outs, kp, n, panels, &png);
         if (rc == EXIT_OK) rc = cli_outputs_commit(&outs);

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/picture_legend.h"
 #include "app/png_write.h"
 #include "app/uv_png.h"
 
@@ -57,6 +58,8 @@ scaf_status atlas_picture_png(const char *path, const surface_view views[2], int
         }
     uv_raster_free(&r);
     free(rgb3);
+    picture_legend_caption(out, W, H, 3, w3, picture_legend_scale(panel), panel,
+                           "atlas: unit square");
     st = png_write_rgb(path, W, H, out, err);
     free(out);
     return st;

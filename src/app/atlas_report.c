@@ -136,6 +136,45 @@ unsigned atlas_chart_colour(int c)
     return out;
 }
 
+/* Each chart's number at the centroid of its largest triangle (a point
+ * inside the chart), as SVG text of class "chart". */
+static void chart_numbers(FILE *o, const atlas *a, const double *UV, double x0, double y0, double S)
+{
+    int nc = a->ncharts > 0 ? a->ncharts : 1;
+    int *best = malloc(sizeof(int) * (size_t)nc);
+    double *area = malloc(sizeof(double) * (size_t)nc);
+    if (!best || !area) { /* the picture stays valid without them */
+        free(best);
+        free(area);
+        return;
+    }
+    for (int c = 0; c < nc; c++) best[c] = -1, area[c] = -1.0;
+    for (int f = 0; f < a->nf; f++) {
+        int c = a->chart[f];
+        if (c < 0 || c >= a->ncharts) continue;
+        const double *p = UV + 2 * (size_t)a->Fw[3 * f], *q = UV + 2 * (size_t)a->Fw[3 * f + 1],
+                     *r = UV + 2 * (size_t)a->Fw[3 * f + 2];
+        double s = fabs((q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1]));
+        if (s > area[c]) area[c] = s, best[c] = f;
+    }
+    fputs("<g id=\"chart-numbers\" font-family=\"sans-serif\" font-size=\"12\" "
+          "text-anchor=\"middle\" dominant-baseline=\"middle\">\n",
+          o);
+    for (int c = 0; c < a->ncharts; c++) {
+        if (best[c] < 0) continue;
+        double cx = 0, cy = 0;
+        for (int j = 0; j < 3; j++) {
+            cx += UV[2 * (size_t)a->Fw[3 * best[c] + j]] / 3.0;
+            cy += UV[2 * (size_t)a->Fw[3 * best[c] + j] + 1] / 3.0;
+        }
+        fprintf(o, "<text class=\"chart\" x=\"%.2f\" y=\"%.2f\">%d</text>\n", x0 + cx * S,
+                y0 + (1.0 - cy) * S, c);
+    }
+    fputs("</g>\n", o);
+    free(best);
+    free(area);
+}
+
 scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, const char *title,
                             scaf_error *err)
 {
@@ -148,7 +187,7 @@ scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, 
     fprintf(o,
             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 "
             "0 %.0f %.0f\">\n",
-            S + 2 * M, S + 2 * M + 30, S + 2 * M, S + 2 * M + 30);
+            S + 2 * M, S + 2 * M + 55, S + 2 * M, S + 2 * M + 55);
     fprintf(o, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
     if (title) {
         fprintf(o, "<text x=\"%.0f\" y=\"20\" font-family=\"sans-serif\" font-size=\"14\">", M);
@@ -161,8 +200,8 @@ scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, 
         fputs("</text>\n", o);
     }
     fprintf(o,
-            "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" "
-            "stroke=\"#888\"/>\n",
+            "<rect id=\"unit-square\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" "
+            "fill=\"none\" stroke=\"#888\"/>\n",
             M, M + 30, S, S);
     fprintf(o, "<g stroke-width=\"0.15\" stroke-linejoin=\"round\">\n");
     for (int f = 0; f < a->nf; f++) {
@@ -174,6 +213,20 @@ scaf_status atlas_svg_write(const char *path, const atlas *a, const double *UV, 
         }
         fprintf(o, "\" fill=\"#%06x\" stroke=\"#%06x\"/>\n", col, col);
     }
-    fputs("</g>\n</svg>\n", o);
+    fputs("</g>\n", o);
+    chart_numbers(o, a, UV, M, M + 30, S);
+    /* the padding at the square's scale, below it */
+    double py = M + 30 + S + 18, px = M + 60, len = a->opt.padding * S;
+    fprintf(o,
+            "<g id=\"padding\" font-family=\"sans-serif\" font-size=\"11\">\n<text x=\"%.1f\" "
+            "y=\"%.1f\">padding</text>\n",
+            M, py + 4);
+    fprintf(o,
+            "<line x1=\"%.2f\" y1=\"%.1f\" x2=\"%.2f\" y2=\"%.1f\" stroke=\"#202020\" "
+            "stroke-width=\"2\" data-padding=\"%.6g\"/>\n",
+            px, py, px + len, py, a->opt.padding);
+    fprintf(o, "<text x=\"%.2f\" y=\"%.1f\">%g of the unit square</text>\n</g>\n", px + len + 6,
+            py + 4, a->opt.padding);
+    fputs("</svg>\n", o);
     return atomic_commit(&af, err);
 }

@@ -1,8 +1,40 @@
 /* app/seam_report: the seams in a JSON report (see the header). */
 #include "app/seam_report.h"
 
+#include <stdlib.h>
+#include <string.h>
+
 #include "app/seam_source.h"
 #include "base/json_write.h"
+
+/* The primitive -> charts table (charts as a sorted list of ids). */
+static void gltf_primitives_json(FILE *o, const seam_report *s)
+{
+    char *seen = calloc((size_t)(s->ncharts > 0 ? s->ncharts : 1), 1);
+    fputs(",\n  \"gltf_primitives\": [", o);
+    for (int k = 0; k < s->npieces; k++) {
+        const gltf_piece *p = &s->pieces[k];
+        fprintf(o, "%s\n    {\"mesh\": %d, \"mesh_name\": ", k ? "," : "", p->mesh);
+        json_write_string(o, p->mesh_name);
+        fprintf(o, ", \"primitive\": %d, \"first_face\": %d, \"faces\": %d, \"charts\": [",
+                p->primitive, p->first_face, p->faces);
+        if (seen) {
+            memset(seen, 0, (size_t)(s->ncharts > 0 ? s->ncharts : 1));
+            for (int f = p->first_face; f < p->first_face + p->faces && f < s->nf; f++) {
+                int c = s->face_chart[f];
+                if (c >= 0 && c < s->ncharts) seen[c] = 1;
+            }
+            for (int c = 0, first = 1; c < s->ncharts; c++)
+                if (seen[c]) {
+                    fprintf(o, "%s%d", first ? "" : ", ", c);
+                    first = 0;
+                }
+        }
+        fputs("]}", o);
+    }
+    fputs("\n  ]", o);
+    free(seen);
+}
 
 void seam_report_json(FILE *o, const seam_report *s)
 {
@@ -32,4 +64,5 @@ void seam_report_json(FILE *o, const seam_report *s)
             fprintf(o, "%s%d", f ? (f % 32 ? ", " : ",\n    ") : "", s->face_chart[f]);
         fputc(']', o);
     }
+    if (s->face_chart && s->pieces) gltf_primitives_json(o, s);
 }

@@ -11,6 +11,8 @@
  */
 #include "app/surface_render.h"
 
+#include "app/picture_legend.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -266,7 +268,12 @@ scaf_status surface_render_panels(int n, const surface_view *s, const surface_re
         return err_nomem(err, "picture buffer");
     }
     memset(img, 0xff, 3 * (size_t)W * (size_t)H); /* SURFACE_RENDER_BACKGROUND */
-    for (int p = 0; p < n; p++) draw_panel(&c, &s[p], o, img, W, p * o->width, zbuf);
+    for (int p = 0; p < n; p++) {
+        draw_panel(&c, &s[p], o, img, W, p * o->width, zbuf);
+        if (s[p].caption)
+            picture_legend_caption(img, W, H, 3, p * o->width, picture_legend_scale(o->width),
+                                   o->width, s[p].caption);
+    }
     free(zbuf);
     *rgb = img;
     *width = W;
@@ -277,7 +284,7 @@ scaf_status surface_render_panels(int n, const surface_view *s, const surface_re
 scaf_status surface_render(int nv, const double *V, int nf, const int *F,
                            const surface_render_options *o, unsigned char **rgb, scaf_error *err)
 {
-    surface_view s = {nv, V, nf, F, NULL, 0, NULL};
+    surface_view s = {nv, V, nf, F, NULL, 0, NULL, NULL};
     int w, h;
     return surface_render_panels(1, &s, o, rgb, &w, &h, err);
 }

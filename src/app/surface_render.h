@@ -50,8 +50,10 @@ typedef struct surface_view {
     /* optional (zero / NULL: none), for pictures of seams and charts: */
     const unsigned *face_rgb; /* nf front colours 0xRRGGBB (NULL: grey blue) */
     int nlines;
-    const int *lines; /* nlines by 2 vertex indices: edges drawn dark over the
+    const int *lines;    /* nlines by 2 vertex indices: edges drawn dark over the
                          faces where they are not hidden (seams) */
+    const char *caption; /* NULL, or a few words written at the top of the
+                            panel (app/picture_legend) */
 } surface_view;
 
 /* n surfaces (1..SURFACE_RENDER_MAX_PANELS) side by side, left to right,

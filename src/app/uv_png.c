@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "app/picture_legend.h"
 #include "app/png_write.h"
 #include "app/uv_raster.h"
 #include "base/sort_u64.h"
@@ -17,7 +18,7 @@
 
 uv_png_options uv_png_options_default(void)
 {
-    uv_png_options o = {1024, 0, 0.0, 1};
+    uv_png_options o = {1024, 0, 0.0, 1, 0, NULL, 0.0, 0};
     return o;
 }
 
@@ -97,6 +98,13 @@ scaf_status uv_png_render(const char *name, int nuv, const double *uv, int nf, c
     }
     int W, H;
     uv_raster_frame fr = uv_raster_fit(lo, hi, o->size, margin, &W, &H);
+    int strip = picture_legend_strip_height(W, o->energy_legend, o->unit_square ? o->padding : 0.0);
+    if (!o->unit_square && strip > 0 && H + strip > o->size && o->size - strip >= 8) {
+        /* a fitted picture keeps its longer side: the layout makes room */
+        fr = uv_raster_fit(lo, hi, o->size - strip, margin, &W, &H);
+        if (W < o->size) W = o->size; /* the strip's width (the bar) */
+        strip = picture_legend_strip_height(W, o->energy_legend, 0.0);
+    }
     uv_raster_mesh m = {nf, uv, F, colour, NULL, NULL, 0.0};
     double *Vs = NULL;
     if (o->checker > 0.0) {
@@ -122,7 +130,7 @@ scaf_status uv_png_render(const char *name, int nuv, const double *uv, int nf, c
             m.checker = diag / o->checker;
         }
     }
-    scaf_status st = uv_raster_new(r, W, H, err);
+    scaf_status st = uv_raster_new(r, W, H + strip, err);
     if (st != SCAF_OK) {
         free(Vs);
         err_prefix(err, "%s", path);
@@ -135,5 +143,15 @@ scaf_status uv_png_render(const char *name, int nuv, const double *uv, int nf, c
         uv_raster_free(r);
         return st;
     }
+    if (o->unit_square && o->frame) picture_legend_frame(r->rgba, W, H + strip, 4, 0, 0, W, H);
+    if (o->chart &&
+        (st = picture_legend_chart_numbers(r, &fr, uv, nf, F, o->chart, err)) != SCAF_OK) {
+        err_prefix(err, "%s", path);
+        uv_raster_free(r);
+        return st;
+    }
+    if (strip > 0)
+        picture_legend_strip(r->rgba, W, H + strip, 4, H, o->energy_legend,
+                             o->unit_square ? o->padding * fr.scale : 0.0);
     return SCAF_OK;
 }

@@ -5,7 +5,14 @@
  * optionally modulates the fill with a solid 3D checkerboard whose
  * squares are the 3D bounding-box diagonal / checker, so stretched or
  * sheared squares show the distortion. Outside the charts the picture is
- * transparent white. Written atomically (app/png_write); fails with
+ * transparent white.
+ *
+ * The legend (app/picture_legend), on request: with energy_legend the
+ * colours are app/distortion_scale's and a strip below the layout holds
+ * the colour bar with its energy ticks; with unit_square the square's
+ * border is drawn and, with padding > 0, the strip shows a bar as long as
+ * the padding at the picture's scale; with chart, each chart's number is
+ * written on its largest triangle (when it fits in the chart's box). Written atomically (app/png_write); fails with
  * SCAF_ERR_USAGE (bad size), SCAF_ERR_NOMEM or SCAF_ERR_IO (path and
  * reason), and then no file is left.
  */
@@ -19,14 +26,18 @@
 #define UV_PNG_MAX_SIZE 16384
 
 typedef struct uv_png_options {
-    int size;        /* pixels of the longer side, UV_PNG_MIN_SIZE..UV_PNG_MAX_SIZE */
-    int unit_square; /* 1: the picture is the unit UV square (a texture);
+    int size;          /* pixels of the longer side, UV_PNG_MIN_SIZE..UV_PNG_MAX_SIZE */
+    int unit_square;   /* 1: the picture is the unit UV square (a texture);
                          0: it fits the layout with a small margin */
-    double checker;  /* squares across the 3D bounding-box diagonal; 0 = none */
-    int outline;     /* 1: draw the chart boundaries */
+    double checker;    /* squares across the 3D bounding-box diagonal; 0 = none */
+    int outline;       /* 1: draw the chart boundaries */
+    int energy_legend; /* 1: the colours are distortion_scale's: add its colour bar */
+    const int *chart;  /* NULL, or the chart of every triangle: their numbers drawn */
+    double padding;    /* > 0 with unit_square: the padding's length in the legend */
+    int frame;         /* 1 with unit_square: the square's border drawn */
 } uv_png_options;
 
-/* The defaults: 1024 pixels, fitted, no checker, outlines. */
+/* The defaults: 1024 pixels, fitted, no checker, outlines, no legend. */
 uv_png_options uv_png_options_default(void);
 
 /* path       output file

@@ -9,27 +9,34 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "app/distortion_scale.h"
 #include "base/atomic_file.h"
 
-unsigned uv_svg_colour(double energy)
+unsigned uv_svg_colour(double energy) { return distortion_scale_colour(energy); }
+
+void uv_svg_colour_bar(FILE *o, double x, double y, double width)
 {
-    /* t = 0 at isometry (E = 4), 1 at E = 4 * 2^4 and above. */
-    double t = (isfinite(energy) && energy > 4.0) ? log2(energy / 4.0) / 4.0
-                                                  : (isfinite(energy) ? 0.0 : 1.0);
-    if (t > 1.0) t = 1.0;
-    static const double stops[4][3] = {
-        {0.80, 0.90, 1.00}, {0.55, 0.85, 0.55}, {1.00, 0.85, 0.20}, {0.85, 0.10, 0.10}};
-    double x = t * 3.0;
-    int i = (int)x;
-    if (i > 2) i = 2;
-    double s = x - i;
-    unsigned rgb = 0;
-    for (int k = 0; k < 3; k++) {
-        double v = stops[i][k] * (1.0 - s) + stops[i + 1][k] * s;
-        unsigned c = (unsigned)lround(v * 255.0);
-        rgb = (rgb << 8) | (c > 255 ? 255 : c);
+    enum { STEPS = 64 };
+    double x0 = x + 20.0, w = width - 20.0, h = 14.0;
+    fprintf(o, "<g id=\"legend\" font-family=\"sans-serif\" font-size=\"11\">\n");
+    fprintf(o, "<text x=\"%.1f\" y=\"%.1f\">E</text>\n", x, y + 11.0);
+    for (int k = 0; k < STEPS; k++) {
+        double t = (k + 0.5) / STEPS;
+        fprintf(o,
+                "<rect class=\"scale\" x=\"%.2f\" y=\"%.1f\" width=\"%.2f\" height=\"%.1f\" "
+                "fill=\"#%06x\" data-energy=\"%.4g\"/>\n",
+                x0 + w * k / STEPS, y, w / STEPS + 0.3, h, distortion_scale_colour_at(t),
+                distortion_scale_energy(t));
     }
-    return rgb;
+    for (int k = 0; k < DISTORTION_SCALE_TICKS; k++) {
+        double e = distortion_scale_ticks[k], tx = x0 + w * distortion_scale_t(e);
+        fprintf(o,
+                "<line class=\"tick\" x1=\"%.2f\" y1=\"%.1f\" x2=\"%.2f\" y2=\"%.1f\" "
+                "stroke=\"#202020\"/>\n<text class=\"tick\" x=\"%.2f\" y=\"%.1f\" "
+                "text-anchor=\"middle\">%g</text>\n",
+                tx, y + h, tx, y + h + 4.0, tx, y + h + 16.0, e);
+    }
+    fprintf(o, "</g>\n");
 }
 
 static const double *pos(int id, int nuv, const double *uv, const uv_svg_scaffold *s)
@@ -64,7 +71,8 @@ scaf_status uv_svg_write(const char *path, int nuv, const double *uv, int nf, co
     double ext = w > h ? w : h;
     if (!(ext > 0.0)) ext = 1.0;
     double scale = 1000.0 / ext, margin = 20.0;
-    double W = w * scale + 2 * margin, H = h * scale + 2 * margin + 30.0;
+    double legend = energy ? 50.0 : 0.0; /* the colour bar's rows */
+    double W = w * scale + 2 * margin, H = h * scale + 2 * margin + 30.0 + legend;
     if (W < 720.0) W = 720.0; /* room for the title line on tall layouts */
 
     atomic_file a;
@@ -109,7 +117,9 @@ scaf_status uv_svg_write(const char *path, int nuv, const double *uv, int nf, co
         fprintf(o, "<polygon fill=\"#%06x\" points=\"%.2f,%.2f %.2f,%.2f %.2f,%.2f\"/>\n", c, X(p0),
                 Y(p0), X(p1), Y(p1), X(p2), Y(p2));
     }
-    fprintf(o, "</g>\n</svg>\n");
+    fprintf(o, "</g>\n");
+    if (energy) uv_svg_colour_bar(o, margin, H - legend + 5.0, W - 2 * margin - 20.0);
+    fprintf(o, "</svg>\n");
 #undef X
 #undef Y
     return atomic_commit(&a, err);

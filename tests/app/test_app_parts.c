@@ -13,6 +13,7 @@
 
 #include "app/param_report.h"
 #include "app/uv_fans.h"
+#include "app/distortion_scale.h"
 #include "app/uv_svg.h"
 #include "support/support.h"
 
@@ -86,6 +87,19 @@ static void svg_colours_grow_with_energy(void **state)
     }
     assert_int_equal(cinf, c64);
     assert_int_equal(uv_svg_colour(1.0), c4); /* below isometry: clamp */
+    /* red rises monotonically too, and the scale spreads typical optimized
+     * energies: 10% over an isometry is a quarter of the way up the bar */
+    unsigned prev_red = 0;
+    for (double e = 4.0; e < 100.0; e *= 1.05) {
+        unsigned red = uv_svg_colour(e) >> 16;
+        assert_true(red >= prev_red);
+        prev_red = red;
+    }
+    assert_true(distortion_scale_t(4.4) > 0.25);
+    assert_true(distortion_scale_t(5.0) > 0.35);
+    assert_true(distortion_scale_t(16.0) == 1.0);
+    for (double t = 0.05; t <= 1.0; t += 0.05)
+        assert_true(fabs(distortion_scale_t(distortion_scale_energy(t)) - t) < 1e-12);
 }
 
 static void svg_file_has_every_triangle(void **state)

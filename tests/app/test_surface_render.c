@@ -144,8 +144,8 @@ static void panels_share_the_camera(void **state)
     sphere(&big);
     for (int k = 0; k < 3 * big.nv; k++) big.V[k] *= 2.0;
     surface_render_options o = opts();
-    surface_view same[2] = {{m.nv, m.V, m.nf, m.F, NULL, 0, NULL},
-                            {m.nv, m.V, m.nf, m.F, NULL, 0, NULL}};
+    surface_view same[2] = {{m.nv, m.V, m.nf, m.F, NULL, 0, NULL, NULL},
+                            {m.nv, m.V, m.nf, m.F, NULL, 0, NULL, NULL}};
     unsigned char *img = NULL, *one = render(&m);
     int W = 0, H = 0;
     assert_int_equal(surface_render_panels(2, same, &o, &img, &W, &H, NULL), SCAF_OK);
@@ -156,8 +156,8 @@ static void panels_share_the_camera(void **state)
         assert_memory_equal(px(img, W, S, j), px(one, S, 0, j), 3 * S);
     }
     free(img);
-    surface_view two[2] = {{m.nv, m.V, m.nf, m.F, NULL, 0, NULL},
-                           {big.nv, big.V, big.nf, big.F, NULL, 0, NULL}};
+    surface_view two[2] = {{m.nv, m.V, m.nf, m.F, NULL, 0, NULL, NULL},
+                           {big.nv, big.V, big.nf, big.F, NULL, 0, NULL, NULL}};
     assert_int_equal(surface_render_panels(2, two, &o, &img, &W, &H, NULL), SCAF_OK);
     double small = count_surface(img, W, 0, S, S), large = count_surface(img, W, S, S, S);
     assert_true(large > 0.9 * count_surface(one, S, 0, S, S));
@@ -177,7 +177,7 @@ static void png_reads_back(void **state)
     test_tmp_path("surface_render.png", path, sizeof path);
     remove(path);
     surface_render_options o = opts();
-    surface_view v = {m.nv, m.V, m.nf, m.F, NULL, 0, NULL};
+    surface_view v = {m.nv, m.V, m.nf, m.F, NULL, 0, NULL, NULL};
     assert_int_equal(surface_render_png(path, 1, &v, &o, NULL), SCAF_OK);
     int w = 0, h = 0;
     unsigned char *rgba = test_png_read(path, &w, &h), *img = render(&m);
@@ -204,7 +204,7 @@ static void refuses_bad_input(void **state)
     (void)state;
     mesh m;
     sphere(&m);
-    surface_view v = {m.nv, m.V, m.nf, m.F, NULL, 0, NULL};
+    surface_view v = {m.nv, m.V, m.nf, m.F, NULL, 0, NULL, NULL};
     unsigned char *img = (unsigned char *)&v; /* must come back NULL */
     int W, H;
     scaf_error err;

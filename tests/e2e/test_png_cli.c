@@ -1,6 +1,7 @@
 /* End-to-end tests of the PNG pictures of `scaf atlas` and `scaf param`.
  *
- * Atlas: a generated six-chart sample with --png --png-size 200; the PNG
+ * Atlas: a generated six-chart sample with --png --png-size 200 --png-plain
+ * (the texture, no legend: tests/cli/test_picture_legend has those); the PNG
  * is read back with libpng: 200 x 200, transparent outside the charts,
  * and at a pixel deep inside each output triangle (found from the
  * written OBJ) the colour is one of the atlas palette colours, the same
@@ -73,12 +74,12 @@ static void cli_atlas_png(void **state)
     assert_int_equal(test_run("%s gen cubesphere --size 4 -o %s", SCAF_BINARY, in), 0);
     assert_int_equal(test_run("%s atlas %s -o %s --iterations 4 --compact-iterations 4 --quiet "
                               "--png %s "
-                              "--png-size 200",
+                              "--png-size 200 --png-plain",
                               SCAF_BINARY, in, out, png),
                      0);
     assert_int_equal(test_run("%s atlas %s -o %s --iterations 4 --compact-iterations 4 --quiet "
                               "--png %s "
-                              "--png-size 200 --checker 12",
+                              "--png-size 200 --png-plain --checker 12",
                               SCAF_BINARY, in, out, chk),
                      0);
     int w = 0, h = 0;

@@ -128,6 +128,34 @@ def bad_cases(d, doc, binbuf):
     return out
 
 
+def check_primitive_table(r, doc, label):
+    """The report's gltf_primitives: every primitive of the document once,
+    in mesh order, its faces a contiguous run of face_chart, its charts the
+    charts of those faces."""
+    table = r.get("gltf_primitives")
+    expect(table is not None, label + ": no gltf_primitives in the report")
+    want = [(mi, pj) for mi, m in enumerate(doc["meshes"]) for pj in range(len(m["primitives"]))]
+    expect([(p["mesh"], p["primitive"]) for p in table] == want,
+           label + ": primitives %r" % [(p["mesh"], p["primitive"]) for p in table])
+    expect(table[1]["mesh_name"] == doc["meshes"][table[1]["mesh"]].get("name", ""), label + ": name")
+    fc, first = r["face_chart"], 0
+    for p in table:
+        expect(p["first_face"] == first and p["faces"] > 0, label + ": face ranges")
+        charts = sorted(set(fc[first:first + p["faces"]]))
+        expect(p["charts"] == charts, label + ": charts of mesh %d primitive %d: %r vs %r"
+               % (p["mesh"], p["primitive"], p["charts"], charts))
+        first += p["faces"]
+    expect(first == len(fc), label + ": the primitives cover every face")
+    try:  # the documented schema (docs/schemas) accepts it
+        import jsonschema
+    except ImportError:
+        return
+    here = os.path.dirname(os.path.abspath(__file__))
+    schema = json.load(open(os.path.join(here, "..", "..", "docs", "schemas",
+                                         r["command"] + ".schema.json")))
+    jsonschema.validate(r, schema)
+
+
 def main():
     doc, binbuf = G.make_scene()
     with workdir("gltf") as d:
@@ -136,11 +164,14 @@ def main():
             G.save(src, doc, binbuf)
             for cmd in ("atlas", "param"):
                 out = os.path.join(d, "%s_out.%s" % (cmd, ext))
-                args = [cmd, src, "-o", out, "--iterations", "10", "--threads", "1"]
+                rep = os.path.join(d, "%s_%s.json" % (cmd, ext))
+                args = [cmd, src, "-o", out, "--iterations", "10", "--threads", "1",
+                        "--report", rep]
                 rc, _, err = run(args + (["--compact-iterations", "3"] if cmd == "atlas" else []))
                 expect(rc == 0, "%s %s: exit %d %s" % (cmd, ext, rc, err))
                 expect("mesh 1 'cap' primitive 1" in err, "%s: no primitive table: %s" % (cmd, err))
                 compare(src, out, "%s .%s" % (cmd, ext))
+                check_primitive_table(json.load(open(rep)), doc, "%s .%s" % (cmd, ext))
                 rc, cout, err = run(["check", "--json", out])
                 expect(rc == 0 and json.loads(cout)["bijective"] is True,
                        "check of %s: exit %d %s" % (out, rc, err))
