@@ -611,17 +611,31 @@ static void transform(edit_api *a, const edit_request *rq, edit_response *rs)
                     "to apply it as a half turn");
         goto done;
     }
-    if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_checkpoint(a->drag) != SCAF_OK) {
+    if (f[3].seen && !(f[3].value >= 1.0 / 1024 && f[3].value <= 1024)) {
+        reply_error(rs, 400, "\"factor\" %g is out of range: in [1/1024, 1024]", f[3].value);
+        goto done;
+    }
+    if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_rigid_end(a->drag) != SCAF_OK) {
         reply_failure(a, rs, "transform");
         goto done;
     }
     a->rigid_grab = 0;
+    /* the grab first: a pinned chart is refused before anything changes */
+    if (scaf_drag_rigid_begin(a->drag, ids, x[0].len) != SCAF_OK) {
+        reply_error(rs, 409, "transform: %s", scaf_drag_error(a->drag));
+        goto done;
+    }
+    if (scaf_drag_checkpoint(a->drag) != SCAF_OK) {
+        scaf_drag_rigid_end(a->drag);
+        reply_failure(a, rs, "transform");
+        goto done;
+    }
     a->changes++;
     double reached = 0.0;
-    if (scaf_drag_transform(a->drag, ids, x[0].len, &m, &reached) != SCAF_OK) {
-        /* bad arguments (a pinned chart, a factor out of range) change
-         * nothing; the checkpoint stays, harmless */
-        reply_error(rs, 400, "transform: %s", scaf_drag_error(a->drag));
+    scaf_status st = scaf_drag_rigid_move(a->drag, &m, &reached);
+    scaf_drag_rigid_end(a->drag);
+    if (st != SCAF_OK) {
+        reply_failure(a, rs, "transform");
         goto done;
     }
     reply_state_reached(a, rs, NULL, 0, reached);
