@@ -6,7 +6,9 @@
  * leaves a message readable by scaf_drag_error.
  *
  * What it does (the paper's Figure 1: charts dragged while nothing ever
- * overlaps). A drag context holds one layout of a mesh's charts — one
+ * overlaps). Two kinds of motion: rigid (scaf_drag_rigid_*: charts move
+ * as rigid bodies, the others are pushed by translations, no shape
+ * changes; below) and deform (handles and SCAF steps, described here). A drag context holds one layout of a mesh's charts — one
  * chart, or an atlas of many (connected components, or pieces cut along
  * the UV seams, exactly as scaf_atlas_set_mesh finds them) — inside one
  * scaffold, with the atlas's padding kept between charts. The caller sets
@@ -47,6 +49,15 @@
  *         scaf_drag_step(d, 2, NULL, NULL),
  *         scaf_drag_get_uv(d, UV, NULL, NULL);   // draw
  *     scaf_drag_clear_handles(d);                // mouse up
+ *     ...
+ *     int sel[2] = {3, 5};                       // rigid (see "rigid motions")
+ *     scaf_drag_checkpoint(d);
+ *     scaf_drag_rigid_begin(d, sel, 2);
+ *     for (each mouse move)
+ *         scaf_drag_motion_t m = scaf_drag_motion_identity();
+ *         m.dx = dx, m.dy = dy;                  // total since mouse down
+ *         scaf_drag_rigid_move(d, &m, &reached); // others pushed rigidly
+ *     scaf_drag_rigid_end(d);
  *     ...
  *     scaf_drag_undo(d);                         // back to the checkpoint
  *     scaf_drag_get_output(d, UVn, FT, chart);   // [0,1]^2, certified: save
