@@ -87,7 +87,10 @@ static int valid(scaf_drag_t *d)
     return ok;
 }
 
-/* One drag of `frames` frames; kind 0: chart handle, 1: vertex handle. */
+/* One drag of `frames` frames; kind 0: chart handle, 1: vertex handle,
+ * 2: rigid motion (scaf_drag_rigid_move: the chart moved rigidly, the
+ * others pushed by translations, each frame certified exactly inside the
+ * call; no loop phases, the reached fraction in the handle-error column). */
 static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
 {
     int nc = scaf_drag_chart_count(d), nw = scaf_drag_uv_count(d);
@@ -119,6 +122,8 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
     int bad = 0, done = 0;
     double eff0 = scaf_drag_packing_efficiency(d);
     scaf_drag_checkpoint(d);
+    if (kind == 2) scaf_drag_rigid_begin(d, &c, 1);
+    double reached = 0.0;
     for (int f = 0; f < frames; f++) {
         double t = (double)(f + 1) / frames; /* the mouse goes to the middle */
         double dx = t * (mid[0] - ci.centroid[0]), dy = t * (mid[1] - ci.centroid[1]);
@@ -126,8 +131,11 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
         else scaf_drag_move_vertex(d, v0, UV[2 * v0] + dx, UV[2 * v0 + 1] + dy);
         frame_log log;
         memset(&log, 0, sizeof log);
+        scaf_drag_motion_t mo = scaf_drag_motion_identity();
+        mo.dx = dx, mo.dy = dy, mo.angle = 0.5 * t;
         double t0 = now(), c0 = cpu_now();
-        scaf_status st = scaf_drag_step(d, 1, keep_info, &log);
+        scaf_status st = kind == 2 ? scaf_drag_rigid_move(d, &mo, &reached)
+                                   : scaf_drag_step(d, 1, keep_info, &log);
         ms[f] = 1e3 * (now() - t0);
         cpu[f] = 1e3 * (cpu_now() - c0);
         for (int p = 0; p < SCAF_PHASE_COUNT; p++) ph[f][p] = 1e3 * log.info.phase_seconds[p];
@@ -140,17 +148,22 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
     }
     if (done > 0) {
         printf("| %s | %s | %d | %d | %.1f | %.1f | %.1f | %.1f |", name,
-               kind == 0 ? "chart" : "vertex", nc, done, quantile(cpu, done, 0.5),
-               quantile(ms, done, 0.5), quantile(ms, done, 0.1), quantile(ms, done, 0.9));
+               kind == 0       ? "chart"
+                   : kind == 1 ? "vertex"
+                               : "rigid",
+               nc, done, quantile(cpu, done, 0.5), quantile(ms, done, 0.5), quantile(ms, done, 0.1),
+               quantile(ms, done, 0.9));
         double *col = malloc(sizeof(double) * (size_t)done);
         for (int p = 0; p < SCAF_PHASE_COUNT; p++) {
             for (int f = 0; f < done; f++) col[f] = ph[f][p];
             printf(" %.1f |", quantile(col, done, 0.5));
         }
         free(col);
-        printf(" %.3g | %.3f -> %.3f | %s |\n", scaf_drag_max_handle_error(d) / side, eff0,
-               scaf_drag_packing_efficiency(d), bad ? "NO" : "yes");
+        if (kind == 2) printf(" reached %.3f |", reached);
+        else printf(" %.3g |", scaf_drag_max_handle_error(d) / side);
+        printf(" %.3f -> %.3f | %s |\n", eff0, scaf_drag_packing_efficiency(d), bad ? "NO" : "yes");
     }
+    scaf_drag_rigid_end(d);
     scaf_drag_undo(d);
     scaf_drag_clear_handles(d);
     free(UV);
@@ -162,7 +175,7 @@ static void drag_run(scaf_drag_t *d, int kind, int frames, const char *name)
 
 int main(int argc, char **argv)
 {
-    int frames = 40;
+    int frames = 40, rigid_only = 0;
     const char *one = NULL;
     scaf_drag_options_t o = scaf_drag_options_default();
     o.start = SCAF_DRAG_START_ATLAS;
@@ -171,9 +184,11 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--mesh") && i + 1 < argc) one = argv[++i];
         else if (!strcmp(argv[i], "--box-scale") && i + 1 < argc) o.box_scale = atof(argv[++i]);
         else if (!strcmp(argv[i], "--padding") && i + 1 < argc) o.padding = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--rigid-only")) rigid_only = 1;
         else {
             fprintf(stderr,
-                    "usage: bench_drag [--frames N] [--mesh PATH] [--box-scale S] [--padding P]\n");
+                    "usage: bench_drag [--frames N] [--mesh PATH] [--box-scale S] [--padding P] "
+                    "[--rigid-only]\n");
             return 2;
         }
     }
@@ -207,8 +222,11 @@ int main(int argc, char **argv)
             const char *base = strrchr(path, '/') ? strrchr(path, '/') + 1 : path;
             char label[4352];
             snprintf(label, sizeof label, "%s (%d faces, setup %.1f s)", base, m.nf, setup);
-            drag_run(d, 0, frames, label);
-            drag_run(d, 1, frames, label);
+            drag_run(d, 2, frames, label);
+            if (!rigid_only) {
+                drag_run(d, 0, frames, label);
+                drag_run(d, 1, frames, label);
+            }
         }
         scaf_drag_destroy(d);
         mesh_free(&m);

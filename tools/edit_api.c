@@ -130,8 +130,18 @@ static void write_doubles(FILE *f, const char *key, const double *x, size_t n)
     fputs("]", f);
 }
 
+static void reply_state_reached(edit_api *a, edit_response *rs, const char *extra_key, int extra,
+                                double reached);
+
 /* The layout and its numbers; extra (may be NULL) adds fields first. */
 static void reply_state(edit_api *a, edit_response *rs, const char *extra_key, int extra)
+{
+    reply_state_reached(a, rs, extra_key, extra, NAN);
+}
+
+/* reply_state with "reached" (a rigid motion's kept fraction) unless NAN. */
+static void reply_state_reached(edit_api *a, edit_response *rs, const char *extra_key, int extra,
+                                double reached)
 {
     if (scaf_drag_get_uv(a->drag, a->uv, NULL, NULL) != SCAF_OK) {
         reply_error(rs, 500, "%s", scaf_drag_error(a->drag));
@@ -141,6 +151,11 @@ static void reply_state(edit_api *a, edit_response *rs, const char *extra_key, i
     if (!json_begin(&j, rs)) return;
     fputc('{', j.f);
     if (extra_key) fprintf(j.f, "\"%s\": %d, ", extra_key, extra);
+    if (!isnan(reached)) {
+        fputs("\"reached\": ", j.f);
+        json_write_number(j.f, reached);
+        fputs(", ", j.f);
+    }
     fprintf(j.f, "\"iteration\": %d", scaf_drag_iterations(a->drag));
     /* energy: the figure scaf atlas and scaf check give for the same layout
      * (docs/energy.md); objective: the drag's own, at its layout's scale */
@@ -276,21 +291,107 @@ static int stop_on_signal(const scaf_iteration_info_t *info, void *user)
     return cli_signal_caught() != 0;
 }
 
+/* A "mode" word: 1 rigid, 0 deform (the default: absent), -1 after
+ * answering 400. */
+static int mode_of(edit_response *rs, const edit_json_extra *x)
+{
+    if (!x->seen || !strcmp(x->word, "deform")) return 0;
+    if (!strcmp(x->word, "rigid")) return 1;
+    reply_error(rs, 400, "\"mode\" \"%s\" is unknown: \"rigid\" or \"deform\"", x->word);
+    return -1;
+}
+
+/* The chart ids of an INTEGERS extra into ids (1, or 0 after 400). */
+static int chart_list(edit_api *a, edit_response *rs, const edit_json_extra *x, int *ids)
+{
+    if (x->len < 1) {
+        reply_error(rs, 400, "\"%s\" is empty: give at least one chart id", x->key);
+        return 0;
+    }
+    for (int i = 0; i < x->len; i++) {
+        if (!check_chart(a, rs, x->list[i])) return 0;
+        ids[i] = (int)x->list[i];
+    }
+    return 1;
+}
+
 static void grab(edit_api *a, const edit_request *rq, edit_response *rs)
 {
     edit_json_field f[] = {{"chart", EDIT_JSON_INTEGER, 0, 0, 0},
                            {"vertex", EDIT_JSON_INTEGER, 0, 0, 0}};
-    if (!parse(rq, rs, f, 2)) return;
+    int cap = a->ncharts > 0 ? a->ncharts : 1, *ids = NULL;
+    double *list = malloc(sizeof(double) * (size_t)cap);
+    if (!list) {
+        reply_error(rs, 500, "out of memory");
+        return;
+    }
+    edit_json_extra x[] = {{"mode", EDIT_JSON_WORD, 0, NULL, 0, 0, "", 0, 0},
+                           {"charts", EDIT_JSON_INTEGERS, 0, list, cap, 0, "", 0, 0}};
+    char msg[256];
+    int mode;
+    if (!edit_json_parse_extra(rq->body, rq->body_len, f, 2, x, 2, msg, sizeof msg)) {
+        reply_error(rs, 400, "%s %s: %s", rq->method, rq->path, msg);
+        goto done;
+    }
     if (f[0].seen == f[1].seen) {
         reply_error(rs, 400, "give either \"chart\" or \"vertex\"");
-        return;
+        goto done;
     }
-    if (f[0].seen ? !check_chart(a, rs, f[0].value) : !check_vertex(a, rs, f[1].value)) return;
-    if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_checkpoint(a->drag) != SCAF_OK) {
+    if (f[0].seen ? !check_chart(a, rs, f[0].value) : !check_vertex(a, rs, f[1].value)) goto done;
+    if ((mode = mode_of(rs, &x[0])) < 0) goto done;
+    if ((mode == 0 || f[1].seen) && x[1].seen) {
+        reply_error(rs, 400, "\"charts\" goes with a chart and \"mode\": \"rigid\"");
+        goto done;
+    }
+    int n = x[1].seen ? x[1].len : 1;
+    ids = malloc(sizeof(int) * (size_t)n);
+    if (!ids) {
+        reply_error(rs, 500, "out of memory");
+        goto done;
+    }
+    if (x[1].seen ? !chart_list(a, rs, &x[1], ids) : (ids[0] = (int)f[0].value, 0)) goto done;
+    if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_rigid_end(a->drag) != SCAF_OK) {
         reply_failure(a, rs, "grab");
-        return;
+        goto done;
+    }
+    a->rigid_grab = 0;
+    if (mode == 1 && f[0].seen) {
+        if (scaf_drag_rigid_begin(a->drag, ids, n) != SCAF_OK) { /* a pinned chart */
+            reply_error(rs, 409, "grab: %s", scaf_drag_error(a->drag));
+            goto done;
+        }
+        a->rigid_grab = 1;
+    }
+    if (scaf_drag_checkpoint(a->drag) != SCAF_OK) {
+        reply_failure(a, rs, "grab");
+        goto done;
     }
     reply_state(a, rs, NULL, 0);
+done:
+    free(ids);
+    free(list);
+}
+
+/* A rigid chart drag: the total motion since the grab (scaf_drag_rigid_move). */
+static void drag_rigid(edit_api *a, edit_response *rs, int chart, double dx, double dy,
+                       double angle)
+{
+    if (!a->rigid_grab) { /* grabbed in deform mode: this chart alone */
+        if (scaf_drag_rigid_begin(a->drag, &chart, 1) != SCAF_OK) {
+            reply_error(rs, 409, "drag: %s", scaf_drag_error(a->drag));
+            return;
+        }
+        a->rigid_grab = 1;
+    }
+    scaf_drag_motion_t m = scaf_drag_motion_identity();
+    m.dx = dx, m.dy = dy, m.angle = angle;
+    double reached = 0.0;
+    a->changes++;
+    if (scaf_drag_rigid_move(a->drag, &m, &reached) != SCAF_OK) {
+        reply_failure(a, rs, "drag");
+        return;
+    }
+    reply_state_reached(a, rs, NULL, 0, reached);
 }
 
 static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
@@ -300,7 +401,14 @@ static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
         {"dy", EDIT_JSON_NUMBER, 0, 0, 0},      {"angle", EDIT_JSON_NUMBER, 0, 0, 0},
         {"vertex", EDIT_JSON_INTEGER, 0, 0, 0}, {"x", EDIT_JSON_NUMBER, 0, 0, 0},
         {"y", EDIT_JSON_NUMBER, 0, 0, 0},       {"steps", EDIT_JSON_INTEGER, 0, 0, 0}};
-    if (!parse(rq, rs, f, 8)) return;
+    edit_json_extra x[] = {{"mode", EDIT_JSON_WORD, 0, NULL, 0, 0, "", 0, 0}};
+    char msg[256];
+    if (!edit_json_parse_extra(rq->body, rq->body_len, f, 8, x, 1, msg, sizeof msg)) {
+        reply_error(rs, 400, "%s %s: %s", rq->method, rq->path, msg);
+        return;
+    }
+    int mode = mode_of(rs, &x[0]);
+    if (mode < 0) return;
     int chart = f[0].seen, vertex = f[4].seen;
     if (chart == vertex) {
         reply_error(rs, 400,
@@ -317,6 +425,10 @@ static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
     }
     if (chart ? !check_chart(a, rs, f[0].value) : !check_vertex(a, rs, f[4].value)) return;
     if (!check_steps(rs, &f[7], DRAG_STEPS_MAX)) return;
+    if (mode == 1 && (!chart || f[7].seen)) {
+        reply_error(rs, 400, "\"mode\": \"rigid\" moves a chart (dx, dy, angle), without steps");
+        return;
+    }
     /* a pointer stays on the screen: bounded motions keep the handle
      * energy finite */
     for (int k = 1; k < 7; k++) {
@@ -327,6 +439,10 @@ static void drag_to(edit_api *a, const edit_request *rq, edit_response *rs)
                         k == 3 ? " (radians)" : " (1000 times the layout's size)");
             return;
         }
+    }
+    if (mode == 1) {
+        drag_rigid(a, rs, (int)f[0].value, f[1].value, f[2].value, f[3].value);
+        return;
     }
     scaf_status st = chart
         ? scaf_drag_move_chart(a->drag, (int)f[0].value, f[1].value, f[2].value, f[3].value)
@@ -366,10 +482,11 @@ static void pin(edit_api *a, const edit_request *rq, edit_response *rs)
 static void release(edit_api *a, const edit_request *rq, edit_response *rs)
 {
     if (!parse(rq, rs, NULL, 0)) return;
-    if (scaf_drag_clear_handles(a->drag) != SCAF_OK) {
+    if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_rigid_end(a->drag) != SCAF_OK) {
         reply_failure(a, rs, "release");
         return;
     }
+    a->rigid_grab = 0;
     reply_state(a, rs, NULL, 0);
 }
 
@@ -387,6 +504,8 @@ static void run(edit_api *a, const edit_request *rq, edit_response *rs, int comp
     }
     int before = scaf_drag_iterations(a->drag);
     a->changes++;
+    scaf_drag_rigid_end(a->drag);
+    a->rigid_grab = 0;
     scaf_status st = SCAF_OK;
     if (compact) {
         st = scaf_drag_compact(a->drag, cap, stop_on_signal, NULL);
@@ -407,6 +526,124 @@ static void run(edit_api *a, const edit_request *rq, edit_response *rs, int comp
     reply_state(a, rs, "iterations_run", scaf_drag_iterations(a->drag) - before);
 }
 
+/* One rigid operation on a selection (scaf_drag_transform) after a
+ * checkpoint. */
+static void transform(edit_api *a, const edit_request *rq, edit_response *rs)
+{
+    edit_json_field f[] = {{"dx", EDIT_JSON_NUMBER, 0, 0, 0},
+                           {"dy", EDIT_JSON_NUMBER, 0, 0, 0},
+                           {"angle", EDIT_JSON_NUMBER, 0, 0, 0},
+                           {"factor", EDIT_JSON_NUMBER, 0, 0, 0}};
+    int cap = a->ncharts > 0 ? a->ncharts : 1, *ids = NULL;
+    double *list = malloc(sizeof(double) * (size_t)cap), pivot[2] = {0, 0};
+    if (!list) {
+        reply_error(rs, 500, "out of memory");
+        return;
+    }
+    edit_json_extra x[] = {{"charts", EDIT_JSON_INTEGERS, 1, list, cap, 0, "", 0, 0},
+                           {"op", EDIT_JSON_WORD, 1, NULL, 0, 0, "", 0, 0},
+                           {"axis", EDIT_JSON_WORD, 0, NULL, 0, 0, "", 0, 0},
+                           {"pivot", EDIT_JSON_NUMBERS, 0, pivot, 2, 0, "", 0, 0},
+                           {"remirror", EDIT_JSON_BOOL, 0, NULL, 0, 0, "", 0, 0}};
+    char msg[256];
+    if (!edit_json_parse_extra(rq->body, rq->body_len, f, 4, x, 5, msg, sizeof msg)) {
+        reply_error(rs, 400, "%s %s: %s", rq->method, rq->path, msg);
+        goto done;
+    }
+    ids = malloc(sizeof(int) * (size_t)(x[0].len > 0 ? x[0].len : 1));
+    if (!ids) {
+        reply_error(rs, 500, "out of memory");
+        goto done;
+    }
+    if (!chart_list(a, rs, &x[0], ids)) goto done;
+    const char *op = x[1].word;
+    /* which numbers each operation takes */
+    static const struct {
+        const char *op;
+        int takes[4]; /* dx dy angle factor */
+        const char *needs;
+    } ops[] = {{"translate", {1, 1, 0, 0}, "\"dx\" and \"dy\""},
+               {"rotate", {0, 0, 1, 0}, "\"angle\" (radians)"},
+               {"scale", {0, 0, 0, 1}, "\"factor\""},
+               {"flip", {0, 0, 0, 0}, "\"axis\": \"u\" or \"v\""}};
+    int k = 0;
+    while (k < 4 && strcmp(ops[k].op, op)) k++;
+    if (k == 4) {
+        reply_error(rs, 400,
+                    "\"op\" \"%s\" is unknown: \"translate\", \"rotate\", \"scale\" or "
+                    "\"flip\"",
+                    op);
+        goto done;
+    }
+    int ok = 1;
+    for (int i = 0; i < 4; i++)
+        if (f[i].seen != ops[k].takes[i]) ok = 0;
+    if (k == 3) ok = ok && x[2].seen && (!strcmp(x[2].word, "u") || !strcmp(x[2].word, "v"));
+    else ok = ok && !x[2].seen;
+    if (!ok || (x[3].seen && x[3].len != 2)) {
+        reply_error(rs, 400, "\"op\": \"%s\" takes %s%s", op, ops[k].needs,
+                    x[3].seen && x[3].len != 2 ? "; \"pivot\" is [u, v]" : " and nothing else");
+        goto done;
+    }
+    for (int i = 0; i < 3; i++) {
+        double limit = i == 2 ? MAX_ANGLE : a->reach;
+        if (f[i].seen && !(fabs(f[i].value) <= limit)) {
+            reply_error(rs, 400, "\"%s\" %g is out of range: at most %g in magnitude", f[i].key,
+                        f[i].value, limit);
+            goto done;
+        }
+    }
+    if (x[3].seen && !(fabs(pivot[0]) <= a->reach && fabs(pivot[1]) <= a->reach)) {
+        reply_error(rs, 400, "\"pivot\" is out of range: at most %g in magnitude", a->reach);
+        goto done;
+    }
+    scaf_drag_motion_t m = scaf_drag_motion_identity();
+    if (f[0].seen) m.dx = f[0].value, m.dy = f[1].value;
+    if (f[2].seen) m.angle = f[2].value;
+    if (f[3].seen) m.factor = f[3].value;
+    if (k == 3) m.flip = x[2].word[0] == 'u' ? SCAF_DRAG_FLIP_U : SCAF_DRAG_FLIP_V;
+    m.remirror = x[4].seen && x[4].flag;
+    if (x[3].seen) m.has_pivot = 1, m.pivot[0] = pivot[0], m.pivot[1] = pivot[1];
+    if (k == 3 && !m.remirror) {
+        reply_error(rs, 409,
+                    "flip refused: a mirror turns the charts' triangles clockwise, so the layout "
+                    "would not be bijective and could never be saved; send \"remirror\": true "
+                    "to apply it as a half turn");
+        goto done;
+    }
+    if (f[3].seen && !(f[3].value >= 1.0 / 1024 && f[3].value <= 1024)) {
+        reply_error(rs, 400, "\"factor\" %g is out of range: in [1/1024, 1024]", f[3].value);
+        goto done;
+    }
+    if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_rigid_end(a->drag) != SCAF_OK) {
+        reply_failure(a, rs, "transform");
+        goto done;
+    }
+    a->rigid_grab = 0;
+    /* the grab first: a pinned chart is refused before anything changes */
+    if (scaf_drag_rigid_begin(a->drag, ids, x[0].len) != SCAF_OK) {
+        reply_error(rs, 409, "transform: %s", scaf_drag_error(a->drag));
+        goto done;
+    }
+    if (scaf_drag_checkpoint(a->drag) != SCAF_OK) {
+        scaf_drag_rigid_end(a->drag);
+        reply_failure(a, rs, "transform");
+        goto done;
+    }
+    a->changes++;
+    double reached = 0.0;
+    scaf_status st = scaf_drag_rigid_move(a->drag, &m, &reached);
+    scaf_drag_rigid_end(a->drag);
+    if (st != SCAF_OK) {
+        reply_failure(a, rs, "transform");
+        goto done;
+    }
+    reply_state_reached(a, rs, NULL, 0, reached);
+done:
+    free(ids);
+    free(list);
+}
+
 static void undo(edit_api *a, const edit_request *rq, edit_response *rs)
 {
     if (!parse(rq, rs, NULL, 0)) return;
@@ -415,6 +652,8 @@ static void undo(edit_api *a, const edit_request *rq, edit_response *rs)
         return;
     }
     a->changes++;
+    scaf_drag_rigid_end(a->drag); /* a rigid grab ends with its layout */
+    a->rigid_grab = 0;
     if (scaf_drag_undo(a->drag) != SCAF_OK) {
         reply_failure(a, rs, "undo");
         return;
@@ -432,6 +671,8 @@ static void redo(edit_api *a, const edit_request *rq, edit_response *rs)
         return;
     }
     a->changes++;
+    scaf_drag_rigid_end(a->drag); /* a rigid grab ends with its layout */
+    a->rigid_grab = 0;
     if (scaf_drag_redo(a->drag) != SCAF_OK) {
         reply_failure(a, rs, "redo");
         return;
@@ -593,7 +834,8 @@ enum {
     R_COMPACT,
     R_UNDO,
     R_REDO,
-    R_SAVE
+    R_SAVE,
+    R_TRANSFORM
 };
 
 static const route routes[] = {
@@ -611,6 +853,7 @@ static const route routes[] = {
     {"/api/undo", "POST", R_UNDO},
     {"/api/redo", "POST", R_REDO},
     {"/api/save", "POST", R_SAVE},
+    {"/api/transform", "POST", R_TRANSFORM},
 };
 
 void edit_api_handle(void *user, const edit_request *rq, edit_response *rs)
@@ -665,6 +908,7 @@ void edit_api_handle(void *user, const edit_request *rq, edit_response *rs)
     case R_UNDO: undo(a, rq, rs); return;
     case R_REDO: redo(a, rq, rs); return;
     case R_SAVE: save(a, rq, rs); return;
+    case R_TRANSFORM: transform(a, rq, rs); return;
     }
     reply_error(rs, 500, "internal error: route %d", r->kind);
 }

@@ -14,7 +14,29 @@
  *                       {"vertex": i, "x", "y", "steps"}: the total motion
  *                       since the grab as soft handles, then `steps`
  *                       SCAF iterations (1..20, default 1); the new state
- *   POST /api/release   {}: mouse up: drops the handles
+ *                       "mode": "rigid" moves the chart (or the charts
+ *                       grabbed with "mode": "rigid") as a rigid body and
+ *                       pushes the others rigidly (scaf_drag_rigid_move;
+ *                       "steps" not taken; the state has "reached", the
+ *                       fraction of the motion kept); "mode": "deform"
+ *                       (the default of this request; the page sends
+ *                       rigid unless its deform toggle is on) is the soft
+ *                       handle drag, each other chart's E capped at 1.25
+ *                       times its E at the grab (scaf_drag_set_energy_cap)
+ *   POST /api/grab      also {"chart": c, "mode": "rigid", "charts"?:
+ *                       [ids]}: grabs the selection (default [c]) for
+ *                       rigid drags
+ *   POST /api/transform {"charts": [ids], "op": "translate" | "rotate" |
+ *                       "scale" | "flip", "dx", "dy" | "angle" (radians)
+ *                       | "factor" | "axis": "u" | "v", "pivot"?: [u, v]
+ *                       (default: the selection's centroid), "remirror"?:
+ *                       true}: one rigid operation on the selection
+ *                       (scaf_drag_transform) after a checkpoint (undo and
+ *                       redo cover it); a flip without "remirror": true is
+ *                       refused with 409 (a mirrored chart is not
+ *                       bijective and can never be saved), with it it is
+ *                       applied as a half turn; the state with "reached"
+ *   POST /api/release   {}: mouse up: drops the handles (and a rigid grab)
  *   POST /api/optimize  {"steps"?}: iterations without handles until E
  *                       decreases by less than 1e-4 relatively (cap
  *                       `steps`, default 100)
@@ -99,6 +121,7 @@ typedef struct edit_api {
                              as one) */
     int saved_changes;     /* `changes` at the last save */
     int autosaved_changes; /* `changes` the autosave file holds */
+    int rigid_grab;        /* a rigid grab is active (scaf_drag_rigid_begin) */
 } edit_api;
 
 /* Set up the handler for a drag context that has its mesh; the token,

@@ -26,6 +26,35 @@ typedef struct edit_json_field {
     int seen;     /* out: 1 when the key was in the object */
 } edit_json_field;
 
+/* Values other than numbers, for the requests that need them (the
+ * transform of a selection: {"charts": [3, 5], "op": "rotate", "angle":
+ * 0.5, "pivot": [1.5, 2]}): a word (printable ASCII, no escapes, at most
+ * 31 characters), an array of integers in [0, 2^31 - 1] or of numbers
+ * (at most cap of them, into the caller's list), or true / false. */
+typedef enum edit_json_extra_kind {
+    EDIT_JSON_WORD,
+    EDIT_JSON_INTEGERS,
+    EDIT_JSON_NUMBERS,
+    EDIT_JSON_BOOL
+} edit_json_extra_kind;
+
+typedef struct edit_json_extra {
+    const char *key;
+    edit_json_extra_kind kind;
+    int required;
+    double *list; /* in: room for cap values; out: the array's (INTEGERS, NUMBERS) */
+    int cap;
+    int len;       /* out: values in list */
+    char word[32]; /* out: the word (WORD) */
+    int flag;      /* out: 1 for true (BOOL) */
+    int seen;      /* out */
+} edit_json_extra;
+
+/* edit_json_parse with extra keys besides the numeric fields; on 0 nothing
+ * of fields or extra is changed. */
+int edit_json_parse_extra(const char *body, size_t len, edit_json_field *fields, int n,
+                          edit_json_extra *extra, int nextra, char *msg, size_t size);
+
 /* Parse body[0..len) (need not be NUL-terminated) into the n fields.
  * Returns 1, or 0 with msg (size bytes) saying why; on 0 no field's
  * value or seen is changed. */

@@ -6,7 +6,9 @@
  * leaves a message readable by scaf_drag_error.
  *
  * What it does (the paper's Figure 1: charts dragged while nothing ever
- * overlaps). A drag context holds one layout of a mesh's charts — one
+ * overlaps). Two kinds of motion: rigid (scaf_drag_rigid_*: charts move
+ * as rigid bodies, the others are pushed by translations, no shape
+ * changes; below) and deform (handles and SCAF steps, described here). A drag context holds one layout of a mesh's charts — one
  * chart, or an atlas of many (connected components, or pieces cut along
  * the UV seams, exactly as scaf_atlas_set_mesh finds them) — inside one
  * scaffold, with the atlas's padding kept between charts. The caller sets
@@ -47,6 +49,15 @@
  *         scaf_drag_step(d, 2, NULL, NULL),
  *         scaf_drag_get_uv(d, UV, NULL, NULL);   // draw
  *     scaf_drag_clear_handles(d);                // mouse up
+ *     ...
+ *     int sel[2] = {3, 5};                       // rigid (see "rigid motions")
+ *     scaf_drag_checkpoint(d);
+ *     scaf_drag_rigid_begin(d, sel, 2);
+ *     for (each mouse move)
+ *         scaf_drag_motion_t m = scaf_drag_motion_identity();
+ *         m.dx = dx, m.dy = dy;                  // total since mouse down
+ *         scaf_drag_rigid_move(d, &m, &reached); // others pushed rigidly
+ *     scaf_drag_rigid_end(d);
  *     ...
  *     scaf_drag_undo(d);                         // back to the checkpoint
  *     scaf_drag_get_output(d, UVn, FT, chart);   // [0,1]^2, certified: save
@@ -282,6 +293,116 @@ SCAF_API int scaf_drag_redo_count(const scaf_drag_t *d);
  * restores the layout before it). Same errors as scaf_drag_step. */
 SCAF_API scaf_status scaf_drag_compact(scaf_drag_t *d, int n, scaf_param_progress_fn progress,
                                        void *user);
+
+/* ---- rigid motions ----------------------------------------------------------
+ * The editor's default way to move islands (issue 34): a selection of
+ * charts moves as a rigid body (translation, rotation, uniform scale, or a
+ * flip turned back into a half turn; below), and every other chart only
+ * translates, as little as it must, to keep the padding: it is pushed when
+ * closer than the padding to a chart placed before it, in order of
+ * distance from the selection, along the direction (away from the
+ * selection, the drag direction, or one of eight compass directions) that
+ * needs the shortest push; pushes propagate to the charts behind. No chart
+ * changes shape (the selection changes only by the similarity asked for);
+ * the other charts' UVs are their previous UVs translated (to the
+ * rounding of one addition per coordinate). Charts with a pinned vertex
+ * never move (they cannot be selected and are never pushed).
+ *
+ * Every layout a rigid motion leaves is decided exactly before it is
+ * kept: every triangle of a moved chart positively oriented (orient2d),
+ * the padding test of the steps, and the certificate of the saved output
+ * (scaf_drag_get_output: the exact checker and the exact padding
+ * certificate on the normalized layout), whose result is kept, so saving
+ * right after costs nothing. When the full motion fails a check (a pinned
+ * chart in the way, a push that cannot be resolved), the largest fraction
+ * of it that passes is taken (bisection on the fraction, 8 halvings; the
+ * grab pose, fraction 0, always passes): `reached` says which.
+ *
+ * The padding is relative to the layout's longest side, so when pushes
+ * make the layout larger, all charts closer than the new padding are
+ * pushed too (by about the growth times the padding: tiny), rounds
+ * repeating until the padding of the final side holds.
+ *
+ * Undo: the caller checkpoints (scaf_drag_checkpoint) before the motion,
+ * as for a handle drag; scaf_drag_cancel returns to the grab pose. A
+ * rigid motion drops what could be redone. */
+
+/* What a rigid motion does to the selection, about a pivot: p ->
+ * pivot + factor * R(angle) * M * (p - pivot) + (dx, dy), where M is the
+ * identity, or for a flip the half turn -I (see flip). */
+typedef enum scaf_drag_flip {
+    SCAF_DRAG_FLIP_NONE = 0,
+    SCAF_DRAG_FLIP_U, /* mirror u -> -u (across the vertical line through the pivot) */
+    SCAF_DRAG_FLIP_V  /* mirror v -> -v */
+} scaf_drag_flip;
+
+typedef struct scaf_drag_motion {
+    double dx, dy;       /* translation, layout units (0) */
+    double angle;        /* counter-clockwise rotation, radians (0) */
+    double factor;       /* uniform scale, in [1/1024, 1024] (1) */
+    scaf_drag_flip flip; /* (SCAF_DRAG_FLIP_NONE) A mirror turns every
+                            triangle clockwise: a mirrored chart is not a
+                            bijective map of its surface and could never
+                            be certified or saved, so a flip is refused
+                            (SCAF_ERR_USAGE) unless remirror is set */
+    int remirror;        /* 1: a flip is mirrored back across the other
+                            axis, i.e. applied as a half turn about the
+                            pivot (what stays of a flip in a bijective
+                            layout); there is no way to save a mirrored
+                            chart: mirror the mesh itself instead (0) */
+    int has_pivot;       /* 1: pivot below; 0: the area-weighted centroid
+                            of the selection's UV triangles at the grab */
+    double pivot[2];
+} scaf_drag_motion_t;
+
+/* The identity motion (factor 1, everything else 0). */
+SCAF_API scaf_drag_motion_t scaf_drag_motion_identity(void);
+
+/* Grab the selection: charts[0..n) (ids 0..chart_count-1, repeats
+ * allowed), n >= 1. The current layout becomes the grab pose every
+ * scaf_drag_rigid_move starts from. SCAF_ERR_USAGE (nothing changed): no
+ * mesh, n < 1 or charts NULL, an id out of range (named), a chart with a
+ * pinned vertex (named). */
+SCAF_API scaf_status scaf_drag_rigid_begin(scaf_drag_t *d, const int *charts, int n);
+
+/* Move the selection by *m from the grab pose (an editor passes the total
+ * motion since the mouse went down, so moves never drift) and make room
+ * as described above. reached (may be NULL) gets the fraction of the
+ * motion applied: 1 the whole, 0 none (the layout is then the grab
+ * pose); a flip is all or nothing. SCAF_ERR_USAGE (nothing changed): no
+ * rigid_begin since the mesh was set, m NULL or not finite, factor out of
+ * range, a flip without remirror. SCAF_ERR_NOMEM. */
+SCAF_API scaf_status scaf_drag_rigid_move(scaf_drag_t *d, const scaf_drag_motion_t *m,
+                                          double *reached);
+
+/* Drop the grab (SCAF_OK without one). The layout stays. */
+SCAF_API scaf_status scaf_drag_rigid_end(scaf_drag_t *d);
+
+/* One whole rigid operation: rigid_begin, rigid_move, rigid_end (the grab
+ * is dropped also on failure). What an editor's rotate / scale / flip
+ * button calls. */
+SCAF_API scaf_status scaf_drag_transform(scaf_drag_t *d, const int *charts, int n,
+                                         const scaf_drag_motion_t *m, double *reached);
+
+/* ---- the deform cap -----------------------------------------------------------
+ * In the deform mode (handles and scaf_drag_step), any iteration after
+ * which a chart that has no handle (neither a chart handle nor a vertex
+ * handle on one of its vertices) has its energy E (scaf_drag_chart_info)
+ * above ratio times its E when the drag started (at the first step after
+ * the last checkpoint, undo, redo, cancel, clearing the handles or
+ * setting the cap) is refused: its layout is put back and the step stops
+ * (SCAF_OK; the iteration count is that of the layout kept). So a drag
+ * never squashes a neighbour beyond the cap; the dragged charts
+ * themselves are not capped. Compaction keeps its own rule. */
+#define SCAF_DRAG_ENERGY_CAP_DEFAULT 1.25
+
+/* ratio >= 1, or 0 for no cap; SCAF_ERR_USAGE otherwise. Kept across
+ * scaf_drag_set_mesh. */
+SCAF_API scaf_status scaf_drag_set_energy_cap(scaf_drag_t *d, double ratio);
+/* The cap in force (0: none); NAN for NULL. */
+SCAF_API double scaf_drag_energy_cap(const scaf_drag_t *d);
+/* Iterations refused by the cap since the mesh was set. */
+SCAF_API long scaf_drag_capped_count(const scaf_drag_t *d);
 
 /* ---- measures -------------------------------------------------------------- */
 

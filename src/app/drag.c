@@ -22,44 +22,13 @@
 #include "app/atlas.h"
 #include "app/atlas_output.h"
 #include "app/drag_barrier.h"
+#include "app/drag_ctx.h"
 #include "app/drag_handles.h"
 #include "app/param.h"
 #include "base/error.h"
 #include "geom/chart_gap.h"
 #include "mesh/mesh.h"
 #include "opt/handle_term.h"
-
-/* One saved layout. */
-typedef struct drag_state {
-    double *uv; /* nw by 2 */
-    int iterations;
-} drag_state;
-
-struct scaf_drag {
-    scaf_drag_options_t opt;
-    scaf_error err;
-    int has_mesh;
-    atlas at;             /* layout, loop, padding hooks */
-    opt_handle_term term; /* in at.loop once has_mesh */
-    drag_barrier barrier; /* the padding in the energy (in at.loop with a padding) */
-    drag_handles handles;
-    int handles_dirty; /* the term does not reflect the handle set */
-    drag_state before; /* the layout before the last step */
-    int has_before;
-    int *hard_v;     /* pending hard vertex targets: vertices */
-    double *hard_xy; /* and targets (nhard by 2) */
-    int nhard, cap_hard;
-    drag_state *stack; /* checkpoints, oldest first */
-    int nstack;
-    drag_state *redo; /* layouts undone, the last undone last; a change drops them */
-    int nredo;
-    /* the verified output of the current layout (out_state: 0 not
-     * computed, 1 verified, -1 failed with out_err) */
-    int out_state;
-    double *UVn;
-    atlas_output out;
-    scaf_error out_err;
-};
 
 static void drop_hard(scaf_drag_t *d, int uv);
 
@@ -149,6 +118,12 @@ static void drop_redo(scaf_drag_t *d)
     d->nredo = 0;
 }
 
+void drag_ctx_changed(scaf_drag_t *d)
+{
+    drop_redo(d);
+    d->out_state = 0;
+}
+
 static void drop_stack(scaf_drag_t *d)
 {
     for (int i = 0; i < d->nstack; i++) free(d->stack[i].uv);
@@ -160,6 +135,8 @@ static void drop_stack(scaf_drag_t *d)
 
 static void drop_mesh(scaf_drag_t *d)
 {
+    drag_rigid_free(d);
+    drag_cap_free(d);
     if (d->has_mesh) {
         atlas_free(&d->at); /* frees the loop and with it the term's block */
         opt_handle_term_free(&d->term);
@@ -368,6 +345,7 @@ scaf_status scaf_drag_clear_handles(scaf_drag_t *d)
     drag_handles_clear(&d->handles);
     d->handles_dirty = 1;
     d->nhard = 0;
+    drag_cap_reset(d); /* the drag is over */
     return SCAF_OK;
 }
 
@@ -488,6 +466,7 @@ static void restore_state(scaf_drag_t *d, const drag_state *s)
     memcpy(d->at.loop.uv, s->uv, sizeof(double) * 2 * (size_t)d->at.nw);
     d->at.loop.iterations = s->iterations;
     d->out_state = 0;
+    drag_cap_reset(d); /* a new drag measures from here */
 }
 
 scaf_status scaf_drag_cancel(scaf_drag_t *d)
@@ -534,6 +513,7 @@ scaf_status scaf_drag_checkpoint(scaf_drag_t *d)
     if (st != SCAF_OK) return st;
     st = push_current(d, &d->stack, &d->nstack, "checkpoint");
     if (st == SCAF_OK) drop_redo(d); /* a new change: what was undone is gone */
+    drag_cap_reset(d);
     return st;
 }
 
@@ -595,11 +575,14 @@ static scaf_status iterate(scaf_drag_t *d, int n, scaf_param_progress_fn progres
     drop_redo(d); /* the layout changes: what was undone is gone */
     for (int k = 0; k < n; k++) {
         scaf_iteration_info_t info;
+        if (rule) drag_cap_reset(d); /* compaction has its own rule */
+        else if (drag_cap_before(d) != SCAF_OK) return d->err.code;
         scaf_status st = scaf_loop_step(&d->at.loop, &info, &d->err);
         if (st != SCAF_OK) {
             if (d->err.code == SCAF_OK) d->err.code = st;
             return st;
         }
+        if (!rule && drag_cap_refused(d)) break; /* the iteration is undone */
         if (d->nhard > 0 && (st = place_hard(d)) != SCAF_OK) return st;
         if (progress && progress(&info, user))
             return err_set(&d->err, SCAF_ERR_CANCELLED,

@@ -104,6 +104,61 @@ try {
   }
   await page.mouse.up();
   await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle() && window.scafEditor.state().handles === 0));
+  const rigidAfter = await page.evaluate(() => window.scafEditor.state());
+  // rigid by default (issue 34): no iteration ran, and every chart's UVs
+  // are its UVs before the drag translated (to 1e-12 of the layout's size)
+  if (rigidAfter.iteration !== before.iteration) fail("the default drag ran iterations: it is not rigid");
+  const meshInfo = await page.evaluate(() => window.scafEditor.mesh());
+  const vchart = new Array(before.uv.length / 2).fill(-1);
+  meshInfo.faces.forEach((v, k) => { vchart[v] = meshInfo.face_chart[Math.floor(k / 3)]; });
+  let size = 0;
+  for (let i = 0; i < before.uv.length; i++) size = Math.max(size, Math.abs(before.uv[i]));
+  const moved = new Set();
+  for (let c = 0; c < meshInfo.ncharts; c++) {
+    const vs = vchart.map((cc, v) => cc === c ? v : -1).filter(v => v >= 0);
+    const t = [rigidAfter.uv[2 * vs[0]] - before.uv[2 * vs[0]], rigidAfter.uv[2 * vs[0] + 1] - before.uv[2 * vs[0] + 1]];
+    if (Math.hypot(t[0], t[1]) > 0) moved.add(c);
+    for (const v of vs)  // (the state's numbers have 9 digits: 1e-8 of the size)
+      for (let k = 0; k < 2; k++)
+        if (Math.abs(rigidAfter.uv[2 * v + k] - before.uv[2 * v + k] - t[k]) > 1e-7 * size)
+          fail(`rigid drag: chart ${c} changed shape (vertex ${v})`);
+  }
+  if (!moved.has(0) || moved.size < 2) fail("rigid drag: chart 0 did not push another chart: " + [...moved]);
+  console.log(`rigid drag: charts ${[...moved]} moved, shapes kept`);
+  // D switches to deform: the same drag back runs SCAF iterations
+  await page.keyboard.press("d");
+  if (!(await page.isChecked("#deform"))) fail("D did not turn deform on");
+  {
+    const p0 = await page.evaluate(() => window.scafEditor.chartPoint(0));
+    await page.mouse.move(p0[0], p0[1]);
+    await page.mouse.down();
+    for (let i = 1; i <= 6; i++) {
+      await page.mouse.move(p0[0] + (a[0] - p0[0]) * i / 24, p0[1] + (a[1] - p0[1]) * i / 24);
+      await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.caughtUp()));
+    }
+    await page.mouse.up();
+    await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.idle() && window.scafEditor.state().handles === 0));
+  }
+  await page.keyboard.press("d");
+  // R turns the island under the pointer a quarter turn, rigidly (POST
+  // /api/transform); X (a mirror) is refused and changes nothing
+  {
+    const s0 = await page.evaluate(() => window.scafEditor.state());
+    const p2 = await page.evaluate(() => window.scafEditor.chartPoint(2));
+    await page.mouse.move(p2[0], p2[1]);
+    await page.keyboard.press("r");
+    await page.evaluate(() => window.scafEditor.when(() => window.scafEditor.transforms === 1 && window.scafEditor.idle()));
+    const s1 = await page.evaluate(() => window.scafEditor.state());
+    if (s1.iteration !== s0.iteration || JSON.stringify(s1.uv) === JSON.stringify(s0.uv) || !(s1.reached > 0))
+      fail("R did not turn chart 2 rigidly: " + JSON.stringify({ reached: s1.reached, it: [s0.iteration, s1.iteration] }));
+    const requests = await page.evaluate(() => window.scafEditor.answered);
+    await page.keyboard.press("x");
+    await page.evaluate(n => window.scafEditor.when(() => window.scafEditor.answered > n && window.scafEditor.idle()), requests);
+    const s2 = await page.evaluate(() => window.scafEditor.state());
+    if (JSON.stringify(s2.uv) !== JSON.stringify(s1.uv)) fail("X (flip) changed the layout");
+    if (!/flip refused/.test(await page.textContent("#status"))) fail("X: no refusal shown: " + await page.textContent("#status"));
+    console.log("R turned chart 2 rigidly; X refused: " + await page.textContent("#status"));
+  }
   const after = await page.evaluate(() => window.scafEditor.state());
   // the mark: in the bar and in the tab's title
   const mark = async () => ({
@@ -114,7 +169,7 @@ try {
   if (!dragged.shown || !dragged.flag || !dragged.title.startsWith("\u25cf"))
     fail("no unsaved-changes mark after a drag: " + JSON.stringify(dragged));
   await page.screenshot({ path: shot });  // released: the view fitted to the pushed charts
-  if (!(after.iteration > before.iteration)) fail("no iteration ran while dragging");
+  if (!(after.iteration > before.iteration)) fail("no iteration ran while dragging in deform mode");
   // chart 0 followed the mouse toward chart 1 (pushing it aside: no overlap)
   // (layout units: the view is fitted anew on release)
   const ua2 = await page.evaluate(() => window.scafEditor.chartCentre(0));
