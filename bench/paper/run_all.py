@@ -2,14 +2,14 @@
 """bench/paper/run_all: remake the SCAF paper's figures and Table 1, write docs/paper.md.
 
     python3 bench/paper/run_all.py [--large] [--out docs/paper] [--md docs/paper.md]
-    python3 bench/paper/run_all.py --small --only 3,4,10,13,14 --out /tmp/p --md /tmp/p/paper.md
+    python3 bench/paper/run_all.py --small --only 3,4,8,10,13,14 --out /tmp/p --md /tmp/p/paper.md
 
 Runs every figure script of bench/paper (fig*.py, each in its own process)
 with the built build/scaf (SCAF_BINARY) and libscaf.so (SCAF_LIBRARY), one
 thread; the pictures they make with scaf go into --out, the page into --md
 (default: docs/paper.md beside the default --out; else OUT/paper.md). The
 default set takes a few minutes on one core; --large adds the large meshes
-(Fig. 6 up to 1.77M faces, Fig. 11's subdivided strip); --small is the
+(Fig. 6 up to 7.09M faces, about 13 GB, Fig. 11's subdivided strip); --small is the
 test's subset on small inputs (bench/paper/test_fast.sh); --rotations N
 sets Fig. 14's count (default 20; the paper's 1000).
 
