@@ -306,7 +306,14 @@ SCAF_API scaf_status scaf_drag_compact(scaf_drag_t *d, int n, scaf_param_progres
  * changes shape (the selection changes only by the similarity asked for);
  * the other charts' UVs are their previous UVs translated (to the
  * rounding of one addition per coordinate). Charts with a pinned vertex
- * never move (they cannot be selected and are never pushed).
+ * never move (they cannot be selected and are never pushed). The padding
+ * is relative to the layout's side, so a motion that makes the layout
+ * larger needs the gaps inside the selection to grow too: the selection's
+ * charts other than the first one given may be translated off the
+ * motion, placed before any other chart and by the smallest push that
+ * keeps the padding (a tiny one for a growing layout; a real one when a
+ * scale below 1 brings two of them too close); each stays a similarity
+ * of its grab pose.
  *
  * Every layout a rigid motion leaves is decided exactly before it is
  * kept: every triangle of a moved chart positively oriented (orient2d),

@@ -234,6 +234,91 @@ class Drag(_Handle):
         with self._use() as h:
             self._check(lib.scaf_drag_undo(h))
 
+    def redo(self):
+        """Restore the layout the last undo left (bit for bit); undo goes
+        back again. A checkpoint, step or compaction drops what can be
+        redone."""
+        with self._use() as h:
+            self._check(lib.scaf_drag_redo(h))
+
+    redo_count = property(lambda self: self._get(lib.scaf_drag_redo_count))
+
+    # --- rigid motions ------------------------------------------------------------
+
+    @staticmethod
+    def _motion(dx, dy, angle, factor, flip, remirror, pivot):
+        m = lib.scaf_drag_motion_identity()
+        m.dx, m.dy, m.angle = _real(dx, "dx"), _real(dy, "dy"), _real(angle, "angle")
+        m.factor = _real(factor, "factor")
+        if flip not in _lib.DRAG_FLIPS:
+            raise ValueError("flip %r: give None, 'u' or 'v'" % (flip,))
+        m.flip = _lib.DRAG_FLIPS[flip]
+        m.remirror = 1 if remirror else 0
+        if pivot is not None:
+            p = list(pivot)
+            if len(p) != 2:
+                raise ValueError("pivot: give (u, v)")
+            m.has_pivot = 1
+            m.pivot[0], m.pivot[1] = _real(p[0], "pivot u"), _real(p[1], "pivot v")
+        return m
+
+    @staticmethod
+    def _charts(charts):
+        ids = [_index(c, "chart") for c in ([charts] if isinstance(charts, numbers.Integral) else list(charts))]
+        return (ctypes.c_int * max(len(ids), 1))(*ids), len(ids)
+
+    def rigid_begin(self, charts):
+        """Grab a selection (a chart id or a list of them) for rigid moves:
+        the current layout becomes the grab pose (scaf_drag_rigid_begin)."""
+        arr, n = self._charts(charts)
+        with self._use() as h:
+            self._check(lib.scaf_drag_rigid_begin(h, arr, n))
+
+    def rigid_move(self, dx=0.0, dy=0.0, angle=0.0, factor=1.0, flip=None, remirror=False,
+                   pivot=None):
+        """Move the grabbed selection rigidly by the total motion since the
+        grab (translation, rotation about the pivot, uniform scale; flip
+        'u' or 'v' only with remirror=True, as a half turn); the other
+        charts are pushed by translations only, the padding kept, the
+        layout certified exactly. Returns the fraction of the motion kept
+        (1: all of it)."""
+        m = self._motion(dx, dy, angle, factor, flip, remirror, pivot)
+        reached = ctypes.c_double(0.0)
+        with self._use() as h:
+            self._check(lib.scaf_drag_rigid_move(h, ctypes.byref(m), ctypes.byref(reached)))
+        return reached.value
+
+    def rigid_end(self):
+        with self._use() as h:
+            self._check(lib.scaf_drag_rigid_end(h))
+
+    def transform(self, charts, dx=0.0, dy=0.0, angle=0.0, factor=1.0, flip=None,
+                  remirror=False, pivot=None):
+        """One rigid operation on a selection (rigid_begin, rigid_move,
+        rigid_end); checkpoint() before it for undo. Returns the fraction
+        kept."""
+        arr, n = self._charts(charts)
+        m = self._motion(dx, dy, angle, factor, flip, remirror, pivot)
+        reached = ctypes.c_double(0.0)
+        with self._use() as h:
+            self._check(lib.scaf_drag_transform(h, arr, n, ctypes.byref(m), ctypes.byref(reached)))
+        return reached.value
+
+    @property
+    def energy_cap(self):
+        """Deform mode: a chart without a handle may not rise above this
+        times its E at the drag's start (0: no cap; default 1.25)."""
+        return self._get(lib.scaf_drag_energy_cap)
+
+    @energy_cap.setter
+    def energy_cap(self, ratio):
+        r = _real(ratio, "energy_cap")
+        with self._use() as h:
+            self._check(lib.scaf_drag_set_energy_cap(h, r))
+
+    capped_count = property(lambda self: self._get(lib.scaf_drag_capped_count),
+                            doc="Iterations the energy cap refused since set_mesh.")
+
     # --- measures and output ------------------------------------------------------
 
     @property

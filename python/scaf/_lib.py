@@ -168,6 +168,24 @@ class DragChartInfo(ctypes.Structure):
     ]
 
 
+DRAG_FLIPS = {None: 0, "u": 1, "v": 2}  # scaf_drag_flip
+
+
+class DragMotion(ctypes.Structure):
+    """scaf_drag_motion_t"""
+
+    _fields_ = [
+        ("dx", ctypes.c_double),
+        ("dy", ctypes.c_double),
+        ("angle", ctypes.c_double),
+        ("factor", ctypes.c_double),
+        ("flip", c_enum),
+        ("remirror", ctypes.c_int),
+        ("has_pivot", ctypes.c_int),
+        ("pivot", ctypes.c_double * 2),
+    ]
+
+
 # --- scaf/volume.h ------------------------------------------------------------
 
 VOLUME_PHASES = ("flow_step", "iteration")  # scaf_volume_phase
@@ -320,6 +338,7 @@ STRUCTS = {
     "scaf_atlas_iteration_info_t": AtlasIterationInfo,
     "scaf_drag_options_t": DragOptions,
     "scaf_drag_chart_info_t": DragChartInfo,
+    "scaf_drag_motion_t": DragMotion,
     "scaf_inflate_options_t": InflateOptions,
     "scaf_untangle_options_t": UntangleOptions,
     "scaf_flow_options_t": FlowOptions,
@@ -407,6 +426,16 @@ SIGNATURES = {
     "scaf_drag_checkpoint": (c_enum, [_P]),
     "scaf_drag_undo": (c_enum, [_P]),
     "scaf_drag_undo_count": (_int, [_P]),
+    "scaf_drag_redo": (c_enum, [_P]),
+    "scaf_drag_redo_count": (_int, [_P]),
+    "scaf_drag_motion_identity": (DragMotion, []),
+    "scaf_drag_rigid_begin": (c_enum, [_P, _I, _int]),
+    "scaf_drag_rigid_move": (c_enum, [_P, ctypes.POINTER(DragMotion), _D]),
+    "scaf_drag_rigid_end": (c_enum, [_P]),
+    "scaf_drag_transform": (c_enum, [_P, _I, _int, ctypes.POINTER(DragMotion), _D]),
+    "scaf_drag_set_energy_cap": (c_enum, [_P, ctypes.c_double]),
+    "scaf_drag_energy_cap": (ctypes.c_double, [_P]),
+    "scaf_drag_capped_count": (ctypes.c_long, [_P]),
     "scaf_drag_energy": (ctypes.c_double, [_P]),
     "scaf_drag_packing_efficiency": (ctypes.c_double, [_P]),
     "scaf_drag_face_energy": (c_enum, [_P, _D]),

@@ -98,6 +98,15 @@ int main(void)
     FIELD(scaf_drag_chart_info_t, uv_area);
     FIELD(scaf_drag_chart_info_t, energy);
     FIELD(scaf_drag_chart_info_t, held);
+    SIZE(scaf_drag_motion_t);
+    FIELD(scaf_drag_motion_t, dx);
+    FIELD(scaf_drag_motion_t, dy);
+    FIELD(scaf_drag_motion_t, angle);
+    FIELD(scaf_drag_motion_t, factor);
+    FIELD(scaf_drag_motion_t, flip);
+    FIELD(scaf_drag_motion_t, remirror);
+    FIELD(scaf_drag_motion_t, has_pivot);
+    FIELD(scaf_drag_motion_t, pivot);
 
     SIZE(scaf_inflate_options_t);
     FIELD(scaf_inflate_options_t, struct_size);

@@ -866,6 +866,59 @@ class DragTest(unittest.TestCase):
             mean = sum(a * e for a, e in zip(areas, fe)) / sum(areas)
             self.assertAlmostEqual(mean, d.energy, delta=1e-9 * d.energy)
 
+    def test_rigid_move_transform_redo(self):
+        with scaf.Drag(seams="input") as d:
+            d.set_mesh(self.V, self.F)
+            charts = list(rows(d.uv_charts())) if np is None else d.uv_charts().tolist()
+            before = rows(d.uv)
+            c0, c1 = d.chart_info(0).centroid, d.chart_info(1).centroid
+            d.checkpoint()
+            d.rigid_begin(0)
+            reached = d.rigid_move(c1[0] - c0[0], c1[1] - c0[1])  # onto chart 1
+            d.rigid_end()
+            self.assertEqual(reached, 1.0)
+            self.assertEqual(d.iterations, 0)  # no SCAF iteration
+            after = rows(d.uv)
+            self.valid(d)
+            size = max(abs(x) for p in before for x in p)
+            for c in (0, 1):  # each chart translated, shape kept
+                vs = [v for v, k in enumerate(charts) if k == c]
+                t = [after[vs[0]][k] - before[vs[0]][k] for k in range(2)]
+                for v in vs:
+                    for k in range(2):
+                        self.assertLessEqual(abs(after[v][k] - before[v][k] - t[k]), 1e-12 * size)
+                if c == 1:
+                    self.assertGreater(math.hypot(*t), 0.0)  # pushed aside
+            d.undo()
+            self.assertEqual(rows(d.uv), before)
+            self.assertEqual(d.redo_count, 1)
+            d.redo()
+            self.assertEqual(rows(d.uv), after)  # bit for bit
+            with self.assertRaises(scaf.UsageError):
+                d.redo()
+            d.checkpoint()
+            self.assertEqual(d.transform([0, 1], angle=0.7), 1.0)
+            self.valid(d)
+            self.assertEqual(d.transform(1, factor=0.8, pivot=(0.0, 0.0)), 1.0)
+            self.valid(d)
+            turned = rows(d.uv)
+            with self.assertRaises(scaf.UsageError) as cm:
+                d.transform([0], flip="u")  # a mirror: refused
+            self.assertIn("remirror", str(cm.exception))
+            self.assertEqual(rows(d.uv), turned)
+            self.assertEqual(d.transform([0], flip="v", remirror=True), 1.0)
+            self.valid(d)
+            with self.assertRaises(ValueError):
+                d.transform([0], flip="w")
+            with self.assertRaises(scaf.UsageError):
+                d.transform([2], angle=1.0)
+            self.assertEqual(d.energy_cap, 1.25)
+            d.energy_cap = 2.0
+            self.assertEqual(d.energy_cap, 2.0)
+            with self.assertRaises(scaf.UsageError):
+                d.energy_cap = 0.5
+            self.assertEqual(d.capped_count, 0)
+
     def test_errors(self):
         d = scaf.Drag(start="input", seams="input")
         self.assertEqual(d.options["start"], "input")

@@ -24,9 +24,11 @@
 #include "geom/chart_gap.h"
 #include "geom/predicates.h"
 
-#define PUSH_MARGIN 1.000001 /* pushes keep this times the padding need */
-#define MAX_ROUNDS 8         /* pushes again while the layout grows */
-#define HALVINGS 8           /* bisection of a motion that fails */
+#define PUSH_MARGIN                                                                                \
+    1.0001           /* pushes keep this times the padding need, so a
+                              layout that grows a little needs no new round */
+#define MAX_ROUNDS 8 /* pushes again while the layout grows */
+#define HALVINGS 8   /* bisection of a motion that fails */
 #define FACTOR_MAX 1024.0
 
 typedef struct drag_rigid {
@@ -35,6 +37,9 @@ typedef struct drag_rigid {
     double *grab; /* nw by 2 */
     int grab_iter;
     unsigned char *sel, *fixed, *moved; /* ncharts */
+    unsigned char *early;               /* ncharts: selected, not the anchor */
+    int anchor;                         /* the selected chart that never moves
+                                           relative to the motion */
     double centroid[2];                 /* the selection's, at the grab */
 } drag_rigid;
 
@@ -47,6 +52,7 @@ void drag_rigid_free(scaf_drag_t *d)
     free(r->sel);
     free(r->fixed);
     free(r->moved);
+    free(r->early);
     free(r);
     d->rigid = NULL;
 }
@@ -61,10 +67,11 @@ static drag_rigid *rigid_of(scaf_drag_t *d)
     r->sel = malloc(nc);
     r->fixed = malloc(nc);
     r->moved = malloc(nc);
+    r->early = malloc(nc);
     scaf_error e;
     err_clear(&e);
     d->rigid = r;
-    if (!r->grab || !r->sel || !r->fixed || !r->moved ||
+    if (!r->grab || !r->sel || !r->fixed || !r->moved || !r->early ||
         rigid_charts_init(&r->rc, d->at.wchart, d->at.nw, d->at.ncharts, d->at.seg, d->at.nseg,
                           &e) != SCAF_OK) {
         drag_rigid_free(d);
@@ -108,8 +115,18 @@ scaf_status scaf_drag_rigid_begin(scaf_drag_t *d, const int *charts, int n)
                            "chart %d has a pinned vertex: it cannot move (unpin it first)",
                            charts[i]);
         }
+    /* the selection moves rigidly; as the padding is relative to the
+     * layout's side, a motion that grows the layout needs every gap to
+     * grow, those inside the selection too: the selection's charts but
+     * the first are pushable, placed before any other chart, so they move
+     * off the motion only by such small translations (or when a scale
+     * below 1 brings two of them too close) */
     memset(r->sel, 0, (size_t)nc);
-    for (int i = 0; i < n; i++) r->sel[charts[i]] = r->fixed[charts[i]] = 1;
+    memset(r->early, 0, (size_t)nc);
+    r->anchor = charts[0];
+    for (int i = 0; i < n; i++) r->sel[charts[i]] = r->early[charts[i]] = 1;
+    r->fixed[r->anchor] = 1;
+    r->early[r->anchor] = 0;
     memcpy(r->grab, d->at.loop.uv, sizeof(double) * 2 * (size_t)d->at.nw);
     r->grab_iter = d->at.loop.iterations;
     /* the pivot: area-weighted centroid of the selection's UV triangles */
@@ -189,7 +206,8 @@ static int frame(scaf_drag_t *d, const scaf_drag_motion_t *m, double t)
         for (int k = 0; k < MAX_ROUNDS && !ok; k++) {
             /* (padding 0: charts only must not touch) */
             double keep = fmax(need * PUSH_MARGIN, 0x1p-40 * atlas_side(&d->at));
-            if (rigid_push(&r->rc, X, r->fixed, r->centroid, dir, keep, round, &e) != SCAF_OK) {
+            if (rigid_push(&r->rc, X, r->fixed, r->early, r->centroid, dir, keep, round, &e) !=
+                SCAF_OK) {
                 free(round);
                 return -1;
             }

@@ -234,6 +234,7 @@ static double clear_along(pusher *P, int B, const double e[2], double r, int *ca
 /* ---- all charts -------------------------------------------------------------- */
 
 typedef struct order_item {
+    int late; /* 0: placed first (the selection's other charts) */
     double dist;
     int chart;
 } order_item;
@@ -241,13 +242,14 @@ typedef struct order_item {
 static int by_dist(const void *a, const void *b)
 {
     const order_item *x = a, *y = b;
+    if (x->late != y->late) return x->late - y->late;
     if (x->dist != y->dist) return (x->dist > y->dist) - (x->dist < y->dist);
     return x->chart - y->chart;
 }
 
 scaf_status rigid_push(const rigid_charts *rc, double *X, const unsigned char *fixed,
-                       const double from[2], const double dir[2], double r, unsigned char *moved,
-                       scaf_error *err)
+                       const unsigned char *early, const double from[2], const double dir[2],
+                       double r, unsigned char *moved, scaf_error *err)
 {
     int nc = rc->ncharts;
     unsigned char *placed = malloc((size_t)nc + 1);
@@ -278,6 +280,7 @@ scaf_status rigid_push(const rigid_charts *rc, double *X, const unsigned char *f
             double dy = fmax(0.0, fmax(lo[1] - from[1], from[1] - hi[1]));
             order[no].dist =
                 hypot(dx, dy) + 1e-9 * hypot(cen[2 * c] - from[0], cen[2 * c + 1] - from[1]);
+            order[no].late = !(early && early[c]);
             order[no++].chart = c;
         }
     }

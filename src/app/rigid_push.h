@@ -46,13 +46,15 @@ void rigid_charts_free(rigid_charts *rc);
 /* Translate the charts that are not fixed so every pair is >= r apart.
  *   X      in/out, nw by 2 positions
  *   fixed  ncharts flags: 1 = may not move
+ *   early  ncharts flags (may be NULL): charts placed before all others
+ *          (the moved selection's charts but one)
  *   from   where the motion happens (the selection's centroid): charts
  *          are placed in order of distance from it and pushed away from it
  *   dir    the drag direction (need not be unit; may be NULL or zero)
  *   r      the distance to keep (> 0)
  *   moved  out, ncharts flags (may be NULL): 1 for the charts translated */
 scaf_status rigid_push(const rigid_charts *rc, double *X, const unsigned char *fixed,
-                       const double from[2], const double dir[2], double r, unsigned char *moved,
-                       scaf_error *err);
+                       const unsigned char *early, const double from[2], const double dir[2],
+                       double r, unsigned char *moved, scaf_error *err);
 
 #endif /* SCAF_APP_RIGID_PUSH_H */
