@@ -22,6 +22,7 @@ PACKAGES=(
   python3-setuptools python3-wheel python3-build python3-venv python3-pip  # pip install . offline (tests/install/test_pip.sh)
   libmicrohttpd-dev                                 # `scaf edit`: the local HTTP server
   chromium nodejs                                   # tests/browser: `scaf edit` in headless Chromium
+  libjs-three                                       # `scaf edit`'s 3D view: three.js (r111) embedded at build time (optional: without it the page says the view is unavailable)
   blender                                           # tests/blender: the add-on (integrations/blender) run headless
   xvfb xauth                                        # tests/blender: the add-on's modal run in a window (xvfb-run)
 )

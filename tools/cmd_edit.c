@@ -41,6 +41,7 @@
 #include "base/interrupt.h"
 #include "edit_page.h"
 #include "edit_server.h"
+#include "edit_texture.h"
 #include "exit_codes.h"
 #include "scaf/drag.h"
 
@@ -74,6 +75,13 @@ static void usage(FILE *o)
             "The wheel zooms toward the cursor; the middle button, space + drag or the arrow\n"
             "keys pan; F fits. The page draws that unit square, a texel grid for its own\n"
             "resolution setting and a legend of the distortion colours (docs/editor.md).\n"
+            "Selection: click an island (shift-click adds or removes), drag on empty space\n"
+            "or ctrl + drag for a box; the island / vertex toggle selects vertices instead;\n"
+            "Escape clears. Pin / unpin (P, U) fix the selected vertices: a pinned vertex\n"
+            "never moves. Under the layout: the checker or the --texture image in the unit\n"
+            "square; beside it a 3D view of the model with that image mapped by the current\n"
+            "UVs (mouse: orbit, wheel: zoom; hovering an island highlights it in both).\n"
+            "The padding field sets the padding compact packs to.\n"
             "\n"
             "IN: OBJ (.obj), OFF (.off) or PLY (.ply), optionally gzip-compressed (.gz).\n"
             "Any mesh `scaf atlas` maps opens. With UVs (vt) that the exact checker proves\n"
@@ -101,6 +109,9 @@ static void usage(FILE *o)
             "                      as `scaf atlas`\n"
             "  --padding P         minimum distance between two charts in the unit square\n"
             "                      (default 4 / 1024 = 0.00390625)\n"
+            "  --texture FILE.png  show this image under the layout and on the 3D view (a\n"
+            "                      PNG of at most 64 MiB, sides up to 16384 pixels; read\n"
+            "                      once at the start: 3 when missing or not such a PNG)\n"
             "  --resume            start from the autosave of an earlier session (see below)\n"
             "                      instead of --start\n"
             "  --quiet             no messages but errors\n"
@@ -380,7 +391,7 @@ static int take_autosave(const char *path, const char *in, mesh *m, int quiet)
 
 static int edit_main(int argc, char **argv)
 {
-    const char *in = NULL, *out = NULL, *start = "auto";
+    const char *in = NULL, *out = NULL, *start = "auto", *texture_path = NULL;
     int port = 0, quiet = 0, resume = 0;
     scaf_seams seams = SCAF_SEAMS_DEFAULT;
     double padding = DEFAULT_PADDING;
@@ -409,6 +420,9 @@ static int edit_main(int argc, char **argv)
             if (!cli_parse_double(v, &padding)) CLI_BAD_VALUE("edit");
             if (!(padding == 0 || (padding >= 0x1p-200 && padding < 0.5)))
                 CLI_OUT_OF_RANGE("edit", "0 or in [2^-200, 0.5)");
+        } else if (!strcmp(a, "--texture")) {
+            CLI_NEED_VALUE("edit");
+            texture_path = v;
         } else if (!strcmp(a, "--resume")) {
             resume = 1;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
@@ -460,14 +474,28 @@ static int edit_main(int argc, char **argv)
         return EXIT_INPUT;
     }
 
+    /* the image, read once now: the server sends these bytes only */
+    edit_texture texture = {0};
+    if (texture_path) {
+        char msg[4400];
+        rc = edit_texture_read(texture_path, &texture, msg, sizeof msg);
+        if (rc != EXIT_OK) {
+            fprintf(stderr, "scaf edit: %s\n", msg);
+            return rc;
+        }
+    }
     mesh m;
     mesh_read_info rinfo;
     rc = cli_read_mesh("edit", in, quiet, &m, &rinfo);
-    if (rc != EXIT_OK) return rc;
+    if (rc != EXIT_OK) {
+        edit_texture_free(&texture);
+        return rc;
+    }
     if (resume) {
         rc = take_autosave(autosave_path, in, &m, quiet);
         if (rc != EXIT_OK) {
             mesh_free(&m);
+            edit_texture_free(&texture);
             return rc;
         }
         start = "input";
@@ -477,6 +505,7 @@ static int edit_main(int argc, char **argv)
     rc = edit_start_layout(in, &m, start, padding, seams, quiet, &d, &from);
     if (rc != EXIT_OK) {
         mesh_free(&m);
+        edit_texture_free(&texture);
         return rc;
     }
     edit_api api;
@@ -497,11 +526,21 @@ static int edit_main(int argc, char **argv)
     } else {
         api.page = (const char *)edit_page_html;
         api.page_len = edit_page_html_len;
+        api.tools_js = (const char *)edit_page_tools_js;
+        api.tools_js_len = edit_page_tools_js_len;
+        api.three_js = (const char *)edit_three_js;
+        api.three_js_len = edit_three_js_len;
+        api.texture = texture.data;
+        api.texture_len = texture.len;
+        api.texture_name = texture_path;
+        api.texture_width = texture.width;
+        api.texture_height = texture.height;
         rc = cli_signal_caught() ? EXIT_CANCELLED : serve(&api, port, quiet);
     }
     edit_api_free(&api);
     scaf_drag_destroy(d);
     mesh_free(&m);
+    edit_texture_free(&texture);
     return rc;
 }
 

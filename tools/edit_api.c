@@ -170,7 +170,11 @@ static void reply_state_reached(edit_api *a, edit_response *rs, const char *extr
             scaf_drag_undo_count(a->drag), scaf_drag_redo_count(a->drag),
             edit_api_unsaved(a) ? "true" : "false");
     json_key_number(j.f, "max_handle_error", scaf_drag_max_handle_error(a->drag));
-    fputs(", ", j.f);
+    json_key_number(j.f, "padding", a->padding);
+    fputs(", \"pinned_vertices\": [", j.f);
+    for (int i = 0, n = 0; i < a->nuv; i++)
+        if (scaf_drag_is_pinned(a->drag, i)) fprintf(j.f, n++ ? ",%d" : "%d", i);
+    fputs("], ", j.f);
     write_doubles(j.f, "uv", a->uv, 2 * (size_t)a->nuv);
     fputs("}\n", j.f);
     json_end(&j, rs);
@@ -208,7 +212,14 @@ static void reply_mesh(edit_api *a, edit_response *rs)
     fprintf(j.f, ", \"ncharts\": %d, \"nuv\": %d", a->ncharts, a->nuv);
     json_key_number(j.f, "padding", a->padding);
     json_key_number(j.f, "diagonal", a->diagonal);
-    fputs(", ", j.f);
+    fputs(", \"texture\": ", j.f);
+    if (a->texture) {
+        json_write_string(j.f, a->texture_name ? a->texture_name : "");
+        fprintf(j.f, ", \"texture_size\": [%d, %d]", a->texture_width, a->texture_height);
+    } else {
+        fputs("null", j.f);
+    }
+    fprintf(j.f, ", \"three\": %s, ", a->three_js_len ? "true" : "false");
     write_ints(j.f, "faces", a->FT, 3 * (size_t)a->nf);
     fputs(", ", j.f);
     write_ints(j.f, "face_chart", a->chart, (size_t)a->nf);
@@ -494,8 +505,24 @@ static void release(edit_api *a, const edit_request *rq, edit_response *rs)
  * iterations; the state with "iterations_run". */
 static void run(edit_api *a, const edit_request *rq, edit_response *rs, int compact)
 {
-    edit_json_field f[] = {{"steps", EDIT_JSON_INTEGER, 0, 0, 0}};
-    if (!parse(rq, rs, f, 1) || !check_steps(rs, &f[0], STEPS_MAX)) return;
+    edit_json_field f[] = {{"steps", EDIT_JSON_INTEGER, 0, 0, 0},
+                           {"padding", EDIT_JSON_NUMBER, 0, 0, 0}};
+    /* optimize takes no padding: its key is unknown there */
+    if (!parse(rq, rs, f, compact ? 2 : 1) || !check_steps(rs, &f[0], STEPS_MAX)) return;
+    if (f[1].seen && f[1].value != a->padding) {
+        if (!(f[1].value >= 0x1p-200 && f[1].value < 0.5)) {
+            reply_error(rs, 400, "\"padding\" %g is out of range: it must be in [2^-200, 0.5)",
+                        f[1].value);
+            return;
+        }
+        /* refused (nothing changed) when the layout is closer than that now */
+        if (scaf_drag_set_padding(a->drag, f[1].value) != SCAF_OK) {
+            reply_error(rs, 409, "%s", scaf_drag_error(a->drag));
+            return;
+        }
+        a->padding = f[1].value;
+        a->changes++; /* the next save certifies the new padding */
+    }
     int cap =
         f[0].seen ? (int)f[0].value : (compact ? COMPACT_STEPS_DEFAULT : OPTIMIZE_STEPS_DEFAULT);
     if (scaf_drag_clear_handles(a->drag) != SCAF_OK || scaf_drag_checkpoint(a->drag) != SCAF_OK) {
@@ -815,6 +842,22 @@ scaf_status edit_api_autosave(edit_api *a, int *written, scaf_error *err)
 
 /* ---- routing ---------------------------------------------------------------- */
 
+/* A file compiled in or read at start-up (static: not copied); 404 with
+ * why_none when there is none. */
+static void reply_asset(edit_response *rs, const char *type, const char *body, size_t len,
+                        const char *why_none)
+{
+    if (!body || !len) {
+        reply_error(rs, 404, "%s", why_none);
+        return;
+    }
+    rs->status = 200;
+    rs->content_type = type;
+    rs->body = (char *)body;
+    rs->len = len;
+    rs->body_static = 1;
+}
+
 typedef struct route {
     const char *path;
     const char *method;
@@ -823,6 +866,9 @@ typedef struct route {
 
 enum {
     R_PAGE,
+    R_TOOLS_JS,
+    R_THREE_JS,
+    R_TEXTURE,
     R_MESH,
     R_STATE,
     R_DISTORTION,
@@ -841,6 +887,9 @@ enum {
 static const route routes[] = {
     {"/", "GET", R_PAGE},
     {"/index.html", "GET", R_PAGE},
+    {"/edit_page_tools.js", "GET", R_TOOLS_JS},
+    {"/three.min.js", "GET", R_THREE_JS},
+    {"/texture.png", "GET", R_TEXTURE},
     {"/api/mesh", "GET", R_MESH},
     {"/api/state", "GET", R_STATE},
     {"/api/distortion", "GET", R_DISTORTION},
@@ -895,6 +944,19 @@ void edit_api_handle(void *user, const edit_request *rq, edit_response *rs)
         rs->body = (char *)a->page;
         rs->len = a->page_len;
         rs->body_static = 1;
+        return;
+    case R_TOOLS_JS:
+        reply_asset(rs, "text/javascript; charset=utf-8", a->tools_js, a->tools_js_len,
+                    "the page's script is not built in");
+        return;
+    case R_THREE_JS:
+        reply_asset(rs, "text/javascript; charset=utf-8", a->three_js, a->three_js_len,
+                    "scaf was built without three.js (libjs-three was not installed at build "
+                    "time): no 3D view");
+        return;
+    case R_TEXTURE:
+        reply_asset(rs, "image/png", (const char *)a->texture, a->texture ? a->texture_len : 0,
+                    "no --texture was given");
         return;
     case R_MESH: reply_mesh(a, rs); return;
     case R_STATE: reply_state(a, rs, NULL, 0); return;

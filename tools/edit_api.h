@@ -5,7 +5,10 @@
  * an edit_request and sends back the edit_response filled here.
  *
  *   GET  /?token=T      the page
- *   GET  /api/mesh      faces, chart of each face, 3D positions (once)
+ *   GET  /api/mesh      faces, chart of each face, 3D positions (once);
+ *                       "texture" (the --texture name or null, with its
+ *                       "texture_size"), "three" (whether the 3D view's
+ *                       script is built in)
  *   GET  /api/state     the layout: uv, E, packing efficiency, iterations
  *   GET  /api/distortion  per-face ||J||^2 + ||J^-1||^2 (4: isometric)
  *   POST /api/grab      {"chart": c} | {"vertex": i}: mouse down; saves
@@ -47,12 +50,18 @@
  *                       layout vertex: a pinned vertex keeps its bits
  *                       through every drag, optimize and compact
  *                       (scaf_drag_pin_vertex); the state's "pinned" is
- *                       their count
+ *                       their count, "pinned_vertices" their ids
  *   POST /api/undo      {}: back to the layout before the last grab,
  *                       optimize or compact (409 when there is none)
  *   POST /api/redo      {}: the layout the last undo left, bit for bit
  *                       (409 when there is none: nothing undone since
  *                       the last grab, optimize or compact)
+ *   GET  /edit_page_tools.js  the page's script for selection, pins,
+ *                       texture, the 3D view and the padding (compiled in)
+ *   GET  /three.min.js  three.js for the 3D view (compiled in from
+ *                       libjs-three; 404 when the build had none)
+ *   GET  /texture.png   the --texture image, read once at start-up (404
+ *                       when none was given); no other file is ever sent
  *   POST /api/save      {}: the layout normalized into the unit square,
  *                       proved bijective with the padding kept (exact),
  *                       written atomically to the output OBJ: the input
@@ -107,6 +116,16 @@ typedef struct edit_api {
     int port;         /* the server's port: Host and Origin checks */
     const char *page; /* the page, page_len bytes */
     size_t page_len;
+    const char *tools_js; /* the page's second script (edit_page_tools.js) */
+    size_t tools_js_len;
+    const char *three_js; /* three.js for the 3D view; three_js_len 0: not
+                             built in (libjs-three missing at build time) */
+    size_t three_js_len;
+    const unsigned char *texture; /* --texture: the PNG's bytes, texture_len
+                                     (NULL: none); read once at start-up */
+    size_t texture_len;
+    const char *texture_name; /* its path as given (shown by the page) */
+    int texture_width, texture_height;
     int nuv, nf, ncharts;
     int *FT, *chart;       /* nf by 3, nf: fixed for the mesh */
     double *uv;            /* nuv by 2: scratch for the state */

@@ -96,11 +96,12 @@ static enum MHD_Result send_response(struct MHD_Connection *c, const edit_respon
     MHD_add_response_header(r, "Cache-Control", "no-store");
     MHD_add_response_header(r, "X-Content-Type-Options", "nosniff");
     MHD_add_response_header(r, "Referrer-Policy", "no-referrer");
-    /* the page loads nothing from anywhere: its own inline script and
-     * style, requests to this server only */
+    /* the page loads nothing from anywhere else: its inline script and
+     * style, its two compiled-in scripts and the --texture image from this
+     * server, requests to this server only */
     MHD_add_response_header(r, "Content-Security-Policy",
-                            "default-src 'none'; script-src 'unsafe-inline'; "
-                            "style-src 'unsafe-inline'; connect-src 'self'; img-src data:; "
+                            "default-src 'none'; script-src 'self' 'unsafe-inline'; "
+                            "style-src 'unsafe-inline'; connect-src 'self'; img-src 'self' data:; "
                             "frame-ancestors 'none'");
     enum MHD_Result ok = MHD_queue_response(c, (unsigned)rs->status, r);
     MHD_destroy_response(r);

@@ -234,6 +234,17 @@ SCAF_API int scaf_drag_hard_pending(const scaf_drag_t *d);
 SCAF_API int scaf_drag_is_pinned(const scaf_drag_t *d, int uv);
 SCAF_API int scaf_drag_pinned_count(const scaf_drag_t *d);
 
+/* ---- padding ---------------------------------------------------------------
+ * Change the padding (as options.padding, in (0, 0.5), at least 2^-200)
+ * for every later step, compaction and output, without a new mesh. The
+ * current layout must already keep it: a padding larger than its smallest
+ * chart gap (relative to the longest side) is refused with SCAF_ERR_USAGE
+ * saying that gap, nothing changed (compaction never spreads charts).
+ * SCAF_ERR_USAGE too for no mesh, a value out of range, or a context made
+ * with padding 0 (it has no padding term to change). */
+SCAF_API scaf_status scaf_drag_set_padding(scaf_drag_t *d, double padding);
+SCAF_API double scaf_drag_padding(const scaf_drag_t *d);
+
 /* Largest distance of a handled vertex to its target (layout units); 0
  * without handles, NAN without a mesh. */
 SCAF_API double scaf_drag_max_handle_error(const scaf_drag_t *d);

@@ -419,6 +419,8 @@ SIGNATURES = {
     "scaf_drag_is_pinned": (_int, [_P, _int]),
     "scaf_drag_pinned_count": (_int, [_P]),
     "scaf_drag_max_handle_error": (ctypes.c_double, [_P]),
+    "scaf_drag_set_padding": (c_enum, [_P, ctypes.c_double]),
+    "scaf_drag_padding": (ctypes.c_double, [_P]),
     "scaf_drag_step": (c_enum, [_P, _int, PARAM_PROGRESS, ctypes.c_void_p]),
     "scaf_drag_compact": (c_enum, [_P, _int, PARAM_PROGRESS, ctypes.c_void_p]),
     "scaf_drag_iterations": (_int, [_P]),

@@ -435,6 +435,42 @@ int scaf_drag_pinned_count(const scaf_drag_t *d)
     return d && d->has_mesh ? scaf_loop_pinned_count(&d->at.loop) : 0;
 }
 
+/* ---- padding ---------------------------------------------------------------- */
+
+double scaf_drag_padding(const scaf_drag_t *d) { return d ? d->opt.padding : NAN; }
+
+scaf_status scaf_drag_set_padding(scaf_drag_t *d, double padding)
+{
+    if (!d) return SCAF_ERR_USAGE;
+    err_clear(&d->err);
+    scaf_status st = need_mesh(d);
+    if (st != SCAF_OK) return st;
+    if (!(padding >= CHART_GAP_EXACT_MIN && padding < 0.5))
+        return err_set(&d->err, SCAF_ERR_USAGE, "padding %g must be in [2^-200, 0.5)", padding);
+    if (!(d->opt.padding > 0.0))
+        return err_set(&d->err, SCAF_ERR_USAGE,
+                       "the context was made with padding 0: it has no padding to change");
+    /* the test every step passes, at the new padding, on the layout now */
+    double keep = d->at.opt.padding, g = INFINITY;
+    d->at.opt.padding = padding;
+    double need = atlas_padding_need(&d->at, d->at.loop.uv);
+    d->at.opt.padding = keep;
+    st = chart_gap_min_segments(d->at.loop.uv, d->at.seg, d->at.nseg, need, &g, NULL, &d->err);
+    if (st != SCAF_OK) return st;
+    if (!(g > need)) {
+        double side = atlas_side(&d->at);
+        return err_set(&d->err, SCAF_ERR_USAGE,
+                       "padding %g is more than the layout keeps now (its smallest chart gap is "
+                       "%.6g of the longest side, with the rounding margin): compaction never "
+                       "spreads charts; choose at most that",
+                       padding, side > 0.0 ? g / side : g);
+    }
+    d->opt.padding = padding;
+    d->at.opt.padding = padding;
+    d->out_state = 0; /* the output is certified against the padding */
+    return SCAF_OK;
+}
+
 /* The term made to match the handle set (targets of chart handles are
  * computed here, from their grab poses). */
 static scaf_status sync_handles(scaf_drag_t *d)

@@ -718,6 +718,42 @@ static void test_compact(void **state)
     scaf_drag_destroy(d);
 }
 
+/* scaf_drag_set_padding: a padding the layout does not keep is refused
+ * (nothing changes); a smaller one holds from then on: compaction packs
+ * tighter than the old padding allowed and the output is certified with
+ * the new one. No mesh, out of range, or a context of padding 0: refused. */
+static void test_set_padding(void **state)
+{
+    (void)state;
+    patches m;
+    make_patches(&m, 3);
+    scaf_drag_t *none = scaf_drag_new(NULL);
+    assert_int_equal(scaf_drag_set_padding(none, 0.001), SCAF_ERR_USAGE);
+    scaf_drag_destroy(none);
+    scaf_drag_options_t zero = scaf_drag_options_default();
+    zero.padding = 0.0;
+    scaf_drag_t *d0 = drag_on(&m, &zero);
+    assert_int_equal(scaf_drag_set_padding(d0, 0.001), SCAF_ERR_USAGE);
+    assert_non_null(strstr(scaf_drag_error(d0), "padding 0"));
+    scaf_drag_destroy(d0);
+    scaf_drag_t *d = drag_on(&m, NULL);
+    double p0 = scaf_drag_options_default().padding;
+    assert_int_equal(scaf_drag_compact(d, 30, NULL, NULL), SCAF_OK);
+    assert_int_equal(scaf_drag_set_padding(d, 0.0), SCAF_ERR_USAGE);
+    assert_int_equal(scaf_drag_set_padding(d, 0.5), SCAF_ERR_USAGE);
+    assert_int_equal(scaf_drag_set_padding(d, 0.45), SCAF_ERR_USAGE);
+    assert_non_null(strstr(scaf_drag_error(d), "smallest chart gap"));
+    assert_true(scaf_drag_padding(d) == p0);
+    assert_valid(d, p0);
+    double e0 = scaf_drag_packing_efficiency(d);
+    assert_int_equal(scaf_drag_set_padding(d, p0 / 8), SCAF_OK);
+    assert_true(scaf_drag_padding(d) == p0 / 8);
+    assert_int_equal(scaf_drag_compact(d, 30, NULL, NULL), SCAF_OK);
+    assert_valid(d, p0 / 8);
+    assert_true(scaf_drag_packing_efficiency(d) >= e0);
+    scaf_drag_destroy(d);
+}
+
 /* Measures against the test's own sums. */
 static void test_measures(void **state)
 {
@@ -854,6 +890,7 @@ int main(void)
         cmocka_unit_test(test_progress_cancels),
         cmocka_unit_test(test_start_from_input),
         cmocka_unit_test(test_compact),
+        cmocka_unit_test(test_set_padding),
         cmocka_unit_test(test_measures),
         cmocka_unit_test(test_bad_input),
     };

@@ -9,7 +9,7 @@
 // neighbour, waits until the server has answered every request (the page's
 // own counters, never a sleep), screenshots the page into WORK_DIR, shades
 // distortion (its legend: labels and bar against the page's own colour
-// scale), turns a chart (shift + drag), drags a vertex, undoes both
+// scale), turns a chart (the rotate mode), drags a vertex, undoes both
 // (the layout comes back number for number), checks the unit square and
 // the texel grid, zooms with the wheel (the point under the cursor stays
 // within a pixel), drags at that zoom (the motion asked for is the mouse's
@@ -224,9 +224,9 @@ try {
     await settled();
   }
   const c2 = await page.evaluate(() => window.scafEditor.chartPoint(2));
-  await page.keyboard.down("Shift");
+  await page.check("input[value=rotate]");  // (shift-click selects: tools/edit_page_tools.js)
   await mouseDrag([c2[0] + 30, c2[1]], [c2[0], c2[1] - 30], 6);  // a quarter turn
-  await page.keyboard.up("Shift");
+  await page.check("input[value=move]");
   const turned = await page.evaluate(() => window.scafEditor.state());
   if (JSON.stringify(turned.uv) === kept) fail("the rotation moved nothing");
   await page.check("input[value=vertex]");

@@ -310,6 +310,23 @@ static void bad_command_lines(void **state)
     assert_int_equal(test_run("%s edit %s -o x.ply 2> /dev/null", SCAF_BINARY, atlas_path), 2);
     assert_int_equal(test_run("%s edit %s 2> /dev/null", SCAF_BINARY, missing), 3);
     assert_int_equal(test_run("%s edit --help | grep -q 'Exit status:'", SCAF_BINARY), 0);
+    /* --texture: read and checked before the start; 3 naming the file */
+    char notpng[512], err[512];
+    test_tmp_path("edit_cli_notpng.png", notpng, sizeof notpng);
+    test_tmp_path("edit_cli_texture_err.txt", err, sizeof err);
+    FILE *f = fopen(notpng, "w");
+    assert_non_null(f);
+    fputs("GIF89a, not a PNG\n", f);
+    fclose(f);
+    assert_int_equal(
+        test_run("%s edit %s --texture %s 2> %s", SCAF_BINARY, atlas_path, notpng, err), 3);
+    assert_int_equal(test_run("grep -q 'texture .*edit_cli_notpng.png: not a PNG' %s", err), 0);
+    assert_int_equal(
+        test_run("%s edit %s --texture %s 2> %s", SCAF_BINARY, atlas_path, missing, err), 3);
+    assert_int_equal(test_run("grep -q 'cannot open it' %s", err), 0);
+    assert_int_equal(test_run("%s edit %s --texture 2> /dev/null", SCAF_BINARY, atlas_path), 2);
+    remove(notpng);
+    remove(err);
 }
 
 /* POST path json with the token: the status; body (may be NULL) gets the

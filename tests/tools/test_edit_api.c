@@ -367,6 +367,9 @@ static void pinned_vertex_stays(void **state)
     edit_request p = good("POST", "/api/pin", body);
     assert_int_equal(send(x, &p, &text), 200);
     assert_non_null(strstr(text, "\"pinned\": 1"));
+    char ids[64]; /* the ids too: the page draws them, also after a reload */
+    snprintf(ids, sizeof ids, "\"pinned_vertices\": [%d]", v);
+    assert_non_null(strstr(text, ids));
     free(text);
     snapshot before = snap(x);
     double x0 = chart_x(x, 2);
@@ -392,6 +395,123 @@ static void pinned_vertex_stays(void **state)
     assert_int_equal(scaf_drag_pinned_count(x->d), 0);
 }
 
+/* GET path: the status; the content type and a copy of the body. */
+static int get(fixture *x, const char *path, const char *token, const char **type, char **body,
+               size_t *len)
+{
+    edit_request rq = good("GET", path, NULL);
+    rq.token = token;
+    rq.origin = NULL; /* a script or image the page loads sends none */
+    edit_response rs;
+    edit_api_handle(&x->api, &rq, &rs);
+    *type = rs.content_type;
+    *len = rs.len;
+    *body = malloc(rs.len + 1);
+    memcpy(*body, rs.body, rs.len);
+    (*body)[rs.len] = '\0';
+    int status = rs.status;
+    edit_response_free(&rs);
+    return status;
+}
+
+/* The compiled-in scripts and the --texture image: sent with the token
+ * only, 404 saying why when the build or the command line has none; GET
+ * only; /api/mesh says which there are. */
+static void scripts_and_texture(void **state)
+{
+    fixture *x = *state;
+    const char *type;
+    char *body;
+    size_t len;
+    const char *paths[] = {"/edit_page_tools.js", "/three.min.js", "/texture.png"};
+    for (int k = 0; k < 3; k++) {
+        assert_int_equal(get(x, paths[k], TOKEN, &type, &body, &len), 404);
+        free(body);
+        assert_int_equal(get(x, paths[k], NULL, &type, &body, &len), 403);
+        free(body);
+    }
+    assert_int_equal(get(x, "/three.min.js", TOKEN, &type, &body, &len), 404);
+    assert_non_null(strstr(body, "without three.js"));
+    free(body);
+    assert_int_equal(get(x, "/api/mesh", TOKEN, &type, &body, &len), 200);
+    assert_non_null(strstr(body, "\"texture\": null"));
+    assert_non_null(strstr(body, "\"three\": false"));
+    free(body);
+    static const unsigned char png[] = {0x89, 'P', 'N', 'G', 1, 2, 3};
+    x->api.tools_js = "\"use strict\";";
+    x->api.tools_js_len = 13;
+    x->api.three_js = "var THREE;";
+    x->api.three_js_len = 10;
+    x->api.texture = png;
+    x->api.texture_len = sizeof png;
+    x->api.texture_name = "t.png";
+    x->api.texture_width = 2;
+    x->api.texture_height = 3;
+    assert_int_equal(get(x, "/edit_page_tools.js", TOKEN, &type, &body, &len), 200);
+    assert_string_equal(type, "text/javascript; charset=utf-8");
+    assert_string_equal(body, "\"use strict\";");
+    free(body);
+    assert_int_equal(get(x, "/three.min.js", TOKEN, &type, &body, &len), 200);
+    assert_string_equal(body, "var THREE;");
+    free(body);
+    assert_int_equal(get(x, "/texture.png", TOKEN, &type, &body, &len), 200);
+    assert_string_equal(type, "image/png");
+    assert_int_equal(len, sizeof png);
+    assert_memory_equal(body, png, sizeof png);
+    free(body);
+    assert_int_equal(get(x, "/texture.png", "0123456789abcdef0123456789abcdeX", &type, &body, &len),
+                     403);
+    free(body);
+    assert_int_equal(get(x, "/api/mesh", TOKEN, &type, &body, &len), 200);
+    assert_non_null(strstr(body, "\"texture\": \"t.png\", \"texture_size\": [2, 3]"));
+    assert_non_null(strstr(body, "\"three\": true"));
+    free(body);
+    edit_request post = good("POST", "/texture.png", "{}");
+    assert_int_equal(send(x, &post, NULL), 405);
+    /* nothing else is a file */
+    assert_int_equal(get(x, "/texture.png/../cmd_edit.c", TOKEN, &type, &body, &len), 404);
+    free(body);
+}
+
+/* compact's "padding": out of range 400, more than the layout keeps 409,
+ * both changing nothing; optimize takes none; a smaller one is kept by
+ * the context, the state and the save. */
+static void compact_takes_the_padding(void **state)
+{
+    fixture *x = *state;
+    char *text;
+    snapshot before = snap(x);
+    double pad0 = scaf_drag_padding(x->d);
+    const char *bad[][2] = {{"/api/compact", "{\"padding\": 0.5}"},
+                            {"/api/compact", "{\"padding\": 0}"},
+                            {"/api/compact", "{\"padding\": -0.01}"},
+                            {"/api/optimize", "{\"padding\": 0.001}"}};
+    for (int k = 0; k < 4; k++) {
+        edit_request rq = good("POST", bad[k][0], bad[k][1]);
+        assert_int_equal(send(x, &rq, NULL), 400);
+    }
+    edit_request wide = good("POST", "/api/compact", "{\"padding\": 0.4}");
+    assert_int_equal(send(x, &wide, &text), 409);
+    assert_non_null(strstr(text, "smallest chart gap"));
+    free(text);
+    snapshot after = snap(x);
+    assert_true(same(&before, &after));
+    free(after.uv);
+    assert_true(scaf_drag_padding(x->d) == pad0);
+    edit_request small = good("POST", "/api/compact", "{\"padding\": 0.001953125, \"steps\": 3}");
+    assert_int_equal(send(x, &small, &text), 200);
+    assert_non_null(strstr(text, "\"padding\": 0.001953125"));
+    free(text);
+    assert_true(scaf_drag_padding(x->d) == 0.001953125);
+    assert_true(x->api.padding == 0.001953125);
+    edit_request save = good("POST", "/api/save", "{}");
+    assert_int_equal(send(x, &save, &text), 200);
+    assert_non_null(strstr(text, "\"padding\": 0.001953125"));
+    free(text);
+    free(before.uv);
+    remove(x->out);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -399,6 +519,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(undo_with_nothing_to_undo_is_409, setup, teardown),
         cmocka_unit_test_setup_teardown(drag_undo_save, setup, teardown),
         cmocka_unit_test_setup_teardown(pinned_vertex_stays, setup, teardown),
+        cmocka_unit_test_setup_teardown(scripts_and_texture, setup, teardown),
+        cmocka_unit_test_setup_teardown(compact_takes_the_padding, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
