@@ -170,7 +170,12 @@ int main(int argc, char **argv)
     opt.settle_iterations = 10;
     opt.compact_iterations = 20;
     scaf_atlas_t *a = scaf_atlas_new(&opt);
-    if (!a) return 1;
+    if (!a) { /* out of memory, or an option out of range: the check says which */
+        char why[256] = "out of memory";
+        scaf_atlas_options_check(&opt, why, sizeof why);
+        fprintf(stderr, "%s\n", why);
+        return 1;
+    }
     int rc = 1;
     double *UV = NULL, *E = NULL;
     int *FT = NULL;

@@ -45,7 +45,12 @@ int main(void)
     scaf_options_t opt = scaf_options_default();
     opt.max_iterations = 10;
     scaf_param_t *p = scaf_param_new(&opt);
-    if (!p) return 1;
+    if (!p) { /* out of memory, or an option out of range: the check says which */
+        char why[256] = "out of memory";
+        scaf_options_check(&opt, why, sizeof why);
+        fprintf(stderr, "%s\n", why);
+        return 1;
+    }
     scaf_status st = scaf_param_set_mesh(p, V, nv, F, nf, NULL, 0, NULL);
     double e0 = scaf_param_energy(p);
     if (st == SCAF_OK) st = scaf_param_run(p, 0, on_iteration, NULL);

@@ -43,9 +43,14 @@
 extern "C" {
 #endif
 
-/* Options. Always start from scaf_atlas_options_default() so that fields
- * added later get their defaults. */
+/* Options, versioned as scaf_options_t: struct_size is the size the
+ * caller was compiled with, set by scaf_atlas_options_default(); an
+ * unknown struct_size or an option out of its documented range makes
+ * scaf_atlas_new return NULL and scaf_atlas_set_options fail with
+ * SCAF_ERR_USAGE; scaf_atlas_options_check names the field. */
 typedef struct scaf_atlas_options {
+    size_t struct_size;          /* sizeof(scaf_atlas_options_t), set by
+                                    scaf_atlas_options_default() */
     double padding;              /* minimum distance between two charts in
                                     the unit square, >= 0 and < 0.5; 0: the
                                     charts only never overlap (4.0 / 1024:
@@ -87,11 +92,17 @@ typedef struct scaf_atlas_options {
                                     input's UV seams when they cut the mesh
                                     into disks, else automatic charts: the
                                     surface segmented, each chart cut into
-                                    a disk; see scaf_seams). Added last */
+                                    a disk; see scaf_seams) */
 } scaf_atlas_options_t;
 
-/* The documented defaults above. */
+/* The documented defaults above, struct_size set. */
 SCAF_API scaf_atlas_options_t scaf_atlas_options_default(void);
+
+/* SCAF_OK when options (not NULL) would be accepted; else SCAF_ERR_USAGE
+ * and, when message is not NULL, a sentence naming the struct_size or the
+ * first field out of range (at most size bytes, NUL included). */
+SCAF_API scaf_status scaf_atlas_options_check(const scaf_atlas_options_t *options, char *message,
+                                              size_t size);
 
 /* Which phase an iteration belongs to. */
 typedef enum scaf_atlas_phase {
@@ -125,9 +136,8 @@ typedef int (*scaf_atlas_progress_fn)(const scaf_atlas_iteration_info_t *info, v
 typedef struct scaf_atlas scaf_atlas_t;
 
 /* A new context with a copy of the options (NULL: defaults). Returns NULL
- * only when out of memory. Invalid options are replaced by the defaults
- * and scaf_atlas_error says which one was wrong (use
- * scaf_atlas_set_options to get the status). */
+ * when out of memory or when the options are invalid
+ * (scaf_atlas_options_check says which field). */
 SCAF_API scaf_atlas_t *scaf_atlas_new(const scaf_atlas_options_t *options);
 
 /* Replace the options: SCAF_ERR_USAGE naming the first invalid value
@@ -200,14 +210,14 @@ SCAF_API scaf_stop_reason scaf_atlas_stop_reason(const scaf_atlas_t *a, scaf_atl
  *          NULL)
  * SCAF_ERR_USAGE without a mesh or with UV NULL; SCAF_ERR_INTERNAL (and
  * nothing copied) if the certificate fails, which is a bug. */
-SCAF_API scaf_status scaf_atlas_get_uv(scaf_atlas_t *a, double *UV, int *FT, int *chart);
+SCAF_API scaf_status scaf_atlas_get_uv(const scaf_atlas_t *a, double *UV, int *FT, int *chart);
 
 /* Of the same normalized, certified layout: the packing efficiency (total
  * chart UV area / area of the unit square) and the smallest distance
  * between two different charts (INFINITY with one chart). NAN without a
  * mesh or when the certificate fails (scaf_atlas_error says why). */
-SCAF_API double scaf_atlas_packing_efficiency(scaf_atlas_t *a);
-SCAF_API double scaf_atlas_min_chart_gap(scaf_atlas_t *a);
+SCAF_API double scaf_atlas_packing_efficiency(const scaf_atlas_t *a);
+SCAF_API double scaf_atlas_min_chart_gap(const scaf_atlas_t *a);
 
 /* The current energy E of all charts (see scaf_iteration_info_t); NAN
  * without a mesh. */
@@ -218,7 +228,7 @@ SCAF_API double scaf_atlas_energy(const scaf_atlas_t *a);
  * isometry).
  *   E  out, #charts values (scaf_atlas_chart_count)
  * SCAF_ERR_USAGE without a mesh or with E NULL; SCAF_ERR_NOMEM. */
-SCAF_API scaf_status scaf_atlas_chart_distortion(scaf_atlas_t *a, double *E);
+SCAF_API scaf_status scaf_atlas_chart_distortion(const scaf_atlas_t *a, double *E);
 
 /* The message of the last failure ("" when none). Valid until the next
  * call on a. */

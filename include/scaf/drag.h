@@ -27,7 +27,7 @@
  * dragged chart's way are pushed aside with the padding between them, in
  * a layout packed to the padding too (the output of scaf_atlas_run, whose
  * charts are squeezed below their distortion optimum): a drag there gets
- * about as far as with padding 0 (bench/RESULTS-drag.md).
+ * about as far as with padding 0.
  *
  * Units. Positions in and out (scaf_drag_get_uv, handle targets) are in
  * layout units: the mesh's 3D units divided by a power of two (exact; a
@@ -87,9 +87,14 @@ typedef enum scaf_drag_start {
                                    (settle, re-placement, compaction) */
 } scaf_drag_start;
 
-/* Options. Always start from scaf_drag_options_default() so that fields
- * added later get their defaults. */
+/* Options, versioned as scaf_options_t: struct_size is the size the
+ * caller was compiled with, set by scaf_drag_options_default(); an
+ * unknown struct_size or an option out of its documented range makes
+ * scaf_drag_new return NULL and scaf_drag_set_options fail with
+ * SCAF_ERR_USAGE; scaf_drag_options_check names the field. */
 typedef struct scaf_drag_options {
+    size_t struct_size;    /* sizeof(scaf_drag_options_t), set by
+                              scaf_drag_options_default() */
     scaf_drag_start start; /* (SCAF_DRAG_START_LAYOUT) */
     double padding;        /* minimum distance between two charts,
                               relative to the longest side of the layout's
@@ -116,19 +121,25 @@ typedef struct scaf_drag_options {
     scaf_seams seams;      /* seam source of the atlas (see scaf_seams;
                               SCAF_SEAMS_DEFAULT: the input's seams when
                               they cut the mesh into disks, else automatic
-                              charts). Added last */
+                              charts) */
 } scaf_drag_options_t;
 
-/* The documented defaults above. */
+/* The documented defaults above, struct_size set. */
 SCAF_API scaf_drag_options_t scaf_drag_options_default(void);
+
+/* SCAF_OK when options (not NULL) would be accepted; else SCAF_ERR_USAGE
+ * and, when message is not NULL, a sentence naming the struct_size or the
+ * first field out of range (at most size bytes, NUL included). */
+SCAF_API scaf_status scaf_drag_options_check(const scaf_drag_options_t *options, char *message,
+                                             size_t size);
 
 /* Opaque drag context. Not thread-safe itself; two contexts may run in
  * two threads. */
 typedef struct scaf_drag scaf_drag_t;
 
 /* A new context with a copy of the options (NULL: defaults). Returns NULL
- * only when out of memory. Invalid options are replaced by the defaults
- * and scaf_drag_error says which one was wrong. */
+ * when out of memory or when the options are invalid
+ * (scaf_drag_options_check says which field). */
 SCAF_API scaf_drag_t *scaf_drag_new(const scaf_drag_options_t *options);
 
 /* Replace the options: SCAF_ERR_USAGE naming the first invalid value
@@ -466,7 +477,7 @@ SCAF_API scaf_status scaf_drag_chart_info(const scaf_drag_t *d, int chart,
  *          chart distance of these coordinates (INFINITY with one chart)
  * SCAF_ERR_USAGE without a mesh or with UV NULL; SCAF_ERR_INTERNAL (and
  * nothing copied) when the certificate fails, which is a bug. */
-SCAF_API scaf_status scaf_drag_get_output(scaf_drag_t *d, double *UV, int *FT, int *chart,
+SCAF_API scaf_status scaf_drag_get_output(const scaf_drag_t *d, double *UV, int *FT, int *chart,
                                           double *efficiency, double *gap);
 
 /* The message of the last failure ("" when none). Valid until the next

@@ -12,6 +12,8 @@
 #ifndef SCAF_SCAF_H
 #define SCAF_SCAF_H
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -62,7 +64,7 @@ SCAF_API int scaf_set_threads(int n);
 /* on != 0: results are the same bits for every thread count (the sparse
  * factorization's tree is cut into a fixed number of bins, which the
  * threads take in turn, instead of one per thread); costs time per
- * iteration, most with one thread (bench/RESULTS-param.md, session 16).
+ * iteration, most with one thread.
  * Process-wide; applies to factorizations of patterns analyzed after the
  * call. Until called: off. */
 SCAF_API void scaf_set_deterministic(int on);
@@ -146,17 +148,13 @@ typedef enum scaf_init {
                             if rounding flips a triangle */
 } scaf_init;
 
-/* Options. Always start from scaf_options_default() so that fields added
- * later get their defaults. */
 /* How each iteration computes its step (all share the flip-free line
  * search and its exact orientation checks). */
 typedef enum scaf_solver {
     SCAF_SOLVER_AUTO = 0, /* SLIM until one iteration lowers the objective
                              by less than 1e-2 (relative), then projected
-                             Newton (measured best: bench/RESULTS-newton.md);
-                             SLIM throughout when Newton is unavailable
-                             (an energy other than symmetric Dirichlet) */
-    SCAF_SOLVER_SLIM,     /* SLIM's local/global proxy only (as before) */
+                             Newton */
+    SCAF_SOLVER_SLIM,     /* SLIM's local/global proxy only */
     SCAF_SOLVER_NEWTON    /* projected Newton from the first iteration */
 } scaf_solver;
 
@@ -169,7 +167,7 @@ typedef enum scaf_seams {
                                manifold) */
     SCAF_SEAMS_INPUT,       /* the input's UV seams (or the connected
                                components without UVs); a chart that is
-                               not a disk is an error, as before */
+                               not a disk is an error */
     SCAF_SEAMS_AUTO,        /* automatic seams, the input's UVs ignored:
                                the parametrization cuts each component
                                into one disk (handle loops, and on a
@@ -181,13 +179,20 @@ typedef enum scaf_seams {
                                as SCAF_SEAMS_AUTO */
 } scaf_seams;
 
+/* Options, versioned: struct_size is the size of the struct the caller
+ * was compiled with. Start from scaf_options_default(), which sets it and
+ * every documented default; a struct_size this library does not know (0,
+ * or another version's) and any option out of its documented range make
+ * scaf_param_new return NULL and scaf_param_set_options fail with
+ * SCAF_ERR_USAGE; scaf_options_check says which field. Options are never
+ * silently replaced. */
 typedef struct scaf_options {
+    size_t struct_size;      /* sizeof(scaf_options_t), set by
+                                scaf_options_default() */
     scaf_energy energy;      /* mesh distortion energy
                                 (SCAF_ENERGY_SYMMETRIC_DIRICHLET) */
     scaf_init init;          /* initial embedding (SCAF_INIT_MVC) */
-    int max_iterations;      /* iteration cap of scaf_param_run (200: the
-                                tolerance ends the run first on every
-                                measured mesh; bench/RESULTS-newton.md) */
+    int max_iterations;      /* iteration cap of scaf_param_run, >= 0 (200) */
     double tolerance;        /* convergence test: stop when the estimated
                                 relative distance of the minimized mesh
                                 energy to its minimum, (E - E_min) / E, is
@@ -224,13 +229,17 @@ typedef struct scaf_options {
     double step_fraction;    /* line search starts at this fraction of the
                                 largest flip-free step (0.8) */
     scaf_solver solver;      /* step computation (SCAF_SOLVER_AUTO) */
-    scaf_seams seams;        /* seam source (SCAF_SEAMS_DEFAULT); added
-                                last: the layout of the fields above is
-                                unchanged */
+    scaf_seams seams;        /* seam source (SCAF_SEAMS_DEFAULT) */
 } scaf_options_t;
 
-/* The documented defaults above. */
+/* The documented defaults above, struct_size set. */
 SCAF_API scaf_options_t scaf_options_default(void);
+
+/* SCAF_OK when options (not NULL) would be accepted; else SCAF_ERR_USAGE
+ * and, when message is not NULL, a sentence naming the struct_size or the
+ * first field out of range and its value (at most size bytes, NUL
+ * included). */
+SCAF_API scaf_status scaf_options_check(const scaf_options_t *options, char *message, size_t size);
 
 /* What one iteration did, passed to the progress callback. */
 typedef enum scaf_phase {
@@ -262,7 +271,7 @@ typedef struct scaf_iteration_info {
     int scaffold_vertices;                  /* scaffold-only vertices (box + Steiner) */
     double seconds;                         /* wall time of this iteration */
     double phase_seconds[SCAF_PHASE_COUNT]; /* split of `seconds` */
-    int solver;                             /* the step of this iteration:
+    scaf_solver solver;                     /* the step of this iteration:
                                  SCAF_SOLVER_SLIM or SCAF_SOLVER_NEWTON */
     double decrement;                       /* Newton steps: -g.p / (2 total_before), the
                                  relative decrease the model predicted (the
@@ -321,12 +330,12 @@ typedef int (*scaf_param_progress_fn)(const scaf_iteration_info_t *info, void *u
 typedef struct scaf_param scaf_param_t;
 
 /* A new context with a copy of the options (NULL: defaults). Returns NULL
- * only when out of memory. Invalid options are replaced by the defaults
- * and scaf_param_error says which one was wrong (use
- * scaf_param_set_options to get the status). */
+ * when out of memory or when the options are invalid (scaf_options_check
+ * says which field). */
 SCAF_API scaf_param_t *scaf_param_new(const scaf_options_t *options);
 
-/* Replace the options (validated: SCAF_ERR_USAGE on a bad value). Takes
+/* Replace the options (validated: SCAF_ERR_USAGE naming the field, the
+ * options then unchanged). Takes
  * effect at the next scaf_param_run; `init` only at scaf_param_set_mesh. */
 SCAF_API scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *options);
 

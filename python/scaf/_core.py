@@ -76,8 +76,10 @@ def _enum_name(value, names):
 
 def _fill(struct, options):
     """Set fields of a ctypes options struct from a dict of Python values."""
-    names = [f[0] for f in struct._fields_]
+    names = [f[0] for f in struct._fields_ if f[0] != "struct_size"]
     for key, value in options.items():
+        if key == "struct_size":
+            raise TypeError("struct_size is set by the binding")
         if key not in names:
             raise TypeError("unknown option %r; options: %s" % (key, ", ".join(names)))
         if key == "energy":
@@ -110,6 +112,8 @@ def _fill(struct, options):
 def _as_dict(struct):
     out = {}
     for key, _ in struct._fields_:
+        if key == "struct_size":  # the C version's, set by the binding
+            continue
         v = getattr(struct, key)
         if key == "energy":
             v = _enum_name(v, _lib.ENERGIES)

@@ -68,6 +68,7 @@ class Options(ctypes.Structure):
     """scaf_options_t"""
 
     _fields_ = [
+        ("struct_size", ctypes.c_size_t),  # set by the C _default() function
         ("energy", c_enum),
         ("init", c_enum),
         ("max_iterations", ctypes.c_int),
@@ -108,6 +109,7 @@ class AtlasOptions(ctypes.Structure):
     """scaf_atlas_options_t"""
 
     _fields_ = [
+        ("struct_size", ctypes.c_size_t),  # set by the C _default() function
         ("padding", ctypes.c_double),
         ("energy", c_enum),
         ("init", c_enum),
@@ -144,6 +146,7 @@ class DragOptions(ctypes.Structure):
     """scaf_drag_options_t"""
 
     _fields_ = [
+        ("struct_size", ctypes.c_size_t),  # set by the C _default() function
         ("start", c_enum),
         ("padding", ctypes.c_double),
         ("weight_ratio", ctypes.c_double),

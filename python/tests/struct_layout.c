@@ -26,6 +26,7 @@ int main(void)
     FIELD(scaf_energy_info_t, help);
     FIELD(scaf_energy_info_t, scale_offset);
     SIZE(scaf_options_t);
+    FIELD(scaf_options_t, struct_size);
     FIELD(scaf_options_t, energy);
     FIELD(scaf_options_t, init);
     FIELD(scaf_options_t, max_iterations);
@@ -56,6 +57,7 @@ int main(void)
     FIELD(scaf_iteration_info_t, criterion);
 
     SIZE(scaf_atlas_options_t);
+    FIELD(scaf_atlas_options_t, struct_size);
     FIELD(scaf_atlas_options_t, padding);
     FIELD(scaf_atlas_options_t, energy);
     FIELD(scaf_atlas_options_t, init);
@@ -82,6 +84,7 @@ int main(void)
     FIELD(scaf_atlas_iteration_info_t, loop);
 
     SIZE(scaf_drag_options_t);
+    FIELD(scaf_drag_options_t, struct_size);
     FIELD(scaf_drag_options_t, start);
     FIELD(scaf_drag_options_t, padding);
     FIELD(scaf_drag_options_t, weight_ratio);

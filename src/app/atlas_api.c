@@ -13,9 +13,11 @@
 #include "scaf/atlas.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/api_options.h"
 #include "app/atlas.h"
 #include "app/atlas_output.h"
 #include "app/param.h"
@@ -43,6 +45,7 @@ scaf_atlas_options_t scaf_atlas_options_default(void)
     atlas_options in = atlas_options_default();
     scaf_atlas_options_t o;
     memset(&o, 0, sizeof o);
+    o.struct_size = sizeof o;
     o.padding = 4.0 / 1024.0; /* as `scaf atlas`: mip levels do not bleed */
     o.energy = in.base.energy;
     o.init = in.base.init;
@@ -80,26 +83,43 @@ static atlas_options to_internal(const scaf_atlas_options_t *o)
     return in;
 }
 
-/* SCAF_OK, or SCAF_ERR_USAGE naming the first invalid field (the internal
- * check, app/atlas: one set of ranges for the API and the program). */
-static scaf_status options_check(const scaf_atlas_options_t *o, scaf_error *err)
+/* The caller's options into *out (NULL: defaults): SCAF_OK, or
+ * SCAF_ERR_USAGE naming the struct_size or the first invalid field (the
+ * internal check, app/atlas: one set of ranges for the API and the
+ * program). */
+static scaf_status options_take(scaf_atlas_options_t *out, const scaf_atlas_options_t *in,
+                                scaf_error *err)
 {
-    atlas_options in = to_internal(o);
+    scaf_atlas_options_t def = scaf_atlas_options_default();
+    scaf_status st = api_options_take(out, in, &def, sizeof def, "scaf_atlas_options_t", err);
+    if (st != SCAF_OK) return st;
+    atlas_options internal = to_internal(out);
     char msg[256];
-    if (atlas_options_check(&in, msg, sizeof msg) != SCAF_OK)
+    if (atlas_options_check(&internal, msg, sizeof msg) != SCAF_OK)
         return err_set(err, SCAF_ERR_USAGE, "invalid atlas option: %s", msg);
     return SCAF_OK;
 }
 
+scaf_status scaf_atlas_options_check(const scaf_atlas_options_t *options, char *message,
+                                     size_t size)
+{
+    scaf_error err;
+    err_clear(&err);
+    scaf_atlas_options_t o;
+    scaf_status st = options ? options_take(&o, options, &err)
+                             : err_set(&err, SCAF_ERR_USAGE, "options is NULL");
+    if (message && size) snprintf(message, size, "%s", err.message);
+    return st;
+}
+
 scaf_atlas_t *scaf_atlas_new(const scaf_atlas_options_t *options)
 {
+    scaf_atlas_options_t o;
+    if (options_take(&o, options, NULL) != SCAF_OK) return NULL;
     scaf_atlas_t *a = calloc(1, sizeof *a);
     if (!a) return NULL;
     err_clear(&a->err);
-    a->opt = scaf_atlas_options_default();
-    if (options) {
-        if (options_check(options, &a->err) == SCAF_OK) a->opt = *options;
-    }
+    a->opt = o;
     return a;
 }
 
@@ -108,9 +128,10 @@ scaf_status scaf_atlas_set_options(scaf_atlas_t *a, const scaf_atlas_options_t *
     if (!a) return SCAF_ERR_USAGE;
     err_clear(&a->err);
     if (!options) return err_set(&a->err, SCAF_ERR_USAGE, "options is NULL");
-    scaf_status st = options_check(options, &a->err);
+    scaf_atlas_options_t o;
+    scaf_status st = options_take(&o, options, &a->err);
     if (st != SCAF_OK) return st;
-    a->opt = *options;
+    a->opt = o;
     return SCAF_OK;
 }
 
@@ -275,8 +296,14 @@ double scaf_atlas_energy(const scaf_atlas_t *a)
     return a && a->has_mesh ? scaf_loop_energy(&a->at.loop) : NAN;
 }
 
-scaf_status scaf_atlas_get_uv(scaf_atlas_t *a, double *UV, int *FT, int *chart)
+/* The getters below take a const handle: they leave the layout as it is
+ * and only fill the handle's cache of the certified output and its
+ * message, which are not part of its observable state. */
+static scaf_atlas_t *cache_of(const scaf_atlas_t *a) { return (scaf_atlas_t *)a; }
+
+scaf_status scaf_atlas_get_uv(const scaf_atlas_t *ca, double *UV, int *FT, int *chart)
 {
+    scaf_atlas_t *a = cache_of(ca);
     if (!a) return SCAF_ERR_USAGE;
     err_clear(&a->err);
     if (!UV)
@@ -290,22 +317,25 @@ scaf_status scaf_atlas_get_uv(scaf_atlas_t *a, double *UV, int *FT, int *chart)
     return SCAF_OK;
 }
 
-double scaf_atlas_packing_efficiency(scaf_atlas_t *a)
+double scaf_atlas_packing_efficiency(const scaf_atlas_t *ca)
 {
+    scaf_atlas_t *a = cache_of(ca);
     if (!a) return NAN;
     err_clear(&a->err);
     return ensure_output(a) == SCAF_OK ? a->out.efficiency : NAN;
 }
 
-double scaf_atlas_min_chart_gap(scaf_atlas_t *a)
+double scaf_atlas_min_chart_gap(const scaf_atlas_t *ca)
 {
+    scaf_atlas_t *a = cache_of(ca);
     if (!a) return NAN;
     err_clear(&a->err);
     return ensure_output(a) == SCAF_OK ? a->out.gap : NAN;
 }
 
-scaf_status scaf_atlas_chart_distortion(scaf_atlas_t *a, double *E)
+scaf_status scaf_atlas_chart_distortion(const scaf_atlas_t *ca, double *E)
 {
+    scaf_atlas_t *a = cache_of(ca);
     if (!a) return SCAF_ERR_USAGE;
     err_clear(&a->err);
     if (!a->has_mesh)

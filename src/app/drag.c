@@ -16,9 +16,11 @@
 #include "scaf/drag.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/api_options.h"
 #include "app/atlas.h"
 #include "app/atlas_output.h"
 #include "app/drag_barrier.h"
@@ -39,6 +41,7 @@ scaf_drag_options_t scaf_drag_options_default(void)
     atlas_options in = atlas_options_default();
     scaf_drag_options_t o;
     memset(&o, 0, sizeof o);
+    o.struct_size = sizeof o;
     o.start = SCAF_DRAG_START_LAYOUT;
     o.padding = 4.0 / 1024.0;
     o.weight_ratio = SCAF_HANDLE_WEIGHT_DEFAULT;
@@ -61,40 +64,55 @@ static atlas_options to_atlas(const scaf_drag_options_t *o)
     return in;
 }
 
-static scaf_status options_check(const scaf_drag_options_t *o, scaf_error *err)
+/* The caller's options into *out (NULL: defaults): SCAF_OK, or
+ * SCAF_ERR_USAGE naming the struct_size or the first invalid field. */
+static scaf_status options_take(scaf_drag_options_t *out, const scaf_drag_options_t *in,
+                                scaf_error *err)
 {
+    const char *who = "invalid drag option";
+    scaf_drag_options_t def = scaf_drag_options_default();
+    scaf_status st = api_options_take(out, in, &def, sizeof def, "scaf_drag_options_t", err);
+    if (st != SCAF_OK) return st;
+    const scaf_drag_options_t *o = out;
     if (o->start != SCAF_DRAG_START_LAYOUT && o->start != SCAF_DRAG_START_INPUT &&
         o->start != SCAF_DRAG_START_ATLAS)
-        return err_set(err, SCAF_ERR_USAGE,
-                       "invalid drag option: start %d is not a scaf_drag_start", (int)o->start);
-    if (!(o->weight_ratio >= 0.0) || !isfinite(o->weight_ratio))
-        return err_set(err, SCAF_ERR_USAGE,
-                       "invalid drag option: weight_ratio %g must be a finite number >= 0",
-                       o->weight_ratio);
-    if ((int)o->seams < 0 || o->seams > SCAF_SEAMS_EXTEND)
-        return err_set(err, SCAF_ERR_USAGE, "invalid drag option: seams %d is not a scaf_seams",
-                       (int)o->seams);
-    if (o->solver != SCAF_SOLVER_AUTO && o->solver != SCAF_SOLVER_SLIM &&
+        return err_set(err, SCAF_ERR_USAGE, "%s: start %d is not a scaf_drag_start", who,
+                       (int)o->start);
+    st = api_check_real(err, who, "weight_ratio", o->weight_ratio, 0.0, INFINITY, API_OPEN_HI);
+    if (st == SCAF_OK && ((int)o->seams < 0 || o->seams > SCAF_SEAMS_EXTEND))
+        st = err_set(err, SCAF_ERR_USAGE, "%s: seams %d is not a scaf_seams", who, (int)o->seams);
+    if (st == SCAF_OK && o->solver != SCAF_SOLVER_AUTO && o->solver != SCAF_SOLVER_SLIM &&
         o->solver != SCAF_SOLVER_NEWTON)
-        return err_set(err, SCAF_ERR_USAGE, "invalid drag option: solver %d is not a scaf_solver",
-                       (int)o->solver);
-    if (o->undo_depth < 1 || o->undo_depth > 4096)
-        return err_set(err, SCAF_ERR_USAGE,
-                       "invalid drag option: undo_depth %d must be in [1, 4096]", o->undo_depth);
-    atlas_options in = to_atlas(o);
+        st =
+            err_set(err, SCAF_ERR_USAGE, "%s: solver %d is not a scaf_solver", who, (int)o->solver);
+    if (st == SCAF_OK) st = api_check_int(err, who, "undo_depth", o->undo_depth, 1, 4096);
+    if (st != SCAF_OK) return st;
+    atlas_options in_atlas = to_atlas(o);
     char msg[256];
-    if (atlas_options_check(&in, msg, sizeof msg) != SCAF_OK)
-        return err_set(err, SCAF_ERR_USAGE, "invalid drag option: %s", msg);
+    if (atlas_options_check(&in_atlas, msg, sizeof msg) != SCAF_OK)
+        return err_set(err, SCAF_ERR_USAGE, "%s: %s", who, msg);
     return SCAF_OK;
+}
+
+scaf_status scaf_drag_options_check(const scaf_drag_options_t *options, char *message, size_t size)
+{
+    scaf_error err;
+    err_clear(&err);
+    scaf_drag_options_t o;
+    scaf_status st = options ? options_take(&o, options, &err)
+                             : err_set(&err, SCAF_ERR_USAGE, "options is NULL");
+    if (message && size) snprintf(message, size, "%s", err.message);
+    return st;
 }
 
 scaf_drag_t *scaf_drag_new(const scaf_drag_options_t *options)
 {
+    scaf_drag_options_t o;
+    if (options_take(&o, options, NULL) != SCAF_OK) return NULL;
     scaf_drag_t *d = calloc(1, sizeof *d);
     if (!d) return NULL;
     err_clear(&d->err);
-    d->opt = scaf_drag_options_default();
-    if (options && options_check(options, &d->err) == SCAF_OK) d->opt = *options;
+    d->opt = o;
     return d;
 }
 
@@ -103,8 +121,9 @@ scaf_status scaf_drag_set_options(scaf_drag_t *d, const scaf_drag_options_t *opt
     if (!d) return SCAF_ERR_USAGE;
     err_clear(&d->err);
     if (!options) return err_set(&d->err, SCAF_ERR_USAGE, "options is NULL");
-    scaf_status st = options_check(options, &d->err);
-    if (st == SCAF_OK) d->opt = *options;
+    scaf_drag_options_t o;
+    scaf_status st = options_take(&o, options, &d->err);
+    if (st == SCAF_OK) d->opt = o;
     return st;
 }
 
@@ -728,9 +747,12 @@ scaf_status scaf_drag_chart_info(const scaf_drag_t *d, int chart, scaf_drag_char
 
 /* ---- output ------------------------------------------------------------------------ */
 
-scaf_status scaf_drag_get_output(scaf_drag_t *d, double *UV, int *FT, int *chart,
+scaf_status scaf_drag_get_output(const scaf_drag_t *cd, double *UV, int *FT, int *chart,
                                  double *efficiency, double *gap)
 {
+    /* const: the layout stays; only the cached certified output and the
+     * message are filled */
+    scaf_drag_t *d = (scaf_drag_t *)cd;
     if (!d) return SCAF_ERR_USAGE;
     err_clear(&d->err);
     scaf_status st = need_mesh(d);

@@ -9,6 +9,7 @@
  * stopping rules. Errors leave a message readable by scaf_param_error.
  */
 #include "app/param.h"
+#include "app/api_options.h"
 #include "app/seam_source.h"
 #include "app/uv_fans.h"
 
@@ -57,6 +58,7 @@ scaf_options_t scaf_options_default(void)
 {
     scaf_options_t o;
     memset(&o, 0, sizeof o);
+    o.struct_size = sizeof o;
     o.energy = SCAF_ENERGY_SYMMETRIC_DIRICHLET;
     o.init = SCAF_INIT_MVC; /* fewest iterations on every measured mesh: bench/RESULTS-init.md */
     o.max_iterations = 200;
@@ -129,16 +131,38 @@ scaf_status param_options_check(const scaf_options_t *o, char *msg, size_t size)
     return SCAF_ERR_USAGE;
 }
 
+/* The caller's options into *out (NULL: defaults): SCAF_OK, or
+ * SCAF_ERR_USAGE naming the struct_size or the first invalid field. */
+static scaf_status options_take(scaf_options_t *out, const scaf_options_t *in, scaf_error *err)
+{
+    scaf_options_t def = scaf_options_default();
+    scaf_status st = api_options_take(out, in, &def, sizeof def, "scaf_options_t", err);
+    if (st != SCAF_OK) return st;
+    char msg[256];
+    if (param_options_check(out, msg, sizeof msg) != SCAF_OK)
+        return err_set(err, SCAF_ERR_USAGE, "%s", msg); /* "invalid option: ..." */
+    return SCAF_OK;
+}
+
+scaf_status scaf_options_check(const scaf_options_t *options, char *message, size_t size)
+{
+    scaf_error err;
+    err_clear(&err);
+    scaf_options_t o;
+    scaf_status st = options ? options_take(&o, options, &err)
+                             : err_set(&err, SCAF_ERR_USAGE, "options is NULL");
+    if (message && size) snprintf(message, size, "%s", err.message);
+    return st;
+}
+
 scaf_param_t *scaf_param_new(const scaf_options_t *options)
 {
+    scaf_options_t o;
+    if (options_take(&o, options, NULL) != SCAF_OK) return NULL;
     scaf_param_t *p = calloc(1, sizeof *p);
     if (!p) return NULL;
-    p->opt = options ? *options : scaf_options_default();
+    p->opt = o;
     err_clear(&p->err);
-    if (param_options_check(&p->opt, p->err.message, sizeof p->err.message) != SCAF_OK) {
-        p->err.code = SCAF_ERR_USAGE;
-        p->opt = scaf_options_default();
-    }
     return p;
 }
 
@@ -147,10 +171,11 @@ scaf_status scaf_param_set_options(scaf_param_t *p, const scaf_options_t *option
     if (!p) return SCAF_ERR_USAGE;
     err_clear(&p->err);
     if (!options) return err_set(&p->err, SCAF_ERR_USAGE, "options is NULL");
-    scaf_status st = param_options_check(options, p->err.message, sizeof p->err.message);
-    if (st != SCAF_OK) return p->err.code = st;
-    p->opt = *options;
-    if (p->has_mesh) p->loop.opt = param_loop_options(options);
+    scaf_options_t o;
+    scaf_status st = options_take(&o, options, &p->err);
+    if (st != SCAF_OK) return st;
+    p->opt = o;
+    if (p->has_mesh) p->loop.opt = param_loop_options(&o);
     return SCAF_OK;
 }
 

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "app/api_options.h"
 #include "app/inflate.h"
 #include "app/surface_flow.h"
 #include "app/unit_scale.h"
@@ -176,47 +177,25 @@ scaf_flow_options_t scaf_flow_options_default(void)
     return o;
 }
 
-/* Copy the caller's options (NULL: def) into out, up to its struct_size;
- * this version knows exactly one size. */
-static scaf_status take_options(void *out, const void *in, const void *def, size_t size,
-                                const char *type, scaf_error *err)
-{
-    memcpy(out, def, size);
-    if (!in) return SCAF_OK;
-    size_t given = *(const size_t *)in;
-    if (given != size)
-        return err_set(err, SCAF_ERR_USAGE,
-                       "%s.struct_size is %zu, but this library's %s has %zu bytes: start from "
-                       "its _default() function",
-                       type, given, type, size);
-    memcpy(out, in, size);
-    return SCAF_OK;
-}
-
 static scaf_status inflate_options_check(const scaf_inflate_options_t *o, scaf_error *err)
 {
-    if (!(o->scale > 0.0) || !(o->scale <= 1e6))
-        return err_set(err, SCAF_ERR_USAGE, "inflate: scale %g must be in (0, 1e6]", o->scale);
-    if (o->iterations < 1 || o->iterations > VOLUME_MAX_STEPS)
-        return err_set(err, SCAF_ERR_USAGE, "inflate: %d iterations, expected 1..%d", o->iterations,
-                       VOLUME_MAX_STEPS);
-    if (!(o->box_scale > 1.0) || !(o->box_scale <= 1e6))
-        return err_set(err, SCAF_ERR_USAGE, "inflate: box_scale %g must be in (1, 1e6]",
-                       o->box_scale);
-    if (o->solver != SCAF_SOLVER_NEWTON && o->solver != SCAF_SOLVER_SLIM)
-        return err_set(err, SCAF_ERR_USAGE,
-                       "inflate: solver %d, expected SCAF_SOLVER_NEWTON or SCAF_SOLVER_SLIM",
-                       (int)o->solver);
-    return SCAF_OK;
+    scaf_status st = api_check_real(err, "inflate", "scale", o->scale, 0.0, 1e6, API_OPEN_LO);
+    if (st == SCAF_OK)
+        st = api_check_int(err, "inflate", "iterations", o->iterations, 1, VOLUME_MAX_STEPS);
+    if (st == SCAF_OK)
+        st = api_check_real(err, "inflate", "box_scale", o->box_scale, 1.0, 1e6, API_OPEN_LO);
+    if (st == SCAF_OK && o->solver != SCAF_SOLVER_NEWTON && o->solver != SCAF_SOLVER_SLIM)
+        st = err_set(err, SCAF_ERR_USAGE,
+                     "inflate: solver %d, expected SCAF_SOLVER_NEWTON or SCAF_SOLVER_SLIM",
+                     (int)o->solver);
+    return st;
 }
 
 static scaf_status tet_options_check(const scaf_tet_options_t *o, scaf_error *err)
 {
-    if (!(o->box_scale > 1.0) || !(o->box_scale <= 1e6))
-        return err_set(err, SCAF_ERR_USAGE, "tet: box_scale %g must be in (1, 1e6]", o->box_scale);
-    if (o->box_cells < 1 || o->box_cells > 64)
-        return err_set(err, SCAF_ERR_USAGE, "tet: box_cells %d, expected 1..64", o->box_cells);
-    return SCAF_OK;
+    scaf_status st = api_check_real(err, "tet", "box_scale", o->box_scale, 1.0, 1e6, API_OPEN_LO);
+    if (st == SCAF_OK) st = api_check_int(err, "tet", "box_cells", o->box_cells, 1, 64);
+    return st;
 }
 
 static untangle_options untangle_internal(const scaf_untangle_options_t *o)
@@ -233,22 +212,18 @@ static untangle_options untangle_internal(const scaf_untangle_options_t *o)
 
 static scaf_status untangle_options_valid(const scaf_untangle_options_t *o, scaf_error *err)
 {
-    if (o->verify != 0 && o->verify != 1)
-        return err_set(err, SCAF_ERR_USAGE, "untangle: verify %d, expected 0 or 1", o->verify);
+    if (api_check_int(err, "untangle", "verify", o->verify, 0, 1) != SCAF_OK) return SCAF_ERR_USAGE;
     untangle_options u = untangle_internal(o);
     return untangle_options_check(&u, err);
 }
 
 static scaf_status flow_options_check(const scaf_flow_options_t *o, scaf_error *err)
 {
-    if (o->steps < 1 || o->steps > VOLUME_MAX_STEPS)
-        return err_set(err, SCAF_ERR_USAGE, "flow: %d steps, expected 1..%d", o->steps,
-                       VOLUME_MAX_STEPS);
-    if (!(o->delta > 0.0) || !(o->delta <= 1e6))
-        return err_set(err, SCAF_ERR_USAGE, "flow: time step %g must be in (0, 1e6]", o->delta);
-    if (o->until_free != 0 && o->until_free != 1)
-        return err_set(err, SCAF_ERR_USAGE, "flow: until_free %d, expected 0 or 1", o->until_free);
-    return SCAF_OK;
+    scaf_status st = api_check_int(err, "flow", "steps", o->steps, 1, VOLUME_MAX_STEPS);
+    if (st == SCAF_OK)
+        st = api_check_real(err, "flow", "delta (the time step)", o->delta, 0.0, 1e6, API_OPEN_LO);
+    if (st == SCAF_OK) st = api_check_int(err, "flow", "until_free", o->until_free, 0, 1);
+    return st;
 }
 
 /* Options first (a bad option is named whatever the arrays), then the
@@ -259,7 +234,7 @@ static scaf_status flow_options_check(const scaf_flow_options_t *o, scaf_error *
         drop_result(h);                                                                            \
         err_clear(&h->err);                                                                        \
         type d_ = (def);                                                                           \
-        scaf_status s_ = take_options(&(out), (opt_in), &d_, sizeof(type), #type, &h->err);        \
+        scaf_status s_ = api_options_take(&(out), (opt_in), &d_, sizeof(type), #type, &h->err);    \
         if (s_ == SCAF_OK) s_ = check(&(out), &h->err);                                            \
         if (s_ != SCAF_OK) return s_;                                                              \
     } while (0)

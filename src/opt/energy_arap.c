@@ -113,7 +113,7 @@ static int slim_rotation2(const double *J, double s0, double s1, double *w0, dou
     return 1;
 }
 
-static void sv_hessian(int d, const double *s, double *B, double *flip, double *twist)
+static inline void sv_hessian_d(int d, const double *s, double *B, double *flip, double *twist)
 {
     double D = s[0] * s[1] * (d == 3 ? s[2] : 1.0), other[3];
     for (int i = 0; i < d; i++) /* det / s_i without a division */
@@ -130,6 +130,14 @@ static void sv_hessian(int d, const double *s, double *B, double *flip, double *
         }
     for (int i = 0; i < d; i++)
         B[i * d + i] = 2.0 + arap_barrier_curvature(D) * other[i] * other[i];
+}
+
+/* d a compile-time constant in the hot 2D case (Newton's fill), as the
+ * density's dispatch. */
+static void sv_hessian(int d, const double *s, double *B, double *flip, double *twist)
+{
+    if (d == 2) sv_hessian_d(2, s, B, flip, twist);
+    else sv_hessian_d(d, s, B, flip, twist);
 }
 
 const opt_energy_kind opt_energy_arap = {

@@ -61,7 +61,7 @@ static void slim_weights(int d, const double *s, double *w2, double *t)
     }
 }
 
-static void sv_hessian(int d, const double *s, double *B, double *flip, double *twist)
+static inline void sv_hessian_d(int d, const double *s, double *B, double *flip, double *twist)
 {
     double D = s[0] * s[1] * (d == 3 ? s[2] : 1.0), N = 0.0;
     double c = 1.0 / (d * pow(D, 2.0 / d));
@@ -77,6 +77,14 @@ static void sv_hessian(int d, const double *s, double *B, double *flip, double *
         }
     for (int i = 0; i < d; i++)
         B[i * d + i] = c * (2.0 - 8.0 / d + (4.0 / (d * d) + 2.0 / d) * N / (s[i] * s[i]));
+}
+
+/* d a compile-time constant in the hot 2D case (Newton's fill), as the
+ * density's dispatch. */
+static void sv_hessian(int d, const double *s, double *B, double *flip, double *twist)
+{
+    if (d == 2) sv_hessian_d(2, s, B, flip, twist);
+    else sv_hessian_d(d, s, B, flip, twist);
 }
 
 const opt_energy_kind opt_energy_conformal = {

@@ -73,7 +73,7 @@ static int slim_rotation2(const double *J, double s0, double s1, double *w0, dou
     return 1;
 }
 
-static void sv_hessian(int d, const double *s, double *B, double *flip, double *twist)
+static inline void sv_hessian_d(int d, const double *s, double *B, double *flip, double *twist)
 {
     for (int i = 0, k = 0; i < d; i++)
         for (int j = i + 1; j < d; j++, k++) {
@@ -87,6 +87,14 @@ static void sv_hessian(int d, const double *s, double *B, double *flip, double *
         double s2 = s[i] * s[i];
         B[i * d + i] = 2.0 + 6.0 / (s2 * s2);
     }
+}
+
+/* d a compile-time constant in the hot 2D case (Newton's fill), as the
+ * density's dispatch. */
+static void sv_hessian(int d, const double *s, double *B, double *flip, double *twist)
+{
+    if (d == 2) sv_hessian_d(2, s, B, flip, twist);
+    else sv_hessian_d(d, s, B, flip, twist);
 }
 
 const opt_energy_kind opt_energy_symmetric_dirichlet = {

@@ -856,22 +856,24 @@ static void test_bad_input(void **state)
     layout_free(&a);
     layout_free(&b);
     scaf_drag_destroy(d);
-    /* invalid options: replaced by the defaults, the message names them */
+    /* invalid options: no context, and the check names the field
+     * (tests/app/test_api_options.c tries every field) */
     scaf_drag_options_t o = scaf_drag_options_default();
+    char why[256];
     o.undo_depth = 0;
-    d = scaf_drag_new(&o);
-    assert_true(strstr(scaf_drag_error(d), "undo_depth") != NULL);
-    scaf_drag_destroy(d);
+    assert_null(scaf_drag_new(&o));
+    assert_int_equal(scaf_drag_options_check(&o, why, sizeof why), SCAF_ERR_USAGE);
+    assert_true(strstr(why, "undo_depth") != NULL);
     o = scaf_drag_options_default();
     o.padding = 0.7;
-    d = scaf_drag_new(&o);
-    assert_true(strstr(scaf_drag_error(d), "padding") != NULL);
-    scaf_drag_destroy(d);
+    assert_null(scaf_drag_new(&o));
+    assert_int_equal(scaf_drag_options_check(&o, why, sizeof why), SCAF_ERR_USAGE);
+    assert_true(strstr(why, "padding") != NULL);
     o = scaf_drag_options_default();
     o.weight_ratio = NAN;
-    d = scaf_drag_new(&o);
-    assert_true(strstr(scaf_drag_error(d), "weight_ratio") != NULL);
-    scaf_drag_destroy(d);
+    assert_null(scaf_drag_new(&o));
+    assert_int_equal(scaf_drag_options_check(&o, why, sizeof why), SCAF_ERR_USAGE);
+    assert_true(strstr(why, "weight_ratio") != NULL);
 }
 
 int main(void)

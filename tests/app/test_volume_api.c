@@ -346,7 +346,7 @@ static void bad_options_and_arrays(void **state)
     ASSERT_USAGE(scaf_untangle(h, m.V, m.nv, m.F, m.nf, &uo, NULL, NULL), "struct_size");
     scaf_flow_options_t fo = scaf_flow_options_default();
     fo.steps = 0;
-    ASSERT_USAGE(scaf_flow(h, m.V, m.nv, m.F, m.nf, &fo, NULL, NULL), "0 steps");
+    ASSERT_USAGE(scaf_flow(h, m.V, m.nv, m.F, m.nf, &fo, NULL, NULL), "steps 0");
     fo = scaf_flow_options_default();
     fo.delta = NAN;
     ASSERT_USAGE(scaf_flow(h, m.V, m.nv, m.F, m.nf, &fo, NULL, NULL), "time step");
