@@ -408,3 +408,11 @@ int cli_options_done(const cli_command_options *c, int rc)
     if (rc == CLI_OPTIONS_HELP) cli_options_help(c, stdout);
     return rc == CLI_OPTIONS_HELP || rc == CLI_OPTIONS_LISTED ? EXIT_OK : rc;
 }
+
+int cli_option_apply(const char *cmd, const cli_option *o, const char *value)
+{
+    char who[64], opt[80];
+    snprintf(who, sizeof who, "scaf%s%s", cmd[0] ? " " : "", cmd);
+    snprintf(opt, sizeof opt, "--%s", o->name ? o->name : "?");
+    return apply(who, cmd, o, opt, value);
+}

@@ -146,6 +146,12 @@ int cli_options_parse(const cli_command_options *c, int argc, char **argv);
  *   if (rc != CLI_OPTIONS_OK) return cli_options_done(&c, rc); */
 int cli_options_done(const cli_command_options *c, int rc);
 
+/* Store value as option o says (its kind, range, choices, dest), with the
+ * parser's error messages: for a CALLBACK that parses its value as another
+ * kind would (a copy of its entry with .kind and .dest changed) before
+ * acting on it. EXIT_OK, or EXIT_USAGE after the message. */
+int cli_option_apply(const char *cmd, const cli_option *o, const char *value);
+
 /* The whole --help text of the command. */
 void cli_options_help(const cli_command_options *c, FILE *out);
 

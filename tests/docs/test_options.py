@@ -29,11 +29,15 @@ import os
 import subprocess
 import sys
 
+# the page of the options every mesh-reading command shares (--input-format, --uv-set)
+SHARED_PAGES = ["docs/formats.md"]
 # command -> the docs pages that must name each of its options
 COMMANDS = {
     "": ["docs/cli.md"],  # `scaf --version` ...: the global options
     "gen": ["docs/cli.md"],
     "tet": ["docs/3d.md"],
+    "check": ["docs/check.md"],
+    "info": ["docs/param.md", "docs/formats.md"],
 }
 
 
@@ -80,7 +84,7 @@ def check_command(src, scaf, cmd, pages, errors):
         return
     helptext = run(scaf, prefix + ["--help"]).stdout
     doc = ""
-    for p in pages:
+    for p in pages + SHARED_PAGES:
         with open(os.path.join(src, p), encoding="utf-8") as f:
             doc += f.read()
     for row in rows:
