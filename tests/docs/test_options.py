@@ -38,6 +38,9 @@ COMMANDS = {
     "tet": ["docs/3d.md"],
     "check": ["docs/check.md"],
     "info": ["docs/param.md", "docs/formats.md"],
+    "flow": ["docs/3d.md"],
+    "untangle": ["docs/3d.md"],
+    "inflate": ["docs/3d.md"],
 }
 
 
