@@ -41,6 +41,7 @@ COMMANDS = {
     "flow": ["docs/3d.md"],
     "untangle": ["docs/3d.md"],
     "inflate": ["docs/3d.md"],
+    "deform": ["docs/deform.md"],
 }
 
 
