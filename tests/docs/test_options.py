@@ -42,6 +42,7 @@ COMMANDS = {
     "untangle": ["docs/3d.md"],
     "inflate": ["docs/3d.md"],
     "deform": ["docs/deform.md"],
+    "param": ["docs/param.md"],
 }
 
 
