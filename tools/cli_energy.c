@@ -33,16 +33,16 @@ static void wrap(FILE *o, const char *text, int indent, int width)
 
 void cli_energy_help(FILE *o)
 {
-    fputs("  --energy NAME          the charts' distortion energy (default: the first);\n"
-          "                         every one is infinite at det J <= 0:\n",
+    fputs("energies (--energy NAME; the first is the default; every one is infinite at\n"
+          "det J <= 0):\n",
           o);
     for (int e = 0; e < scaf_energy_count(); e++) {
         scaf_energy_info_t in;
         if (scaf_energy_info(e, &in) != SCAF_OK) continue;
-        fputs("                           ", o);
+        fputs("  ", o);
         for (const char *c = in.name; *c; c++) fputc(*c == '_' ? '-' : *c, o);
         if (in.aliases[0]) fprintf(o, " (or %s)", in.aliases);
         fputs(":\n", o);
-        wrap(o, in.help, 29, 79);
+        wrap(o, in.help, 4, 79);
     }
 }

@@ -13,8 +13,8 @@
 /* An energy's name (with '-' or '_') or alias: 1 and *out set; else 0. */
 int cli_energy_parse(const char *v, scaf_energy *out);
 
-/* The help of --energy: one entry per energy, its name (with '-'),
- * aliases and help line, aligned with the other options' text. */
+/* The list of energies for --help: one entry per energy, its name (with -),
+ * aliases and help line (after the options, in the command's notes). */
 void cli_energy_help(FILE *o);
 
 #endif /* SCAF_TOOLS_CLI_ENERGY_H */

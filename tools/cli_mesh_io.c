@@ -74,6 +74,33 @@ void cli_gltf_pieces_load(const char *cmd, const char *in, const mesh_read_info 
     free(data);
 }
 
+int cli_input_format_take(const char *cmd, const cli_option *o, const char *v)
+{
+    static const char *const names[] = {"obj", "off", "ply", "gltf", "glb", NULL};
+    static const int formats[] = {MESH_FORMAT_OBJ, MESH_FORMAT_OFF, MESH_FORMAT_PLY,
+                                  MESH_FORMAT_GLTF, MESH_FORMAT_GLTF};
+    int f = MESH_FORMAT_UNKNOWN;
+    cli_option e = *o;
+    e.kind = CLI_OPT_ENUM;
+    e.choices = names;
+    e.values = formats;
+    e.dest = &f;
+    int rc = cli_option_apply(cmd, &e, v);
+    if (rc == EXIT_OK) forced_format = (mesh_format)f;
+    return rc;
+}
+
+int cli_uv_set_take(const char *cmd, const cli_option *o, const char *v)
+{
+    int n = 0;
+    cli_option e = *o;
+    e.kind = CLI_OPT_INT;
+    e.dest = &n;
+    int rc = cli_option_apply(cmd, &e, v);
+    if (rc == EXIT_OK) gltf_set_uv_set(n);
+    return rc;
+}
+
 void cli_gltf_pieces_report(const char *cmd, const char *in, const mesh_read_info *info, int quiet,
                             const mesh *o)
 {

@@ -22,6 +22,7 @@
 #define SCAF_TOOLS_CLI_MESH_IO_H
 
 #include "base/error.h"
+#include "cli_options.h"
 #include "mesh/mesh.h"
 #include "mesh/gltf_io.h"
 #include "mesh/mesh_io.h"
@@ -32,6 +33,18 @@
     "                         its name (default: the extension, or for \"-\" (standard\n"          \
     "                         input) and unknown names the first bytes)\n"                         \
     "  --uv-set N             glTF: the TEXCOORD_N read and written (default 0)\n"
+
+/* The table entries of --input-format F and --uv-set N (tools/cli_options);
+ * as cli_input_format_option, they apply to every later read and write. */
+int cli_input_format_take(const char *cmd, const cli_option *o, const char *value);
+int cli_uv_set_take(const char *cmd, const cli_option *o, const char *value);
+#define CLI_INPUT_FORMAT_OPTIONS                                                                   \
+    CLI_CALLBACK("input-format", 0, cli_input_format_take, NULL, "F",                              \
+                 "obj, off, ply, gltf or glb: the input's format whatever its name (default: "     \
+                 "the extension, or for \"-\" (standard input) and unknown names the first "       \
+                 "bytes)"),                                                                        \
+        CLI_CALLBACK("uv-set", 0, cli_uv_set_take, NULL, "N",                                      \
+                     "glTF: the TEXCOORD_N read and written (default 0)", .min = 0, .max = 65535)
 
 /* At argv[*i] inside an argument loop: --input-format F or --uv-set N
  * taken (1, *i advanced), not one of them (0), or a usage error printed

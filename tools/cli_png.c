@@ -69,6 +69,28 @@ int cli_png_option(const char *cmd, int argc, char **argv, int *i, cli_png *p)
     return 0;
 }
 
+int cli_png_size_take(const char *cmd, const cli_option *o, const char *value)
+{
+    cli_png *p = o->dest;
+    cli_option e = *o;
+    e.kind = CLI_OPT_INT;
+    e.dest = &p->opt.size;
+    int rc = cli_option_apply(cmd, &e, value);
+    if (rc == 0) p->size_given = 1;
+    return rc;
+}
+
+int cli_png_checker_take(const char *cmd, const cli_option *o, const char *value)
+{
+    cli_png *p = o->dest;
+    p->opt.checker = CLI_PNG_DEFAULT_CHECKER;
+    if (!value) return 0;
+    cli_option e = *o;
+    e.kind = CLI_OPT_DOUBLE;
+    e.dest = &p->opt.checker;
+    return cli_option_apply(cmd, &e, value);
+}
+
 int cli_png_finish(const char *cmd, const cli_png *p)
 {
     if (!p->path && (p->opt.checker > 0.0 || p->size_given || p->plain)) {

@@ -8,6 +8,7 @@
 #define SCAF_TOOLS_CLI_PNG_H
 
 #include "app/uv_png.h"
+#include "cli_options.h"
 
 #define CLI_PNG_DEFAULT_CHECKER 20.0
 
@@ -17,6 +18,21 @@ typedef struct cli_png {
     int size_given;
     int plain; /* --png-plain: no legend, numbers or border (a texture) */
 } cli_png;
+
+/* The three options as table entries (tools/cli_options) writing into *p
+ * (a cli_png); the help of --png is the caller's (what the picture shows). */
+int cli_png_size_take(const char *cmd, const cli_option *o, const char *value);
+int cli_png_checker_take(const char *cmd, const cli_option *o, const char *value);
+#define CLI_PNG_OPTIONS(p, png_help)                                                               \
+    CLI_STRING("png", 0, &(p)->path, "FILE", png_help),                                            \
+        CLI_CALLBACK("png-size", 0, cli_png_size_take, (p), "N",                                   \
+                     "longer PNG side in pixels (16..16384, default 1024)",                        \
+                     .min = UV_PNG_MIN_SIZE, .max = UV_PNG_MAX_SIZE),                              \
+        CLI_CALLBACK("checker", 0, cli_png_checker_take, (p), "N",                                 \
+                     "PNG only (the SVG has none): shade the fill with a checkerboard on the 3D "  \
+                     "surface, N squares across the bounding-box diagonal (default 20); "          \
+                     "stretched or sheared squares show the distortion",                           \
+                     .optional = 1, .min = 1, .max = 10000)
 
 /* Defaults; unit_square as in uv_png_options. */
 void cli_png_init(cli_png *p, int unit_square);

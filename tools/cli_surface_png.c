@@ -12,6 +12,7 @@ void cli_surface_png_init(cli_surface_png *p)
     p->path = NULL;
     p->opt = surface_render_options_default();
     p->size_given = 0;
+    p->size = 0;
 }
 
 int cli_surface_png_option(const char *cmd, int argc, char **argv, int *i, cli_surface_png *p)
@@ -39,8 +40,12 @@ int cli_surface_png_option(const char *cmd, int argc, char **argv, int *i, cli_s
     return 1;
 }
 
-int cli_surface_png_finish(const char *cmd, const cli_surface_png *p)
+int cli_surface_png_finish(const char *cmd, cli_surface_png *p)
 {
+    if (p->size > 0) {
+        p->opt.width = p->opt.height = p->size;
+        p->size_given = 1;
+    }
     if (!p->path && p->size_given) {
         fprintf(stderr, "scaf %s: --png-size draws into the PNG picture: give --png FILE as well\n",
                 cmd);

@@ -6,12 +6,14 @@
 #define SCAF_TOOLS_CLI_SURFACE_PNG_H
 
 #include "app/surface_render.h"
+#include "cli_options.h"
 #include "cli_outputs.h"
 
 typedef struct cli_surface_png {
     const char *path;           /* --png FILE, or NULL */
     surface_render_options opt; /* panel size, camera */
     int size_given;
+    int size; /* --png-size from an option table (0: not given); cli_surface_png_finish applies it */
 } cli_surface_png;
 
 /* The lines of --help for the two options; WHAT says what the panels show. */
@@ -21,6 +23,14 @@ typedef struct cli_surface_png {
     "                     faces (where the surface passes through itself) in orange\n"             \
     "  --png-size N       pixels of each square panel, 16..4096 (default 512)\n"
 
+/* The two options as table entries (tools/cli_options) writing into *p. */
+#define CLI_SURFACE_PNG_OPTIONS(p, what)                                                           \
+    CLI_STRING("png", 0, &(p)->path, "FILE",                                                       \
+               "a picture: " what ",\nflat shaded, seen from the front-top-right (y up), inside "  \
+               "faces (where the surface passes through itself) in orange"),                       \
+        CLI_INT("png-size", 0, &(p)->size, "N", SURFACE_RENDER_MIN_SIZE, SURFACE_RENDER_MAX_SIZE,  \
+                "pixels of each square panel, 16..4096 (default 512)")
+
 void cli_surface_png_init(cli_surface_png *p);
 
 /* If argv[*i] is one of the options, take it (and its value, advancing
@@ -28,8 +38,9 @@ void cli_surface_png_init(cli_surface_png *p);
  * cmd and return -1 on a bad value. */
 int cli_surface_png_option(const char *cmd, int argc, char **argv, int *i, cli_surface_png *p);
 
-/* After all options: 0, or -1 after printing why (--png-size without --png). */
-int cli_surface_png_finish(const char *cmd, const cli_surface_png *p);
+/* After all options: take the table's --png-size; 0, or -1 after printing
+ * why (--png-size without --png). */
+int cli_surface_png_finish(const char *cmd, cli_surface_png *p);
 
 /* Draw the n panels into output k of outs (k < 0: nothing to do): 0, or
  * the exit status after printing why (cli_outputs_end). */

@@ -24,48 +24,32 @@
 #include "mesh/mesh_io.h"
 #include "mesh/uv_verdict.h"
 
-static void usage(FILE *out)
+static void about(FILE *out)
 {
-    fprintf(out,
-            "usage: scaf check [--json] [--3d] FILE\n"
-            "       scaf check [--json] FILE.mesh\n"
-            "\n"
-            "Checks whether the UV map of FILE (.obj with vt, .ply with texcoord or s,t,\n"
-            "optionally .gz; \"-\": the standard input) is bijective,\n"
-            "with exact arithmetic: every UV triangle counter-clockwise with nonzero area,\n"
-            "and no two triangles overlapping (boundary segments neither cross nor touch,\n"
-            "no chart inside another).\n"
-            "\n"
-            "  --json   print one JSON object (docs/reports.md; keys: schema, command,\n"
-            "           input, triangles, positive, flipped,\n"
-            "           degenerate, charts, mirrored_charts, mixed_charts, boundary_edges,\n"
-            "           boundary_loops, boundary_crossings, boundary_touchings,\n"
-            "           boundary_foldbacks, folded_edges, nonmanifold_edges, nested_loops,\n"
-            "           corner_overlaps, bijective, min_chart_gap, packing_efficiency,\n"
-            "           energy)\n"
-            "  --3d     check the 3D surface for self-intersections instead (exact\n"
-            "           triangle-triangle tests; the default for a closed surface without\n"
-            "           vt); exit 1 when two faces meet in more than the vertices or edge\n"
-            "           they share, or a face has zero area. JSON keys: faces, closed,\n"
-            "           manifold, degenerate_faces, intersecting_pairs, crossing_pairs,\n"
-            "           vertex_pairs, edge_pairs, duplicate_pairs, first_pairs,\n"
-            "           intersection_free\n"
-            "  FILE.mesh  a tetrahedral mesh (Medit): every tet must be positively\n"
-            "           oriented (exact orient3d); exit 1 when one is inverted or flat.\n"
-            "           JSON keys: tets, positive, inverted, degenerate, first_bad, valid\n"
-            "  --input-format F  obj, off, ply, gltf or glb whatever FILE's name (FILE \"-\":\n"
-            "           the standard input, its format from the first bytes by default)\n"
-            "  --help   this text\n"
-            "\n"
-            "min_chart_gap: the smallest distance between two different charts (triangles\n"
-            "sharing a UV index are one chart; null with fewer than two charts).\n"
-            "packing_efficiency: total UV area of the triangles / (longest side of the UV\n"
-            "bounding box)^2, the fraction of the square the layout fills.\n"
-            "energy: E of the map with its UVs scaled to the surface's area, the figure\n"
-            "every command reports (4 at an isometry; docs/energy.md).\n"
-            "A chart whose triangles are all clockwise is reported as mirrored; it counts\n"
-            "as flipped (the map does not preserve orientation), so it is not bijective.\n"
-            "\n");
+    fputs("Checks whether the UV map of FILE (.obj with vt, .ply with texcoord or s,t,\n"
+          "optionally .gz; \"-\": the standard input) is bijective,\n"
+          "with exact arithmetic: every UV triangle counter-clockwise with nonzero area,\n"
+          "and no two triangles overlapping (boundary segments neither cross nor touch,\n"
+          "no chart inside another). FILE.mesh, a tetrahedral mesh (Medit): every tet\n"
+          "must be positively oriented (exact orient3d); exit 1 when one is inverted or\n"
+          "flat. JSON keys: tets, positive, inverted, degenerate, first_bad, valid.\n"
+          "\n",
+          out);
+}
+
+static void after(FILE *out)
+{
+    fputs("\n"
+          "min_chart_gap: the smallest distance between two different charts (triangles\n"
+          "sharing a UV index are one chart; null with fewer than two charts).\n"
+          "packing_efficiency: total UV area of the triangles / (longest side of the UV\n"
+          "bounding box)^2, the fraction of the square the layout fills.\n"
+          "energy: E of the map with its UVs scaled to the surface's area, the figure\n"
+          "every command reports (4 at an isometry; docs/energy.md).\n"
+          "A chart whose triangles are all clockwise is reported as mirrored; it counts\n"
+          "as flipped (the map does not preserve orientation), so it is not bijective.\n"
+          "\n",
+          out);
     exit_codes_print(out);
 }
 
@@ -120,31 +104,42 @@ static void print_text(const char *path, const bij_report *r, double gap, double
 
 int cmd_check(int argc, char **argv)
 {
-    int json = 0, surface3d = 0, pr;
+    int json = 0, surface3d = 0;
     const char *path = NULL;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(argv[i], "--json")) {
-            json = 1;
-        } else if ((pr = cli_input_format_option("check", argc, argv, &i)) != 0) {
-            if (pr < 0) return EXIT_USAGE;
-        } else if (!strcmp(argv[i], "--3d") || !strcmp(argv[i], "--self-intersections")) {
-            surface3d = 1;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "scaf check: unknown option '%s'\n", argv[i]);
-            usage(stderr);
-            return EXIT_USAGE;
-        } else if (path) {
-            fprintf(stderr, "scaf check: one FILE only ('%s' and '%s')\n", path, argv[i]);
-            return EXIT_USAGE;
-        } else {
-            path = argv[i];
-        }
-    }
+    const cli_option options[] = {
+        CLI_GROUP("options:"),
+        CLI_FLAG("json", 0, &json,
+                 "print one JSON object (docs/reports.md; keys: schema, command, input, "
+                 "triangles, positive, flipped, degenerate, charts, mirrored_charts, "
+                 "mixed_charts, boundary_edges, boundary_loops, boundary_crossings, "
+                 "boundary_touchings, boundary_foldbacks, folded_edges, nonmanifold_edges, "
+                 "nested_loops, corner_overlaps, bijective, min_chart_gap, "
+                 "packing_efficiency, energy)"),
+        CLI_FLAG("3d", 0, &surface3d,
+                 "check the 3D surface for self-intersections instead (exact "
+                 "triangle-triangle tests; the default for a closed surface without vt); exit 1 "
+                 "when two faces meet in more than the vertices or edge they share, or a face "
+                 "has zero area. JSON keys: faces, closed, manifold, degenerate_faces, "
+                 "intersecting_pairs, crossing_pairs, vertex_pairs, edge_pairs, "
+                 "duplicate_pairs, first_pairs, intersection_free",
+                 .alias = "self-intersections"),
+        CLI_INPUT_FORMAT_OPTIONS,
+        CLI_OPTION_HELP,
+        {0}};
+    const cli_command_options cmd = {.cmd = "check",
+                                     .usage = "usage: scaf check [--json] [--3d] FILE\n"
+                                              "       scaf check [--json] FILE.mesh\n\n",
+                                     .about = about,
+                                     .after = after,
+                                     .options = options,
+                                     .help_column = 21,
+                                     .positionals = &path,
+                                     .max_positionals = 1,
+                                     .positional_name = "FILE"};
+    int parsed = cli_options_parse(&cmd, argc, argv);
+    if (parsed != CLI_OPTIONS_OK) return cli_options_done(&cmd, parsed);
     if (!path) {
-        usage(stderr);
+        cli_options_help(&cmd, stderr);
         return EXIT_USAGE;
     }
 

@@ -9,6 +9,7 @@
  * gives a message and the exit status of tools/exit_codes.h, and no file.
  */
 #include <math.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +18,6 @@
 #include "app/stop_reason.h"
 #include "app/uv_svg.h"
 #include "base/json_write.h"
-#include "cli_args.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_progress.h"
@@ -31,11 +31,9 @@
 #include "opt/handle_term.h"
 #include "scaf/scaf.h"
 
-static void usage(FILE *o)
+static void about(FILE *o)
 {
     fprintf(o,
-            "usage: scaf deform IN.obj --targets T.json -o OUT.obj [options]\n"
-            "\n"
             "Deforms a planar triangle mesh so that chosen vertices (handles) move towards\n"
             "target positions, with low distortion, inside a box of scaffold triangles that\n"
             "SCAF re-meshes every iteration: no triangle ever flips and the shape never\n"
@@ -63,29 +61,13 @@ static void usage(FILE *o)
             "9 naming how many; nothing is written.\n"
             "OUT: OBJ with the deformed positions as `v` (z = 0) and as `vt`.\n"
             "\n"
-            "options:\n"
-            "  -o, --output FILE      output OBJ (required)\n"
-            "  --targets FILE         the handle file (required)\n"
-            "  --iterations N         iteration cap (default 100)\n"
-            "  --frame-iterations N   iterations per waypoint of a drag (default 4)\n"
-            "  --weight R             handle weight ratio, dimensionless (default 10000; the\n"
-            "                         file's \"weight\" when given): w = R / #handles per\n"
-            "                         squared distance, against the distortion energy\n"
-            "                         (an area): scale-free\n"
-            "  --hard                 every handle's target is hard (see above)\n"
-            "  --no-remesh            keep the first scaffold's connectivity (the paper's\n"
-            "                         Figure 4 baseline: the deformation locks)\n"
-            "  --verify               check bijectivity exactly after every iteration\n"
-            "  --quiet                no summary on stderr\n"
-            "  --threads N            threads of the per-triangle work and of the\n"
-            "                         factorization (default 1)\n"
-            "  --deterministic        the same bytes for any --threads N (slower)\n"
-            "  --report FILE.json     energy (area-matched), final_energy, max_handle_error,\n"
-            "                         stop_reason, iterations (docs/reports.md)\n"
-            "  --svg FILE             picture of the deformed mesh\n"
-            "  --png FILE             the same as PNG\n"
-            "  -h, --help             this help\n" CLI_OUTPUTS_HELP "\n",
+            "\n",
             deform_options_default().stall_iterations);
+}
+
+static void after(FILE *o)
+{
+    fputs(CLI_OUTPUTS_HELP "\n", o);
     exit_codes_print(o);
 }
 
@@ -103,57 +85,52 @@ static int parse_args(int argc, char **argv, deform_args *o)
     memset(o, 0, sizeof *o);
     o->iterations = 100;
     o->frame_iterations = 4;
+    o->weight = NAN; /* not given */
     cli_png_init(&o->png, 0);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int pr = cli_png_option("deform", argc, argv, &i, &o->png);
-        if (pr < 0) return EXIT_USAGE;
-        if (pr > 0) continue;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            usage(stdout);
-            return -1;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            CLI_NEED_VALUE("deform");
-            o->out = v;
-        } else if (!strcmp(a, "--targets")) {
-            CLI_NEED_VALUE("deform");
-            o->targets = v;
-        } else if (!strcmp(a, "--report")) {
-            CLI_NEED_VALUE("deform");
-            o->report = v;
-        } else if (!strcmp(a, "--svg")) {
-            CLI_NEED_VALUE("deform");
-            o->svg = v;
-        } else if (!strcmp(a, "--iterations")) {
-            CLI_NEED_VALUE("deform");
-            if (!cli_parse_int(v, &o->iterations)) CLI_BAD_VALUE("deform");
-        } else if (!strcmp(a, "--frame-iterations")) {
-            CLI_NEED_VALUE("deform");
-            if (!cli_parse_int(v, &o->frame_iterations)) CLI_BAD_VALUE("deform");
-            if (o->frame_iterations < 1) CLI_OUT_OF_RANGE("deform", ">= 1");
-        } else if (!strcmp(a, "--weight")) {
-            CLI_NEED_VALUE("deform");
-            if (!cli_parse_double(v, &o->weight)) CLI_BAD_VALUE("deform");
-            if (o->weight < 0) CLI_OUT_OF_RANGE("deform", ">= 0");
-            o->weight_given = 1;
-        } else if (!strcmp(a, "--hard")) {
-            o->hard = 1;
-        } else if (!strcmp(a, "--no-remesh")) {
-            o->no_remesh = 1;
-        } else if (!strcmp(a, "--verify")) {
-            o->verify = 1;
-        } else if (!strcmp(a, "--quiet")) {
-            o->quiet = 1;
-        } else if (!strcmp(a, "--threads")) {
-            CLI_NEED_VALUE("deform");
-            if (!cli_parse_int(v, &o->threads)) CLI_BAD_VALUE("deform");
-            if (o->threads < 1) CLI_OUT_OF_RANGE("deform", ">= 1");
-        } else if (!strcmp(a, "--deterministic")) {
-            scaf_set_deterministic(1);
-        } else if (cli_take_input("deform", a, &o->in) != EXIT_OK) {
-            return EXIT_USAGE;
-        }
+    int deterministic = 0;
+    const cli_option options[] = {
+        CLI_GROUP("options:"),
+        CLI_STRING("output", 'o', &o->out, "FILE", "output OBJ (required)"),
+        CLI_STRING("targets", 0, &o->targets, "FILE", "the handle file (required)"),
+        CLI_INT("iterations", 0, &o->iterations, "N", 0, 100000000, "iteration cap (default 100)"),
+        CLI_INT("frame-iterations", 0, &o->frame_iterations, "N", 1, INT_MAX,
+                "iterations per waypoint of a drag (default 4)"),
+        CLI_DOUBLE("weight", 0, &o->weight, "R", 0, INFINITY,
+                   "handle weight ratio, dimensionless (default 10000; the file's \"weight\" "
+                   "when given): w = R / #handles per squared distance, against the distortion "
+                   "energy (an area): scale-free"),
+        CLI_FLAG("hard", 0, &o->hard, "every handle's target is hard (see above)"),
+        CLI_FLAG("no-remesh", 0, &o->no_remesh,
+                 "keep the first scaffold's connectivity (the paper's Figure 4 baseline: the "
+                 "deformation locks)"),
+        CLI_FLAG("verify", 0, &o->verify, "check bijectivity exactly after every iteration"),
+        CLI_FLAG("quiet", 'q', &o->quiet, "no summary on stderr"),
+        CLI_INT("threads", 0, &o->threads, "N", 1, INT_MAX,
+                "threads of the per-triangle work and of the factorization (default 1)"),
+        CLI_FLAG("deterministic", 0, &deterministic, "the same bytes for any --threads N (slower)"),
+        CLI_STRING("report", 0, &o->report, "FILE.json",
+                   "energy (area-matched), final_energy, max_handle_error, stop_reason, "
+                   "iterations (docs/reports.md)"),
+        CLI_STRING("svg", 0, &o->svg, "FILE", "picture of the deformed mesh"),
+        CLI_PNG_OPTIONS(&o->png, "the same as PNG"),
+        CLI_OPTION_HELP,
+        {0}};
+    const cli_command_options cmd = {.cmd = "deform",
+                                     .usage = "usage: scaf deform IN.obj --targets T.json -o "
+                                              "OUT.obj [options]\n\n",
+                                     .about = about,
+                                     .after = after,
+                                     .options = options,
+                                     .positionals = &o->in,
+                                     .max_positionals = 1,
+                                     .positional_name = "input"};
+    int parsed = cli_options_parse(&cmd, argc, argv);
+    if (parsed != CLI_OPTIONS_OK) {
+        int rc = cli_options_done(&cmd, parsed);
+        return rc == EXIT_OK ? -1 : rc; /* -1: help printed, exit 0 */
     }
+    o->weight_given = !isnan(o->weight);
+    if (deterministic) scaf_set_deterministic(1);
     if (!o->in || !o->out || !o->targets) {
         fprintf(stderr, "scaf deform: %s (see --help)\n",
                 !o->in        ? "missing input mesh"

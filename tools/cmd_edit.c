@@ -58,7 +58,8 @@ static void usage(FILE *o)
             "and prints its address, with a random token, on the standard output: open it\n"
             "in a browser. The page draws the atlas, each chart in its colour (optional\n"
             "checkerboard and distortion shading), with the energy E and the packing\n"
-            "efficiency. Drag a chart to move it (shift: rotate it, alt: drag one vertex):\n"
+            "efficiency. Drag a chart to move it (the rotate mode turns it, alt: drag one\n"
+            "vertex; click, shift-click or a box on empty space selects charts):\n"
             "by default it moves rigidly and the charts in its way are pushed aside by\n"
             "translations only, no chart changing shape; every frame is proved bijective\n"
             "with the padding kept (exactly). D toggles deform: SCAF iterations run here\n"
@@ -66,7 +67,8 @@ static void usage(FILE *o)
             "1.25 times its E at the grab. R, S, X (or the buttons) rotate by 90 degrees,\n"
             "scale by 1.1 (shift: the other way) and flip the selection or the chart under\n"
             "the pointer, rigidly; a flip mirrors, which no bijective layout can hold, so\n"
-            "it is refused (shift-X: applied mirrored back, i.e. as a half turn).\n"
+            "it is refused (shift-X: applied mirrored back, i.e. as a half turn).\n");
+    fprintf(o,
             "Buttons: optimize (iterations without handles),\n"
             "compact (pack tighter; E may rise by 5%% at most, the rule of `scaf atlas`),\n"
             "undo and redo (Ctrl-Z, Ctrl-Shift-Z; the history is kept here, so a reload of\n"
@@ -117,7 +119,7 @@ static void usage(FILE *o)
             "  --quiet             no messages but errors\n"
             "  -h, --help          this text\n"
             "\n");
-    /* two strings: C17 compilers need support only 4095 characters in one */
+    /* several strings: C17 compilers need support only 4095 characters in one */
     fprintf(o,
             "Output: OUT ends in .obj, or .obj.gz (gzip-compressed); it is checked before\n"
             "the start (a directory, FIFO or device, a missing or read-only folder, or the\n"
@@ -127,7 +129,8 @@ static void usage(FILE *o)
             "IN was moved) is refused, IN is never overwritten. IN is kept open: a save\n"
             "after IN was moved, deleted or replaced still keeps IN's other lines\n"
             "(normals, materials, groups, comments); when the file no longer describes\n"
-            "the mesh, save writes a plain OBJ and its note on the page says so.\n"
+            "the mesh, save writes a plain OBJ and its note on the page says so.\n");
+    fprintf(o,
             "Autosave: unsaved changes are written, a second after the last one (at most\n"
             "10 s after the first) and when the editor is stopped, to OUT's name with\n"
             ".autosave.obj instead of .obj or .obj.gz (out.obj -> out.autosave.obj): a\n"

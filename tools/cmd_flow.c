@@ -21,7 +21,6 @@
 #include "base/atomic_file.h"
 #include "base/json_write.h"
 #include "base/timer.h"
-#include "cli_args.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_progress.h"
@@ -33,43 +32,22 @@
 
 #define FLOW_MAX_STEPS 100000
 
-static void usage(FILE *out)
+static void about(FILE *out)
 {
-    fprintf(out,
-            "usage: scaf flow IN -o OUT.obj --steps N [--delta D] [--until-free] [--report "
-            "R.json]\n"
-            "                 [--png P.png [--png-size N]] [--quiet]\n"
-            "\n"
-            "Conformalized mean curvature flow (Kazhdan, Solomon, Ben-Chen 2012) of the\n"
-            "closed surface IN: it becomes rounder at every step and, after a few, free of\n"
-            "self-intersections. The surface is first moved and scaled to unit area\n"
-            "(area-weighted centroid at the origin); every step solves\n"
-            "(M - D L) U' = M U (L: cotangent Laplacian of IN, M: barycentric mass of the\n"
-            "current shape) and normalizes again. Writes the input's vertices and faces at\n"
-            "the flowed positions, in that normalized frame.\n"
-            "\n"
-            "  -o, --output FILE  the OBJ to write (nothing is left on failure)\n"
-            "  -n, --steps N      steps to run, 1..%d (with --until-free: at most N)\n"
-            "  --delta D          time step, > 0 (default 1e-3)\n"
-            "  --until-free       stop at the first step whose surface is free of\n"
-            "                     self-intersections (exact check after every step);\n"
-            "                     fail (exit 6) if none of the N steps is\n"
-            "  --report FILE      a JSON report: delta, steps done, whether the result is\n"
-            "                     free, and per step its seconds (with --until-free its\n"
-            "                     defects: intersecting face pairs + zero-area "
-            "faces)\n" CLI_SURFACE_PNG_HELP(
-                "the input and the flowed surface side by side") "  -q, --quiet        "
-                                                                 "no "
-                                                                 "per-step lines on "
-                                                                 "stderr "
-                                                                 "(step, seconds, and "
-                                                                 "with\n"
-                                                                 "                     "
-                                                                 "--until-free the "
-                                                                 "intersecting face "
-                                                                 "pairs)"
-                                                                 "\n" CLI_OUTPUTS_HELP "\n",
-            FLOW_MAX_STEPS);
+    fputs("Conformalized mean curvature flow (Kazhdan, Solomon, Ben-Chen 2012) of the\n"
+          "closed surface IN: it becomes rounder at every step and, after a few, free of\n"
+          "self-intersections. The surface is first moved and scaled to unit area\n"
+          "(area-weighted centroid at the origin); every step solves\n"
+          "(M - D L) U' = M U (L: cotangent Laplacian of IN, M: barycentric mass of the\n"
+          "current shape) and normalizes again. Writes the input's vertices and faces at\n"
+          "the flowed positions, in that normalized frame.\n"
+          "\n",
+          out);
+}
+
+static void after(FILE *out)
+{
+    fputs(CLI_OUTPUTS_HELP "\n", out);
     exit_codes_print(out);
 }
 
@@ -201,36 +179,39 @@ static int flow_main(int argc, char **argv)
     int steps = 0, until_free = 0, quiet = 0;
     cli_surface_png png;
     cli_surface_png_init(&png);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int taken = cli_surface_png_option("flow", argc, argv, &i, &png);
-        if (taken < 0) return EXIT_USAGE;
-        if (taken) continue;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            CLI_NEED_VALUE("flow");
-            out = v;
-        } else if (!strcmp(a, "-n") || !strcmp(a, "--steps")) {
-            CLI_NEED_VALUE("flow");
-            if (!cli_parse_int(v, &steps)) CLI_BAD_VALUE("flow");
-            if (steps < 1 || steps > FLOW_MAX_STEPS) CLI_OUT_OF_RANGE("flow", "in 1..100000");
-        } else if (!strcmp(a, "--delta")) {
-            CLI_NEED_VALUE("flow");
-            if (!cli_parse_double(v, &delta)) CLI_BAD_VALUE("flow");
-            if (!(delta > 0) || delta > 1e6) CLI_OUT_OF_RANGE("flow", "> 0 and <= 1e6");
-        } else if (!strcmp(a, "--report")) {
-            CLI_NEED_VALUE("flow");
-            report = v;
-        } else if (!strcmp(a, "--until-free")) {
-            until_free = 1;
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            quiet = 1;
-        } else if (cli_take_input("flow", a, &in) != EXIT_OK) {
-            return EXIT_USAGE;
-        }
-    }
+    const cli_option options[] = {
+        CLI_STRING("output", 'o', &out, "FILE", "the OBJ to write (nothing is left on failure)"),
+        CLI_INT("steps", 'n', &steps, "N", 1, FLOW_MAX_STEPS,
+                "steps to run, 1..100000 (with --until-free: at most N)"),
+        CLI_DOUBLE("delta", 0, &delta, "D", 0, 1e6, "time step, > 0 (default 1e-3)", .open_min = 1),
+        CLI_FLAG("until-free", 0, &until_free,
+                 "stop at the first step whose surface is free of self-intersections (exact "
+                 "check after every step); fail (exit 6) if none of the N steps is"),
+        CLI_STRING("report", 0, &report, "FILE",
+                   "a JSON report: delta, steps done, whether the result is free, and per step "
+                   "its seconds (with --until-free its defects: intersecting face pairs + "
+                   "zero-area faces)"),
+        CLI_SURFACE_PNG_OPTIONS(&png, "the input and the flowed surface side by side"),
+        CLI_FLAG("quiet", 'q', &quiet,
+                 "no per-step lines on stderr (step, seconds, and with --until-free the "
+                 "intersecting face pairs)"),
+        CLI_OPTION_HELP,
+        {0}};
+    const cli_command_options cmd = {.cmd = "flow",
+                                     .usage = "usage: scaf flow IN -o OUT.obj --steps N [--delta "
+                                              "D] [--until-free] [--report "
+                                              "R.json]\n"
+                                              "                 [--png P.png [--png-size N]] "
+                                              "[--quiet]\n\n",
+                                     .about = about,
+                                     .after = after,
+                                     .options = options,
+                                     .help_column = 21,
+                                     .positionals = &in,
+                                     .max_positionals = 1,
+                                     .positional_name = "input"};
+    int parsed = cli_options_parse(&cmd, argc, argv);
+    if (parsed != CLI_OPTIONS_OK) return cli_options_done(&cmd, parsed);
     if (!in || !out || !steps) {
         fprintf(stderr, "scaf flow: %s (see --help)\n",
                 !in        ? "missing the input surface"

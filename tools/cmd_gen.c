@@ -6,12 +6,12 @@
  * status: 0 written, 2 bad command line (unknown sample, size out of
  * range), 5 output not written, 7 out of memory.
  */
-#include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli_options.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "commands.h"
@@ -33,74 +33,53 @@ static void list_samples(FILE *out)
     }
 }
 
-static void usage(FILE *out)
+static void about(FILE *out)
 {
-    fprintf(out,
-            "usage: scaf gen NAME [--size N] -o FILE\n"
-            "       scaf gen --list\n"
-            "\n"
-            "Write a built-in procedural sample mesh as OBJ (with vt where the sample\n"
-            "has UVs). Deterministic: the same NAME and N give the same file. `spiral`\n"
-            "also writes the targets for `scaf deform` beside FILE: S.obj -> S.targets.json.\n"
-            "\n"
-            "options:\n"
-            "  -o, --output FILE  where to write: .obj, or .obj.gz gzip-compressed, or - for\n"
-            "                     the standard output (required); nothing is left on failure\n"
-            "  -s, --size N       resolution (see the list; default per sample)\n"
-            "  -l, --list         list the samples and their sizes\n"
-            "  -h, --help         this help\n"
-            "\n"
-            "samples:\n");
+    fputs("Write a built-in procedural sample mesh as OBJ (with vt where the sample\n"
+          "has UVs). Deterministic: the same NAME and N give the same file. `spiral`\n"
+          "also writes the targets for `scaf deform` beside FILE: S.obj -> S.targets.json.\n"
+          "\n",
+          out);
+}
+
+static void after(FILE *out)
+{
+    fprintf(out, "\nsamples:\n");
     list_samples(out);
     fprintf(out,
             "\nExit status: 0 written, 2 usage, 5 output not written, 7 out of memory,\n"
             "8 interrupted (nothing written).\n");
 }
 
-/* Strict decimal int in [1, INT_MAX]; -1 if not one. */
-static int parse_size(const char *s)
-{
-    char *end;
-    errno = 0;
-    long v = strtol(s, &end, 10);
-    if (errno || end == s || *end || v < 1 || v > INT_MAX) return -1;
-    return (int)v;
-}
-
 static int gen_main(int argc, char **argv)
 {
     const char *name = NULL, *out = NULL;
-    int size = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "--list") || !strcmp(a, "-l")) {
-            list_samples(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "-s") ||
-                   !strcmp(a, "--size")) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "scaf gen: option '%s' needs a value\n", a);
-                return EXIT_USAGE;
-            }
-            const char *val = argv[++i];
-            if (a[1] == 'o' || a[2] == 'o') {
-                out = val;
-            } else if ((size = parse_size(val)) < 0) {
-                fprintf(stderr, "scaf gen: --size needs a positive integer, got '%s'\n", val);
-                return EXIT_USAGE;
-            }
-        } else if (a[0] == '-' && a[1] != '\0') {
-            fprintf(stderr, "scaf gen: unknown option '%s' (see `scaf gen --help`)\n", a);
-            return EXIT_USAGE;
-        } else if (name) {
-            fprintf(stderr, "scaf gen: one sample NAME only ('%s' and '%s' given)\n", name, a);
-            return EXIT_USAGE;
-        } else {
-            name = a;
-        }
+    int size = 0, list = 0;
+    const cli_option options[] = {CLI_GROUP("options:"),
+                                  CLI_STRING("output", 'o', &out, "FILE",
+                                             "where to write: .obj, or .obj.gz gzip-compressed, or "
+                                             "- for the standard "
+                                             "output (required); nothing is left on failure"),
+                                  CLI_INT("size", 's', &size, "N", 1, INT_MAX,
+                                          "resolution (see the list; default per sample)"),
+                                  CLI_FLAG("list", 'l', &list, "list the samples and their sizes"),
+                                  CLI_OPTION_HELP,
+                                  {0}};
+    const cli_command_options cmd = {.cmd = "gen",
+                                     .usage = "usage: scaf gen NAME [--size N] -o FILE\n"
+                                              "       scaf gen --list\n\n",
+                                     .about = about,
+                                     .after = after,
+                                     .options = options,
+                                     .help_column = 21,
+                                     .positionals = &name,
+                                     .max_positionals = 1,
+                                     .positional_name = "sample NAME"};
+    int parsed = cli_options_parse(&cmd, argc, argv);
+    if (parsed != CLI_OPTIONS_OK) return cli_options_done(&cmd, parsed);
+    if (list) {
+        list_samples(stdout);
+        return EXIT_OK;
     }
     if (!name) {
         fprintf(stderr, "scaf gen: missing sample NAME (see `scaf gen --list`)\n");

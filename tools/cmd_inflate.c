@@ -16,13 +16,13 @@
  * failure, 7 out of memory, 8 interrupted.
  */
 #include <math.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/atomic_file.h"
 #include "base/json_write.h"
-#include "cli_args.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_progress.h"
@@ -35,49 +35,22 @@
 
 #define INFLATE_MAX_ITERATIONS 100000
 
-static void usage(FILE *out)
+static void about(FILE *out)
 {
-    scaf_inflate_options_t d = scaf_inflate_options_default();
-    fprintf(out,
-            "usage: scaf inflate IN -o OUT.obj --scale K [--iterations N] [--tets OUT.mesh]\n"
-            "                    [--report R.json] [--png P.png [--png-size N]] [--box-scale S]\n"
-            "                    [--solver slim|newton] [--threads N] [--deterministic] [--quiet]\n"
-            "\n"
-            "Grow the closed surface IN toward K times its size (scaled about its centroid)\n"
-            "inside a fixed box around it: the 3D SCAF loop, with tetrahedra filling the box\n"
-            "inside and outside the surface. The surface presses against the box and against\n"
-            "itself but never passes through either: every tet stays positively oriented\n"
-            "(checked exactly) at every iteration. Writes the input's vertices and faces at\n"
-            "the new positions. IN must be a closed manifold triangle surface free of\n"
-            "self-intersections.\n"
-            "\n"
-            "  -o, --output FILE  the OBJ to write (nothing is left on failure)\n"
-            "  -k, --scale K      the target's size factor, > 0 (< 1 shrinks)\n"
-            "  -n, --iterations N iterations, 1..%d (default 50)\n"
-            "  --threads N        threads of the per-tet work and of the factorization\n"
-            "                     (default 1)\n"
-            "  --deterministic    the same bytes for any --threads N (slower)\n"
-            "  --tets FILE        also write the final tets (MEDIT .mesh; label 1 inside\n"
-            "                     the surface, 2 outside)\n"
-            "  --report FILE      a JSON report: the box, the bounding-box diagonal before\n"
-            "                     and after, and per iteration the surface energy, step,\n"
-            "                     scaffold tets and vertices, tet quality (minimum and 5th\n"
-            "                     percentile of 6 sqrt(2) V / l_rms^3) and "
-            "seconds\n" CLI_SURFACE_PNG_HELP(
-                "the input and the inflated surface side by side") "  --box-scale S      the box: "
-                                                                   "the bounding box scaled S "
-                                                                   "times about its\n"
-                                                                   "                     centre, > "
-                                                                   "1 (default %g)\n"
-                                                                   "  --solver NAME      newton "
-                                                                   "(default: projected Newton, "
-                                                                   "falls back to SLIM\n"
-                                                                   "                     when its "
-                                                                   "step fails) or slim\n"
-                                                                   "  -q, --quiet        no "
-                                                                   "per-iteration lines on "
-                                                                   "stderr\n" CLI_OUTPUTS_HELP "\n",
-            INFLATE_MAX_ITERATIONS, d.box_scale);
+    fputs("Grow the closed surface IN toward K times its size (scaled about its centroid)\n"
+          "inside a fixed box around it: the 3D SCAF loop, with tetrahedra filling the box\n"
+          "inside and outside the surface. The surface presses against the box and against\n"
+          "itself but never passes through either: every tet stays positively oriented\n"
+          "(checked exactly) at every iteration. Writes the input's vertices and faces at\n"
+          "the new positions. IN must be a closed manifold triangle surface free of\n"
+          "self-intersections.\n"
+          "\n",
+          out);
+}
+
+static void after(FILE *out)
+{
+    fputs(CLI_OUTPUTS_HELP "\n", out);
     exit_codes_print(out);
 }
 
@@ -222,54 +195,57 @@ static int inflate_main(int argc, char **argv)
     scaf_inflate_options_t o = scaf_inflate_options_default();
     cli_surface_png png;
     cli_surface_png_init(&png);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int taken = cli_surface_png_option("inflate", argc, argv, &i, &png);
-        if (taken < 0) return EXIT_USAGE;
-        if (taken) continue;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            CLI_NEED_VALUE("inflate");
-            out = v;
-        } else if (!strcmp(a, "-k") || !strcmp(a, "--scale")) {
-            CLI_NEED_VALUE("inflate");
-            if (!cli_parse_double(v, &K)) CLI_BAD_VALUE("inflate");
-            if (!(K > 0) || K > 1e6) CLI_OUT_OF_RANGE("inflate", "> 0 and <= 1e6");
-        } else if (!strcmp(a, "-n") || !strcmp(a, "--iterations")) {
-            CLI_NEED_VALUE("inflate");
-            if (!cli_parse_int(v, &iterations)) CLI_BAD_VALUE("inflate");
-            if (iterations < 1 || iterations > INFLATE_MAX_ITERATIONS)
-                CLI_OUT_OF_RANGE("inflate", "in 1..100000");
-        } else if (!strcmp(a, "--box-scale")) {
-            CLI_NEED_VALUE("inflate");
-            if (!cli_parse_double(v, &o.box_scale)) CLI_BAD_VALUE("inflate");
-            if (!(o.box_scale > 1) || o.box_scale > 1e6)
-                CLI_OUT_OF_RANGE("inflate", "> 1 and <= 1e6");
-        } else if (!strcmp(a, "--solver")) {
-            CLI_NEED_VALUE("inflate");
-            if (!strcmp(v, "slim")) o.solver = SCAF_SOLVER_SLIM;
-            else if (!strcmp(v, "newton")) o.solver = SCAF_SOLVER_NEWTON;
-            else CLI_OUT_OF_RANGE("inflate", "slim or newton");
-        } else if (!strcmp(a, "--threads")) {
-            CLI_NEED_VALUE("inflate");
-            if (!cli_parse_int(v, &threads)) CLI_BAD_VALUE("inflate");
-            if (threads < 1) CLI_OUT_OF_RANGE("inflate", ">= 1");
-        } else if (!strcmp(a, "--deterministic")) {
-            scaf_set_deterministic(1);
-        } else if (!strcmp(a, "--tets")) {
-            CLI_NEED_VALUE("inflate");
-            tets = v;
-        } else if (!strcmp(a, "--report")) {
-            CLI_NEED_VALUE("inflate");
-            report = v;
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            quiet = 1;
-        } else if (cli_take_input("inflate", a, &in) != EXIT_OK) {
-            return EXIT_USAGE;
-        }
-    }
+    static const char *const solvers[] = {"slim", "newton", NULL};
+    static const int solver_values[] = {SCAF_SOLVER_SLIM, SCAF_SOLVER_NEWTON};
+    int solver = (int)o.solver, deterministic = 0;
+    char box_help[160];
+    snprintf(box_help, sizeof box_help,
+             "the box: the bounding box scaled S times about its centre, > 1 (default %g)",
+             o.box_scale);
+    const cli_option options[] = {
+        CLI_STRING("output", 'o', &out, "FILE", "the OBJ to write (nothing is left on failure)"),
+        CLI_DOUBLE("scale", 'k', &K, "K", 0, 1e6, "the target's size factor, > 0 (< 1 shrinks)",
+                   .open_min = 1),
+        CLI_INT("iterations", 'n', &iterations, "N", 1, INFLATE_MAX_ITERATIONS,
+                "iterations, 1..100000 (default 50)"),
+        CLI_INT("threads", 0, &threads, "N", 1, INT_MAX,
+                "threads of the per-tet work and of the factorization (default 1)"),
+        CLI_FLAG("deterministic", 0, &deterministic, "the same bytes for any --threads N (slower)"),
+        CLI_STRING("tets", 0, &tets, "FILE",
+                   "also write the final tets (MEDIT .mesh; label 1 inside the surface, 2 "
+                   "outside)"),
+        CLI_STRING("report", 0, &report, "FILE",
+                   "a JSON report: the box, the bounding-box diagonal before and after, and per "
+                   "iteration the surface energy, step, scaffold tets and vertices, tet quality "
+                   "(minimum and 5th percentile of 6 sqrt(2) V / l_rms^3) and seconds"),
+        CLI_SURFACE_PNG_OPTIONS(&png, "the input and the inflated surface side by side"),
+        CLI_DOUBLE("box-scale", 0, &o.box_scale, "S", 1, 1e6, box_help, .open_min = 1),
+        CLI_ENUM("solver", 0, &solver, "NAME", solvers,
+                 "newton (default: projected Newton, falls back to SLIM when its step fails) or "
+                 "slim",
+                 .values = solver_values),
+        CLI_FLAG("quiet", 'q', &quiet, "no per-iteration lines on stderr"),
+        CLI_OPTION_HELP,
+        {0}};
+    const cli_command_options cmd = {.cmd = "inflate",
+                                     .usage = "usage: scaf inflate IN -o OUT.obj --scale K "
+                                              "[--iterations N] [--tets OUT.mesh]\n"
+                                              "                    [--report R.json] [--png P.png "
+                                              "[--png-size N]] [--box-scale S]\n"
+                                              "                    [--solver slim|newton] "
+                                              "[--threads N] [--deterministic] "
+                                              "[--quiet]\n\n",
+                                     .about = about,
+                                     .after = after,
+                                     .options = options,
+                                     .help_column = 21,
+                                     .positionals = &in,
+                                     .max_positionals = 1,
+                                     .positional_name = "input"};
+    int parsed = cli_options_parse(&cmd, argc, argv);
+    if (parsed != CLI_OPTIONS_OK) return cli_options_done(&cmd, parsed);
+    o.solver = (scaf_solver)solver;
+    if (deterministic) scaf_set_deterministic(1);
     if (!in || !out || !(K > 0)) {
         fprintf(stderr, "scaf inflate: %s (see --help)\n",
                 !in        ? "missing the input surface"

@@ -21,11 +21,9 @@
  * could have millions of components). */
 #define INFO_MAX_LISTED 1000
 
-static void usage(FILE *out)
+static void about(FILE *out)
 {
     fprintf(out,
-            "usage: scaf info [--json] FILE\n"
-            "\n"
             "Print the topology of a mesh (.obj, .off, .ply, optionally .gz):\n"
             "vertices (those referenced by faces), faces, edges, connected components\n"
             "(faces joined through shared vertices), boundary loops (components of the\n"
@@ -44,16 +42,15 @@ static void usage(FILE *out)
             "components (the genus of their connected sum), or null as soon as one\n"
             "component's genus is undefined; `components_detail` lists each one\n"
             "(first %d components).\n"
-            "\n"
-            "options:\n"
-            "  --json     one JSON object on stdout instead of text\n"
-            "  --input-format F  obj, off, ply, gltf or glb whatever FILE's name (FILE\n"
-            "             \"-\": the standard input, its format from the first bytes)\n"
-            "  -h, --help this help\n"
-            "\n"
-            "Exit status: 0 reported (defects do not fail), 2 usage, 3 file missing or\n"
-            "malformed, 7 out of memory.\n",
+            "\n",
             INFO_MAX_LISTED);
+}
+
+static void after(FILE *out)
+{
+    fputs("\nExit status: 0 reported (defects do not fail), 2 usage, 3 file missing or\n"
+          "malformed, 7 out of memory.\n",
+          out);
 }
 
 static const char *format_name(mesh_format f)
@@ -204,29 +201,28 @@ static void print_text(FILE *out, const char *path, const mesh_read_info *ri, co
 
 int cmd_info(int argc, char **argv)
 {
-    int json = 0, pr;
+    int json = 0;
     const char *path = NULL;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(argv[i], "--json")) {
-            json = 1;
-        } else if ((pr = cli_input_format_option("info", argc, argv, &i)) != 0) {
-            if (pr < 0) return EXIT_USAGE;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "scaf info: unknown option '%s' (see `scaf info --help`)\n", argv[i]);
-            return EXIT_USAGE;
-        } else if (path) {
-            fprintf(stderr, "scaf info: one FILE only ('%s' and '%s' given)\n", path, argv[i]);
-            return EXIT_USAGE;
-        } else {
-            path = argv[i];
-        }
-    }
+    const cli_option options[] = {
+        CLI_GROUP("options:"),
+        CLI_FLAG("json", 0, &json, "one JSON object on stdout instead of text"),
+        CLI_INPUT_FORMAT_OPTIONS,
+        CLI_OPTION_HELP,
+        {0}};
+    const cli_command_options cmd = {.cmd = "info",
+                                     .usage = "usage: scaf info [--json] FILE\n\n",
+                                     .about = about,
+                                     .after = after,
+                                     .options = options,
+                                     .help_column = 21,
+                                     .positionals = &path,
+                                     .max_positionals = 1,
+                                     .positional_name = "FILE"};
+    int parsed = cli_options_parse(&cmd, argc, argv);
+    if (parsed != CLI_OPTIONS_OK) return cli_options_done(&cmd, parsed);
     if (!path) {
         fprintf(stderr, "scaf info: missing FILE\n");
-        usage(stderr);
+        cli_options_help(&cmd, stderr);
         return EXIT_USAGE;
     }
 

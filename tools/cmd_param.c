@@ -6,6 +6,7 @@
  * SVG / PNG picture and a JSON report. Bad input gives a message and the exit
  * status of tools/exit_codes.h, and no output file.
  */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,7 +21,6 @@
 #include "app/stop_reason.h"
 #include "app/uv_svg.h"
 #include "base/timer.h"
-#include "cli_args.h"
 #include "cli_energy.h"
 #include "cli_png.h"
 #include "cli_progress.h"
@@ -35,90 +35,80 @@
 #include "mesh/mesh_io.h"
 #include "scaf/scaf.h"
 
-static void usage(FILE *o)
+static void about(FILE *o)
 {
-    fprintf(o,
-            "usage: scaf param IN -o OUT.obj [options]\n"
-            "\n"
-            "Computes a bijective, low-distortion UV map (no flipped triangle, no overlap)\n"
-            "with SCAF and writes the mesh as OBJ with `vt` and `f v/vt` (the `v` lines are\n"
-            "kept). Charts: the pieces of the mesh cut along its UV seams, or the connected\n"
-            "components of a mesh without UVs. A chart that is not a disk (possibly with\n"
-            "holes) is cut open automatically (see --seams): handles along a shortest system\n"
-            "of loops, a closed piece along a tree of short seams through its points of\n"
-            "highest curvature, so any manifold mesh, closed or not, of any genus, gets one\n"
-            "chart per component (docs/seams.md).\n"
-            "\n"
-            "IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
-            "gzip-compressed (.gz); an unknown extension is recognized by the content;\n"
-            "\"-\" reads the standard input (format: --input-format, or the first bytes).\n"
-            "Polygons are fan-triangulated. UVs: OBJ vt; PLY face texcoord lists or vertex\n"
-            "s,t / u,v / texture_u,texture_v. -o OUT.ply writes a binary PLY with a\n"
-            "texcoord list per face (the corners of a seam differ).\n"
-            "\n");
-    /* two strings: one would pass the 4095 characters C17 guarantees */
-    fprintf(o,
-            "options:\n"
-            "  -o, --output FILE      output OBJ (required)\n"
-            "  --iterations N         iteration cap (default 200)\n"
-            "  --tolerance T          converged when the estimated relative distance of the\n"
-            "                         energy to its minimum, (E - E_min) / E, is below T:\n"
-            "                         the larger of the last Newton decrement and the\n"
-            "                         linear tail d rho / (1 - rho) of the last decreases d\n"
-            "                         (rho: their largest ratio over 3 iterations), judged\n"
-            "                         from the 4th iteration on (default 1e-5; 0 = no\n"
-            "                         test, see Stopping); arap, whose minimum can be\n"
-            "                         0: (E - E_min) / (E + 1), E per unit of area\n"
-            "  --solver NAME          auto (default: SLIM until one iteration lowers the\n"
-            "                         objective by less than 1e-2 relatively, then\n"
-            "                         projected Newton), slim, or newton (from the start);\n"
-            "                         for every --energy\n");
+    fputs("Computes a bijective, low-distortion UV map (no flipped triangle, no overlap)\n"
+          "with SCAF and writes the mesh as OBJ with `vt` and `f v/vt` (the `v` lines are\n"
+          "kept). Charts: the pieces of the mesh cut along its UV seams, or the connected\n"
+          "components of a mesh without UVs. A chart that is not a disk (possibly with\n"
+          "holes) is cut open automatically (see --seams): handles along a shortest system\n"
+          "of loops, a closed piece along a tree of short seams through its points of\n"
+          "highest curvature, so any manifold mesh, closed or not, of any genus, gets one\n"
+          "chart per component (docs/seams.md).\n"
+          "\n",
+          o);
+    fputs("IN: OBJ (.obj), OFF (.off) or PLY (.ply, ASCII or binary), each optionally\n"
+          "gzip-compressed (.gz); an unknown extension is recognized by the content;\n"
+          "\"-\" reads the standard input (format: --input-format, or the first bytes).\n"
+          "Polygons are fan-triangulated. UVs: OBJ vt; PLY face texcoord lists or vertex\n"
+          "s,t / u,v / texture_u,texture_v. -o OUT.ply writes a binary PLY with a\n"
+          "texcoord list per face (the corners of a seam differ).\n"
+          "\n",
+          o);
+}
+
+static void after(FILE *o)
+{
+    fputc('\n', o);
     cli_energy_help(o);
-    fprintf(o, "  --init NAME            mvc (mean-value, default), harmonic, or tutte\n");
-    fputs(CLI_SEAMS_HELP CLI_SEAMS_PNG_HELP, o);
-    fprintf(o,
-            "  --box-scale S          scaffold box = S times the UV bounding box (default 3)\n"
-            "  --lambda-ratio R       scaffold weight lambda = R * E_M / |S| (default 0.01;\n"
-            "                         a tenth of it in Newton iterations; arap: E_M + the\n"
-            "                         3D area, since E_M is about 0 at its minimum)\n"
-            "  --min-angle DEG        scaffold minimum angle (default 20)\n"
-            "  --quiet                no progress line\n" CLI_INPUT_FORMAT_HELP);
-    fprintf(o,
-            "  --threads N            threads of the per-triangle work (assembly, line\n"
-            "                         search) and of the solver's dense kernels (default:\n"
-            "                         all cores, or OPENBLAS_NUM_THREADS when set); the\n"
-            "                         same N gives the same bytes\n"
-            "  --deterministic        the same bytes for any --threads N (the\n"
-            "                         factorization's tree cut into 4 bins whatever N;\n"
-            "                         slower, most with one thread)\n"
-            "  --report FILE.json     options, per-iteration energy and time, phase split\n"
-            "  --svg FILE             picture of the UV layout shaded by distortion\n"
-            "  --svg-scaffold         also draw the scaffold in the picture\n"
-            "  --png FILE             the same picture (without scaffold) as PNG: triangles\n"
-            "                         shaded by distortion, chart boundaries outlined,\n"
-            "                         transparent outside the charts, the colour bar of\n"
-            "                         the distortion scale below (docs/param.md)\n"
-            "  --png-plain            the PNG without the colour bar\n"
-            "  --png-size N           longer PNG side in pixels (16..16384, default 1024)\n"
-            "  --checker [N]          PNG only (the SVG has none): shade the fill with a\n"
-            "                         checkerboard on the 3D surface, N squares across the\n"
-            "                         bounding-box diagonal (default 20); stretched or\n"
-            "                         sheared squares show the distortion\n"
-            "  --verify               prove the map bijective with the exact checker after\n"
-            "                         every iteration (stops with exit 70 if it ever is not)\n"
-            "  -h, --help             this text\n"
-            "\n"
-            "The energy E reported is sum_f A_f (|J_f|^2 + |J_f^-1|^2) / sum_f A_f over the\n"
-            "mesh triangles (A_f: 3D area); 4 at an isometry.\n"
-            "\n"
-            "Stopping: the run ends at the first of: --iterations done (iteration_limit);\n"
-            "the tolerance test above (converged; one slow iteration never ends the run);\n"
-            "no step lowers the energy any more, also with --tolerance 0 (zero_step:\n"
-            "converged to floating-point precision, more iterations would not change the\n"
-            "map). The reason and the last criterion are printed at the end (stop reason)\n"
-            "and in the report (stop_reason, final_criterion, per iteration criterion).\n");
+    fputs("\n"
+          "The energy E reported is sum_f A_f (|J_f|^2 + |J_f^-1|^2) / sum_f A_f over the\n"
+          "mesh triangles (A_f: 3D area); 4 at an isometry.\n"
+          "\n"
+          "Stopping: the run ends at the first of: --iterations done (iteration_limit);\n"
+          "the tolerance test above (converged; one slow iteration never ends the run);\n"
+          "no step lowers the energy any more, also with --tolerance 0 (zero_step:\n"
+          "converged to floating-point precision, more iterations would not change the\n"
+          "map). The reason and the last criterion are printed at the end (stop reason)\n"
+          "and in the report (stop_reason, final_criterion, per iteration criterion).\n",
+          o);
     fputs(CLI_OUTPUTS_HELP "\n", o);
     exit_codes_print(o);
+}
+
+/* --seams S (tools/cli_seams) into the scaf_options_t at o->dest */
+/* --energy: a name (or alias) of the library's list of energies */
+static int take_energy(const char *cmd, const cli_option *o, const char *v)
+{
+    if (cli_energy_parse(v, o->dest)) return EXIT_OK;
+    const char *names[64];
+    int n = 0;
+    for (int e = 0; e < scaf_energy_count() && n < 63; e++) {
+        scaf_energy_info_t in;
+        if (scaf_energy_info(e, &in) == SCAF_OK) names[n++] = in.name;
+    }
+    names[n] = NULL;
+    int k = 0;
+    cli_option e = *o;
+    e.kind = CLI_OPT_ENUM; /* not one of them: the common wording */
+    e.choices = names;
+    e.dest = &k;
+    (void)cli_option_apply(cmd, &e, v); /* prints the error */
+    return EXIT_USAGE;
+}
+
+static int take_seams(const char *cmd, const cli_option *o, const char *v)
+{
+    static const char *const names[] = {"input", "auto", "extend", NULL};
+    scaf_options_t *opt = o->dest;
+    if (cli_seams_parse(v, &opt->seams)) return EXIT_OK;
+    int k = 0;
+    cli_option e = *o;
+    e.kind = CLI_OPT_ENUM; /* not one of them: the common wording */
+    e.choices = names;
+    e.dest = &k;
+    (void)cli_option_apply(cmd, &e, v); /* prints the error */
+    return EXIT_USAGE;
 }
 
 typedef struct progress_state {
@@ -181,81 +171,87 @@ static int parse_args(int argc, char **argv, param_args *o)
     memset(o, 0, sizeof *o);
     o->opt = scaf_options_default();
     cli_png_init(&o->png, 0);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int pr = cli_png_option("param", argc, argv, &i, &o->png);
-        if (pr == 0) pr = cli_input_format_option("param", argc, argv, &i);
-        if (pr < 0) return EXIT_USAGE;
-        if (pr > 0) continue;
-#define NEED_VALUE() CLI_NEED_VALUE("param")
-#define BAD_VALUE() CLI_BAD_VALUE("param")
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            NEED_VALUE();
-            o->out = v;
-        } else if (!strcmp(a, "--iterations")) {
-            NEED_VALUE();
-            if (!cli_parse_int(v, &o->opt.max_iterations)) BAD_VALUE();
-        } else if (!strcmp(a, "--tolerance")) {
-            NEED_VALUE();
-            if (!cli_parse_double(v, &o->opt.tolerance)) BAD_VALUE();
-        } else if (!strcmp(a, "--solver")) {
-            NEED_VALUE();
-            if (!strcmp(v, "auto")) o->opt.solver = SCAF_SOLVER_AUTO;
-            else if (!strcmp(v, "slim")) o->opt.solver = SCAF_SOLVER_SLIM;
-            else if (!strcmp(v, "newton")) o->opt.solver = SCAF_SOLVER_NEWTON;
-            else BAD_VALUE();
-        } else if (!strcmp(a, "--energy")) {
-            NEED_VALUE();
-            if (!cli_energy_parse(v, &o->opt.energy)) BAD_VALUE();
-        } else if (!strcmp(a, "--init")) {
-            NEED_VALUE();
-            if (!strcmp(v, "tutte")) o->opt.init = SCAF_INIT_TUTTE;
-            else if (!strcmp(v, "harmonic")) o->opt.init = SCAF_INIT_HARMONIC;
-            else if (!strcmp(v, "mvc")) o->opt.init = SCAF_INIT_MVC;
-            else BAD_VALUE();
-        } else if (!strcmp(a, "--seams")) {
-            NEED_VALUE();
-            if (!cli_seams_parse(v, &o->opt.seams)) BAD_VALUE();
-        } else if (!strcmp(a, "--png-seams")) {
-            NEED_VALUE();
-            o->png_seams = v;
-        } else if (!strcmp(a, "--box-scale")) {
-            NEED_VALUE();
-            if (!cli_parse_double(v, &o->opt.box_scale)) BAD_VALUE();
-        } else if (!strcmp(a, "--lambda-ratio")) {
-            NEED_VALUE();
-            if (!cli_parse_double(v, &o->opt.lambda_ratio)) BAD_VALUE();
-        } else if (!strcmp(a, "--min-angle")) {
-            NEED_VALUE();
-            if (!cli_parse_double(v, &o->opt.min_angle_deg)) BAD_VALUE();
-        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
-            o->quiet = 1;
-        } else if (!strcmp(a, "--threads")) {
-            NEED_VALUE();
-            if (!cli_parse_int(v, &o->threads)) BAD_VALUE();
-            if (o->threads < 1) CLI_OUT_OF_RANGE("param", ">= 1");
-        } else if (!strcmp(a, "--deterministic")) {
-            scaf_set_deterministic(1);
-        } else if (!strcmp(a, "--report")) {
-            NEED_VALUE();
-            o->report = v;
-        } else if (!strcmp(a, "--svg")) {
-            NEED_VALUE();
-            o->svg = v;
-        } else if (!strcmp(a, "--svg-scaffold")) {
-            o->svg_scaffold = 1;
-        } else if (!strcmp(a, "--verify")) {
-            o->verify = 1;
-        } else if (cli_take_input("param", a, &o->in) != EXIT_OK) {
-            return EXIT_USAGE;
-        }
-#undef NEED_VALUE
-#undef BAD_VALUE
-    }
+    static const char *const solvers[] = {"auto", "slim", "newton", NULL};
+    static const int solver_values[] = {SCAF_SOLVER_AUTO, SCAF_SOLVER_SLIM, SCAF_SOLVER_NEWTON};
+    static const char *const inits[] = {"tutte", "harmonic", "mvc", NULL};
+    static const int init_values[] = {SCAF_INIT_TUTTE, SCAF_INIT_HARMONIC, SCAF_INIT_MVC};
+    int solver = (int)o->opt.solver, init = (int)o->opt.init;
+    int deterministic = 0;
+    /* the ranges of the library's options: param_options_check (below) */
+    const cli_option options[] = {
+        CLI_GROUP("options:"),
+        CLI_STRING("output", 'o', &o->out, "FILE", "output OBJ (required)"),
+        CLI_INT("iterations", 0, &o->opt.max_iterations, "N", 0, 100000000,
+                "iteration cap (default 200)"),
+        CLI_DOUBLE("tolerance", 0, &o->opt.tolerance, "T", 0, 0,
+                   "converged when the estimated relative distance of the energy to its "
+                   "minimum, (E - E_min) / E, is below T: the larger of the last Newton "
+                   "decrement and the linear tail d rho / (1 - rho) of the last decreases d "
+                   "(rho: their largest ratio over 3 iterations), judged from the 4th iteration "
+                   "on (default 1e-5; 0 = no test, see Stopping); arap, whose minimum can be 0: "
+                   "(E - E_min) / (E + 1), E per unit of area"),
+        CLI_ENUM("solver", 0, &solver, "NAME", solvers,
+                 "auto (default: SLIM until one iteration lowers the objective by less than "
+                 "1e-2 relatively, then projected Newton), slim, or newton (from the start); for "
+                 "every --energy",
+                 .values = solver_values),
+        CLI_CALLBACK("energy", 0, take_energy, &o->opt.energy, "NAME",
+                     "the charts' distortion energy (default symmetric-dirichlet; the list: "
+                     "energies, below)"),
+        CLI_ENUM("init", 0, &init, "NAME", inits, "mvc (mean-value, default), harmonic, or tutte",
+                 .values = init_values),
+        CLI_CALLBACK("seams", 0, take_seams, &o->opt, "S",
+                     "where the charts are cut: input (the vt seams; each chart must be a disk, "
+                     "possibly with holes), auto (automatic seams, the vt ignored), extend (the vt "
+                     "seams plus cuts where a chart is not a disk); default: input when the vt "
+                     "cut the mesh into disks, else auto"),
+        CLI_STRING("png-seams", 0, &o->png_seams, "FILE",
+                   "the 3D surface from the front and from the back, each chart in its own "
+                   "colour, the seams drawn dark"),
+        CLI_DOUBLE("box-scale", 0, &o->opt.box_scale, "S", 0, 0,
+                   "scaffold box = S times the UV bounding box (default 3)"),
+        CLI_DOUBLE("lambda-ratio", 0, &o->opt.lambda_ratio, "R", 0, 0,
+                   "scaffold weight lambda = R * E_M / |S| (default 0.01; a tenth of it in "
+                   "Newton iterations; arap: E_M + the 3D area, since E_M is about 0 at its "
+                   "minimum)"),
+        CLI_DOUBLE("min-angle", 0, &o->opt.min_angle_deg, "DEG", 0, 0,
+                   "scaffold minimum angle (default 20)"),
+        CLI_FLAG("quiet", 'q', &o->quiet, "no progress line"),
+        CLI_INPUT_FORMAT_OPTIONS,
+        CLI_INT("threads", 0, &o->threads, "N", 1, INT_MAX,
+                "threads of the per-triangle work (assembly, line search) and of the solver's "
+                "dense kernels (default: all cores, or OPENBLAS_NUM_THREADS when set); the same "
+                "N gives the same bytes"),
+        CLI_FLAG("deterministic", 0, &deterministic,
+                 "the same bytes for any --threads N (the factorization's tree cut into 4 bins "
+                 "whatever N; slower, most with one thread)"),
+        CLI_STRING("report", 0, &o->report, "FILE.json",
+                   "options, per-iteration energy and time, phase split"),
+        CLI_STRING("svg", 0, &o->svg, "FILE", "picture of the UV layout shaded by distortion"),
+        CLI_FLAG("svg-scaffold", 0, &o->svg_scaffold, "also draw the scaffold in the picture"),
+        CLI_PNG_OPTIONS(&o->png,
+                        "the same picture (without scaffold) as PNG: triangles shaded by "
+                        "distortion, chart boundaries outlined, transparent outside the charts, "
+                        "the colour bar of the distortion scale below (docs/param.md)"),
+        CLI_FLAG("png-plain", 0, &o->png.plain, "the PNG without the colour bar"),
+        CLI_FLAG("verify", 0, &o->verify,
+                 "prove the map bijective with the exact checker after every iteration (stops "
+                 "with exit 70 if it ever is not)"),
+        CLI_OPTION_HELP,
+        {0}};
+    const cli_command_options cmd = {.cmd = "param",
+                                     .usage = "usage: scaf param IN -o OUT.obj [options]\n\n",
+                                     .about = about,
+                                     .after = after,
+                                     .options = options,
+                                     .positionals = &o->in,
+                                     .max_positionals = 1,
+                                     .positional_name = "input"};
+    int parsed = cli_options_parse(&cmd, argc, argv);
+    if (parsed != CLI_OPTIONS_OK) return cli_options_done(&cmd, parsed);
+    o->opt.solver = (scaf_solver)solver;
+    o->opt.init = (scaf_init)init;
+    if (deterministic) scaf_set_deterministic(1);
     if (!o->in || !o->out) {
         fprintf(stderr, "scaf param: %s (see --help)\n",
                 !o->in ? "no input file" : "no output file: use -o OUT.obj");

@@ -14,31 +14,28 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli_args.h"
 #include "cli_mesh_io.h"
+#include "cli_options.h"
 #include "cli_outputs.h"
 #include "cli_signal.h"
 #include "exit_codes.h"
 #include "mesh/tet_medit.h"
 #include "scaf/volume.h"
 
-static void usage(FILE *out)
+static void about(FILE *out)
 {
-    fprintf(out,
-            "usage: scaf tet IN -o OUT.mesh [--box-scale S] [--box-cells N] [--quiet]\n"
-            "\n"
-            "Tetrahedralize the space inside a box around the closed surface IN with\n"
-            "TetGen, keeping every surface triangle (no point added on the surface or the\n"
-            "box), and check the result exactly: every tet positively oriented, every\n"
-            "surface triangle a face of one tet inside and one outside. Writes a Medit\n"
-            ".mesh: tet reference 1 inside the surface, 2 outside.\n"
-            "\n"
-            "  -o, --output FILE  the .mesh to write (nothing is left on failure)\n"
-            "  --box-scale S      box = bounding box scaled S times about its centre\n"
-            "                     (default 3, > 1)\n"
-            "  --box-cells N      squares per box side edge, 1..64 (default 8)\n"
-            "  -q, --quiet        no summary on stderr\n"
-            "\n");
+    fputs("Tetrahedralize the space inside a box around the closed surface IN with\n"
+          "TetGen, keeping every surface triangle (no point added on the surface or the\n"
+          "box), and check the result exactly: every tet positively oriented, every\n"
+          "surface triangle a face of one tet inside and one outside. Writes a Medit\n"
+          ".mesh: tet reference 1 inside the surface, 2 outside.\n"
+          "\n",
+          out);
+}
+
+static void after(FILE *out)
+{
+    fputc('\n', out);
     exit_codes_print(out);
 }
 
@@ -47,26 +44,27 @@ static int tet_main(int argc, char **argv)
     const char *in = NULL, *out = NULL;
     double scale = 3;
     int cells = 8, quiet = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            CLI_NEED_VALUE("tet");
-            out = v;
-        } else if (!strcmp(a, "--box-scale")) {
-            CLI_NEED_VALUE("tet");
-            if (!cli_parse_double(v, &scale) || !(scale > 1) || scale > 1e6) CLI_BAD_VALUE("tet");
-        } else if (!strcmp(a, "--box-cells")) {
-            CLI_NEED_VALUE("tet");
-            if (!cli_parse_int(v, &cells) || cells < 1 || cells > 64) CLI_BAD_VALUE("tet");
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            quiet = 1;
-        } else if (cli_take_input("tet", a, &in) != EXIT_OK) {
-            return EXIT_USAGE;
-        }
-    }
+    const cli_option options[] = {
+        CLI_STRING("output", 'o', &out, "FILE", "the .mesh to write (nothing is left on failure)"),
+        CLI_DOUBLE("box-scale", 0, &scale, "S", 1, 1e6,
+                   "box = bounding box scaled S times about its centre (default 3, > 1)",
+                   .open_min = 1),
+        CLI_INT("box-cells", 0, &cells, "N", 1, 64, "squares per box side edge, 1..64 (default 8)"),
+        CLI_FLAG("quiet", 'q', &quiet, "no summary on stderr"),
+        CLI_OPTION_HELP,
+        {0}};
+    const cli_command_options cmd = {.cmd = "tet",
+                                     .usage = "usage: scaf tet IN -o OUT.mesh [--box-scale S] "
+                                              "[--box-cells N] [--quiet]\n\n",
+                                     .about = about,
+                                     .after = after,
+                                     .options = options,
+                                     .help_column = 21,
+                                     .positionals = &in,
+                                     .max_positionals = 1,
+                                     .positional_name = "input"};
+    int parsed = cli_options_parse(&cmd, argc, argv);
+    if (parsed != CLI_OPTIONS_OK) return cli_options_done(&cmd, parsed);
     if (!in || !out) {
         fprintf(stderr, "scaf tet: %s\n", in ? "missing -o OUT.mesh" : "missing the input surface");
         return EXIT_USAGE;

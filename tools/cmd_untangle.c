@@ -20,7 +20,6 @@
 #include "base/atomic_file.h"
 #include "base/json_write.h"
 #include "base/timer.h"
-#include "cli_args.h"
 #include "cli_mesh_io.h"
 #include "cli_outputs.h"
 #include "cli_progress.h"
@@ -30,50 +29,26 @@
 #include "mesh/mesh_io.h"
 #include "scaf/volume.h"
 
-static void usage(FILE *out)
+static void about(FILE *out)
 {
-    scaf_untangle_options_t d = scaf_untangle_options_default();
-    fprintf(out,
-            "usage: scaf untangle IN -o OUT.obj [--iterations N] [--tolerance T] [--anchor W]\n"
-            "                     [--flow-steps N] [--delta D] [--verify] [--report R.json]\n"
-            "                     [--png P.png [--png-size N]] [--quiet]\n"
-            "\n"
-            "Remove the self-intersections of the closed genus-0 surface IN (Figure 9 of\n"
-            "the SCAF paper). First conformalized mean curvature flow rounds it, step by\n"
-            "step, until the exact checker proves it free of self-intersections; then the\n"
-            "3D SCAF loop pulls it back toward IN: tets fill a box around the surface,\n"
-            "inside and outside, a surface ARAP term pulls toward IN's shape (rotations\n"
-            "re-fitted every iteration), an anchor toward IN's positions, and no tet may\n"
-            "ever invert (each iteration local flips and edge and face removals reshape\n"
-            "the worst scaffold tets), so the surface can touch itself but never pass\n"
-            "through. Writes IN's vertices and faces at the positions of lowest energy.\n"
-            "An input already free is written unchanged. Genus > 0 is refused: the flow\n"
-            "thins a handle into a ring instead of rounding it.\n"
-            "\n"
-            "  -o, --output FILE  the OBJ to write (nothing is left on failure)\n"
-            "  -n, --iterations N at most N iterations of the flow back (default %d)\n"
-            "  --tolerance T      the flow back stops when %d iterations lowered the\n"
-            "                     lowest energy so far by at most T times it, T in [0, 1)\n"
-            "                     (default %g)\n"
-            "  --anchor W         weight of the pull of every vertex toward its input\n"
-            "                     position, >= 0 (default %g; 0: ARAP alone, which lets\n"
-            "                     the whole surface drift)\n"
-            "  --flow-steps N     at most N flow steps; fail (exit 6) if the surface is\n"
-            "                     still not free (default %d)\n"
-            "  --delta D          flow time step on the unit-area surface (default %g)\n"
-            "  --verify           prove the surface free of self-intersections after every\n"
-            "                     iteration too (exact; exit 70 if it ever is not)\n",
-            d.iterations, SCAF_UNTANGLE_WINDOW, d.tolerance, d.anchor, d.flow_steps, d.delta);
-    fputs("  --report FILE      a JSON report: the flow steps (seconds, intersecting\n"
-          "                     pairs, distance) and per iteration the surface energy,\n"
-          "                     RMS and maximum distance of the vertices to their input\n"
-          "                     positions (relative to the bounding-box diagonal),\n"
-          "                     scaffold tets and quality, seconds\n" CLI_SURFACE_PNG_HELP(
-              "the input, flowed and final surface side by side") "  -q, --quiet        no "
-                                                                  "progress lines "
-                                                                  "on stderr\n" CLI_OUTPUTS_HELP
-                                                                  "\n",
+    fputs("Remove the self-intersections of the closed genus-0 surface IN (Figure 9 of\n"
+          "the SCAF paper). First conformalized mean curvature flow rounds it, step by\n"
+          "step, until the exact checker proves it free of self-intersections; then the\n"
+          "3D SCAF loop pulls it back toward IN: tets fill a box around the surface,\n"
+          "inside and outside, a surface ARAP term pulls toward IN's shape (rotations\n"
+          "re-fitted every iteration), an anchor toward IN's positions, and no tet may\n"
+          "ever invert (each iteration local flips and edge and face removals reshape\n"
+          "the worst scaffold tets), so the surface can touch itself but never pass\n"
+          "through. Writes IN's vertices and faces at the positions of lowest energy.\n"
+          "An input already free is written unchanged. Genus > 0 is refused: the flow\n"
+          "thins a handle into a ring instead of rounding it.\n"
+          "\n",
           out);
+}
+
+static void after(FILE *out)
+{
+    fputs(CLI_OUTPUTS_HELP "\n", out);
     exit_codes_print(out);
 }
 
@@ -224,43 +199,58 @@ static int untangle_main(int argc, char **argv)
     int quiet = 0;
     cli_surface_png png;
     cli_surface_png_init(&png);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int taken = cli_surface_png_option("untangle", argc, argv, &i, &png);
-        if (taken < 0) return EXIT_USAGE;
-        if (taken) continue;
-        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            CLI_NEED_VALUE("untangle");
-            out = v;
-        } else if (!strcmp(a, "-n") || !strcmp(a, "--iterations")) {
-            CLI_NEED_VALUE("untangle");
-            if (!cli_parse_int(v, &opt.iterations)) CLI_BAD_VALUE("untangle");
-        } else if (!strcmp(a, "--flow-steps")) {
-            CLI_NEED_VALUE("untangle");
-            if (!cli_parse_int(v, &opt.flow_steps)) CLI_BAD_VALUE("untangle");
-        } else if (!strcmp(a, "--tolerance")) {
-            CLI_NEED_VALUE("untangle");
-            if (!cli_parse_double(v, &opt.tolerance)) CLI_BAD_VALUE("untangle");
-        } else if (!strcmp(a, "--anchor")) {
-            CLI_NEED_VALUE("untangle");
-            if (!cli_parse_double(v, &opt.anchor)) CLI_BAD_VALUE("untangle");
-        } else if (!strcmp(a, "--delta")) {
-            CLI_NEED_VALUE("untangle");
-            if (!cli_parse_double(v, &opt.delta)) CLI_BAD_VALUE("untangle");
-        } else if (!strcmp(a, "--report")) {
-            CLI_NEED_VALUE("untangle");
-            report = v;
-        } else if (!strcmp(a, "--verify")) {
-            opt.verify = 1;
-        } else if (!strcmp(a, "-q") || !strcmp(a, "--quiet")) {
-            quiet = 1;
-        } else if (cli_take_input("untangle", a, &in) != EXIT_OK) {
-            return EXIT_USAGE;
-        }
-    }
+    char help_n[96], help_tol[192], help_anchor[192], help_flow[128], help_delta[96];
+    snprintf(help_n, sizeof help_n, "at most N iterations of the flow back (default %d)",
+             opt.iterations);
+    snprintf(help_tol, sizeof help_tol,
+             "the flow back stops when %d iterations lowered the lowest energy so far by at "
+             "most T times it, T in [0, 1) (default %g)",
+             SCAF_UNTANGLE_WINDOW, opt.tolerance);
+    snprintf(help_anchor, sizeof help_anchor,
+             "weight of the pull of every vertex toward its input position, >= 0 (default %g; "
+             "0: ARAP alone, which lets the whole surface drift)",
+             opt.anchor);
+    snprintf(help_flow, sizeof help_flow,
+             "at most N flow steps; fail (exit 6) if the surface is still not free (default %d)",
+             opt.flow_steps);
+    snprintf(help_delta, sizeof help_delta, "flow time step on the unit-area surface (default %g)",
+             opt.delta);
+    /* ranges: scaf_untangle checks them (below), so each is written once */
+    const cli_option options[] = {
+        CLI_STRING("output", 'o', &out, "FILE", "the OBJ to write (nothing is left on failure)"),
+        CLI_INT("iterations", 'n', &opt.iterations, "N", 0, 0, help_n),
+        CLI_DOUBLE("tolerance", 0, &opt.tolerance, "T", 0, 0, help_tol),
+        CLI_DOUBLE("anchor", 0, &opt.anchor, "W", 0, 0, help_anchor),
+        CLI_INT("flow-steps", 0, &opt.flow_steps, "N", 0, 0, help_flow),
+        CLI_DOUBLE("delta", 0, &opt.delta, "D", 0, 0, help_delta),
+        CLI_FLAG("verify", 0, &opt.verify,
+                 "prove the surface free of self-intersections after every iteration too "
+                 "(exact; exit 70 if it ever is not)"),
+        CLI_STRING("report", 0, &report, "FILE",
+                   "a JSON report: the flow steps (seconds, intersecting pairs, distance) and "
+                   "per iteration the surface energy, RMS and maximum distance of the vertices "
+                   "to their input positions (relative to the bounding-box diagonal), scaffold "
+                   "tets and quality, seconds"),
+        CLI_SURFACE_PNG_OPTIONS(&png, "the input, flowed and final surface side by side"),
+        CLI_FLAG("quiet", 'q', &quiet, "no progress lines on stderr"),
+        CLI_OPTION_HELP,
+        {0}};
+    const cli_command_options cmd = {.cmd = "untangle",
+                                     .usage = "usage: scaf untangle IN -o OUT.obj [--iterations N] "
+                                              "[--tolerance T] [--anchor W]\n"
+                                              "                     [--flow-steps N] [--delta D] "
+                                              "[--verify] [--report R.json]\n"
+                                              "                     [--png P.png [--png-size N]] "
+                                              "[--quiet]\n\n",
+                                     .about = about,
+                                     .after = after,
+                                     .options = options,
+                                     .help_column = 21,
+                                     .positionals = &in,
+                                     .max_positionals = 1,
+                                     .positional_name = "input"};
+    int parsed = cli_options_parse(&cmd, argc, argv);
+    if (parsed != CLI_OPTIONS_OK) return cli_options_done(&cmd, parsed);
     if (!in || !out) {
         fprintf(stderr, "scaf untangle: %s (see --help)\n",
                 !in ? "missing the input surface" : "missing -o OUT.obj");

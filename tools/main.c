@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "base/parallel.h"
+#include "cli_options.h"
 #include "commands.h"
 #include "exit_codes.h"
 #include "scaf/scaf.h"
@@ -50,27 +51,6 @@ const command scaf_commands[] = {
      cmd_tet},
     {NULL, NULL, NULL}};
 
-static void print_help(FILE *out)
-{
-    fprintf(out,
-            "usage: scaf COMMAND [options] ...\n"
-            "\n"
-            "Bijective maps with the Simplicial Complex Augmentation Framework.\n"
-            "\n"
-            "commands:\n");
-    for (const command *c = scaf_commands; c->name; c++)
-        fprintf(out, "  %-8s %s\n", c->name, c->summary);
-    fprintf(out,
-            "\n"
-            "`scaf COMMAND --help` describes a command. `scaf --version` prints the version.\n"
-            "`scaf param` and `scaf atlas` run their per-triangle work and the sparse\n"
-            "solver's dense kernels on all cores unless --threads N or\n"
-            "OPENBLAS_NUM_THREADS=N says N (the same N gives the same numbers run after\n"
-            "run); the other commands use one thread.\n"
-            "\n");
-    exit_codes_print(out);
-}
-
 /* The solver frees and reallocates its factor (hundreds of MB on big
  * meshes) every iteration. glibc serves such blocks with fresh mmap pages,
  * so each iteration page-faulted its whole factor anew (aphrodite.obj:
@@ -108,6 +88,55 @@ static void min_chunk_from_environment(void)
     if (*end == '\0' && n >= 1) par_set_min_chunk((size_t)n);
 }
 
+static void help_about(FILE *out)
+{
+    fputs("Bijective maps with the Simplicial Complex Augmentation Framework.\n\ncommands:\n", out);
+    for (const command *c = scaf_commands; c->name; c++)
+        fprintf(out, "  %-8s %s\n", c->name, c->summary);
+    fputc('\n', out);
+}
+
+static void help_after(FILE *out)
+{
+    fprintf(out,
+            "\n"
+            "`scaf COMMAND --help` describes a command. Every command takes --name=VALUE\n"
+            "or --name VALUE, grouped short options (-qo OUT), and -- to end the options\n"
+            "(docs/cli.md). `scaf param` and `scaf atlas` run their per-triangle work and\n"
+            "the sparse solver's dense kernels on all cores unless --threads N or\n"
+            "OPENBLAS_NUM_THREADS=N says N (the same N gives the same numbers run after\n"
+            "run); the other commands use one thread.\n"
+            "\n");
+    exit_codes_print(out);
+}
+
+static int version;
+
+/* The options before the command: --help, --version. */
+static const cli_option global_table[] = {
+    CLI_GROUP("options:"),
+    CLI_FLAG("version", 0, &version, "print the version of scaf"),
+    CLI_OPTION_HELP,
+    {0}};
+
+static const cli_command_options global = {.cmd = "", /* messages read "scaf: ..." */
+                                           .usage = "usage: scaf COMMAND [options] ...\n"
+                                                    "       scaf --help | --version\n\n",
+                                           .about = help_about,
+                                           .after = help_after,
+                                           .options = global_table,
+                                           .help_column = 14};
+
+static void print_help(FILE *out) { cli_options_help(&global, out); }
+
+static int global_options(int argc, char **argv)
+{
+    int rc = cli_options_parse(&global, argc, argv);
+    if (rc != CLI_OPTIONS_OK) return cli_options_done(&global, rc);
+    if (version) printf("scaf %s\n", scaf_version());
+    return EXIT_OK;
+}
+
 int main(int argc, char **argv)
 {
     tune_allocator();
@@ -117,14 +146,11 @@ int main(int argc, char **argv)
         print_help(stderr);
         return EXIT_USAGE;
     }
-    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+    if (!strcmp(argv[1], "help")) {
         print_help(stdout);
         return EXIT_OK;
     }
-    if (!strcmp(argv[1], "--version")) {
-        printf("scaf %s\n", scaf_version());
-        return EXIT_OK;
-    }
+    if (argv[1][0] == '-' && argv[1][1]) return global_options(argc, argv);
     for (const command *c = scaf_commands; c->name; c++)
         if (!strcmp(argv[1], c->name)) return c->run(argc - 1, argv + 1);
     fprintf(stderr, "scaf: unknown command '%s' (see `scaf --help`)\n", argv[1]);
