@@ -299,12 +299,15 @@ try {
     if (!same(await ed(() => window.scafEditor.pinned()), want)) fail("the page's pins differ from the server's");
   }
   await page.screenshot({ path: path.join(work, "scaf-edit-pins.png") });
-  // a drag of their island: the pinned vertices keep their bits
+  // a deform drag of their island (a chart with pins never moves rigidly):
+  // the pinned vertices keep their bits
   {
     const s0 = await apiState();
     await page.check("input[name=selmode][value=island]");
+    await page.check("#deform");
     const q = await ed(() => window.scafEditor.chartPoint(1));
     await mouseDrag(q, [q[0] + 30, q[1] - 20], 4);
+    await page.uncheck("#deform");
     const s1 = await apiState();
     if (s1.iteration === s0.iteration) fail("the drag of chart 1 ran no iteration");
     for (const i of [va, vb])
