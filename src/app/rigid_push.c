@@ -214,7 +214,7 @@ static double clear_along(pusher *P, int B, const double e[2], double r, int *ca
             }
         }
     }
-    qsort(P->ivl, P->nivl, sizeof(double) * 2, by_low);
+    if (P->nivl > 1) qsort(P->ivl, P->nivl, sizeof(double) * 2, by_low); /* NULL when empty */
     double cur = 0.0;
     size_t k = 0;
     for (;;) {
@@ -284,7 +284,7 @@ scaf_status rigid_push(const rigid_charts *rc, double *X, const unsigned char *f
             order[no++].chart = c;
         }
     }
-    qsort(order, (size_t)no, sizeof *order, by_dist);
+    if (no > 1) qsort(order, (size_t)no, sizeof *order, by_dist);
     double drag[2] = {0.0, 0.0};
     if (dir && hypot(dir[0], dir[1]) > 0.0) {
         double l = hypot(dir[0], dir[1]);
